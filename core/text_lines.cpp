@@ -1,0 +1,70 @@
+#include "core/text_lines.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+
+#include "core/error.hpp"
+
+namespace wifislam {
+
+std::vector<TextLine> read_text_lines(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open file for reading");
+  std::vector<TextLine> lines;
+  std::string text;
+  int number = 0;
+  while (std::getline(in, text)) {
+    ++number;
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    lines.push_back({number, std::move(text)});
+  }
+  if (in.bad()) throw IoError(path + ": read error");
+  return lines;
+}
+
+std::vector<std::string_view> split_fields(std::string_view line, char separator) {
+  std::vector<std::string_view> fields;
+  if (separator != '\0') {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t end = line.find(separator, start);
+      fields.push_back(line.substr(start, end == std::string_view::npos ? end : end - start));
+      if (end == std::string_view::npos) break;
+      start = end + 1;
+    }
+    return fields;
+  }
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t')) ++i;
+    if (i >= line.size()) break;
+    std::size_t j = i;
+    while (j < line.size() && line[j] != ' ' && line[j] != '\t') ++j;
+    fields.push_back(line.substr(i, j - i));
+    i = j;
+  }
+  return fields;
+}
+
+bool parse_double(std::string_view field, double& out) {
+  if (field.empty()) return false;
+  if (field.front() == '+') field.remove_prefix(1);
+  const auto [ptr, ec] = std::from_chars(field.data(), field.data() + field.size(), out);
+  return ec == std::errc() && ptr == field.data() + field.size() && std::isfinite(out);
+}
+
+bool parse_int64(std::string_view field, long long& out) {
+  if (field.empty()) return false;
+  if (field.front() == '+') field.remove_prefix(1);
+  const auto [ptr, ec] = std::from_chars(field.data(), field.data() + field.size(), out);
+  return ec == std::errc() && ptr == field.data() + field.size();
+}
+
+std::string format_double_exact(double value) {
+  char buf[64];
+  const auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, value);
+  return std::string(buf, ptr);
+}
+
+}  // namespace wifislam

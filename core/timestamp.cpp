@@ -1,0 +1,62 @@
+#include "core/timestamp.hpp"
+
+#include <cmath>
+#include <cstdlib>
+
+namespace wifislam {
+
+Timestamp Timestamp::from_seconds(double seconds) {
+  return Timestamp{static_cast<std::int64_t>(std::llround(seconds * 1e9))};
+}
+
+std::string Timestamp::to_string(int decimals) const {
+  if (decimals < 0) decimals = 0;
+  if (decimals > 9) decimals = 9;
+  std::int64_t unit = 1;
+  for (int i = 0; i < 9 - decimals; ++i) unit *= 10;
+  const bool negative = ns < 0;
+  std::uint64_t mag = negative ? static_cast<std::uint64_t>(-(ns + 1)) + 1 : ns;
+  std::uint64_t scaled = (mag + static_cast<std::uint64_t>(unit / 2)) / unit;  // round half up
+  std::uint64_t scale = 1;
+  for (int i = 0; i < decimals; ++i) scale *= 10;
+  std::string out = negative && scaled != 0 ? "-" : "";
+  out += std::to_string(scaled / scale);
+  if (decimals > 0) {
+    std::string frac = std::to_string(scaled % scale);
+    out += "." + std::string(decimals - frac.size(), '0') + frac;
+  }
+  return out;
+}
+
+std::optional<Timestamp> Timestamp::parse(std::string_view text) {
+  if (text.empty()) return std::nullopt;
+  bool negative = false;
+  std::size_t i = 0;
+  if (text[0] == '-' || text[0] == '+') {
+    negative = text[0] == '-';
+    i = 1;
+  }
+  std::int64_t whole = 0;
+  std::size_t whole_digits = 0;
+  for (; i < text.size() && text[i] != '.'; ++i) {
+    if (text[i] < '0' || text[i] > '9' || whole_digits >= 10) return std::nullopt;
+    whole = whole * 10 + (text[i] - '0');
+    ++whole_digits;
+  }
+  std::int64_t frac_ns = 0;
+  std::size_t frac_digits = 0;
+  if (i < text.size()) {
+    ++i;  // the '.'
+    for (; i < text.size(); ++i) {
+      if (text[i] < '0' || text[i] > '9' || frac_digits >= 9) return std::nullopt;
+      frac_ns = frac_ns * 10 + (text[i] - '0');
+      ++frac_digits;
+    }
+  }
+  if (whole_digits == 0 && frac_digits == 0) return std::nullopt;
+  for (std::size_t k = frac_digits; k < 9; ++k) frac_ns *= 10;
+  std::int64_t total = whole * 1'000'000'000 + frac_ns;
+  return Timestamp{negative ? -total : total};
+}
+
+}  // namespace wifislam

@@ -1,0 +1,31 @@
+#pragma once
+// Time inside the program is integer nanoseconds (exact arithmetic, no drift when adding frame
+// periods); files carry seconds as decimal text (TUM). Parsing goes straight from the decimal
+// text to nanoseconds so no binary floating-point rounding creeps in.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace wifislam {
+
+struct Timestamp {
+  std::int64_t ns = 0;
+
+  static Timestamp from_seconds(double seconds);
+  static constexpr Timestamp from_ns(std::int64_t n) { return Timestamp{n}; }
+  double seconds() const { return static_cast<double>(ns) * 1e-9; }
+
+  /// Decimal seconds with `decimals` digits after the point (TUM files use 6).
+  /// Rounds to the nearest representable value (half away from zero).
+  std::string to_string(int decimals = 6) const;
+
+  /// Parses "1305031102.175304" style text (optional sign, up to 9 decimals) exactly.
+  /// Returns nullopt for anything else (exponents, more than 9 decimals, garbage).
+  static std::optional<Timestamp> parse(std::string_view text);
+
+  friend constexpr auto operator<=>(const Timestamp&, const Timestamp&) = default;
+};
+
+}  // namespace wifislam

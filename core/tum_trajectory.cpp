@@ -1,0 +1,78 @@
+#include "core/tum_trajectory.hpp"
+
+#include <cmath>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/text_lines.hpp"
+
+namespace wifislam {
+
+StampedPose StampedPose::from_pose(Timestamp time, const Pose& pose) {
+  StampedPose s;
+  s.time = time;
+  s.translation_m = pose.translation();
+  s.rotation = Eigen::Quaterniond(pose.linear()).normalized();
+  if (s.rotation.w() < 0) s.rotation.coeffs() *= -1.0;  // one canonical sign
+  return s;
+}
+
+std::string format_tum_line(const StampedPose& p) {
+  std::string line = p.time.to_string(6);
+  for (double v : {p.translation_m.x(), p.translation_m.y(), p.translation_m.z(), p.rotation.x(),
+                   p.rotation.y(), p.rotation.z(), p.rotation.w()}) {
+    line += ' ';
+    line += format_double_exact(v);
+  }
+  return line;
+}
+
+Trajectory read_tum_trajectory(const std::string& path) {
+  Trajectory out;
+  for (const TextLine& line : read_text_lines(path)) {
+    const auto fields = split_fields(line.text);
+    if (fields.empty() || fields[0].front() == '#') continue;
+    const std::string where = path + ":" + std::to_string(line.number);
+    if (fields.size() != 8) {
+      throw ParseError(where, "", "expected 8 fields 'timestamp tx ty tz qx qy qz qw', got " +
+                                      std::to_string(fields.size()));
+    }
+    const auto time = Timestamp::parse(fields[0]);
+    if (!time) throw ParseError(where, "", "bad timestamp '" + std::string(fields[0]) + "'");
+    double v[7];
+    for (int i = 0; i < 7; ++i) {
+      if (!parse_double(fields[i + 1], v[i])) {
+        throw ParseError(where, "", "field " + std::to_string(i + 2) + " is not a finite number: '" +
+                                        std::string(fields[i + 1]) + "'");
+      }
+    }
+    StampedPose p;
+    p.time = *time;
+    p.translation_m = Eigen::Vector3d(v[0], v[1], v[2]);
+    p.rotation = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
+    if (p.rotation.norm() < 1e-6) throw ParseError(where, "", "quaternion has zero length");
+    if (!out.empty() && p.time < out.back().time) {
+      throw ParseError(where, "", "timestamp " + std::string(fields[0]) +
+                                      " is earlier than the previous line's");
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+void write_tum_trajectory(const std::string& path, const Trajectory& trajectory,
+                          const std::vector<std::string>& header) {
+  std::string text;
+  for (const auto& h : header) text += "# " + h + "\n";
+  for (const auto& p : trajectory) {
+    if (!p.translation_m.allFinite() || !p.rotation.coeffs().allFinite()) {
+      throw InvalidInputError(path + ": refusing to write a non-finite pose at t=" +
+                              p.time.to_string());
+    }
+    text += format_tum_line(p);
+    text += '\n';
+  }
+  write_file_atomic(path, text);
+}
+
+}  // namespace wifislam

@@ -1,0 +1,33 @@
+#pragma once
+// Wi-Fi scan records, as a receiver reports them: one scan = the BSSIDs heard during one sweep
+// over the channels, each with an integer RSSI. Mirrors LaMAR's Wi-Fi record columns
+// (DESIGN.md, "Data formats": timestamp, sensor_id, mac_addr, frequency_khz, rssi_dbm, name,
+// scan_time_start_us, scan_time_end_us).
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/mac_address.hpp"
+#include "core/timestamp.hpp"
+
+namespace wifislam {
+
+struct WifiReading {
+  MacAddress bssid;
+  std::int64_t frequency_khz = 0;
+  int rssi_dbm = 0;
+  std::string ssid;
+  friend bool operator==(const WifiReading&, const WifiReading&) = default;
+};
+
+struct WifiScan {
+  Timestamp time;        // when the scan result was reported (end of the sweep)
+  Timestamp start_time;  // first channel dwell
+  Timestamp end_time;    // last channel dwell
+  std::string sensor_id = "wifi0";
+  std::vector<WifiReading> readings;
+  friend bool operator==(const WifiScan&, const WifiScan&) = default;
+};
+
+}  // namespace wifislam

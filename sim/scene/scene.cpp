@@ -1,0 +1,62 @@
+#include "sim/scene/scene.hpp"
+
+namespace wifislam {
+
+const char* to_string(WallMaterial material) {
+  switch (material) {
+    case WallMaterial::kPlasterboard: return "plasterboard";
+    case WallMaterial::kBrick: return "brick";
+    case WallMaterial::kConcrete: return "concrete";
+    case WallMaterial::kGlass: return "glass";
+    case WallMaterial::kWoodDoor: return "wood_door";
+  }
+  return "unknown";
+}
+
+std::optional<WallMaterial> wall_material_from_string(const std::string& name) {
+  for (WallMaterial m : {WallMaterial::kPlasterboard, WallMaterial::kBrick, WallMaterial::kConcrete,
+                         WallMaterial::kGlass, WallMaterial::kWoodDoor}) {
+    if (name == to_string(m)) return m;
+  }
+  return std::nullopt;
+}
+
+const char* to_string(ApPlacement placement) {
+  switch (placement) {
+    case ApPlacement::kExplicit: return "explicit";
+    case ApPlacement::kGrid: return "grid";
+    case ApPlacement::kRandom: return "random";
+    case ApPlacement::kRooms: return "rooms";
+    case ApPlacement::kColinear: return "colinear";
+  }
+  return "unknown";
+}
+
+const char* to_string(RadioEnvironment environment) {
+  switch (environment) {
+    case RadioEnvironment::kResidential: return "residential";
+    case RadioEnvironment::kOffice: return "office";
+    case RadioEnvironment::kCommercial: return "commercial";
+  }
+  return "unknown";
+}
+
+const SceneNode* Scene::find_node(const std::string& id) const {
+  for (const auto& n : nodes)
+    if (n.id == id) return &n;
+  return nullptr;
+}
+
+const Corridor* Scene::find_corridor(const std::string& id) const {
+  for (const auto& c : corridors)
+    if (c.id == id) return &c;
+  return nullptr;
+}
+
+const Corridor* Scene::corridor_between(const std::string& a, const std::string& b) const {
+  for (const auto& c : corridors)
+    if ((c.from == a && c.to == b) || (c.from == b && c.to == a)) return &c;
+  return nullptr;
+}
+
+}  // namespace wifislam

@@ -1,0 +1,210 @@
+#pragma once
+// The in-memory form of a scene file (scenes/README.md documents every key, unit and default).
+// The YAML loader (scene_loader.hpp) fills these structs and validates them; everything
+// downstream (world generator, renderer, radio model, robot) reads only these structs.
+// Defaults live here, next to the field, with what they trade off.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/camera_intrinsics.hpp"
+
+namespace wifislam {
+
+/// Physical wall materials. The radio model maps each to a per-band penetration loss.
+enum class WallMaterial { kPlasterboard, kBrick, kConcrete, kGlass, kWoodDoor };
+const char* to_string(WallMaterial material);
+std::optional<WallMaterial> wall_material_from_string(const std::string& name);
+
+struct SceneNode {
+  std::string id;
+  Eigen::Vector2d position_m = Eigen::Vector2d::Zero();
+};
+
+/// A row of rooms along one side of a corridor, between `from_m` and `to_m` measured along
+/// the corridor from its `from` node. Each room is `room_length_m` long (the last one takes what
+/// is left if that is at least half a room), `depth_m` deep, separated from the corridor by a
+/// wall of `material` with one door `door_width_m` wide whose near edge is `door_offset_m` from
+/// the room's start.
+struct RoomRow {
+  enum class Side { kLeft, kRight, kBoth };
+  Side side = Side::kBoth;  // left/right as seen walking from the corridor's `from` node
+  double from_m = 0.0;
+  std::optional<double> to_m;  // default: the corridor's length
+  double room_length_m = 4.0;
+  double depth_m = 4.0;
+  double door_offset_m = 1.5;
+  double door_width_m = 0.9;
+  bool doors_open = false;  // closed doors are wooden leaves in the opening
+  WallMaterial material = WallMaterial::kBrick;
+};
+
+struct Corridor {
+  std::string id;
+  std::string from, to;  // node ids
+  double width_m = 2.0;
+  WallMaterial material = WallMaterial::kPlasterboard;
+  std::vector<RoomRow> rooms;
+};
+
+/// An open area (hall, atrium, track): free space given as a simple polygon (counter-clockwise
+/// or clockwise, at least 3 vertices), with optional square pillars inside.
+struct OpenArea {
+  std::string id;
+  std::vector<Eigen::Vector2d> polygon_m;
+  WallMaterial material = WallMaterial::kConcrete;
+  struct Pillar {
+    Eigen::Vector2d center_m = Eigen::Vector2d::Zero();
+    double size_m = 0.6;
+  };
+  std::vector<Pillar> pillars;
+};
+
+struct Building {
+  double wall_height_m = 2.8;
+  double wall_thickness_m = 0.15;
+};
+
+/// Texture themes by name; the renderer maps each name to a procedural recipe.
+struct AppearanceThemes {
+  std::string wall = "painted";
+  std::string door = "wood";
+  std::string floor = "tiles";
+  std::string ceiling = "panels";
+};
+
+/// A poster or other landmark placed explicitly on the wall nearest to (x, y).
+struct Landmark {
+  Eigen::Vector2d position_m = Eigen::Vector2d::Zero();
+  double height_m = 1.5;  // centre height
+  double width_m = 0.6;
+  std::string kind = "poster";
+};
+
+struct Appearance {
+  /// 1 = every wall segment looks identical (same paint, same posters, same lights); 0 = every
+  /// segment visually unique. Segments are `segment_length_m` pieces of wall; each segment
+  /// independently uses the shared look with probability `aliasing`, else its own.
+  double aliasing = 0.5;
+  double segment_length_m = 4.0;
+  AppearanceThemes themes;
+  double posters_per_10m = 1.5;  // expected posters per 10 m of corridor wall
+  double light_spacing_m = 3.0;  // ceiling lights along corridors
+  std::vector<Landmark> landmarks;
+};
+
+enum class ApPlacement { kExplicit, kGrid, kRandom, kRooms, kColinear };
+const char* to_string(ApPlacement placement);
+
+struct AccessPointSpec {
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  std::optional<double> tx_power_dbm;
+};
+
+struct AccessPoints {
+  ApPlacement placement = ApPlacement::kRooms;
+  int count = 0;
+  std::optional<std::uint64_t> seed;  // default: derived from the scene seed
+  double height_m = 2.5;
+  double tx_power_dbm = 20.0;
+  int ssids_per_radio = 3;  // BSSIDs per radio (2.4 GHz and 5 GHz radios per AP)
+  double min_spacing_m = 3.0;  // random/rooms placements keep APs at least this far apart
+  std::vector<AccessPointSpec> explicit_list;  // placement: explicit
+  // placement: colinear — APs evenly spaced on the segment from `line_from_m` to `line_to_m`
+  Eigen::Vector2d line_from_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d line_to_m = Eigen::Vector2d::Zero();
+};
+
+struct PauseSpec {
+  double spacing_min_m = 3.0;  // distance travelled between pauses, drawn per pause
+  double spacing_max_m = 4.0;
+  double duration_s = 10.0;
+  bool scan_while_moving = false;
+};
+
+struct Route {
+  std::vector<std::string> nodes;  // consecutive nodes must share a corridor
+  double speed_mps = 0.5;
+  double max_yaw_rate_radps = 0.6;
+  double turn_radius_m = 0.6;  // corners are rounded with this radius
+  double min_wall_clearance_m = 0.3;
+  PauseSpec pause;
+};
+
+struct CameraSpec {
+  CameraIntrinsics intrinsics;  // default Kinect v1
+  double fps = 30.0;
+  double height_m = 0.5;  // above the floor (Kinect on a TurtleBot)
+  double pitch_deg = 0.0;  // positive looks up
+};
+
+struct DepthSensorSpec {
+  double min_range_m = 0.8;
+  double max_range_m = 4.0;
+  bool noise = true;          // axial noise growing with depth squared
+  bool quantisation = true;   // disparity-style steps
+  bool dropouts = true;       // grazing angles and depth edges
+};
+
+struct WifiScannerSpec {
+  double sensitivity_dbm = -92.0;
+  double dwell_per_channel_s = 0.1;
+  double scan_interval_s = 2.0;  // time from one scan's start to the next's
+};
+
+struct OdometrySpec {
+  double rate_hz = 50.0;
+  double noise_per_m = 0.02;       // std dev of distance error per metre travelled (m/m)
+  double noise_per_rad = 0.03;     // std dev of heading error per radian turned (rad/rad)
+  double scale_error = 0.01;       // systematic multiplicative error on distance
+  double yaw_bias_radpm = 0.002;   // systematic heading drift per metre (rad/m)
+};
+
+struct Sensors {
+  CameraSpec camera;
+  DepthSensorSpec depth;
+  WifiScannerSpec wifi;
+  OdometrySpec odometry;
+};
+
+enum class RadioEnvironment { kResidential, kOffice, kCommercial };
+const char* to_string(RadioEnvironment environment);
+
+struct RadioSpec {
+  RadioEnvironment environment = RadioEnvironment::kOffice;
+  std::optional<double> distance_coefficient;  // N; default chosen by the radio model
+  double shadowing_sigma_db = 4.0;
+  double shadowing_decorrelation_m = 3.0;
+  double fast_fading_sigma_db = 2.0;
+  double people_disturbance_db = 0.0;  // optional temporal disturbance for open halls
+};
+
+struct Scene {
+  int version = 1;
+  std::string name;
+  std::string description;
+  std::uint64_t seed = 1;
+  Building building;
+  std::vector<SceneNode> nodes;
+  std::vector<Corridor> corridors;
+  std::vector<OpenArea> open_areas;
+  Appearance appearance;
+  AccessPoints access_points;
+  Route route;
+  Sensors sensors;
+  RadioSpec radio;
+
+  /// The file it was loaded from (empty for scenes built in code); used in error messages.
+  std::string source_path;
+
+  const SceneNode* find_node(const std::string& id) const;
+  const Corridor* find_corridor(const std::string& id) const;
+  /// The corridor joining nodes a and b (either direction), or nullptr.
+  const Corridor* corridor_between(const std::string& a, const std::string& b) const;
+};
+
+}  // namespace wifislam

@@ -1,0 +1,29 @@
+#pragma once
+// Loading and validating scene files (YAML, `version: 1`). See scenes/README.md for the schema.
+//
+// Every problem is reported as a ParseError naming the file, line and column, the key path
+// (e.g. `corridors[2].width_m`) and what was expected: unknown keys, wrong types, values out of
+// range, references to missing nodes/corridors, a disconnected corridor graph, a route through a
+// corridor that does not exist ... Nothing is silently defaulted except keys that are absent.
+
+#include <string>
+
+#include "sim/scene/scene.hpp"
+
+namespace wifislam {
+
+/// Loads a scene file. Throws IoError (cannot read) or ParseError (anything wrong inside).
+Scene load_scene_file(const std::string& path);
+
+/// Loads a scene from YAML text; `source_name` is used in error messages in place of a path.
+Scene load_scene_yaml(const std::string& yaml_text, const std::string& source_name);
+
+/// Checks the cross-references and ranges of a scene built in code (the loader calls it too).
+/// Throws InvalidInputError naming the offending item.
+void validate_scene(const Scene& scene);
+
+/// The scene as YAML with every key, defaults filled in (the "resolved scene" written into
+/// datasets). Loading the output gives back an equal scene.
+std::string resolved_scene_yaml(const Scene& scene);
+
+}  // namespace wifislam
