@@ -148,6 +148,12 @@ struct DepthSensorSpec {
   bool noise = true;          // axial noise growing with depth squared
   bool quantisation = true;   // disparity-style steps
   bool dropouts = true;       // grazing angles and depth edges
+  // Parameters of the parts above (sim/render/depth_sensor_model.hpp explains each model).
+  double axial_noise_coeff_per_m = 1.425e-3;  // sigma_z = coeff * z^2 (Khoshelham & Elberink 2012)
+  double baseline_m = 0.075;          // projector-camera baseline for disparity d = f b / z
+  double disparity_step_px = 0.125;   // disparity resolution (Kinect v1: 1/8 pixel)
+  double grazing_dropout_deg = 82.0;  // no reading when the ray meets the surface steeper than this
+  double edge_jump_fraction = 0.05;   // a neighbour farther by this fraction of z marks an edge
 };
 
 struct WifiScannerSpec {
