@@ -22,8 +22,8 @@ bool stderr_is_tty();
 
 }  // namespace wifislam::cli
 
-#define WIFISLAM_COMMAND(name, order)                                                   \
-  static void wifislam_setup_command_##name(CLI::App& parent);                          \
-  [[maybe_unused]] static const bool wifislam_command_registered_##name =               \
+#define WIFISLAM_COMMAND(name, order)                                                  \
+  static void wifislam_setup_command_##name(CLI::App& parent);                         \
+  [[maybe_unused]] static const bool wifislam_command_registered_##name =              \
       ::wifislam::cli::register_command(#name, order, &wifislam_setup_command_##name); \
   static void wifislam_setup_command_##name(CLI::App& parent)

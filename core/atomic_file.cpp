@@ -62,7 +62,8 @@ void AtomicDirectory::commit() {
     if (ec) throw IoError(final_.string() + ": cannot replace: " + ec.message());
   }
   fs::rename(staging_, final_, ec);
-  if (ec) throw IoError(final_.string() + ": cannot move finished folder into place: " + ec.message());
+  if (ec)
+    throw IoError(final_.string() + ": cannot move finished folder into place: " + ec.message());
   committed_ = true;
 }
 

@@ -15,10 +15,14 @@ std::optional<MacAddress> MacAddress::parse(std::string_view text) {
     for (int k = 0; k < 2; ++k) {
       const char c = text[at + k];
       int nibble;
-      if (c >= '0' && c <= '9') nibble = c - '0';
-      else if (c >= 'a' && c <= 'f') nibble = c - 'a' + 10;
-      else if (c >= 'A' && c <= 'F') nibble = c - 'A' + 10;
-      else return std::nullopt;
+      if (c >= '0' && c <= '9')
+        nibble = c - '0';
+      else if (c >= 'a' && c <= 'f')
+        nibble = c - 'a' + 10;
+      else if (c >= 'A' && c <= 'F')
+        nibble = c - 'A' + 10;
+      else
+        return std::nullopt;
       value = (value << 4) | static_cast<std::uint64_t>(nibble);
     }
   }

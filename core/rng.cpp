@@ -30,7 +30,9 @@ Rng::Rng(std::uint64_t state_seed) : origin_seed_(state_seed) {
   for (auto& s : s_) s = splitmix64(x);
 }
 
-Rng Rng::child(std::string_view name) const { return Rng(origin_seed_ ^ fnv1a64(name) ^ 0x5bd1e995ULL); }
+Rng Rng::child(std::string_view name) const {
+  return Rng(origin_seed_ ^ fnv1a64(name) ^ 0x5bd1e995ULL);
+}
 
 std::uint64_t Rng::next_u64() {
   const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;

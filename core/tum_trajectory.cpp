@@ -34,16 +34,18 @@ Trajectory read_tum_trajectory(const std::string& path) {
     if (fields.empty() || fields[0].front() == '#') continue;
     const std::string where = path + ":" + std::to_string(line.number);
     if (fields.size() != 8) {
-      throw ParseError(where, "", "expected 8 fields 'timestamp tx ty tz qx qy qz qw', got " +
-                                      std::to_string(fields.size()));
+      throw ParseError(where, "",
+                       "expected 8 fields 'timestamp tx ty tz qx qy qz qw', got " +
+                           std::to_string(fields.size()));
     }
     const auto time = Timestamp::parse(fields[0]);
     if (!time) throw ParseError(where, "", "bad timestamp '" + std::string(fields[0]) + "'");
     double v[7];
     for (int i = 0; i < 7; ++i) {
       if (!parse_double(fields[i + 1], v[i])) {
-        throw ParseError(where, "", "field " + std::to_string(i + 2) + " is not a finite number: '" +
-                                        std::string(fields[i + 1]) + "'");
+        throw ParseError(where, "",
+                         "field " + std::to_string(i + 2) + " is not a finite number: '" +
+                             std::string(fields[i + 1]) + "'");
       }
     }
     StampedPose p;
@@ -52,8 +54,9 @@ Trajectory read_tum_trajectory(const std::string& path) {
     p.rotation = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
     if (p.rotation.norm() < 1e-6) throw ParseError(where, "", "quaternion has zero length");
     if (!out.empty() && p.time < out.back().time) {
-      throw ParseError(where, "", "timestamp " + std::string(fields[0]) +
-                                      " is earlier than the previous line's");
+      throw ParseError(
+          where, "",
+          "timestamp " + std::string(fields[0]) + " is earlier than the previous line's");
     }
     out.push_back(p);
   }
@@ -66,8 +69,8 @@ void write_tum_trajectory(const std::string& path, const Trajectory& trajectory,
   for (const auto& h : header) text += "# " + h + "\n";
   for (const auto& p : trajectory) {
     if (!p.translation_m.allFinite() || !p.rotation.coeffs().allFinite()) {
-      throw InvalidInputError(path + ": refusing to write a non-finite pose at t=" +
-                              p.time.to_string());
+      throw InvalidInputError(path +
+                              ": refusing to write a non-finite pose at t=" + p.time.to_string());
     }
     text += format_tum_line(p);
     text += '\n';

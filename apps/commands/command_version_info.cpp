@@ -1,6 +1,6 @@
 // `wifislam info`: versions of the libraries this build uses (useful in bug reports).
-#include <Eigen/Core>
 #include <fmt/core.h>
+#include <Eigen/Core>
 
 #include "apps/command_registry.hpp"
 

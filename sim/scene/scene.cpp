@@ -4,11 +4,16 @@ namespace wifislam {
 
 const char* to_string(WallMaterial material) {
   switch (material) {
-    case WallMaterial::kPlasterboard: return "plasterboard";
-    case WallMaterial::kBrick: return "brick";
-    case WallMaterial::kConcrete: return "concrete";
-    case WallMaterial::kGlass: return "glass";
-    case WallMaterial::kWoodDoor: return "wood_door";
+    case WallMaterial::kPlasterboard:
+      return "plasterboard";
+    case WallMaterial::kBrick:
+      return "brick";
+    case WallMaterial::kConcrete:
+      return "concrete";
+    case WallMaterial::kGlass:
+      return "glass";
+    case WallMaterial::kWoodDoor:
+      return "wood_door";
   }
   return "unknown";
 }
@@ -23,20 +28,28 @@ std::optional<WallMaterial> wall_material_from_string(const std::string& name) {
 
 const char* to_string(ApPlacement placement) {
   switch (placement) {
-    case ApPlacement::kExplicit: return "explicit";
-    case ApPlacement::kGrid: return "grid";
-    case ApPlacement::kRandom: return "random";
-    case ApPlacement::kRooms: return "rooms";
-    case ApPlacement::kColinear: return "colinear";
+    case ApPlacement::kExplicit:
+      return "explicit";
+    case ApPlacement::kGrid:
+      return "grid";
+    case ApPlacement::kRandom:
+      return "random";
+    case ApPlacement::kRooms:
+      return "rooms";
+    case ApPlacement::kColinear:
+      return "colinear";
   }
   return "unknown";
 }
 
 const char* to_string(RadioEnvironment environment) {
   switch (environment) {
-    case RadioEnvironment::kResidential: return "residential";
-    case RadioEnvironment::kOffice: return "office";
-    case RadioEnvironment::kCommercial: return "commercial";
+    case RadioEnvironment::kResidential:
+      return "residential";
+    case RadioEnvironment::kOffice:
+      return "office";
+    case RadioEnvironment::kCommercial:
+      return "commercial";
   }
   return "unknown";
 }

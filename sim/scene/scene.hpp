@@ -111,7 +111,7 @@ struct AccessPoints {
   std::optional<std::uint64_t> seed;  // default: derived from the scene seed
   double height_m = 2.5;
   double tx_power_dbm = 20.0;
-  int ssids_per_radio = 3;  // BSSIDs per radio (2.4 GHz and 5 GHz radios per AP)
+  int ssids_per_radio = 3;     // BSSIDs per radio (2.4 GHz and 5 GHz radios per AP)
   double min_spacing_m = 3.0;  // random/rooms placements keep APs at least this far apart
   std::vector<AccessPointSpec> explicit_list;  // placement: explicit
   // placement: colinear — APs evenly spaced on the segment from `line_from_m` to `line_to_m`
@@ -138,20 +138,20 @@ struct Route {
 struct CameraSpec {
   CameraIntrinsics intrinsics;  // default Kinect v1
   double fps = 30.0;
-  double height_m = 0.5;  // above the floor (Kinect on a TurtleBot)
+  double height_m = 0.5;   // above the floor (Kinect on a TurtleBot)
   double pitch_deg = 0.0;  // positive looks up
 };
 
 struct DepthSensorSpec {
   double min_range_m = 0.8;
   double max_range_m = 4.0;
-  bool noise = true;          // axial noise growing with depth squared
-  bool quantisation = true;   // disparity-style steps
-  bool dropouts = true;       // grazing angles and depth edges
+  bool noise = true;         // axial noise growing with depth squared
+  bool quantisation = true;  // disparity-style steps
+  bool dropouts = true;      // grazing angles and depth edges
   // Parameters of the parts above (sim/render/depth_sensor_model.hpp explains each model).
   double axial_noise_coeff_per_m = 1.425e-3;  // sigma_z = coeff * z^2 (Khoshelham & Elberink 2012)
-  double baseline_m = 0.075;          // projector-camera baseline for disparity d = f b / z
-  double disparity_step_px = 0.125;   // disparity resolution (Kinect v1: 1/8 pixel)
+  double baseline_m = 0.075;                  // projector-camera baseline for disparity d = f b / z
+  double disparity_step_px = 0.125;           // disparity resolution (Kinect v1: 1/8 pixel)
   double grazing_dropout_deg = 82.0;  // no reading when the ray meets the surface steeper than this
   double edge_jump_fraction = 0.05;   // a neighbour farther by this fraction of z marks an edge
 };
@@ -164,10 +164,10 @@ struct WifiScannerSpec {
 
 struct OdometrySpec {
   double rate_hz = 50.0;
-  double noise_per_m = 0.02;       // std dev of distance error per metre travelled (m/m)
-  double noise_per_rad = 0.03;     // std dev of heading error per radian turned (rad/rad)
-  double scale_error = 0.01;       // systematic multiplicative error on distance
-  double yaw_bias_radpm = 0.002;   // systematic heading drift per metre (rad/m)
+  double noise_per_m = 0.02;      // std dev of distance error per metre travelled (m/m)
+  double noise_per_rad = 0.03;    // std dev of heading error per radian turned (rad/rad)
+  double scale_error = 0.01;      // systematic multiplicative error on distance
+  double yaw_bias_radpm = 0.002;  // systematic heading drift per metre (rad/m)
 };
 
 struct Sensors {

@@ -1,0 +1,552 @@
+#include "sim/scene/scene_loader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/text_lines.hpp"
+#include "sim/scene/scene_schema.hpp"
+
+namespace wifislam {
+
+namespace {
+
+using schema::Limits;
+
+/// Where each key path was found in the file ("file:line:column"), for errors raised after
+/// reading (cross-references, connectivity) as well as during it.
+struct SourceMap {
+  std::string file;
+  std::map<std::string, YAML::Mark> marks;
+
+  std::string where(const YAML::Mark& mark) const {
+    if (mark.line < 0) return file;
+    return fmt::format("{}:{}:{}", file, mark.line + 1, mark.column + 1);
+  }
+  /// Position of `key_path`, or of its closest recorded parent.
+  std::string where(std::string key_path) const {
+    while (true) {
+      auto it = marks.find(key_path);
+      if (it != marks.end()) return where(it->second);
+      const auto cut = key_path.find_last_of(".[");
+      if (cut == std::string::npos) return file;
+      key_path.resize(cut);
+    }
+  }
+};
+
+std::string describe(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Null:
+      return "nothing";
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a mapping";
+    default:
+      return "an undefined value";
+  }
+}
+
+std::string describe_limits(const Limits& l) {
+  const bool has_lo = std::isfinite(l.lo), has_hi = std::isfinite(l.hi);
+  if (has_lo && has_hi) return fmt::format("a number in [{}, {}]", l.lo, l.hi);
+  if (has_lo) return fmt::format("a number {} {}", l.open_low ? ">" : ">=", l.lo);
+  if (has_hi) return fmt::format("a number <= {}", l.hi);
+  return "a number";
+}
+
+/// Reads one YAML mapping into a struct through schema::visit, checking types and ranges and,
+/// at the end, that no key was left unread (typos must not pass silently).
+class YamlReader {
+ public:
+  YamlReader(const YAML::Node& node, std::string path, SourceMap& sources)
+      : node_(node), path_(std::move(path)), sources_(sources) {
+    if (!node_.IsMap()) {
+      throw ParseError(sources_.where(node_.Mark()), path_.empty() ? "(top level)" : path_,
+                       "expected a mapping of keys, got " + describe(node_));
+    }
+    if (!path_.empty()) sources_.marks[path_] = node_.Mark();
+  }
+
+  void required() { next_required_ = true; }
+
+  void number(const char* key, double& out, Limits limits) {
+    if (auto n = fetch(key)) out = to_number(*n, key, limits);
+  }
+  void integer(const char* key, int& out, Limits limits) {
+    if (auto n = fetch(key)) {
+      const double value = to_number(*n, key, limits);
+      if (value != std::floor(value)) fail(*n, key, "expected a whole number, got " + describe(*n));
+      out = static_cast<int>(value);
+    }
+  }
+  void uint64(const char* key, std::uint64_t& out) {
+    if (auto n = fetch(key)) out = to_uint64(*n, key);
+  }
+  void optional_uint64(const char* key, std::optional<std::uint64_t>& out) {
+    if (auto n = fetch(key)) out = to_uint64(*n, key);
+  }
+  void optional_number(const char* key, std::optional<double>& out, Limits limits) {
+    if (auto n = fetch(key)) out = to_number(*n, key, limits);
+  }
+  void boolean(const char* key, bool& out) {
+    if (auto n = fetch(key)) {
+      bool value = false;
+      if (!n->IsScalar() || !YAML::convert<bool>::decode(*n, value)) {
+        fail(*n, key, "expected true or false, got " + describe(*n));
+      }
+      out = value;
+    }
+  }
+  void text(const char* key, std::string& out) {
+    if (auto n = fetch(key)) {
+      if (!n->IsScalar()) fail(*n, key, "expected text, got " + describe(*n));
+      out = n->Scalar();
+      if (out.empty()) fail(*n, key, "must not be empty");
+    }
+  }
+  template <class E>
+  void choice(const char* key, E& out, const schema::Names<E>& names) {
+    if (auto n = fetch(key)) {
+      std::string options;
+      for (const auto& [value, name] : names) {
+        if (n->IsScalar() && n->Scalar() == name) {
+          out = value;
+          return;
+        }
+        options += (options.empty() ? "" : ", ") + std::string(name);
+      }
+      fail(*n, key, "expected one of " + options + "; got " + describe(*n));
+    }
+  }
+  void vec2(const char* key, Eigen::Vector2d& out) {
+    if (auto n = fetch(key)) out = to_vector<2>(*n, key);
+  }
+  void vec3(const char* key, Eigen::Vector3d& out) {
+    if (auto n = fetch(key)) out = to_vector<3>(*n, key);
+  }
+  void polygon(const char* key, std::vector<Eigen::Vector2d>& out) {
+    if (auto n = fetch(key)) {
+      if (!n->IsSequence() || n->size() < 3) {
+        fail(*n, key, "expected a list of at least 3 [x, y] points, got " + describe(*n));
+      }
+      out.clear();
+      for (std::size_t i = 0; i < n->size(); ++i) {
+        out.push_back(to_vector<2>((*n)[i], fmt::format("{}[{}]", key, i)));
+      }
+    }
+  }
+  void text_list(const char* key, std::vector<std::string>& out) {
+    if (auto n = fetch(key)) {
+      if (!n->IsSequence()) fail(*n, key, "expected a list of names, got " + describe(*n));
+      out.clear();
+      for (std::size_t i = 0; i < n->size(); ++i) {
+        const YAML::Node item = (*n)[i];
+        if (!item.IsScalar()) {
+          fail(item, fmt::format("{}[{}]", key, i), "expected a name, got " + describe(item));
+        }
+        out.push_back(item.Scalar());
+      }
+    }
+  }
+  void interval(const char* key, double& lo, double& hi, Limits limits) {
+    if (auto n = fetch(key)) {
+      if (n->IsScalar()) {
+        lo = hi = to_number(*n, key, limits);
+        return;
+      }
+      if (!n->IsSequence() || n->size() != 2) {
+        fail(*n, key, "expected [min, max] or a single number, got " + describe(*n));
+      }
+      lo = to_number((*n)[0], std::string(key) + "[0]", limits);
+      hi = to_number((*n)[1], std::string(key) + "[1]", limits);
+      if (hi < lo) fail(*n, key, fmt::format("max {} is smaller than min {}", hi, lo));
+    }
+  }
+  template <class T>
+  void object(const char* key, T& out) {
+    if (auto n = fetch(key)) {
+      YamlReader child(*n, child_path(key), sources_);
+      schema::visit(child, out);
+      child.finish();
+    }
+  }
+  template <class T>
+  void list(const char* key, std::vector<T>& out) {
+    if (auto n = fetch(key)) {
+      if (!n->IsSequence()) fail(*n, key, "expected a list, got " + describe(*n));
+      out.clear();
+      for (std::size_t i = 0; i < n->size(); ++i) {
+        T item{};
+        YamlReader child((*n)[i], fmt::format("{}[{}]", child_path(key), i), sources_);
+        schema::visit(child, item);
+        child.finish();
+        out.push_back(std::move(item));
+      }
+    }
+  }
+
+  /// Every key present must have been read by the schema.
+  void finish() const {
+    for (const auto& kv : node_) {
+      const std::string key = kv.first.Scalar();
+      if (!read_keys_.count(key)) {
+        throw ParseError(sources_.where(kv.first.Mark()), child_path(key),
+                         "unknown key (see scenes/README.md for the schema)" + suggestion(key));
+      }
+    }
+  }
+
+ private:
+  std::optional<YAML::Node> fetch(const char* key) {
+    const bool required = next_required_;
+    next_required_ = false;
+    read_keys_.insert(key);
+    known_keys_.push_back(key);
+    const YAML::Node n = node_[key];
+    if (!n.IsDefined() || n.IsNull()) {
+      if (required) {
+        throw ParseError(sources_.where(node_.Mark()), child_path(key), "required key is missing");
+      }
+      return std::nullopt;
+    }
+    sources_.marks[child_path(key)] = n.Mark();
+    return n;
+  }
+
+  std::string child_path(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+  }
+
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& key,
+                         const std::string& message) const {
+    throw ParseError(sources_.where(n.Mark()), child_path(key), message);
+  }
+
+  double to_number(const YAML::Node& n, const std::string& key, Limits limits) const {
+    double value = 0;
+    if (!n.IsScalar() || !YAML::convert<double>::decode(n, value) || !std::isfinite(value)) {
+      fail(n, key, "expected " + describe_limits(limits) + ", got " + describe(n));
+    }
+    const bool low_ok = limits.open_low ? value > limits.lo : value >= limits.lo;
+    if (!low_ok || value > limits.hi) {
+      fail(n, key, "expected " + describe_limits(limits) + ", got " + n.Scalar());
+    }
+    return value;
+  }
+
+  std::uint64_t to_uint64(const YAML::Node& n, const std::string& key) const {
+    std::uint64_t value = 0;
+    const bool ok = n.IsScalar() && !n.Scalar().empty() && n.Scalar()[0] != '-' &&
+                    YAML::convert<std::uint64_t>::decode(n, value);
+    if (!ok) fail(n, key, "expected a non-negative whole number, got " + describe(n));
+    return value;
+  }
+
+  template <int N>
+  Eigen::Matrix<double, N, 1> to_vector(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsSequence() || static_cast<int>(n.size()) != N) {
+      fail(n, key, fmt::format("expected a list of {} numbers, got {}", N, describe(n)));
+    }
+    Eigen::Matrix<double, N, 1> v;
+    for (int i = 0; i < N; ++i) v[i] = to_number(n[i], fmt::format("{}[{}]", key, i), schema::kAny);
+    return v;
+  }
+
+  std::string suggestion(const std::string& key) const {
+    // Offer the closest known key when it is only a typo away.
+    std::string best;
+    std::size_t best_distance = 3;
+    for (const auto& known : known_keys_) {
+      const std::size_t d = edit_distance(key, known);
+      if (d < best_distance) {
+        best_distance = d;
+        best = known;
+      }
+    }
+    return best.empty() ? "" : "; did you mean '" + best + "'?";
+  }
+
+  static std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+      std::size_t diagonal = row[0];
+      row[0] = i;
+      for (std::size_t j = 1; j <= b.size(); ++j) {
+        const std::size_t up = row[j];
+        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
+        diagonal = up;
+      }
+    }
+    return row[b.size()];
+  }
+
+  YAML::Node node_;
+  std::string path_;
+  SourceMap& sources_;
+  std::set<std::string> read_keys_;
+  std::vector<std::string> known_keys_;
+  bool next_required_ = false;
+};
+
+/// Writes a struct back as YAML through the same schema (resolved scenes).
+class YamlWriter {
+ public:
+  explicit YamlWriter(YAML::Emitter& out) : out_(out) {}
+  void required() {}
+  void number(const char* key, double value, Limits) {
+    out_ << YAML::Key << key << YAML::Value << exact(value);
+  }
+  void integer(const char* key, int value, Limits) {
+    out_ << YAML::Key << key << YAML::Value << value;
+  }
+  void uint64(const char* key, std::uint64_t value) {
+    out_ << YAML::Key << key << YAML::Value << value;
+  }
+  void optional_uint64(const char* key, const std::optional<std::uint64_t>& value) {
+    if (value) uint64(key, *value);
+  }
+  void optional_number(const char* key, const std::optional<double>& value, Limits l) {
+    if (value) number(key, *value, l);
+  }
+  void boolean(const char* key, bool value) { out_ << YAML::Key << key << YAML::Value << value; }
+  void text(const char* key, const std::string& value) {
+    if (!value.empty()) out_ << YAML::Key << key << YAML::Value << value;
+  }
+  template <class E>
+  void choice(const char* key, E value, const schema::Names<E>& names) {
+    for (const auto& [v, name] : names) {
+      if (v == value) out_ << YAML::Key << key << YAML::Value << std::string(name);
+    }
+  }
+  template <class Vec>
+  void write_vector(const Vec& v) {
+    out_ << YAML::Flow << YAML::BeginSeq;
+    for (int i = 0; i < v.size(); ++i) out_ << exact(v[i]);
+    out_ << YAML::EndSeq;
+  }
+  void vec2(const char* key, const Eigen::Vector2d& v) {
+    out_ << YAML::Key << key << YAML::Value;
+    write_vector(v);
+  }
+  void vec3(const char* key, const Eigen::Vector3d& v) {
+    out_ << YAML::Key << key << YAML::Value;
+    write_vector(v);
+  }
+  void polygon(const char* key, const std::vector<Eigen::Vector2d>& points) {
+    out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const auto& p : points) write_vector(p);
+    out_ << YAML::EndSeq;
+  }
+  void text_list(const char* key, const std::vector<std::string>& items) {
+    out_ << YAML::Key << key << YAML::Value << YAML::Flow << items;
+  }
+  void interval(const char* key, double lo, double hi, Limits) {
+    out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << exact(lo)
+         << exact(hi) << YAML::EndSeq;
+  }
+  template <class T>
+  void object(const char* key, T& value) {
+    out_ << YAML::Key << key << YAML::Value << YAML::BeginMap;
+    schema::visit(*this, value);
+    out_ << YAML::EndMap;
+  }
+  template <class T>
+  void list(const char* key, std::vector<T>& items) {
+    out_ << YAML::Key << key << YAML::Value << YAML::BeginSeq;
+    for (auto& item : items) {
+      out_ << YAML::BeginMap;
+      schema::visit(*this, item);
+      out_ << YAML::EndMap;
+    }
+    out_ << YAML::EndSeq;
+  }
+
+ private:
+  // Shortest text that reads back to the same double ("2.8", not "2.7999999999999998").
+  static std::string exact(double value) { return format_double_exact(value); }
+  YAML::Emitter& out_;
+};
+
+using Locator = std::function<std::string(const std::string& key_path)>;
+
+[[noreturn]] void invalid(const Locator& locate, const std::string& key_path,
+                          const std::string& message) {
+  if (locate) throw ParseError(locate(key_path), key_path, message);
+  throw InvalidInputError("scene: key '" + key_path + "': " + message);
+}
+
+void validate_scene_impl(const Scene& scene, const Locator& locate) {
+  std::set<std::string> node_ids;
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    if (!node_ids.insert(scene.nodes[i].id).second) {
+      invalid(locate, fmt::format("nodes[{}].id", i),
+              "duplicate node id '" + scene.nodes[i].id + "'");
+    }
+  }
+  if (scene.corridors.empty()) invalid(locate, "corridors", "a scene needs at least one corridor");
+  std::set<std::string> corridor_ids;
+  std::map<std::string, std::vector<std::string>> adjacency;
+  for (std::size_t i = 0; i < scene.corridors.size(); ++i) {
+    const Corridor& c = scene.corridors[i];
+    const std::string path = fmt::format("corridors[{}]", i);
+    if (!corridor_ids.insert(c.id).second) {
+      invalid(locate, path + ".id", "duplicate corridor id '" + c.id + "'");
+    }
+    for (const auto& [key, end] : {std::pair{"from", c.from}, std::pair{"to", c.to}}) {
+      if (!node_ids.count(end)) {
+        invalid(locate, path + "." + key,
+                "no node with id '" + end + "' (corridor '" + c.id + "')");
+      }
+    }
+    if (c.from == c.to)
+      invalid(locate, path + ".to", "corridor joins node '" + c.from + "' to itself");
+    const double length_m =
+        (scene.find_node(c.to)->position_m - scene.find_node(c.from)->position_m).norm();
+    if (length_m < 0.5)
+      invalid(locate, path, fmt::format("corridor is only {:.3f} m long", length_m));
+    for (std::size_t r = 0; r < c.rooms.size(); ++r) {
+      const RoomRow& row = c.rooms[r];
+      const std::string rp = fmt::format("{}.rooms[{}]", path, r);
+      const double to_m = row.to_m.value_or(length_m);
+      if (to_m > length_m + 1e-9) {
+        invalid(locate, rp + ".to_m",
+                fmt::format("{} m is beyond the corridor's length {:.3f} m", to_m, length_m));
+      }
+      if (row.from_m >= to_m) {
+        invalid(locate, rp + ".from_m",
+                fmt::format("from_m {} must be smaller than to_m {}", row.from_m, to_m));
+      }
+      if (row.door_offset_m + row.door_width_m > row.room_length_m) {
+        invalid(locate, rp + ".door_offset_m",
+                fmt::format("door ({} m + {} m wide) does not fit in a {} m room",
+                            row.door_offset_m, row.door_width_m, row.room_length_m));
+      }
+    }
+    adjacency[c.from].push_back(c.to);
+    adjacency[c.to].push_back(c.from);
+  }
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    if (!adjacency.count(scene.nodes[i].id)) {
+      invalid(locate, fmt::format("nodes[{}]", i),
+              "node '" + scene.nodes[i].id + "' is not joined to any corridor");
+    }
+  }
+  // The corridor graph must be connected: the robot and the radio see one building.
+  std::set<std::string> reached{scene.nodes.front().id};
+  std::vector<std::string> frontier{scene.nodes.front().id};
+  while (!frontier.empty()) {
+    const std::string n = frontier.back();
+    frontier.pop_back();
+    for (const auto& m : adjacency[n])
+      if (reached.insert(m).second) frontier.push_back(m);
+  }
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    if (!reached.count(scene.nodes[i].id)) {
+      invalid(locate, fmt::format("nodes[{}]", i),
+              "the corridor graph is disconnected: node '" + scene.nodes[i].id +
+                  "' cannot be reached from node '" + scene.nodes.front().id + "'");
+    }
+  }
+  std::set<std::string> area_ids;
+  for (std::size_t i = 0; i < scene.open_areas.size(); ++i) {
+    if (!area_ids.insert(scene.open_areas[i].id).second) {
+      invalid(locate, fmt::format("open_areas[{}].id", i), "duplicate open area id");
+    }
+  }
+  // Route: known nodes, consecutive nodes joined by a corridor.
+  const auto& route = scene.route.nodes;
+  if (route.size() < 2) invalid(locate, "route.nodes", "a route needs at least two nodes");
+  for (std::size_t i = 0; i < route.size(); ++i) {
+    if (!node_ids.count(route[i])) {
+      invalid(locate, fmt::format("route.nodes[{}]", i), "no node with id '" + route[i] + "'");
+    }
+    if (i > 0 && !scene.corridor_between(route[i - 1], route[i])) {
+      invalid(locate, fmt::format("route.nodes[{}]", i),
+              "no corridor joins '" + route[i - 1] + "' and '" + route[i] + "'");
+    }
+  }
+  const auto& depth = scene.sensors.depth;
+  if (depth.max_range_m <= depth.min_range_m) {
+    invalid(locate, "sensors.depth.max_range_m", "must be larger than min_range_m");
+  }
+  const auto& ap = scene.access_points;
+  if (ap.placement == ApPlacement::kExplicit && ap.explicit_list.empty() && ap.count > 0) {
+    invalid(locate, "access_points.list", "placement 'explicit' needs a list of access points");
+  }
+  if (ap.placement == ApPlacement::kColinear && ap.count > 0 &&
+      (ap.line_to_m - ap.line_from_m).norm() < 1e-6) {
+    invalid(locate, "access_points.line_to_m",
+            "placement 'colinear' needs line_from_m != line_to_m");
+  }
+}
+
+Scene load_from_node(const YAML::Node& root, SourceMap& sources) {
+  Scene scene;
+  YamlReader reader(root, "", sources);
+  // Check the version first so a future file fails with a clear message, not a wrong key.
+  if (root.IsMap() && root["version"].IsDefined()) {
+    const YAML::Node v = root["version"];
+    if (!v.IsScalar() || v.Scalar() != "1") {
+      throw ParseError(sources.where(v.Mark()), "version",
+                       "unsupported scene version " + describe(v) + "; this build reads version 1");
+    }
+  }
+  schema::visit(reader, scene);
+  reader.finish();
+  scene.source_path = sources.file;
+  validate_scene_impl(scene, [&](const std::string& key) { return sources.where(key); });
+  if (scene.access_points.placement == ApPlacement::kExplicit && scene.access_points.count == 0) {
+    scene.access_points.count = static_cast<int>(scene.access_points.explicit_list.size());
+  }
+  return scene;
+}
+
+}  // namespace
+
+Scene load_scene_yaml(const std::string& yaml_text, const std::string& source_name) {
+  SourceMap sources{source_name, {}};
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::ParserException& e) {
+    throw ParseError(sources.where(e.mark), "", "not valid YAML: " + e.msg);
+  }
+  if (!root.IsDefined() || root.IsNull())
+    throw ParseError(source_name, "", "the scene file is empty");
+  return load_from_node(root, sources);
+}
+
+Scene load_scene_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(path + ": cannot open scene file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return load_scene_yaml(buffer.str(), path);
+}
+
+void validate_scene(const Scene& scene) { validate_scene_impl(scene, nullptr); }
+
+std::string resolved_scene_yaml(const Scene& scene) {
+  YAML::Emitter out;
+  out << YAML::BeginMap;
+  YamlWriter writer(out);
+  Scene copy = scene;
+  schema::visit(writer, copy);
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+}  // namespace wifislam

@@ -1,0 +1,258 @@
+#pragma once
+// The scene file schema, written once as a list of fields per struct and used twice: by the
+// YAML reader (scene_loader.cpp) and by the YAML writer of resolved scenes. Adding a key to the
+// schema is one line here (plus its documentation in scenes/README.md).
+//
+// A visitor `V` provides:
+//   number(key, double&, Limits), integer(key, int&, Limits), uint64(key, uint64_t&),
+//   boolean(key, bool&), text(key, std::string&), optional_number(key, std::optional<double>&,
+//   Limits), optional_uint64(key, std::optional<uint64_t>&), choice(key, Enum&, names),
+//   vec2(key, Eigen::Vector2d&), vec3(key, Eigen::Vector3d&), polygon(key, vector<Vector2d>&),
+//   text_list(key, vector<string>&), interval(key, double& lo, double& hi, Limits),
+//   object(key, T&), list(key, vector<T>&), and `required(key)` to mark the next key mandatory.
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "sim/scene/scene.hpp"
+
+namespace wifislam::schema {
+
+/// Allowed range of a number; `open_low` excludes the lower bound (for "must be > 0").
+struct Limits {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool open_low = false;
+};
+inline constexpr Limits kAny{};
+inline constexpr Limits kPositive{0.0, std::numeric_limits<double>::infinity(), true};
+inline constexpr Limits kNonNegative{0.0, std::numeric_limits<double>::infinity(), false};
+inline constexpr Limits kUnit{0.0, 1.0, false};
+
+template <class E>
+using Names = std::vector<std::pair<E, std::string_view>>;
+
+inline Names<WallMaterial> material_names() {
+  return {{WallMaterial::kPlasterboard, "plasterboard"},
+          {WallMaterial::kBrick, "brick"},
+          {WallMaterial::kConcrete, "concrete"},
+          {WallMaterial::kGlass, "glass"},
+          {WallMaterial::kWoodDoor, "wood_door"}};
+}
+
+template <class V>
+void visit(V& v, Building& b) {
+  v.number("wall_height_m", b.wall_height_m, Limits{1.8, 10.0});
+  v.number("wall_thickness_m", b.wall_thickness_m, Limits{0.02, 1.0});
+}
+
+template <class V>
+void visit(V& v, SceneNode& n) {
+  v.required();
+  v.text("id", n.id);
+  v.required();
+  v.vec2("position_m", n.position_m);
+}
+
+template <class V>
+void visit(V& v, RoomRow& r) {
+  v.choice("side", r.side,
+           Names<RoomRow::Side>{{RoomRow::Side::kLeft, "left"},
+                                {RoomRow::Side::kRight, "right"},
+                                {RoomRow::Side::kBoth, "both"}});
+  v.number("from_m", r.from_m, kNonNegative);
+  v.optional_number("to_m", r.to_m, kPositive);
+  v.number("room_length_m", r.room_length_m, Limits{1.0, 100.0});
+  v.number("depth_m", r.depth_m, Limits{1.0, 100.0});
+  v.number("door_offset_m", r.door_offset_m, kNonNegative);
+  v.number("door_width_m", r.door_width_m, Limits{0.5, 3.0});
+  v.boolean("doors_open", r.doors_open);
+  v.choice("material", r.material, material_names());
+}
+
+template <class V>
+void visit(V& v, Corridor& c) {
+  v.required();
+  v.text("id", c.id);
+  v.required();
+  v.text("from", c.from);
+  v.required();
+  v.text("to", c.to);
+  v.number("width_m", c.width_m, Limits{0.8, 50.0});
+  v.choice("material", c.material, material_names());
+  v.list("rooms", c.rooms);
+}
+
+template <class V>
+void visit(V& v, OpenArea::Pillar& p) {
+  v.required();
+  v.vec2("center_m", p.center_m);
+  v.number("size_m", p.size_m, Limits{0.1, 5.0});
+}
+
+template <class V>
+void visit(V& v, OpenArea& a) {
+  v.required();
+  v.text("id", a.id);
+  v.required();
+  v.polygon("polygon_m", a.polygon_m);
+  v.choice("material", a.material, material_names());
+  v.list("pillars", a.pillars);
+}
+
+template <class V>
+void visit(V& v, AppearanceThemes& t) {
+  v.text("wall", t.wall);
+  v.text("door", t.door);
+  v.text("floor", t.floor);
+  v.text("ceiling", t.ceiling);
+}
+
+template <class V>
+void visit(V& v, Landmark& l) {
+  v.required();
+  v.vec2("position_m", l.position_m);
+  v.number("height_m", l.height_m, Limits{0.2, 5.0});
+  v.number("width_m", l.width_m, Limits{0.1, 5.0});
+  v.text("kind", l.kind);
+}
+
+template <class V>
+void visit(V& v, Appearance& a) {
+  v.number("aliasing", a.aliasing, kUnit);
+  v.number("segment_length_m", a.segment_length_m, Limits{0.5, 100.0});
+  v.object("themes", a.themes);
+  v.number("posters_per_10m", a.posters_per_10m, Limits{0.0, 20.0});
+  v.number("light_spacing_m", a.light_spacing_m, Limits{0.5, 50.0});
+  v.list("landmarks", a.landmarks);
+}
+
+template <class V>
+void visit(V& v, AccessPointSpec& s) {
+  v.required();
+  v.vec3("position_m", s.position_m);
+  v.optional_number("tx_power_dbm", s.tx_power_dbm, Limits{-10.0, 36.0});
+}
+
+template <class V>
+void visit(V& v, AccessPoints& a) {
+  v.choice("placement", a.placement,
+           Names<ApPlacement>{{ApPlacement::kExplicit, "explicit"},
+                              {ApPlacement::kGrid, "grid"},
+                              {ApPlacement::kRandom, "random"},
+                              {ApPlacement::kRooms, "rooms"},
+                              {ApPlacement::kColinear, "colinear"}});
+  v.integer("count", a.count, Limits{0, 10000});
+  v.optional_uint64("seed", a.seed);
+  v.number("height_m", a.height_m, Limits{0.0, 10.0});
+  v.number("tx_power_dbm", a.tx_power_dbm, Limits{-10.0, 36.0});
+  v.integer("ssids_per_radio", a.ssids_per_radio, Limits{1, 16});
+  v.number("min_spacing_m", a.min_spacing_m, kNonNegative);
+  v.list("list", a.explicit_list);
+  v.vec2("line_from_m", a.line_from_m);
+  v.vec2("line_to_m", a.line_to_m);
+}
+
+template <class V>
+void visit(V& v, PauseSpec& p) {
+  v.interval("spacing_m", p.spacing_min_m, p.spacing_max_m, Limits{0.5, 1000.0});
+  v.number("duration_s", p.duration_s, kNonNegative);
+  v.boolean("scan_while_moving", p.scan_while_moving);
+}
+
+template <class V>
+void visit(V& v, Route& r) {
+  v.required();
+  v.text_list("nodes", r.nodes);
+  v.number("speed_mps", r.speed_mps, Limits{0.05, 5.0});
+  v.number("max_yaw_rate_radps", r.max_yaw_rate_radps, Limits{0.05, 10.0});
+  v.number("turn_radius_m", r.turn_radius_m, Limits{0.0, 20.0});
+  v.number("min_wall_clearance_m", r.min_wall_clearance_m, kNonNegative);
+  v.object("pause", r.pause);
+}
+
+template <class V>
+void visit(V& v, CameraSpec& c) {
+  v.integer("width_px", c.intrinsics.width_px, Limits{16, 8192});
+  v.integer("height_px", c.intrinsics.height_px, Limits{16, 8192});
+  v.number("fx_px", c.intrinsics.fx_px, kPositive);
+  v.number("fy_px", c.intrinsics.fy_px, kPositive);
+  v.number("cx_px", c.intrinsics.cx_px, kAny);
+  v.number("cy_px", c.intrinsics.cy_px, kAny);
+  v.number("fps", c.fps, Limits{0.1, 1000.0});
+  v.number("height_m", c.height_m, Limits{0.05, 5.0});
+  v.number("pitch_deg", c.pitch_deg, Limits{-60.0, 60.0});
+}
+
+template <class V>
+void visit(V& v, DepthSensorSpec& d) {
+  v.number("min_range_m", d.min_range_m, kNonNegative);
+  v.number("max_range_m", d.max_range_m, kPositive);
+  v.boolean("noise", d.noise);
+  v.boolean("quantisation", d.quantisation);
+  v.boolean("dropouts", d.dropouts);
+}
+
+template <class V>
+void visit(V& v, WifiScannerSpec& w) {
+  v.number("sensitivity_dbm", w.sensitivity_dbm, Limits{-120.0, -40.0});
+  v.number("dwell_per_channel_s", w.dwell_per_channel_s, Limits{0.001, 1.0});
+  v.number("scan_interval_s", w.scan_interval_s, Limits{0.1, 60.0});
+}
+
+template <class V>
+void visit(V& v, OdometrySpec& o) {
+  v.number("rate_hz", o.rate_hz, Limits{1.0, 1000.0});
+  v.number("noise_per_m", o.noise_per_m, kNonNegative);
+  v.number("noise_per_rad", o.noise_per_rad, kNonNegative);
+  v.number("scale_error", o.scale_error, Limits{-0.5, 0.5});
+  v.number("yaw_bias_radpm", o.yaw_bias_radpm, Limits{-1.0, 1.0});
+}
+
+template <class V>
+void visit(V& v, Sensors& s) {
+  v.object("camera", s.camera);
+  v.object("depth", s.depth);
+  v.object("wifi", s.wifi);
+  v.object("odometry", s.odometry);
+}
+
+template <class V>
+void visit(V& v, RadioSpec& r) {
+  v.choice("environment", r.environment,
+           Names<RadioEnvironment>{{RadioEnvironment::kResidential, "residential"},
+                                   {RadioEnvironment::kOffice, "office"},
+                                   {RadioEnvironment::kCommercial, "commercial"}});
+  v.optional_number("distance_coefficient", r.distance_coefficient, Limits{10.0, 60.0});
+  v.number("shadowing_sigma_db", r.shadowing_sigma_db, kNonNegative);
+  v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, kPositive);
+  v.number("fast_fading_sigma_db", r.fast_fading_sigma_db, kNonNegative);
+  v.number("people_disturbance_db", r.people_disturbance_db, kNonNegative);
+}
+
+template <class V>
+void visit(V& v, Scene& s) {
+  v.required();
+  v.integer("version", s.version, Limits{1, 1});
+  v.text("name", s.name);
+  v.text("description", s.description);
+  v.uint64("seed", s.seed);
+  v.object("building", s.building);
+  v.required();
+  v.list("nodes", s.nodes);
+  v.required();
+  v.list("corridors", s.corridors);
+  v.list("open_areas", s.open_areas);
+  v.object("appearance", s.appearance);
+  v.object("access_points", s.access_points);
+  v.required();
+  v.object("route", s.route);
+  v.object("sensors", s.sensors);
+  v.object("radio", s.radio);
+}
+
+}  // namespace wifislam::schema

@@ -1,0 +1,210 @@
+// Bad scene files: each class of mistake is reported with file:line:column, the key path and
+// what was expected.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/error.hpp"
+#include "sim/scene/scene_loader.hpp"
+
+namespace wifislam {
+namespace {
+
+const char* kValidBody = R"(version: 1
+nodes:
+  - {id: A, position_m: [0, 0]}
+  - {id: B, position_m: [10, 0]}
+  - {id: C, position_m: [10, 10]}
+corridors:
+  - {id: ab, from: A, to: B, width_m: 2.0}
+  - {id: bc, from: B, to: C}
+route:
+  nodes: [A, B, C]
+)";
+
+/// Loads `yaml` and returns the ParseError it must raise.
+ParseError expect_parse_error(const std::string& yaml) {
+  try {
+    load_scene_yaml(yaml, "bad.yaml");
+  } catch (const ParseError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no ParseError for:\n" << yaml;
+  return ParseError("", "", "");
+}
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
+
+TEST(SceneErrors, ValidBaseSceneLoads) { EXPECT_NO_THROW(load_scene_yaml(kValidBody, "ok.yaml")); }
+
+TEST(SceneErrors, UnknownKeyNamesKeyLineAndSuggestsTheRightOne) {
+  const auto e = expect_parse_error(replace(kValidBody, "width_m: 2.0", "widht_m: 2.0"));
+  EXPECT_EQ(e.key_path(), "corridors[0].widht_m");
+  EXPECT_EQ(e.where(), "bad.yaml:7:30");
+  EXPECT_NE(std::string(e.what()).find("unknown key"), std::string::npos);
+  EXPECT_NE(std::string(e.what()).find("did you mean 'width_m'"), std::string::npos);
+}
+
+TEST(SceneErrors, UnknownTopLevelKey) {
+  const auto e = expect_parse_error(std::string(kValidBody) + "colour: red\n");
+  EXPECT_EQ(e.key_path(), "colour");
+  EXPECT_EQ(e.where(), "bad.yaml:11:1");
+}
+
+TEST(SceneErrors, WrongTypeSaysWhatWasExpected) {
+  const auto e = expect_parse_error(replace(kValidBody, "width_m: 2.0", "width_m: wide"));
+  EXPECT_EQ(e.key_path(), "corridors[0].width_m");
+  EXPECT_EQ(e.where(), "bad.yaml:7:39");
+  EXPECT_NE(e.detail().find("expected a number in [0.8, 50]"), std::string::npos) << e.what();
+  EXPECT_NE(e.detail().find("'wide'"), std::string::npos);
+}
+
+TEST(SceneErrors, NegativeWidthIsOutOfRange) {
+  const auto e = expect_parse_error(replace(kValidBody, "width_m: 2.0", "width_m: -2"));
+  EXPECT_EQ(e.key_path(), "corridors[0].width_m");
+  EXPECT_NE(e.detail().find("got -2"), std::string::npos);
+}
+
+TEST(SceneErrors, ListWhereMappingExpected) {
+  const auto e =
+      expect_parse_error(replace(kValidBody, "route:\n  nodes: [A, B, C]", "route: [A, B]"));
+  EXPECT_EQ(e.key_path(), "route");
+  EXPECT_NE(e.detail().find("expected a mapping"), std::string::npos);
+}
+
+TEST(SceneErrors, MissingRequiredKey) {
+  const auto e = expect_parse_error(replace(kValidBody, "route:\n  nodes: [A, B, C]\n", ""));
+  EXPECT_EQ(e.key_path(), "route");
+  EXPECT_NE(e.detail().find("required key is missing"), std::string::npos);
+}
+
+TEST(SceneErrors, UnsupportedVersion) {
+  const auto e = expect_parse_error(replace(kValidBody, "version: 1", "version: 2"));
+  EXPECT_EQ(e.key_path(), "version");
+  EXPECT_EQ(e.where(), "bad.yaml:1:10");
+}
+
+TEST(SceneErrors, UnknownMaterialListsTheChoices) {
+  const auto e = expect_parse_error(replace(kValidBody, "{id: bc, from: B, to: C}",
+                                            "{id: bc, from: B, to: C, material: cheese}"));
+  EXPECT_EQ(e.key_path(), "corridors[1].material");
+  EXPECT_NE(e.detail().find("plasterboard, brick, concrete, glass, wood_door"), std::string::npos);
+}
+
+TEST(SceneErrors, CorridorToMissingNode) {
+  const auto e = expect_parse_error(
+      replace(kValidBody, "{id: bc, from: B, to: C}", "{id: bc, from: B, to: Z}"));
+  EXPECT_EQ(e.key_path(), "corridors[1].to");
+  EXPECT_EQ(e.where(), "bad.yaml:8:27");
+  EXPECT_NE(e.detail().find("no node with id 'Z'"), std::string::npos);
+}
+
+TEST(SceneErrors, RouteThroughNonExistentCorridor) {
+  const auto e = expect_parse_error(replace(kValidBody, "nodes: [A, B, C]", "nodes: [A, C]"));
+  EXPECT_EQ(e.key_path(), "route.nodes[1]");
+  EXPECT_NE(e.detail().find("no corridor joins 'A' and 'C'"), std::string::npos);
+  EXPECT_EQ(e.where(), "bad.yaml:10:10");  // falls back to the route.nodes list's position
+}
+
+TEST(SceneErrors, RouteThroughUnknownNode) {
+  const auto e = expect_parse_error(replace(kValidBody, "nodes: [A, B, C]", "nodes: [A, B, Q]"));
+  EXPECT_EQ(e.key_path(), "route.nodes[2]");
+}
+
+TEST(SceneErrors, DisconnectedGraph) {
+  std::string yaml = replace(kValidBody, "  - {id: C, position_m: [10, 10]}\n",
+                             "  - {id: C, position_m: [10, 10]}\n  - {id: D, position_m: [30, 0]}\n"
+                             "  - {id: E, position_m: [40, 0]}\n");
+  yaml = replace(yaml, "  - {id: bc, from: B, to: C}\n",
+                 "  - {id: bc, from: B, to: C}\n  - {id: de, from: D, to: E}\n");
+  const auto e = expect_parse_error(yaml);
+  EXPECT_EQ(e.key_path(), "nodes[3]");
+  EXPECT_NE(e.detail().find("disconnected"), std::string::npos);
+}
+
+TEST(SceneErrors, IsolatedNode) {
+  const auto e = expect_parse_error(
+      replace(kValidBody, "  - {id: C, position_m: [10, 10]}\n",
+              "  - {id: C, position_m: [10, 10]}\n  - {id: X, position_m: [5, 5]}\n"));
+  EXPECT_EQ(e.key_path(), "nodes[3]");
+  EXPECT_NE(e.detail().find("not joined to any corridor"), std::string::npos);
+}
+
+TEST(SceneErrors, DuplicateIds) {
+  EXPECT_EQ(expect_parse_error(replace(kValidBody, "{id: C, position_m", "{id: B, position_m"))
+                .key_path(),
+            "nodes[2].id");
+  EXPECT_EQ(expect_parse_error(replace(kValidBody, "{id: bc,", "{id: ab,")).key_path(),
+            "corridors[1].id");
+}
+
+TEST(SceneErrors, RoomRowBeyondCorridorEnd) {
+  const auto e = expect_parse_error(replace(kValidBody, "{id: bc, from: B, to: C}",
+                                            "{id: bc, from: B, to: C, rooms: [{to_m: 12}]}"));
+  EXPECT_EQ(e.key_path(), "corridors[1].rooms[0].to_m");
+  EXPECT_NE(e.detail().find("beyond the corridor's length"), std::string::npos);
+}
+
+TEST(SceneErrors, DoorLargerThanRoom) {
+  const auto e = expect_parse_error(replace(kValidBody, "{id: bc, from: B, to: C}",
+                                            "{id: bc, from: B, to: C, rooms: [{room_length_m: 2, "
+                                            "door_offset_m: 1.5, door_width_m: 0.9}]}"));
+  EXPECT_EQ(e.key_path(), "corridors[1].rooms[0].door_offset_m");
+}
+
+TEST(SceneErrors, InvertedIntervalAndRanges) {
+  std::string yaml = std::string(kValidBody) + "  pause: {spacing_m: [4, 3]}\n";
+  EXPECT_EQ(expect_parse_error(yaml).key_path(), "route.pause.spacing_m");
+  yaml = std::string(kValidBody) + "sensors: {depth: {min_range_m: 3, max_range_m: 2}}\n";
+  EXPECT_EQ(expect_parse_error(yaml).key_path(), "sensors.depth.max_range_m");
+  yaml = std::string(kValidBody) + "appearance: {aliasing: 1.5}\n";
+  EXPECT_EQ(expect_parse_error(yaml).key_path(), "appearance.aliasing");
+}
+
+TEST(SceneErrors, BadVectorAndBoolean) {
+  EXPECT_EQ(
+      expect_parse_error(replace(kValidBody, "position_m: [0, 0]", "position_m: [0]")).key_path(),
+      "nodes[0].position_m");
+  const std::string yaml = std::string(kValidBody) + "sensors: {depth: {noise: maybe}}\n";
+  const auto e = expect_parse_error(yaml);
+  EXPECT_EQ(e.key_path(), "sensors.depth.noise");
+  EXPECT_NE(e.detail().find("expected true or false"), std::string::npos);
+}
+
+TEST(SceneErrors, ExplicitPlacementWithoutList) {
+  const std::string yaml =
+      std::string(kValidBody) + "access_points: {placement: explicit, count: 3}\n";
+  EXPECT_EQ(expect_parse_error(yaml).key_path(), "access_points.list");
+}
+
+TEST(SceneErrors, InvalidYamlSyntaxHasAPosition) {
+  const auto e = expect_parse_error("version: 1\nnodes: [\n  {id: A\n");
+  EXPECT_NE(e.where().find("bad.yaml:"), std::string::npos);
+  EXPECT_NE(e.detail().find("not valid YAML"), std::string::npos);
+}
+
+TEST(SceneErrors, EmptyFile) { EXPECT_THROW(load_scene_yaml("", "empty.yaml"), ParseError); }
+
+TEST(SceneErrors, MissingFileIsAnIoErrorNamingThePath) {
+  try {
+    load_scene_file("/nonexistent/scene.yaml");
+    FAIL();
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.yaml"), std::string::npos);
+  }
+}
+
+TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
+  Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
+  scene.route.nodes = {"A", "C"};
+  EXPECT_THROW(validate_scene(scene), InvalidInputError);
+}
+
+}  // namespace
+}  // namespace wifislam
