@@ -195,6 +195,11 @@ void visit(V& v, DepthSensorSpec& d) {
   v.boolean("noise", d.noise);
   v.boolean("quantisation", d.quantisation);
   v.boolean("dropouts", d.dropouts);
+  v.number("axial_noise_coeff_per_m", d.axial_noise_coeff_per_m, kNonNegative);
+  v.number("baseline_m", d.baseline_m, kPositive);
+  v.number("disparity_step_px", d.disparity_step_px, kPositive);
+  v.number("grazing_dropout_deg", d.grazing_dropout_deg, Limits{0.0, 90.0});
+  v.number("edge_jump_fraction", d.edge_jump_fraction, kPositive);
 }
 
 template <class V>
