@@ -1,0 +1,32 @@
+#include "slam/loop/candidate_selector.hpp"
+
+#include <algorithm>
+
+namespace wifislam::slam {
+
+std::string to_string(CandidateRole role) {
+  switch (role) {
+    case CandidateRole::kPredecessor:
+      return "predecessor";
+    case CandidateRole::kNeighbour:
+      return "neighbour";
+    case CandidateRole::kSampled:
+      return "sampled";
+    case CandidateRole::kRelocalisation:
+      return "relocalisation";
+  }
+  return "unknown";
+}
+
+std::vector<KeyframeId> VerificationReport::visually_connected() const {
+  std::vector<KeyframeId> out;
+  if (tracked_from >= 0) out.push_back(tracked_from);
+  for (const ComparisonOutcome& c : comparisons) {
+    if (c.accepted) out.push_back(c.candidate.keyframe);
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+}  // namespace wifislam::slam

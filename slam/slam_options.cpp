@@ -1,0 +1,167 @@
+#include "slam/slam_options.hpp"
+
+#include <charconv>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace wifislam::slam {
+
+std::vector<OptionField> option_fields(SlamOptions& o) {
+  return {
+      {"frontend", &o.frontend, "loop-closure candidate selection policy"},
+      {"seed", &o.seed, "seed of every random draw"},
+      {"max_keypoints", &o.features.max_keypoints, "ORB keypoints per frame"},
+      {"orb_scale_factor", &o.features.scale_factor, "ORB pyramid scale step"},
+      {"orb_levels", &o.features.pyramid_levels, "ORB pyramid levels"},
+      {"fast_threshold", &o.features.fast_threshold, "FAST corner threshold"},
+      {"min_depth_m", &o.features.min_depth_m, "nearest usable depth reading (m)"},
+      {"max_depth_m", &o.features.max_depth_m, "farthest usable depth reading (m)"},
+      {"match_ratio", &o.transform.matching.ratio, "Lowe ratio test threshold"},
+      {"max_hamming_distance", &o.transform.matching.max_hamming_distance,
+       "largest accepted descriptor distance"},
+      {"min_matches", &o.transform.min_matches,
+       "minimum RANSAC inliers to accept a transformation"},
+      {"inlier_distance", &o.transform.inlier_distance,
+       "RANSAC inlier threshold: reprojection error (px)"},
+      {"ransac_iterations", &o.transform.ransac_iterations, "maximum RANSAC iterations"},
+      {"ransac_confidence", &o.transform.ransac_confidence, "RANSAC stopping confidence (< 1)"},
+      {"min_reprojection_sigma_px", &o.transform.min_reprojection_sigma_px,
+       "floor of the reprojection noise in the information matrix (px)"},
+      {"keyframe_min_inliers", &o.tracking.keyframe_min_inliers,
+       "new keyframe when tracking inliers drop below"},
+      {"keyframe_max_translation_m", &o.tracking.keyframe_max_translation_m,
+       "new keyframe after this much translation (m)"},
+      {"keyframe_max_rotation_rad", &o.tracking.keyframe_max_rotation_rad,
+       "new keyframe after this much rotation (rad)"},
+      {"loop_min_keyframe_gap", &o.tracking.loop_min_keyframe_gap,
+       "keyframes back from which an accepted comparison is a loop closure"},
+      {"relocalisation_keyframes", &o.tracking.relocalisation_keyframes,
+       "recent keyframes tried when tracking is lost"},
+      {"odometry_edges", &o.tracking.odometry_edges,
+       "odometry edges between consecutive keyframes"},
+      {"odometry_sigma_m", &o.tracking.odometry_sigma_m, "odometry edge translation sigma (m)"},
+      {"odometry_sigma_rad", &o.tracking.odometry_sigma_rad, "odometry edge rotation sigma (rad)"},
+      {"weak_sigma_m", &o.tracking.weak_sigma_m, "weak edge translation sigma (m)"},
+      {"weak_sigma_rad", &o.tracking.weak_sigma_rad, "weak edge rotation sigma (rad)"},
+      {"predecessor_candidates", &o.rgbdslam.predecessor_candidates,
+       "rgbdslam: recent keyframes compared"},
+      {"neighbor_candidates", &o.rgbdslam.neighbor_candidates,
+       "rgbdslam: geodesic neighbours sampled"},
+      {"geodesic_depth", &o.rgbdslam.geodesic_depth, "rgbdslam: graph depth of neighbours"},
+      {"min_sampled_candidates", &o.rgbdslam.min_sampled_candidates,
+       "rgbdslam: random earlier keyframes"},
+      {"optimizer_iterations", &o.graph.max_iterations, "iterations of the final optimisation"},
+      {"optimizer_incremental_iterations", &o.graph.incremental_max_iterations,
+       "iterations after each loop closure"},
+      {"robust_loss", &o.graph.robust_loss, "loss on loop edges: none, huber, cauchy"},
+      {"robust_loss_scale", &o.graph.robust_loss_scale, "robust loss scale (whitened units)"},
+      {"optimizer_threads", &o.graph.threads, "Ceres residual evaluation threads"},
+  };
+}
+
+namespace {
+
+template <typename T>
+bool parse_number(const std::string& text, T& out) {
+  const char* begin = text.data();
+  const char* end = begin + text.size();
+  const auto [ptr, ec] = std::from_chars(begin, end, out);
+  return ec == std::errc() && ptr == end;
+}
+
+std::string known_keys(SlamOptions& options) {
+  std::string keys;
+  for (const OptionField& f : option_fields(options)) keys += (keys.empty() ? "" : ", ") + f.key;
+  return keys;
+}
+
+}  // namespace
+
+void set_option(SlamOptions& options, const std::string& key, const std::string& value) {
+  for (const OptionField& field : option_fields(options)) {
+    if (field.key != key) continue;
+    const auto bad = [&](const char* expected) {
+      return ParseError("--set", key, fmt::format("expected {}, got '{}'", expected, value));
+    };
+    if (auto* p = std::get_if<int*>(&field.target)) {
+      if (!parse_number(value, **p)) throw bad("an integer");
+    } else if (auto* p = std::get_if<double*>(&field.target)) {
+      double v = 0;
+      if (!parse_number(value, v) || !std::isfinite(v)) throw bad("a finite number");
+      **p = v;
+    } else if (auto* p = std::get_if<std::uint64_t*>(&field.target)) {
+      if (!parse_number(value, **p)) throw bad("a non-negative integer");
+    } else if (auto* p = std::get_if<bool*>(&field.target)) {
+      if (value == "true" || value == "1" || value == "on") {
+        **p = true;
+      } else if (value == "false" || value == "0" || value == "off") {
+        **p = false;
+      } else {
+        throw bad("true or false");
+      }
+    } else if (auto* p = std::get_if<std::string*>(&field.target)) {
+      **p = value;
+    }
+    return;
+  }
+  throw ParseError("--set", key, "unknown SLAM option; known: " + known_keys(options));
+}
+
+void set_option_assignment(SlamOptions& options, const std::string& assignment) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0) {
+    throw ParseError("--set", assignment, "expected key=value");
+  }
+  set_option(options, assignment.substr(0, eq), assignment.substr(eq + 1));
+}
+
+void validate(const SlamOptions& o) {
+  const auto require = [](bool ok, const std::string& message) {
+    if (!ok) throw InvalidInputError("SLAM option " + message);
+  };
+  require(o.features.max_keypoints >= 8, "max_keypoints must be >= 8");
+  require(o.features.scale_factor > 1.0, "orb_scale_factor must be > 1");
+  require(o.features.pyramid_levels >= 1, "orb_levels must be >= 1");
+  require(o.features.min_depth_m >= 0 && o.features.max_depth_m > o.features.min_depth_m,
+          "min_depth_m/max_depth_m must satisfy 0 <= min < max");
+  require(o.transform.matching.ratio > 0 && o.transform.matching.ratio <= 1,
+          "match_ratio must be in (0, 1]");
+  require(o.transform.min_matches >= 6, "min_matches must be >= 6 (PnP needs a few points)");
+  require(o.transform.inlier_distance > 0, "inlier_distance must be > 0 (pixels)");
+  require(o.transform.ransac_iterations >= 1, "ransac_iterations must be >= 1");
+  require(o.transform.ransac_confidence > 0 && o.transform.ransac_confidence < 1,
+          "ransac_confidence must be in (0, 1)");
+  require(o.transform.min_reprojection_sigma_px > 0, "min_reprojection_sigma_px must be > 0");
+  require(o.tracking.keyframe_max_translation_m > 0, "keyframe_max_translation_m must be > 0");
+  require(o.tracking.keyframe_max_rotation_rad > 0, "keyframe_max_rotation_rad must be > 0");
+  require(o.tracking.loop_min_keyframe_gap >= 1, "loop_min_keyframe_gap must be >= 1");
+  require(o.tracking.relocalisation_keyframes >= 0, "relocalisation_keyframes must be >= 0");
+  require(o.tracking.odometry_sigma_m > 0 && o.tracking.odometry_sigma_rad > 0 &&
+              o.tracking.weak_sigma_m > 0 && o.tracking.weak_sigma_rad > 0,
+          "edge sigmas must be > 0");
+  require(o.rgbdslam.predecessor_candidates >= 1, "predecessor_candidates must be >= 1");
+  require(o.rgbdslam.neighbor_candidates >= 0, "neighbor_candidates must be >= 0");
+  require(o.rgbdslam.geodesic_depth >= 0, "geodesic_depth must be >= 0");
+  require(o.rgbdslam.min_sampled_candidates >= 0, "min_sampled_candidates must be >= 0");
+  require(o.graph.max_iterations >= 1 && o.graph.incremental_max_iterations >= 0,
+          "optimizer iterations must be >= 1 (final) and >= 0 (incremental)");
+  require(o.graph.robust_loss == "none" || o.graph.robust_loss == "huber" ||
+              o.graph.robust_loss == "cauchy",
+          "robust_loss must be none, huber or cauchy");
+  require(o.graph.robust_loss_scale > 0, "robust_loss_scale must be > 0");
+  require(o.graph.threads >= 1, "optimizer_threads must be >= 1");
+}
+
+nlohmann::json to_json(const SlamOptions& options) {
+  SlamOptions copy = options;
+  nlohmann::json out = nlohmann::json::object();
+  for (const OptionField& f : option_fields(copy)) {
+    std::visit([&](auto* p) { out[f.key] = *p; }, f.target);
+  }
+  return out;
+}
+
+}  // namespace wifislam::slam

@@ -1,0 +1,31 @@
+#include "slam/system/run_slam.hpp"
+
+#include <chrono>
+
+namespace wifislam::slam {
+
+std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& options,
+                                     RunSummary& summary, const FrameProgress& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  StreamInfo info;
+  info.intrinsics = stream.intrinsics();
+  info.camera_in_base = stream.camera_in_base();
+  info.has_wifi = stream.has_wifi();
+  info.has_odometry = stream.has_odometry();
+  auto system = std::make_unique<SlamSystem>(options, info);
+  std::int64_t frames = 0;
+  while (std::optional<SensorEvent> event = stream.next()) {
+    system->process(*event);
+    if (std::holds_alternative<RgbdFrame>(*event)) {
+      ++frames;
+      if (progress) progress(frames);
+    }
+  }
+  system->finish();
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  summary = summarize(*system, stream.description(), wall_s);
+  return system;
+}
+
+}  // namespace wifislam::slam

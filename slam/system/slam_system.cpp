@@ -1,0 +1,237 @@
+#include "slam/system/slam_system.hpp"
+
+#include <algorithm>
+
+#include "slam/loop/candidate_selector_factory.hpp"
+
+namespace wifislam::slam {
+
+namespace {
+
+Information6 diagonal_information(double sigma_m, double sigma_rad) {
+  Information6 info = Information6::Zero();
+  info.diagonal().head<3>().setConstant(1.0 / (sigma_m * sigma_m));
+  info.diagonal().tail<3>().setConstant(1.0 / (sigma_rad * sigma_rad));
+  return info;
+}
+
+}  // namespace
+
+SlamSystem::SlamSystem(const SlamOptions& options, const StreamInfo& stream)
+    : options_(options), stream_(stream) {
+  validate(options_);
+  extractor_ = std::make_unique<OrbFeatureExtractor>(options_.features, stream_.intrinsics);
+  SelectorContext context;
+  context.options = &options_;
+  context.instrumentation = &instrumentation_;
+  context.stream_has_wifi = stream_.has_wifi;
+  context.stream_has_odometry = stream_.has_odometry;
+  selector_ = make_candidate_selector(context);
+}
+
+SlamSystem::~SlamSystem() = default;
+
+void SlamSystem::process(const SensorEvent& event) {
+  ScopedTimer total(instrumentation_, module::kTotal);
+  if (const auto* frame = std::get_if<RgbdFrame>(&event)) {
+    process_frame(*frame);
+  } else if (const auto* scan = std::get_if<WifiScan>(&event)) {
+    selector_->observe_wifi_scan(*scan);
+  } else if (const auto* odometry = std::get_if<OdometryReading>(&event)) {
+    last_odometry_ = *odometry;
+    selector_->observe_odometry(*odometry);
+  }
+}
+
+std::optional<Pose> SlamSystem::current_odometry_camera() const {
+  if (!last_odometry_) return std::nullopt;
+  return last_odometry_->base_in_odom * stream_.camera_in_base;
+}
+
+VisualTransformation SlamSystem::compare(const FrameFeatures& a, const FrameFeatures& b) {
+  return estimate_visual_transformation(a, b, stream_.intrinsics, options_.transform,
+                                        instrumentation_);
+}
+
+bool SlamSystem::needs_new_keyframe(const VisualTransformation& t) const {
+  const int min_inliers =
+      std::max(options_.tracking.keyframe_min_inliers, options_.transform.min_matches);
+  return t.inliers < min_inliers ||
+         t.a_from_b.translation().norm() > options_.tracking.keyframe_max_translation_m ||
+         Eigen::AngleAxisd(t.a_from_b.linear()).angle() >
+             options_.tracking.keyframe_max_rotation_rad;
+}
+
+void SlamSystem::process_frame(const RgbdFrame& frame) {
+  instrumentation_.count(counter::kFrames);
+  FrameFeatures features;
+  {
+    ScopedTimer timer(instrumentation_, module::kFeatureExtraction);
+    features = extractor_->extract(frame);
+  }
+  const std::optional<Pose> odometry = current_odometry_camera();
+  if (graph_.node_count() == 0) {
+    add_keyframe(std::move(features), odometry, std::nullopt);
+    return;
+  }
+
+  // Against the last keyframe: accepted and within bounds -> tracked; accepted but beyond the
+  // bounds -> new keyframe; rejected -> promote the last tracked frame and retry once.
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const auto keyframe = static_cast<KeyframeId>(graph_.node_count() - 1);
+    const VisualTransformation t =
+        compare(keyframe_features_[static_cast<std::size_t>(keyframe)], features);
+    if (t.accepted && !needs_new_keyframe(t)) {
+      frames_.push_back({frame.time, frame.index, keyframe, t.a_from_b});
+      last_tracked_ =
+          TrackedFrame{std::move(features), t.a_from_b, t.inliers, t.information, odometry};
+      return;
+    }
+    if (t.accepted) {
+      add_keyframe(std::move(features), odometry,
+                   TrackingEdge{keyframe, t.a_from_b, t.information, t.inliers});
+      return;
+    }
+    if (attempt == 0) instrumentation_.count(counter::kTrackingFailures);
+    if (!last_tracked_) break;
+    TrackedFrame promoted = std::move(*last_tracked_);
+    last_tracked_.reset();
+    // Its record is re-made by add_keyframe (relative to itself).
+    if (!frames_.empty() && frames_.back().frame_index == promoted.features.frame_index) {
+      frames_.pop_back();
+    }
+    add_keyframe(std::move(promoted.features), promoted.odometry_camera,
+                 TrackingEdge{keyframe, promoted.keyframe_from_frame, promoted.information,
+                              promoted.inliers});
+  }
+  add_keyframe(std::move(features), odometry, std::nullopt);
+}
+
+void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odometry_camera,
+                              const std::optional<TrackingEdge>& tracking) {
+  instrumentation_.count(counter::kKeyframes);
+  const KeyframeId previous = static_cast<KeyframeId>(graph_.node_count()) - 1;
+  Pose initial = previous >= 0 ? graph_.node(previous).pose : Pose::Identity();
+  if (tracking) initial = graph_.node(tracking->from).pose * tracking->from_to;
+  const KeyframeId id = graph_.add_node(features.time, features.frame_index, initial);
+  frames_.push_back({features.time, features.frame_index, id, Pose::Identity()});
+  keyframe_features_.push_back(std::move(features));
+  keyframe_odometry_.push_back(odometry_camera);
+  last_tracked_.reset();
+  if (tracking) {
+    graph_.add_edge({tracking->from, id, EdgeType::kVisual, tracking->from_to,
+                     tracking->information, tracking->inliers});
+  }
+
+  bool loop_found = false;
+  {
+    ScopedTimer detection(instrumentation_, module::kLoopClosureDetection);
+    const FrameFeatures& current = keyframe_features_.back();
+    SelectionQuery query;
+    query.keyframe = id;
+    query.time = current.time;
+    query.features = &current;
+    query.graph = &graph_;
+    if (tracking) query.already_compared.push_back(tracking->from);
+    std::vector<Candidate> candidates;
+    {
+      ScopedTimer selection(instrumentation_, module::kCandidateSelection);
+      candidates = selector_->select(query);
+    }
+    if (!tracking) {
+      // Lost: also try the most recent keyframes (relocalisation).
+      for (KeyframeId k = previous;
+           k >= 0 && k > previous - options_.tracking.relocalisation_keyframes; --k) {
+        const bool listed = std::any_of(candidates.begin(), candidates.end(),
+                                        [&](const Candidate& c) { return c.keyframe == k; });
+        if (!listed) candidates.push_back({k, CandidateRole::kRelocalisation});
+      }
+    }
+
+    VerificationReport report;
+    report.keyframe = id;
+    report.time = current.time;
+    report.tracked_from = tracking ? tracking->from : -1;
+    bool have_pose = tracking.has_value();
+    for (const Candidate& candidate : candidates) {
+      instrumentation_.count(counter::kCandidateComparisons);
+      const VisualTransformation t =
+          compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current);
+      ComparisonOutcome outcome{candidate, t.accepted, t.inliers, EdgeType::kVisual};
+      if (t.accepted) {
+        const bool loop = id - candidate.keyframe >= options_.tracking.loop_min_keyframe_gap;
+        outcome.edge_type = loop ? EdgeType::kLoop : EdgeType::kVisual;
+        graph_.add_edge(
+            {candidate.keyframe, id, outcome.edge_type, t.a_from_b, t.information, t.inliers});
+        if (!have_pose) {
+          graph_.set_pose(id, graph_.node(candidate.keyframe).pose * t.a_from_b);
+          have_pose = true;
+        }
+        if (loop) {
+          loop_closures_.push_back({candidate.keyframe, id, candidate.role, t.inliers,
+                                    t.rms_reprojection_px, t.a_from_b});
+          instrumentation_.count(counter::kLoopClosures);
+          loop_found = true;
+        }
+      }
+      report.comparisons.push_back(outcome);
+    }
+
+    // Attach a keyframe nothing visual connects (or add odometry edges when asked to).
+    if (previous >= 0) {
+      const std::optional<Pose>& previous_odometry =
+          keyframe_odometry_[static_cast<std::size_t>(previous)];
+      const bool unattached = graph_.adjacent(id).empty();
+      if (odometry_camera && previous_odometry &&
+          (unattached || options_.tracking.odometry_edges)) {
+        const Pose from_to = previous_odometry->inverse() * *odometry_camera;
+        graph_.add_edge({previous, id, EdgeType::kOdometry, from_to,
+                         diagonal_information(options_.tracking.odometry_sigma_m,
+                                              options_.tracking.odometry_sigma_rad),
+                         0});
+        if (unattached) graph_.set_pose(id, graph_.node(previous).pose * from_to);
+      } else if (unattached) {
+        graph_.add_edge(
+            {previous, id, EdgeType::kWeak, Pose::Identity(),
+             diagonal_information(options_.tracking.weak_sigma_m, options_.tracking.weak_sigma_rad),
+             0});
+      }
+    }
+    selector_->on_verified(report);
+    instrumentation_.record_keyframe_search(id, static_cast<std::int64_t>(candidates.size()),
+                                            detection.stop());
+  }
+
+  if (loop_found && options_.graph.incremental_max_iterations > 0) {
+    ScopedTimer timer(instrumentation_, module::kOptimisation);
+    optimise_pose_graph(graph_, options_.graph, options_.graph.incremental_max_iterations);
+    instrumentation_.count(counter::kOptimisations);
+  }
+}
+
+void SlamSystem::finish() {
+  ScopedTimer timer(instrumentation_, module::kOptimisation);
+  final_optimisation_ = optimise_pose_graph(graph_, options_.graph, options_.graph.max_iterations);
+  if (final_optimisation_.ran) instrumentation_.count(counter::kOptimisations);
+}
+
+Trajectory SlamSystem::trajectory() const {
+  Trajectory out;
+  out.reserve(frames_.size());
+  for (const FramePoseRecord& r : frames_) {
+    out.push_back(
+        StampedPose::from_pose(r.time, graph_.node(r.keyframe).pose * r.keyframe_from_frame));
+  }
+  return out;
+}
+
+Trajectory SlamSystem::keyframe_trajectory() const {
+  Trajectory out;
+  out.reserve(graph_.node_count());
+  for (const GraphNode& node : graph_.nodes()) {
+    out.push_back(StampedPose::from_pose(node.time, node.pose));
+  }
+  return out;
+}
+
+}  // namespace wifislam::slam

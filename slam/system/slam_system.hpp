@@ -1,0 +1,118 @@
+#pragma once
+// The visual SLAM pipeline: features -> tracking against the last keyframe -> keyframes ->
+// candidate selection (the front end) -> visual verification -> pose graph (Ceres).
+//
+// Tracking: each frame is matched against the last keyframe. It becomes a keyframe when its
+// inliers drop below `keyframe_min_inliers` or it moved beyond the keyframe bounds. When the
+// match fails, the last well-tracked frame is promoted to keyframe and the match retried; if that
+// fails too, the frame starts a keyframe without tracking edge, which candidate verification
+// (plus the most recent keyframes) tries to relocalise; failing that, wheel odometry or a weak
+// edge attaches it. Every frame gets a pose; nothing here throws on bad data.
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "core/camera_intrinsics.hpp"
+#include "core/sensor_stream.hpp"
+#include "core/tum_trajectory.hpp"
+#include "slam/feature/orb_feature_extractor.hpp"
+#include "slam/graph/pose_graph.hpp"
+#include "slam/loop/candidate_selector.hpp"
+#include "slam/optimize/pose_graph_optimizer.hpp"
+#include "slam/slam_options.hpp"
+#include "slam/util/instrumentation.hpp"
+
+namespace wifislam::slam {
+
+/// Where a frame is: relative to a keyframe, so it follows that keyframe through optimisation.
+struct FramePoseRecord {
+  Timestamp time;
+  std::int64_t frame_index = 0;
+  KeyframeId keyframe = -1;
+  Pose keyframe_from_frame = Pose::Identity();
+};
+
+struct LoopClosureRecord {
+  KeyframeId from = -1, to = -1;  // from = the earlier keyframe
+  CandidateRole role = CandidateRole::kSampled;
+  int inliers = 0;
+  double rms_reprojection_px = 0.0;
+  Pose from_to = Pose::Identity();
+};
+
+/// Sensor facts the pipeline needs besides frames (from the SensorStream).
+struct StreamInfo {
+  CameraIntrinsics intrinsics;
+  Pose camera_in_base = Pose::Identity();
+  bool has_wifi = false;
+  bool has_odometry = false;
+};
+
+class SlamSystem {
+ public:
+  /// Validates the options and builds the front end named by `options.frontend`.
+  SlamSystem(const SlamOptions& options, const StreamInfo& stream);
+  ~SlamSystem();
+  SlamSystem(const SlamSystem&) = delete;
+  SlamSystem& operator=(const SlamSystem&) = delete;
+
+  /// Feeds one event of the stream (frames, Wi-Fi scans, odometry in time order).
+  void process(const SensorEvent& event);
+  void process_frame(const RgbdFrame& frame);
+  /// Full optimisation of the graph; call once at the end.
+  void finish();
+
+  const SlamOptions& options() const { return options_; }
+  const PoseGraph& graph() const { return graph_; }
+  const std::vector<FramePoseRecord>& frame_records() const { return frames_; }
+  const std::vector<LoopClosureRecord>& loop_closures() const { return loop_closures_; }
+  const Instrumentation& instrumentation() const { return instrumentation_; }
+  Instrumentation& instrumentation() { return instrumentation_; }
+  const CandidateSelector& selector() const { return *selector_; }
+  const OptimisationSummary& final_optimisation() const { return final_optimisation_; }
+  const StreamInfo& stream_info() const { return stream_; }
+
+  /// Camera-to-map pose of every frame processed so far (current graph estimate).
+  Trajectory trajectory() const;
+  /// Camera-to-map pose of every keyframe.
+  Trajectory keyframe_trajectory() const;
+
+ private:
+  struct TrackedFrame {
+    FrameFeatures features;
+    Pose keyframe_from_frame;
+    int inliers = 0;
+    Information6 information;
+    std::optional<Pose> odometry_camera;
+  };
+  struct TrackingEdge {
+    KeyframeId from;
+    Pose from_to;
+    Information6 information;
+    int inliers;
+  };
+
+  bool needs_new_keyframe(const VisualTransformation& t) const;
+  std::optional<Pose> current_odometry_camera() const;
+  /// Adds a keyframe, verifies its candidates, attaches it, optimises after loop closures.
+  void add_keyframe(FrameFeatures features, std::optional<Pose> odometry_camera,
+                    const std::optional<TrackingEdge>& tracking);
+  VisualTransformation compare(const FrameFeatures& a, const FrameFeatures& b);
+
+  SlamOptions options_;
+  StreamInfo stream_;
+  Instrumentation instrumentation_;
+  std::unique_ptr<OrbFeatureExtractor> extractor_;
+  std::unique_ptr<CandidateSelector> selector_;
+  PoseGraph graph_;
+  std::vector<FrameFeatures> keyframe_features_;
+  std::vector<std::optional<Pose>> keyframe_odometry_;  // camera pose in the odometry frame
+  std::vector<FramePoseRecord> frames_;
+  std::vector<LoopClosureRecord> loop_closures_;
+  std::optional<TrackedFrame> last_tracked_;
+  std::optional<OdometryReading> last_odometry_;
+  OptimisationSummary final_optimisation_;
+};
+
+}  // namespace wifislam::slam
