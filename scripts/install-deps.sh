@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package wifislam needs to build, test and benchmark.
+# Idempotent: does nothing (and needs no network) when everything is already installed.
+# Uses sudo only when not running as root.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config git clang-format
+  libosmesa6-dev                         # off-screen OpenGL (llvmpipe)
+  libembree-dev                          # ray casting for the radio model
+  libopencv-dev                          # images, ORB features, RANSAC, PNG
+  libeigen3-dev                          # linear algebra, poses
+  libcgal-dev libgmp-dev libmpfr-dev     # floor-plan polygon booleans
+  libceres-dev                           # pose-graph optimisation
+  libyaml-cpp-dev nlohmann-json3-dev     # scene files, results
+  libcli11-dev libspdlog-dev libfmt-dev  # command line, logging
+  libsqlite3-dev                         # study results store
+  libcairo2-dev                          # plots and floor-plan pictures
+  libssl-dev                             # SHA-256 for dataset manifests
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

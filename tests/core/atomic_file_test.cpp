@@ -1,0 +1,61 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("wifislam_atomic_" + name);
+  fs::remove_all(d);
+  fs::remove_all(d.string() + ".partial");
+  return d;
+}
+
+TEST(AtomicDirectory, NothingVisibleUntilCommitAndNothingLeftWhenAbandoned) {
+  const fs::path out = fresh_dir("abandon");
+  {
+    AtomicDirectory dir(out, false);
+    std::ofstream(dir.staging_path() / "a.txt") << "x";
+    EXPECT_FALSE(fs::exists(out));
+  }  // abandoned, e.g. by an exception
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+}
+
+TEST(AtomicDirectory, CommitMovesTheFolderIntoPlace) {
+  const fs::path out = fresh_dir("commit");
+  {
+    AtomicDirectory dir(out, false);
+    std::ofstream(dir.staging_path() / "a.txt") << "x";
+    dir.commit();
+  }
+  EXPECT_TRUE(fs::exists(out / "a.txt"));
+  EXPECT_THROW(AtomicDirectory(out, false), IoError);  // no silent overwrite
+  {
+    AtomicDirectory dir(out, true);
+    std::ofstream(dir.staging_path() / "b.txt") << "y";
+    dir.commit();
+  }
+  EXPECT_FALSE(fs::exists(out / "a.txt"));
+  EXPECT_TRUE(fs::exists(out / "b.txt"));
+  fs::remove_all(out);
+}
+
+TEST(Sha256, MatchesTheStandardTestVectors) {
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  const fs::path f = fs::temp_directory_path() / "wifislam_sha_test.txt";
+  write_file_atomic(f, "abc");
+  EXPECT_EQ(sha256_file_hex(f), sha256_hex("abc"));
+  fs::remove(f);
+}
+
+}  // namespace
+}  // namespace wifislam

@@ -1,0 +1,39 @@
+#include <gtest/gtest.h>
+
+#include "core/timestamp.hpp"
+
+namespace wifislam {
+namespace {
+
+TEST(Timestamp, ParsesDecimalSecondsExactlyToNanoseconds) {
+  EXPECT_EQ(Timestamp::parse("1305031102.175304")->ns, 1305031102175304000LL);
+  EXPECT_EQ(Timestamp::parse("0.000000001")->ns, 1);
+  EXPECT_EQ(Timestamp::parse("12")->ns, 12'000'000'000LL);
+  EXPECT_EQ(Timestamp::parse("-1.5")->ns, -1'500'000'000LL);
+  EXPECT_EQ(Timestamp::parse(".5")->ns, 500'000'000LL);
+}
+
+TEST(Timestamp, RejectsWhatIsNotADecimalTime) {
+  for (const char* bad : {"", ".", "1e9", "abc", "1.2.3", "1.0000000001", "12a", "+"}) {
+    EXPECT_FALSE(Timestamp::parse(bad).has_value()) << bad;
+  }
+}
+
+TEST(Timestamp, FormatsWithRequestedDecimalsAndRounds) {
+  EXPECT_EQ(Timestamp::from_ns(1305031102175304000LL).to_string(6), "1305031102.175304");
+  EXPECT_EQ(Timestamp::from_ns(33'333'333).to_string(6), "0.033333");
+  EXPECT_EQ(Timestamp::from_ns(66'666'667).to_string(6), "0.066667");
+  EXPECT_EQ(Timestamp::from_ns(-1'500'000'000LL).to_string(3), "-1.500");
+  EXPECT_EQ(Timestamp::from_ns(7).to_string(9), "0.000000007");
+  EXPECT_EQ(Timestamp::from_ns(2'000'000'000LL).to_string(0), "2");
+}
+
+TEST(Timestamp, MicrosecondTimesRoundTripThroughText) {
+  for (std::int64_t us : {0LL, 1LL, 999'999LL, 33'333LL, 1'234'567'890'123LL}) {
+    const Timestamp t = Timestamp::from_ns(us * 1000);
+    EXPECT_EQ(Timestamp::parse(t.to_string(6)), t);
+  }
+}
+
+}  // namespace
+}  // namespace wifislam
