@@ -1,0 +1,207 @@
+#include "radio_model/ap_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/rng.hpp"
+#include "radio_model/plan_geometry.hpp"
+
+namespace wifislam {
+
+namespace {
+
+constexpr double kLatticeM = 0.5;    // spacing of candidate spots
+constexpr double kClearanceM = 0.4;  // keep APs off the wall faces
+
+// Free-space spots on a lattice over the plan bounds, optionally restricted to one polygon.
+std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const Polygon2* inside) {
+  std::vector<Eigen::Vector2d> spots;
+  Eigen::Vector2d lo = plan.bounds_min_m, hi = plan.bounds_max_m;
+  if (inside) {
+    lo = hi = inside->front();
+    for (const auto& v : *inside) {
+      lo = lo.cwiseMin(v);
+      hi = hi.cwiseMax(v);
+    }
+  }
+  const double x0 = std::floor(lo.x() / kLatticeM) * kLatticeM + 0.5 * kLatticeM;
+  const double y0 = std::floor(lo.y() / kLatticeM) * kLatticeM + 0.5 * kLatticeM;
+  for (double y = y0; y < hi.y(); y += kLatticeM) {
+    for (double x = x0; x < hi.x(); x += kLatticeM) {
+      const Eigen::Vector2d p(x, y);
+      if (inside && !point_in_polygon(*inside, p)) continue;
+      if (!point_in_regions(plan.free_space, p)) continue;
+      if (distance_to_walls_m(plan, p) < kClearanceM) continue;
+      spots.push_back(p);
+    }
+  }
+  return spots;
+}
+
+void shuffle(std::vector<Eigen::Vector2d>& v, Rng& rng) {
+  for (std::size_t i = v.size(); i > 1; --i) {
+    const auto j = static_cast<std::size_t>(rng.uniform_int(0, static_cast<std::int64_t>(i) - 1));
+    std::swap(v[i - 1], v[j]);
+  }
+}
+
+bool far_enough(const std::vector<Eigen::Vector2d>& chosen, const Eigen::Vector2d& p,
+                double spacing) {
+  return std::all_of(chosen.begin(), chosen.end(),
+                     [&](const Eigen::Vector2d& q) { return (q - p).norm() >= spacing; });
+}
+
+// Takes up to `want` spots from `pool` (already shuffled) keeping `spacing` from every chosen
+// spot; halves the spacing when the pool runs out, so a crowded request still succeeds.
+void take_spaced(const std::vector<Eigen::Vector2d>& pool, int want, double spacing,
+                 std::vector<Eigen::Vector2d>& chosen) {
+  int taken = 0;
+  for (double s = spacing; taken < want; s *= 0.5) {
+    for (const auto& p : pool) {
+      if (taken >= want) break;
+      if (far_enough(chosen, p, s)) {
+        chosen.push_back(p);
+        ++taken;
+      }
+    }
+    if (s < 1e-3) break;
+  }
+}
+
+}  // namespace
+
+std::uint64_t access_point_seed(const Scene& scene) {
+  return scene.access_points.seed.value_or(scene.seed);
+}
+
+std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& spec,
+                                                          const FloorPlan& plan,
+                                                          std::uint64_t seed) {
+  std::vector<Eigen::Vector3d> out;
+  if (spec.placement == ApPlacement::kExplicit) {
+    for (const auto& e : spec.explicit_list) out.push_back(e.position_m);
+    return out;
+  }
+  if (spec.count < 0)
+    throw InvalidInputError(fmt::format("access_points.count must be >= 0 (got {})", spec.count));
+  if (spec.count == 0) return out;
+  const auto lift = [&](const std::vector<Eigen::Vector2d>& xy) {
+    for (const auto& p : xy) out.emplace_back(p.x(), p.y(), spec.height_m);
+    return out;
+  };
+
+  if (spec.placement == ApPlacement::kColinear) {
+    const Eigen::Vector2d a = spec.line_from_m, b = spec.line_to_m;
+    if ((b - a).norm() < 1e-9 && spec.count > 1)
+      throw InvalidInputError(
+          "access_points: colinear placement needs line_from_m and line_to_m to differ");
+    std::vector<Eigen::Vector2d> xy;
+    for (int i = 0; i < spec.count; ++i) {
+      const double t = spec.count == 1 ? 0.5 : static_cast<double>(i) / (spec.count - 1);
+      xy.push_back(a + t * (b - a));
+    }
+    return lift(xy);
+  }
+
+  Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
+  std::vector<Eigen::Vector2d> free_spots = candidate_spots(plan, nullptr);
+  if (free_spots.empty())
+    throw InvalidInputError(
+        "access_points: the floor plan has no free space at least 0.4 m from the walls");
+  std::vector<Eigen::Vector2d> chosen;
+
+  switch (spec.placement) {
+    case ApPlacement::kGrid: {
+      const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
+      const double aspect = extent.y() > 0 ? extent.x() / extent.y() : 1.0;
+      const int cols = std::max(1, static_cast<int>(std::lround(std::sqrt(spec.count * aspect))));
+      const int rows = (spec.count + cols - 1) / cols;
+      std::vector<bool> used(free_spots.size(), false);
+      for (int i = 0; i < spec.count; ++i) {
+        const int r = i / cols, c = i % cols;
+        const Eigen::Vector2d ideal =
+            plan.bounds_min_m +
+            Eigen::Vector2d((c + 0.5) * extent.x() / cols, (r + 0.5) * extent.y() / rows);
+        std::size_t best = free_spots.size();
+        double best_d = std::numeric_limits<double>::infinity();
+        for (std::size_t k = 0; k < free_spots.size(); ++k) {
+          const double d = (free_spots[k] - ideal).squaredNorm();
+          if (!used[k] && d < best_d) {
+            best_d = d;
+            best = k;
+          }
+        }
+        if (best == free_spots.size())
+          throw InvalidInputError(
+              fmt::format("access_points: the floor plan has room for only {} grid positions", i));
+        used[best] = true;
+        chosen.push_back(free_spots[best]);
+      }
+      break;
+    }
+    case ApPlacement::kRandom: {
+      shuffle(free_spots, rng);
+      take_spaced(free_spots, spec.count, spec.min_spacing_m, chosen);
+      break;
+    }
+    case ApPlacement::kRooms: {
+      const int in_rooms_wanted = spec.count - spec.count / 4;
+      std::vector<std::size_t> order(plan.rooms.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+      for (std::size_t i = order.size(); i > 1; --i)
+        std::swap(
+            order[i - 1],
+            order[static_cast<std::size_t>(rng.uniform_int(0, static_cast<std::int64_t>(i) - 1))]);
+      for (std::size_t room : order) {
+        if (static_cast<int>(chosen.size()) >= in_rooms_wanted) break;
+        auto spots = candidate_spots(plan, &plan.rooms[room].polygon_m);
+        shuffle(spots, rng);
+        for (const auto& p : spots) {
+          if (far_enough(chosen, p, spec.min_spacing_m)) {
+            chosen.push_back(p);
+            break;
+          }
+        }
+      }
+      // The rest (and whatever the rooms could not take) in corridors and halls.
+      std::vector<Eigen::Vector2d> walkable;
+      for (const auto& p : free_spots)
+        if (point_in_regions(plan.walkable, p)) walkable.push_back(p);
+      if (walkable.empty()) walkable = free_spots;
+      shuffle(walkable, rng);
+      take_spaced(walkable, spec.count - static_cast<int>(chosen.size()), spec.min_spacing_m,
+                  chosen);
+      break;
+    }
+    case ApPlacement::kExplicit:
+    case ApPlacement::kColinear:
+      break;
+  }
+  if (static_cast<int>(chosen.size()) < spec.count)
+    throw InvalidInputError(
+        fmt::format("access_points: only {} of {} access points fit in the floor plan",
+                    chosen.size(), spec.count));
+  return lift(chosen);
+}
+
+std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan) {
+  const AccessPoints& spec = scene.access_points;
+  const std::uint64_t seed = access_point_seed(scene);
+  const auto positions = place_access_point_positions(spec, plan, seed);
+  MacAllocator macs(seed);
+  std::vector<AccessPoint> aps;
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    double tx = spec.tx_power_dbm;
+    if (spec.placement == ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
+      tx = *spec.explicit_list[i].tx_power_dbm;
+    aps.push_back(
+        make_access_point(static_cast<int>(i), positions[i], tx, spec.ssids_per_radio, seed, macs));
+  }
+  return aps;
+}
+
+}  // namespace wifislam
