@@ -1,0 +1,96 @@
+#include "sim/render/depth_png.hpp"
+
+#include <cmath>
+#include <string_view>
+
+#include <fmt/core.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+
+namespace wifislam {
+
+cv::Mat depth_to_png_units(const cv::Mat& depth_m) {
+  CV_Assert(depth_m.type() == CV_32FC1);
+  cv::Mat units(depth_m.size(), CV_16UC1);
+  for (int y = 0; y < depth_m.rows; ++y) {
+    const float* in = depth_m.ptr<float>(y);
+    auto* out = units.ptr<std::uint16_t>(y);
+    for (int x = 0; x < depth_m.cols; ++x) {
+      const double value = std::nearbyint(static_cast<double>(in[x]) * kDepthPngUnitsPerMetre);
+      out[x] = (value > 0.0 && value <= 65535.0) ? static_cast<std::uint16_t>(value) : 0;
+    }
+  }
+  return units;
+}
+
+cv::Mat depth_from_png_units(const cv::Mat& depth_units) {
+  CV_Assert(depth_units.type() == CV_16UC1);
+  cv::Mat depth_m;
+  depth_units.convertTo(depth_m, CV_32FC1, 1.0 / kDepthPngUnitsPerMetre);
+  return depth_m;
+}
+
+std::vector<unsigned char> encode_png(const cv::Mat& image) {
+  std::vector<unsigned char> bytes;
+  if (!cv::imencode(".png", image, bytes)) {
+    throw IoError(fmt::format("cannot encode a {}x{} image of type {} as PNG", image.cols,
+                              image.rows, image.type()));
+  }
+  return bytes;
+}
+
+namespace {
+void write_png(const std::filesystem::path& path, const cv::Mat& image) {
+  const std::vector<unsigned char> bytes = encode_png(image);
+  write_file_atomic(path,
+                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+}
+}  // namespace
+
+void write_color_png(const std::filesystem::path& path, const cv::Mat& color_bgr) {
+  CV_Assert(color_bgr.type() == CV_8UC3);
+  write_png(path, color_bgr);
+}
+
+void write_depth_png(const std::filesystem::path& path, const cv::Mat& depth_m) {
+  write_png(path, depth_to_png_units(depth_m));
+}
+
+cv::Mat read_depth_png(const std::filesystem::path& path) {
+  const cv::Mat units = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  if (units.empty()) throw IoError(fmt::format("{}: cannot read the depth image", path.string()));
+  if (units.type() != CV_16UC1) {
+    throw IoError(
+        fmt::format("{}: a depth image must be a 16-bit single-channel PNG (TUM, 5000 "
+                    "units per metre)",
+                    path.string()));
+  }
+  return depth_from_png_units(units);
+}
+
+cv::Mat depth_false_color(const cv::Mat& depth_m, double min_m, double max_m) {
+  CV_Assert(depth_m.type() == CV_32FC1 && max_m > min_m);
+  cv::Mat scaled(depth_m.size(), CV_8UC1);
+  for (int y = 0; y < depth_m.rows; ++y) {
+    const float* in = depth_m.ptr<float>(y);
+    auto* out = scaled.ptr<unsigned char>(y);
+    for (int x = 0; x < depth_m.cols; ++x) {
+      const double t = (in[x] - min_m) / (max_m - min_m);
+      out[x] = cv::saturate_cast<unsigned char>(255.0 * (1.0 - std::clamp(t, 0.0, 1.0)));
+    }
+  }
+  cv::Mat colored;
+  cv::applyColorMap(scaled, colored, cv::COLORMAP_TURBO);
+  colored.setTo(cv::Scalar(0, 0, 0), depth_m <= 0.0f);
+  return colored;
+}
+
+void write_depth_false_color_png(const std::filesystem::path& path, const cv::Mat& depth_m,
+                                 double min_m, double max_m) {
+  write_png(path, depth_false_color(depth_m, min_m, max_m));
+}
+
+}  // namespace wifislam

@@ -1,0 +1,38 @@
+#pragma once
+// Image files of RGB-D frames. Depth follows the TUM RGB-D convention: 16-bit PNG, 5000 units
+// per metre, 0 = no reading. Writes are atomic (core/atomic_file.hpp) and the PNG bytes depend
+// only on the pixels, so equal frames give byte-identical files.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace wifislam {
+
+inline constexpr double kDepthPngUnitsPerMetre = 5000.0;
+
+/// Metres (CV_32FC1, 0 = no reading) to TUM units (CV_16UC1). Depths that do not fit in 16 bits
+/// (> 13.107 m) become 0 rather than a wrong reading.
+cv::Mat depth_to_png_units(const cv::Mat& depth_m);
+/// TUM units (CV_16UC1) back to metres (CV_32FC1).
+cv::Mat depth_from_png_units(const cv::Mat& depth_units);
+
+/// PNG bytes of an 8-bit (1 or 3 channel, BGR) or 16-bit image; throws IoError on failure.
+std::vector<unsigned char> encode_png(const cv::Mat& image);
+
+/// Writes a colour image (CV_8UC3, BGR) as PNG.
+void write_color_png(const std::filesystem::path& path, const cv::Mat& color_bgr);
+/// Writes depth (CV_32FC1 metres) as a TUM 16-bit depth PNG.
+void write_depth_png(const std::filesystem::path& path, const cv::Mat& depth_m);
+/// Reads a TUM depth PNG into metres. Throws IoError when the file is missing or not 16-bit.
+cv::Mat read_depth_png(const std::filesystem::path& path);
+
+/// Depth for people to look at: a colour map from near (`min_m`, red) to far (`max_m`, blue),
+/// black where there is no reading.
+cv::Mat depth_false_color(const cv::Mat& depth_m, double min_m, double max_m);
+void write_depth_false_color_png(const std::filesystem::path& path, const cv::Mat& depth_m,
+                                 double min_m, double max_m);
+
+}  // namespace wifislam

@@ -1,0 +1,271 @@
+#include "sim/render/rgbd_renderer.hpp"
+
+#define GL_GLEXT_PROTOTYPES
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include <fmt/core.h>
+#include <opencv2/imgproc.hpp>
+
+#include "core/error.hpp"
+#include "sim/render/gl_mesh.hpp"
+#include "sim/render/gl_program.hpp"
+#include "sim/render/gl_texture.hpp"
+#include "sim/render/osmesa_context.hpp"
+
+namespace wifislam {
+
+namespace {
+
+constexpr int kMaxLightsInShader = 16;
+
+const char* kVertexShader = R"(#version 330 core
+layout(location = 0) in vec3 position_m;
+layout(location = 1) in vec3 normal;
+layout(location = 2) in vec2 texcoord;
+uniform mat4 world_to_clip;
+uniform mat4 world_to_camera;
+out vec3 world_position;
+out vec3 world_normal;
+out vec2 uv;
+out float optical_depth;
+void main() {
+  world_position = position_m;
+  world_normal = normal;
+  uv = texcoord;
+  optical_depth = (world_to_camera * vec4(position_m, 1.0)).z;
+  gl_Position = world_to_clip * vec4(position_m, 1.0);
+}
+)";
+
+// Diffuse (Lambert) shading from downward-facing ceiling panels with inverse-square falloff
+// (softened by +1 m^2 so a surface touching a light does not blow up), plus ambient.
+const char* kFragmentShader = R"(#version 330 core
+in vec3 world_position;
+in vec3 world_normal;
+in vec2 uv;
+in float optical_depth;
+uniform sampler2D albedo;
+uniform vec3 camera_position;
+uniform bool emissive;
+uniform float ambient;
+uniform float light_power;
+uniform int light_count;
+uniform vec3 light_positions[16];
+layout(location = 0) out vec4 color;
+layout(location = 1) out float depth_m;
+layout(location = 2) out float incidence_cos;
+void main() {
+  vec3 view = normalize(world_position - camera_position);
+  vec3 n = normalize(world_normal);
+  float facing = dot(n, view);
+  if (facing > 0.0) n = -n;
+  vec3 surface = texture(albedo, uv).rgb;
+  vec3 shaded = surface;
+  if (!emissive) {
+    float irradiance = ambient;
+    for (int i = 0; i < light_count; ++i) {
+      vec3 to_light = light_positions[i] - world_position;
+      float d2 = dot(to_light, to_light);
+      vec3 l = to_light * inversesqrt(d2);
+      irradiance += light_power * max(dot(n, l), 0.0) * max(l.z, 0.0) / (d2 + 1.0);
+    }
+    shaded = surface * irradiance;
+  }
+  color = vec4(shaded, 1.0);
+  depth_m = optical_depth;
+  incidence_cos = abs(facing);
+}
+)";
+
+bool box_outside_frustum(const Eigen::AlignedBox3f& box, const Eigen::Matrix4f& world_to_clip) {
+  Eigen::Matrix<float, 4, 8> corners;
+  for (int i = 0; i < 8; ++i) {
+    const Eigen::Vector3f c = box.corner(static_cast<Eigen::AlignedBox3f::CornerType>(i));
+    corners.col(i) = world_to_clip * c.homogeneous();
+  }
+  for (int axis = 0; axis < 3; ++axis) {
+    if ((corners.row(axis).array() < -corners.row(3).array()).all()) return true;
+    if ((corners.row(axis).array() > corners.row(3).array()).all()) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+Eigen::Matrix4f RgbdRenderer::projection_matrix(const CameraIntrinsics& k, double near_m,
+                                                double far_m) {
+  // Pixel (u, v) of the image (OpenCV: integer coordinates at pixel centres) is the window
+  // pixel whose centre is at (u + 0.5, v + 0.5); window row 0 is read back first, so v = 0 maps
+  // to the bottom of clip space (no sign flip on y: the optical frame's y already points down).
+  const double w = k.width_px, h = k.height_px;
+  Eigen::Matrix4d p = Eigen::Matrix4d::Zero();
+  p(0, 0) = 2.0 * k.fx_px / w;
+  p(0, 2) = (2.0 * k.cx_px + 1.0) / w - 1.0;
+  p(1, 1) = 2.0 * k.fy_px / h;
+  p(1, 2) = (2.0 * k.cy_px + 1.0) / h - 1.0;
+  p(2, 2) = (far_m + near_m) / (far_m - near_m);
+  p(2, 3) = -2.0 * far_m * near_m / (far_m - near_m);
+  p(3, 2) = 1.0;
+  return p.cast<float>();
+}
+
+RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptions& options)
+    : intrinsics_(intrinsics), options_(options) {
+  if (intrinsics.width_px <= 0 || intrinsics.height_px <= 0 || intrinsics.fx_px <= 0 ||
+      intrinsics.fy_px <= 0) {
+    throw InvalidInputError(fmt::format(
+        "camera intrinsics: width/height/fx/fy must be positive (got {}x{}, fx {}, fy {})",
+        intrinsics.width_px, intrinsics.height_px, intrinsics.fx_px, intrinsics.fy_px));
+  }
+  if (options.max_lights < 0 || options.max_lights > kMaxLightsInShader) {
+    throw InvalidInputError(fmt::format("render options: max_lights must be in 0..{} (got {})",
+                                        kMaxLightsInShader, options.max_lights));
+  }
+  context_ = std::make_unique<OsmesaContext>();
+  program_ = std::make_unique<GlProgram>(kVertexShader, kFragmentShader);
+  uniforms_ = {program_->uniform("world_to_clip"),   program_->uniform("world_to_camera"),
+               program_->uniform("camera_position"), program_->uniform("emissive"),
+               program_->uniform("ambient"),         program_->uniform("light_power"),
+               program_->uniform("light_count"),     program_->uniform("light_positions"),
+               program_->uniform("albedo")};
+
+  const int w = intrinsics.width_px, h = intrinsics.height_px;
+  glGenFramebuffers(1, &framebuffer_);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  auto make_target = [&](GLenum internal_format, GLenum attachment) {
+    GLuint id = 0;
+    glGenRenderbuffers(1, &id);
+    glBindRenderbuffer(GL_RENDERBUFFER, id);
+    glRenderbufferStorage(GL_RENDERBUFFER, internal_format, w, h);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, attachment, GL_RENDERBUFFER, id);
+    return id;
+  };
+  color_target_ = make_target(GL_RGBA8, GL_COLOR_ATTACHMENT0);
+  depth_target_ = make_target(GL_R32F, GL_COLOR_ATTACHMENT1);
+  incidence_target_ = make_target(GL_R32F, GL_COLOR_ATTACHMENT2);
+  z_buffer_ = make_target(GL_DEPTH_COMPONENT32F, GL_DEPTH_ATTACHMENT);
+  const GLenum draw_buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glDrawBuffers(3, draw_buffers);
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw EnvironmentError(
+        fmt::format("OpenGL framebuffer for {}x{} RGB-D rendering is incomplete (status 0x{:x})", w,
+                    h, status));
+  }
+  glViewport(0, 0, w, h);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDisable(GL_CULL_FACE);  // the y-flipped projection mirrors winding; walls are two-sided
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  color_bgra_.create(h, w, CV_8UC4);
+}
+
+RgbdRenderer::~RgbdRenderer() {
+  context_->make_current();
+  mesh_.reset();
+  textures_.clear();
+  program_.reset();
+  const GLuint targets[] = {color_target_, depth_target_, incidence_target_, z_buffer_};
+  glDeleteRenderbuffers(4, targets);
+  glDeleteFramebuffers(1, &framebuffer_);
+}
+
+void RgbdRenderer::set_world(const Mesh& mesh, const std::vector<CeilingLight>& lights,
+                             std::uint64_t seed, const AppearanceThemes& themes) {
+  context_->make_current();
+  const ProceduralTextures generator(seed, themes);
+  std::map<TextureKey, TextureImage> images;
+  for (const Triangle& t : mesh.triangles) {
+    const TextureKey key = texture_key_of(t);
+    if (!images.contains(key)) images.emplace(key, generator.make(key));
+  }
+  const BatchedMesh batched = batch_mesh(
+      mesh, [&](const TextureKey& key) -> const TextureImage& { return images.at(key); });
+  mesh_.reset();
+  textures_.clear();
+  for (const auto& [key, image] : images)
+    textures_.emplace(key, std::make_unique<GlTexture>(image));
+  mesh_ = std::make_unique<GlMesh>(batched);
+  lights_ = lights;
+}
+
+void RgbdRenderer::set_world(const World& world, const Scene& scene) {
+  set_world(world.mesh, world.plan.lights, scene.seed, scene.appearance.themes);
+}
+
+void RgbdRenderer::upload_lights(const Eigen::Vector3d& camera_position_m) {
+  std::vector<std::pair<double, int>> near;
+  for (int i = 0; i < static_cast<int>(lights_.size()); ++i) {
+    const double d = (lights_[i].center_m - camera_position_m).norm();
+    if (d <= options_.light_range_m) near.emplace_back(d, i);
+  }
+  std::sort(near.begin(), near.end());  // ties broken by index: deterministic
+  const int count = std::min<int>(options_.max_lights, static_cast<int>(near.size()));
+  std::vector<float> positions(3 * static_cast<std::size_t>(std::max(count, 1)), 0.0f);
+  for (int i = 0; i < count; ++i) {
+    for (int k = 0; k < 3; ++k)
+      positions[3 * i + k] = static_cast<float>(lights_[near[i].second].center_m[k]);
+  }
+  glUniform1i(uniforms_.light_count, count);
+  if (count > 0) glUniform3fv(uniforms_.light_positions, count, positions.data());
+}
+
+void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
+  context_->make_current();
+  const int w = intrinsics_.width_px, h = intrinsics_.height_px;
+  const Eigen::Matrix4f world_to_camera = camera_to_world.inverse().matrix().cast<float>();
+  const Eigen::Matrix4f world_to_clip =
+      projection_matrix(intrinsics_, options_.near_m, options_.far_m) * world_to_camera;
+
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  const float black[4] = {0, 0, 0, 1};
+  const float zero[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, black);
+  glClearBufferfv(GL_COLOR, 1, zero);
+  glClearBufferfv(GL_COLOR, 2, zero);
+  glClear(GL_DEPTH_BUFFER_BIT);
+
+  last_draw_count_ = 0;
+  if (mesh_) {
+    program_->use();
+    glUniformMatrix4fv(uniforms_.world_to_clip, 1, GL_FALSE, world_to_clip.data());
+    glUniformMatrix4fv(uniforms_.world_to_camera, 1, GL_FALSE, world_to_camera.data());
+    const Eigen::Vector3f camera_position = camera_to_world.translation().cast<float>();
+    glUniform3fv(uniforms_.camera_position, 1, camera_position.data());
+    glUniform1f(uniforms_.ambient, options_.ambient);
+    glUniform1f(uniforms_.light_power, options_.light_power);
+    glUniform1i(uniforms_.albedo, 0);
+    upload_lights(camera_to_world.translation());
+    mesh_->bind();
+    for (const MeshBatch& batch : mesh_->batches()) {
+      if (options_.frustum_culling && box_outside_frustum(batch.bounds_m, world_to_clip)) continue;
+      const GlTexture& texture = *textures_.at(batch.key);
+      texture.bind();
+      glUniform1i(uniforms_.emissive, texture.emissive() ? 1 : 0);
+      mesh_->draw(batch);
+      ++last_draw_count_;
+    }
+  }
+
+  out.depth_m.create(h, w, CV_32FC1);
+  out.incidence_cos.create(h, w, CV_32FC1);
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glReadPixels(0, 0, w, h, GL_BGRA, GL_UNSIGNED_BYTE, color_bgra_.data);
+  glReadBuffer(GL_COLOR_ATTACHMENT1);
+  glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, out.depth_m.data);
+  glReadBuffer(GL_COLOR_ATTACHMENT2);
+  glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, out.incidence_cos.data);
+  cv::cvtColor(color_bgra_, out.color_bgr, cv::COLOR_BGRA2BGR);
+}
+
+RenderedView RgbdRenderer::render(const Pose& camera_to_world) {
+  RenderedView view;
+  render(camera_to_world, view);
+  return view;
+}
+
+}  // namespace wifislam
