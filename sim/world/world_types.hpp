@@ -28,6 +28,10 @@ struct WallFace2 {
   WallMaterial material = WallMaterial::kPlasterboard;
   int wall_id = -1;
   int appearance_segment = -1;  // index into FloorPlan::appearance_segments
+  /// True for the outside face of an outer wall: its left side is outside the building, not free
+  /// space (such faces close the wall solids; they have no appearance segment).
+  bool exterior = false;
+  int door_index = -1;  // the closed door whose leaf this face is, else -1
 };
 
 /// A door in a wall between a corridor and a room.
@@ -73,6 +77,8 @@ struct FloorPlan {
   std::vector<CeilingLight> lights;
   Eigen::Vector2d bounds_min_m = Eigen::Vector2d::Zero(), bounds_max_m = Eigen::Vector2d::Zero();
   double wall_height_m = 2.8;
+  double wall_thickness_m = 0.15;
+  int wall_count = 0;  // wall ids of wall faces run from 0 to wall_count - 1
 };
 
 /// What a triangle is; the renderer picks a texture from this and the appearance variant.

@@ -1,0 +1,49 @@
+#include "sim/world/ceiling_lights.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/world/plan_queries.hpp"
+
+namespace wifislam {
+
+std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLayout& layout,
+                                               const FloorPlan& plan) {
+  const double spacing = std::max(0.5, scene.appearance.light_spacing_m);
+  const double z = plan.wall_height_m - 0.01;
+  const Eigen::Vector2d size(0.6, 0.6);
+  std::vector<CeilingLight> lights;
+  auto try_add = [&](const Eigen::Vector2d& p, double min_gap_m) {
+    // All four corners in free space, so no light pokes into a wall.
+    for (double sx : {-0.5, 0.5})
+      for (double sy : {-0.5, 0.5})
+        if (!regions_contain(plan.free_space, p + Eigen::Vector2d(sx * size.x(), sy * size.y())))
+          return;
+    for (const auto& l : lights)
+      if ((l.center_m.head<2>() - p).norm() < min_gap_m) return;
+    CeilingLight light;
+    light.center_m = Eigen::Vector3d(p.x(), p.y(), z);
+    light.size_m = size;
+    lights.push_back(light);
+  };
+  for (const CorridorLayout& c : layout.corridors) {
+    const int n = std::max(1, static_cast<int>(std::floor(c.length_m / spacing)));
+    for (int k = 0; k < n; ++k)
+      try_add(c.rect.point((k + 0.5) * c.length_m / n, 0.0), 0.5 * spacing);
+  }
+  for (const OpenArea& area : scene.open_areas) {
+    Eigen::Vector2d lo = area.polygon_m[0], hi = area.polygon_m[0];
+    for (const auto& v : area.polygon_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    for (double y = lo.y() + 0.5 * spacing; y < hi.y(); y += spacing)
+      for (double x = lo.x() + 0.5 * spacing; x < hi.x(); x += spacing)
+        if (ring_contains(area.polygon_m, {x, y})) try_add({x, y}, 0.5 * spacing);
+  }
+  for (const Room& room : plan.rooms) {
+    Eigen::Vector2d c = Eigen::Vector2d::Zero();
+    for (const auto& v : room.polygon_m) c += v;
+    try_add(c / static_cast<double>(room.polygon_m.size()), 0.5);
+  }
+  return lights;
+}
+
+}  // namespace wifislam

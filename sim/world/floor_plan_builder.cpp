@@ -1,0 +1,274 @@
+#include "sim/world/floor_plan_builder.hpp"
+
+#include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/minkowski_sum_2.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "sim/world/ceiling_lights.hpp"
+#include "sim/world/plan_layout.hpp"
+#include "sim/world/plan_queries.hpp"
+#include "sim/world/wall_faces.hpp"
+
+namespace wifislam {
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using FT = Kernel::FT;
+using Point = Kernel::Point_2;
+using Polygon = CGAL::Polygon_2<Kernel>;
+using PolygonWH = CGAL::Polygon_with_holes_2<Kernel>;
+using PolygonSet = CGAL::Polygon_set_2<Kernel>;
+
+/// The rectangle's corners computed in exact arithmetic from the (double) frame, so points on one
+/// frame line stay exactly collinear even for corridors that are not axis-aligned.
+Polygon exact_rect(const OrientedRect& r) {
+  const FT ox(r.origin_m.x()), oy(r.origin_m.y()), ax(r.along.x()), ay(r.along.y());
+  auto pt = [&](double s, double l) {
+    const FT fs(s), fl(l);
+    return Point(ox + fs * ax - fl * ay, oy + fs * ay + fl * ax);
+  };
+  Polygon p;
+  p.push_back(pt(r.s0, r.l0));
+  p.push_back(pt(r.s1, r.l0));
+  p.push_back(pt(r.s1, r.l1));
+  p.push_back(pt(r.s0, r.l1));
+  return p;
+}
+
+Polygon exact_polygon(const Polygon2& ring) {
+  Polygon p;
+  for (const auto& v : ring) p.push_back(Point(v.x(), v.y()));
+  return p;
+}
+
+/// Dilation kernel for open areas: a square is exact for axis-aligned walls; an octagon (in-radius
+/// = thickness) keeps 45-degree walls at the right thickness too and others within 8 %.
+Polygon dilation_kernel(double thickness_m, bool axis_aligned) {
+  Polygon k;
+  if (axis_aligned) {
+    const FT t(thickness_m);
+    k.push_back(Point(-t, -t));
+    k.push_back(Point(t, -t));
+    k.push_back(Point(t, t));
+    k.push_back(Point(-t, t));
+    return k;
+  }
+  const double circum = thickness_m / std::cos(M_PI / 8);
+  for (int i = 0; i < 8; ++i) {
+    const double a = M_PI / 8 + i * M_PI / 4;
+    k.push_back(Point(circum * std::cos(a), circum * std::sin(a)));
+  }
+  return k;
+}
+
+bool is_axis_aligned(const Polygon2& ring) {
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Eigen::Vector2d& a = ring[i];
+    const Eigen::Vector2d& b = ring[(i + 1) % ring.size()];
+    if (a.x() != b.x() && a.y() != b.y()) return false;
+  }
+  return true;
+}
+
+/// Exact ring -> double ring without collinear vertices, starting at its smallest vertex so the
+/// output does not depend on where CGAL happened to start the boundary.
+Polygon2 to_double_ring(const Polygon& ring, bool counter_clockwise) {
+  std::vector<Point> pts(ring.vertices_begin(), ring.vertices_end());
+  const std::size_t n = pts.size();
+  Polygon2 out;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (CGAL::collinear(pts[(i + n - 1) % n], pts[i], pts[(i + 1) % n])) continue;
+    out.emplace_back(CGAL::to_double(pts[i].x()), CGAL::to_double(pts[i].y()));
+  }
+  // Drop vertices that rounding made coincide.
+  Polygon2 clean;
+  for (const auto& v : out)
+    if (clean.empty() || (v - clean.back()).norm() > 1e-9) clean.push_back(v);
+  while (clean.size() > 1 && (clean.front() - clean.back()).norm() <= 1e-9) clean.pop_back();
+  if ((ring_signed_area_m2(clean) > 0) != counter_clockwise)
+    std::reverse(clean.begin(), clean.end());
+  auto smallest = std::min_element(clean.begin(), clean.end(), [](const auto& a, const auto& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  });
+  std::rotate(clean.begin(), smallest, clean.end());
+  return clean;
+}
+
+std::vector<PolygonWithHoles2> to_double_regions(const PolygonSet& set) {
+  std::vector<PolygonWH> exact;
+  set.polygons_with_holes(std::back_inserter(exact));
+  std::vector<PolygonWithHoles2> out;
+  for (const auto& pwh : exact) {
+    PolygonWithHoles2 r;
+    r.outer = to_double_ring(pwh.outer_boundary(), true);
+    if (r.outer.size() < 3) continue;
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) {
+      Polygon2 hole = to_double_ring(*h, false);
+      if (hole.size() >= 3) r.holes.push_back(std::move(hole));
+    }
+    auto first_vertex_less = [](const Polygon2& a, const Polygon2& b) {
+      return a[0].x() < b[0].x() || (a[0].x() == b[0].x() && a[0].y() < b[0].y());
+    };
+    std::sort(r.holes.begin(), r.holes.end(), first_vertex_less);
+    out.push_back(std::move(r));
+  }
+  std::sort(out.begin(), out.end(), [](const PolygonWithHoles2& a, const PolygonWithHoles2& b) {
+    return a.outer[0].x() < b.outer[0].x() ||
+           (a.outer[0].x() == b.outer[0].x() && a.outer[0].y() < b.outer[0].y());
+  });
+  return out;
+}
+
+PolygonSet join_all(const std::vector<Polygon>& pieces) {
+  PolygonSet set;
+  if (!pieces.empty()) set.join(pieces.begin(), pieces.end());
+  return set;
+}
+
+struct Box {
+  double x0, y0, x1, y1;
+  bool overlaps(const Box& o) const { return x0 < o.x1 && o.x0 < x1 && y0 < o.y1 && o.y0 < y1; }
+};
+Box box_of(const Polygon& p) {
+  const CGAL::Bbox_2 b = p.bbox();
+  return {b.xmin(), b.ymin(), b.xmax(), b.ymax()};
+}
+
+}  // namespace
+
+FloorPlan build_floor_plan(const Scene& scene) {
+  const double t = scene.building.wall_thickness_m;
+  if (!(t > 0)) throw InvalidInputError("building.wall_thickness_m must be positive");
+  if (!(scene.building.wall_height_m > 0))
+    throw InvalidInputError("building.wall_height_m must be positive");
+  const PlanLayout layout = lay_out_scene(scene);
+
+  std::vector<Polygon> corridors, open_areas, pillars, dilated;
+  for (const CorridorLayout& c : layout.corridors) {
+    corridors.push_back(exact_rect(c.rect));
+    dilated.push_back(exact_rect(c.rect.grown(t)));
+  }
+  for (const OpenArea& area : scene.open_areas) {
+    Polygon p = exact_polygon(area.polygon_m);
+    if (area.polygon_m.size() < 3 || !p.is_simple() || p.area() == 0)
+      throw InvalidInputError(fmt::format(
+          "open area '{}': polygon_m must be a simple polygon with at least 3 corners", area.id));
+    if (p.is_clockwise_oriented()) p.reverse_orientation();
+    const PolygonWH grown =
+        CGAL::minkowski_sum_2(p, dilation_kernel(t, is_axis_aligned(area.polygon_m)));
+    dilated.push_back(grown.outer_boundary());
+    open_areas.push_back(p);
+    for (const OpenArea::Pillar& pillar : area.pillars) {
+      OrientedRect r;
+      r.origin_m = pillar.center_m;
+      r.s0 = r.l0 = -0.5 * pillar.size_m;
+      r.s1 = r.l1 = 0.5 * pillar.size_m;
+      pillars.push_back(exact_rect(r));
+    }
+  }
+
+  // Keep a room only when it and its walls overlap no free space placed before it.
+  std::vector<Polygon> occupied = corridors;
+  occupied.insert(occupied.end(), open_areas.begin(), open_areas.end());
+  std::vector<Box> occupied_boxes;
+  for (const auto& p : occupied) occupied_boxes.push_back(box_of(p));
+  std::vector<int> kept_rooms;
+  std::vector<Polygon> rooms, open_doors;
+  for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
+    const RoomCandidate& cand = layout.rooms[i];
+    const Polygon room = exact_rect(cand.room);
+    const Polygon footprint = exact_rect(cand.room.grown(t));
+    // The clash test uses a footprint a hair smaller: the grown rectangle's edge is computed in
+    // double and may overlap its own corridor by a rounding error.
+    const Polygon clash_footprint = exact_rect(cand.room.grown(t - 1e-7));
+    const Box fb = box_of(clash_footprint);
+    std::vector<Polygon> near;
+    for (std::size_t k = 0; k < occupied.size(); ++k)
+      if (occupied_boxes[k].overlaps(fb)) near.push_back(occupied[k]);
+    if (!near.empty()) {
+      PolygonSet clash = join_all(near);
+      clash.intersection(clash_footprint);
+      if (!clash.is_empty()) continue;
+    }
+    kept_rooms.push_back(static_cast<int>(i));
+    rooms.push_back(room);
+    occupied.push_back(room);
+    occupied_boxes.push_back(box_of(room));
+    dilated.push_back(footprint);
+    if (cand.door_open) open_doors.push_back(exact_rect(cand.door));
+  }
+
+  std::vector<Polygon> walkable_parts = corridors;
+  walkable_parts.insert(walkable_parts.end(), open_areas.begin(), open_areas.end());
+  PolygonSet walkable = join_all(walkable_parts);
+  std::vector<Polygon> free_parts = walkable_parts;
+  free_parts.insert(free_parts.end(), rooms.begin(), rooms.end());
+  free_parts.insert(free_parts.end(), open_doors.begin(), open_doors.end());
+  PolygonSet free_space = join_all(free_parts);
+  if (!pillars.empty()) {
+    const PolygonSet pillar_set = join_all(pillars);
+    walkable.difference(pillar_set);
+    free_space.difference(pillar_set);
+  }
+  PolygonSet walls = join_all(dilated);
+  walls.difference(free_space);
+
+  FloorPlan plan;
+  plan.wall_height_m = scene.building.wall_height_m;
+  plan.wall_thickness_m = t;
+  plan.free_space = to_double_regions(free_space);
+  plan.walkable = to_double_regions(walkable);
+  plan.walls = to_double_regions(walls);
+  if (plan.walkable.empty()) throw InvalidInputError("the scene has no corridors or open areas");
+  if (plan.walkable.size() > 1) {
+    const Eigen::Vector2d p = plan.walkable[1].outer[0];
+    throw InvalidInputError(fmt::format(
+        "the corridors and open areas form {} separate pieces (one starts near ({:.2f}, {:.2f})); "
+        "the robot's space must be connected",
+        plan.walkable.size(), p.x(), p.y()));
+  }
+
+  const double door_height_m = std::min(2.1, scene.building.wall_height_m - 0.2);
+  for (int index : kept_rooms) {
+    const RoomCandidate& cand = layout.rooms[index];
+    Room room;
+    room.polygon_m = cand.room.corners();
+    room.corridor_id = scene.corridors[cand.corridor_index].id;
+    room.material = cand.material;
+    room.door_index = static_cast<int>(plan.doors.size());
+    Door door;
+    door.center_m = cand.door.center();
+    door.along_wall = cand.door.along;
+    door.width_m = cand.door.s1 - cand.door.s0;
+    door.height_m = door_height_m;
+    door.wall_thickness_m = t;
+    door.open = cand.door_open;
+    door.room_index = static_cast<int>(plan.rooms.size());
+    plan.rooms.push_back(std::move(room));
+    plan.doors.push_back(door);
+  }
+
+  build_wall_faces(scene, layout, plan);
+  plan.lights = place_ceiling_lights(scene, layout, plan);
+
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
+  for (const auto* regions : {&plan.walls, &plan.free_space})
+    for (const auto& r : *regions)
+      for (const auto& v : r.outer) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  plan.bounds_min_m = lo;
+  plan.bounds_max_m = hi;
+  return plan;
+}
+
+}  // namespace wifislam

@@ -1,0 +1,87 @@
+#include "sim/world/world_generator.hpp"
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "sim/world/floor_plan_builder.hpp"
+#include "sim/world/mesh_builder.hpp"
+#include "sim/world/plan_queries.hpp"
+#include "sim/world/route_builder.hpp"
+
+namespace wifislam {
+
+World generate_world(const Scene& scene) {
+  World world;
+  world.seed = scene.seed;
+  world.plan = build_floor_plan(scene);
+  world.route = build_route(scene, world.plan);
+  world.mesh = build_mesh(scene, world.plan);
+  return world;
+}
+
+namespace {
+
+struct Fnv1a {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  void bytes(const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) {
+      h ^= p[i];
+      h *= 0x100000001b3ULL;
+    }
+  }
+  template <typename T>
+  void value(const T& v) {
+    bytes(&v, sizeof v);
+  }
+};
+
+}  // namespace
+
+std::uint64_t mesh_hash(const Mesh& mesh) {
+  Fnv1a f;
+  // Field by field, so struct padding never enters the hash.
+  f.value(mesh.positions_m.size());
+  for (const auto& p : mesh.positions_m) f.value(p.x()), f.value(p.y()), f.value(p.z());
+  for (const auto& n : mesh.normals) f.value(n.x()), f.value(n.y()), f.value(n.z());
+  for (const auto& uv : mesh.uv_m) f.value(uv.x()), f.value(uv.y());
+  f.value(mesh.triangles.size());
+  for (const Triangle& t : mesh.triangles) {
+    f.value(t.v[0]), f.value(t.v[1]), f.value(t.v[2]);
+    f.value(static_cast<std::uint8_t>(t.surface));
+    f.value(static_cast<std::int32_t>(t.material));
+    f.value(static_cast<std::int32_t>(t.wall_id));
+    f.value(static_cast<std::int32_t>(t.appearance_variant));
+    f.value(static_cast<std::int32_t>(t.decoration));
+  }
+  return f.h;
+}
+
+WorldSummary summarize_world(const World& world) {
+  WorldSummary s;
+  s.free_area_m2 = regions_area_m2(world.plan.free_space);
+  s.walkable_area_m2 = regions_area_m2(world.plan.walkable);
+  double faces = 0;
+  for (const WallFace2& f : world.plan.wall_faces) faces += (f.b_m - f.a_m).norm();
+  s.wall_length_m = 0.5 * faces;
+  s.triangles = world.mesh.triangles.size();
+  s.rooms = world.plan.rooms.size();
+  s.doors = world.plan.doors.size();
+  s.route_length_m = world.route.length_m();
+  return s;
+}
+
+std::string WorldSummary::to_text() const {
+  return fmt::format(
+      "free area: {:.1f} m2\n"
+      "walkable area: {:.1f} m2\n"
+      "wall length: {:.1f} m\n"
+      "triangles: {}\n"
+      "rooms: {}\n"
+      "doors: {}\n"
+      "route length: {:.1f} m\n",
+      free_area_m2, walkable_area_m2, wall_length_m, triangles, rooms, doors, route_length_m);
+}
+
+}  // namespace wifislam
