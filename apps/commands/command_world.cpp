@@ -1,0 +1,62 @@
+// `wifislam world <scene.yaml> [--plan plan.png] [--svg]`: generate a scene's world, optionally
+// draw its floor plan, and print a summary.
+#include <filesystem>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/plan_drawing.hpp"
+#include "sim/world/world_generator.hpp"
+
+namespace {
+
+struct WorldArgs {
+  std::string scene_path;
+  std::string plan_path;
+  bool svg = false;
+};
+
+int access_point_count(const wifislam::Scene& scene) {
+  const auto& aps = scene.access_points;
+  return aps.placement == wifislam::ApPlacement::kExplicit
+             ? static_cast<int>(aps.explicit_list.size())
+             : aps.count;
+}
+
+void run_world(const WorldArgs& args) {
+  using namespace wifislam;
+  const Scene scene = load_scene_file(args.scene_path);
+  const World world = generate_world(scene);
+  if (!args.plan_path.empty()) {
+    PlanDrawingOptions options;
+    options.title = fmt::format("{} (seed {})", scene.name, scene.seed);
+    for (const auto& ap : scene.access_points.explicit_list)
+      options.access_points_m.push_back(ap.position_m);
+    std::filesystem::path png = args.plan_path;
+    draw_floor_plan(world, png, options);
+    fmt::print("wrote {}\n", png.string());
+    if (args.svg && png.extension() != ".svg") {
+      const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
+      draw_floor_plan(world, svg, options);
+      fmt::print("wrote {}\n", svg.string());
+    }
+  }
+  fmt::print("scene: {}\n{}access points: {}\n", scene.name, summarize_world(world).to_text(),
+             access_point_count(scene));
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(world, 20) {
+  auto args = std::make_shared<WorldArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "world", "Generate a scene's world (floor plan, mesh, route) and print a summary.");
+  app->add_option("scene", args->scene_path, "Scene file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app->add_option("--plan", args->plan_path,
+                  "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)");
+  app->add_flag("--svg", args->svg, "Also write the plan as SVG next to the PNG");
+  app->callback([args] { run_world(*args); });
+}
