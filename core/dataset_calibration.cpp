@@ -1,0 +1,159 @@
+#include "core/dataset_calibration.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/text_lines.hpp"
+
+namespace wifislam {
+
+std::string calibration_to_yaml(const DatasetCalibration& c) {
+  YAML::Emitter out;
+  out.SetDoublePrecision(17);
+  auto number = [&](double v) { out << YAML::Value << format_double_exact(v); };
+  out << YAML::Comment("wifislam dataset calibration") << YAML::BeginMap;
+  out << YAML::Key << "camera" << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "width_px" << YAML::Value << c.intrinsics.width_px;
+  out << YAML::Key << "height_px" << YAML::Value << c.intrinsics.height_px;
+  out << YAML::Key << "fx_px";
+  number(c.intrinsics.fx_px);
+  out << YAML::Key << "fy_px";
+  number(c.intrinsics.fy_px);
+  out << YAML::Key << "cx_px";
+  number(c.intrinsics.cx_px);
+  out << YAML::Key << "cy_px";
+  number(c.intrinsics.cy_px);
+  out << YAML::Key << "fps";
+  number(c.camera_fps);
+  out << YAML::EndMap;
+  out << YAML::Key << "depth" << YAML::Value << YAML::BeginMap << YAML::Key << "units_per_metre";
+  number(c.depth_units_per_metre);
+  out << YAML::EndMap;
+  const Eigen::Quaterniond q(c.camera_in_base.linear());
+  out << YAML::Key << "camera_in_base" << YAML::Comment("camera optical frame in the robot base")
+      << YAML::Value << YAML::BeginMap;
+  out << YAML::Key << "translation_m" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+  for (int i = 0; i < 3; ++i) out << format_double_exact(c.camera_in_base.translation()[i]);
+  out << YAML::EndSeq;
+  out << YAML::Key << "rotation_xyzw" << YAML::Value << YAML::Flow << YAML::BeginSeq
+      << format_double_exact(q.x()) << format_double_exact(q.y()) << format_double_exact(q.z())
+      << format_double_exact(q.w()) << YAML::EndSeq;
+  out << YAML::EndMap;
+  if (c.odometry_rate_hz) {
+    out << YAML::Key << "odometry" << YAML::Value << YAML::BeginMap << YAML::Key << "rate_hz";
+    number(*c.odometry_rate_hz);
+    out << YAML::EndMap;
+  }
+  if (!c.sensor_model.empty()) {
+    out << YAML::Key << "sensor_model" << YAML::Value << YAML::BeginMap;
+    for (const CalibrationGroup& g : c.sensor_model) {
+      out << YAML::Key << g.name << YAML::Value << YAML::BeginMap;
+      for (const auto& [key, value] : g.values) out << YAML::Key << key << YAML::Value << value;
+      out << YAML::EndMap;
+    }
+    out << YAML::EndMap;
+  }
+  out << YAML::EndMap;
+  return std::string(out.c_str()) + "\n";
+}
+
+namespace {
+
+struct Ctx {
+  std::string file;
+  std::string where(const YAML::Node& n) const {
+    const YAML::Mark m = n.Mark();
+    if (m.line < 0) return file;
+    return fmt::format("{}:{}:{}", file, m.line + 1, m.column + 1);
+  }
+};
+
+YAML::Node child(const Ctx& ctx, const YAML::Node& parent, const char* key, const std::string& path,
+                 bool required) {
+  const YAML::Node n = parent[key];
+  if (!n && required)
+    throw ParseError(ctx.where(parent), path + "." + key, std::string("missing key '") + key + "'");
+  return n;
+}
+
+double number(const Ctx& ctx, const YAML::Node& n, const std::string& path) {
+  double v = 0;
+  if (!n.IsScalar() || !parse_double(n.Scalar(), v))
+    throw ParseError(ctx.where(n), path, "expected a number");
+  return v;
+}
+
+}  // namespace
+
+DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
+  const Ctx ctx{path.string()};
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path.string());
+  } catch (const YAML::BadFile&) {
+    throw IoError(path.string() + ": cannot open file for reading");
+  } catch (const YAML::ParserException& e) {
+    throw ParseError(fmt::format("{}:{}:{}", path.string(), e.mark.line + 1, e.mark.column + 1), "",
+                     e.msg);
+  }
+  if (!root.IsMap()) throw ParseError(path.string(), "", "expected a YAML mapping");
+  DatasetCalibration c;
+  const YAML::Node cam = child(ctx, root, "camera", "", true);
+  auto cam_number = [&](const char* key) {
+    return number(ctx, child(ctx, cam, key, "camera", true), std::string("camera.") + key);
+  };
+  c.intrinsics.width_px = static_cast<int>(cam_number("width_px"));
+  c.intrinsics.height_px = static_cast<int>(cam_number("height_px"));
+  c.intrinsics.fx_px = cam_number("fx_px");
+  c.intrinsics.fy_px = cam_number("fy_px");
+  c.intrinsics.cx_px = cam_number("cx_px");
+  c.intrinsics.cy_px = cam_number("cy_px");
+  if (c.intrinsics.width_px <= 0 || c.intrinsics.height_px <= 0 || c.intrinsics.fx_px <= 0 ||
+      c.intrinsics.fy_px <= 0) {
+    throw ParseError(ctx.where(cam), "camera", "image size and focal lengths must be positive");
+  }
+  if (const YAML::Node fps = child(ctx, cam, "fps", "camera", false))
+    c.camera_fps = number(ctx, fps, "camera.fps");
+  if (const YAML::Node depth = child(ctx, root, "depth", "", false)) {
+    c.depth_units_per_metre =
+        number(ctx, child(ctx, depth, "units_per_metre", "depth", true), "depth.units_per_metre");
+    if (!(c.depth_units_per_metre > 0))
+      throw ParseError(ctx.where(depth), "depth.units_per_metre", "must be positive");
+  }
+  if (const YAML::Node mount = child(ctx, root, "camera_in_base", "", false)) {
+    const YAML::Node t = child(ctx, mount, "translation_m", "camera_in_base", true);
+    const YAML::Node q = child(ctx, mount, "rotation_xyzw", "camera_in_base", true);
+    if (!t.IsSequence() || t.size() != 3)
+      throw ParseError(ctx.where(t), "camera_in_base.translation_m", "expected [x, y, z]");
+    if (!q.IsSequence() || q.size() != 4)
+      throw ParseError(ctx.where(q), "camera_in_base.rotation_xyzw", "expected [x, y, z, w]");
+    Eigen::Vector3d tv;
+    for (int i = 0; i < 3; ++i) tv[i] = number(ctx, t[i], "camera_in_base.translation_m");
+    double qv[4];
+    for (int i = 0; i < 4; ++i) qv[i] = number(ctx, q[i], "camera_in_base.rotation_xyzw");
+    const Eigen::Quaterniond quat(qv[3], qv[0], qv[1], qv[2]);
+    if (quat.norm() < 1e-6)
+      throw ParseError(ctx.where(q), "camera_in_base.rotation_xyzw", "quaternion has zero length");
+    c.camera_in_base = pose_from_translation_quaternion(tv, quat);
+  }
+  if (const YAML::Node odo = child(ctx, root, "odometry", "", false))
+    c.odometry_rate_hz =
+        number(ctx, child(ctx, odo, "rate_hz", "odometry", true), "odometry.rate_hz");
+  if (const YAML::Node model = child(ctx, root, "sensor_model", "", false)) {
+    for (const auto& group : model) {
+      CalibrationGroup g;
+      g.name = group.first.Scalar();
+      for (const auto& kv : group.second) {
+        if (!kv.second.IsScalar())
+          throw ParseError(ctx.where(kv.second), "sensor_model." + g.name, "expected scalars");
+        g.values.emplace_back(kv.first.Scalar(), kv.second.Scalar());
+      }
+      c.sensor_model.push_back(std::move(g));
+    }
+  }
+  return c;
+}
+
+}  // namespace wifislam

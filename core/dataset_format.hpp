@@ -1,0 +1,52 @@
+#pragma once
+// The dataset folder (DESIGN.md, "Data formats"): TUM RGB-D compatible, so RTAB-Map, ORB-SLAM and
+// evo read it, plus Wi-Fi, odometry, calibration and a manifest. The names and conventions both
+// the writer (sim/generate) and the reader (dataset_reader.hpp) use.
+//
+//   rgb/<t>.png  depth/<t>.png   colour (8-bit BGR PNG) and depth (16-bit PNG, 5000 = 1 m,
+//                                0 = no reading); <t> is the frame time with 6 decimals
+//   rgb.txt  depth.txt           "timestamp filename" per frame (TUM)
+//   associations.txt             "t_rgb rgb/<t>.png t_depth depth/<t>.png" (TUM associate.py)
+//   groundtruth.txt              camera-to-world poses at the frame times (TUM trajectory)
+//   odometry.txt                 wheel odometry: robot base in the odometry frame (TUM trajectory)
+//   wifi.csv                     one row per BSSID heard per scan (wifi_csv.hpp)
+//   access_points.csv            ground-truth AP positions, power and BSSIDs (studies only)
+//   calibration.yaml             intrinsics, depth scale, camera mount, sensor model parameters
+//   scene.yaml                   the resolved scene, seed included
+//   images.sha256                SHA-256 of every PNG, `sha256sum -c` format
+//   manifest.json                versions, parameters, counts, SHA-256 of every other file
+
+#include <string>
+
+#include "core/timestamp.hpp"
+
+namespace wifislam::dataset {
+
+inline constexpr int kFormatVersion = 1;
+inline constexpr const char* kFormatName = "wifislam-dataset";
+
+inline constexpr const char* kRgbDir = "rgb";
+inline constexpr const char* kDepthDir = "depth";
+inline constexpr const char* kRgbList = "rgb.txt";
+inline constexpr const char* kDepthList = "depth.txt";
+inline constexpr const char* kAssociations = "associations.txt";
+inline constexpr const char* kGroundTruth = "groundtruth.txt";
+inline constexpr const char* kOdometry = "odometry.txt";
+inline constexpr const char* kWifi = "wifi.csv";
+inline constexpr const char* kAccessPoints = "access_points.csv";
+inline constexpr const char* kCalibration = "calibration.yaml";
+inline constexpr const char* kScene = "scene.yaml";
+inline constexpr const char* kImageChecksums = "images.sha256";
+inline constexpr const char* kManifest = "manifest.json";
+
+/// TUM depth PNGs: 5000 units per metre (TUM RGB-D benchmark, "File Formats").
+inline constexpr double kDepthUnitsPerMetre = 5000.0;
+/// TUM associate.py pairs rgb and depth stamps closer than this (its --max_difference default).
+inline constexpr double kAssociationMaxDifferenceS = 0.02;
+
+/// "rgb/1.033333.png" style relative path of a frame image.
+inline std::string frame_image_path(const char* dir, Timestamp t) {
+  return std::string(dir) + "/" + t.to_string(6) + ".png";
+}
+
+}  // namespace wifislam::dataset

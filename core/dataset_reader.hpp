@@ -1,0 +1,91 @@
+#pragma once
+// Reads a dataset folder as a SensorStream: our datasets (DESIGN.md, "Data formats";
+// dataset_format.hpp) and plain TUM RGB-D datasets (rgb.txt + depth.txt, associated as TUM's
+// associate.py does, or associations.txt). A folder without wifi.csv has no Wi-Fi
+// (has_wifi() is false and description() says so); one without odometry.txt has no odometry; one
+// without calibration.yaml uses the TUM default Kinect v1 intrinsics and 5000 depth units per
+// metre.
+//
+// Opening checks everything but the image contents: the manifest's SHA-256 of every text file
+// (unless verification is off), each list file line by line, and that every listed PNG exists.
+// Errors name the file and line. Images are then loaded lazily, one frame per next(), and each
+// PNG's hash is checked against images.sha256 as it is read, so memory stays flat whatever the
+// dataset's length and no byte is read twice.
+//
+// Ground truth is not part of the stream (SLAM never sees it): read_ground_truth() reads it.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/dataset_calibration.hpp"
+#include "core/dataset_manifest.hpp"
+#include "core/sensor_stream.hpp"
+#include "core/tum_file_list.hpp"
+#include "core/tum_trajectory.hpp"
+
+namespace wifislam {
+
+struct DatasetReaderOptions {
+  /// Compare files with manifest.json's SHA-256 (and PNGs with images.sha256). Off = --no-verify:
+  /// read a dataset that was edited on purpose.
+  bool verify_checksums = true;
+  /// Decode images in next(). Off: frames carry their paths and times only (quick passes over
+  /// Wi-Fi and odometry).
+  bool load_images = true;
+};
+
+class DatasetReader final : public SensorStream {
+ public:
+  /// Throws IoError (folder or file unreadable) or ParseError (file:line of what is wrong).
+  explicit DatasetReader(const std::filesystem::path& folder, DatasetReaderOptions options = {});
+  ~DatasetReader() override;
+
+  std::optional<SensorEvent> next() override;
+  const CameraIntrinsics& intrinsics() const override { return calibration_.intrinsics; }
+  Pose camera_in_base() const override { return calibration_.camera_in_base; }
+  bool has_wifi() const override { return has_wifi_; }
+  bool has_odometry() const override { return has_odometry_; }
+  std::string description() const override;
+
+  /// Starts the stream again from the first event.
+  void rewind();
+
+  bool has_manifest() const { return manifest_.has_value(); }
+  const std::optional<DatasetManifest>& manifest() const { return manifest_; }
+  const DatasetCalibration& calibration() const { return calibration_; }
+  const std::filesystem::path& folder() const { return folder_; }
+  std::int64_t frame_count() const { return frame_count_; }
+  std::int64_t wifi_scan_count() const { return scan_count_; }
+  std::int64_t odometry_count() const { return odometry_count_; }
+
+ private:
+  struct Cursors;
+  void validate();
+  void open_cursors();
+
+  std::filesystem::path folder_;
+  DatasetReaderOptions options_;
+  std::optional<DatasetManifest> manifest_;
+  DatasetCalibration calibration_;
+  bool has_calibration_file_ = false;
+  bool has_wifi_ = false, has_odometry_ = false, has_associations_file_ = false;
+  bool has_frames_ = false;
+  std::vector<FramePair> associated_;  // plain TUM datasets only (associated in memory)
+  std::int64_t frame_count_ = 0, scan_count_ = 0, odometry_count_ = 0;
+  std::unique_ptr<Cursors> cursors_;
+};
+
+/// groundtruth.txt of a dataset folder (camera-to-world poses at the frame times). When the folder
+/// has a manifest, the file's SHA-256 is checked (unless `verify_checksums` is false) and the pose
+/// count must match its counts; a truncated file is a ParseError naming the file.
+Trajectory read_ground_truth(const std::filesystem::path& folder, bool verify_checksums = true);
+
+/// Decodes a TUM depth PNG (16-bit, `units_per_metre`) into metres (CV_32FC1). Throws ParseError
+/// naming `name` for anything that is not a 16-bit single-channel PNG.
+cv::Mat decode_depth_png(const std::vector<unsigned char>& bytes, double units_per_metre,
+                         const std::string& name);
+
+}  // namespace wifislam

@@ -1,0 +1,279 @@
+// The dataset reader on folders written by hand in the documented format: a plain TUM RGB-D
+// folder and a small wifislam dataset (frames, odometry, Wi-Fi, calibration, manifest).
+#include "core/dataset_reader.hpp"
+
+#include <gtest/gtest.h>
+
+#include <opencv2/imgcodecs.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/dataset_format.hpp"
+#include "core/error.hpp"
+#include "core/wifi_csv.hpp"
+#include "tests/dataset/test_folder.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Frame k: colour (k, 2k, 3k) everywhere, depth (k + 1) m in TUM units.
+void write_frame_images(const fs::path& dir, Timestamp t, int k, int w, int h) {
+  fs::create_directories(dir / "rgb");
+  fs::create_directories(dir / "depth");
+  cv::imwrite((dir / dataset::frame_image_path(dataset::kRgbDir, t)).string(),
+              cv::Mat(h, w, CV_8UC3, cv::Scalar(k, 2 * k, 3 * k)));
+  cv::imwrite((dir / dataset::frame_image_path(dataset::kDepthDir, t)).string(),
+              cv::Mat(h, w, CV_16UC1, cv::Scalar((k + 1) * 5000)));
+}
+
+Timestamp frame_time(int k) { return Timestamp::from_ns(k * 100'000'000LL); }  // 10 Hz
+
+void write_plain_tum(const fs::path& dir, int frames) {
+  std::string rgb = "# color images\n# file: 'plain'\n# timestamp filename\n", depth = rgb;
+  for (int k = 0; k < frames; ++k) {
+    const Timestamp t = frame_time(k);
+    write_frame_images(dir, t, k, 640, 480);
+    rgb += format_tum_file_line(t, dataset::frame_image_path(dataset::kRgbDir, t));
+    // Depth stamps offset by 3 ms, as real Kinect streams are.
+    const Timestamp td = Timestamp::from_ns(t.ns + 3'000'000);
+    fs::rename(dir / dataset::frame_image_path(dataset::kDepthDir, t),
+               dir / dataset::frame_image_path(dataset::kDepthDir, td));
+    depth += format_tum_file_line(td, dataset::frame_image_path(dataset::kDepthDir, td));
+  }
+  test::write_text(dir / "rgb.txt", rgb);
+  test::write_text(dir / "depth.txt", depth);
+  test::write_text(dir / "groundtruth.txt", "# ground truth\n0.000000 1 2 3 0 0 0 1\n");
+}
+
+// A small dataset in our format: 5 frames of 32x24 at 10 Hz, odometry at 20 Hz, two Wi-Fi scans.
+void write_ours(const fs::path& dir) {
+  const int w = 32, h = 24, frames = 5;
+  std::string rgb, depth, assoc, gt, images;
+  for (int k = 0; k < frames; ++k) {
+    const Timestamp t = frame_time(k);
+    write_frame_images(dir, t, k, w, h);
+    const FramePair p{t, dataset::frame_image_path(dataset::kRgbDir, t), t,
+                      dataset::frame_image_path(dataset::kDepthDir, t), 0};
+    rgb += format_tum_file_line(t, p.rgb_path);
+    depth += format_tum_file_line(t, p.depth_path);
+    assoc += format_association_line(p);
+    gt += format_tum_line(StampedPose::from_pose(t, camera_pose_from_planar(0.1 * k, 0, 0, 0.5)));
+    gt += "\n";
+    images += format_checksum_line(sha256_file_hex(dir / p.rgb_path), p.rgb_path);
+    images += format_checksum_line(sha256_file_hex(dir / p.depth_path), p.depth_path);
+  }
+  std::string odo;
+  for (int j = 0; j < 2 * frames - 1; ++j) {
+    Pose pose = Pose::Identity();
+    pose.translation().x() = 0.05 * j;
+    odo +=
+        format_tum_line(StampedPose::from_pose(Timestamp::from_ns(j * 50'000'000LL), pose)) + "\n";
+  }
+  WifiScan a, b;
+  a.start_time = Timestamp{0};
+  a.time = a.end_time = frame_time(1);  // same time as frame 1: the scan comes first
+  a.readings = {{*MacAddress::parse("02:00:00:00:01:00"), 2412000, -50, "campus"},
+                {*MacAddress::parse("02:00:00:00:01:08"), 5180000, -61, "campus"}};
+  b.start_time = frame_time(2);
+  b.time = b.end_time = Timestamp::from_ns(frame_time(3).ns + 1000);
+  b.readings = {{*MacAddress::parse("02:00:00:00:02:00"), 2437000, -70, "lab"}};
+  test::write_text(dir / "rgb.txt", rgb);
+  test::write_text(dir / "depth.txt", depth);
+  test::write_text(dir / "associations.txt", assoc);
+  test::write_text(dir / "groundtruth.txt", gt);
+  test::write_text(dir / "odometry.txt", odo);
+  test::write_text(dir / "wifi.csv",
+                   wifi_csv_header() + "\n" + format_wifi_csv_rows(a) + format_wifi_csv_rows(b));
+  test::write_text(dir / "images.sha256", images);
+  DatasetCalibration cal;
+  cal.intrinsics = {w, h, 30.0, 30.0, 15.5, 11.5};
+  cal.camera_fps = 10.0;
+  cal.camera_in_base = camera_pose_from_planar(0, 0, 0, 0.5);
+  cal.odometry_rate_hz = 20.0;
+  cal.sensor_model = {{"depth_sensor", {{"noise", "false"}, {"baseline_m", "0.075"}}}};
+  test::write_text(dir / "calibration.yaml", calibration_to_yaml(cal));
+  DatasetManifest m;
+  m.versions = {{"wifislam", "test"}};
+  m.parameters_json = R"({"seed": 1})";
+  m.counts = {{"frames", frames},
+              {"odometry_readings", 2 * frames - 1},
+              {"wifi_scans", 2},
+              {"groundtruth_poses", frames}};
+  for (const char* f : {"rgb.txt", "depth.txt", "associations.txt", "groundtruth.txt",
+                        "odometry.txt", "wifi.csv", "images.sha256", "calibration.yaml"}) {
+    m.files.push_back(describe_dataset_file(dir, f));
+  }
+  test::write_text(dir / "manifest.json", manifest_to_json(m));
+}
+
+std::vector<SensorEvent> read_all(DatasetReader& reader) {
+  std::vector<SensorEvent> events;
+  while (auto e = reader.next()) events.push_back(std::move(*e));
+  return events;
+}
+
+TEST(DatasetReader, PlainTumFolderWithoutWifiSaysSo) {
+  const auto dir = test::fresh_folder("tum");
+  write_plain_tum(dir, 3);
+  DatasetReader reader(dir);
+  EXPECT_FALSE(reader.has_wifi());
+  EXPECT_FALSE(reader.has_odometry());
+  EXPECT_FALSE(reader.has_manifest());
+  EXPECT_NE(reader.description().find("no Wi-Fi"), std::string::npos) << reader.description();
+  EXPECT_NE(reader.description().find("default Kinect v1"), std::string::npos);
+  EXPECT_EQ(reader.intrinsics(), CameraIntrinsics::kinect_v1());
+  const auto events = read_all(reader);
+  ASSERT_EQ(events.size(), 3u);
+  for (int k = 0; k < 3; ++k) {
+    const auto& frame = std::get<RgbdFrame>(events[k]);
+    EXPECT_EQ(frame.index, k);
+    EXPECT_EQ(frame.time, frame_time(k));
+    EXPECT_EQ(frame.rgb.type(), CV_8UC3);
+    EXPECT_EQ(frame.rgb.at<cv::Vec3b>(10, 10), cv::Vec3b(k, 2 * k, 3 * k));
+    EXPECT_EQ(frame.depth_m.type(), CV_32FC1);
+    EXPECT_FLOAT_EQ(frame.depth_m.at<float>(5, 5), static_cast<float>(k + 1));
+    EXPECT_EQ(frame.depth_path,
+              "depth/" + Timestamp::from_ns(frame.time.ns + 3'000'000).to_string() + ".png");
+  }
+  EXPECT_EQ(read_ground_truth(dir).size(), 1u);
+}
+
+TEST(DatasetReader, StreamsOurDatasetInTimeOrderWithTiesOdometryWifiFrame) {
+  const auto dir = test::fresh_folder("ours");
+  write_ours(dir);
+  DatasetReader reader(dir);
+  EXPECT_TRUE(reader.has_wifi());
+  EXPECT_TRUE(reader.has_odometry());
+  EXPECT_EQ(reader.frame_count(), 5);
+  EXPECT_EQ(reader.wifi_scan_count(), 2);
+  EXPECT_EQ(reader.odometry_count(), 9);
+  EXPECT_EQ(reader.intrinsics().width_px, 32);
+  EXPECT_TRUE(reader.camera_in_base().isApprox(camera_pose_from_planar(0, 0, 0, 0.5), 1e-15));
+  ASSERT_EQ(reader.calibration().sensor_model.size(), 1u);
+  EXPECT_EQ(reader.calibration().sensor_model[0].values[1].second, "0.075");
+  const auto events = read_all(reader);
+  ASSERT_EQ(events.size(), 5u + 2u + 9u);
+  for (std::size_t i = 1; i < events.size(); ++i) {
+    EXPECT_LE(event_time(events[i - 1]), event_time(events[i]));
+    if (event_time(events[i - 1]) == event_time(events[i])) {
+      // Variant indices: frame 0, scan 1, odometry 2; ties come odometry first.
+      EXPECT_GE(events[i - 1].index(), events[i].index()) << "tie order";
+    }
+  }
+  // At t = 0.1 s: odometry (t = 0.1), then the scan, then frame 1.
+  std::vector<std::size_t> kinds_at_100ms;
+  for (const auto& e : events)
+    if (event_time(e) == frame_time(1)) kinds_at_100ms.push_back(e.index());
+  EXPECT_EQ(kinds_at_100ms, (std::vector<std::size_t>{2, 1, 0}));
+  int scans = 0;
+  for (const auto& e : events) {
+    if (const auto* s = std::get_if<WifiScan>(&e)) {
+      ++scans;
+      EXPECT_EQ(s->readings.size(), scans == 1 ? 2u : 1u);
+    }
+  }
+  EXPECT_EQ(scans, 2);
+  reader.rewind();
+  EXPECT_EQ(read_all(reader).size(), events.size());
+}
+
+std::string open_error(const fs::path& dir, DatasetReaderOptions options = {}) {
+  try {
+    DatasetReader reader(dir, options);
+    while (reader.next()) {
+    }
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(DatasetReader, MissingPngIsAnErrorNamingTheListLine) {
+  const auto dir = test::fresh_folder("missing");
+  write_ours(dir);
+  fs::remove(dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(3)));
+  const std::string e = open_error(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("associations.txt:4"), std::string::npos) << e;
+  EXPECT_NE(e.find("depth/0.300000.png"), std::string::npos) << e;
+}
+
+TEST(DatasetReader, ManifestMismatchIsAnErrorUnlessVerificationIsOff) {
+  const auto dir = test::fresh_folder("mismatch");
+  write_ours(dir);
+  test::write_text(dir / "odometry.txt", test::read_text(dir / "odometry.txt") + "\n");
+  std::string e = open_error(dir);
+  EXPECT_NE(e.find("odometry.txt"), std::string::npos) << e;
+  EXPECT_NE(e.find("manifest mismatch"), std::string::npos) << e;
+  EXPECT_NE(e.find("--no-verify"), std::string::npos) << e;
+  EXPECT_EQ(open_error(dir, {.verify_checksums = false}), "no error");
+}
+
+TEST(DatasetReader, ChangedImageIsCaughtWhenItIsRead) {
+  const auto dir = test::fresh_folder("image");
+  write_ours(dir);
+  cv::imwrite((dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(2))).string(),
+              cv::Mat(24, 32, CV_8UC3, cv::Scalar(9, 9, 9)));
+  const std::string e = open_error(dir);
+  EXPECT_NE(e.find("rgb/0.200000.png"), std::string::npos) << e;
+  EXPECT_NE(e.find("manifest mismatch"), std::string::npos) << e;
+  EXPECT_EQ(open_error(dir, {.verify_checksums = false}), "no error");
+}
+
+TEST(DatasetReader, CorruptFilesAreErrorsWithFileAndLine) {
+  const auto dir = test::fresh_folder("corrupt");
+  write_ours(dir);
+  // A malformed wifi.csv row.
+  const std::string wifi = test::read_text(dir / "wifi.csv");
+  test::write_text(dir / "wifi.csv", wifi + "400001,wifi0,not-a-mac,2412000,-50,x,0,400001\n");
+  std::string e = open_error(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("wifi.csv:5"), std::string::npos) << e;
+  EXPECT_NE(e.find("not-a-mac"), std::string::npos) << e;
+  test::write_text(dir / "wifi.csv", wifi);
+  // A truncated odometry line.
+  const std::string odo = test::read_text(dir / "odometry.txt");
+  test::write_text(dir / "odometry.txt", odo.substr(0, odo.size() - 10));
+  e = open_error(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("odometry.txt:9"), std::string::npos) << e;
+  test::write_text(dir / "odometry.txt", odo);
+  // A PNG that is not an image.
+  test::write_text(dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(4)), "garbage");
+  e = open_error(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("depth/0.400000.png"), std::string::npos) << e;
+  EXPECT_NE(e.find("not a readable PNG"), std::string::npos) << e;
+}
+
+TEST(DatasetReader, TruncatedGroundTruthIsAnError) {
+  const auto dir = test::fresh_folder("gt");
+  write_ours(dir);
+  EXPECT_EQ(read_ground_truth(dir).size(), 5u);
+  const std::string gt = test::read_text(dir / "groundtruth.txt");
+  // Cut in the middle of the last line.
+  test::write_text(dir / "groundtruth.txt", gt.substr(0, gt.size() - 12));
+  try {
+    read_ground_truth(dir);
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("groundtruth.txt:5"), std::string::npos) << e.what();
+  }
+  // Cut at a line boundary: well-formed but short; the manifest's count catches it.
+  test::write_text(dir / "groundtruth.txt", gt.substr(0, gt.rfind('\n', gt.size() - 2) + 1));
+  try {
+    read_ground_truth(dir);
+    FAIL() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("groundtruth.txt"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("manifest mismatch"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_ground_truth(dir, false).size(), 4u);
+}
+
+TEST(DatasetReader, FolderWithoutFramesIsNotADataset) {
+  const auto dir = test::fresh_folder("empty");
+  const std::string e = open_error(dir);
+  EXPECT_NE(e.find("not an RGB-D dataset"), std::string::npos) << e;
+  EXPECT_NE(open_error(dir / "nope").find("does not exist"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wifislam
