@@ -1,6 +1,8 @@
 #pragma once
 // ORB features (OpenCV) with a depth lookup per keypoint.
 
+#include <optional>
+
 #include <opencv2/features2d.hpp>
 
 #include "core/camera_intrinsics.hpp"
@@ -23,6 +25,10 @@ struct FeatureOptions {
   double min_depth_m = 0.3;
   double max_depth_m = 6.0;
 };
+
+/// Depth (m) at a sub-pixel position: bilinear between the four nearest pixel centres when they
+/// agree within 5 %, else the nearest pixel's reading; nullopt when there is none.
+std::optional<double> depth_at(const cv::Mat& depth_m, double u_px, double v_px);
 
 class OrbFeatureExtractor {
  public:

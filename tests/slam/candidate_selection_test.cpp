@@ -1,0 +1,138 @@
+// RGBD-SLAM's candidate selection (predecessors, geodesic neighbours, random earlier keyframes)
+// and the front-end seam.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "core/error.hpp"
+#include "slam/loop/candidate_selector_factory.hpp"
+#include "slam/loop/rgbdslam_candidate_selector.hpp"
+
+namespace wifislam::slam {
+namespace {
+
+/// A chain of `n` keyframes plus a loop edge 0 - (n - 2).
+PoseGraph chain_with_loop(int n) {
+  PoseGraph graph;
+  for (int i = 0; i < n; ++i) graph.add_node(Timestamp::from_ns(i), i, Pose::Identity());
+  for (int i = 1; i < n; ++i) graph.add_edge({i - 1, i, EdgeType::kVisual});
+  graph.add_edge({0, n - 2, EdgeType::kLoop});
+  return graph;
+}
+
+SelectionQuery query_for(const PoseGraph& graph, KeyframeId id) {
+  SelectionQuery q;
+  q.keyframe = id;
+  q.graph = &graph;
+  q.already_compared = {id - 1};
+  return q;
+}
+
+TEST(RgbdslamSelection, PredecessorsNeighboursAndRandomEarlierKeyframes) {
+  const PoseGraph graph = chain_with_loop(41);
+  RgbdslamCandidateSelector selector(RgbdslamOptions{}, 7);
+  const std::vector<Candidate> c = selector.select(query_for(graph, 40));
+  std::map<CandidateRole, std::vector<KeyframeId>> by_role;
+  for (const Candidate& x : c) by_role[x.role].push_back(x.keyframe);
+  // Predecessors 39 and 38; 39 was compared by tracking, so only 38 is returned.
+  EXPECT_EQ(by_role[CandidateRole::kPredecessor], (std::vector<KeyframeId>{38}));
+  // Neighbours of 39 within depth 3 (besides predecessors): 37, 36 and, through the loop edge
+  // 0 - 39, keyframes 0, 1, 2: two of them.
+  const std::set<KeyframeId> reachable{37, 36, 0, 1, 2};
+  ASSERT_EQ(by_role[CandidateRole::kNeighbour].size(), 2u);
+  for (KeyframeId k : by_role[CandidateRole::kNeighbour]) EXPECT_TRUE(reachable.count(k)) << k;
+  ASSERT_EQ(by_role[CandidateRole::kSampled].size(), 2u);
+  std::set<KeyframeId> all;
+  for (const Candidate& x : c) {
+    EXPECT_LT(x.keyframe, 40);
+    EXPECT_NE(x.keyframe, 39);
+    EXPECT_TRUE(all.insert(x.keyframe).second) << "duplicate " << x.keyframe;
+  }
+}
+
+TEST(RgbdslamSelection, SameSeedSameCandidatesOtherSeedOtherCandidates) {
+  const PoseGraph graph = chain_with_loop(200);
+  auto run = [&](std::uint64_t seed) {
+    RgbdslamCandidateSelector selector(RgbdslamOptions{}, seed);
+    std::vector<KeyframeId> out;
+    for (KeyframeId id = 100; id < 199; ++id) {
+      for (const Candidate& c : selector.select(query_for(graph, id))) out.push_back(c.keyframe);
+    }
+    return out;
+  };
+  EXPECT_EQ(run(3), run(3));
+  EXPECT_NE(run(3), run(4));
+}
+
+TEST(RgbdslamSelection, RandomKeyframesCoverTheWholeMap) {
+  // Uniform sampling: over many draws every earlier keyframe gets picked.
+  const PoseGraph graph = chain_with_loop(60);
+  RgbdslamOptions options;
+  options.neighbor_candidates = 0;
+  RgbdslamCandidateSelector selector(options, 5);
+  std::set<KeyframeId> seen;
+  for (int i = 0; i < 400; ++i) {
+    for (const Candidate& c : selector.select(query_for(graph, 50))) {
+      if (c.role == CandidateRole::kSampled) seen.insert(c.keyframe);
+    }
+  }
+  EXPECT_EQ(seen.size(), 48u);  // keyframes 0..47 (48 and 49 are predecessors)
+}
+
+TEST(RgbdslamSelection, FirstKeyframesGetWhatExists) {
+  const PoseGraph graph = chain_with_loop(3);
+  RgbdslamCandidateSelector selector(RgbdslamOptions{}, 1);
+  SelectionQuery q;
+  q.keyframe = 0;
+  q.graph = &graph;
+  EXPECT_TRUE(selector.select(q).empty());
+  q.keyframe = 1;
+  const auto c = selector.select(q);
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_EQ(c[0].keyframe, 0);
+}
+
+/// A front end defined outside the library: the seam admits it without touching the pipeline.
+class EveryKeyframeSelector : public CandidateSelector {
+ public:
+  std::string name() const override { return "every_keyframe_test"; }
+  std::vector<Candidate> select(const SelectionQuery& q) override {
+    std::vector<Candidate> out;
+    for (KeyframeId k = 0; k < q.keyframe; ++k) out.push_back({k, CandidateRole::kSampled});
+    return out;
+  }
+};
+
+TEST(CandidateSelectorFactory, BuildsByNameAndRejectsUnknownNames) {
+  SlamOptions options;
+  Instrumentation instrumentation;
+  SelectorContext context{&options, &instrumentation, false, false};
+  EXPECT_EQ(make_candidate_selector(context)->name(), "rgbdslam");
+  options.frontend = "no_such_frontend";
+  try {
+    make_candidate_selector(context);
+    FAIL() << "expected InvalidInputError";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("rgbdslam"), std::string::npos) << e.what();
+  }
+  register_candidate_selector("every_keyframe_test", [](const SelectorContext&) {
+    return std::make_unique<EveryKeyframeSelector>();
+  });
+  options.frontend = "every_keyframe_test";
+  EXPECT_EQ(make_candidate_selector(context)->name(), "every_keyframe_test");
+}
+
+TEST(VerificationReport, ListsVisuallyConnectedKeyframes) {
+  VerificationReport report;
+  report.tracked_from = 9;
+  report.comparisons = {{{8, CandidateRole::kPredecessor}, true, 50, EdgeType::kVisual},
+                        {{2, CandidateRole::kSampled}, false, 0, EdgeType::kVisual},
+                        {{1, CandidateRole::kSampled}, true, 30, EdgeType::kLoop}};
+  EXPECT_EQ(report.visually_connected(), (std::vector<KeyframeId>{1, 8, 9}));
+}
+
+}  // namespace
+}  // namespace wifislam::slam

@@ -1,0 +1,57 @@
+// SLAM options: `--set key=value` parsing, validation and run.json form.
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "slam/slam_options.hpp"
+
+namespace wifislam::slam {
+namespace {
+
+TEST(SlamOptions, DefaultsAreRgbdslamV2s) {
+  const SlamOptions o;
+  EXPECT_EQ(o.features.max_keypoints, 600);
+  EXPECT_EQ(o.transform.min_matches, 20);
+  EXPECT_EQ(o.transform.ransac_iterations, 200);
+  EXPECT_EQ(o.rgbdslam.predecessor_candidates, 2);
+  EXPECT_EQ(o.rgbdslam.neighbor_candidates, 2);
+  EXPECT_EQ(o.rgbdslam.geodesic_depth, 3);
+  EXPECT_EQ(o.rgbdslam.min_sampled_candidates, 2);
+  EXPECT_NO_THROW(validate(o));
+}
+
+TEST(SlamOptions, SetsThePapersParametersByName) {
+  SlamOptions o;
+  set_option_assignment(o, "min_matches=15");
+  set_option_assignment(o, "inlier_distance=2.5");
+  set_option_assignment(o, "odometry_edges=true");
+  set_option_assignment(o, "robust_loss=huber");
+  set_option_assignment(o, "seed=42");
+  EXPECT_EQ(o.transform.min_matches, 15);
+  EXPECT_DOUBLE_EQ(o.transform.inlier_distance, 2.5);
+  EXPECT_TRUE(o.tracking.odometry_edges);
+  EXPECT_EQ(o.graph.robust_loss, "huber");
+  EXPECT_EQ(o.seed, 42u);
+  const nlohmann::json j = to_json(o);
+  EXPECT_EQ(j.at("min_matches"), 15);
+  EXPECT_EQ(j.at("inlier_distance"), 2.5);
+}
+
+TEST(SlamOptions, BadInputNamesTheKey) {
+  SlamOptions o;
+  try {
+    set_option_assignment(o, "min_match=15");
+    FAIL();
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.key_path(), "min_match");
+    EXPECT_NE(std::string(e.what()).find("min_matches"), std::string::npos);  // lists known keys
+  }
+  EXPECT_THROW(set_option_assignment(o, "min_matches=lots"), ParseError);
+  EXPECT_THROW(set_option_assignment(o, "min_matches"), ParseError);
+  EXPECT_THROW(set_option_assignment(o, "odometry_edges=maybe"), ParseError);
+  set_option_assignment(o, "ransac_confidence=1.0");
+  EXPECT_THROW(validate(o), InvalidInputError);  // OpenCV asserts at exactly 1
+}
+
+}  // namespace
+}  // namespace wifislam::slam
