@@ -135,7 +135,10 @@ void BM_BareOsmesaRenderReadback(benchmark::State& state) {
 
 void BM_HarnessFrame(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
+  RenderOptions options;
+  if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
+    options.max_lights = std::atoi(lights);
+  RgbdRenderer renderer(k, options);
   renderer.set_world(corridor().mesh, corridor().lights, kSeed, AppearanceThemes{});
   const DepthSensorModel sensor(DepthSensorSpec{}, k, kSeed);
   const bool with_sensor = state.range(0) != 0;

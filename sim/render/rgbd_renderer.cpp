@@ -20,7 +20,7 @@ namespace wifislam {
 
 namespace {
 
-constexpr int kMaxLightsInShader = 16;
+constexpr int kMaxLightsInShader = 8;
 
 const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position_m;
@@ -42,40 +42,36 @@ void main() {
 )";
 
 // Diffuse (Lambert) shading from downward-facing ceiling panels with inverse-square falloff
-// (softened by +1 m^2 so a surface touching a light does not blow up), plus ambient.
-const char* kFragmentShader = R"(#version 330 core
+// (softened by +1 m^2 so a surface touching a light does not blow up), plus ambient. No branches
+// and a loop of constant length: llvmpipe runs divergent control flow and dynamically indexed
+// uniform arrays several times slower. MAX_LIGHTS is defined when the program is built.
+const char* kFragmentShader = R"(
 in vec3 world_position;
 in vec3 world_normal;
 in vec2 uv;
 in float optical_depth;
 uniform sampler2D albedo;
 uniform vec3 camera_position;
-uniform bool emissive;
+uniform float emissive;
 uniform float ambient;
-uniform float light_power;
-uniform int light_count;
-uniform vec3 light_positions[16];
+uniform float light_weights[MAX_LIGHTS];
+uniform vec3 light_positions[MAX_LIGHTS];
 layout(location = 0) out vec4 color;
 layout(location = 1) out float depth_m;
 layout(location = 2) out float incidence_cos;
 void main() {
   vec3 view = normalize(world_position - camera_position);
-  vec3 n = normalize(world_normal);
-  float facing = dot(n, view);
-  if (facing > 0.0) n = -n;
-  vec3 surface = texture(albedo, uv).rgb;
-  vec3 shaded = surface;
-  if (!emissive) {
-    float irradiance = ambient;
-    for (int i = 0; i < light_count; ++i) {
-      vec3 to_light = light_positions[i] - world_position;
-      float d2 = dot(to_light, to_light);
-      vec3 l = to_light * inversesqrt(d2);
-      irradiance += light_power * max(dot(n, l), 0.0) * max(l.z, 0.0) / (d2 + 1.0);
-    }
-    shaded = surface * irradiance;
+  vec3 normal = normalize(world_normal);
+  float facing = dot(normal, view);
+  vec3 n = faceforward(normal, view, normal);
+  float irradiance = ambient;
+  for (int i = 0; i < MAX_LIGHTS; ++i) {
+    vec3 to_light = light_positions[i] - world_position;
+    float d2 = dot(to_light, to_light);
+    vec3 l = to_light * inversesqrt(d2);
+    irradiance += light_weights[i] * max(dot(n, l), 0.0) * max(l.z, 0.0) / (d2 + 1.0);
   }
-  color = vec4(shaded, 1.0);
+  color = vec4(texture(albedo, uv).rgb * mix(irradiance, 1.0, emissive), 1.0);
   depth_m = optical_depth;
   incidence_cos = abs(facing);
 }
@@ -126,11 +122,16 @@ RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptio
                                         kMaxLightsInShader, options.max_lights));
   }
   context_ = std::make_unique<OsmesaContext>();
-  program_ = std::make_unique<GlProgram>(kVertexShader, kFragmentShader);
-  uniforms_ = {program_->uniform("world_to_clip"),   program_->uniform("world_to_camera"),
-               program_->uniform("camera_position"), program_->uniform("emissive"),
-               program_->uniform("ambient"),         program_->uniform("light_power"),
-               program_->uniform("light_count"),     program_->uniform("light_positions"),
+  const std::string fragment_source = fmt::format("#version 330 core\n#define MAX_LIGHTS {}\n{}",
+                                                  std::max(options.max_lights, 1), kFragmentShader);
+  program_ = std::make_unique<GlProgram>(kVertexShader, fragment_source);
+  uniforms_ = {program_->uniform("world_to_clip"),
+               program_->uniform("world_to_camera"),
+               program_->uniform("camera_position"),
+               program_->uniform("emissive"),
+               program_->uniform("ambient"),
+               program_->uniform("light_weights[0]"),
+               program_->uniform("light_positions[0]"),
                program_->uniform("albedo")};
 
   const int w = intrinsics.width_px, h = intrinsics.height_px;
@@ -198,20 +199,34 @@ void RgbdRenderer::set_world(const World& world, const Scene& scene) {
 }
 
 void RgbdRenderer::upload_lights(const Eigen::Vector3d& camera_position_m) {
-  std::vector<std::pair<double, int>> near;
+  std::vector<std::pair<double, int>> by_distance;
   for (int i = 0; i < static_cast<int>(lights_.size()); ++i) {
-    const double d = (lights_[i].center_m - camera_position_m).norm();
-    if (d <= options_.light_range_m) near.emplace_back(d, i);
+    by_distance.emplace_back((lights_[i].center_m - camera_position_m).norm(), i);
   }
-  std::sort(near.begin(), near.end());  // ties broken by index: deterministic
-  const int count = std::min<int>(options_.max_lights, static_cast<int>(near.size()));
-  std::vector<float> positions(3 * static_cast<std::size_t>(std::max(count, 1)), 0.0f);
-  for (int i = 0; i < count; ++i) {
-    for (int k = 0; k < 3; ++k)
-      positions[3 * i + k] = static_cast<float>(lights_[near[i].second].center_m[k]);
+  std::sort(by_distance.begin(), by_distance.end());  // ties broken by index: deterministic
+  const int slots = std::max(options_.max_lights, 1);
+  // A light's weight fades to zero as it approaches the range limit or the distance of the
+  // nearest light left out, so lights enter and leave the shaded set smoothly as the camera
+  // moves instead of popping (a brightness jump would look like a scene change to SLAM).
+  double cutoff_m = options_.light_range_m;
+  if (static_cast<int>(by_distance.size()) > options_.max_lights) {
+    cutoff_m = std::min(cutoff_m, by_distance[options_.max_lights].first);
   }
-  glUniform1i(uniforms_.light_count, count);
-  if (count > 0) glUniform3fv(uniforms_.light_positions, count, positions.data());
+  std::vector<float> weights(slots, 0.0f);
+  std::vector<float> positions(3 * static_cast<std::size_t>(slots));
+  for (int i = 0; i < slots; ++i) {
+    Eigen::Vector3d p = camera_position_m + Eigen::Vector3d(0, 0, 1000.0);  // unused slot
+    if (i < options_.max_lights && i < static_cast<int>(by_distance.size())) {
+      const auto [distance_m, index] = by_distance[i];
+      // Just below the panel: the ceiling around a light gets no direct light (and no 1/0).
+      p = lights_[index].center_m - Eigen::Vector3d(0, 0, 0.05);
+      const double fade = std::clamp((cutoff_m - distance_m) / options_.light_fade_m, 0.0, 1.0);
+      weights[i] = static_cast<float>(options_.light_power * fade);
+    }
+    for (int k = 0; k < 3; ++k) positions[3 * i + k] = static_cast<float>(p[k]);
+  }
+  glUniform1fv(uniforms_.light_weights, slots, weights.data());
+  glUniform3fv(uniforms_.light_positions, slots, positions.data());
 }
 
 void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
@@ -237,7 +252,6 @@ void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
     const Eigen::Vector3f camera_position = camera_to_world.translation().cast<float>();
     glUniform3fv(uniforms_.camera_position, 1, camera_position.data());
     glUniform1f(uniforms_.ambient, options_.ambient);
-    glUniform1f(uniforms_.light_power, options_.light_power);
     glUniform1i(uniforms_.albedo, 0);
     upload_lights(camera_to_world.translation());
     mesh_->bind();
@@ -245,7 +259,7 @@ void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
       if (options_.frustum_culling && box_outside_frustum(batch.bounds_m, world_to_clip)) continue;
       const GlTexture& texture = *textures_.at(batch.key);
       texture.bind();
-      glUniform1i(uniforms_.emissive, texture.emissive() ? 1 : 0);
+      glUniform1f(uniforms_.emissive, texture.emissive() ? 1.0f : 0.0f);
       mesh_->draw(batch);
       ++last_draw_count_;
     }

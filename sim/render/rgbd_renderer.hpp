@@ -35,8 +35,9 @@ struct RenderOptions {
   double far_m = 40.0;          // farther surfaces are not drawn
   float ambient = 0.45f;        // light every surface gets, as a fraction of its albedo
   float light_power = 2.5f;     // one ceiling light's irradiance at 1 m, times (d^2 + 1)
-  int max_lights = 8;           // nearest lights shaded per frame: cost grows linearly
+  int max_lights = 4;           // nearest lights shaded per frame (0..8): cost grows with it
   double light_range_m = 12.0;  // lights farther from the camera are not shaded
+  double light_fade_m = 1.5;    // lights fade out over this distance before they drop out
   bool frustum_culling = true;  // skip texture batches outside the view (saves draw calls)
 };
 
@@ -93,8 +94,8 @@ class RgbdRenderer {
   cv::Mat color_bgra_;
   int last_draw_count_ = 0;
   struct Uniforms {
-    int world_to_clip, world_to_camera, camera_position, emissive, ambient, light_power,
-        light_count, light_positions, albedo;
+    int world_to_clip, world_to_camera, camera_position, emissive, ambient, light_weights,
+        light_positions, albedo;
   } uniforms_{};
 };
 
