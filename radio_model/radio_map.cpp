@@ -19,15 +19,47 @@ namespace wifislam {
 
 namespace {
 
+void add_region_path(cairo_t* cr, const PolygonWithHoles2& region);
+
 double ap_rssi(const PropagationModel& model, std::size_t a, const RadioLink& link,
                RadioMapBand band) {
   double best = -std::numeric_limits<double>::infinity();
+  std::int64_t last_khz = -1;
   for (const Bssid& b : model.access_points()[a].bssids) {
     if (band == RadioMapBand::k2_4GHz && b.band != RadioBand::k2_4GHz) continue;
     if (band == RadioMapBand::k5GHz && b.band != RadioBand::k5GHz) continue;
+    if (b.frequency_khz == last_khz) continue;  // BSSIDs of one radio share its channel
+    last_khz = b.frequency_khz;
     best = std::max(best, model.mean_rssi_dbm(a, b, link));
   }
   return best;
+}
+
+// Which cells have their centre in free space: the plan rasterised by cairo (no antialiasing,
+// so a pixel is set exactly when its centre is inside), one pixel per cell.
+std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& origin_m,
+                                  double resolution_m, int cols, int rows) {
+  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_A8, cols, rows);
+  cairo_t* cr = cairo_create(surface);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+  cairo_scale(cr, 1.0 / resolution_m, 1.0 / resolution_m);
+  cairo_translate(cr, -origin_m.x(), -origin_m.y());
+  for (const auto& region : plan.free_space) {
+    add_region_path(cr, region);
+    cairo_fill(cr);  // region by region: overlapping regions must not cancel out
+  }
+  cairo_destroy(cr);
+  cairo_surface_flush(surface);
+  const unsigned char* data = cairo_image_surface_get_data(surface);
+  const int stride = cairo_image_surface_get_stride(surface);
+  std::vector<bool> mask(static_cast<std::size_t>(cols) * rows);
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c)
+      mask[static_cast<std::size_t>(r) * cols + c] =
+          data[static_cast<std::size_t>(r) * stride + c] != 0;
+  cairo_surface_destroy(surface);
+  return mask;
 }
 
 // Viridis, sampled at five points (matplotlib's perceptually uniform map).
@@ -87,13 +119,17 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
   map.cols = std::max(1, static_cast<int>(std::ceil(extent.x() / options.resolution_m)));
   map.rows = std::max(1, static_cast<int>(std::ceil(extent.y() / options.resolution_m)));
   const std::size_t cells = static_cast<std::size_t>(map.cols) * map.rows;
-  map.rssi_dbm.assign(cells, 0.0f);
+  map.rssi_dbm.assign(cells, std::numeric_limits<float>::quiet_NaN());
   map.best_ap_id.assign(cells, -1);
+  std::vector<bool> compute(cells, true);
+  if (options.free_space_only && !plan.free_space.empty())
+    compute = free_space_mask(plan, map.origin_m, map.resolution_m, map.cols, map.rows);
 
   std::atomic<int> next_row{0};
   auto worker = [&] {
     for (int r = next_row++; r < map.rows; r = next_row++) {
       for (int c = 0; c < map.cols; ++c) {
+        if (!compute[static_cast<std::size_t>(r) * map.cols + c]) continue;
         const Eigen::Vector2d xy = map.cell_center_m(c, r);
         const Eigen::Vector3d rx(xy.x(), xy.y(), options.receiver_height_m);
         double best = -std::numeric_limits<double>::infinity();
@@ -199,6 +235,7 @@ void write_radio_map_png(const RadioMap& map, const FloorPlan& plan,
     double x = ap.position_m.x(), y = ap.position_m.y();
     cairo_matrix_transform_point(&plan_matrix, &x, &y);
     const bool selected = !map.ap_id || *map.ap_id == ap.id;
+    cairo_new_path(cr);  // show_text leaves a current point; do not join it to the next dot
     cairo_arc(cr, x, y, selected ? 5 : 3.5, 0, 2 * M_PI);
     cairo_set_source_rgb(cr, 1, 1, 1);
     cairo_fill_preserve(cr);
@@ -244,6 +281,7 @@ void write_radio_map_csv(const RadioMap& map, const std::filesystem::path& path)
     for (int c = 0; c < map.cols; ++c) {
       const Eigen::Vector2d p = map.cell_center_m(c, r);
       const std::size_t i = static_cast<std::size_t>(r) * map.cols + c;
+      if (!std::isfinite(map.rssi_dbm[i])) continue;
       fmt::format_to(std::back_inserter(text), "{:.3f},{:.3f},{:.2f},{}\n", p.x(), p.y(),
                      map.rssi_dbm[i], map.best_ap_id[i]);
     }

@@ -25,6 +25,10 @@ struct RadioMapOptions {
   std::optional<int> ap_id;                 // nullopt: the strongest AP at every cell
   RadioMapBand band = RadioMapBand::kBest;  // best: the AP's stronger radio
   int threads = 0;                          // 0: all hardware threads
+  /// Compute only cells whose centre is in free space (others are NaN): the map is drawn over
+  /// free space only, and a loop building's courtyard and the walls are a large part of its
+  /// bounding box.
+  bool free_space_only = true;
 };
 
 struct RadioMap {
@@ -32,7 +36,7 @@ struct RadioMap {
   double resolution_m = 0.25;
   int cols = 0, rows = 0;
   std::optional<int> ap_id;
-  std::vector<float> rssi_dbm;  // row-major, row 0 at the lowest y
+  std::vector<float> rssi_dbm;  // row-major, row 0 at the lowest y; NaN = not computed
   std::vector<int> best_ap_id;  // the AP giving each cell's value
   Eigen::Vector2d cell_center_m(int col, int row) const {
     return origin_m + resolution_m * Eigen::Vector2d(col + 0.5, row + 0.5);
@@ -51,7 +55,7 @@ void write_radio_map_png(const RadioMap& map, const FloorPlan& plan,
                          const std::vector<AccessPoint>& access_points,
                          const std::filesystem::path& path, double floor_dbm = -92.0);
 
-/// CSV "x_m,y_m,rssi_dbm,ap_id" (cell centres), written atomically.
+/// CSV "x_m,y_m,rssi_dbm,ap_id" (cell centres of the computed cells), written atomically.
 void write_radio_map_csv(const RadioMap& map, const std::filesystem::path& path);
 
 }  // namespace wifislam

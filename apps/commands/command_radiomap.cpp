@@ -1,0 +1,86 @@
+// `wifislam radiomap`: mean RSSI over the floor plan of a scene, for one access point or the
+// strongest one per cell, as a heat-map PNG (and optionally the grid as CSV).
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "core/error.hpp"
+#include "radio_model/ap_placement.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "radio_model/radio_map.hpp"
+#include "radio_model/wifi_scanner.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/world_generator.hpp"
+
+namespace {
+
+struct RadiomapArgs {
+  std::string scene_path;
+  std::optional<int> ap_id;
+  bool strongest = false;
+  double resolution_m = 0.25;
+  double height_m = 1.0;
+  std::string band = "best";
+  std::string output = "radiomap.png";
+  std::string csv;
+};
+
+void run_radiomap(const RadiomapArgs& args) {
+  using namespace wifislam;
+  const Scene scene = load_scene_file(args.scene_path);
+  const World world = generate_world(scene);
+  PropagationModel model(world, make_access_points(scene, world.plan),
+                         PropagationOptions::from_scene(scene.radio), scene.seed);
+  RadioMapOptions options;
+  options.resolution_m = args.resolution_m;
+  options.receiver_height_m = args.height_m;
+  options.ap_id = args.strongest ? std::nullopt : args.ap_id;
+  options.band = args.band == "2.4" ? RadioMapBand::k2_4GHz
+                 : args.band == "5" ? RadioMapBand::k5GHz
+                                    : RadioMapBand::kBest;
+  const RadioMap map = compute_radio_map(model, world.plan, options);
+  const double floor_dbm = WifiScannerOptions::from_scene(scene.sensors.wifi).sensitivity_dbm;
+  write_radio_map_png(map, world.plan, model.access_points(), args.output, floor_dbm);
+  fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
+             map.rows, map.resolution_m, model.access_points().size());
+  if (!args.csv.empty()) {
+    write_radio_map_csv(map, args.csv);
+    fmt::print("wrote {}\n", args.csv);
+  }
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(radiomap, 40) {
+  auto args = std::make_shared<RadiomapArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "radiomap",
+      "Draw a scene's mean RSSI (ITU-R P.1238 + walls + shadowing) as a heat map over its\n"
+      "floor plan, for one access point (--ap ID) or the strongest at every cell (--strongest).");
+  app->add_option("scene", args->scene_path, "Scene file (YAML)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  auto* ap = app->add_option("--ap", args->ap_id, "Access point id (0 .. count-1)");
+  auto* strongest =
+      app->add_flag("--strongest", args->strongest, "Strongest access point at every cell");
+  ap->excludes(strongest);
+  strongest->excludes(ap);
+  app->add_option("--res", args->resolution_m, "Grid resolution (m)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  app->add_option("--height", args->height_m, "Receiver height above the floor (m)")
+      ->capture_default_str();
+  app->add_option("--band", args->band, "Radio: 2.4, 5 or best (the stronger of the two)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"2.4", "5", "best"}));
+  app->add_option("-o,--output", args->output, "Heat-map PNG to write")->capture_default_str();
+  app->add_option("--csv", args->csv, "Also write the grid as CSV (x_m,y_m,rssi_dbm,ap_id)");
+  app->callback([args] {
+    if (!args->strongest && !args->ap_id)
+      throw wifislam::InvalidInputError("radiomap: give --ap ID or --strongest");
+    run_radiomap(*args);
+  });
+}

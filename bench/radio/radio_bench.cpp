@@ -1,0 +1,108 @@
+// Radio model benchmarks on j_hall (DESIGN.md, "Performance stance"):
+//  - wall-crossing segment queries (AP -> receiver, 30 m, every wall counted) per second, next
+//    to bare Embree rtcIntersect1 rays on the same walls and segments in the same run (ratio);
+//  - a full 0.25 m radio map of j_hall for all access points (strongest), 2 threads.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+#include "core/rng.hpp"
+#include "radio_model/ap_placement.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "radio_model/radio_map.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/world_generator.hpp"
+
+namespace {
+
+using namespace wifislam;
+
+struct JHall {
+  Scene scene;
+  World world;
+  std::unique_ptr<PropagationModel> model;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;  // 30 m each
+};
+
+const JHall& j_hall() {
+  static const JHall* hall = [] {
+    auto* h = new JHall;
+    // WIFISLAM_BENCH_SCENE picks another scene file (e.g. to compare halls).
+    const char* other = std::getenv("WIFISLAM_BENCH_SCENE");
+    h->scene = load_scene_file(other ? std::string(other)
+                                     : std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
+    h->world = generate_world(h->scene);
+    h->model = std::make_unique<PropagationModel>(
+        h->world, make_access_points(h->scene, h->world.plan),
+        PropagationOptions::from_scene(h->scene.radio), h->scene.seed);
+    Rng rng = Rng::stream(1, "bench/segments");
+    const auto& lo = h->world.plan.bounds_min_m;
+    const auto& hi = h->world.plan.bounds_max_m;
+    while (h->segments.size() < 4096) {
+      const Eigen::Vector2d a(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y()));
+      const double heading = rng.uniform(0.0, 2.0 * M_PI);
+      const Eigen::Vector2d b = a + 30.0 * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+      if (b.x() < lo.x() || b.y() < lo.y() || b.x() > hi.x() || b.y() > hi.y()) continue;
+      h->segments.emplace_back(Eigen::Vector3d(a.x(), a.y(), 2.5),
+                               Eigen::Vector3d(b.x(), b.y(), 1.0));
+    }
+    return h;
+  }();
+  return *hall;
+}
+
+// Both measured in one loop so machine noise hits both alike; the ratio is the figure to keep.
+void BM_WallCrossingVsBareEmbree(benchmark::State& state) {
+  const JHall& h = j_hall();
+  const EmbreeWallScene& walls = h.model->wall_scene();
+  std::vector<WallCrossing> out;
+  double crossing_s = 0, bare_s = 0;
+  std::size_t queries = 0, walls_total = 0;
+  for (auto _ : state) {
+    auto t0 = std::chrono::steady_clock::now();
+    for (const auto& [a, b] : h.segments) {
+      walls.walls_crossed(a, b, out);
+      walls_total += out.size();
+    }
+    auto t1 = std::chrono::steady_clock::now();
+    double sink = 0;
+    for (const auto& [a, b] : h.segments) sink += walls.first_hit_m(a, b - a, 30.0);
+    auto t2 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(sink);
+    crossing_s += std::chrono::duration<double>(t1 - t0).count();
+    bare_s += std::chrono::duration<double>(t2 - t1).count();
+    queries += h.segments.size();
+  }
+  state.counters["segments_per_s"] = queries / crossing_s;
+  state.counters["bare_rays_per_s"] = queries / bare_s;
+  state.counters["ratio_to_bare"] = (queries / crossing_s) / (queries / bare_s);
+  state.counters["walls_per_segment"] = static_cast<double>(walls_total) / queries;
+  state.counters["wall_triangles"] = static_cast<double>(walls.triangle_count());
+}
+BENCHMARK(BM_WallCrossingVsBareEmbree)->Unit(benchmark::kMillisecond);
+
+void BM_RadioMapJHallAllAps(benchmark::State& state) {
+  const JHall& h = j_hall();
+  RadioMapOptions options;
+  options.resolution_m = 0.25;
+  options.threads = static_cast<int>(state.range(0));
+  std::size_t cells = 0;
+  for (auto _ : state) {
+    const RadioMap map = compute_radio_map(*h.model, h.world.plan, options);
+    cells = map.rssi_dbm.size();
+    benchmark::DoNotOptimize(map.rssi_dbm.data());
+  }
+  state.counters["cells"] = static_cast<double>(cells);
+  state.counters["aps"] = static_cast<double>(h.model->access_points().size());
+  state.counters["links_per_s"] =
+      benchmark::Counter(static_cast<double>(cells * h.model->access_points().size()),
+                         benchmark::Counter::kIsIterationInvariantRate);
+}
+BENCHMARK(BM_RadioMapJHallAllAps)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
