@@ -100,11 +100,12 @@ class Canvas {
 
 void draw_walls(const Canvas& c, const FloorPlan& plan, double thickness_m) {
   c.fill_regions(plan.walls, {0.25, 0.25, 0.25});
-  // Each face paints the half of its wall behind it in the wall's material.
+  // Each face paints one wall thickness behind it in its wall's material: both faces of a wall
+  // carry the same material, and walls thicker than the nominal one get covered from both sides.
   for (const WallFace2& f : plan.wall_faces) {
     const Eigen::Vector2d d = (f.b_m - f.a_m).normalized();
     const Eigen::Vector2d right(d.y(), -d.x());
-    const double depth = 0.5 * thickness_m;
+    const double depth = f.door_index >= 0 ? 0.5 * thickness_m : thickness_m;
     const std::array<Eigen::Vector2d, 4> q = {c.px(f.a_m), c.px(f.b_m), c.px(f.b_m + depth * right),
                                               c.px(f.a_m + depth * right)};
     cairo_move_to(c.cr(), q[0].x(), q[0].y());
