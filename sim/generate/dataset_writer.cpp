@@ -1,0 +1,429 @@
+#include "sim/generate/dataset_writer.hpp"
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <fstream>
+#include <future>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include <fmt/format.h>
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <opencv2/core/version.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/dataset_calibration.hpp"
+#include "core/dataset_format.hpp"
+#include "core/dataset_manifest.hpp"
+#include "core/error.hpp"
+#include "core/text_lines.hpp"
+#include "core/tum_file_list.hpp"
+#include "core/tum_trajectory.hpp"
+#include "core/wifi_csv.hpp"
+#include "radio_model/radio_band.hpp"
+#include "sim/generate/generation_pipeline.hpp"
+#include "sim/render/depth_png.hpp"
+#include "sim/scene/scene_loader.hpp"
+
+namespace wifislam {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// A text file of the dataset, written sequentially through a large buffer.
+class TextOutput {
+ public:
+  TextOutput(const fs::path& path, std::string header = {})
+      : path_(path), out_(path, std::ios::binary) {
+    if (!out_) throw IoError(path.string() + ": cannot open for writing");
+    out_ << header;
+  }
+  void write(std::string_view text) {
+    out_.write(text.data(), static_cast<std::streamsize>(text.size()));
+  }
+  void close() {
+    out_.close();
+    if (!out_) throw IoError(path_.string() + ": write failed (disk full?)");
+  }
+
+ private:
+  fs::path path_;
+  std::ofstream out_;
+};
+
+/// What a worker returns for one frame.
+struct WrittenFrame {
+  std::string rgb_sha256, depth_sha256;
+  std::uint64_t bytes = 0;
+  double encode_s = 0.0, io_s = 0.0;
+};
+
+WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_path,
+                              const std::string& depth_path, const cv::Mat& rgb,
+                              const cv::Mat& depth_m) {
+  WrittenFrame out;
+  auto t0 = Clock::now();
+  const std::vector<unsigned char> rgb_png = encode_png(rgb);
+  const std::vector<unsigned char> depth_png = encode_png(depth_to_png_units(depth_m));
+  out.encode_s = seconds_since(t0);
+  t0 = Clock::now();
+  for (const auto& [relative, bytes, sha] :
+       {std::tuple{&rgb_path, &rgb_png, &out.rgb_sha256},
+        std::tuple{&depth_path, &depth_png, &out.depth_sha256}}) {
+    const std::string_view data(reinterpret_cast<const char*>(bytes->data()), bytes->size());
+    std::ofstream file(folder / *relative, std::ios::binary);
+    file.write(data.data(), static_cast<std::streamsize>(data.size()));
+    file.close();
+    if (!file) throw IoError((folder / *relative).string() + ": write failed (disk full?)");
+    *sha = sha256_hex(data);
+    out.bytes += bytes->size();
+  }
+  out.io_s = seconds_since(t0);
+  return out;
+}
+
+/// A fixed set of worker threads running jobs in submission order of start; results are
+/// collected through futures in submission order.
+class WorkerPool {
+ public:
+  explicit WorkerPool(int threads) {
+    for (int i = 0; i < threads; ++i) workers_.emplace_back([this] { run(); });
+  }
+  ~WorkerPool() {
+    {
+      std::lock_guard lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_all();
+    for (auto& w : workers_) w.join();
+  }
+  std::future<WrittenFrame> submit(std::function<WrittenFrame()> job) {
+    std::packaged_task<WrittenFrame()> task(std::move(job));
+    auto future = task.get_future();
+    {
+      std::lock_guard lock(mutex_);
+      jobs_.push_back(std::move(task));
+    }
+    wake_.notify_one();
+    return future;
+  }
+
+ private:
+  void run() {
+    while (true) {
+      std::packaged_task<WrittenFrame()> job;
+      {
+        std::unique_lock lock(mutex_);
+        wake_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
+        if (jobs_.empty()) return;
+        job = std::move(jobs_.front());
+        jobs_.pop_front();
+      }
+      job();
+    }
+  }
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::packaged_task<WrittenFrame()>> jobs_;
+  bool stopping_ = false;
+  std::vector<std::thread> workers_;
+};
+
+std::string bool_text(bool b) { return b ? "true" : "false"; }
+
+DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
+                                    const GenerateOptions& options) {
+  const Scene& s = pipeline.scene();
+  DatasetCalibration c;
+  c.intrinsics = s.sensors.camera.intrinsics;
+  c.camera_fps = s.sensors.camera.fps;
+  c.depth_units_per_metre = dataset::kDepthUnitsPerMetre;
+  c.camera_in_base = pipeline.mount().camera_in_base();
+  c.odometry_rate_hz = s.sensors.odometry.rate_hz;
+  const DepthSensorSpec& d = s.sensors.depth;
+  const auto num = format_double_exact;
+  c.sensor_model.push_back({"depth_sensor",
+                            {{"min_range_m", num(d.min_range_m)},
+                             {"max_range_m", num(d.max_range_m)},
+                             {"noise", bool_text(d.noise)},
+                             {"quantisation", bool_text(d.quantisation)},
+                             {"dropouts", bool_text(d.dropouts)},
+                             {"axial_noise_coeff_per_m", num(d.axial_noise_coeff_per_m)},
+                             {"baseline_m", num(d.baseline_m)},
+                             {"disparity_step_px", num(d.disparity_step_px)},
+                             {"grazing_dropout_deg", num(d.grazing_dropout_deg)},
+                             {"edge_jump_fraction", num(d.edge_jump_fraction)}}});
+  c.sensor_model.push_back(
+      {"render", {{"near_m", num(options.render.near_m)}, {"far_m", num(options.render.far_m)}}});
+  const WifiScannerSpec& w = s.sensors.wifi;
+  c.sensor_model.push_back({"wifi_scanner",
+                            {{"sensitivity_dbm", num(w.sensitivity_dbm)},
+                             {"dwell_per_channel_s", num(w.dwell_per_channel_s)},
+                             {"scan_interval_s", num(w.scan_interval_s)},
+                             {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
+                             {"antenna_height_m", num(s.sensors.camera.height_m)}}});
+  const OdometrySpec& o = s.sensors.odometry;
+  c.sensor_model.push_back({"wheel_odometry",
+                            {{"noise_per_m", num(o.noise_per_m)},
+                             {"noise_per_rad", num(o.noise_per_rad)},
+                             {"scale_error", num(o.scale_error)},
+                             {"yaw_bias_radpm", num(o.yaw_bias_radpm)}}});
+  return c;
+}
+
+std::string access_points_csv(const PropagationModel& radio) {
+  std::string out = "ap_id,x_m,y_m,z_m,tx_power_dbm,bssid,ssid,band,channel,frequency_khz\n";
+  for (const AccessPoint& ap : radio.access_points()) {
+    for (const Bssid& b : ap.bssids) {
+      out += fmt::format(
+          "{},{},{},{},{},{},{},{},{},{}\n", ap.id, format_double_exact(ap.position_m.x()),
+          format_double_exact(ap.position_m.y()), format_double_exact(ap.position_m.z()),
+          format_double_exact(ap.tx_power_dbm), b.mac.to_string(), b.ssid, to_string(b.band),
+          b.channel, b.frequency_khz);
+    }
+  }
+  return out;
+}
+
+std::string parameters_json(const Scene& scene, const GenerateOptions& options) {
+  nlohmann::ordered_json p;
+  p["scene"] = scene.name;
+  p["seed"] = scene.seed;
+  p["fps"] = scene.sensors.camera.fps;
+  p["max_frames"] = options.max_frames;
+  p["images"] = options.images;
+  p["render"] = {{"near_m", options.render.near_m},
+                 {"far_m", options.render.far_m},
+                 {"ambient", options.render.ambient},
+                 {"light_power", options.render.light_power},
+                 {"max_lights", options.render.max_lights},
+                 {"light_range_m", options.render.light_range_m},
+                 {"frustum_culling", options.render.frustum_culling}};
+  return p.dump();
+}
+
+}  // namespace
+
+GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& output,
+                                 const GenerateOptions& options) {
+  const auto t_start = Clock::now();
+  AtomicDirectory folder(output, options.overwrite);
+  const fs::path dir = folder.staging_path();
+  GenerationPipeline pipeline(resolve_scene(input_scene, options), options);
+  const Scene& scene = pipeline.scene();
+
+  GenerateSummary summary;
+  summary.output = folder.final_path();
+  summary.scene_name = scene.name;
+  summary.seed = scene.seed;
+  summary.fps = scene.sensors.camera.fps;
+  summary.images = options.images;
+  summary.access_points = static_cast<std::int64_t>(pipeline.radio().access_points().size());
+  for (const AccessPoint& ap : pipeline.radio().access_points())
+    summary.bssids += static_cast<std::int64_t>(ap.bssids.size());
+  int threads = options.threads > 0
+                    ? options.threads
+                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  summary.threads = options.images ? threads : 1;
+
+  auto t_io = Clock::now();
+  write_file_atomic(dir / dataset::kScene, resolved_scene_yaml(scene));
+  write_file_atomic(dir / dataset::kCalibration,
+                    calibration_to_yaml(make_calibration(pipeline, options)));
+  write_file_atomic(dir / dataset::kAccessPoints, access_points_csv(pipeline.radio()));
+  std::optional<TextOutput> rgb_list, depth_list, associations, image_sums;
+  if (options.images) {
+    fs::create_directories(dir / dataset::kRgbDir);
+    fs::create_directories(dir / dataset::kDepthDir);
+    const std::string name = scene.name + " (wifislam)";
+    rgb_list.emplace(dir / dataset::kRgbList,
+                     fmt::format("# color images\n# file: '{}'\n# timestamp filename\n", name));
+    depth_list.emplace(dir / dataset::kDepthList,
+                       fmt::format("# depth maps\n# file: '{}'\n# timestamp filename\n", name));
+    associations.emplace(dir / dataset::kAssociations);
+    image_sums.emplace(dir / dataset::kImageChecksums);
+  }
+  TextOutput groundtruth(
+      dir / dataset::kGroundTruth,
+      fmt::format("# ground truth trajectory\n# file: '{}'\n# timestamp tx ty tz "
+                  "qx qy qz qw (camera optical frame to world)\n",
+                  scene.name));
+  TextOutput odometry(dir / dataset::kOdometry,
+                      "# wheel odometry: robot base in the odometry frame (calibration.yaml: "
+                      "camera_in_base)\n# timestamp tx ty tz qx qy qz qw\n");
+  TextOutput wifi(dir / dataset::kWifi, wifi_csv_header() + "\n");
+  summary.io_s += seconds_since(t_io);
+
+  // Frames in flight on the workers, oldest first; bounded so memory stays flat.
+  struct Pending {
+    FramePair pair;
+    std::future<WrittenFrame> result;
+  };
+  std::deque<Pending> pending;
+  std::optional<WorkerPool> pool;
+  if (options.images && threads > 1) pool.emplace(threads);
+  const std::size_t max_pending = static_cast<std::size_t>(2 * threads);
+  const std::int64_t frames_total = pipeline.schedule().frame_count();
+  std::int64_t frames_done = 0;
+
+  auto finish_frame = [&](const FramePair& pair, const WrittenFrame& written) {
+    summary.png_encode_s += written.encode_s;
+    summary.io_s += written.io_s;
+    summary.bytes_written += written.bytes;
+    rgb_list->write(format_tum_file_line(pair.rgb_time, pair.rgb_path));
+    depth_list->write(format_tum_file_line(pair.depth_time, pair.depth_path));
+    associations->write(format_association_line(pair));
+    image_sums->write(format_checksum_line(written.rgb_sha256, pair.rgb_path));
+    image_sums->write(format_checksum_line(written.depth_sha256, pair.depth_path));
+  };
+  auto report_progress = [&] {
+    ++frames_done;
+    if (options.on_progress)
+      options.on_progress({frames_done, frames_total, seconds_since(t_start)});
+  };
+  auto collect_oldest = [&] {
+    Pending p = std::move(pending.front());
+    pending.pop_front();
+    finish_frame(p.pair, p.result.get());
+    report_progress();
+  };
+
+  std::map<int, std::set<MacAddress>> aps_by_pause;
+  std::size_t scan_index = 0;
+  const auto& scan_windows = pipeline.schedule().scans();
+  while (auto generated = pipeline.next()) {
+    if (const auto* reading = std::get_if<OdometryReading>(&generated->event)) {
+      odometry.write(format_tum_line(StampedPose::from_pose(reading->time, reading->base_in_odom)));
+      odometry.write("\n");
+      ++summary.odometry_readings;
+    } else if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
+      wifi.write(format_wifi_csv_rows(*scan));
+      ++summary.wifi_scans;
+      summary.wifi_readings += static_cast<std::int64_t>(scan->readings.size());
+      const int pause = scan_windows[scan_index++].pause_index;
+      if (pause >= 0) {
+        auto& heard = aps_by_pause[pause];
+        for (const WifiReading& r : scan->readings) heard.insert(r.bssid.without_last_nibble());
+      }
+    } else {
+      auto& frame = std::get<RgbdFrame>(generated->event);
+      groundtruth.write(
+          format_tum_line(StampedPose::from_pose(frame.time, generated->camera_to_world)));
+      groundtruth.write("\n");
+      ++summary.frames;
+      if (!options.images) {
+        report_progress();
+        continue;
+      }
+      const FramePair pair{frame.time, dataset::frame_image_path(dataset::kRgbDir, frame.time),
+                           frame.time, dataset::frame_image_path(dataset::kDepthDir, frame.time),
+                           0};
+      if (!pool) {
+        finish_frame(
+            pair, encode_and_write(dir, pair.rgb_path, pair.depth_path, frame.rgb, frame.depth_m));
+        report_progress();
+        continue;
+      }
+      while (pending.size() >= max_pending) collect_oldest();
+      pending.push_back({pair, pool->submit([dir, pair, rgb = std::move(frame.rgb),
+                                             depth = std::move(frame.depth_m)] {
+                           return encode_and_write(dir, pair.rgb_path, pair.depth_path, rgb, depth);
+                         })});
+    }
+  }
+  while (!pending.empty()) collect_oldest();
+  pool.reset();
+  for (const RobotPause& p : pipeline.motion().pauses())
+    summary.pauses += p.start <= pipeline.schedule().end_time();
+
+  t_io = Clock::now();
+  for (TextOutput* out : {&groundtruth, &odometry, &wifi}) out->close();
+  for (auto* out : {&rgb_list, &depth_list, &associations, &image_sums})
+    if (*out) (*out)->close();
+
+  DatasetManifest manifest;
+  manifest.images = options.images;
+  manifest.versions = {{"wifislam", WIFISLAM_VERSION},
+                       {"opencv", CV_VERSION},
+                       {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
+                                             EIGEN_MINOR_VERSION)}};
+  manifest.parameters_json = parameters_json(scene, options);
+  manifest.counts = {
+      {"frames", options.images ? summary.frames : 0},  {"groundtruth_poses", summary.frames},
+      {"odometry_readings", summary.odometry_readings}, {"wifi_scans", summary.wifi_scans},
+      {"wifi_readings", summary.wifi_readings},         {"pauses", summary.pauses},
+      {"access_points", summary.access_points},         {"bssids", summary.bssids}};
+  std::vector<std::string> files;
+  if (options.images) files = {dataset::kRgbList, dataset::kDepthList, dataset::kAssociations};
+  for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
+                        dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
+    files.push_back(f);
+  if (options.images) files.push_back(dataset::kImageChecksums);
+  for (const std::string& f : files) {
+    manifest.files.push_back(describe_dataset_file(dir, f));
+    summary.bytes_written += manifest.files.back().bytes;
+  }
+  const std::string manifest_text = manifest_to_json(manifest);
+  write_file_atomic(dir / dataset::kManifest, manifest_text);
+  summary.bytes_written += manifest_text.size();
+  folder.commit();
+  summary.io_s += seconds_since(t_io);
+
+  if (!aps_by_pause.empty()) {
+    std::int64_t sum = 0;
+    summary.aps_heard_per_pause_min = std::numeric_limits<std::int64_t>::max();
+    for (const auto& [pause, heard] : aps_by_pause) {
+      const auto n = static_cast<std::int64_t>(heard.size());
+      sum += n;
+      summary.aps_heard_per_pause_min = std::min(summary.aps_heard_per_pause_min, n);
+      summary.aps_heard_per_pause_max = std::max(summary.aps_heard_per_pause_max, n);
+    }
+    summary.aps_heard_per_pause_mean = static_cast<double>(sum) / aps_by_pause.size();
+  }
+  summary.duration_s = pipeline.schedule().end_time().seconds();
+  summary.route_length_m = pipeline.motion().state_at(pipeline.schedule().end_time()).arc_length_m;
+  summary.world_s = pipeline.timings().setup_s;
+  summary.render_s = pipeline.timings().render_s;
+  summary.sensor_s = pipeline.timings().sensor_s;
+  summary.radio_s = pipeline.timings().radio_s;
+  summary.total_s = seconds_since(t_start);
+  return summary;
+}
+
+std::string GenerateSummary::full_report() const {
+  std::string r;
+  r += fmt::format("dataset           {}\n", output.string());
+  r += fmt::format("scene             {} (seed {})\n", scene_name, seed);
+  r += fmt::format("frames            {}{} at {} fps, {:.1f} s simulated, {:.1f} m travelled\n",
+                   frames, images ? "" : " (poses only, no images)", fps, duration_s,
+                   route_length_m);
+  r += fmt::format("pauses            {}\n", pauses);
+  r += fmt::format("wifi scans        {} ({} readings)\n", wifi_scans, wifi_readings);
+  r += fmt::format(
+      "access points     {} ({} BSSIDs); heard per pause: mean {:.1f}, min {}, max {}\n",
+      access_points, bssids, aps_heard_per_pause_mean, aps_heard_per_pause_min,
+      aps_heard_per_pause_max);
+  r += fmt::format("odometry          {} readings\n", odometry_readings);
+  r += fmt::format("size              {:.1f} MB\n", bytes_written / 1e6);
+  r += fmt::format("time              {:.2f} s total, {:.1f} frames/s ({} thread{})\n", total_s,
+                   frames_per_second(), threads, threads == 1 ? "" : "s");
+  r += fmt::format("  set-up          {:.2f} s (world, renderer, radio)\n", world_s);
+  r += fmt::format("  render          {:.2f} s\n", render_s);
+  r += fmt::format("  sensor model    {:.2f} s\n", sensor_s);
+  r += fmt::format("  radio           {:.2f} s\n", radio_s);
+  r += fmt::format("  png encode      {:.2f} s (summed over threads)\n", png_encode_s);
+  r += fmt::format("  i/o             {:.2f} s (summed over threads)\n", io_s);
+  return r;
+}
+
+}  // namespace wifislam

@@ -1,0 +1,24 @@
+#pragma once
+// Writes a generated dataset folder (DESIGN.md, "Data formats"; core/dataset_format.hpp).
+//
+// Atomic: everything goes into `<output>.partial/`, renamed to `<output>` only when complete; an
+// error removes the partial folder, so nothing that looks finished is left behind.
+// Streaming: frames are written as they are rendered; memory stays flat with the length.
+// Parallel and deterministic: the main thread renders in time order while worker threads encode
+// and write PNGs; list files are written in frame order by the main thread, so every byte is the
+// same whatever the thread count.
+
+#include <filesystem>
+
+#include "sim/generate/generate_options.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace wifislam {
+
+/// Generates the dataset of `scene` (with the options' overrides) into `output`. Throws
+/// IoError when `output` exists and `options.overwrite` is false, or on write errors; the
+/// scene's and the renderer's errors pass through.
+GenerateSummary generate_dataset(const Scene& scene, const std::filesystem::path& output,
+                                 const GenerateOptions& options = {});
+
+}  // namespace wifislam

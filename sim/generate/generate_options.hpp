@@ -1,0 +1,80 @@
+#pragma once
+// Options and summary of dataset generation (Ceres style: every field has its default and says
+// what it trades off; the CLI only fills these in).
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "sim/render/rgbd_renderer.hpp"
+
+namespace wifislam {
+
+struct GenerateProgress {
+  std::int64_t frames_done = 0;
+  std::int64_t frames_total = 0;
+  double elapsed_s = 0.0;
+};
+
+struct GenerateOptions {
+  /// Replaces the scene's seed (world, access points, noise, pauses: everything random).
+  std::optional<std::uint64_t> seed;
+  /// Replaces sensors.camera.fps. 30 is the Kinect's rate; a lower rate gives proportionally
+  /// fewer frames (and smaller datasets) over the same route, with larger motion between frames.
+  std::optional<double> fps;
+  /// Stop after this many frames (< 0: the whole route). Odometry and scans stop there too.
+  std::int64_t max_frames = -1;
+  /// false: write poses, odometry and Wi-Fi only (no rendering; fast radio studies).
+  bool images = true;
+  /// Threads encoding and writing PNGs while the main thread renders (1 = encode inline;
+  /// 0 = one per core). The output is byte-identical whatever the count.
+  int threads = 0;
+  /// Replace an existing output folder.
+  bool overwrite = false;
+  /// Renderer settings (near/far planes, lighting).
+  RenderOptions render;
+  /// Called after each frame is written, from the calling thread (progress bars).
+  std::function<void(const GenerateProgress&)> on_progress;
+};
+
+/// What a generation did and where its time went.
+struct GenerateSummary {
+  std::filesystem::path output;
+  std::string scene_name;
+  std::uint64_t seed = 0;
+  double fps = 0.0;
+  bool images = true;
+  int threads = 1;
+  std::int64_t frames = 0;
+  std::int64_t odometry_readings = 0;
+  std::int64_t wifi_scans = 0;
+  std::int64_t wifi_readings = 0;
+  std::int64_t pauses = 0;
+  std::int64_t access_points = 0;
+  std::int64_t bssids = 0;
+  /// Distinct access points (BSSIDs aggregated by their last nibble) heard over each pause's
+  /// scans: the paper's signature size.
+  double aps_heard_per_pause_mean = 0.0;
+  std::int64_t aps_heard_per_pause_min = 0, aps_heard_per_pause_max = 0;
+  double duration_s = 0.0;      // simulated time covered
+  double route_length_m = 0.0;  // travelled (less than the route with max_frames)
+  std::uint64_t bytes_written = 0;
+
+  // Wall-clock seconds by stage. png_encode_s and io_s sum over threads (CPU time spent), so with
+  // several threads they can exceed total_s.
+  double world_s = 0.0;   // world generation, renderer and radio set-up
+  double render_s = 0.0;  // OSMesa render + readback
+  double sensor_s = 0.0;  // depth sensor model
+  double radio_s = 0.0;   // Wi-Fi scans
+  double png_encode_s = 0.0;
+  double io_s = 0.0;  // writing images, text files, hashing
+  double total_s = 0.0;
+
+  double frames_per_second() const { return total_s > 0 ? frames / total_s : 0.0; }
+  /// Human-readable, one item per line.
+  std::string full_report() const;
+};
+
+}  // namespace wifislam

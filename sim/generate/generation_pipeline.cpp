@@ -1,0 +1,114 @@
+#include "sim/generate/generation_pipeline.hpp"
+
+#include <limits>
+
+#include "radio_model/ap_placement.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/world_generator.hpp"
+
+namespace wifislam {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+}  // namespace
+
+Scene resolve_scene(const Scene& scene, const GenerateOptions& options) {
+  Scene out = scene;
+  if (options.seed) out.seed = *options.seed;
+  if (options.fps) out.sensors.camera.fps = *options.fps;
+  return out;
+}
+
+GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions& options)
+    : scene_(scene), mount_(scene.sensors.camera) {
+  const auto t0 = Clock::now();
+  validate_scene(scene_);
+  world_ = std::make_unique<World>(generate_world(scene_));
+  motion_ = std::make_unique<MotionProfile>(
+      world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
+
+  radio_ =
+      std::make_unique<PropagationModel>(*world_, make_access_points(scene_, world_->plan),
+                                         PropagationOptions::from_scene(scene_.radio), scene_.seed);
+  scanner_ = std::make_unique<WifiScanner>(
+      *radio_, WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
+
+  SensorScheduleOptions schedule;
+  schedule.fps = scene_.sensors.camera.fps;
+  schedule.odometry_rate_hz = scene_.sensors.odometry.rate_hz;
+  schedule.scan_interval_s = scene_.sensors.wifi.scan_interval_s;
+  schedule.scan_duration_ns = scanner_->scan_duration_ns();
+  schedule.scan_while_moving = scene_.route.pause.scan_while_moving;
+  schedule.max_frames = options.max_frames;
+  schedule_ = std::make_unique<SensorSchedule>(*motion_, schedule);
+  odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, scene_.seed);
+
+  if (options.images) {
+    renderer_ = std::make_unique<RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
+    renderer_->set_world(*world_, scene_);
+    depth_model_ = std::make_unique<DepthSensorModel>(
+        scene_.sensors.depth, scene_.sensors.camera.intrinsics, scene_.seed);
+  }
+  timings_.setup_s = seconds_since(t0);
+}
+
+GenerationPipeline::~GenerationPipeline() = default;
+
+std::optional<GeneratedEvent> GenerationPipeline::next() {
+  constexpr std::int64_t kNever = std::numeric_limits<std::int64_t>::max();
+  const auto& scans = schedule_->scans();
+  const std::int64_t t_odo = next_odometry_ < schedule_->odometry_count()
+                                 ? schedule_->odometry_time(next_odometry_).ns
+                                 : kNever;
+  const std::int64_t t_scan = next_scan_ < scans.size() ? scans[next_scan_].end.ns : kNever;
+  const std::int64_t t_frame =
+      next_frame_ < schedule_->frame_count() ? schedule_->frame_time(next_frame_).ns : kNever;
+  if (t_odo == kNever && t_scan == kNever && t_frame == kNever) return std::nullopt;
+  if (t_odo <= t_scan && t_odo <= t_frame) {
+    const Timestamp t = Timestamp::from_ns(t_odo);
+    ++next_odometry_;
+    return GeneratedEvent{odometry_->measure(t, motion_->state_at(t))};
+  }
+  if (t_scan <= t_frame) return GeneratedEvent{make_scan(scans[next_scan_++])};
+  return make_frame(next_frame_++);
+}
+
+GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
+  RgbdFrame frame;
+  frame.time = schedule_->frame_time(k);
+  frame.index = k;
+  GeneratedEvent out;
+  out.camera_to_world = mount_.camera_to_world(motion_->state_at(frame.time));
+  if (renderer_) {
+    auto t0 = Clock::now();
+    renderer_->render(out.camera_to_world, view_);
+    timings_.render_s += seconds_since(t0);
+    t0 = Clock::now();
+    frame.rgb = view_.color_bgr.clone();
+    depth_model_->measure(view_.depth_m, view_.incidence_cos, k, frame.depth_m);
+    timings_.sensor_s += seconds_since(t0);
+  }
+  out.event = std::move(frame);
+  return out;
+}
+
+WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
+  const auto t0 = Clock::now();
+  const double antenna_height_m = scene_.sensors.camera.height_m;
+  auto position_at = [&](Timestamp t) {
+    const RobotState s = motion_->state_at(t);
+    return Eigen::Vector3d(s.position_m.x(), s.position_m.y(), antenna_height_m);
+  };
+  WifiScan scan = window.pause_index >= 0 && scene_.route.pause.scan_while_moving == false
+                      ? scanner_->scan(window.start, position_at(window.start))
+                      : scanner_->scan(window.start, position_at);
+  timings_.radio_s += seconds_since(t0);
+  return scan;
+}
+
+}  // namespace wifislam

@@ -1,0 +1,90 @@
+#pragma once
+// The simulation run behind both consumers (the dataset writer and the in-memory stream): it
+// builds the world, the robot's motion and sensor schedule, the renderer with its depth sensor
+// model, the radio model with its scanner, and the wheel odometry, then produces the sensor
+// events in time order (ties: odometry, then Wi-Fi, then the frame, as SensorStream promises):
+//
+//   frame k:    pose at its time (exact, from the motion profile) -> render -> depth sensor model
+//   Wi-Fi scan: during pauses (or throughout with scan_while_moving), reported at the sweep's end,
+//               the receiver at the robot's position (antenna at the camera's height)
+//   odometry:   wheel odometry at its rate
+//
+// Everything random is seeded from the scene seed through named sub-streams, so the events do
+// not depend on threads or on which consumer reads them.
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "core/sensor_stream.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "radio_model/wifi_scanner.hpp"
+#include "sim/generate/generate_options.hpp"
+#include "sim/render/depth_sensor_model.hpp"
+#include "sim/render/rgbd_renderer.hpp"
+#include "sim/robot/camera_mount.hpp"
+#include "sim/robot/motion_profile.hpp"
+#include "sim/robot/sensor_schedule.hpp"
+#include "sim/robot/wheel_odometry.hpp"
+#include "sim/scene/scene.hpp"
+#include "sim/world/world_types.hpp"
+
+namespace wifislam {
+
+/// An event and, for frames, the ground truth that goes with it (never given to SLAM).
+struct GeneratedEvent {
+  SensorEvent event;
+  Pose camera_to_world = Pose::Identity();  // frames only
+};
+
+/// Seconds spent per stage so far.
+struct PipelineTimings {
+  double setup_s = 0.0, render_s = 0.0, sensor_s = 0.0, radio_s = 0.0;
+};
+
+class GenerationPipeline {
+ public:
+  /// `scene` is used as given (apply seed/fps overrides first: resolve_scene()). With
+  /// `options.images` false there is no renderer and frames come without images.
+  GenerationPipeline(const Scene& scene, const GenerateOptions& options);
+  ~GenerationPipeline();
+
+  std::optional<GeneratedEvent> next();
+
+  const Scene& scene() const { return scene_; }
+  const World& world() const { return *world_; }
+  const MotionProfile& motion() const { return *motion_; }
+  const SensorSchedule& schedule() const { return *schedule_; }
+  const CameraMount& mount() const { return mount_; }
+  const PropagationModel& radio() const { return *radio_; }
+  const WifiScanner& scanner() const { return *scanner_; }
+  bool images() const { return renderer_ != nullptr; }
+  /// The renderer (null without images); benchmarks time it alone as a baseline.
+  RgbdRenderer* renderer() { return renderer_.get(); }
+  const PipelineTimings& timings() const { return timings_; }
+
+ private:
+  GeneratedEvent make_frame(std::int64_t k);
+  WifiScan make_scan(const ScanWindow& window);
+
+  Scene scene_;
+  std::unique_ptr<World> world_;
+  std::unique_ptr<MotionProfile> motion_;
+  std::unique_ptr<SensorSchedule> schedule_;
+  CameraMount mount_;
+  std::unique_ptr<RgbdRenderer> renderer_;
+  std::unique_ptr<DepthSensorModel> depth_model_;
+  std::unique_ptr<PropagationModel> radio_;
+  std::unique_ptr<WifiScanner> scanner_;
+  std::unique_ptr<WheelOdometry> odometry_;
+  RenderedView view_;
+  std::int64_t next_frame_ = 0, next_odometry_ = 0;
+  std::size_t next_scan_ = 0;
+  PipelineTimings timings_;
+};
+
+/// The scene with the options' seed and fps overrides applied (what scene.yaml records).
+Scene resolve_scene(const Scene& scene, const GenerateOptions& options);
+
+}  // namespace wifislam

@@ -1,0 +1,41 @@
+#include "sim/generate/generator_stream.hpp"
+
+#include <fmt/format.h>
+
+#include "sim/generate/generation_pipeline.hpp"
+#include "sim/render/depth_png.hpp"
+
+namespace wifislam {
+
+GeneratorStream::GeneratorStream(const Scene& scene, const GenerateOptions& options)
+    : pipeline_(std::make_unique<GenerationPipeline>(resolve_scene(scene, options), options)) {}
+
+GeneratorStream::~GeneratorStream() = default;
+
+std::optional<SensorEvent> GeneratorStream::next() {
+  auto generated = pipeline_->next();
+  if (!generated) return std::nullopt;
+  if (auto* frame = std::get_if<RgbdFrame>(&generated->event)) {
+    last_ground_truth_ = generated->camera_to_world;
+    // The depth a dataset reader would get back from the 16-bit PNG.
+    if (!frame->depth_m.empty())
+      frame->depth_m = depth_from_png_units(depth_to_png_units(frame->depth_m));
+  }
+  return std::move(generated->event);
+}
+
+const CameraIntrinsics& GeneratorStream::intrinsics() const {
+  return pipeline_->scene().sensors.camera.intrinsics;
+}
+
+Pose GeneratorStream::camera_in_base() const { return pipeline_->mount().camera_in_base(); }
+
+std::string GeneratorStream::description() const {
+  const Scene& s = pipeline_->scene();
+  return fmt::format("generated scene {} (seed {}, {} frames at {} fps{}, {} Wi-Fi scans)", s.name,
+                     s.seed, pipeline_->schedule().frame_count(), s.sensors.camera.fps,
+                     pipeline_->images() ? "" : ", no images",
+                     pipeline_->schedule().scans().size());
+}
+
+}  // namespace wifislam

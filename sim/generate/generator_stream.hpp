@@ -1,0 +1,41 @@
+#pragma once
+// The in-memory SensorStream: frames, scans and odometry straight from the simulation, no disk
+// (the fast path for sweeps). It gives SLAM exactly what reading the dataset written with the
+// same scene and options would: depth is rounded to the TUM PNG resolution (1/5000 m) as the
+// writer stores it, and colour is lossless either way. Frames carry no file paths.
+
+#include <memory>
+
+#include "core/sensor_stream.hpp"
+#include "sim/generate/generate_options.hpp"
+#include "sim/scene/scene.hpp"
+
+namespace wifislam {
+
+class GenerationPipeline;
+
+class GeneratorStream final : public SensorStream {
+ public:
+  /// Builds the world, renderer and radio model (seconds for big scenes). The seed and fps
+  /// overrides, max_frames and images of `options` apply; threads/overwrite do not.
+  GeneratorStream(const Scene& scene, const GenerateOptions& options = {});
+  ~GeneratorStream() override;
+
+  std::optional<SensorEvent> next() override;
+  const CameraIntrinsics& intrinsics() const override;
+  Pose camera_in_base() const override;
+  bool has_wifi() const override { return true; }
+  bool has_odometry() const override { return true; }
+  std::string description() const override;
+
+  /// The simulation behind the stream (ground truth, world, radio) for tests and evaluation.
+  const GenerationPipeline& pipeline() const { return *pipeline_; }
+  /// Ground truth of the last frame returned by next().
+  const Pose& last_frame_ground_truth() const { return last_ground_truth_; }
+
+ private:
+  std::unique_ptr<GenerationPipeline> pipeline_;
+  Pose last_ground_truth_ = Pose::Identity();
+};
+
+}  // namespace wifislam
