@@ -55,6 +55,21 @@ RadioLink PropagationModel::link(std::size_t ap_index, const Eigen::Vector3d& re
   return l;
 }
 
+RadioLink PropagationModel::link_without_walls(std::size_t ap_index,
+                                               const Eigen::Vector3d& receiver_m) const {
+  RadioLink l;
+  l.distance_m = (receiver_m - aps_[ap_index].position_m).norm();
+  l.shadowing_db = shadowing_[ap_index].at_db(receiver_m.head<2>());
+  return l;
+}
+
+bool PropagationModel::walls_only_attenuate() const {
+  // Loss laws are linear in frequency: checking the band edges covers the bands.
+  for (const WallLossLaw& law : options_.wall_losses.laws)
+    if (law.at(2400.0) < 0.0 || law.at(5900.0) < 0.0) return false;
+  return true;
+}
+
 double PropagationModel::path_loss_db(const RadioLink& link, double frequency_mhz) const {
   double loss = itu_p1238_path_loss_db(frequency_mhz, link.distance_m,
                                        options_.distance_coefficient_or_default(), floor_loss_db_);

@@ -73,6 +73,11 @@ class PropagationModel {
   const EmbreeWallScene& wall_scene() const { return *walls_; }
 
   RadioLink link(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const;
+  /// The link with no wall counted (no ray cast). When walls_only_attenuate(), RSSI computed
+  /// from it bounds the true RSSI from above: radio maps use it to skip hopeless APs.
+  RadioLink link_without_walls(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const;
+  /// True when no wall loss is negative anywhere in the Wi-Fi bands (2.4-5.9 GHz).
+  bool walls_only_attenuate() const;
   /// Path loss (ITU + walls, no shadowing) at `frequency_mhz` for a link.
   double path_loss_db(const RadioLink& link, double frequency_mhz) const;
   /// Mean RSSI (shadowing included, no fading) of BSSID `bssid` of AP `ap_index`.

@@ -125,24 +125,43 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
   if (options.free_space_only && !plan.free_space.empty())
     compute = free_space_mask(plan, map.origin_m, map.resolution_m, map.cols, map.rows);
 
+  const auto& aps = model.access_points();
+  const bool prune = options.prune && model.walls_only_attenuate();
   std::atomic<int> next_row{0};
   auto worker = [&] {
+    std::vector<std::pair<double, std::size_t>> bounds;
     for (int r = next_row++; r < map.rows; r = next_row++) {
       for (int c = 0; c < map.cols; ++c) {
         if (!compute[static_cast<std::size_t>(r) * map.cols + c]) continue;
         const Eigen::Vector2d xy = map.cell_center_m(c, r);
         const Eigen::Vector3d rx(xy.x(), xy.y(), options.receiver_height_m);
         double best = -std::numeric_limits<double>::infinity();
-        int best_id = -1;
-        const std::size_t first = only ? *only : 0;
-        const std::size_t last = only ? *only + 1 : model.access_points().size();
-        for (std::size_t a = first; a < last; ++a) {
+        std::size_t best_index = aps.size();
+        // Ties go to the lowest AP index, with and without pruning.
+        auto consider = [&](std::size_t a) {
           const double v = ap_rssi(model, a, model.link(a, rx), options.band);
-          if (v > best) {
+          if (v > best || (v == best && a < best_index)) {
             best = v;
-            best_id = model.access_points()[a].id;
+            best_index = a;
+          }
+        };
+        if (only) {
+          consider(*only);
+        } else if (!prune) {
+          for (std::size_t a = 0; a < aps.size(); ++a) consider(a);
+        } else {
+          bounds.clear();
+          for (std::size_t a = 0; a < aps.size(); ++a)
+            bounds.emplace_back(ap_rssi(model, a, model.link_without_walls(a, rx), options.band),
+                                a);
+          std::sort(bounds.begin(), bounds.end(),
+                    [](const auto& x, const auto& y) { return x.first > y.first; });
+          for (const auto& [bound, a] : bounds) {
+            if (bound < best) break;
+            consider(a);
           }
         }
+        const int best_id = best_index < aps.size() ? aps[best_index].id : -1;
         const std::size_t i = static_cast<std::size_t>(r) * map.cols + c;
         map.rssi_dbm[i] = static_cast<float>(best);
         map.best_ap_id[i] = best_id;

@@ -29,6 +29,9 @@ struct RadioMapOptions {
   /// free space only, and a loop building's courtyard and the walls are a large part of its
   /// bounding box.
   bool free_space_only = true;
+  /// Strongest-AP maps: skip the wall ray for an AP whose wall-free RSSI (an upper bound) cannot
+  /// beat the best found so far. Exact: the map is identical with and without.
+  bool prune = true;
 };
 
 struct RadioMap {

@@ -79,6 +79,26 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   EXPECT_THROW(compute_radio_map(*f.model, f.plan, o), InvalidInputError);
 }
 
+TEST(RadioMap, PruningHopelessApsLeavesTheStrongestMapUnchanged) {
+  Fixture f;
+  MacAllocator macs(4);
+  std::vector<AccessPoint> aps;
+  for (int i = 0; i < 12; ++i)
+    aps.push_back(make_access_point(i, {1.0 + 1.7 * i, i % 2 ? 1.0 : 4.5, 2.5}, 20, 3, 4, macs));
+  PropagationModel model(f.mesh, f.plan.bounds_min_m, f.plan.bounds_max_m, std::move(aps),
+                         PropagationOptions{}, 4);
+  RadioMapOptions o;
+  o.resolution_m = 0.25;
+  const RadioMap pruned = compute_radio_map(model, f.plan, o);
+  o.prune = false;
+  const RadioMap full = compute_radio_map(model, f.plan, o);
+  ASSERT_EQ(pruned.rssi_dbm.size(), full.rssi_dbm.size());
+  EXPECT_EQ(std::memcmp(pruned.rssi_dbm.data(), full.rssi_dbm.data(),
+                        full.rssi_dbm.size() * sizeof(float)),
+            0);
+  EXPECT_EQ(pruned.best_ap_id, full.best_ap_id);
+}
+
 TEST(RadioMap, WritesAReadablePngAndACsvWithOneRowPerCell) {
   Fixture f;
   RadioMapOptions o;

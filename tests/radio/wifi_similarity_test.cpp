@@ -2,11 +2,14 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 
 #include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
+#include "radio_model/radio_map.hpp"
 #include "radio_model/wifi_scanner.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
@@ -37,6 +40,26 @@ TEST(WifiSimilarity, SimilarityFallsWithDistanceOnCHallAsInThePapersFigure2) {
   RecordProperty("spearman_c_hall", std::to_string(rho));
   EXPECT_GT(pauses, 40u);
   EXPECT_LE(rho, -0.6);
+}
+
+TEST(RadioMapOnCHall, PrunedStrongestMapEqualsTheFullOne) {
+  const Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  const World world = generate_world(scene);
+  PropagationModel model(world, make_access_points(scene, world.plan),
+                         PropagationOptions::from_scene(scene.radio), scene.seed);
+  RadioMapOptions o;
+  o.resolution_m = 0.5;
+  const RadioMap pruned = compute_radio_map(model, world.plan, o);
+  o.prune = false;
+  const RadioMap full = compute_radio_map(model, world.plan, o);
+  ASSERT_EQ(pruned.rssi_dbm.size(), full.rssi_dbm.size());
+  EXPECT_EQ(std::memcmp(pruned.rssi_dbm.data(), full.rssi_dbm.data(),
+                        full.rssi_dbm.size() * sizeof(float)),
+            0);
+  EXPECT_EQ(pruned.best_ap_id, full.best_ap_id);
+  std::size_t computed = 0;
+  for (float v : full.rssi_dbm) computed += std::isfinite(v);
+  EXPECT_GT(computed, full.rssi_dbm.size() / 3);
 }
 
 TEST(WifiSimilarity, SimilarityFallsWithDistanceOnEveryShippedScene) {
