@@ -175,13 +175,27 @@ void draw_wall_markings(cv::Mat& img, double width_m, double height_m, double px
       }
       default: {  // scuff mark
         const double v = height_m - rng.uniform(0.15, 0.9);
-        cv::Mat scuff = img.clone();
-        cv::ellipse(scuff, point_m(u, v, px_per_m),
-                    cv::Size(static_cast<int>(rng.uniform(0.05, 0.2) * px_per_m),
-                             static_cast<int>(rng.uniform(0.01, 0.04) * px_per_m)),
-                    rng.uniform(-20, 20), 0, 360, scaled(paint, 0.75), cv::FILLED);
-        cv::GaussianBlur(scuff, scuff, cv::Size(5, 5), 0);
-        cv::addWeighted(img, 0.4, scuff, 0.6, 0, img);
+        // A darker smudge blended into the paint around it only.
+        const cv::Point centre = point_m(u, v, px_per_m);
+        const cv::Size axes(static_cast<int>(rng.uniform(0.05, 0.2) * px_per_m),
+                            static_cast<int>(rng.uniform(0.01, 0.04) * px_per_m));
+        const double angle_deg = rng.uniform(-20, 20);
+        const int reach = axes.width + 4;
+        const cv::Rect roi = cv::Rect(centre.x - reach, centre.y - reach, 2 * reach, 2 * reach) &
+                             cv::Rect(0, 0, img.cols, img.rows);
+        cv::Mat mask(roi.size(), CV_32F, cv::Scalar(0));
+        cv::ellipse(mask, centre - roi.tl(), axes, angle_deg, 0, 360, cv::Scalar(0.6), cv::FILLED);
+        cv::GaussianBlur(mask, mask, cv::Size(5, 5), 0);
+        const cv::Scalar dark = scaled(paint, 0.75);
+        for (int y = 0; y < roi.height; ++y) {
+          auto* px = img.ptr<cv::Vec3b>(roi.y + y) + roi.x;
+          const auto* m = mask.ptr<float>(y);
+          for (int x = 0; x < roi.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+              px[x][c] = cv::saturate_cast<uchar>(px[x][c] * (1.0f - m[x]) + dark[c] * m[x]);
+            }
+          }
+        }
         break;
       }
     }

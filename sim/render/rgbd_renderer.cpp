@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include <fmt/core.h>
+#include <opencv2/core/utility.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
@@ -179,11 +180,18 @@ void RgbdRenderer::set_world(const Mesh& mesh, const std::vector<CeilingLight>& 
                              std::uint64_t seed, const AppearanceThemes& themes) {
   context_->make_current();
   const ProceduralTextures generator(seed, themes);
+  std::vector<TextureKey> keys;
+  for (const Triangle& t : mesh.triangles) keys.push_back(texture_key_of(t));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  // Each texture draws from its own random stream, so generating them in parallel gives the
+  // same images in any order.
+  std::vector<TextureImage> made(keys.size());
+  cv::parallel_for_(cv::Range(0, static_cast<int>(keys.size())), [&](const cv::Range& range) {
+    for (int i = range.start; i < range.end; ++i) made[i] = generator.make(keys[i]);
+  });
   std::map<TextureKey, TextureImage> images;
-  for (const Triangle& t : mesh.triangles) {
-    const TextureKey key = texture_key_of(t);
-    if (!images.contains(key)) images.emplace(key, generator.make(key));
-  }
+  for (std::size_t i = 0; i < keys.size(); ++i) images.emplace(keys[i], std::move(made[i]));
   const BatchedMesh batched = batch_mesh(
       mesh, [&](const TextureKey& key) -> const TextureImage& { return images.at(key); });
   mesh_.reset();
