@@ -27,27 +27,52 @@
 #include "sim/render/gl_texture.hpp"
 #include "sim/render/osmesa_context.hpp"
 #include "sim/render/rgbd_renderer.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/world_generator.hpp"
 #include "tests/render/test_meshes.hpp"
 
 namespace wifislam {
 namespace {
 
-constexpr std::uint64_t kSeed = 3;
-
-std::vector<Pose> corridor_poses() {
+// The workload: a shipped scene's generated world (Arg 0) or the hand-built corridor of the
+// tests (Arg 1), seen from poses along the route.
+struct Workload {
+  Mesh mesh;
+  std::vector<CeilingLight> lights;
+  std::uint64_t seed = 3;
   std::vector<Pose> poses;
-  for (int i = 0; i < 64; ++i) {
-    const double x = 1.0 + 18.0 * i / 63.0;
-    poses.push_back(camera_pose_from_planar(
-        x, 0.3 * std::sin(i * 0.4), (i % 16 < 8 ? 0.0 : std::numbers::pi) + 0.3 * std::sin(i * 0.7),
-        0.5));
-  }
-  return poses;
-}
+};
 
-const test::HandCorridor& corridor() {
-  static const test::HandCorridor c = test::hand_corridor();
-  return c;
+const Workload& workload(int which) {
+  static const Workload scene_workload = [] {
+    Workload w;
+    const Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
+    const World world = generate_world(scene);
+    w.mesh = world.mesh;
+    w.lights = world.plan.lights;
+    w.seed = scene.seed;
+    for (std::size_t i = 0; i < world.route.points_m.size();
+         i += world.route.points_m.size() / 64) {
+      const Eigen::Vector2d p = world.route.points_m[i];
+      w.poses.push_back(camera_pose_from_planar(p.x(), p.y(), world.route.heading_rad[i],
+                                                scene.sensors.camera.height_m));
+    }
+    return w;
+  }();
+  static const Workload corridor_workload = [] {
+    Workload w;
+    const test::HandCorridor c = test::hand_corridor();
+    w.mesh = c.mesh;
+    w.lights = c.lights;
+    for (int i = 0; i < 64; ++i) {
+      const double x = 1.0 + 18.0 * i / 63.0;
+      w.poses.push_back(camera_pose_from_planar(
+          x, 0.3 * std::sin(i * 0.4),
+          (i % 16 < 8 ? 0.0 : std::numbers::pi) + 0.3 * std::sin(i * 0.7), 0.5));
+    }
+    return w;
+  }();
+  return which == 0 ? scene_workload : corridor_workload;
 }
 
 void record_frame_times(benchmark::State& state, std::vector<double>& frame_ms) {
@@ -74,18 +99,18 @@ void main() { color = texture(albedo, uv); }
 
 void BM_BareOsmesaRenderReadback(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const Workload& work = workload(static_cast<int>(state.range(0)));
   OsmesaContext context;
-  const ProceduralTextures generator(kSeed, AppearanceThemes{});
+  const ProceduralTextures generator(work.seed, AppearanceThemes{});
   std::map<TextureKey, TextureImage> images;
-  for (const Triangle& t : corridor().mesh.triangles) {
+  for (const Triangle& t : work.mesh.triangles) {
     if (!images.contains(texture_key_of(t)))
       images.emplace(texture_key_of(t), generator.make(texture_key_of(t)));
   }
   std::map<TextureKey, std::unique_ptr<GlTexture>> textures;
   for (const auto& [key, image] : images) textures.emplace(key, std::make_unique<GlTexture>(image));
-  const GlMesh mesh(batch_mesh(corridor().mesh, [&](const TextureKey& key) -> const TextureImage& {
-    return images.at(key);
-  }));
+  const GlMesh mesh(batch_mesh(
+      work.mesh, [&](const TextureKey& key) -> const TextureImage& { return images.at(key); }));
   const GlProgram program(kBareVertex, kBareFragment);
   GLuint framebuffer = 0, targets[2] = {0, 0};
   glGenFramebuffers(1, &framebuffer);
@@ -102,7 +127,7 @@ void BM_BareOsmesaRenderReadback(benchmark::State& state) {
   program.use();
   glUniform1i(program.uniform("albedo"), 0);
   const GLint world_to_clip_location = program.uniform("world_to_clip");
-  const std::vector<Pose> poses = corridor_poses();
+  const std::vector<Pose>& poses = work.poses;
   std::vector<unsigned char> color(4 * static_cast<std::size_t>(k.width_px * k.height_px));
   std::vector<float> depth(static_cast<std::size_t>(k.width_px * k.height_px));
   const Eigen::Matrix4f projection = RgbdRenderer::projection_matrix(k, 0.05, 40.0);
@@ -135,14 +160,15 @@ void BM_BareOsmesaRenderReadback(benchmark::State& state) {
 
 void BM_HarnessFrame(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const Workload& work = workload(static_cast<int>(state.range(0)));
   RenderOptions options;
   if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
     options.max_lights = std::atoi(lights);
   RgbdRenderer renderer(k, options);
-  renderer.set_world(corridor().mesh, corridor().lights, kSeed, AppearanceThemes{});
-  const DepthSensorModel sensor(DepthSensorSpec{}, k, kSeed);
-  const bool with_sensor = state.range(0) != 0;
-  const std::vector<Pose> poses = corridor_poses();
+  renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
+  const DepthSensorModel sensor(DepthSensorSpec{}, k, work.seed);
+  const bool with_sensor = state.range(1) != 0;
+  const std::vector<Pose>& poses = work.poses;
   RenderedView view;
   cv::Mat measured;
   std::vector<double> frame_ms;
@@ -162,10 +188,11 @@ void BM_HarnessFrame(benchmark::State& state) {
 
 void BM_SensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const Workload& work = workload(0);
   RgbdRenderer renderer(k);
-  renderer.set_world(corridor().mesh, corridor().lights, kSeed, AppearanceThemes{});
-  const DepthSensorModel sensor(DepthSensorSpec{}, k, kSeed);
-  const RenderedView view = renderer.render(corridor_poses()[5]);
+  renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
+  const DepthSensorModel sensor(DepthSensorSpec{}, k, work.seed);
+  const RenderedView view = renderer.render(work.poses[5]);
   cv::Mat measured;
   std::int64_t frame = 0;
   for (auto _ : state) {
@@ -175,13 +202,18 @@ void BM_SensorModelOnly(benchmark::State& state) {
 }
 
 BENCHMARK(BM_BareOsmesaRenderReadback)
+    ->ArgName("corridor")
+    ->Arg(0)
+    ->Arg(1)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(3.0);
 BENCHMARK(BM_HarnessFrame)
-    ->Arg(0)
-    ->Arg(1)
-    ->ArgName("sensor")
+    ->ArgNames({"corridor", "sensor"})
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({1, 0})
+    ->Args({1, 1})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(3.0);
@@ -208,17 +240,25 @@ int main(int argc, char** argv) {
   wifislam::RatioReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   const char* threads = std::getenv("LP_NUM_THREADS");
-  const auto& m = reporter.median_ms;
-  const auto bare = m.find("BM_BareOsmesaRenderReadback/manual_time");
-  const auto full = m.find("BM_HarnessFrame/sensor:1/manual_time");
-  const auto render_only = m.find("BM_HarnessFrame/sensor:0/manual_time");
-  if (bare != m.end() && full != m.end() && render_only != m.end()) {
+  auto median = [&](const std::string& prefix) {
+    for (const auto& [name, ms] : reporter.median_ms) {
+      if (name.rfind(prefix, 0) == 0) return ms;
+    }
+    return 0.0;
+  };
+  for (const char* workload : {"0", "1"}) {
+    const double bare = median(std::string("BM_BareOsmesaRenderReadback/corridor:") + workload);
+    const double render_only =
+        median(std::string("BM_HarnessFrame/corridor:") + workload + "/sensor:0");
+    const double full = median(std::string("BM_HarnessFrame/corridor:") + workload + "/sensor:1");
+    if (bare <= 0.0 || full <= 0.0) continue;
     std::printf(
-        "LP_NUM_THREADS=%s  median frame: bare %.2f ms (%.0f fps), harness render only %.2f ms, "
-        "harness full %.2f ms (%.0f fps); full / bare = %.2f (render only / bare = %.2f)\n",
-        threads ? threads : "(unset: all cores)", bare->second, 1000.0 / bare->second,
-        render_only->second, full->second, 1000.0 / full->second, full->second / bare->second,
-        render_only->second / bare->second);
+        "%s, LP_NUM_THREADS=%s: median frame bare %.2f ms (%.0f fps), harness render only "
+        "%.2f ms, harness full %.2f ms (%.0f fps); full / bare = %.2f, render only / bare "
+        "= %.2f\n",
+        workload[0] == '0' ? "aliasing_ladder scene" : "hand corridor",
+        threads ? threads : "(unset: all cores)", bare, 1000.0 / bare, render_only, full,
+        1000.0 / full, full / bare, render_only / bare);
   }
   benchmark::Shutdown();
   return 0;

@@ -6,6 +6,7 @@
 
 #include <fmt/core.h>
 #include <boost/math/special_functions/erf.hpp>
+#include <opencv2/core/utility.hpp>
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
@@ -95,44 +96,53 @@ void DepthSensorModel::measure(const cv::Mat& ideal_depth_m, const cv::Mat& inci
             ideal_depth_m.size() == incidence_cos.size());
   const int rows = ideal_depth_m.rows, cols = ideal_depth_m.cols;
   out.create(rows, cols, CV_32FC1);
-  FastNormal normal(Rng::stream(seed_, fmt::format("depth_noise/frame{}", frame_index)));
+  const Rng frame_rng = Rng::stream(seed_, fmt::format("depth_noise/frame{}", frame_index));
   const float min_range = static_cast<float>(spec_.min_range_m);
   const float max_range = static_cast<float>(spec_.max_range_m);
   const float edge_keep = static_cast<float>(1.0 - spec_.edge_jump_fraction);
   const float noise_coeff = static_cast<float>(spec_.axial_noise_coeff_per_m);
   const double fb = focal_baseline_px_m_, step = spec_.disparity_step_px;
 
-  for (int y = 0; y < rows; ++y) {
-    const float* z_row = ideal_depth_m.ptr<float>(y);
-    const float* z_up = ideal_depth_m.ptr<float>(y > 0 ? y - 1 : y);
-    const float* z_down = ideal_depth_m.ptr<float>(y + 1 < rows ? y + 1 : y);
-    const float* cos_row = incidence_cos.ptr<float>(y);
-    float* out_row = out.ptr<float>(y);
-    for (int x = 0; x < cols; ++x) {
-      float z = z_row[x];
-      if (z <= 0.0f) {
-        out_row[x] = 0.0f;
-        continue;
-      }
-      if (spec_.dropouts) {
-        // Far side of an edge: some neighbour (with a surface) is nearer than z * (1 - jump).
-        auto surface_or_self = [z](float v) { return v > 0.0f ? v : z; };
-        const float nearest = std::min({surface_or_self(x > 0 ? z_row[x - 1] : z),
-                                        surface_or_self(x + 1 < cols ? z_row[x + 1] : z),
-                                        surface_or_self(z_up[x]), surface_or_self(z_down[x])});
-        if (cos_row[x] < cos_grazing_ || nearest < z * edge_keep) {
-          out_row[x] = 0.0f;
-          continue;
+  // Fixed bands of rows, each with its own random sub-stream: the result does not depend on how
+  // many threads run the bands.
+  constexpr int kBands = 16;
+  cv::parallel_for_(cv::Range(0, kBands), [&](const cv::Range& bands) {
+    for (int band = bands.start; band < bands.end; ++band) {
+      FastNormal normal(frame_rng.child(fmt::format("band{}", band)));
+      for (int y = rows * band / kBands; y < rows * (band + 1) / kBands; ++y) {
+        const float* z_row = ideal_depth_m.ptr<float>(y);
+        const float* z_up = ideal_depth_m.ptr<float>(y > 0 ? y - 1 : y);
+        const float* z_down = ideal_depth_m.ptr<float>(y + 1 < rows ? y + 1 : y);
+        const float* cos_row = incidence_cos.ptr<float>(y);
+        float* out_row = out.ptr<float>(y);
+        for (int x = 0; x < cols; ++x) {
+          float z = z_row[x];
+          if (z <= 0.0f) {
+            out_row[x] = 0.0f;
+            continue;
+          }
+          if (spec_.dropouts) {
+            // Far side of an edge: a neighbour with a surface is nearer than z * (1 - jump).
+            auto surface_or_self = [z](float v) { return v > 0.0f ? v : z; };
+            const float nearest =
+                std::min(std::min(surface_or_self(x > 0 ? z_row[x - 1] : z),
+                                  surface_or_self(x + 1 < cols ? z_row[x + 1] : z)),
+                         std::min(surface_or_self(z_up[x]), surface_or_self(z_down[x])));
+            if (cos_row[x] < cos_grazing_ || nearest < z * edge_keep) {
+              out_row[x] = 0.0f;
+              continue;
+            }
+          }
+          if (spec_.noise) z += noise_coeff * z * z * normal.next();
+          if (spec_.quantisation && z > 0.0f) {
+            const double steps = std::nearbyint(fb / z / step);
+            z = steps > 0.0 ? static_cast<float>(fb / (steps * step)) : 0.0f;
+          }
+          out_row[x] = (z >= min_range && z <= max_range) ? z : 0.0f;
         }
       }
-      if (spec_.noise) z += noise_coeff * z * z * normal.next();
-      if (spec_.quantisation && z > 0.0f) {
-        const double steps = std::nearbyint(fb / z / step);
-        z = steps > 0.0 ? static_cast<float>(fb / (steps * step)) : 0.0f;
-      }
-      out_row[x] = (z >= min_range && z <= max_range) ? z : 0.0f;
     }
-  }
+  });
 }
 
 cv::Mat DepthSensorModel::measure(const RenderedView& view, std::int64_t frame_index) const {

@@ -14,8 +14,9 @@
 //    in ICL-NUIM (Handa et al., ICRA 2014) and simkinect;
 //  - valid range: readings outside [min_range_m, max_range_m] are dropped (always on).
 //
-// Random draws come from Rng::stream(seed, "depth_noise/frame<N>"), so a frame's noise depends
-// only on the seed and the frame index.
+// Random draws come from Rng::stream(seed, "depth_noise/frame<N>") (one child stream per fixed
+// band of rows, so bands run in parallel), so a frame's noise depends only on the seed and the
+// frame index, whatever the thread count.
 
 #include <cstdint>
 

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <opencv2/core/utility.hpp>
+
 #include "core/error.hpp"
 #include "core/pose.hpp"
 #include "sim/render/depth_sensor_model.hpp"
@@ -171,6 +173,13 @@ TEST(DepthSensorModel, SameFrameSameNoiseOtherFrameOtherNoise) {
   const DepthSensorModel model(DepthSensorSpec{}, k, 11);
   EXPECT_EQ(cv::norm(model.measure(view, 4), model.measure(view, 4), cv::NORM_INF), 0.0);
   EXPECT_GT(cv::norm(model.measure(view, 4), model.measure(view, 5), cv::NORM_INF), 0.0);
+  // The same numbers whatever the thread count.
+  const cv::Mat parallel = model.measure(view, 4);
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  const cv::Mat serial = model.measure(view, 4);
+  cv::setNumThreads(threads);
+  EXPECT_EQ(cv::norm(parallel, serial, cv::NORM_INF), 0.0);
   const DepthSensorModel other_seed(DepthSensorSpec{}, k, 12);
   EXPECT_GT(cv::norm(model.measure(view, 4), other_seed.measure(view, 4), cv::NORM_INF), 0.0);
 }
