@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "radio_model/ap_placement.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/plan_drawing.hpp"
 #include "sim/world/world_generator.hpp"
@@ -17,22 +18,16 @@ struct WorldArgs {
   bool svg = false;
 };
 
-int access_point_count(const wifislam::Scene& scene) {
-  const auto& aps = scene.access_points;
-  return aps.placement == wifislam::ApPlacement::kExplicit
-             ? static_cast<int>(aps.explicit_list.size())
-             : aps.count;
-}
-
 void run_world(const WorldArgs& args) {
   using namespace wifislam;
   const Scene scene = load_scene_file(args.scene_path);
   const World world = generate_world(scene);
+  // The access points as the radio model places them (explicit list or placement generator).
+  const std::vector<AccessPoint> access_points = make_access_points(scene, world.plan);
   if (!args.plan_path.empty()) {
     PlanDrawingOptions options;
     options.title = fmt::format("{} (seed {})", scene.name, scene.seed);
-    for (const auto& ap : scene.access_points.explicit_list)
-      options.access_points_m.push_back(ap.position_m);
+    for (const auto& ap : access_points) options.access_points_m.push_back(ap.position_m);
     std::filesystem::path png = args.plan_path;
     draw_floor_plan(world, png, options);
     fmt::print("wrote {}\n", png.string());
@@ -43,7 +38,7 @@ void run_world(const WorldArgs& args) {
     }
   }
   fmt::print("scene: {}\n{}access points: {}\n", scene.name, summarize_world(world).to_text(),
-             access_point_count(scene));
+             access_points.size());
 }
 
 }  // namespace
