@@ -27,7 +27,7 @@ access_points: {placement: random, count: 8}
 route:
   nodes: [A, B, C, D, A, B]
   speed_mps: 0.5
-  pause: {spacing_m: [3.0, 4.0], duration_s: 2.0}
+  pause: {spacing_m: [3.0, 4.0], duration_s: 1.0}
 radio: {environment: office}
 )";
 }

@@ -1,0 +1,115 @@
+// `wifislam slam <dataset-dir | scene.yaml> --frontend rgbdslam [--set key=value ...] -o
+// <run-dir>`: run visual SLAM on a dataset folder (ours or a plain TUM RGB-D one) or, given a scene
+// file, on frames streamed straight from the generator (nothing written but the run folder).
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "core/dataset_reader.hpp"
+#include "core/error.hpp"
+#include "sim/generate/generator_stream.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "slam/io/run_folder_writer.hpp"
+#include "slam/loop/candidate_selector_factory.hpp"
+#include "slam/system/run_slam.hpp"
+
+namespace {
+
+struct SlamArgs {
+  std::string input;
+  std::string frontend = "rgbdslam";
+  std::vector<std::string> settings;
+  std::string output;
+  bool force = false;
+  bool no_verify = false;
+  // Scene input only.
+  std::int64_t max_frames = -1;
+  double fps = 0.0;
+  std::int64_t scene_seed = -1;
+};
+
+std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohmann::json& info) {
+  using namespace wifislam;
+  const std::filesystem::path input = args.input;
+  if (std::filesystem::is_directory(input)) {
+    DatasetReaderOptions options;
+    options.verify_checksums = !args.no_verify;
+    info["input"] = {{"kind", "dataset"}, {"path", input.string()}};
+    return std::make_unique<DatasetReader>(input, options);
+  }
+  if (!std::filesystem::is_regular_file(input)) {
+    throw IoError(input.string() + ": neither a dataset folder nor a scene file");
+  }
+  const Scene scene = load_scene_file(input.string());
+  GenerateOptions options;
+  if (args.scene_seed >= 0) options.seed = static_cast<std::uint64_t>(args.scene_seed);
+  if (args.fps > 0) options.fps = args.fps;
+  options.max_frames = args.max_frames;
+  info["input"] = {{"kind", "scene"},
+                   {"path", input.string()},
+                   {"scene", scene.name},
+                   {"scene_seed", options.seed.value_or(scene.seed)},
+                   {"fps", options.fps.value_or(scene.sensors.camera.fps)},
+                   {"max_frames", args.max_frames}};
+  return std::make_unique<GeneratorStream>(scene, options);
+}
+
+std::string frontend_names() {
+  std::string names;
+  for (const std::string& n : wifislam::slam::candidate_selector_names()) {
+    names += (names.empty() ? "" : ", ") + n;
+  }
+  return names;
+}
+
+void run(const SlamArgs& args) {
+  using namespace wifislam;
+  slam::SlamOptions options;
+  options.frontend = args.frontend;
+  for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
+  slam::validate(options);
+  if (std::filesystem::exists(args.output) && !args.force) {
+    throw IoError(args.output + ": already exists (pass --force to replace it)");
+  }
+  nlohmann::json info;
+  std::unique_ptr<SensorStream> stream = open_input(args, info);
+  const bool tty = cli::stderr_is_tty();
+  slam::RunSummary summary;
+  const auto progress = [tty](std::int64_t frames) {
+    if (tty && frames % 30 == 0) fmt::print(stderr, "\rslam: {} frames", frames);
+  };
+  const std::unique_ptr<slam::SlamSystem> system =
+      slam::run_slam(*stream, options, summary, progress);
+  if (tty) fmt::print(stderr, "\n");
+  slam::write_run_folder(args.output, *system, summary, args.force, info);
+  fmt::print("{}", summary.FullReport());
+  fmt::print("wrote {}\n", std::filesystem::absolute(args.output).lexically_normal().string());
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(slam, 60) {
+  auto args = std::make_shared<SlamArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "slam",
+      "Run visual SLAM on a dataset folder (ours or plain TUM RGB-D) or on frames streamed from\n"
+      "a scene file, and write the run folder (trajectory.txt, keyframes.txt, graph.json,\n"
+      "loop_closures.csv, timing.json, run.json).");
+  app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
+  app->add_option("--frontend", args->frontend, "Loop-closure front end (" + frontend_names() + ")")
+      ->capture_default_str();
+  app->add_option("--set", args->settings,
+                  "SLAM option key=value (repeatable), e.g. --set min_matches=15 "
+                  "--set inlier_distance=2.0");
+  app->add_option("-o,--output", args->output, "Run folder to write")->required();
+  app->add_flag("--force", args->force, "Replace an existing run folder");
+  app->add_flag("--no-verify", args->no_verify, "Do not check the dataset's SHA-256 sums");
+  app->add_option("--max-frames", args->max_frames, "Scene input: stop after this many frames");
+  app->add_option("--fps", args->fps, "Scene input: frame rate (default: the scene's)");
+  app->add_option("--seed", args->scene_seed, "Scene input: replace the scene's seed");
+  app->callback([args] { run(*args); });
+}

@@ -1,0 +1,145 @@
+// The whole pipeline on frames streamed from the generator (real renders, Kinect-like depth
+// noise): loop closure on a small unambiguous loop, determinism, and a plain TUM folder without
+// Wi-Fi through the command line.
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+
+#include <nlohmann/json.hpp>
+
+#include "core/tum_trajectory.hpp"
+#include "sim/generate/dataset_writer.hpp"
+#include "sim/generate/generator_stream.hpp"
+#include "slam/io/run_folder_writer.hpp"
+#include "slam/system/slam_system.hpp"
+#include "tests/slam/slam_test_scene.hpp"
+#include "tests/slam/trajectory_error.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct RunResult {
+  std::unique_ptr<slam::SlamSystem> system;
+  std::map<std::int64_t, Pose> truth;           // frame time (ns) -> camera-to-world
+  std::map<std::int64_t, Pose> truth_by_frame;  // frame index -> camera-to-world
+};
+
+/// SLAM over the generator's stream, keeping the ground truth aside (SLAM never sees it).
+RunResult run_on_generated(const Scene& scene, double fps, std::int64_t max_frames,
+                           const slam::SlamOptions& options) {
+  GenerateOptions generate;
+  generate.fps = fps;
+  generate.max_frames = max_frames;
+  GeneratorStream stream(scene, generate);
+  slam::StreamInfo info{stream.intrinsics(), stream.camera_in_base(), stream.has_wifi(),
+                        stream.has_odometry()};
+  RunResult result;
+  result.system = std::make_unique<slam::SlamSystem>(options, info);
+  while (std::optional<SensorEvent> event = stream.next()) {
+    result.system->process(*event);
+    if (const auto* frame = std::get_if<RgbdFrame>(&*event)) {
+      result.truth[frame->time.ns] = stream.last_frame_ground_truth();
+      result.truth_by_frame[frame->index] = stream.last_frame_ground_truth();
+    }
+  }
+  result.system->finish();
+  return result;
+}
+
+/// Fewer features than the default keep the suite fast; the loop is short and feature-rich.
+slam::SlamOptions test_options() {
+  slam::SlamOptions options;
+  options.features.max_keypoints = 500;
+  return options;
+}
+
+TEST(RgbdslamEndToEnd, ClosesTheLoopOnASmallLowAliasingLoop) {
+  const RunResult run = run_on_generated(test::small_loop_scene(), 5.0, -1, test_options());
+  const slam::SlamSystem& system = *run.system;
+  const slam::PoseGraph& graph = system.graph();
+  int true_closures = 0;
+  for (const slam::LoopClosureRecord& l : system.loop_closures()) {
+    const Pose& a = run.truth_by_frame.at(graph.node(l.from).frame_index);
+    const Pose& b = run.truth_by_frame.at(graph.node(l.to).frame_index);
+    if (translation_distance_m(a, b) < 1.0) ++true_closures;
+    const Pose truth_rel = a.inverse() * b;
+    std::printf(
+        "loop closure %d - %d (%s, %d inliers): %.2f m apart, relative pose error %.3f m "
+        "%.2f deg\n",
+        l.from, l.to, slam::to_string(l.role).c_str(), l.inliers, translation_distance_m(a, b),
+        translation_distance_m(truth_rel, l.from_to),
+        rotation_angle_rad(truth_rel, l.from_to) * 180.0 / std::numbers::pi);
+  }
+  const test::AlignedError ate = test::aligned_translation_error(system.trajectory(), run.truth);
+  std::printf(
+      "%lld frames, %zu keyframes, %zu loop closures (%d within 1 m in ground truth), "
+      "ATE RMSE %.3f m (max %.3f m), tracking failures %lld\n",
+      static_cast<long long>(system.frame_records().size()), graph.node_count(),
+      system.loop_closures().size(), true_closures, ate.rmse_m, ate.max_m,
+      static_cast<long long>(system.instrumentation().counter(slam::counter::kTrackingFailures)));
+  EXPECT_GE(true_closures, 1);
+  EXPECT_EQ(ate.pairs, system.frame_records().size());
+  // A sanity bound: a 28 m loop with working tracking and closures stays well inside it.
+  EXPECT_LT(ate.rmse_m, 1.0);
+}
+
+TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
+  const Scene scene = test::small_loop_scene();
+  const RunResult a = run_on_generated(scene, 5.0, 80, test_options());
+  const RunResult b = run_on_generated(scene, 5.0, 80, test_options());
+  const Trajectory ta = a.system->trajectory(), tb = b.system->trajectory();
+  ASSERT_EQ(ta.size(), tb.size());
+  for (std::size_t i = 0; i < ta.size(); ++i) {
+    EXPECT_EQ(format_tum_line(ta[i]), format_tum_line(tb[i])) << i;
+  }
+  EXPECT_EQ(slam::graph_to_json(a.system->graph()).dump(),
+            slam::graph_to_json(b.system->graph()).dump());
+  EXPECT_GT(a.system->graph().node_count(), 3u);
+}
+
+TEST(RgbdslamEndToEnd, RunsOnAPlainTumFolderWithoutWifi) {
+  const fs::path root = fs::temp_directory_path() / "wifislam_slam_tum_test";
+  fs::remove_all(root);
+  const fs::path generated = root / "generated";
+  GenerateOptions generate;
+  generate.fps = 5.0;
+  generate.max_frames = 40;
+  generate.threads = 1;
+  generate_dataset(test::small_loop_scene(), generated, generate);
+  // A plain TUM RGB-D layout: images and their lists only (no wifi.csv, odometry, calibration,
+  // manifest).
+  const fs::path tum = root / "tum";
+  fs::create_directories(tum);
+  for (const char* item : {"rgb", "depth", "rgb.txt", "depth.txt"}) {
+    fs::copy(generated / item, tum / item, fs::copy_options::recursive);
+  }
+  const fs::path run = root / "run";
+  const std::string command = std::string(WIFISLAM_BINARY) + " slam " + tum.string() +
+                              " --frontend rgbdslam --set max_keypoints=400 -o " + run.string() +
+                              " > " + (root / "stdout.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  for (const char* file : {"trajectory.txt", "keyframes.txt", "graph.json", "loop_closures.csv",
+                           "timing.json", "run.json"}) {
+    EXPECT_TRUE(fs::exists(run / file)) << file;
+  }
+  EXPECT_EQ(read_tum_trajectory((run / "trajectory.txt").string()).size(), 40u);
+  std::ifstream run_json(run / "run.json");
+  const nlohmann::json j = nlohmann::json::parse(run_json);
+  EXPECT_EQ(j.at("stream").at("has_wifi"), false);
+  EXPECT_EQ(j.at("frames"), 40);
+  std::ifstream timing_json(run / "timing.json");
+  const nlohmann::json timing = nlohmann::json::parse(timing_json);
+  EXPECT_GT(timing.at("counters").at("ransac_runs").get<int>(), 0);
+  EXPECT_TRUE(timing.at("modules").contains("feature_extraction"));
+  fs::remove_all(root);
+}
+
+}  // namespace
+}  // namespace wifislam
