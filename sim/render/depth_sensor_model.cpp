@@ -101,7 +101,8 @@ void DepthSensorModel::measure(const cv::Mat& ideal_depth_m, const cv::Mat& inci
   const float max_range = static_cast<float>(spec_.max_range_m);
   const float edge_keep = static_cast<float>(1.0 - spec_.edge_jump_fraction);
   const float noise_coeff = static_cast<float>(spec_.axial_noise_coeff_per_m);
-  const double fb = focal_baseline_px_m_, step = spec_.disparity_step_px;
+  // Disparity in steps is (f b / step) / z; single precision keeps the steps exact up to ~1e6.
+  const float fb_per_step = static_cast<float>(focal_baseline_px_m_ / spec_.disparity_step_px);
 
   // Fixed bands of rows, each with its own random sub-stream: the result does not depend on how
   // many threads run the bands.
@@ -135,8 +136,8 @@ void DepthSensorModel::measure(const cv::Mat& ideal_depth_m, const cv::Mat& inci
           }
           if (spec_.noise) z += noise_coeff * z * z * normal.next();
           if (spec_.quantisation && z > 0.0f) {
-            const double steps = std::nearbyint(fb / z / step);
-            z = steps > 0.0 ? static_cast<float>(fb / (steps * step)) : 0.0f;
+            const float steps = std::nearbyint(fb_per_step / z);
+            z = steps > 0.0f ? fb_per_step / steps : 0.0f;
           }
           out_row[x] = (z >= min_range && z <= max_range) ? z : 0.0f;
         }

@@ -35,7 +35,7 @@ struct RenderOptions {
   double far_m = 40.0;          // farther surfaces are not drawn
   float ambient = 0.45f;        // light every surface gets, as a fraction of its albedo
   float light_power = 2.5f;     // one ceiling light's irradiance at 1 m, times (d^2 + 1)
-  int max_lights = 4;           // nearest lights shaded per frame (0..8): cost grows with it
+  int max_lights = 2;           // nearest lights shaded per frame (0..8): each adds shading cost
   double light_range_m = 12.0;  // lights farther from the camera are not shaded
   double light_fade_m = 1.5;    // lights fade out over this distance before they drop out
   bool frustum_culling = true;  // skip texture batches outside the view (saves draw calls)
