@@ -4,6 +4,7 @@
 //
 // llvmpipe reads LP_NUM_THREADS once per process, so run the program once per thread count:
 //   LP_NUM_THREADS=1 render_bench;  LP_NUM_THREADS=2 render_bench
+// WIFISLAM_BENCH_LIGHTS=<n> sets RenderOptions::max_lights of the harness (shading cost per light).
 
 #define GL_GLEXT_PROTOTYPES
 #include <GL/gl.h>
