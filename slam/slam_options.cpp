@@ -30,6 +30,10 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"ransac_confidence", &o.transform.ransac_confidence, "RANSAC stopping confidence (< 1)"},
       {"min_reprojection_sigma_px", &o.transform.min_reprojection_sigma_px,
        "floor of the reprojection noise in the information matrix (px)"},
+      {"depth_noise_coeff_per_m", &o.transform.depth_noise_coeff_per_m,
+       "depth noise sigma_z = coeff z^2 in the information matrix (1/m)"},
+      {"depth_consistency_sigmas", &o.transform.depth_consistency_sigmas,
+       "depth agreement required of inliers with depth in both frames (sigmas; 0 = off)"},
       {"keyframe_min_inliers", &o.tracking.keyframe_min_inliers,
        "new keyframe when tracking inliers drop below"},
       {"keyframe_max_translation_m", &o.tracking.keyframe_max_translation_m,
@@ -135,6 +139,8 @@ void validate(const SlamOptions& o) {
   require(o.transform.ransac_confidence > 0 && o.transform.ransac_confidence < 1,
           "ransac_confidence must be in (0, 1)");
   require(o.transform.min_reprojection_sigma_px > 0, "min_reprojection_sigma_px must be > 0");
+  require(o.transform.depth_noise_coeff_per_m >= 0, "depth_noise_coeff_per_m must be >= 0");
+  require(o.transform.depth_consistency_sigmas >= 0, "depth_consistency_sigmas must be >= 0");
   require(o.tracking.keyframe_max_translation_m > 0, "keyframe_max_translation_m must be > 0");
   require(o.tracking.keyframe_max_rotation_rad > 0, "keyframe_max_rotation_rad must be > 0");
   require(o.tracking.loop_min_keyframe_gap >= 1, "loop_min_keyframe_gap must be >= 1");

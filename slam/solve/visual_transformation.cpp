@@ -8,6 +8,7 @@
 #include <opencv2/core/eigen.hpp>
 
 #include "core/error.hpp"
+#include "slam/solve/weighted_pose_refinement.hpp"
 
 namespace wifislam::slam {
 
@@ -32,14 +33,16 @@ Pose pose_from_rvec_tvec(const cv::Mat& rvec, const cv::Mat& tvec) {
 
 }  // namespace
 
-Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& points_in_a_m,
+Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& points_in_b_m,
                                             const Pose& a_from_b,
-                                            const CameraIntrinsics& intrinsics, double sigma_px) {
+                                            const CameraIntrinsics& intrinsics, double sigma_px,
+                                            double depth_noise_coeff_per_m) {
   // Perturbation xi = (dt, dtheta) on the left of a_from_b, in frame a: X_a' = X_a + dtheta x X_a
-  // + dt. Projection Jacobian J_i = dpi/dX [I, -[X_a]x]; information in xi is sum J^T J / s^2.
+  // + dt. Projection Jacobian J_i = dpi/dX [I, -[X_a]x]; information in xi is sum J^T W J.
   Eigen::Matrix<double, 6, 6> info_xi = Eigen::Matrix<double, 6, 6>::Zero();
-  for (const Eigen::Vector3d& x : points_in_a_m) {
-    if (x.z() <= 1e-6) continue;
+  for (const Eigen::Vector3d& x_b : points_in_b_m) {
+    const Eigen::Vector3d x = a_from_b * x_b;
+    if (x.z() <= 1e-6 || x_b.z() <= 1e-6) continue;
     const double iz = 1.0 / x.z();
     Eigen::Matrix<double, 2, 3> dpi;
     dpi << intrinsics.fx_px * iz, 0, -intrinsics.fx_px * x.x() * iz * iz,  //
@@ -47,9 +50,10 @@ Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& 
     Eigen::Matrix<double, 3, 6> dx;
     dx << Eigen::Matrix3d::Identity(), -skew(x);
     const Eigen::Matrix<double, 2, 6> j = dpi * dx;
-    info_xi += j.transpose() * j;
+    const Eigen::Matrix2d covariance =
+        projected_point_covariance(x_b, a_from_b, intrinsics, sigma_px, depth_noise_coeff_per_m);
+    info_xi += j.transpose() * covariance.inverse() * j;
   }
-  info_xi /= sigma_px * sigma_px;
   // The pose graph residual r = [p_est - p_meas; 2 vec(q_meas q_est^-1)] linearises to r = A xi
   // with A = [I, -[p]x; 0, -I], and A^-1 = A, so the information in r is A^T info_xi A.
   Eigen::Matrix<double, 6, 6> a = Eigen::Matrix<double, 6, 6>::Zero();
@@ -82,13 +86,17 @@ VisualTransformation estimate_visual_transformation(const FrameFeatures& a, cons
   instrumentation.count(counter::kRansacRuns);
   std::vector<cv::Point3d> object_points;
   std::vector<cv::Point2d> image_points;
+  std::vector<double> depth_a_m;  // measured depth of the frame-a keypoint, 0 = none
   object_points.reserve(matches.size());
   image_points.reserve(matches.size());
+  depth_a_m.reserve(matches.size());
   for (const FeatureMatch& m : matches) {
     const Eigen::Vector3d& p = b.points_m[static_cast<std::size_t>(m.train)];
-    const cv::Point2f& u = a.keypoints[static_cast<std::size_t>(m.query)].pt;
+    const auto q = static_cast<std::size_t>(m.query);
+    const cv::Point2f& u = a.keypoints[q].pt;
     object_points.emplace_back(p.x(), p.y(), p.z());
     image_points.emplace_back(u.x, u.y);
+    depth_a_m.push_back(a.has_depth[q] ? a.points_m[q].z() : 0.0);
   }
   cv::Mat k;
   cv::eigen2cv(intrinsics.matrix(), k);
@@ -100,10 +108,36 @@ VisualTransformation estimate_visual_transformation(const FrameFeatures& a, cons
                          options.ransac_confidence, ransac_inliers, cv::SOLVEPNP_EPNP);
   if (!found || static_cast<int>(ransac_inliers.size()) < options.min_matches) return result;
 
-  // Refine on the inliers, re-select inliers with the refined pose, refine once more.
-  std::vector<int> inliers = ransac_inliers;
+  // An inlier reprojects within inlier_distance and, where frame a measured depth too, lands at
+  // that depth within the sensor's noise: this rejects poses that only look right in 2-D (the
+  // mirror solution of a planar floor, a shift by one period of a repeated texture).
   const double threshold_sq = options.inlier_distance * options.inlier_distance;
-  std::vector<cv::Point2d> projected;
+  std::vector<cv::Point2d> projected(object_points.size());
+  const auto select_inliers = [&](const Pose& pose) {
+    std::vector<int> selected;
+    for (std::size_t i = 0; i < object_points.size(); ++i) {
+      const cv::Point3d& p = object_points[i];
+      const Eigen::Vector3d x = pose * Eigen::Vector3d(p.x, p.y, p.z);
+      projected[i] = cv::Point2d(-1e9, -1e9);
+      if (x.z() <= 1e-6) continue;  // behind frame a: not a correspondence
+      projected[i] = {intrinsics.fx_px * x.x() / x.z() + intrinsics.cx_px,
+                      intrinsics.fy_px * x.y() / x.z() + intrinsics.cy_px};
+      const cv::Point2d d = projected[i] - image_points[i];
+      if (d.dot(d) >= threshold_sq) continue;
+      if (options.depth_consistency_sigmas > 0 && depth_a_m[i] > 0) {
+        const double za = depth_a_m[i], zb = p.z;
+        const double sigma_m = options.depth_noise_coeff_per_m * std::hypot(za * za, zb * zb);
+        const double tolerance_m = options.depth_consistency_sigmas * sigma_m + 0.02;
+        if (std::abs(x.z() - za) > tolerance_m) continue;
+      }
+      selected.push_back(static_cast<int>(i));
+    }
+    return selected;
+  };
+
+  // Refine on the inliers, re-select inliers with the refined pose, refine once more.
+  std::vector<int> inliers = select_inliers(pose_from_rvec_tvec(rvec, tvec));
+  if (static_cast<int>(inliers.size()) < options.min_matches) return result;
   for (int pass = 0; pass < 2; ++pass) {
     std::vector<cv::Point3d> obj;
     std::vector<cv::Point2d> img;
@@ -112,39 +146,44 @@ VisualTransformation estimate_visual_transformation(const FrameFeatures& a, cons
       img.push_back(image_points[static_cast<std::size_t>(i)]);
     }
     cv::solvePnPRefineLM(obj, img, k, cv::noArray(), rvec, tvec);
-    const Pose pose = pose_from_rvec_tvec(rvec, tvec);
-    projected.assign(object_points.size(), cv::Point2d(-1e9, -1e9));
-    inliers.clear();
-    for (std::size_t i = 0; i < object_points.size(); ++i) {
-      const cv::Point3d& p = object_points[i];
-      const Eigen::Vector3d x = pose * Eigen::Vector3d(p.x, p.y, p.z);
-      if (x.z() <= 1e-6) continue;  // behind frame a: not a correspondence, whatever it projects to
-      projected[i] = {intrinsics.fx_px * x.x() / x.z() + intrinsics.cx_px,
-                      intrinsics.fy_px * x.y() / x.z() + intrinsics.cy_px};
-      const cv::Point2d d = projected[i] - image_points[i];
-      if (d.dot(d) < threshold_sq) inliers.push_back(static_cast<int>(i));
-    }
+    inliers = select_inliers(pose_from_rvec_tvec(rvec, tvec));
     if (static_cast<int>(inliers.size()) < options.min_matches) return result;
   }
 
-  result.a_from_b = pose_from_rvec_tvec(rvec, tvec);
+  // Final refinement with every correspondence weighted by its depth uncertainty (nominal
+  // 1 px keypoint noise), then the inliers once more.
+  {
+    std::vector<Eigen::Vector3d> points_b;
+    std::vector<Eigen::Vector2d> pixels_a;
+    for (int i : inliers) {
+      const cv::Point3d& p = object_points[static_cast<std::size_t>(i)];
+      const cv::Point2d& u = image_points[static_cast<std::size_t>(i)];
+      points_b.emplace_back(p.x, p.y, p.z);
+      pixels_a.emplace_back(u.x, u.y);
+    }
+    result.a_from_b = refine_pose_weighted(points_b, pixels_a, pose_from_rvec_tvec(rvec, tvec),
+                                           intrinsics, 1.0, options.depth_noise_coeff_per_m);
+  }
   if (!result.a_from_b.matrix().allFinite()) return result;
+  inliers = select_inliers(result.a_from_b);
+  if (static_cast<int>(inliers.size()) < options.min_matches) return result;
   double sum_sq = 0.0;
-  std::vector<Eigen::Vector3d> points_in_a;
-  points_in_a.reserve(inliers.size());
+  std::vector<Eigen::Vector3d> inlier_points_b;
+  inlier_points_b.reserve(inliers.size());
   for (int i : inliers) {
     const cv::Point2d d =
         projected[static_cast<std::size_t>(i)] - image_points[static_cast<std::size_t>(i)];
     sum_sq += d.dot(d);
     const cv::Point3d& p = object_points[static_cast<std::size_t>(i)];
-    points_in_a.push_back(result.a_from_b * Eigen::Vector3d(p.x, p.y, p.z));
+    inlier_points_b.emplace_back(p.x, p.y, p.z);
   }
   result.inliers = static_cast<int>(inliers.size());
   result.rms_reprojection_px = std::sqrt(sum_sq / result.inliers);
   // Per-axis residual variance: the squared 2-D residual has two components.
   const double sigma_px =
       std::max(options.min_reprojection_sigma_px, std::sqrt(sum_sq / (2.0 * result.inliers)));
-  result.information = pnp_information(points_in_a, result.a_from_b, intrinsics, sigma_px);
+  result.information = pnp_information(inlier_points_b, result.a_from_b, intrinsics, sigma_px,
+                                       options.depth_noise_coeff_per_m);
   result.accepted = true;
   instrumentation.count(counter::kAcceptedTransformations);
   return result;

@@ -30,6 +30,14 @@ struct VisualTransformOptions {
   /// Floor of the reprojection noise used for the information matrix (pixels): keeps a
   /// noise-free render from claiming infinite certainty.
   double min_reprojection_sigma_px = 0.5;
+  /// Depth noise model for the information matrix: sigma_z = coeff * z^2 (Kinect v1: 1.425e-3 per
+  /// metre, K. Khoshelham and S. O. Elberink, Sensors 12(2), 2012). Far points then weigh less,
+  /// so an edge resting on distant, coarsely quantised depth does not claim centimetre accuracy.
+  double depth_noise_coeff_per_m = 1.425e-3;
+  /// Where frame a also measured depth, an inlier's predicted depth must agree with it within
+  /// this many standard deviations (of both readings) plus 2 cm; 0 turns the check off (pure
+  /// 3-D/2-D). Rejects poses that are right in 2-D only (planar mirror solutions, aliasing).
+  double depth_consistency_sigmas = 3.0;
 };
 
 /// Edge measurement between two frames a and b.
@@ -53,9 +61,11 @@ VisualTransformation estimate_visual_transformation(const FrameFeatures& a, cons
                                                     Instrumentation& instrumentation);
 
 /// Information matrix (pose graph convention) of a_from_b from the inlier reprojection
-/// Jacobians: sum J^T J / sigma^2 with sigma^2 the mean squared inlier residual (floored).
-Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& points_in_a_m,
+/// Jacobians: sum J^T W J, where W^-1 = sigma_px^2 I + the image-a covariance of the point's depth
+/// error along frame b's viewing ray (sigma_z = depth_noise_coeff_per_m z_b^2).
+Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& points_in_b_m,
                                             const Pose& a_from_b,
-                                            const CameraIntrinsics& intrinsics, double sigma_px);
+                                            const CameraIntrinsics& intrinsics, double sigma_px,
+                                            double depth_noise_coeff_per_m);
 
 }  // namespace wifislam::slam

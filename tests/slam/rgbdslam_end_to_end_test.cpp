@@ -86,8 +86,9 @@ TEST(RgbdslamEndToEnd, ClosesTheLoopOnASmallLowAliasingLoop) {
       static_cast<long long>(system.instrumentation().counter(slam::counter::kTrackingFailures)));
   EXPECT_GE(true_closures, 1);
   EXPECT_EQ(ate.pairs, system.frame_records().size());
-  // A sanity bound: a 28 m loop with working tracking and closures stays well inside it.
-  EXPECT_LT(ate.rmse_m, 1.0);
+  // 36 m of route around a 28 m loop: closed and optimised, the trajectory stays within
+  // decimetres of the truth (measured: 0.06 m).
+  EXPECT_LT(ate.rmse_m, 0.25);
 }
 
 TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
