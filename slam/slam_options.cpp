@@ -13,6 +13,14 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
   return {
       {"frontend", &o.frontend, "loop-closure candidate selection policy"},
       {"seed", &o.seed, "seed of every random draw"},
+      {"wifi", &o.wifi.enabled, "Wi-Fi variant of the front end (clustering, bounding)"},
+      {"wifi_similarity", &o.wifi.similarity,
+       "cosine similarity at or above which signatures are similar"},
+      {"wifi_floor_dbm", &o.wifi.floor_dbm, "RSSI floor: weight = max(0, rssi - floor) (dBm)"},
+      {"wifi_pause_gap_s", &o.wifi.pause_gap_s, "scan gap that ends a pause (s)"},
+      {"wifi_pause_motion_m", &o.wifi.pause_motion_m, "odometry motion that ends a pause (m)"},
+      {"wifi_sampled_candidates", &o.wifi.sampled_candidates,
+       "long-term candidates from similar clusters (0 = all)"},
       {"max_keypoints", &o.features.max_keypoints, "ORB keypoints per frame"},
       {"orb_scale_factor", &o.features.scale_factor, "ORB pyramid scale step"},
       {"orb_levels", &o.features.pyramid_levels, "ORB pyramid levels"},
@@ -159,6 +167,10 @@ void validate(const SlamOptions& o) {
           "robust_loss must be none, huber or cauchy");
   require(o.graph.robust_loss_scale > 0, "robust_loss_scale must be > 0");
   require(o.graph.threads >= 1, "optimizer_threads must be >= 1");
+  require(o.wifi.similarity >= -1 && o.wifi.similarity <= 1, "wifi_similarity must be in [-1, 1]");
+  require(o.wifi.pause_gap_s > 0, "wifi_pause_gap_s must be > 0");
+  require(o.wifi.pause_motion_m > 0, "wifi_pause_motion_m must be > 0");
+  require(o.wifi.sampled_candidates >= 0, "wifi_sampled_candidates must be >= 0");
 }
 
 nlohmann::json to_json(const SlamOptions& options) {

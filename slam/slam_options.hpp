@@ -14,6 +14,7 @@
 #include "slam/loop/rgbdslam_candidate_selector.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 #include "slam/solve/visual_transformation.hpp"
+#include "slam/wifi/wifi_options.hpp"
 
 namespace wifislam::slam {
 
@@ -43,6 +44,8 @@ struct TrackingOptions {
 struct SlamOptions {
   /// Loop-closure front end (candidate selection policy), see candidate_selector_factory.hpp.
   std::string frontend = "rgbdslam";
+  /// The Wi-Fi module (off = the vanilla front end).
+  WifiOptions wifi;
   /// Seed of every random draw of the run (e.g. RGBD-SLAM's random keyframes).
   std::uint64_t seed = 1;
   FeatureOptions features;

@@ -22,6 +22,7 @@ namespace {
 struct SlamArgs {
   std::string input;
   std::string frontend = "rgbdslam";
+  bool wifi = false;
   std::vector<std::string> settings;
   std::string output;
   bool force = false;
@@ -61,6 +62,7 @@ std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohman
 std::string frontend_names() {
   std::string names;
   for (const std::string& n : wifislam::slam::candidate_selector_names()) {
+    if (n.ends_with("+wifi")) continue;  // chosen with --wifi
     names += (names.empty() ? "" : ", ") + n;
   }
   return names;
@@ -70,6 +72,7 @@ void run(const SlamArgs& args) {
   using namespace wifislam;
   slam::SlamOptions options;
   options.frontend = args.frontend;
+  options.wifi.enabled = args.wifi;
   for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
   slam::validate(options);
   if (std::filesystem::exists(args.output) && !args.force) {
@@ -102,6 +105,10 @@ WIFISLAM_COMMAND(slam, 60) {
   app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
   app->add_option("--frontend", args->frontend, "Loop-closure front end (" + frontend_names() + ")")
       ->capture_default_str();
+  app->add_flag(
+      "--wifi", args->wifi,
+      "Wi-Fi variant: cluster keyframes by Wi-Fi signature and draw long-term loop-closure\n"
+      "candidates only from similar clusters (needs wifi.csv / scans in the scene)");
   app->add_option("--set", args->settings,
                   "SLAM option key=value (repeatable), e.g. --set min_matches=15 "
                   "--set inlier_distance=2.0");

@@ -24,7 +24,11 @@ struct SelectorContext {
 
 using SelectorFactory = std::function<std::unique_ptr<CandidateSelector>(const SelectorContext&)>;
 
-/// Adds (or replaces) a front end. Built in: "rgbdslam".
+/// The registry name of the selector `options` ask for: `frontend`, plus "+wifi" when the Wi-Fi
+/// module is on.
+std::string selector_key(const SlamOptions& options);
+
+/// Adds (or replaces) a front end. Built in: "rgbdslam", "rgbdslam+wifi".
 void register_candidate_selector(const std::string& name, SelectorFactory factory);
 
 /// The selector named `context.options->frontend`. Throws InvalidInputError listing the known

@@ -1,0 +1,36 @@
+#pragma once
+// Options of the Wi-Fi module (paper, "General approach"; DESIGN.md, "The SLAM pipeline"). Each
+// field says what it trades off; the flat `--set` keys are listed in slam_options.cpp.
+
+namespace wifislam::slam {
+
+struct WifiOptions {
+  /// Run the front end's Wi-Fi variant (clustering, bounded loop-closure search, cluster
+  /// management). Needs Wi-Fi scans in the stream.
+  bool enabled = false;
+  /// Two signatures are "similar" when their cosine similarity is at least this. The Wi-Fi
+  /// counterpart of `min_matches`: higher -> smaller clusters, fewer candidates, fewer false loop
+  /// closures but more missed ones. Default 0.9, chosen from the similarity-vs-distance curves of
+  /// the shipped scenes (pause-to-pause pairs, `bench/wifi`): pauses within 4 m of each other score
+  /// >= 0.91 in 90 % of pairs in every walled scene, pauses 12-14 m apart score >= 0.9 in at most
+  /// 10 % (c_hall, b_hall, j_hall, aliasing_ladder). In the open a_hall every pair scores > 0.94,
+  /// so there the module cannot separate places (as the paper's A Hall, with few walls, suggests).
+  double similarity = 0.9;
+  /// RSSI enters the cosine as max(0, rssi_dbm - floor_dbm); an AP not heard counts 0.
+  double floor_dbm = -100.0;
+  /// Scans belong to one pause while the receiver stands still: a new pause starts when the time
+  /// from one scan's end to the next one's start exceeds this (scans of one pause follow each
+  /// other every few seconds; between pauses the robot drives 3-4 m, several seconds more) ...
+  double pause_gap_s = 3.0;
+  /// ... or, when wheel odometry is in the stream, when the base moved more than this since the
+  /// pause's first scan (so scanning while moving gives one signature per scan, not one per run).
+  double pause_motion_m = 0.05;
+  /// Long-term candidates drawn (uniformly, seeded) from the keyframes of similar clusters. The
+  /// default equals RGBD-SLAM's `min_sampled_candidates`, so the Wi-Fi variant never compares
+  /// more than the vanilla one: it replaces *where* the random keyframes come from, not how many.
+  /// 0 = compare with every keyframe of the similar clusters (exhaustive, the costliest reading
+  /// of the paper's "compare the current frame only to keyframes within similar clusters").
+  int sampled_candidates = 2;
+};
+
+}  // namespace wifislam::slam
