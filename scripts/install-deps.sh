@@ -18,6 +18,7 @@ packages=(
   libcairo2-dev                          # plots and floor-plan pictures
   libssl-dev                             # SHA-256 for dataset manifests
   libgtest-dev libgmock-dev libbenchmark-dev
+  python3-numpy                          # reference port of TUM evaluate_ate.py (eval tests)
 )
 
 missing=()

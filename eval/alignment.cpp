@@ -1,0 +1,35 @@
+#include "eval/alignment.hpp"
+
+#include <Eigen/Geometry>
+
+#include "core/error.hpp"
+
+namespace wifislam::eval {
+
+Pose Alignment::apply(const Pose& pose) const {
+  Pose out = Pose::Identity();
+  out.linear() = rotation * pose.linear();
+  out.translation() = apply(Eigen::Vector3d(pose.translation()));
+  return out;
+}
+
+Alignment align_points(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& target,
+                       bool with_scale) {
+  if (source.cols() != target.cols()) {
+    throw InvalidInputError("alignment: point counts differ");
+  }
+  if (source.cols() < 3) {
+    throw InvalidInputError("alignment: needs at least 3 associated poses, got " +
+                            std::to_string(source.cols()));
+  }
+  const Eigen::Matrix4d t = Eigen::umeyama(source, target, with_scale);
+  Alignment a;
+  const Eigen::Matrix3d sr = t.topLeftCorner<3, 3>();
+  // umeyama returns [sR t; 0 1]; the columns of sR all have norm s.
+  a.scale = with_scale ? sr.col(0).norm() : 1.0;
+  a.rotation = sr / a.scale;
+  a.translation_m = t.topRightCorner<3, 1>();
+  return a;
+}
+
+}  // namespace wifislam::eval

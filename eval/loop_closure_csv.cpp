@@ -1,0 +1,100 @@
+#include "eval/loop_closure_csv.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/text_lines.hpp"
+
+namespace wifislam::eval {
+
+namespace {
+constexpr std::array<const char*, 16> kColumns = {"from_keyframe",
+                                                  "to_keyframe",
+                                                  "from_frame",
+                                                  "to_frame",
+                                                  "from_time",
+                                                  "to_time",
+                                                  "role",
+                                                  "inliers",
+                                                  "rms_reprojection_px",
+                                                  "tx",
+                                                  "ty",
+                                                  "tz",
+                                                  "qx",
+                                                  "qy",
+                                                  "qz",
+                                                  "qw"};
+}
+
+std::vector<DetectedLoopClosure> read_loop_closures_csv(const std::filesystem::path& path) {
+  const std::vector<TextLine> lines = read_text_lines(path.string());
+  std::vector<DetectedLoopClosure> out;
+  bool header_seen = false;
+  for (const TextLine& line : lines) {
+    if (line.text.empty() || line.text[0] == '#') continue;
+    const std::string where = path.string() + ":" + std::to_string(line.number);
+    const std::vector<std::string_view> fields = split_fields(line.text, ',');
+    if (!header_seen) {
+      header_seen = true;
+      bool ok = fields.size() == kColumns.size();
+      for (std::size_t i = 0; ok && i < fields.size(); ++i) ok = fields[i] == kColumns[i];
+      if (!ok) {
+        throw ParseError(where, "header",
+                         "expected the header 'from_keyframe,to_keyframe,...,qz,qw' (16 columns)");
+      }
+      continue;
+    }
+    if (fields.size() != kColumns.size()) {
+      throw ParseError(
+          where, "", "expected 16 comma-separated fields, found " + std::to_string(fields.size()));
+    }
+    auto integer = [&](std::size_t i) {
+      long long v = 0;
+      if (!parse_int64(fields[i], v)) {
+        throw ParseError(where, kColumns[i], "'" + std::string(fields[i]) + "' is not an integer");
+      }
+      return static_cast<std::int64_t>(v);
+    };
+    auto number = [&](std::size_t i) {
+      double v = 0;
+      if (!parse_double(fields[i], v) || !std::isfinite(v)) {
+        throw ParseError(where, kColumns[i],
+                         "'" + std::string(fields[i]) + "' is not a finite number");
+      }
+      return v;
+    };
+    auto stamp = [&](std::size_t i) {
+      const std::optional<Timestamp> t = Timestamp::parse(fields[i]);
+      if (!t) {
+        throw ParseError(where, kColumns[i], "'" + std::string(fields[i]) + "' is not a time");
+      }
+      return *t;
+    };
+    DetectedLoopClosure lc;
+    lc.line = line.number;
+    lc.from_keyframe = integer(0);
+    lc.to_keyframe = integer(1);
+    lc.from_frame = integer(2);
+    lc.to_frame = integer(3);
+    lc.from_time = stamp(4);
+    lc.to_time = stamp(5);
+    lc.role = std::string(fields[6]);
+    lc.inliers = integer(7);
+    lc.rms_reprojection_px = number(8);
+    const Eigen::Vector3d t(number(9), number(10), number(11));
+    const Eigen::Quaterniond q(number(15), number(12), number(13), number(14));
+    if (q.norm() < 1e-9) throw ParseError(where, "qw", "zero quaternion");
+    if (lc.from_keyframe < 0 || lc.to_keyframe < 0) {
+      throw ParseError(where, "from_keyframe", "keyframe ids must be >= 0");
+    }
+    lc.from_to = pose_from_translation_quaternion(t, q);
+    out.push_back(lc);
+  }
+  if (!header_seen) {
+    throw ParseError(path.string() + ":1", "header", "empty file: expected the CSV header");
+  }
+  return out;
+}
+
+}  // namespace wifislam::eval

@@ -1,0 +1,221 @@
+#include "eval/report_writer.hpp"
+
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.hpp"
+#include "core/dataset_format.hpp"
+#include "core/error.hpp"
+#include "eval/plots.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/world_generator.hpp"
+
+namespace wifislam::eval {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string csv_field(const nlohmann::ordered_json& v) {
+  std::string text;
+  if (v.is_string()) {
+    text = v.get<std::string>();
+  } else if (v.is_number_float()) {
+    text = fmt::format("{}", v.get<double>());
+  } else {
+    text = v.dump();
+  }
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string value_text(const nlohmann::ordered_json& v) {
+  if (v.is_number_float()) return fmt::format("{}", v.get<double>());
+  if (v.is_string()) return v.get<std::string>();
+  return v.dump();
+}
+
+}  // namespace
+
+std::string render_metrics_csv(const RunEvaluation& ev) {
+  const nlohmann::ordered_json flat = ev.flat_metrics();
+  std::string header, row;
+  bool first = true;
+  for (const auto& [key, value] : flat.items()) {
+    header += (first ? "" : ",") + key;
+    row += (first ? "" : ",") + csv_field(value);
+    first = false;
+  }
+  return header + "\n" + row + "\n";
+}
+
+std::string render_report_markdown(const RunEvaluation& ev, const std::vector<std::string>& notes) {
+  std::string md;
+  auto line = [&md](const std::string& s = "") { md += s + "\n"; };
+  line("# SLAM run evaluation");
+  line();
+  line(fmt::format("- run: `{}`{}", ev.run_dir,
+                   ev.frontend.empty() ? ""
+                                       : fmt::format(" (front end `{}`{})", ev.frontend,
+                                                     ev.wifi_run ? ", with Wi-Fi" : "")));
+  line(fmt::format("- ground truth: `{}`", ev.dataset_dir));
+  line();
+  line("## Summary");
+  line();
+  line("| metric | value |");
+  line("| --- | --- |");
+  line(fmt::format("| trajectory error (ATE RMSE) | {:.4f} m |", ev.ate_rmse_m));
+  line(fmt::format("| false positive loop closures | {} of {} ({:.1f} %) |", ev.false_positives,
+                   ev.loop_closures_detected, ev.false_positive_pct));
+  line(fmt::format("| false negatives (missed revisit episodes) | {} of {} ({:.1f} %) |",
+                   ev.false_negatives, ev.revisit_episodes, ev.false_negative_pct));
+  line(fmt::format("| loop-closure detection time | {:.3f} s |", ev.loop_closure_detection_s));
+  line(fmt::format("| Wi-Fi overhead (clustering + cluster management) | {:.4f} s |",
+                   ev.wifi_overhead_s));
+  line(fmt::format("| optimisation time | {:.3f} s |", ev.optimisation_s));
+  line(fmt::format("| pipeline total / wall-clock | {:.3f} s / {:.3f} s |", ev.total_s, ev.wall_s));
+  line(fmt::format("| keyframes / candidate comparisons | {} / {} |", ev.keyframes,
+                   ev.candidate_comparisons));
+  if (ev.wifi_run) line(fmt::format("| Wi-Fi clusters | {} |", ev.wifi_clusters));
+  line();
+  line("## Trajectory error");
+  line();
+  line(fmt::format(
+      "{} estimated poses, {} ground-truth poses, {} associated (stamps closer than {} s, TUM "
+      "associate rule). Estimate aligned onto ground truth with Umeyama ({}{}).",
+      ev.frames_estimated, ev.frames_ground_truth, ev.frames_associated,
+      ev.options.max_time_difference_s, ev.options.align_scale ? "with scale" : "rigid, no scale",
+      ev.options.align_scale ? fmt::format(", scale {:.5f}", ev.alignment.scale) : ""));
+  line();
+  line("| ATE | RMSE | mean | median | max |");
+  line("| --- | --- | --- | --- | --- |");
+  line(fmt::format("| metres | {:.4f} | {:.4f} | {:.4f} | {:.4f} |", ev.ate_rmse_m, ev.ate_mean_m,
+                   ev.ate_median_m, ev.ate_max_m));
+  line();
+  line(fmt::format(
+      "RPE over {} m of ground-truth travel ({} pairs): {:.4f} m/m translation, {:.3f} deg/m "
+      "rotation (mean error / segment length); RMSE {:.4f} m, {:.3f} deg.",
+      ev.options.rpe_delta_m, ev.rpe_pairs, ev.rpe_trans_per_m, ev.rpe_rot_deg_per_m,
+      ev.rpe_trans_rmse_m, ev.rpe_rot_rmse_deg));
+  line();
+  line("## Loop closures");
+  line();
+  const EvalOptions& o = ev.options;
+  line(
+      fmt::format("Views overlap: ground-truth cameras at most {} m apart with optical axes "
+                  "within {} deg, and (with depth) at least {:.0f} % of one view's depth "
+                  "samples (every {} px) land in the other view with its depth agreeing within "
+                  "max({} m, {:.0f} %) (lookup grid {} px).",
+                  o.overlap_max_distance_m, o.overlap_max_angle_deg, 100 * o.overlap_min_fraction,
+                  o.overlap_sample_stride_px, o.overlap_depth_tolerance_m,
+                  100 * o.overlap_depth_tolerance_rel, o.overlap_lookup_stride_px));
+  line(fmt::format("Overlap judged by: **{}**.", ev.overlap_method));
+  line(
+      fmt::format("True revisit: overlapping keyframes with at least {} m of ground-truth travel "
+                  "between them; an episode is a run of revisiting keyframes (gaps of up to {} "
+                  "keyframes allowed). A detected closure is correct when the views overlap and "
+                  "its relative pose is within {} m and {} deg of the ground truth.",
+                  o.revisit_min_path_m, o.episode_max_gap_keyframes, o.loop_max_translation_error_m,
+                  o.loop_max_rotation_error_deg));
+  line();
+  line(
+      fmt::format("{} detected, {} correct, {} false positives ({:.1f} %); {} revisit episodes "
+                  "({} revisiting keyframes), {} missed ({:.1f} %).",
+                  ev.loop_closures_detected, ev.loop_closures_correct, ev.false_positives,
+                  ev.false_positive_pct, ev.revisit_episodes, ev.revisit_keyframes,
+                  ev.false_negatives, ev.false_negative_pct));
+  if (!ev.loop_closure_score.closures.empty()) {
+    line();
+    line(
+        "| from kf | to kf | role | inliers | true distance m | angle deg | overlap | "
+        "trans err m | rot err deg | verdict |");
+    line("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    for (const ScoredLoopClosure& c : ev.loop_closure_score.closures) {
+      line(fmt::format(
+          "| {} | {} | {} | {} | {:.2f} | {:.1f} | {} | {:.3f} | {:.2f} | {} |",
+          c.detected.from_keyframe, c.detected.to_keyframe, c.detected.role, c.detected.inliers,
+          c.overlap.distance_m, c.overlap.angle_deg,
+          c.overlap.depth_checked ? fmt::format("{:.2f}", c.overlap.fraction) : std::string("-"),
+          c.translation_error_m, c.rotation_error_deg, c.verdict));
+    }
+  }
+  if (!ev.loop_closure_score.episodes.empty()) {
+    line();
+    line("| episode | keyframes | revisiting | partner of first | travel between m | detected |");
+    line("| --- | --- | --- | --- | --- | --- |");
+    for (std::size_t i = 0; i < ev.loop_closure_score.episodes.size(); ++i) {
+      const RevisitEpisode& e = ev.loop_closure_score.episodes[i];
+      line(fmt::format("| {} | {}-{} | {} | {} | {:.1f} | {} |", i, e.first_keyframe,
+                       e.last_keyframe, e.revisiting_keyframes, e.first_partner,
+                       e.first_partner_path_m, e.detected ? "yes" : "**no (FN)**"));
+    }
+  }
+  line();
+  line("## Time");
+  line();
+  line("Wall-clock of the run per module (timing.json) and work counters (machine-independent).");
+  line();
+  line("| module | seconds | calls |");
+  line("| --- | --- | --- |");
+  for (const auto& [name, m] : ev.timing.modules) {
+    line(fmt::format("| {} | {:.4f} | {} |", name, m.total_s, m.calls));
+  }
+  line();
+  line("| counter | value |");
+  line("| --- | --- |");
+  for (const auto& [name, v] : ev.timing.counters) line(fmt::format("| {} | {} |", name, v));
+  line();
+  line("## Thresholds");
+  line();
+  line("| threshold | value | meaning |");
+  line("| --- | --- | --- |");
+  const nlohmann::ordered_json thresholds = ev.options.to_json();
+  for (const auto& [name, description] : option_descriptions()) {
+    line(fmt::format("| `{}` | {} | {} |", name, value_text(thresholds[name]), description));
+  }
+  if (!notes.empty()) {
+    line();
+    line("## Notes");
+    line();
+    for (const std::string& n : notes) line("- " + n);
+  }
+  return md;
+}
+
+void write_evaluation(const fs::path& out_dir, const RunEvaluation& ev, const fs::path& run_dir,
+                      const fs::path& dataset_dir, bool plots) {
+  (void)run_dir;  // everything the plots need from the run is in `ev` already
+  std::vector<std::string> notes;
+  std::optional<World> world;
+  if (plots) {
+    const fs::path scene = dataset_dir / dataset::kScene;
+    if (fs::exists(scene)) {
+      try {
+        world = generate_world(load_scene_file(scene.string()));
+      } catch (const Error& e) {
+        notes.push_back(std::string("plots drawn without floor plan: ") + e.what());
+      }
+    } else {
+      notes.push_back("plots drawn without floor plan: the dataset has no scene.yaml");
+    }
+  }
+  AtomicDirectory out(out_dir, /*overwrite=*/true);
+  const fs::path& dir = out.staging_path();
+  if (plots) {
+    const World* w = world ? &*world : nullptr;
+    for (const char* ext : {".png", ".svg"}) {
+      plot_trajectory(dir / (std::string("trajectory") + ext), ev, w);
+      plot_error_along_path(dir / (std::string("ate_along_path") + ext), ev);
+      if (ev.wifi_run) plot_wifi_clusters(dir / (std::string("wifi_clusters") + ext), ev, w);
+    }
+  }
+  write_file_atomic(dir / "report.md", render_report_markdown(ev, notes));
+  write_file_atomic(dir / "metrics.json", ev.to_ordered_json().dump(1) + "\n");
+  write_file_atomic(dir / "metrics.csv", render_metrics_csv(ev));
+  out.commit();
+}
+
+}  // namespace wifislam::eval

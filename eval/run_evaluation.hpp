@@ -1,0 +1,78 @@
+#pragma once
+// The result of evaluating one SLAM run against its dataset's exact ground truth: the paper's
+// metrics (trajectory RMSE, false positive / false negative loop closures, loop-closure time and
+// Wi-Fi overhead) plus everything needed to explain them (per-closure verdicts, revisit
+// episodes, the aligned path for plots) and the thresholds used.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+
+#include "core/camera_intrinsics.hpp"
+#include "core/timestamp.hpp"
+#include "eval/alignment.hpp"
+#include "eval/eval_options.hpp"
+#include "eval/loop_closure_scoring.hpp"
+#include "eval/timing_table.hpp"
+#include "eval/wifi_clusters_csv.hpp"
+
+namespace wifislam::eval {
+
+/// One associated frame: ground truth, the aligned estimate and the error between them.
+struct PathSample {
+  Timestamp time;
+  Eigen::Vector3d ground_truth_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d estimated_aligned_m = Eigen::Vector3d::Zero();
+  double path_m = 0.0;  // ground-truth path length from the first ground-truth pose
+  double error_m = 0.0;
+};
+
+struct RunEvaluation {
+  std::string run_dir, dataset_dir;
+  std::string frontend;   // from run.json, "" when absent
+  bool wifi_run = false;  // wifi_clusters.csv present
+  EvalOptions options;
+
+  // Trajectory error (ATE after alignment, RPE per metre travelled).
+  std::int64_t frames_estimated = 0, frames_ground_truth = 0, frames_associated = 0;
+  double ate_rmse_m = 0.0, ate_mean_m = 0.0, ate_median_m = 0.0, ate_max_m = 0.0;
+  Alignment alignment;
+  std::int64_t rpe_pairs = 0;
+  double rpe_trans_per_m = 0.0;    // mean |translation error| / path length over delta pairs
+  double rpe_rot_deg_per_m = 0.0;  // mean rotation error [deg] / path length over delta pairs
+  double rpe_trans_rmse_m = 0.0;   // RMSE of the translation errors over rpe_delta_m
+  double rpe_rot_rmse_deg = 0.0;
+
+  // Loop closures.
+  std::int64_t loop_closures_detected = 0, loop_closures_correct = 0, false_positives = 0;
+  double false_positive_pct = 0.0;
+  std::int64_t revisit_episodes = 0, revisit_keyframes = 0, false_negatives = 0;
+  double false_negative_pct = 0.0;
+  bool overlap_used_depth = false;
+  std::string overlap_method;  // how views were judged (depth test, or geometric bound only)
+
+  // Time (seconds, wall-clock of the run) and work.
+  double loop_closure_detection_s = 0.0, wifi_overhead_s = 0.0, optimisation_s = 0.0;
+  double total_s = 0.0, wall_s = 0.0;
+  std::int64_t keyframes = 0, candidate_comparisons = 0;
+  std::int64_t wifi_clusters = 0;
+
+  // Details.
+  TimingTable timing;
+  LoopClosureScore loop_closure_score;
+  std::vector<KeyframeTruth> keyframe_truth;
+  std::vector<PathSample> path;
+  std::vector<WifiCluster> wifi_cluster_list;
+  CameraIntrinsics intrinsics;
+
+  /// Everything (thresholds, metrics, timing, per-closure verdicts, episodes); no per-frame data.
+  nlohmann::json to_json() const;
+  nlohmann::ordered_json to_ordered_json() const;
+  /// One flat level of scalars: the metrics.csv row (thresholds and counters included).
+  nlohmann::ordered_json flat_metrics() const;
+};
+
+}  // namespace wifislam::eval

@@ -1,0 +1,45 @@
+#pragma once
+// The time table of a run, from its timing.json ({"modules": {name: {"total_s", "calls"}},
+// "counters": {...}, "keyframe_searches": [...], "wall_s"}): the paper's loop-closure detection
+// time, Wi-Fi overhead (clustering + cluster management; 0 for a run without Wi-Fi) and
+// optimisation time, with the deterministic work counters beside them (wall-clock depends on the
+// machine, counters do not).
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace wifislam::eval {
+
+struct ModuleTiming {
+  double total_s = 0.0;
+  std::int64_t calls = 0;
+};
+
+struct TimingTable {
+  double loop_closure_detection_s = 0.0;
+  double candidate_selection_s = 0.0;
+  double wifi_clustering_s = 0.0;
+  double wifi_cluster_management_s = 0.0;
+  double wifi_overhead_s = 0.0;  // clustering + cluster management
+  double optimisation_s = 0.0;
+  double total_s = 0.0;  // the pipeline's own "total" module
+  double wall_s = 0.0;   // the whole run, reading input included
+  std::map<std::string, ModuleTiming> modules;
+  std::map<std::string, std::int64_t> counters;
+
+  std::int64_t counter(const std::string& name) const {
+    const auto it = counters.find(name);
+    return it == counters.end() ? 0 : it->second;
+  }
+  nlohmann::ordered_json to_json() const;
+};
+
+/// Throws IoError (unreadable) or ParseError naming the file (and line/column for bad JSON, the
+/// key for a wrong type or a negative time).
+TimingTable read_timing_json(const std::filesystem::path& path);
+
+}  // namespace wifislam::eval

@@ -1,0 +1,88 @@
+#include <fmt/format.h>
+
+#include "eval/plot_canvas.hpp"
+#include "eval/plots.hpp"
+
+namespace wifislam::eval {
+
+namespace {
+constexpr Colour kGroundTruth{0.15, 0.15, 0.15};
+constexpr Colour kEstimate{0.10, 0.35, 0.90};
+constexpr Colour kCorrect{0.10, 0.65, 0.20};
+constexpr Colour kFalse{0.90, 0.10, 0.10};
+}  // namespace
+
+MetricCanvas plan_canvas(const RunEvaluation& ev, const World* world) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
+  auto include = [&](const Eigen::Vector2d& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); };
+  if (world) include(world->plan.bounds_min_m), include(world->plan.bounds_max_m);
+  for (const PathSample& s : ev.path) {
+    include(s.ground_truth_m.head<2>());
+    include(s.estimated_aligned_m.head<2>());
+  }
+  for (const KeyframeTruth& k : ev.keyframe_truth) include(k.ground_truth.translation().head<2>());
+  if (lo.x() > hi.x()) lo = hi = Eigen::Vector2d::Zero();
+  return MetricCanvas(lo, hi, 1200);
+}
+
+void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
+                     const World* world) {
+  const MetricCanvas canvas = plan_canvas(ev, world);
+  render_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
+    if (world) draw_plan_backdrop(cr, canvas, world->plan);
+    std::vector<Eigen::Vector2d> gt, est;
+    for (const PathSample& s : ev.path) {
+      gt.push_back(s.ground_truth_m.head<2>());
+      est.push_back(s.estimated_aligned_m.head<2>());
+    }
+    set_colour(cr, kGroundTruth, 0.8);
+    draw_polyline(cr, canvas, gt, 2.0);
+    set_colour(cr, kEstimate, 0.85);
+    draw_polyline(cr, canvas, est, 2.0);
+    std::int64_t correct = 0, wrong = 0;
+    for (const ScoredLoopClosure& c : ev.loop_closure_score.closures) {
+      const auto& kf = ev.keyframe_truth;
+      const Eigen::Vector2d a = canvas.px(kf[static_cast<std::size_t>(c.detected.from_keyframe)]
+                                              .ground_truth.translation()
+                                              .head<2>());
+      const Eigen::Vector2d b = canvas.px(kf[static_cast<std::size_t>(c.detected.to_keyframe)]
+                                              .ground_truth.translation()
+                                              .head<2>());
+      set_colour(cr, c.correct ? kCorrect : kFalse, 0.9);
+      cairo_set_line_width(cr, c.correct ? 2.0 : 2.5);
+      cairo_move_to(cr, a.x(), a.y());
+      cairo_line_to(cr, b.x(), b.y());
+      cairo_stroke(cr);
+      for (const Eigen::Vector2d& p : {a, b}) {
+        cairo_arc(cr, p.x(), p.y(), 3.0, 0, 2 * M_PI);
+        cairo_fill(cr);
+      }
+      (c.correct ? correct : wrong) += 1;
+    }
+    if (!gt.empty()) {
+      const Eigen::Vector2d start = canvas.px(gt.front());
+      set_colour(cr, kCorrect);
+      cairo_arc(cr, start.x(), start.y(), 6.0, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+    set_colour(cr, {0, 0, 0});
+    draw_text(cr, MetricCanvas::kMarginPx, 28,
+              fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closures ({} false)",
+                          ev.ate_rmse_m, ev.loop_closures_detected, ev.false_positives),
+              18, true);
+    const double x = canvas.plan_right_px() + MetricCanvas::kMarginPx;
+    double y = MetricCanvas::kTitlePx + 14;
+    y = legend_line(cr, x, y, kGroundTruth, 2.0, "ground truth");
+    y = legend_line(cr, x, y, kEstimate, 2.0,
+                    ev.options.align_scale ? "estimate (Sim(3)-aligned)" : "estimate (aligned)");
+    y = legend_line(cr, x, y, kCorrect, 2.0, fmt::format("correct loop closure ({})", correct));
+    y = legend_line(cr, x, y, kFalse, 2.5, fmt::format("false loop closure ({})", wrong));
+    y = legend_dot(cr, x, y, kCorrect, "start");
+    set_colour(cr, {0.3, 0.3, 0.3});
+    draw_text(cr, x, y + 6, "closures drawn between the", 11);
+    draw_text(cr, x, y + 20, "keyframes' true positions", 11);
+    draw_scale_bar(cr, canvas);
+  });
+}
+
+}  // namespace wifislam::eval

@@ -1,0 +1,148 @@
+// Readers of the run folder's files and the options: good files parse, bad ones name the file,
+// the line and the column/key.
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "core/error.hpp"
+#include "eval/eval_options.hpp"
+#include "eval/loop_closure_csv.hpp"
+#include "eval/timing_table.hpp"
+#include "eval/wifi_clusters_csv.hpp"
+
+namespace wifislam::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_temp(const std::string& name, const std::string& text) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("wifislam_eval_files_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / name) << text;
+  return dir / name;
+}
+
+template <typename F>
+std::string error_of(F f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kHeader =
+    "from_keyframe,to_keyframe,from_frame,to_frame,from_time,to_time,role,inliers,"
+    "rms_reprojection_px,tx,ty,tz,qx,qy,qz,qw\n";
+
+TEST(LoopClosureCsv, ReadsRows) {
+  const fs::path p = write_temp(
+      "lc.csv", std::string(kHeader) +
+                    "3,40,30,400,1.000000,13.333333,sampled,57,0.8,0.1,-0.2,0.3,0,0,0.7071068,"
+                    "0.7071068\n");
+  const auto rows = read_loop_closures_csv(p);
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0].from_keyframe, 3);
+  EXPECT_EQ(rows[0].to_keyframe, 40);
+  EXPECT_EQ(rows[0].role, "sampled");
+  EXPECT_EQ(rows[0].inliers, 57);
+  EXPECT_EQ(rows[0].to_time, Timestamp::from_ns(13'333'333'000LL));
+  EXPECT_NEAR(rows[0].from_to.translation().y(), -0.2, 1e-12);
+  EXPECT_NEAR(Eigen::AngleAxisd(rows[0].from_to.linear()).angle(), M_PI / 2, 1e-6);
+  EXPECT_EQ(rows[0].line, 2);
+}
+
+TEST(LoopClosureCsv, BadRowsNameFileLineAndColumn) {
+  const fs::path p = write_temp(
+      "lc_bad.csv", std::string(kHeader) + "3,40,30,400,1.0,13.3,sampled,57,0.8,nan,0,0,0,0,0,1\n");
+  const std::string e = error_of([&] { read_loop_closures_csv(p); });
+  EXPECT_NE(e.find("lc_bad.csv:2"), std::string::npos) << e;
+  EXPECT_NE(e.find("tx"), std::string::npos) << e;
+  const fs::path short_row = write_temp("lc_short.csv", std::string(kHeader) + "3,40\n");
+  EXPECT_NE(error_of([&] { read_loop_closures_csv(short_row); }).find("lc_short.csv:2"),
+            std::string::npos);
+  const fs::path header = write_temp("lc_header.csv", "a,b\n");
+  EXPECT_NE(error_of([&] { read_loop_closures_csv(header); }).find("lc_header.csv:1"),
+            std::string::npos);
+}
+
+TEST(WifiClustersCsv, ReadsClustersAndSignatures) {
+  const fs::path p = write_temp("clusters.csv",
+                                "cluster_id,founder_keyframe,keyframes,representative_signature\n"
+                                "0,0,0 1 2 5,02:1a:11:00:00:30=-61.5;02:1a:11:00:00:40=-70\n"
+                                "1,3,3 4,\n");
+  const auto c = read_wifi_clusters_csv(p);
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].keyframes, (std::vector<std::int64_t>{0, 1, 2, 5}));
+  ASSERT_EQ(c[0].representative_signature.size(), 2u);
+  EXPECT_EQ(c[0].representative_signature[0].first, "02:1a:11:00:00:30");
+  EXPECT_DOUBLE_EQ(c[0].representative_signature[0].second, -61.5);
+  EXPECT_EQ(c[1].founder_keyframe, 3);
+  EXPECT_TRUE(c[1].representative_signature.empty());
+  const fs::path bad = write_temp("clusters_bad.csv",
+                                  "cluster_id,founder_keyframe,keyframes,representative_signature\n"
+                                  "0,0,0 x,02:1a:11:00:00:30=-61.5\n");
+  const std::string e = error_of([&] { read_wifi_clusters_csv(bad); });
+  EXPECT_NE(e.find("clusters_bad.csv:2"), std::string::npos) << e;
+  EXPECT_NE(e.find("keyframes"), std::string::npos) << e;
+}
+
+TEST(TimingTable, WifiOverheadIsClusteringPlusManagement) {
+  const fs::path p = write_temp("timing.json", R"({
+    "modules": {"loop_closure_detection": {"total_s": 2.5, "calls": 10},
+                "wifi_clustering": {"total_s": 0.01, "calls": 10},
+                "wifi_cluster_management": {"total_s": 0.005, "calls": 10},
+                "optimisation": {"total_s": 0.75, "calls": 3},
+                "total": {"total_s": 9.0, "calls": 100}},
+    "counters": {"candidate_comparisons": 42, "keyframes": 10},
+    "keyframe_searches": [], "wall_s": 11.5})");
+  const TimingTable t = read_timing_json(p);
+  EXPECT_DOUBLE_EQ(t.loop_closure_detection_s, 2.5);
+  EXPECT_DOUBLE_EQ(t.wifi_overhead_s, 0.015);
+  EXPECT_DOUBLE_EQ(t.optimisation_s, 0.75);
+  EXPECT_DOUBLE_EQ(t.total_s, 9.0);
+  EXPECT_DOUBLE_EQ(t.wall_s, 11.5);
+  EXPECT_EQ(t.counter("candidate_comparisons"), 42);
+  EXPECT_EQ(t.counter("absent"), 0);
+
+  const fs::path vanilla =
+      write_temp("timing_vanilla.json", R"({"modules": {"total": {"total_s": 1, "calls": 1}}})");
+  EXPECT_DOUBLE_EQ(read_timing_json(vanilla).wifi_overhead_s, 0.0);
+  const fs::path broken = write_temp("timing_broken.json", "{\"modules\": {\n  \"x\": [}");
+  const std::string e = error_of([&] { read_timing_json(broken); });
+  EXPECT_NE(e.find("timing_broken.json"), std::string::npos) << e;
+  EXPECT_NE(e.find("line 2"), std::string::npos) << e;
+  const fs::path negative =
+      write_temp("timing_neg.json", R"({"modules": {"total": {"total_s": -1}}})");
+  EXPECT_NE(error_of([&] { read_timing_json(negative); }).find("modules.total.total_s"),
+            std::string::npos);
+}
+
+TEST(EvalOptions, SetAndValidate) {
+  EvalOptions o;
+  set_option(o, "revisit_min_path_m=12.5");
+  set_option(o, "align_scale=true");
+  set_option(o, "episode_max_gap_keyframes=4");
+  EXPECT_DOUBLE_EQ(o.revisit_min_path_m, 12.5);
+  EXPECT_TRUE(o.align_scale);
+  EXPECT_EQ(o.episode_max_gap_keyframes, 4);
+  EXPECT_EQ(o.to_json()["revisit_min_path_m"], 12.5);
+  EXPECT_NE(error_of([&] { set_option(o, "revisit_min_pth_m=3"); }).find("unknown"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { set_option(o, "overlap_min_fraction=2"); }).find("overlap_min_fraction"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { set_option(o, "rpe_delta_m=abc"); }).find("not a number"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { set_option(o, "episode_max_gap_keyframes=1.5"); }).find("integer"),
+            std::string::npos);
+  // Every threshold appears in the JSON (and so in every output).
+  EXPECT_EQ(o.to_json().size(), option_descriptions().size());
+}
+
+}  // namespace
+}  // namespace wifislam::eval

@@ -1,0 +1,92 @@
+// Cross-check against the TUM RGB-D benchmark's evaluate_ate.py definition: a faithful Python
+// port (reference/evaluate_ate.py, numpy) reads the same two files; association count and RMSE
+// must agree.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "core/rng.hpp"
+#include "core/tum_trajectory.hpp"
+#include "eval/association.hpp"
+#include "eval/trajectory_error.hpp"
+
+namespace wifislam::eval {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string run_capture(const std::string& command) {
+  std::unique_ptr<FILE, decltype(&pclose)> pipe(popen(command.c_str(), "r"), &pclose);
+  if (!pipe) return "";
+  std::string out;
+  char buf[256];
+  while (fgets(buf, sizeof buf, pipe.get())) out += buf;
+  return out;
+}
+
+TEST(TumReference, RmseMatchesEvaluateAtePort) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("wifislam_eval_tum_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  // Ground truth: a random walk at 30 Hz. Estimate: rotated and moved, noisy, its stamps 3 ms
+  // late and every seventh frame missing (association has work to do).
+  Rng rng = Rng::stream(11, "eval_test/tum");
+  Trajectory gt, est;
+  Eigen::Vector3d p(1, 2, 0.5);
+  double yaw = 0;
+  Pose t = Pose::Identity();
+  t.linear() = Eigen::AngleAxisd(1.1, Eigen::Vector3d(0.2, 0.1, 1).normalized()).toRotationMatrix();
+  t.translation() = Eigen::Vector3d(-4, 7, 1.5);
+  for (int i = 0; i < 900; ++i) {
+    yaw += rng.uniform(-0.05, 0.05);
+    p += Eigen::Vector3d(0.02 * std::cos(yaw), 0.02 * std::sin(yaw), rng.uniform(-0.002, 0.002));
+    const Pose g = camera_pose_from_planar(p.x(), p.y(), yaw, p.z());
+    const Timestamp stamp = Timestamp::from_ns(1'000'000'000LL + i * 33'333'333LL);
+    gt.push_back(StampedPose::from_pose(stamp, g));
+    if (i % 7 == 3) continue;
+    Pose e = g;
+    e.translation() +=
+        Eigen::Vector3d(rng.normal(0, 0.04), rng.normal(0, 0.04), rng.normal(0, 0.01));
+    est.push_back(StampedPose::from_pose(Timestamp::from_ns(stamp.ns + 3'000'000), t * e));
+  }
+  write_tum_trajectory((dir / "gt.txt").string(), gt);
+  write_tum_trajectory((dir / "est.txt").string(), est);
+
+  // Ours, from the files.
+  const Trajectory gt_read = read_tum_trajectory((dir / "gt.txt").string());
+  const Trajectory est_read = read_tum_trajectory((dir / "est.txt").string());
+  std::vector<Timestamp> gt_times, est_times;
+  for (const auto& s : gt_read) gt_times.push_back(s.time);
+  for (const auto& s : est_read) est_times.push_back(s.time);
+  const auto pairs = associate_by_time(gt_times, est_times, 0.02);
+  std::vector<Pose> a, b;
+  for (const auto& m : pairs) {
+    a.push_back(est_read[m.second].pose());
+    b.push_back(gt_read[m.first].pose());
+  }
+  const AbsoluteTrajectoryError ate = absolute_trajectory_error(a, b, false);
+
+  // Theirs.
+  const std::string out =
+      run_capture(std::string(WIFISLAM_PYTHON) + " " + WIFISLAM_EVAL_REFERENCE_SCRIPT + " " +
+                  (dir / "gt.txt").string() + " " + (dir / "est.txt").string() + " 2>&1");
+  std::istringstream in(out);
+  std::size_t matches = 0;
+  double rmse = -1;
+  in >> matches >> rmse;
+  ASSERT_GT(rmse, 0.0) << "reference script failed: " << out;
+  EXPECT_EQ(matches, pairs.size());
+  EXPECT_EQ(pairs.size(), est.size());
+  EXPECT_NEAR(ate.rmse_m, rmse, 1e-9 * rmse);
+  EXPECT_GT(rmse, 0.03);  // the noise is there: not a trivially zero comparison
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wifislam::eval
