@@ -46,7 +46,7 @@ struct ViewOverlap {
   double angle_deg = 0.0;  // between the optical axes
   bool within_geometric_bound = false;
   bool depth_checked = false;  // false: geometric bound only (no depth, or bound failed)
-  double fraction = 0.0;       // max of both directions; 0 when not checked
+  double fraction = 0.0;       // A in B, or B in A when A in B falls short; 0 = not checked
   bool overlap = false;
 };
 
