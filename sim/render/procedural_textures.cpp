@@ -249,31 +249,42 @@ TextureImage make_wall(const std::string& theme, Rng& rng) {
   return t;
 }
 
+// Floors and ceilings repeat with a long period: with a short one (a 2 m terrazzo tile, say) the
+// speckles ORB locks onto repeat every couple of metres, and every corridor aliases with itself
+// at that spacing whatever the walls look like. 12 m (floor) and 9.6 m (ceiling) keep look-alike
+// floor patches as far apart as a corridor, at the same texel size as before (128 / 213 px/m).
+constexpr double kFloorPeriodM = 12.0;
+constexpr int kFloorSizePx = 1536;
+constexpr double kCeilingPeriodM = 9.6;
+constexpr int kCeilingSizePx = 2048;
+
 TextureImage make_floor(const std::string& theme, Rng& rng) {
   TextureImage t;
-  t.period_u_m = t.period_v_m = 2.0;
-  constexpr int size = 256;
+  t.period_u_m = t.period_v_m = kFloorPeriodM;
+  constexpr int size = kFloorSizePx;
+  constexpr int metres = static_cast<int>(kFloorPeriodM);
   if (theme == "carpet") {
     const cv::Scalar base =
         jitter(pick({rgb(90, 95, 110), rgb(110, 80, 70), rgb(80, 100, 85)}, rng), 8, rng);
     t.bgr = cv::Mat(size, size, CV_8UC3, base);
-    add_brightness(t.bgr, periodic_noise(size, size, 32, 32, rng), 10.0);
+    add_brightness(t.bgr, periodic_noise(size, size, 16 * metres, 16 * metres, rng), 10.0);
     add_grain(t.bgr, 14.0, rng);
     return t;
   }
   const cv::Scalar base =
       jitter(pick({rgb(200, 196, 186), rgb(180, 182, 186), rgb(196, 184, 166)}, rng), 8, rng);
   t.bgr = cv::Mat(size, size, CV_8UC3, rgb(110, 108, 104));  // grout
-  const int tile = size / 4;                                 // 0.5 m tiles
-  for (int ty = 0; ty < 4; ++ty) {
-    for (int tx = 0; tx < 4; ++tx) {
+  constexpr int tiles = 2 * metres;                          // 0.5 m tiles
+  const int tile = size / tiles;
+  for (int ty = 0; ty < tiles; ++ty) {
+    for (int tx = 0; tx < tiles; ++tx) {
       cv::rectangle(t.bgr, {tx * tile + 1, ty * tile + 1},
                     {tx * tile + tile - 2, ty * tile + tile - 2}, jitter(base, 6.0, rng),
                     cv::FILLED);
     }
   }
-  add_brightness(t.bgr, periodic_noise(size, size, 16, 16, rng), 6.0);
-  for (int i = 0; i < 400; ++i) {  // terrazzo speckles
+  add_brightness(t.bgr, periodic_noise(size, size, 8 * metres, 8 * metres, rng), 6.0);
+  for (int i = 0; i < 100 * metres * metres; ++i) {  // terrazzo speckles, 100 per m^2
     const cv::Point p(static_cast<int>(rng.uniform_int(0, size - 1)),
                       static_cast<int>(rng.uniform_int(0, size - 1)));
     cv::circle(t.bgr, p, 1, scaled(base, rng.uniform(0.5, 0.85)), cv::FILLED);
@@ -283,24 +294,25 @@ TextureImage make_floor(const std::string& theme, Rng& rng) {
 
 TextureImage make_ceiling(const std::string& theme, Rng& rng) {
   TextureImage t;
-  t.period_u_m = t.period_v_m = 1.2;
-  constexpr int size = 256;
+  t.period_u_m = t.period_v_m = kCeilingPeriodM;
+  constexpr int size = kCeilingSizePx;
+  constexpr int panels = static_cast<int>(kCeilingPeriodM / 0.6 + 0.5);  // 0.6 m panels
   const cv::Scalar base = jitter(rgb(236, 236, 230), 4.0, rng);
   t.bgr = cv::Mat(size, size, CV_8UC3, base);
   if (theme == "plain") {
-    add_brightness(t.bgr, periodic_noise(size, size, 8, 8, rng), 4.0);
+    add_brightness(t.bgr, periodic_noise(size, size, 4 * panels, 4 * panels, rng), 4.0);
     add_grain(t.bgr, 2.0, rng);
     return t;
   }
-  for (int i = 0; i < 1500; ++i) {  // perforated mineral-fibre panels
+  for (int i = 0; i < 375 * panels * panels; ++i) {  // perforated mineral-fibre panels
     const cv::Point p(static_cast<int>(rng.uniform_int(0, size - 1)),
                       static_cast<int>(rng.uniform_int(0, size - 1)));
     cv::circle(t.bgr, p, 0, scaled(base, 0.8), cv::FILLED);
   }
-  const int half = size / 2;  // 0.6 m panels in a metal grid
-  for (int k = 0; k < 2; ++k) {
-    cv::rectangle(t.bgr, {k * half, 0}, {k * half + 2, size - 1}, rgb(175, 175, 172), cv::FILLED);
-    cv::rectangle(t.bgr, {0, k * half}, {size - 1, k * half + 2}, rgb(175, 175, 172), cv::FILLED);
+  const int panel = size / panels;  // in a metal grid
+  for (int k = 0; k < panels; ++k) {
+    cv::rectangle(t.bgr, {k * panel, 0}, {k * panel + 2, size - 1}, rgb(175, 175, 172), cv::FILLED);
+    cv::rectangle(t.bgr, {0, k * panel}, {size - 1, k * panel + 2}, rgb(175, 175, 172), cv::FILLED);
   }
   return t;
 }

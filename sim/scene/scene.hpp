@@ -85,11 +85,24 @@ struct Landmark {
   std::string kind = "poster";
 };
 
+/// What the shared look of aliased segments is shared over.
+enum class AliasingScope {
+  /// One look for every aliased segment: neighbouring segments of a wall repeat each other, so a
+  /// corridor is self-similar every `segment_length_m` (the hardest case for any place
+  /// recognition, Wi-Fi included).
+  kSegment,
+  /// One look per position along a wall (1st segment, 2nd, ...) of a given length: walls of equal
+  /// length are copies of one another while a wall never repeats within itself, i.e. corridors
+  /// that all look alike but are distinct inside. Look-alike places are then a corridor apart.
+  kPosition,
+};
+
 struct Appearance {
   /// 1 = every wall segment looks identical (same paint, same posters, same lights); 0 = every
   /// segment visually unique. Segments are `segment_length_m` pieces of wall; each segment
   /// independently uses the shared look with probability `aliasing`, else its own.
   double aliasing = 0.5;
+  AliasingScope aliasing_scope = AliasingScope::kSegment;
   double segment_length_m = 4.0;
   AppearanceThemes themes;
   double posters_per_10m = 1.5;  // expected posters per 10 m of corridor wall

@@ -124,6 +124,9 @@ void visit(V& v, Landmark& l) {
 template <class V>
 void visit(V& v, Appearance& a) {
   v.number("aliasing", a.aliasing, kUnit);
+  v.choice("aliasing_scope", a.aliasing_scope,
+           Names<AliasingScope>{{AliasingScope::kSegment, "segment"},
+                                {AliasingScope::kPosition, "position"}});
   v.number("segment_length_m", a.segment_length_m, Limits{0.5, 100.0});
   v.object("themes", a.themes);
   v.number("posters_per_10m", a.posters_per_10m, Limits{0.0, 20.0});

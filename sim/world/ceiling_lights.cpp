@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rng.hpp"
 #include "sim/world/plan_queries.hpp"
 
 namespace wifislam {
@@ -26,10 +27,16 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
     light.size_m = size;
     lights.push_back(light);
   };
+  // Along corridors each light is shifted by up to 20 % of the spacing (seeded): with a strictly
+  // periodic row, any two places a few spacings apart share an identical constellation of lights,
+  // enough for a feature matcher to "recognise" one as the other whatever the walls look like.
+  Rng rng = Rng::stream(scene.seed, "appearance/lights");
   for (const CorridorLayout& c : layout.corridors) {
     const int n = std::max(1, static_cast<int>(std::floor(c.length_m / spacing)));
-    for (int k = 0; k < n; ++k)
-      try_add(c.rect.point((k + 0.5) * c.length_m / n, 0.0), 0.5 * spacing);
+    for (int k = 0; k < n; ++k) {
+      const double shift = n > 1 ? rng.uniform(-0.2, 0.2) : 0.0;
+      try_add(c.rect.point((k + 0.5 + shift) * c.length_m / n, 0.0), 0.5 * spacing);
+    }
   }
   for (const OpenArea& area : scene.open_areas) {
     Eigen::Vector2d lo = area.polygon_m[0], hi = area.polygon_m[0];

@@ -147,20 +147,26 @@ class MeshWriter {
         Eigen::Vector3d(normal2.x(), normal2.y(), 0), attr);
   }
 
-  /// A horizontal rectangle (corners in order) at height z facing up or down.
+  /// A horizontal rectangle (corners in order) at height z facing up or down. Its uv is the plan
+  /// position (metres) turned by `uv_rotation_rad`.
   void add_horizontal(const std::vector<Eigen::Vector2d>& corners, double z, bool up,
-                      const Attributes& attr) {
+                      const Attributes& attr, double uv_rotation_rad = 0.0) {
     std::vector<Eigen::Vector3d> pts;
+    std::vector<Eigen::Vector2d> uvs;
     std::vector<std::array<int, 3>> tris;
-    for (const auto& c : corners) pts.emplace_back(c.x(), c.y(), z);
+    const Eigen::Rotation2Dd turn(uv_rotation_rad);
+    for (const auto& c : corners) {
+      pts.emplace_back(c.x(), c.y(), z);
+      uvs.push_back(uv_rotation_rad == 0.0 ? c : Eigen::Vector2d(turn * c));
+    }
     for (std::size_t i = 1; i + 1 < corners.size(); ++i)
       tris.push_back({0, static_cast<int>(i), static_cast<int>(i + 1)});
-    add(pts, corners, tris, Eigen::Vector3d(0, 0, up ? 1 : -1), attr);
+    add(pts, uvs, tris, Eigen::Vector3d(0, 0, up ? 1 : -1), attr);
   }
 
   void add_triangles_2d(const std::vector<std::array<Eigen::Vector2d, 3>>& tris, double z, bool up,
-                        const Attributes& attr) {
-    for (const auto& t : tris) add_horizontal({t[0], t[1], t[2]}, z, up, attr);
+                        const Attributes& attr, double uv_rotation_rad = 0.0) {
+    for (const auto& t : tris) add_horizontal({t[0], t[1], t[2]}, z, up, attr, uv_rotation_rad);
   }
 
  private:
@@ -277,10 +283,15 @@ Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
     Attributes floor;
     floor.surface = SurfaceKind::kFloor;
     floor.material = WallMaterial::kConcrete;
-    writer.add_triangles_2d(tris, 0.0, true, floor);
+    // Floor and ceiling textures tile (12 m and 9.6 m, see procedural_textures.cpp). Laid at an
+    // angle to the plan axes, a shift along a corridor (x or y) maps the tiling onto itself only
+    // after hundreds of metres, so no two places of a corridor share a floor or ceiling pattern.
+    constexpr double kFloorUvRotationRad = 23.0 * M_PI / 180.0;
+    constexpr double kCeilingUvRotationRad = 37.0 * M_PI / 180.0;
+    writer.add_triangles_2d(tris, 0.0, true, floor, kFloorUvRotationRad);
     Attributes ceiling;
     ceiling.surface = SurfaceKind::kCeiling;
-    writer.add_triangles_2d(tris, height, false, ceiling);
+    writer.add_triangles_2d(tris, height, false, ceiling, kCeilingUvRotationRad);
   }
 
   // Door frames on both faces of every door; lintels over open doors.

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 #include "core/rng.hpp"
 #include "sim/world/plan_queries.hpp"
@@ -235,6 +237,35 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
   Rng rng = Rng::stream(scene.seed, "appearance/segments");
   const double segment_m = std::max(0.1, scene.appearance.segment_length_m);
   int next_variant = 1;
+  // kPosition: the shared look of the k-th segment_m-long stretch of a wall, counted from the
+  // wall's start in the direction of its faces (interior faces have free space on their left, so
+  // two walls that are copies of each other under a rotation count the same way).
+  const auto line_key = [&](std::size_t i) {
+    const Eigen::Vector2d d = pieces[i].dir();
+    return std::tuple<int, long, long>(walls.find(static_cast<int>(i)), std::lround(d.x() * 1e3),
+                                       std::lround(d.y() * 1e3));
+  };
+  std::map<std::tuple<int, long, long>, std::pair<double, double>> line_extent;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (exterior[i]) continue;
+    const double s = pieces[i].a.dot(pieces[i].dir());
+    const double e = pieces[i].b.dot(pieces[i].dir());
+    const auto [it, inserted] = line_extent.emplace(line_key(i), std::pair(s, e));
+    it->second = {std::min(it->second.first, s), std::max(it->second.second, e)};
+  }
+  // Same position on a wall of the same length (to 0.1 m): same look. Keying by length too keeps
+  // walls of different lengths (a rail and a rung) from aliasing with each other.
+  std::map<std::pair<long, int>, int> variant_at_position;
+  const auto shared_variant = [&](std::size_t piece, const Eigen::Vector2d& mid) {
+    if (scene.appearance.aliasing_scope == AliasingScope::kSegment) return 0;
+    const auto [start_m, end_m] = line_extent.at(line_key(piece));
+    const int position =
+        static_cast<int>(std::floor((mid.dot(pieces[piece].dir()) - start_m) / segment_m));
+    const auto [it, inserted] =
+        variant_at_position.emplace(std::pair(std::lround((end_m - start_m) * 10), position), 0);
+    if (inserted) it->second = next_variant++;
+    return it->second;
+  };
   plan.wall_faces.clear();
   plan.appearance_segments.clear();
   for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -258,7 +289,9 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
       const Eigen::Vector2d end =
           k + 1 == count ? p.b : p.a + (p.b - p.a) * (double(k + 1) / count);
       AppearanceSegment segment;
-      segment.variant = rng.bernoulli(scene.appearance.aliasing) ? 0 : next_variant++;
+      segment.variant = rng.bernoulli(scene.appearance.aliasing)
+                            ? shared_variant(i, 0.5 * (start + end))
+                            : next_variant++;
       face.appearance_segment = static_cast<int>(plan.appearance_segments.size());
       plan.appearance_segments.push_back(segment);
       face.a_m = start;
