@@ -50,6 +50,8 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
        "new keyframe after this much rotation (rad)"},
       {"loop_min_keyframe_gap", &o.tracking.loop_min_keyframe_gap,
        "keyframes back from which an accepted comparison is a loop closure"},
+      {"loop_min_path_m", &o.tracking.loop_min_path_m,
+       "estimated path length back from which an accepted comparison is a loop closure (m)"},
       {"relocalisation_keyframes", &o.tracking.relocalisation_keyframes,
        "recent keyframes tried when tracking is lost"},
       {"odometry_edges", &o.tracking.odometry_edges,
@@ -152,6 +154,7 @@ void validate(const SlamOptions& o) {
   require(o.tracking.keyframe_max_translation_m > 0, "keyframe_max_translation_m must be > 0");
   require(o.tracking.keyframe_max_rotation_rad > 0, "keyframe_max_rotation_rad must be > 0");
   require(o.tracking.loop_min_keyframe_gap >= 1, "loop_min_keyframe_gap must be >= 1");
+  require(o.tracking.loop_min_path_m >= 0, "loop_min_path_m must be >= 0");
   require(o.tracking.relocalisation_keyframes >= 0, "relocalisation_keyframes must be >= 0");
   require(o.tracking.odometry_sigma_m > 0 && o.tracking.odometry_sigma_rad > 0 &&
               o.tracking.weak_sigma_m > 0 && o.tracking.weak_sigma_rad > 0,

@@ -28,6 +28,10 @@ struct TrackingOptions {
   /// Accepted comparisons with keyframes at least this many keyframes back are loop closures
   /// (edge type "loop", optimisation triggered); nearer ones are ordinary visual edges.
   int loop_min_keyframe_gap = 15;
+  /// ... and that lie at least this far back along the estimated path (tracking estimate at
+  /// keyframe creation). Nearer matches are ordinary visual edges. 10 m = the evaluation's
+  /// `revisit_min_path_m`, so "loop closure" means the same on both sides.
+  double loop_min_path_m = 10.0;
   /// When tracking is lost, also try this many recent keyframes (relocalisation).
   int relocalisation_keyframes = 5;
   /// Add a wheel-odometry edge between consecutive keyframes whenever odometry is available.

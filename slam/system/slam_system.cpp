@@ -117,6 +117,10 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
   frames_.push_back({features.time, features.frame_index, id, Pose::Identity()});
   keyframe_features_.push_back(std::move(features));
   keyframe_odometry_.push_back(odometry_camera);
+  keyframe_path_m_.push_back(
+      previous < 0 ? 0.0
+                   : keyframe_path_m_.back() +
+                         (initial.translation() - graph_.node(previous).pose.translation()).norm());
   last_tracked_.reset();
   if (tracking) {
     graph_.add_edge({tracking->from, id, EdgeType::kVisual, tracking->from_to,
@@ -159,7 +163,12 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
           compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current);
       ComparisonOutcome outcome{candidate, t.accepted, t.inliers, EdgeType::kVisual};
       if (t.accepted) {
-        const bool loop = id - candidate.keyframe >= options_.tracking.loop_min_keyframe_gap;
+        // A loop closure reaches back in time *and* in space: keyframes are dense when the view
+        // changes fast, so an id gap alone would call a match 2 m further down a corridor a loop.
+        const bool loop = id - candidate.keyframe >= options_.tracking.loop_min_keyframe_gap &&
+                          keyframe_path_m_.back() -
+                                  keyframe_path_m_[static_cast<std::size_t>(candidate.keyframe)] >=
+                              options_.tracking.loop_min_path_m;
         outcome.edge_type = loop ? EdgeType::kLoop : EdgeType::kVisual;
         graph_.add_edge(
             {candidate.keyframe, id, outcome.edge_type, t.a_from_b, t.information, t.inliers});

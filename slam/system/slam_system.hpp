@@ -108,6 +108,7 @@ class SlamSystem {
   PoseGraph graph_;
   std::vector<FrameFeatures> keyframe_features_;
   std::vector<std::optional<Pose>> keyframe_odometry_;  // camera pose in the odometry frame
+  std::vector<double> keyframe_path_m_;  // estimated distance travelled up to each keyframe
   std::vector<FramePoseRecord> frames_;
   std::vector<LoopClosureRecord> loop_closures_;
   std::optional<TrackedFrame> last_tracked_;
