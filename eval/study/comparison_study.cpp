@@ -1,0 +1,343 @@
+#include "eval/study/comparison_study.hpp"
+
+#include <atomic>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.hpp"
+#include "core/dataset_reader.hpp"
+#include "core/error.hpp"
+#include "eval/evaluate_run.hpp"
+#include "eval/report_writer.hpp"
+#include "sim/generate/dataset_writer.hpp"
+#include "slam/io/run_folder_writer.hpp"
+#include "slam/system/run_slam.hpp"
+
+namespace wifislam::study {
+
+namespace {
+
+using Setting = std::vector<std::pair<std::string, std::string>>;
+
+std::string label_of(const Setting& setting) {
+  if (setting.empty()) return "defaults";
+  std::string out;
+  for (const auto& [key, value] : setting) out += (out.empty() ? "" : " ") + key + "=" + value;
+  return out;
+}
+
+/// Folder-name form of a label ("min_matches=10 inlier_distance=3" -> "min_matches-10_...").
+std::string folder_of(const std::string& label) {
+  std::string out;
+  for (char c : label) out += c == '=' ? '-' : c == ' ' ? '_' : c;
+  return out;
+}
+
+std::vector<Setting> expand(const std::vector<SweepAxis>& sweeps) {
+  std::vector<Setting> out = {{}};
+  for (const SweepAxis& axis : sweeps) {
+    std::vector<Setting> next;
+    for (const Setting& partial : out) {
+      for (const std::string& value : axis.values) {
+        Setting s = partial;
+        s.emplace_back(axis.key, value);
+        next.push_back(std::move(s));
+      }
+    }
+    out = std::move(next);
+  }
+  return out;
+}
+
+slam::SlamOptions options_for(const ComparisonOptions& options, const Setting& setting, bool wifi,
+                              std::uint64_t seed) {
+  slam::SlamOptions o;
+  o.frontend = options.frontend;
+  o.seed = seed;
+  for (const std::string& s : options.settings) slam::set_option_assignment(o, s);
+  for (const auto& [key, value] : setting) slam::set_option(o, key, value);
+  o.wifi.enabled = wifi;
+  slam::validate(o);
+  return o;
+}
+
+std::string csv_field(const nlohmann::ordered_json& value) {
+  if (value.is_string()) {
+    const std::string s = value.get<std::string>();
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string quoted = "\"";
+    for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+  }
+  if (value.is_null()) return "";
+  return value.dump();
+}
+
+/// Metrics of one table cell: the cases of one scene, setting and variant (one per seed).
+struct Cell {
+  int runs = 0;
+  double ate_rmse_m = 0, loop_closure_s = 0, wifi_overhead_s = 0, total_s = 0;
+  std::int64_t detected = 0, false_positives = 0, episodes = 0, false_negatives = 0;
+  std::int64_t comparisons = 0, keyframes = 0;
+
+  void add(const eval::RunEvaluation& e) {
+    ++runs;
+    ate_rmse_m += e.ate_rmse_m;
+    loop_closure_s += e.loop_closure_detection_s;
+    wifi_overhead_s += e.wifi_overhead_s;
+    total_s += e.total_s;
+    detected += e.loop_closures_detected;
+    false_positives += e.false_positives;
+    episodes += e.revisit_episodes;
+    false_negatives += e.false_negatives;
+    comparisons += e.candidate_comparisons;
+    keyframes += e.keyframes;
+  }
+  double mean(double sum) const { return runs > 0 ? sum / runs : 0.0; }
+};
+
+std::string percent_of(std::int64_t part, std::int64_t whole) {
+  if (whole == 0) return fmt::format("- (0/0)");
+  return fmt::format("{:.1f} ({}/{})", 100.0 * static_cast<double>(part) / whole, part, whole);
+}
+
+}  // namespace
+
+SweepAxis parse_sweep(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+    throw ParseError("--sweep", text, "expected key=value1,value2,...");
+  }
+  SweepAxis axis{text.substr(0, eq), {}};
+  std::string rest = text.substr(eq + 1);
+  std::size_t start = 0;
+  while (start <= rest.size()) {
+    const std::size_t comma = rest.find(',', start);
+    const std::string value =
+        rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (value.empty()) throw ParseError("--sweep", text, "empty value in the list");
+    axis.values.push_back(value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  slam::SlamOptions probe;
+  for (const std::string& value : axis.values) slam::set_option(probe, axis.key, value);
+  return axis;
+}
+
+ComparisonResult run_comparison(const std::vector<Scene>& scenes, const ComparisonOptions& options,
+                                const std::filesystem::path& out_dir) {
+  if (scenes.empty()) throw InvalidInputError("compare: no scene given");
+  if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
+  if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
+  std::map<std::string, int> names;
+  for (const Scene& scene : scenes) {
+    if (++names[scene.name] > 1) {
+      throw InvalidInputError("compare: scene name '" + scene.name + "' given twice");
+    }
+  }
+
+  ComparisonResult result;
+  result.seeds = options.seeds;
+  const std::vector<Setting> settings = expand(options.sweeps);
+  for (const Setting& s : settings) result.settings.push_back(label_of(s));
+  // Every option combination is checked before any dataset is generated.
+  for (const Setting& s : settings) options_for(options, s, true, 1);
+
+  std::mutex progress_mutex;
+  const auto progress = [&](const std::string& line) {
+    if (!options.on_progress) return;
+    std::lock_guard lock(progress_mutex);
+    options.on_progress(line);
+  };
+
+  struct Job {
+    std::filesystem::path dataset;
+    slam::SlamOptions slam;
+    std::size_t case_index = 0;
+  };
+  std::vector<Job> jobs;
+  for (const Scene& scene : scenes) {
+    result.scenes.push_back(scene.name);
+    for (int k = 0; k < options.seeds; ++k) {
+      const std::uint64_t seed = scene.seed + static_cast<std::uint64_t>(k);
+      const std::string tag = fmt::format("{}-seed{}", scene.name, seed);
+      const std::filesystem::path dataset = std::filesystem::path("datasets") / tag;
+      GenerateOptions generate;
+      generate.seed = seed;
+      generate.fps = options.fps;
+      generate.max_frames = options.max_frames;
+      const GenerateSummary g = generate_dataset(scene, out_dir / dataset, generate);
+      progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s)", dataset.string(),
+                           g.frames, g.wifi_scans, g.total_s));
+      for (std::size_t s = 0; s < settings.size(); ++s) {
+        for (bool wifi : {false, true}) {
+          ComparisonCase c;
+          c.scene = scene.name;
+          c.seed = seed;
+          c.setting = result.settings[s];
+          c.wifi = wifi;
+          c.run_dir = std::filesystem::path("runs") / tag / folder_of(c.setting) /
+                      (wifi ? "wifi" : "vanilla");
+          jobs.push_back(
+              {dataset, options_for(options, settings[s], wifi, seed), result.cases.size()});
+          result.cases.push_back(std::move(c));
+        }
+      }
+    }
+  }
+
+  // SLAM runs and their evaluations, `jobs` at a time; each writes only its own folder.
+  std::atomic<std::size_t> next{0};
+  std::mutex error_mutex;
+  std::exception_ptr first_error;
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < jobs.size(); i = next++) {
+      {
+        std::lock_guard lock(error_mutex);
+        if (first_error) return;
+      }
+      try {
+        const Job& job = jobs[i];
+        ComparisonCase& c = result.cases[job.case_index];
+        const std::filesystem::path run_dir = out_dir / c.run_dir;
+        DatasetReaderOptions reader_options;
+        reader_options.verify_checksums = false;  // written moments ago by this process
+        DatasetReader reader(out_dir / job.dataset, reader_options);
+        slam::RunSummary summary;
+        const auto system = slam::run_slam(reader, job.slam, summary);
+        slam::write_run_folder(run_dir, *system, summary, /*overwrite=*/false,
+                               {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}});
+        c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
+        eval::write_evaluation(run_dir / "eval", c.evaluation, run_dir, out_dir / job.dataset,
+                               options.plots);
+        progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
+                             c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
+                             c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
+                             c.evaluation.false_positives, summary.wall_s));
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+      }
+    }
+  };
+  const int threads = std::min<int>(options.jobs, static_cast<int>(jobs.size()));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+
+  write_file_atomic(out_dir / "comparison.md", result.markdown());
+  write_file_atomic(out_dir / "comparison.csv", result.csv());
+  write_file_atomic(out_dir / "comparison.json", result.to_json().dump(1) + "\n");
+  return result;
+}
+
+std::string ComparisonResult::markdown() const {
+  // cells[scene][setting][wifi]
+  std::map<std::string, std::map<std::string, std::map<bool, Cell>>> cells;
+  for (const ComparisonCase& c : cases) cells[c.scene][c.setting][c.wifi].add(c.evaluation);
+
+  struct Metric {
+    std::string title;
+    std::function<std::string(const Cell&, bool wifi)> cell;
+  };
+  const std::vector<Metric> metrics = {
+      {"Trajectory error: ATE RMSE (m)",
+       [](const Cell& c, bool) { return fmt::format("{:.3f}", c.mean(c.ate_rmse_m)); }},
+      {"False positive loop closures: % of detected (false/detected)",
+       [](const Cell& c, bool) { return percent_of(c.false_positives, c.detected); }},
+      {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes)",
+       [](const Cell& c, bool) { return percent_of(c.false_negatives, c.episodes); }},
+      {"Loop-closure detection time (s, wall-clock)",
+       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.loop_closure_s)); }},
+      {"Candidate comparisons (visual transformations tried for loop closure)",
+       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.comparisons)); }},
+      {"Wi-Fi overhead: clustering + cluster management (ms, % of pipeline time)",
+       [](const Cell& c, bool wifi) {
+         if (!wifi) return std::string("-");
+         return fmt::format("{:.1f} ({:.3f} %)", 1e3 * c.mean(c.wifi_overhead_s),
+                            c.total_s > 0 ? 100.0 * c.wifi_overhead_s / c.total_s : 0.0);
+       }},
+  };
+
+  std::string out;
+  if (seeds > 1) {
+    out += fmt::format("Each cell: {} seeds; times and ATE averaged, counts summed over seeds.\n\n",
+                       seeds);
+  }
+  for (const Metric& metric : metrics) {
+    out += "### " + metric.title + "\n\n| scene |";
+    std::string rule = "| --- |";
+    for (const std::string& setting : settings) {
+      out += fmt::format(" {} Vanilla | {} WiFi |", setting, setting);
+      rule += " ---: | ---: |";
+    }
+    out += "\n" + rule + "\n";
+    for (const std::string& scene : scenes) {
+      out += "| " + scene + " |";
+      for (const std::string& setting : settings) {
+        for (bool wifi : {false, true})
+          out += " " + metric.cell(cells[scene][setting][wifi], wifi) + " |";
+      }
+      out += "\n";
+    }
+    out += "\n";
+  }
+  // The paper's headline for time: loop-closure detection, Wi-Fi relative to vanilla.
+  out += "### Loop-closure detection time, WiFi / Vanilla (ratio, same run)\n\n| scene |";
+  std::string rule = "| --- |";
+  for (const std::string& setting : settings) {
+    out += " " + setting + " |";
+    rule += " ---: |";
+  }
+  out += "\n" + rule + "\n";
+  for (const std::string& scene : scenes) {
+    out += "| " + scene + " |";
+    for (const std::string& setting : settings) {
+      const Cell& v = cells[scene][setting][false];
+      const Cell& w = cells[scene][setting][true];
+      out += v.loop_closure_s > 0 ? fmt::format(" {:.2f} |", w.loop_closure_s / v.loop_closure_s)
+                                  : std::string(" - |");
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+std::string ComparisonResult::csv() const {
+  if (cases.empty()) return "scene,seed,setting,variant,run_dir\n";
+  std::vector<std::string> keys;
+  const nlohmann::ordered_json first = cases.front().evaluation.flat_metrics();
+  for (const auto& item : first.items()) keys.push_back(item.key());
+  std::string out = "scene,seed,setting,variant,run_dir";
+  for (const std::string& k : keys) out += "," + k;
+  out += "\n";
+  for (const ComparisonCase& c : cases) {
+    const nlohmann::ordered_json flat = c.evaluation.flat_metrics();
+    out += fmt::format("{},{},{},{},{}", csv_field(c.scene), c.seed, csv_field(c.setting),
+                       c.wifi ? "wifi" : "vanilla", csv_field(c.run_dir.string()));
+    for (const std::string& k : keys) out += "," + (flat.contains(k) ? csv_field(flat[k]) : "");
+    out += "\n";
+  }
+  return out;
+}
+
+nlohmann::json ComparisonResult::to_json() const {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const ComparisonCase& c : cases) {
+    runs.push_back({{"scene", c.scene},
+                    {"seed", c.seed},
+                    {"setting", c.setting},
+                    {"variant", c.wifi ? "wifi" : "vanilla"},
+                    {"run_dir", c.run_dir.string()},
+                    {"metrics", c.evaluation.flat_metrics()}});
+  }
+  return {{"scenes", scenes}, {"settings", settings}, {"seeds", seeds}, {"runs", runs}};
+}
+
+}  // namespace wifislam::study
