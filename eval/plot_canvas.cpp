@@ -72,6 +72,8 @@ void draw_text(cairo_t* cr, double x, double y, const std::string& text, double 
   cairo_set_font_size(cr, size);
   cairo_move_to(cr, x, y);
   cairo_show_text(cr, text.c_str());
+  // show_text leaves the current point after the text; a following arc would be joined to it.
+  cairo_new_path(cr);
 }
 
 void draw_polyline(cairo_t* cr, const MetricCanvas& canvas,
