@@ -22,11 +22,12 @@ namespace {
 
 using Setting = std::vector<std::pair<std::string, std::string>>;
 
-std::string label_of(const Setting& setting) {
-  if (setting.empty()) return "defaults";
+/// The column label: every option that differs from the defaults, --set ones first.
+std::string label_of(const std::vector<std::string>& base, const Setting& setting) {
   std::string out;
+  for (const std::string& assignment : base) out += (out.empty() ? "" : " ") + assignment;
   for (const auto& [key, value] : setting) out += (out.empty() ? "" : " ") + key + "=" + value;
-  return out;
+  return out.empty() ? "defaults" : out;
 }
 
 /// Folder-name form of a label ("min_matches=10 inlier_distance=3" -> "min_matches-10_...").
@@ -143,7 +144,7 @@ ComparisonResult run_comparison(const std::vector<Scene>& scenes, const Comparis
   ComparisonResult result;
   result.seeds = options.seeds;
   const std::vector<Setting> settings = expand(options.sweeps);
-  for (const Setting& s : settings) result.settings.push_back(label_of(s));
+  for (const Setting& s : settings) result.settings.push_back(label_of(options.settings, s));
   // Every option combination is checked before any dataset is generated.
   for (const Setting& s : settings) options_for(options, s, true, 1);
 

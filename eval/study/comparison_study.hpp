@@ -60,7 +60,7 @@ struct ComparisonOptions {
 struct ComparisonCase {
   std::string scene;
   std::uint64_t seed = 0;
-  std::string setting;  // "min_matches=10 inlier_distance=3" or "defaults"
+  std::string setting;  // options set by --set and --sweep ("min_matches=10 ...") or "defaults"
   bool wifi = false;
   std::filesystem::path run_dir;  // relative to the output folder
   eval::RunEvaluation evaluation;
