@@ -15,8 +15,8 @@
 //  - valid range: readings outside [min_range_m, max_range_m] are dropped (always on).
 //
 // Random draws come from Rng::stream(seed, "depth_noise/frame<N>") (one child stream per fixed
-// band of rows, so bands run in parallel), so a frame's noise depends only on the seed and the
-// frame index, whatever the thread count.
+// band of rows, so bands run in parallel; one deviate per pixel, used or not), so a frame's noise
+// depends only on the seed and the frame index, whatever the thread count or SIMD width.
 
 #include <cstdint>
 
