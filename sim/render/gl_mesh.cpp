@@ -6,10 +6,16 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstddef>
 #include <map>
 #include <numeric>
+#include <tuple>
 #include <unordered_map>
+
+#include <fmt/core.h>
+
+#include "core/error.hpp"
 
 namespace wifislam {
 
@@ -135,6 +141,41 @@ BatchedMesh batch_mesh(const Mesh& mesh, const TextureLayoutLookup& layout) {
       batch.bounds_m.extend(p);
       ++batch.vertex_count;
     }
+  }
+  return out;
+}
+
+BatchedMesh chunk_mesh(const BatchedMesh& mesh, double chunk_m) {
+  if (!(chunk_m > 0.0)) {
+    throw InvalidInputError(fmt::format("mesh chunk size must be positive (got {})", chunk_m));
+  }
+  // (batch index, chunk x, chunk y) -> vertices; the map's order is the draw order.
+  std::map<std::tuple<std::size_t, long, long>, std::vector<MeshVertex>> chunks;
+  for (std::size_t b = 0; b < mesh.batches.size(); ++b) {
+    const MeshBatch& batch = mesh.batches[b];
+    for (int v = batch.first_vertex; v < batch.first_vertex + batch.vertex_count; v += 3) {
+      double cx = 0.0, cy = 0.0;
+      for (int q = v; q < v + 3; ++q) {
+        cx += mesh.vertices[q].position_m[0] / 3.0;
+        cy += mesh.vertices[q].position_m[1] / 3.0;
+      }
+      auto& target =
+          chunks[{b, std::lround(std::floor(cx / chunk_m)), std::lround(std::floor(cy / chunk_m))}];
+      target.insert(target.end(), mesh.vertices.begin() + v, mesh.vertices.begin() + v + 3);
+    }
+  }
+  BatchedMesh out;
+  out.vertices.reserve(mesh.vertices.size());
+  for (const auto& [where, vertices] : chunks) {
+    MeshBatch batch;
+    batch.key = mesh.batches[std::get<0>(where)].key;
+    batch.first_vertex = static_cast<int>(out.vertices.size());
+    batch.vertex_count = static_cast<int>(vertices.size());
+    for (const MeshVertex& v : vertices) {
+      batch.bounds_m.extend(Eigen::Vector3f(v.position_m[0], v.position_m[1], v.position_m[2]));
+    }
+    out.vertices.insert(out.vertices.end(), vertices.begin(), vertices.end());
+    out.batches.push_back(batch);
   }
   return out;
 }

@@ -40,6 +40,12 @@ struct BatchedMesh {
 /// and with the same normal) gets its uv bounding box mapped onto [0, 1]^2.
 BatchedMesh batch_mesh(const Mesh& mesh, const TextureLayoutLookup& layout);
 
+/// Cuts every batch into square chunks of the floor plan (`chunk_m` on a side, by triangle
+/// centroid), so that frustum culling skips what is out of view: a floor or wall texture
+/// otherwise spans the whole building in one batch, and llvmpipe transforms, clips and bins all
+/// of it every frame. Batches stay ordered by (texture key, chunk): deterministic.
+BatchedMesh chunk_mesh(const BatchedMesh& mesh, double chunk_m);
+
 /// Vertex buffer + vertex array object of a batched mesh. Needs a current GL context.
 class GlMesh {
  public:

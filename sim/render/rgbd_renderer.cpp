@@ -9,7 +9,6 @@
 
 #include <fmt/core.h>
 #include <opencv2/core/utility.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
 #include "sim/render/gl_mesh.hpp"
@@ -23,58 +22,61 @@ namespace {
 
 constexpr int kMaxLightsInShader = 8;
 
+// The normal is turned toward the camera per vertex (the sign of n . (p - c) is the same at all
+// three corners of a planar triangle), and so is the distance of the triangle's plane from the
+// camera, |n . (p - c)|: both are constant over a triangle, so they are passed `flat`.
 const char* kVertexShader = R"(#version 330 core
 layout(location = 0) in vec3 position_m;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in vec2 texcoord;
 uniform mat4 world_to_clip;
-uniform mat4 world_to_camera;
+uniform vec3 camera_position;
 out vec3 world_position;
-out vec3 world_normal;
+flat out vec3 face_normal;
+flat out float plane_distance_m;
 out vec2 uv;
-out float optical_depth;
 void main() {
   world_position = position_m;
-  world_normal = normal;
+  float signed_distance = dot(normal, position_m - camera_position);
+  face_normal = signed_distance > 0.0 ? -normal : normal;
+  plane_distance_m = abs(signed_distance);
   uv = texcoord;
-  optical_depth = (world_to_camera * vec4(position_m, 1.0)).z;
   gl_Position = world_to_clip * vec4(position_m, 1.0);
 }
 )";
 
 // Diffuse (Lambert) shading from downward-facing ceiling panels with inverse-square falloff
-// (softened by +1 m^2 so a surface touching a light does not blow up), plus ambient. No branches
-// and a loop of constant length: llvmpipe runs divergent control flow and dynamically indexed
-// uniform arrays several times slower. MAX_LIGHTS is defined when the program is built.
+// (softened by +1 m^2 so a surface touching a light does not blow up), plus ambient. For a
+// light at offset d from the surface, cos(surface) cos(panel) / (|d|^2 + 1) is
+// (n . d) d.z / (|d|^2 (|d|^2 + 1)): no square roots. No branches and a loop of constant length:
+// llvmpipe runs divergent control flow and dynamically indexed uniform arrays several times
+// slower. MAX_LIGHTS is defined when the program is built.
+// Alpha carries |cos| of the incidence angle, plane distance / ray length (8 bits, for the sensor
+// model's grazing dropouts): one RGBA8 target plus the z-buffer is what a bare render reads back
+// too, where separate float targets for depth and incidence cost ~40 % of the frame in llvmpipe.
 const char* kFragmentShader = R"(
 in vec3 world_position;
-in vec3 world_normal;
+flat in vec3 face_normal;
+flat in float plane_distance_m;
 in vec2 uv;
-in float optical_depth;
 uniform sampler2D albedo;
 uniform vec3 camera_position;
 uniform float emissive;
 uniform float ambient;
 uniform float light_weights[MAX_LIGHTS];
 uniform vec3 light_positions[MAX_LIGHTS];
-layout(location = 0) out vec4 color;
-layout(location = 1) out float depth_m;
-layout(location = 2) out float incidence_cos;
+out vec4 color;
 void main() {
-  vec3 view = normalize(world_position - camera_position);
-  vec3 normal = normalize(world_normal);
-  float facing = dot(normal, view);
-  vec3 n = faceforward(normal, view, normal);
+  vec3 ray = world_position - camera_position;
+  float incidence = plane_distance_m * inversesqrt(dot(ray, ray));
   float irradiance = ambient;
   for (int i = 0; i < MAX_LIGHTS; ++i) {
-    vec3 to_light = light_positions[i] - world_position;
-    float d2 = dot(to_light, to_light);
-    vec3 l = to_light * inversesqrt(d2);
-    irradiance += light_weights[i] * max(dot(n, l), 0.0) * max(l.z, 0.0) / (d2 + 1.0);
+    vec3 d = light_positions[i] - world_position;
+    float d2 = dot(d, d);
+    irradiance += light_weights[i] * max(dot(face_normal, d), 0.0) * max(d.z, 0.0) /
+                  (d2 * (d2 + 1.0));
   }
-  color = vec4(texture(albedo, uv).rgb * mix(irradiance, 1.0, emissive), 1.0);
-  depth_m = optical_depth;
-  incidence_cos = abs(facing);
+  color = vec4(texture(albedo, uv).rgb * mix(irradiance, 1.0, emissive), incidence);
 }
 )";
 
@@ -127,7 +129,6 @@ RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptio
                                                   std::max(options.max_lights, 1), kFragmentShader);
   program_ = std::make_unique<GlProgram>(kVertexShader, fragment_source);
   uniforms_ = {program_->uniform("world_to_clip"),
-               program_->uniform("world_to_camera"),
                program_->uniform("camera_position"),
                program_->uniform("emissive"),
                program_->uniform("ambient"),
@@ -147,11 +148,9 @@ RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptio
     return id;
   };
   color_target_ = make_target(GL_RGBA8, GL_COLOR_ATTACHMENT0);
-  depth_target_ = make_target(GL_R32F, GL_COLOR_ATTACHMENT1);
-  incidence_target_ = make_target(GL_R32F, GL_COLOR_ATTACHMENT2);
   z_buffer_ = make_target(GL_DEPTH_COMPONENT32F, GL_DEPTH_ATTACHMENT);
-  const GLenum draw_buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glDrawBuffers(3, draw_buffers);
+  const GLenum draw_buffers[] = {GL_COLOR_ATTACHMENT0};
+  glDrawBuffers(1, draw_buffers);
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
     throw EnvironmentError(
@@ -163,7 +162,10 @@ RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptio
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);  // the y-flipped projection mirrors winding; walls are two-sided
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);  // black, incidence 0 where nothing is drawn
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
   color_bgra_.create(h, w, CV_8UC4);
+  window_depth_.create(h, w, CV_32FC1);
 }
 
 RgbdRenderer::~RgbdRenderer() {
@@ -171,8 +173,8 @@ RgbdRenderer::~RgbdRenderer() {
   mesh_.reset();
   textures_.clear();
   program_.reset();
-  const GLuint targets[] = {color_target_, depth_target_, incidence_target_, z_buffer_};
-  glDeleteRenderbuffers(4, targets);
+  const GLuint targets[] = {color_target_, z_buffer_};
+  glDeleteRenderbuffers(2, targets);
   glDeleteFramebuffers(1, &framebuffer_);
 }
 
@@ -192,8 +194,10 @@ void RgbdRenderer::set_world(const Mesh& mesh, const std::vector<CeilingLight>& 
   });
   std::map<TextureKey, TextureImage> images;
   for (std::size_t i = 0; i < keys.size(); ++i) images.emplace(keys[i], std::move(made[i]));
-  const BatchedMesh batched = batch_mesh(
-      mesh, [&](const TextureKey& key) -> const TextureImage& { return images.at(key); });
+  const BatchedMesh batched = chunk_mesh(
+      batch_mesh(mesh,
+                 [&](const TextureKey& key) -> const TextureImage& { return images.at(key); }),
+      options_.chunk_m);
   mesh_.reset();
   textures_.clear();
   for (const auto& [key, image] : images)
@@ -240,23 +244,17 @@ void RgbdRenderer::upload_lights(const Eigen::Vector3d& camera_position_m) {
 void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
   context_->make_current();
   const int w = intrinsics_.width_px, h = intrinsics_.height_px;
-  const Eigen::Matrix4f world_to_camera = camera_to_world.inverse().matrix().cast<float>();
   const Eigen::Matrix4f world_to_clip =
-      projection_matrix(intrinsics_, options_.near_m, options_.far_m) * world_to_camera;
+      projection_matrix(intrinsics_, options_.near_m, options_.far_m) *
+      camera_to_world.inverse().matrix().cast<float>();
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  const float black[4] = {0, 0, 0, 1};
-  const float zero[4] = {0, 0, 0, 0};
-  glClearBufferfv(GL_COLOR, 0, black);
-  glClearBufferfv(GL_COLOR, 1, zero);
-  glClearBufferfv(GL_COLOR, 2, zero);
-  glClear(GL_DEPTH_BUFFER_BIT);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   last_draw_count_ = 0;
   if (mesh_) {
     program_->use();
     glUniformMatrix4fv(uniforms_.world_to_clip, 1, GL_FALSE, world_to_clip.data());
-    glUniformMatrix4fv(uniforms_.world_to_camera, 1, GL_FALSE, world_to_camera.data());
     const Eigen::Vector3f camera_position = camera_to_world.translation().cast<float>();
     glUniform3fv(uniforms_.camera_position, 1, camera_position.data());
     glUniform1f(uniforms_.ambient, options_.ambient);
@@ -273,15 +271,41 @@ void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
     }
   }
 
+  glReadPixels(0, 0, w, h, GL_BGRA, GL_UNSIGNED_BYTE, color_bgra_.data);
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, window_depth_.data);
+  unpack(out);
+}
+
+void RgbdRenderer::unpack(RenderedView& out) const {
+  const int w = intrinsics_.width_px, h = intrinsics_.height_px;
   out.depth_m.create(h, w, CV_32FC1);
   out.incidence_cos.create(h, w, CV_32FC1);
-  glReadBuffer(GL_COLOR_ATTACHMENT0);
-  glReadPixels(0, 0, w, h, GL_BGRA, GL_UNSIGNED_BYTE, color_bgra_.data);
-  glReadBuffer(GL_COLOR_ATTACHMENT1);
-  glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, out.depth_m.data);
-  glReadBuffer(GL_COLOR_ATTACHMENT2);
-  glReadPixels(0, 0, w, h, GL_RED, GL_FLOAT, out.incidence_cos.data);
-  cv::cvtColor(color_bgra_, out.color_bgr, cv::COLOR_BGRA2BGR);
+  out.color_bgr.create(h, w, CV_8UC3);
+  // Window depth w in [0, 1] of a point at optical depth d is (f/(f-n)) - (f n/(f-n)) / d for
+  // the projection above, so d = (f n/(f-n)) / (f/(f-n) - w); w = 1 is the cleared background.
+  // With a 32-bit float z-buffer this recovers d to ~2e-5 m at 4 m and ~2 mm at 40 m.
+  const double n = options_.near_m, f = options_.far_m;
+  const float numerator = static_cast<float>(f * n / (f - n));
+  const float offset = static_cast<float>(f / (f - n));
+  // In sequence: a thread pool's wake-up and spinning workers cost more than this pass saves.
+  {
+    for (int y = 0; y < h; ++y) {
+      const float* window = window_depth_.ptr<float>(y);
+      const std::uint8_t* bgra = color_bgra_.ptr<std::uint8_t>(y);
+      float* depth_m = out.depth_m.ptr<float>(y);
+      float* incidence = out.incidence_cos.ptr<float>(y);
+      std::uint8_t* bgr = out.color_bgr.ptr<std::uint8_t>(y);
+      for (int x = 0; x < w; ++x) {
+        depth_m[x] = window[x] < 1.0f ? numerator / (offset - window[x]) : 0.0f;
+      }
+      for (int x = 0; x < w; ++x) {
+        bgr[3 * x] = bgra[4 * x];
+        bgr[3 * x + 1] = bgra[4 * x + 1];
+        bgr[3 * x + 2] = bgra[4 * x + 2];
+        incidence[x] = bgra[4 * x + 3] * (1.0f / 255.0f);
+      }
+    }
+  }
 }
 
 RenderedView RgbdRenderer::render(const Pose& camera_to_world) {

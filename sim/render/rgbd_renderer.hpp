@@ -2,11 +2,12 @@
 // Off-screen RGB-D rendering of a world mesh through a pinhole camera (OSMesa, OpenGL 3.3 core).
 //
 // One OpenGL context per renderer, reused for every frame. A frame renders into a framebuffer
-// object with three targets: lit colour, metric depth along the optical axis (written by the
-// fragment shader from the camera-frame position, so no window-depth linearisation is involved)
-// and |cos| of the angle between viewing ray and surface (for the sensor model's grazing-angle
-// dropouts). The intrinsics go straight into the projection matrix, with y flipped so that
-// readback row 0 is image row v = 0 and pixel (u, v) is sampled at its centre, as in OpenCV.
+// object with an RGBA8 target (lit colour, and in alpha |cos| of the angle between viewing ray and
+// surface, for the sensor model's grazing-angle dropouts) and a 32-bit float z-buffer, from which
+// metric depth along the optical axis is recovered exactly (see unpack()). That is the same
+// readback a bare render needs; extra float targets cost ~40 % of the frame in llvmpipe. The
+// intrinsics go straight into the projection matrix, with y flipped so that readback row 0 is
+// image row v = 0 and pixel (u, v) is sampled at its centre, as in OpenCV.
 //
 // Noise-free output: DepthSensorModel turns the ideal depth into a Kinect-like measurement.
 
@@ -38,14 +39,16 @@ struct RenderOptions {
   int max_lights = 2;           // nearest lights shaded per frame (0..8): each adds shading cost
   double light_range_m = 12.0;  // lights farther from the camera are not shaded
   double light_fade_m = 1.5;    // lights fade out over this distance before they drop out
-  bool frustum_culling = true;  // skip texture batches outside the view (saves draw calls)
+  bool frustum_culling = true;  // skip mesh chunks outside the view
+  double chunk_m = 6.0;         // mesh batches are cut into plan chunks this size for culling
 };
 
 /// The noise-free result of one render.
 struct RenderedView {
   cv::Mat color_bgr;      // CV_8UC3, OpenCV channel order
   cv::Mat depth_m;        // CV_32FC1, along the optical axis, 0 = nothing within far_m
-  cv::Mat incidence_cos;  // CV_32FC1, |cos| between viewing ray and surface normal, 0 = nothing
+  cv::Mat incidence_cos;  // CV_32FC1, |cos| between viewing ray and surface normal (steps of
+                          // 1/255), 0 = nothing
 };
 
 class RgbdRenderer {
@@ -81,6 +84,8 @@ class RgbdRenderer {
 
  private:
   void upload_lights(const Eigen::Vector3d& camera_position_m);
+  /// Read-back buffers -> colour, metric depth and incidence images.
+  void unpack(RenderedView& out) const;
 
   CameraIntrinsics intrinsics_;
   RenderOptions options_;
@@ -89,13 +94,12 @@ class RgbdRenderer {
   std::unique_ptr<GlMesh> mesh_;
   std::map<TextureKey, std::unique_ptr<GlTexture>> textures_;
   std::vector<CeilingLight> lights_;
-  unsigned framebuffer_ = 0, color_target_ = 0, depth_target_ = 0, incidence_target_ = 0,
-           z_buffer_ = 0;
-  cv::Mat color_bgra_;
+  unsigned framebuffer_ = 0, color_target_ = 0, z_buffer_ = 0;
+  cv::Mat color_bgra_;    // CV_8UC4 read back: lit colour, alpha = incidence |cos| x 255
+  cv::Mat window_depth_;  // CV_32FC1 read back: z-buffer in [0, 1]
   int last_draw_count_ = 0;
   struct Uniforms {
-    int world_to_clip, world_to_camera, camera_position, emissive, ambient, light_weights,
-        light_positions, albedo;
+    int world_to_clip, camera_position, emissive, ambient, light_weights, light_positions, albedo;
   } uniforms_{};
 };
 

@@ -87,7 +87,7 @@ TEST(RenderGeometry, TiltedWallBackProjectsOntoItsPlane) {
   }
   EXPECT_GT(pixels, 30000);
   EXPECT_LT(worst_m, 1e-3);
-  EXPECT_LT(worst_cos, 1e-3);
+  EXPECT_LT(worst_cos, 2.5e-3);  // incidence is read back in 8 bits: steps of 1/255
 }
 
 TEST(RenderGeometry, RenderedDepthAgreesWithEmbreeInHandBuiltCorridor) {
