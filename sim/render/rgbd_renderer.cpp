@@ -8,6 +8,7 @@
 #include <numeric>
 
 #include <fmt/core.h>
+#include <opencv2/core/hal/intrin.hpp>
 #include <opencv2/core/utility.hpp>
 
 #include "core/error.hpp"
@@ -288,22 +289,41 @@ void RgbdRenderer::unpack(RenderedView& out) const {
   const float numerator = static_cast<float>(f * n / (f - n));
   const float offset = static_cast<float>(f / (f - n));
   // In sequence: a thread pool's wake-up and spinning workers cost more than this pass saves.
-  {
-    for (int y = 0; y < h; ++y) {
-      const float* window = window_depth_.ptr<float>(y);
-      const std::uint8_t* bgra = color_bgra_.ptr<std::uint8_t>(y);
-      float* depth_m = out.depth_m.ptr<float>(y);
-      float* incidence = out.incidence_cos.ptr<float>(y);
-      std::uint8_t* bgr = out.color_bgr.ptr<std::uint8_t>(y);
-      for (int x = 0; x < w; ++x) {
-        depth_m[x] = window[x] < 1.0f ? numerator / (offset - window[x]) : 0.0f;
+  // The vector loop and the scalar tail do the same float operations.
+  for (int y = 0; y < h; ++y) {
+    const float* window = window_depth_.ptr<float>(y);
+    const std::uint8_t* bgra = color_bgra_.ptr<std::uint8_t>(y);
+    float* depth_m = out.depth_m.ptr<float>(y);
+    float* incidence = out.incidence_cos.ptr<float>(y);
+    std::uint8_t* bgr = out.color_bgr.ptr<std::uint8_t>(y);
+    int x = 0;
+#if CV_SIMD128
+    const cv::v_float32x4 v_numerator = cv::v_setall_f32(numerator),
+                          v_offset = cv::v_setall_f32(offset), one = cv::v_setall_f32(1.0f),
+                          zero = cv::v_setzero_f32(), per_step = cv::v_setall_f32(1.0f / 255.0f);
+    for (; x + 16 <= w; x += 16) {
+      cv::v_uint8x16 b, g, r, a;
+      cv::v_load_deinterleave(bgra + 4 * x, b, g, r, a);
+      cv::v_store_interleave(bgr + 3 * x, b, g, r);
+      cv::v_uint16x8 a_lo, a_hi;
+      cv::v_expand(a, a_lo, a_hi);
+      cv::v_uint32x4 a_quarters[4];
+      cv::v_expand(a_lo, a_quarters[0], a_quarters[1]);
+      cv::v_expand(a_hi, a_quarters[2], a_quarters[3]);
+      for (int k = 0; k < 4; ++k) {
+        cv::v_store(incidence + x + 4 * k,
+                    cv::v_cvt_f32(cv::v_reinterpret_as_s32(a_quarters[k])) * per_step);
+        const cv::v_float32x4 z = cv::v_load(window + x + 4 * k);
+        cv::v_store(depth_m + x + 4 * k, cv::v_select(z < one, v_numerator / (v_offset - z), zero));
       }
-      for (int x = 0; x < w; ++x) {
-        bgr[3 * x] = bgra[4 * x];
-        bgr[3 * x + 1] = bgra[4 * x + 1];
-        bgr[3 * x + 2] = bgra[4 * x + 2];
-        incidence[x] = bgra[4 * x + 3] * (1.0f / 255.0f);
-      }
+    }
+#endif
+    for (; x < w; ++x) {
+      depth_m[x] = window[x] < 1.0f ? numerator / (offset - window[x]) : 0.0f;
+      bgr[3 * x] = bgra[4 * x];
+      bgr[3 * x + 1] = bgra[4 * x + 1];
+      bgr[3 * x + 2] = bgra[4 * x + 2];
+      incidence[x] = static_cast<float>(bgra[4 * x + 3]) * (1.0f / 255.0f);
     }
   }
 }
