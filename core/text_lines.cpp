@@ -67,4 +67,32 @@ std::string format_double_exact(double value) {
   return std::string(buf, ptr);
 }
 
+void for_each_csv_row(const std::string& path, std::span<const char* const> columns,
+                      const std::function<void(const CsvRow&)>& row) {
+  std::string header;
+  for (const char* column : columns) header += (header.empty() ? "" : ",") + std::string(column);
+  bool header_seen = false;
+  for (const TextLine& line : read_text_lines(path)) {
+    if (line.text.empty() || line.text[0] == '#') continue;
+    const std::string where = path + ":" + std::to_string(line.number);
+    const std::vector<std::string_view> fields = split_fields(line.text, ',');
+    if (!header_seen) {
+      header_seen = true;
+      bool ok = fields.size() == columns.size();
+      for (std::size_t i = 0; ok && i < fields.size(); ++i) ok = fields[i] == columns[i];
+      if (!ok) throw ParseError(where, "header", "expected the header '" + header + "'");
+      continue;
+    }
+    if (fields.size() != columns.size()) {
+      throw ParseError(where, "",
+                       "expected " + std::to_string(columns.size()) +
+                           " comma-separated fields, found " + std::to_string(fields.size()));
+    }
+    row(CsvRow{fields, line.number, where});
+  }
+  if (!header_seen) {
+    throw ParseError(path + ":1", "header", "empty file: expected the CSV header '" + header + "'");
+  }
+}
+
 }  // namespace wifislam

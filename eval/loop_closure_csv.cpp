@@ -28,27 +28,10 @@ constexpr std::array<const char*, 16> kColumns = {"from_keyframe",
 }
 
 std::vector<DetectedLoopClosure> read_loop_closures_csv(const std::filesystem::path& path) {
-  const std::vector<TextLine> lines = read_text_lines(path.string());
   std::vector<DetectedLoopClosure> out;
-  bool header_seen = false;
-  for (const TextLine& line : lines) {
-    if (line.text.empty() || line.text[0] == '#') continue;
-    const std::string where = path.string() + ":" + std::to_string(line.number);
-    const std::vector<std::string_view> fields = split_fields(line.text, ',');
-    if (!header_seen) {
-      header_seen = true;
-      bool ok = fields.size() == kColumns.size();
-      for (std::size_t i = 0; ok && i < fields.size(); ++i) ok = fields[i] == kColumns[i];
-      if (!ok) {
-        throw ParseError(where, "header",
-                         "expected the header 'from_keyframe,to_keyframe,...,qz,qw' (16 columns)");
-      }
-      continue;
-    }
-    if (fields.size() != kColumns.size()) {
-      throw ParseError(
-          where, "", "expected 16 comma-separated fields, found " + std::to_string(fields.size()));
-    }
+  for_each_csv_row(path.string(), kColumns, [&](const CsvRow& row) {
+    const std::vector<std::string_view>& fields = row.fields;
+    const std::string& where = row.where;
     auto integer = [&](std::size_t i) {
       long long v = 0;
       if (!parse_int64(fields[i], v)) {
@@ -72,7 +55,7 @@ std::vector<DetectedLoopClosure> read_loop_closures_csv(const std::filesystem::p
       return *t;
     };
     DetectedLoopClosure lc;
-    lc.line = line.number;
+    lc.line = row.line;
     lc.from_keyframe = integer(0);
     lc.to_keyframe = integer(1);
     lc.from_frame = integer(2);
@@ -90,10 +73,7 @@ std::vector<DetectedLoopClosure> read_loop_closures_csv(const std::filesystem::p
     }
     lc.from_to = pose_from_translation_quaternion(t, q);
     out.push_back(lc);
-  }
-  if (!header_seen) {
-    throw ParseError(path.string() + ":1", "header", "empty file: expected the CSV header");
-  }
+  });
   return out;
 }
 

@@ -1,5 +1,6 @@
 #include "eval/wifi_clusters_csv.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -8,28 +9,16 @@
 
 namespace wifislam::eval {
 
+namespace {
+constexpr std::array<const char*, 4> kColumns = {"cluster_id", "founder_keyframe", "keyframes",
+                                                 "representative_signature"};
+}
+
 std::vector<WifiCluster> read_wifi_clusters_csv(const std::filesystem::path& path) {
-  const std::vector<TextLine> lines = read_text_lines(path.string());
   std::vector<WifiCluster> out;
-  bool header_seen = false;
-  for (const TextLine& line : lines) {
-    if (line.text.empty() || line.text[0] == '#') continue;
-    const std::string where = path.string() + ":" + std::to_string(line.number);
-    const std::vector<std::string_view> fields = split_fields(line.text, ',');
-    if (!header_seen) {
-      header_seen = true;
-      if (fields.size() != 4 || fields[0] != "cluster_id" || fields[1] != "founder_keyframe" ||
-          fields[2] != "keyframes" || fields[3] != "representative_signature") {
-        throw ParseError(where, "header",
-                         "expected 'cluster_id,founder_keyframe,keyframes,"
-                         "representative_signature'");
-      }
-      continue;
-    }
-    if (fields.size() != 4) {
-      throw ParseError(where, "",
-                       "expected 4 comma-separated fields, found " + std::to_string(fields.size()));
-    }
+  for_each_csv_row(path.string(), kColumns, [&](const CsvRow& row) {
+    const std::vector<std::string_view>& fields = row.fields;
+    const std::string& where = row.where;
     WifiCluster c;
     long long v = 0;
     if (!parse_int64(fields[0], v) || v < 0) {
@@ -60,10 +49,7 @@ std::vector<WifiCluster> read_wifi_clusters_csv(const std::filesystem::path& pat
       }
     }
     out.push_back(std::move(c));
-  }
-  if (!header_seen) {
-    throw ParseError(path.string() + ":1", "header", "empty file: expected the CSV header");
-  }
+  });
   return out;
 }
 
