@@ -67,8 +67,9 @@ void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
     }
     set_colour(cr, {0, 0, 0});
     draw_text(cr, MetricCanvas::kMarginPx, 28,
-              fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closures ({} false)",
-                          ev.ate_rmse_m, ev.loop_closures_detected, ev.false_positives),
+              fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closure{} ({} false)",
+                          ev.ate_rmse_m, ev.loop_closures_detected,
+                          ev.loop_closures_detected == 1 ? "" : "s", ev.false_positives),
               18, true);
     const double x = canvas.plan_right_px() + MetricCanvas::kMarginPx;
     double y = MetricCanvas::kTitlePx + 14;
