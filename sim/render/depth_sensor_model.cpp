@@ -131,7 +131,7 @@ void DepthSensorModel::measure(const cv::Mat& ideal_depth_m, const cv::Mat& inci
   };
 
   // Fixed bands of rows, each with its own random sub-stream (one deviate per pixel), so bands
-  // could run in parallel with the same result. They run in sequence: at ~0.5 ms a frame, waking
+  // could run in parallel with the same result. They run in sequence: at ~1 ms a frame, waking
   // a thread pool costs more than it saves, and its spinning workers slow llvmpipe's next frame.
   constexpr int kBands = 16;
   {
