@@ -8,6 +8,7 @@
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/run_format.hpp"
 #include "core/tum_trajectory.hpp"
 #include "eval/association.hpp"
 #include "eval/dataset_depth.hpp"
@@ -33,8 +34,18 @@ std::vector<Timestamp> times_of(const Trajectory& t) {
   return out;
 }
 
-std::string frontend_of(const fs::path& run_json) {
-  if (!fs::is_regular_file(run_json)) return "";
+/// What run.json says about the run: the front end and whether the Wi-Fi module ran. A folder
+/// without run.json (a run written by another tool) is a run without Wi-Fi of an unnamed front
+/// end.
+struct RunIdentity {
+  std::string frontend;
+  bool wifi = false;
+};
+
+RunIdentity identity_of(const fs::path& run_json) {
+  namespace key = run_folder::run_key;
+  RunIdentity id;
+  if (!fs::is_regular_file(run_json)) return id;
   std::ifstream in(run_json);
   nlohmann::json j;
   try {
@@ -42,8 +53,20 @@ std::string frontend_of(const fs::path& run_json) {
   } catch (const nlohmann::json::exception& e) {
     throw ParseError(run_json.string(), "", std::string("not valid JSON: ") + e.what());
   }
-  if (j.contains("frontend") && j["frontend"].is_string()) return j["frontend"].get<std::string>();
-  return "";
+  if (!j.is_object()) throw ParseError(run_json.string(), "", "expected a JSON object");
+  if (j.contains(key::kFrontend)) {
+    if (!j[key::kFrontend].is_string()) {
+      throw ParseError(run_json.string(), key::kFrontend, "expected a string");
+    }
+    id.frontend = j[key::kFrontend].get<std::string>();
+  }
+  if (j.contains(key::kWifi)) {
+    if (!j[key::kWifi].is_boolean()) {
+      throw ParseError(run_json.string(), key::kWifi, "expected true or false");
+    }
+    id.wifi = j[key::kWifi].get<bool>();
+  }
+  return id;
 }
 
 }  // namespace
@@ -64,24 +87,27 @@ RunEvaluation evaluate_run(const fs::path& run_dir, const fs::path& dataset_dir,
   required_file(dataset_dir, dataset::kGroundTruth, "the dataset's ground truth");
   const Trajectory ground_truth = read_ground_truth(dataset_dir);
   const fs::path trajectory_file =
-      required_file(run_dir, "trajectory.txt", "the run's estimated trajectory");
-  const fs::path keyframes_file = required_file(run_dir, "keyframes.txt", "the run's keyframes");
+      required_file(run_dir, run_folder::kTrajectory, "the run's estimated trajectory");
+  const fs::path keyframes_file =
+      required_file(run_dir, run_folder::kKeyframes, "the run's keyframes");
   const fs::path loops_file =
-      required_file(run_dir, "loop_closures.csv", "the run's loop closures");
-  const fs::path timing_file = required_file(run_dir, "timing.json", "the run's timing");
+      required_file(run_dir, run_folder::kLoopClosures, "the run's loop closures");
+  const fs::path timing_file = required_file(run_dir, run_folder::kTiming, "the run's timing");
   const Trajectory estimated = read_tum_trajectory(trajectory_file.string());
   const Trajectory keyframes = read_tum_trajectory(keyframes_file.string());
   const std::vector<DetectedLoopClosure> loops = read_loop_closures_csv(loops_file);
   ev.timing = read_timing_json(timing_file);
-  ev.frontend = frontend_of(run_dir / "run.json");
+  const RunIdentity identity = identity_of(run_dir / run_folder::kRun);
+  ev.frontend = identity.frontend;
+  ev.wifi_run = identity.wifi;
   DatasetCalibration calibration;
   if (fs::exists(dataset_dir / dataset::kCalibration)) {
     calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);
   }
   ev.intrinsics = calibration.intrinsics;
-  const fs::path clusters_file = run_dir / "wifi_clusters.csv";
-  if (fs::exists(clusters_file)) {
-    ev.wifi_run = true;
+  const fs::path clusters_file = run_dir / run_folder::kWifiClusters;
+  if (ev.wifi_run) {
+    required_file(run_dir, run_folder::kWifiClusters, "the Wi-Fi clusters run.json announces");
     ev.wifi_cluster_list = read_wifi_clusters_csv(clusters_file);
     ev.wifi_clusters = static_cast<std::int64_t>(ev.wifi_cluster_list.size());
   }
@@ -190,7 +216,7 @@ RunEvaluation evaluate_run(const fs::path& run_dir, const fs::path& dataset_dir,
   ev.optimisation_s = ev.timing.optimisation_s;
   ev.total_s = ev.timing.total_s;
   ev.wall_s = ev.timing.wall_s;
-  ev.candidate_comparisons = ev.timing.counter("candidate_comparisons");
+  ev.candidate_comparisons = ev.timing.counter(run_folder::counter::kCandidateComparisons);
   return ev;
 }
 

@@ -167,6 +167,19 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
   line("| counter | value |");
   line("| --- | --- |");
   for (const auto& [name, v] : ev.timing.counters) line(fmt::format("| {} | {} |", name, v));
+  if (!ev.timing.roles.empty()) {
+    line();
+    line(
+        "Visual comparisons by the role that asked for them (verified: the transformation "
+        "passed; accepted: it became an edge, or for tracking, the frame was tracked).");
+    line();
+    line("| role | comparisons | RANSAC runs | verified | accepted | seconds |");
+    line("| --- | --- | --- | --- | --- | --- |");
+    for (const auto& [name, r] : ev.timing.roles) {
+      line(fmt::format("| {} | {} | {} | {} | {} | {:.4f} |", name, r.comparisons, r.ransac_runs,
+                       r.verified, r.accepted, r.time_s));
+    }
+  }
   line();
   line("## Thresholds");
   line();

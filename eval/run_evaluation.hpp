@@ -33,7 +33,7 @@ struct PathSample {
 struct RunEvaluation {
   std::string run_dir, dataset_dir;
   std::string frontend;   // from run.json, "" when absent
-  bool wifi_run = false;  // wifi_clusters.csv present
+  bool wifi_run = false;  // run.json's "wifi" (false when absent)
   EvalOptions options;
 
   // Trajectory error (ATE after alignment, RPE per metre travelled).

@@ -11,9 +11,9 @@ namespace wifislam::slam {
 
 std::vector<OptionField> option_fields(SlamOptions& o) {
   return {
-      {"frontend", &o.frontend, "loop-closure candidate selection policy"},
+      {"frontend", &o.frontend, "SLAM front end (memory, candidates, acceptance)"},
       {"seed", &o.seed, "seed of every random draw"},
-      {"wifi", &o.wifi.enabled, "Wi-Fi variant of the front end (clustering, bounding)"},
+      {"wifi", &o.wifi.enabled, "Wi-Fi module held by the front end (clustering, bounding)"},
       {"wifi_similarity", &o.wifi.similarity,
        "cosine similarity at or above which signatures are similar"},
       {"wifi_floor_dbm", &o.wifi.floor_dbm, "RSSI floor: weight = max(0, rssi - floor) (dBm)"},

@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "slam/feature/orb_feature_extractor.hpp"
-#include "slam/loop/rgbdslam_candidate_selector.hpp"
+#include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 #include "slam/solve/visual_transformation.hpp"
 #include "slam/wifi/wifi_options.hpp"
@@ -46,9 +46,10 @@ struct TrackingOptions {
 };
 
 struct SlamOptions {
-  /// Loop-closure front end (candidate selection policy), see candidate_selector_factory.hpp.
+  /// SLAM front end (memory, candidate selection, acceptance), see
+  /// slam/frontend/front_end_registry.hpp.
   std::string frontend = "rgbdslam";
-  /// The Wi-Fi module (off = the vanilla front end).
+  /// The Wi-Fi module, held by whichever front end runs (off = the vanilla front end).
   WifiOptions wifi;
   /// Seed of every random draw of the run (e.g. RGBD-SLAM's random keyframes).
   std::uint64_t seed = 1;

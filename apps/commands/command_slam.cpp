@@ -13,8 +13,8 @@
 #include "core/error.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "slam/frontend/front_end_registry.hpp"
 #include "slam/io/run_folder_writer.hpp"
-#include "slam/loop/candidate_selector_factory.hpp"
 #include "slam/system/run_slam.hpp"
 
 namespace {
@@ -61,8 +61,7 @@ std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohman
 
 std::string frontend_names() {
   std::string names;
-  for (const std::string& n : wifislam::slam::candidate_selector_names()) {
-    if (n.ends_with("+wifi")) continue;  // chosen with --wifi
+  for (const std::string& n : wifislam::slam::front_end_names()) {
     names += (names.empty() ? "" : ", ") + n;
   }
   return names;
@@ -101,14 +100,18 @@ WIFISLAM_COMMAND(slam, 60) {
       "slam",
       "Run visual SLAM on a dataset folder (ours or plain TUM RGB-D) or on frames streamed from\n"
       "a scene file, and write the run folder (trajectory.txt, keyframes.txt, graph.json,\n"
-      "loop_closures.csv, timing.json, run.json).");
+      "loop_closures.csv, timing.json with per-role comparison counters, run.json, and\n"
+      "wifi_clusters.csv with --wifi; layout in core/run_format.hpp).");
   app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
-  app->add_option("--frontend", args->frontend, "Loop-closure front end (" + frontend_names() + ")")
+  app->add_option("--frontend", args->frontend,
+                  "SLAM front end: memory, loop-closure candidates and acceptance (" +
+                      frontend_names() + ")")
       ->capture_default_str();
   app->add_flag(
       "--wifi", args->wifi,
-      "Wi-Fi variant: cluster keyframes by Wi-Fi signature and draw long-term loop-closure\n"
-      "candidates only from similar clusters (needs wifi.csv / scans in the scene)");
+      "Give the front end the Wi-Fi module (works with every --frontend): cluster keyframes by\n"
+      "Wi-Fi signature and bound the loop-closure search to similar clusters (needs wifi.csv /\n"
+      "scans in the scene)");
   app->add_option("--set", args->settings,
                   "SLAM option key=value (repeatable), e.g. --set min_matches=15 "
                   "--set inlier_distance=2.0");

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "core/atomic_file.hpp"
+#include "core/run_format.hpp"
 #include "core/tum_trajectory.hpp"
 
 namespace wifislam::slam {
@@ -66,20 +67,23 @@ void write_run_folder(const std::filesystem::path& run_dir, const SlamSystem& sy
   AtomicDirectory dir(run_dir, overwrite);
   const std::filesystem::path& out = dir.staging_path();
   write_tum_trajectory(
-      (out / "trajectory.txt").string(), system.trajectory(),
-      {"camera-to-map pose of every frame (wifislam slam, " + summary.frontend + ")",
+      (out / run_folder::kTrajectory).string(), system.trajectory(),
+      {"camera-to-map pose of every frame (wifislam slam, " + summary.label() + ")",
        "timestamp tx ty tz qx qy qz qw"});
-  write_tum_trajectory((out / "keyframes.txt").string(), system.keyframe_trajectory(),
+  write_tum_trajectory((out / run_folder::kKeyframes).string(), system.keyframe_trajectory(),
                        {"camera-to-map pose of every keyframe; line k = keyframe id k",
                         "timestamp tx ty tz qx qy qz qw"});
-  write_file_atomic(out / "graph.json", graph_to_json(system.graph()).dump(1) + "\n");
-  write_file_atomic(out / "loop_closures.csv", loop_closures_csv(system));
+  write_file_atomic(out / run_folder::kGraph, graph_to_json(system.graph()).dump(1) + "\n");
+  write_file_atomic(out / run_folder::kLoopClosures, loop_closures_csv(system));
   nlohmann::json timing = system.instrumentation().to_json();
-  timing["wall_s"] = summary.wall_s;
-  write_file_atomic(out / "timing.json", timing.dump(1) + "\n");
-  nlohmann::json run = summary.to_json();
+  timing[run_folder::timing_key::kWallS] = summary.wall_s;
+  write_file_atomic(out / run_folder::kTiming, timing.dump(1) + "\n");
+  nlohmann::json run = {{run_folder::run_key::kFormat, run_folder::kFormatName},
+                        {run_folder::run_key::kFormatVersion, run_folder::kFormatVersion}};
+  run.update(summary.to_json());
   run["options"] = to_json(system.options());
-  run["frontend_summary"] = system.selector().summary();
+  run["frontend_summary"] = system.front_end().summary();
+  run["edge_acceptance"] = system.front_end().acceptance().name();
   run["stream"] = {{"has_wifi", system.stream_info().has_wifi},
                    {"has_odometry", system.stream_info().has_odometry},
                    {"intrinsics",
@@ -90,8 +94,8 @@ void write_run_folder(const std::filesystem::path& run_dir, const SlamSystem& sy
                      {"cx_px", system.stream_info().intrinsics.cx_px},
                      {"cy_px", system.stream_info().intrinsics.cy_px}}}};
   run.update(extra_run_info);
-  write_file_atomic(out / "run.json", run.dump(1) + "\n");
-  system.selector().write_outputs(out);
+  write_file_atomic(out / run_folder::kRun, run.dump(1) + "\n");
+  system.front_end().write_outputs(out);
   dir.commit();
 }
 

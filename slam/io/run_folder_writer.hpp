@@ -1,14 +1,6 @@
 #pragma once
-// The SLAM run folder (DESIGN.md, "Data formats"):
-//   trajectory.txt     every frame, TUM (timestamp tx ty tz qx qy qz qw), camera-to-map
-//   keyframes.txt      the keyframes, TUM, same frame
-//   graph.json         nodes (keyframe id, frame index, time, pose) and edges (type
-//                      odometry / visual / loop / weak, relative pose, information, inliers)
-//   loop_closures.csv  one row per loop-closure edge
-//   timing.json        wall-clock per module, work counters, per-keyframe detection time
-//   run.json           options, input, counts
-// plus whatever the front end writes (e.g. wifi_clusters.csv). Written into <dir>.partial/ and
-// renamed when complete.
+// Writes the SLAM run folder (its files, keys and names: core/run_format.hpp) into <dir>.partial/
+// and renames it when complete; the front end adds its own files (e.g. wifi_clusters.csv).
 
 #include <filesystem>
 

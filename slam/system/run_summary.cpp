@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "core/run_format.hpp"
 #include "slam/system/slam_system.hpp"
 
 namespace wifislam::slam {
@@ -9,7 +10,8 @@ namespace wifislam::slam {
 RunSummary summarize(const SlamSystem& system, const std::string& input, double wall_s) {
   RunSummary s;
   s.input = input;
-  s.frontend = system.selector().name();
+  s.frontend = system.front_end().name();
+  s.wifi = system.front_end().wifi() != nullptr;
   const Instrumentation& inst = system.instrumentation();
   s.frames = inst.counter(counter::kFrames);
   s.keyframes = static_cast<std::int64_t>(system.graph().node_count());
@@ -42,12 +44,12 @@ RunSummary summarize(const SlamSystem& system, const std::string& input, double 
 std::string RunSummary::BriefReport() const {
   return fmt::format(
       "{}: {} frames, {} keyframes, {} loop closures, {:.1f} fps (pipeline), {:.1f} s wall",
-      frontend, frames, keyframes, loop_edges, pipeline_fps(), wall_s);
+      label(), frames, keyframes, loop_edges, pipeline_fps(), wall_s);
 }
 
 std::string RunSummary::FullReport() const {
   std::string out;
-  out += fmt::format("SLAM run ({})\n", frontend);
+  out += fmt::format("SLAM run ({})\n", label());
   out += fmt::format("  input                  {}\n", input);
   out += fmt::format("  frames                 {}\n", frames);
   out += fmt::format("  keyframes              {}\n", keyframes);
@@ -73,7 +75,8 @@ std::string RunSummary::FullReport() const {
 
 nlohmann::json RunSummary::to_json() const {
   return {{"input", input},
-          {"frontend", frontend},
+          {run_folder::run_key::kFrontend, frontend},
+          {run_folder::run_key::kWifi, wifi},
           {"frames", frames},
           {"keyframes", keyframes},
           {"edges",

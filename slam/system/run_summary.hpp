@@ -15,7 +15,8 @@ class SlamSystem;
 
 struct RunSummary {
   std::string input;     // the stream's description
-  std::string frontend;  // candidate selection policy
+  std::string frontend;  // the front end's name ("rgbdslam")
+  bool wifi = false;     // the front end held a Wi-Fi module
   std::int64_t frames = 0, keyframes = 0;
   std::int64_t visual_edges = 0, loop_edges = 0, odometry_edges = 0, weak_edges = 0;
   std::int64_t tracking_failures = 0, candidate_comparisons = 0, ransac_runs = 0;
@@ -27,6 +28,8 @@ struct RunSummary {
   /// Frames per second of the pipeline alone (processing_s), and including input (wall_s).
   double pipeline_fps() const { return processing_s > 0 ? frames / processing_s : 0.0; }
   double wall_fps() const { return wall_s > 0 ? frames / wall_s : 0.0; }
+  /// "rgbdslam" or "rgbdslam+wifi".
+  std::string label() const { return frontend + (wifi ? "+wifi" : ""); }
 
   std::string BriefReport() const;
   std::string FullReport() const;

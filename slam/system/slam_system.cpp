@@ -1,8 +1,9 @@
 #include "slam/system/slam_system.hpp"
 
 #include <algorithm>
+#include <chrono>
 
-#include "slam/loop/candidate_selector_factory.hpp"
+#include "slam/frontend/front_end_registry.hpp"
 
 namespace wifislam::slam {
 
@@ -18,15 +19,17 @@ Information6 diagonal_information(double sigma_m, double sigma_rad) {
 }  // namespace
 
 SlamSystem::SlamSystem(const SlamOptions& options, const StreamInfo& stream)
-    : options_(options), stream_(stream) {
+    : options_(options),
+      stream_(stream),
+      loop_rule_(options.tracking.loop_min_keyframe_gap, options.tracking.loop_min_path_m) {
   validate(options_);
   extractor_ = std::make_unique<OrbFeatureExtractor>(options_.features, stream_.intrinsics);
-  SelectorContext context;
+  FrontEndContext context;
   context.options = &options_;
   context.instrumentation = &instrumentation_;
   context.stream_has_wifi = stream_.has_wifi;
   context.stream_has_odometry = stream_.has_odometry;
-  selector_ = make_candidate_selector(context);
+  front_end_ = make_front_end(context);
 }
 
 SlamSystem::~SlamSystem() = default;
@@ -36,10 +39,10 @@ void SlamSystem::process(const SensorEvent& event) {
   if (const auto* frame = std::get_if<RgbdFrame>(&event)) {
     process_frame(*frame);
   } else if (const auto* scan = std::get_if<WifiScan>(&event)) {
-    selector_->observe_wifi_scan(*scan);
+    front_end_->observe_wifi_scan(*scan);
   } else if (const auto* odometry = std::get_if<OdometryReading>(&event)) {
     last_odometry_ = *odometry;
-    selector_->observe_odometry(*odometry);
+    front_end_->observe_odometry(*odometry);
   }
 }
 
@@ -48,9 +51,16 @@ std::optional<Pose> SlamSystem::current_odometry_camera() const {
   return last_odometry_->base_in_odom * stream_.camera_in_base;
 }
 
-VisualTransformation SlamSystem::compare(const FrameFeatures& a, const FrameFeatures& b) {
-  return estimate_visual_transformation(a, b, stream_.intrinsics, options_.transform,
-                                        instrumentation_);
+VisualTransformation SlamSystem::compare(const FrameFeatures& a, const FrameFeatures& b,
+                                         const std::string& role) {
+  const std::int64_t ransac_before = instrumentation_.counter(counter::kRansacRuns);
+  const auto start = std::chrono::steady_clock::now();
+  VisualTransformation t = estimate_visual_transformation(a, b, stream_.intrinsics,
+                                                          options_.transform, instrumentation_);
+  instrumentation_.record_comparison(
+      role, instrumentation_.counter(counter::kRansacRuns) - ransac_before, t.accepted,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  return t;
 }
 
 bool SlamSystem::needs_new_keyframe(const VisualTransformation& t) const {
@@ -80,7 +90,8 @@ void SlamSystem::process_frame(const RgbdFrame& frame) {
   for (int attempt = 0; attempt < 2; ++attempt) {
     const auto keyframe = static_cast<KeyframeId>(graph_.node_count() - 1);
     const VisualTransformation t =
-        compare(keyframe_features_[static_cast<std::size_t>(keyframe)], features);
+        compare(keyframe_features_[static_cast<std::size_t>(keyframe)], features, kTrackingRole);
+    if (t.accepted) instrumentation_.record_role_accepted(kTrackingRole);
     if (t.accepted && !needs_new_keyframe(t)) {
       frames_.push_back({frame.time, frame.index, keyframe, t.a_from_b});
       last_tracked_ =
@@ -117,9 +128,9 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
   frames_.push_back({features.time, features.frame_index, id, Pose::Identity()});
   keyframe_features_.push_back(std::move(features));
   keyframe_odometry_.push_back(odometry_camera);
-  keyframe_path_m_.push_back(
+  loop_rule_.add_keyframe(
       previous < 0 ? 0.0
-                   : keyframe_path_m_.back() +
+                   : loop_rule_.path_m(previous) +
                          (initial.translation() - graph_.node(previous).pose.translation()).norm());
   last_tracked_.reset();
   if (tracking) {
@@ -136,54 +147,72 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
     query.time = current.time;
     query.features = &current;
     query.graph = &graph_;
+    query.loop_rule = &loop_rule_;
     if (tracking) query.already_compared.push_back(tracking->from);
     std::vector<Candidate> candidates;
     {
       ScopedTimer selection(instrumentation_, module::kCandidateSelection);
-      candidates = selector_->select(query);
+      candidates = front_end_->select(query);
     }
     if (!tracking) {
-      // Lost: also try the most recent keyframes (relocalisation).
+      // Lost: also try the most recent searchable keyframes (relocalisation).
       for (KeyframeId k = previous;
            k >= 0 && k > previous - options_.tracking.relocalisation_keyframes; --k) {
         const bool listed = std::any_of(candidates.begin(), candidates.end(),
                                         [&](const Candidate& c) { return c.keyframe == k; });
-        if (!listed) candidates.push_back({k, CandidateRole::kRelocalisation});
+        if (!listed && front_end_->searchable(k)) {
+          candidates.push_back({k, CandidateRole::kRelocalisation});
+        }
       }
     }
 
+    // Visual verification of every candidate; the front end classifies what passes.
     VerificationReport report;
     report.keyframe = id;
     report.time = current.time;
     report.tracked_from = tracking ? tracking->from : -1;
-    bool have_pose = tracking.has_value();
+    std::vector<Hypothesis> hypotheses;
+    std::vector<std::size_t> outcome_of_hypothesis;
     for (const Candidate& candidate : candidates) {
       instrumentation_.count(counter::kCandidateComparisons);
       const VisualTransformation t =
-          compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current);
-      ComparisonOutcome outcome{candidate, t.accepted, t.inliers, EdgeType::kVisual};
+          compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current,
+                  to_string(candidate.role));
+      ComparisonOutcome outcome{candidate, t.accepted, false, t.inliers, EdgeType::kVisual};
       if (t.accepted) {
-        // A loop closure reaches back in time *and* in space: keyframes are dense when the view
-        // changes fast, so an id gap alone would call a match 2 m further down a corridor a loop.
-        const bool loop = id - candidate.keyframe >= options_.tracking.loop_min_keyframe_gap &&
-                          keyframe_path_m_.back() -
-                                  keyframe_path_m_[static_cast<std::size_t>(candidate.keyframe)] >=
-                              options_.tracking.loop_min_path_m;
-        outcome.edge_type = loop ? EdgeType::kLoop : EdgeType::kVisual;
-        graph_.add_edge(
-            {candidate.keyframe, id, outcome.edge_type, t.a_from_b, t.information, t.inliers});
-        if (!have_pose) {
-          graph_.set_pose(id, graph_.node(candidate.keyframe).pose * t.a_from_b);
-          have_pose = true;
-        }
-        if (loop) {
-          loop_closures_.push_back({candidate.keyframe, id, candidate.role, t.inliers,
-                                    t.rms_reprojection_px, t.a_from_b});
-          instrumentation_.count(counter::kLoopClosures);
-          loop_found = true;
-        }
+        outcome.edge_type = front_end_->classify(candidate, id, loop_rule_);
+        outcome_of_hypothesis.push_back(report.comparisons.size());
+        hypotheses.push_back({candidate, t, outcome.edge_type});
       }
       report.comparisons.push_back(outcome);
+    }
+
+    // The front end's acceptance policy decides which hypotheses become edges.
+    std::vector<std::size_t> accepted;
+    {
+      ScopedTimer acceptance(instrumentation_, module::kEdgeAcceptance);
+      accepted = front_end_->acceptance().choose(hypotheses, {&graph_, id, tracking.has_value()});
+    }
+    instrumentation_.count(counter::kRejectedHypotheses,
+                           static_cast<std::int64_t>(hypotheses.size() - accepted.size()));
+    bool have_pose = tracking.has_value();
+    for (std::size_t i : accepted) {
+      const Hypothesis& h = hypotheses.at(i);
+      const VisualTransformation& t = h.transformation;
+      graph_.add_edge(
+          {h.candidate.keyframe, id, h.edge_type, t.a_from_b, t.information, t.inliers});
+      report.comparisons[outcome_of_hypothesis[i]].accepted = true;
+      instrumentation_.record_role_accepted(to_string(h.candidate.role));
+      if (!have_pose) {
+        graph_.set_pose(id, graph_.node(h.candidate.keyframe).pose * t.a_from_b);
+        have_pose = true;
+      }
+      if (h.edge_type == EdgeType::kLoop) {
+        loop_closures_.push_back({h.candidate.keyframe, id, h.candidate.role, t.inliers,
+                                  t.rms_reprojection_px, t.a_from_b});
+        instrumentation_.count(counter::kLoopClosures);
+        loop_found = true;
+      }
     }
 
     // Attach a keyframe nothing visual connects (or add odometry edges when asked to).
@@ -206,7 +235,7 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
              0});
       }
     }
-    selector_->on_verified(report);
+    front_end_->on_verified(report);
     instrumentation_.record_keyframe_search(id, static_cast<std::int64_t>(candidates.size()),
                                             detection.stop());
   }

@@ -1,6 +1,8 @@
 #pragma once
 // The visual SLAM pipeline: features -> tracking against the last keyframe -> keyframes ->
-// candidate selection (the front end) -> visual verification -> pose graph (Ceres).
+// candidate selection (the front end) -> visual verification -> acceptance (the front end) ->
+// pose graph (Ceres). What differs between SLAM families is the front end's
+// (slam/frontend/front_end.hpp); everything here is shared.
 //
 // Tracking: each frame is matched against the last keyframe. It becomes a keyframe when its
 // inliers drop below `keyframe_min_inliers` or it moved beyond the keyframe bounds. When the
@@ -17,8 +19,9 @@
 #include "core/sensor_stream.hpp"
 #include "core/tum_trajectory.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
+#include "slam/frontend/front_end.hpp"
+#include "slam/frontend/loop_rule.hpp"
 #include "slam/graph/pose_graph.hpp"
-#include "slam/loop/candidate_selector.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 #include "slam/slam_options.hpp"
 #include "slam/util/instrumentation.hpp"
@@ -35,7 +38,7 @@ struct FramePoseRecord {
 
 struct LoopClosureRecord {
   KeyframeId from = -1, to = -1;  // from = the earlier keyframe
-  CandidateRole role = CandidateRole::kSampled;
+  CandidateRole role = CandidateRole::kLongTerm;
   int inliers = 0;
   double rms_reprojection_px = 0.0;
   Pose from_to = Pose::Identity();
@@ -51,7 +54,8 @@ struct StreamInfo {
 
 class SlamSystem {
  public:
-  /// Validates the options and builds the front end named by `options.frontend`.
+  /// Validates the options and builds the front end named by `options.frontend` (with a Wi-Fi
+  /// module when `options.wifi.enabled`).
   SlamSystem(const SlamOptions& options, const StreamInfo& stream);
   ~SlamSystem();
   SlamSystem(const SlamSystem&) = delete;
@@ -69,7 +73,8 @@ class SlamSystem {
   const std::vector<LoopClosureRecord>& loop_closures() const { return loop_closures_; }
   const Instrumentation& instrumentation() const { return instrumentation_; }
   Instrumentation& instrumentation() { return instrumentation_; }
-  const CandidateSelector& selector() const { return *selector_; }
+  const FrontEnd& front_end() const { return *front_end_; }
+  const LoopRule& loop_rule() const { return loop_rule_; }
   const OptimisationSummary& final_optimisation() const { return final_optimisation_; }
   const StreamInfo& stream_info() const { return stream_; }
 
@@ -98,17 +103,19 @@ class SlamSystem {
   /// Adds a keyframe, verifies its candidates, attaches it, optimises after loop closures.
   void add_keyframe(FrameFeatures features, std::optional<Pose> odometry_camera,
                     const std::optional<TrackingEdge>& tracking);
-  VisualTransformation compare(const FrameFeatures& a, const FrameFeatures& b);
+  /// Visual transformation between two frames; its work is booked under `role`.
+  VisualTransformation compare(const FrameFeatures& a, const FrameFeatures& b,
+                               const std::string& role);
 
   SlamOptions options_;
   StreamInfo stream_;
   Instrumentation instrumentation_;
   std::unique_ptr<OrbFeatureExtractor> extractor_;
-  std::unique_ptr<CandidateSelector> selector_;
+  std::unique_ptr<FrontEnd> front_end_;
   PoseGraph graph_;
   std::vector<FrameFeatures> keyframe_features_;
   std::vector<std::optional<Pose>> keyframe_odometry_;  // camera pose in the odometry frame
-  std::vector<double> keyframe_path_m_;  // estimated distance travelled up to each keyframe
+  LoopRule loop_rule_;  // knows every keyframe's estimated path length
   std::vector<FramePoseRecord> frames_;
   std::vector<LoopClosureRecord> loop_closures_;
   std::optional<TrackedFrame> last_tracked_;

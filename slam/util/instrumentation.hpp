@@ -11,30 +11,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/run_format.hpp"
+
 namespace wifislam::slam {
 
-/// Module names used by the pipeline (others, e.g. the Wi-Fi module's, may add their own).
-namespace module {
-inline constexpr const char* kFeatureExtraction = "feature_extraction";
-inline constexpr const char* kMatching = "matching";
-inline constexpr const char* kRansac = "ransac";
-inline constexpr const char* kCandidateSelection = "candidate_selection";
-inline constexpr const char* kLoopClosureDetection = "loop_closure_detection";
-inline constexpr const char* kOptimisation = "optimisation";
-inline constexpr const char* kTotal = "total";
-}  // namespace module
-
-/// Counter names used by the pipeline.
-namespace counter {
-inline constexpr const char* kFrames = "frames";
-inline constexpr const char* kKeyframes = "keyframes";
-inline constexpr const char* kCandidateComparisons = "candidate_comparisons";
-inline constexpr const char* kRansacRuns = "ransac_runs";
-inline constexpr const char* kAcceptedTransformations = "accepted_transformations";
-inline constexpr const char* kLoopClosures = "loop_closures";
-inline constexpr const char* kOptimisations = "optimisations";
-inline constexpr const char* kTrackingFailures = "tracking_failures";
-}  // namespace counter
+/// Module and counter names live with the run-folder format (core/run_format.hpp), which eval
+/// reads too; these aliases keep the pipeline's call sites short.
+namespace module = ::wifislam::run_folder::module;
+namespace counter = ::wifislam::run_folder::counter;
 
 class Instrumentation {
  public:
@@ -46,6 +30,13 @@ class Instrumentation {
   /// Adds `seconds` of wall-clock to `module`.
   void add_time(const std::string& module, double seconds);
   void count(const std::string& name, std::int64_t amount = 1);
+
+  /// Work of one visual comparison made for `role` (a candidate role, or "tracking"): its RANSAC
+  /// runs, whether it passed verification, and its wall-clock.
+  void record_comparison(const std::string& role, std::int64_t ransac_runs, bool verified,
+                         double seconds);
+  /// A verified comparison of `role` became a graph edge.
+  void record_role_accepted(const std::string& role);
 
   /// Loop-closure detection time of one keyframe, with the map size it searched (benchmark of
   /// how detection time grows with the map).
@@ -62,13 +53,21 @@ class Instrumentation {
   };
   const std::vector<KeyframeSearch>& keyframe_searches() const { return keyframe_searches_; }
 
-  /// {"modules": {name: {"total_s", "calls"}}, "counters": {...}, "keyframe_searches": [...]}.
+  struct RoleWork {
+    std::int64_t comparisons = 0, ransac_runs = 0, verified = 0, accepted = 0;
+    double time_s = 0.0;
+  };
+  const std::map<std::string, RoleWork>& roles() const { return roles_; }
+
+  /// {"modules": {name: {"total_s", "calls"}}, "counters": {...}, "roles": {role: {...}},
+  /// "keyframe_searches": [...]} (core/run_format.hpp).
   nlohmann::json to_json() const;
 
  private:
   std::map<std::string, ModuleTime> modules_;
   std::map<std::string, std::int64_t> counters_;
   std::vector<KeyframeSearch> keyframe_searches_;
+  std::map<std::string, RoleWork> roles_;
 };
 
 /// Adds the wall-clock between construction and destruction (or stop()) to a module.

@@ -162,6 +162,7 @@ TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
 TEST(EvalCommand, WifiRunGetsClusterPlot) {
   const fs::path dir = scratch("wifi");
   const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
+  std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam", "wifi": true})";
   std::ofstream(run.run_dir / "wifi_clusters.csv")
       << "cluster_id,founder_keyframe,keyframes,representative_signature\n"
          "0,0,0 1 2 3 4,02:1a:11:00:00:30=-61.5;02:1a:11:00:00:40=-70\n"
@@ -176,6 +177,38 @@ TEST(EvalCommand, WifiRunGetsClusterPlot) {
   const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "out" / "metrics.json"));
   EXPECT_EQ(m["wifi_clusters"], 2);
   EXPECT_EQ(m["wifi_run"], true);
+  fs::remove_all(dir);
+}
+
+// Whether a run used Wi-Fi is what its run.json says, not which files lie in the folder.
+TEST(EvalCommand, WifiRunIsWhatRunJsonSays) {
+  const fs::path dir = scratch("wifi_flag");
+  const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
+  // A stray clusters file in a vanilla run is not read.
+  std::ofstream(run.run_dir / "wifi_clusters.csv") << "not,a,clusters,file\n";
+  Result r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
+                          " --no-plots -o " + (dir / "vanilla").string(),
+                      dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "vanilla" / "metrics.json"));
+  EXPECT_EQ(m["wifi_run"], false);
+  // A Wi-Fi run without its clusters file is an error naming the file.
+  fs::remove(run.run_dir / "wifi_clusters.csv");
+  std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam", "wifi": true})";
+  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
+                   (dir / "wifi").string(),
+               dir);
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_NE(r.err.find("wifi_clusters.csv"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "wifi"));
+  // A wrongly typed flag is located.
+  std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam", "wifi": "yes"})";
+  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
+                   (dir / "typed").string(),
+               dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("run.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("wifi"), std::string::npos) << r.err;
   fs::remove_all(dir);
 }
 

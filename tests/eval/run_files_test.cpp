@@ -123,6 +123,27 @@ TEST(TimingTable, WifiOverheadIsClusteringPlusManagement) {
             std::string::npos);
 }
 
+TEST(TimingTable, ReadsPerRoleWorkAndLocatesAMissingField) {
+  const fs::path p = write_temp("timing_roles.json", R"({
+ "roles": {"long_term": {"comparisons": 40, "ransac_runs": 31, "verified": 3, "accepted": 2,
+                         "time_s": 0.5},
+           "tracking": {"comparisons": 100, "ransac_runs": 100, "verified": 97,
+                        "accepted": 97, "time_s": 1.5}}})");
+  const TimingTable t = read_timing_json(p);
+  ASSERT_EQ(t.roles.size(), 2u);
+  EXPECT_EQ(t.roles.at("long_term").comparisons, 40);
+  EXPECT_EQ(t.roles.at("long_term").ransac_runs, 31);
+  EXPECT_EQ(t.roles.at("long_term").verified, 3);
+  EXPECT_EQ(t.roles.at("long_term").accepted, 2);
+  EXPECT_DOUBLE_EQ(t.roles.at("tracking").time_s, 1.5);
+  const fs::path missing =
+      write_temp("timing_roles_missing.json",
+                 R"({"roles": {"neighbour": {"comparisons": 1, "ransac_runs": 1, "verified": 1,
+                                  "time_s": 0.1}}})");
+  EXPECT_NE(error_of([&] { read_timing_json(missing); }).find("roles.neighbour.accepted"),
+            std::string::npos);
+}
+
 TEST(EvalOptions, SetAndValidate) {
   EvalOptions o;
   set_option(o, "revisit_min_path_m=12.5");

@@ -8,8 +8,8 @@
 #include <set>
 
 #include "core/error.hpp"
-#include "slam/loop/candidate_selector_factory.hpp"
-#include "slam/loop/rgbdslam_candidate_selector.hpp"
+#include "slam/frontend/front_end_registry.hpp"
+#include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 
 namespace wifislam::slam {
 namespace {
@@ -33,7 +33,7 @@ SelectionQuery query_for(const PoseGraph& graph, KeyframeId id) {
 
 TEST(RgbdslamSelection, PredecessorsNeighboursAndRandomEarlierKeyframes) {
   const PoseGraph graph = chain_with_loop(41);
-  RgbdslamCandidateSelector selector(RgbdslamOptions{}, 7);
+  RgbdslamFrontEnd selector(RgbdslamOptions{}, 2, 7);
   const std::vector<Candidate> c = selector.select(query_for(graph, 40));
   std::map<CandidateRole, std::vector<KeyframeId>> by_role;
   for (const Candidate& x : c) by_role[x.role].push_back(x.keyframe);
@@ -44,7 +44,7 @@ TEST(RgbdslamSelection, PredecessorsNeighboursAndRandomEarlierKeyframes) {
   const std::set<KeyframeId> reachable{37, 36, 0, 1, 2};
   ASSERT_EQ(by_role[CandidateRole::kNeighbour].size(), 2u);
   for (KeyframeId k : by_role[CandidateRole::kNeighbour]) EXPECT_TRUE(reachable.count(k)) << k;
-  ASSERT_EQ(by_role[CandidateRole::kSampled].size(), 2u);
+  ASSERT_EQ(by_role[CandidateRole::kLongTerm].size(), 2u);
   std::set<KeyframeId> all;
   for (const Candidate& x : c) {
     EXPECT_LT(x.keyframe, 40);
@@ -56,7 +56,7 @@ TEST(RgbdslamSelection, PredecessorsNeighboursAndRandomEarlierKeyframes) {
 TEST(RgbdslamSelection, SameSeedSameCandidatesOtherSeedOtherCandidates) {
   const PoseGraph graph = chain_with_loop(200);
   auto run = [&](std::uint64_t seed) {
-    RgbdslamCandidateSelector selector(RgbdslamOptions{}, seed);
+    RgbdslamFrontEnd selector(RgbdslamOptions{}, 2, seed);
     std::vector<KeyframeId> out;
     for (KeyframeId id = 100; id < 199; ++id) {
       for (const Candidate& c : selector.select(query_for(graph, id))) out.push_back(c.keyframe);
@@ -72,11 +72,11 @@ TEST(RgbdslamSelection, RandomKeyframesCoverTheWholeMap) {
   const PoseGraph graph = chain_with_loop(60);
   RgbdslamOptions options;
   options.neighbor_candidates = 0;
-  RgbdslamCandidateSelector selector(options, 5);
+  RgbdslamFrontEnd selector(options, 2, 5);
   std::set<KeyframeId> seen;
   for (int i = 0; i < 400; ++i) {
     for (const Candidate& c : selector.select(query_for(graph, 50))) {
-      if (c.role == CandidateRole::kSampled) seen.insert(c.keyframe);
+      if (c.role == CandidateRole::kLongTerm) seen.insert(c.keyframe);
     }
   }
   EXPECT_EQ(seen.size(), 48u);  // keyframes 0..47 (48 and 49 are predecessors)
@@ -84,7 +84,7 @@ TEST(RgbdslamSelection, RandomKeyframesCoverTheWholeMap) {
 
 TEST(RgbdslamSelection, FirstKeyframesGetWhatExists) {
   const PoseGraph graph = chain_with_loop(3);
-  RgbdslamCandidateSelector selector(RgbdslamOptions{}, 1);
+  RgbdslamFrontEnd selector(RgbdslamOptions{}, 2, 1);
   SelectionQuery q;
   q.keyframe = 0;
   q.graph = &graph;
@@ -96,41 +96,44 @@ TEST(RgbdslamSelection, FirstKeyframesGetWhatExists) {
 }
 
 /// A front end defined outside the library: the seam admits it without touching the pipeline.
-class EveryKeyframeSelector : public CandidateSelector {
+class EveryKeyframeSelector : public FrontEnd {
  public:
+  EveryKeyframeSelector() : FrontEnd(std::make_unique<AcceptAllHypotheses>()) {}
   std::string name() const override { return "every_keyframe_test"; }
   std::vector<Candidate> select(const SelectionQuery& q) override {
     std::vector<Candidate> out;
-    for (KeyframeId k = 0; k < q.keyframe; ++k) out.push_back({k, CandidateRole::kSampled});
+    for (KeyframeId k = 0; k < q.keyframe; ++k) out.push_back({k, CandidateRole::kLongTerm});
     return out;
   }
 };
 
-TEST(CandidateSelectorFactory, BuildsByNameAndRejectsUnknownNames) {
+TEST(FrontEndRegistry, BuildsByNameAndRejectsUnknownNames) {
   SlamOptions options;
   Instrumentation instrumentation;
-  SelectorContext context{&options, &instrumentation, false, false};
-  EXPECT_EQ(make_candidate_selector(context)->name(), "rgbdslam");
+  FrontEndContext context{&options, &instrumentation, false, false};
+  EXPECT_EQ(make_front_end(context)->name(), "rgbdslam");
   options.frontend = "no_such_frontend";
   try {
-    make_candidate_selector(context);
+    make_front_end(context);
     FAIL() << "expected InvalidInputError";
   } catch (const InvalidInputError& e) {
     EXPECT_NE(std::string(e.what()).find("rgbdslam"), std::string::npos) << e.what();
   }
-  register_candidate_selector("every_keyframe_test", [](const SelectorContext&) {
+  register_front_end("every_keyframe_test", [](const FrontEndContext&) {
     return std::make_unique<EveryKeyframeSelector>();
   });
   options.frontend = "every_keyframe_test";
-  EXPECT_EQ(make_candidate_selector(context)->name(), "every_keyframe_test");
+  EXPECT_EQ(make_front_end(context)->name(), "every_keyframe_test");
 }
 
 TEST(VerificationReport, ListsVisuallyConnectedKeyframes) {
   VerificationReport report;
   report.tracked_from = 9;
-  report.comparisons = {{{8, CandidateRole::kPredecessor}, true, 50, EdgeType::kVisual},
-                        {{2, CandidateRole::kSampled}, false, 0, EdgeType::kVisual},
-                        {{1, CandidateRole::kSampled}, true, 30, EdgeType::kLoop}};
+  report.comparisons = {{{8, CandidateRole::kPredecessor}, true, true, 50, EdgeType::kVisual},
+                        {{2, CandidateRole::kLongTerm}, false, false, 0, EdgeType::kVisual},
+                        {{5, CandidateRole::kLongTerm}, true, false, 40, EdgeType::kLoop},
+                        {{1, CandidateRole::kLongTerm}, true, true, 30, EdgeType::kLoop}};
+  // Keyframe 5 passed verification but acceptance refused the edge: not connected.
   EXPECT_EQ(report.visually_connected(), (std::vector<KeyframeId>{1, 8, 9}));
 }
 

@@ -1,14 +1,13 @@
-// Bounding loop-closure search in RGBD-SLAM: the random earlier keyframes come only from similar
-// Wi-Fi clusters; predecessors and neighbours are untouched; no Wi-Fi information falls back to
-// vanilla sampling.
+// Bounding loop-closure search in RGBD-SLAM holding the Wi-Fi module: the random earlier
+// keyframes come only from similar Wi-Fi clusters; predecessors and neighbours are untouched; no
+// Wi-Fi information falls back to vanilla sampling.
 
 #include <gtest/gtest.h>
 
 #include <set>
 
 #include "core/error.hpp"
-#include "slam/loop/candidate_selector_factory.hpp"
-#include "slam/loop/wifi_rgbdslam_candidate_selector.hpp"
+#include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 
 namespace wifislam::slam {
 namespace {
@@ -25,22 +24,25 @@ WifiScan scan_of(double start_s, std::vector<std::pair<std::uint64_t, int>> aps)
 const std::vector<std::pair<std::uint64_t, int>> kPlaceA = {{0x10, -40}, {0x20, -60}, {0x30, -90}};
 const std::vector<std::pair<std::uint64_t, int>> kPlaceB = {{0x10, -90}, {0x20, -60}, {0x30, -40}};
 
-/// Drives a selector over a chain of keyframes, each tracked from the previous one.
+/// Drives RGBD-SLAM holding a Wi-Fi module over a chain of keyframes, each tracked from the
+/// previous one.
 class Driver {
  public:
-  explicit Driver(WifiOptions wifi = {}) {
+  explicit Driver(WifiOptions wifi = {}) : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
     wifi.enabled = true;
-    selector_ = std::make_unique<WifiRgbdslamCandidateSelector>(RgbdslamOptions{}, wifi,
-                                                                /*loop_min_keyframe_gap=*/15,
-                                                                /*seed=*/5, instrumentation_);
+    selector_ = std::make_unique<RgbdslamFrontEnd>(RgbdslamOptions{}, wifi.sampled_candidates,
+                                                   /*seed=*/5);
+    selector_->attach_wifi(std::make_unique<WifiModule>(wifi, instrumentation_));
   }
   std::vector<Candidate> add_keyframe() {
     const KeyframeId id = graph_.add_node(Timestamp::from_ns(graph_.node_count()),
                                           graph_.node_count(), Pose::Identity());
     if (id > 0) graph_.add_edge({id - 1, id, EdgeType::kVisual});
+    rule_.add_keyframe(static_cast<double>(id));
     SelectionQuery q;
     q.keyframe = id;
     q.graph = &graph_;
+    q.loop_rule = &rule_;
     if (id > 0) q.already_compared = {id - 1};
     std::vector<Candidate> c = selector_->select(q);
     VerificationReport report;
@@ -49,19 +51,21 @@ class Driver {
     selector_->on_verified(report);
     return c;
   }
-  WifiRgbdslamCandidateSelector& selector() { return *selector_; }
+  RgbdslamFrontEnd& selector() { return *selector_; }
+  const WifiClusterMap& clusters() const { return selector_->wifi()->clusters(); }
   Instrumentation& instrumentation() { return instrumentation_; }
 
  private:
   Instrumentation instrumentation_;
   PoseGraph graph_;
-  std::unique_ptr<WifiRgbdslamCandidateSelector> selector_;
+  LoopRule rule_;
+  std::unique_ptr<RgbdslamFrontEnd> selector_;
 };
 
 std::set<KeyframeId> sampled(const std::vector<Candidate>& candidates) {
   std::set<KeyframeId> out;
   for (const Candidate& c : candidates) {
-    if (c.role == CandidateRole::kSampled) out.insert(c.keyframe);
+    if (c.role == CandidateRole::kLongTerm) out.insert(c.keyframe);
   }
   return out;
 }
@@ -72,7 +76,7 @@ TEST(WifiRgbdslamSelection, LongTermCandidatesComeOnlyFromSimilarClusters) {
   for (int i = 0; i < 30; ++i) d.add_keyframe();  // 0..29 at A
   d.selector().observe_wifi_scan(scan_of(100, kPlaceB));
   for (int i = 0; i < 30; ++i) d.add_keyframe();  // 30..59 at B
-  ASSERT_EQ(d.selector().clusters().clusters().size(), 2u);
+  ASSERT_EQ(d.clusters().clusters().size(), 2u);
   d.selector().observe_wifi_scan(scan_of(200, kPlaceA));
   for (int i = 0; i < 10; ++i) {  // back at A: 60..69
     const std::set<KeyframeId> s = sampled(d.add_keyframe());
@@ -124,19 +128,7 @@ TEST(WifiRgbdslamSelection, WithoutWifiInformationItSamplesLikeVanilla) {
   Driver d;
   for (int i = 0; i < 40; ++i) d.add_keyframe();
   EXPECT_EQ(d.instrumentation().counter(counter::kWifiUnsignedKeyframes), 40);
-  EXPECT_TRUE(d.selector().clusters().clusters().empty());
-}
-
-TEST(WifiRgbdslamSelection, FactoryBuildsTheVariantAndRefusesAStreamWithoutWifi) {
-  SlamOptions options;
-  options.wifi.enabled = true;
-  Instrumentation instrumentation;
-  SelectorContext context{&options, &instrumentation, /*stream_has_wifi=*/true, false};
-  EXPECT_EQ(make_candidate_selector(context)->name(), "rgbdslam+wifi");
-  context.stream_has_wifi = false;
-  EXPECT_THROW(make_candidate_selector(context), InvalidInputError);
-  options.wifi.enabled = false;
-  EXPECT_EQ(make_candidate_selector(context)->name(), "rgbdslam");
+  EXPECT_TRUE(d.clusters().clusters().empty());
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "slam/loop/candidate_selector.hpp"
+#include "slam/frontend/candidate.hpp"
 
 #include <algorithm>
 
@@ -10,8 +10,8 @@ std::string to_string(CandidateRole role) {
       return "predecessor";
     case CandidateRole::kNeighbour:
       return "neighbour";
-    case CandidateRole::kSampled:
-      return "sampled";
+    case CandidateRole::kLongTerm:
+      return "long_term";
     case CandidateRole::kRelocalisation:
       return "relocalisation";
   }

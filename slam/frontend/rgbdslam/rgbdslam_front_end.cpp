@@ -1,4 +1,4 @@
-#include "slam/loop/rgbdslam_candidate_selector.hpp"
+#include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 
 #include <algorithm>
 
@@ -20,11 +20,18 @@ std::vector<KeyframeId> sample_without_replacement(const std::vector<KeyframeId>
   return out;
 }
 
-RgbdslamCandidateSelector::RgbdslamCandidateSelector(const RgbdslamOptions& options,
-                                                     std::uint64_t seed)
-    : options_(options), rng_(Rng::stream(seed, "slam/rgbdslam/candidates")) {}
+RgbdslamFrontEnd::RgbdslamFrontEnd(const RgbdslamOptions& options, int wifi_long_term_candidates,
+                                   std::uint64_t seed)
+    : FrontEnd(std::make_unique<AcceptAllHypotheses>()),
+      options_(options),
+      wifi_long_term_candidates_(wifi_long_term_candidates),
+      rng_(Rng::stream(seed, "slam/rgbdslam/candidates")),
+      wifi_rng_(Rng::stream(seed, "slam/wifi/candidates")) {}
 
-std::vector<Candidate> RgbdslamCandidateSelector::select(const SelectionQuery& query) {
+std::vector<Candidate> RgbdslamFrontEnd::select(const SelectionQuery& query) {
+  // Wi-Fi clustering: the new keyframe's signature and its similar clusters.
+  if (wifi() != nullptr) wifi()->sign(query.keyframe);
+
   std::vector<Candidate> out;
   const KeyframeId current = query.keyframe;
   std::vector<std::uint8_t> taken(static_cast<std::size_t>(std::max(current, 0)) + 1, 0);
@@ -64,13 +71,34 @@ std::vector<Candidate> RgbdslamCandidateSelector::select(const SelectionQuery& q
   for (KeyframeId id = 0; id < current; ++id) {
     if (!taken[static_cast<std::size_t>(id)]) eligible.push_back(id);
   }
-  for (KeyframeId id : long_term_candidates(query, eligible)) take(id, CandidateRole::kSampled);
+  for (KeyframeId id : long_term_candidates(query, eligible)) take(id, CandidateRole::kLongTerm);
   return out;
 }
 
-std::vector<KeyframeId> RgbdslamCandidateSelector::long_term_candidates(
-    const SelectionQuery& /*query*/, const std::vector<KeyframeId>& eligible) {
-  return sample_without_replacement(eligible, options_.min_sampled_candidates, rng_);
+std::vector<KeyframeId> RgbdslamFrontEnd::long_term_candidates(
+    const SelectionQuery& query, const std::vector<KeyframeId>& eligible) {
+  if (wifi() == nullptr || !wifi()->has_signature()) {
+    return sample_without_replacement(eligible, options_.min_sampled_candidates, rng_);
+  }
+  // Bounding: eligible keyframes old enough for a match to be a loop closure, kept when they
+  // belong to a similar cluster.
+  const int gap = query.loop_rule != nullptr ? query.loop_rule->min_keyframe_gap() : 0;
+  std::vector<KeyframeId> old_enough;
+  for (KeyframeId id : eligible) {
+    if (query.keyframe - id < gap) break;
+    old_enough.push_back(id);
+  }
+  const std::vector<KeyframeId> pool = wifi()->bound(old_enough);
+  if (wifi_long_term_candidates_ <= 0) return pool;
+  return sample_without_replacement(pool, wifi_long_term_candidates_, wifi_rng_);
+}
+
+nlohmann::json RgbdslamFrontEnd::own_summary() const {
+  nlohmann::json out = {{"predecessor_candidates", options_.predecessor_candidates},
+                        {"neighbor_candidates", options_.neighbor_candidates},
+                        {"min_sampled_candidates", options_.min_sampled_candidates}};
+  if (wifi() != nullptr) out["wifi_sampled_candidates"] = wifi_long_term_candidates_;
+  return out;
 }
 
 }  // namespace wifislam::slam

@@ -1,0 +1,93 @@
+#pragma once
+// The SLAM run folder (DESIGN.md, "Data formats"): the names `wifislam slam` writes (slam/io) and
+// `wifislam eval` reads (eval/), in one place, like dataset_format.hpp for datasets.
+//
+//   trajectory.txt     every frame, TUM (timestamp tx ty tz qx qy qz qw), camera-to-map
+//   keyframes.txt      the keyframes, TUM, same frame; line k = keyframe id k
+//   graph.json         nodes (keyframe id, frame index, time, pose) and edges (type
+//                      odometry / visual / loop / weak, relative pose, information, inliers)
+//   loop_closures.csv  one row per loop-closure edge, with the candidate role that found it
+//   wifi_clusters.csv  Wi-Fi runs only: one row per cluster (slam/wifi/wifi_cluster_map.hpp)
+//   timing.json        {"modules": {name: {"total_s", "calls"}}, "counters": {name: n},
+//                       "roles": {role: {"comparisons", "ransac_runs", "verified", "accepted",
+//                       "time_s"}}, "keyframe_searches": [...], "wall_s"}
+//   run.json           {"format", "format_version", "frontend", "wifi", "options", counts, ...}
+//
+// Whether a run used the Wi-Fi module is run.json's "wifi", never guessed from which files exist.
+
+namespace wifislam::run_folder {
+
+inline constexpr const char* kFormatName = "wifislam-run";
+/// 2: run.json names the front end and the Wi-Fi switch separately and timing.json has "roles".
+inline constexpr int kFormatVersion = 2;
+
+inline constexpr const char* kTrajectory = "trajectory.txt";
+inline constexpr const char* kKeyframes = "keyframes.txt";
+inline constexpr const char* kGraph = "graph.json";
+inline constexpr const char* kLoopClosures = "loop_closures.csv";
+inline constexpr const char* kWifiClusters = "wifi_clusters.csv";
+inline constexpr const char* kTiming = "timing.json";
+inline constexpr const char* kRun = "run.json";
+
+/// Keys of run.json that readers rely on.
+namespace run_key {
+inline constexpr const char* kFormat = "format";
+inline constexpr const char* kFormatVersion = "format_version";
+inline constexpr const char* kFrontend = "frontend";  // "rgbdslam", without a Wi-Fi suffix
+inline constexpr const char* kWifi = "wifi";          // true when the Wi-Fi module ran
+}  // namespace run_key
+
+/// Keys of timing.json.
+namespace timing_key {
+inline constexpr const char* kModules = "modules";
+inline constexpr const char* kCounters = "counters";
+inline constexpr const char* kRoles = "roles";
+inline constexpr const char* kKeyframeSearches = "keyframe_searches";
+inline constexpr const char* kWallS = "wall_s";
+}  // namespace timing_key
+
+/// Wall-clock modules of timing.json. Nested ones: loop_closure_detection contains
+/// candidate_selection and the verifications of candidates; wifi_clustering is booked inside
+/// whichever module asked for it (scan aggregation outside any).
+namespace module {
+inline constexpr const char* kFeatureExtraction = "feature_extraction";
+inline constexpr const char* kMatching = "matching";
+inline constexpr const char* kRansac = "ransac";
+inline constexpr const char* kCandidateSelection = "candidate_selection";
+inline constexpr const char* kLoopClosureDetection = "loop_closure_detection";
+inline constexpr const char* kEdgeAcceptance = "edge_acceptance";
+inline constexpr const char* kOptimisation = "optimisation";
+inline constexpr const char* kTotal = "total";
+/// The Wi-Fi module's overhead (the paper's "Wi-Fi overhead" = the sum of the two).
+inline constexpr const char* kWifiClustering = "wifi_clustering";
+inline constexpr const char* kWifiClusterManagement = "wifi_cluster_management";
+}  // namespace module
+
+/// Deterministic work counters of timing.json.
+namespace counter {
+inline constexpr const char* kFrames = "frames";
+inline constexpr const char* kKeyframes = "keyframes";
+inline constexpr const char* kCandidateComparisons = "candidate_comparisons";
+inline constexpr const char* kRansacRuns = "ransac_runs";
+inline constexpr const char* kAcceptedTransformations = "accepted_transformations";
+inline constexpr const char* kLoopClosures = "loop_closures";
+inline constexpr const char* kRejectedHypotheses = "rejected_hypotheses";
+inline constexpr const char* kOptimisations = "optimisations";
+inline constexpr const char* kTrackingFailures = "tracking_failures";
+inline constexpr const char* kWifiSimilarityComparisons = "wifi_similarity_comparisons";
+inline constexpr const char* kWifiUnsignedKeyframes = "wifi_keyframes_without_signature";
+inline constexpr const char* kWifiBoundedPool = "wifi_bounded_pool_keyframes";
+inline constexpr const char* kWifiClustersFounded = "wifi_clusters_founded";
+inline constexpr const char* kWifiClusterJoins = "wifi_cluster_joins";
+}  // namespace counter
+
+/// Fields of one role's entry in timing.json's "roles".
+namespace role_key {
+inline constexpr const char* kComparisons = "comparisons";  // visual comparisons tried
+inline constexpr const char* kRansacRuns = "ransac_runs";
+inline constexpr const char* kVerified = "verified";  // transformation passed verification
+inline constexpr const char* kAccepted = "accepted";  // ... and became a graph edge
+inline constexpr const char* kTimeS = "time_s";       // wall-clock of those comparisons
+}  // namespace role_key
+
+}  // namespace wifislam::run_folder

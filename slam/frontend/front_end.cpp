@@ -1,0 +1,54 @@
+#include "slam/frontend/front_end.hpp"
+
+#include <stdexcept>
+
+namespace wifislam::slam {
+
+FrontEnd::FrontEnd(std::unique_ptr<EdgeAcceptance> acceptance)
+    : acceptance_(std::move(acceptance)) {
+  if (!acceptance_) throw std::logic_error("FrontEnd: an edge acceptance policy is required");
+}
+
+FrontEnd::~FrontEnd() = default;
+
+std::string FrontEnd::label() const { return name() + (wifi_ ? "+wifi" : ""); }
+
+void FrontEnd::attach_wifi(std::unique_ptr<WifiModule> module) {
+  if (wifi_) throw std::logic_error("FrontEnd: a Wi-Fi module is already attached");
+  wifi_ = std::move(module);
+}
+
+void FrontEnd::observe_wifi_scan(const WifiScan& scan) {
+  if (wifi_) wifi_->observe_scan(scan);
+}
+
+void FrontEnd::observe_odometry(const OdometryReading& reading) {
+  if (wifi_) wifi_->observe_odometry(reading);
+  on_odometry(reading);
+}
+
+EdgeType FrontEnd::classify(const Candidate& candidate, KeyframeId keyframe,
+                            const LoopRule& rule) const {
+  return rule.is_loop(candidate.keyframe, keyframe) ? EdgeType::kLoop : EdgeType::kVisual;
+}
+
+void FrontEnd::on_verified(const VerificationReport& report) {
+  // Cluster management for the keyframe the front end signed during selection.
+  if (wifi_ && !assigns_wifi_clusters_itself() && wifi_->current() == report.keyframe) {
+    wifi_->assign(report.keyframe, report.visually_connected());
+  }
+  after_verification(report);
+}
+
+void FrontEnd::write_outputs(const std::filesystem::path& run_dir) const {
+  if (wifi_) wifi_->write_outputs(run_dir);
+  write_own_outputs(run_dir);
+}
+
+nlohmann::json FrontEnd::summary() const {
+  nlohmann::json out = own_summary();
+  if (wifi_) out.update(wifi_->summary());
+  return out;
+}
+
+}  // namespace wifislam::slam

@@ -1,0 +1,92 @@
+#pragma once
+// A SLAM front end: the policies where the three families of the paper differ (DESIGN.md, "The
+// SLAM pipeline"). The shared pipeline (slam/system) owns features, tracking, the keyframe
+// decision, visual verification, the pose graph and its optimiser, and run output; for each new
+// keyframe it asks the front end
+//   memory       which keyframes may be compared at all (searchable)
+//   candidates   which to verify, in what order, and why (select -> roles)
+//   classify     whether a verified match is a loop closure or an ordinary visual edge
+//   acceptance   which verified hypotheses become edges (an EdgeAcceptance policy)
+// and tells it afterwards what came of them (on_verified).
+//
+// The Wi-Fi module is not a kind of front end: a front end *holds* one when the run asks for
+// Wi-Fi (attach_wifi), sees it through wifi(), and calls it at the paper's points. The base class
+// feeds it every scan and odometry reading, runs cluster management after verification for the
+// keyframes the front end signed, and writes its outputs; the rest is the front end's.
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/sensor_stream.hpp"
+#include "core/wifi_scan.hpp"
+#include "slam/frontend/candidate.hpp"
+#include "slam/frontend/edge_acceptance.hpp"
+#include "slam/wifi/wifi_module.hpp"
+
+namespace wifislam::slam {
+
+class FrontEnd {
+ public:
+  /// `acceptance`: the front end's policy for turning verified hypotheses into edges.
+  explicit FrontEnd(std::unique_ptr<EdgeAcceptance> acceptance);
+  virtual ~FrontEnd();
+  FrontEnd(const FrontEnd&) = delete;
+  FrontEnd& operator=(const FrontEnd&) = delete;
+
+  /// The front end's name as given on the command line ("rgbdslam").
+  virtual std::string name() const = 0;
+  /// name(), plus "+wifi" when a Wi-Fi module is attached (for reports).
+  std::string label() const;
+
+  /// Gives the front end its Wi-Fi module (once, before the first event).
+  void attach_wifi(std::unique_ptr<WifiModule> module);
+  WifiModule* wifi() { return wifi_.get(); }
+  const WifiModule* wifi() const { return wifi_.get(); }
+
+  /// Sensor events other than frames, in stream order, before any later frame is processed.
+  void observe_wifi_scan(const WifiScan& scan);
+  void observe_odometry(const OdometryReading& reading);
+
+  /// Memory: whether `keyframe` may be compared with a new keyframe at all (relocalisation
+  /// candidates are filtered by it). Default: every keyframe.
+  virtual bool searchable(KeyframeId /*keyframe*/) const { return true; }
+
+  /// Candidates for a new keyframe, in the order they should be verified.
+  virtual std::vector<Candidate> select(const SelectionQuery& query) = 0;
+
+  /// Edge type of a verified match of `candidate` with the new keyframe. Default: the pipeline's
+  /// loop rule (kLoop when the candidate is far enough back in keyframes and path).
+  virtual EdgeType classify(const Candidate& candidate, KeyframeId keyframe,
+                            const LoopRule& rule) const;
+
+  const EdgeAcceptance& acceptance() const { return *acceptance_; }
+
+  /// Called once per new keyframe after its hypotheses were accepted or not. Runs Wi-Fi cluster
+  /// management for the keyframe if the front end signed it during selection (unless it assigns
+  /// its own places), then after_verification().
+  void on_verified(const VerificationReport& report);
+
+  /// Extra files for the run folder (wifi_clusters.csv, the front end's own) and the front end's
+  /// part of run.json.
+  void write_outputs(const std::filesystem::path& run_dir) const;
+  nlohmann::json summary() const;
+
+ protected:
+  /// True for a front end whose places are not the pipeline's keyframes (RTAB-Map's nodes): it
+  /// signs and assigns its own places, and on_verified() leaves the module alone.
+  virtual bool assigns_wifi_clusters_itself() const { return false; }
+  virtual void on_odometry(const OdometryReading& /*reading*/) {}
+  virtual void after_verification(const VerificationReport& /*report*/) {}
+  virtual void write_own_outputs(const std::filesystem::path& /*run_dir*/) const {}
+  virtual nlohmann::json own_summary() const { return nlohmann::json::object(); }
+
+ private:
+  std::unique_ptr<EdgeAcceptance> acceptance_;
+  std::unique_ptr<WifiModule> wifi_;
+};
+
+}  // namespace wifislam::slam

@@ -1,0 +1,102 @@
+// The front ends' acceptance policies: every hypothesis (RGBD-SLAM), the best loop hypothesis
+// only (RTAB-Map, ORB-SLAM), and the graph-consistency check (RTAB-Map's RGBD/OptimizeMaxError)
+// with a real Ceres solve: a loop closure that contradicts the rest of the graph is refused, one
+// that agrees is kept.
+
+#include <gtest/gtest.h>
+
+#include "slam/frontend/edge_acceptance.hpp"
+
+namespace wifislam::slam {
+namespace {
+
+Information6 information(double sigma_m, double sigma_rad) {
+  Information6 info = Information6::Zero();
+  info.diagonal().head<3>().setConstant(1.0 / (sigma_m * sigma_m));
+  info.diagonal().tail<3>().setConstant(1.0 / (sigma_rad * sigma_rad));
+  return info;
+}
+
+Pose at_x(double x_m) {
+  Pose p = Pose::Identity();
+  p.translation().x() = x_m;
+  return p;
+}
+
+/// Keyframes 0..10 walk east 1 m apart, 11..19 walk back west; keyframe 20 stands where 0 stood.
+/// Every consecutive pair has an exact visual edge; keyframe 20 is tracked from 19.
+PoseGraph out_and_back() {
+  PoseGraph graph;
+  std::vector<double> x;
+  for (int i = 0; i <= 10; ++i) x.push_back(i);
+  for (int i = 9; i >= 0; --i) x.push_back(i);
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
+                   at_x(x[i]));
+  }
+  for (KeyframeId i = 1; i < static_cast<KeyframeId>(x.size()); ++i) {
+    graph.add_edge({i - 1, i, EdgeType::kVisual, at_x(x[i - 1]).inverse() * at_x(x[i]),
+                    information(0.05, 0.02), 100});
+  }
+  return graph;
+}
+
+Hypothesis hypothesis(KeyframeId from, const Pose& from_to, EdgeType type, int inliers) {
+  Hypothesis h;
+  h.candidate = {from,
+                 type == EdgeType::kLoop ? CandidateRole::kLongTerm : CandidateRole::kPredecessor};
+  h.transformation.accepted = true;
+  h.transformation.a_from_b = from_to;
+  h.transformation.inliers = inliers;
+  h.transformation.information = information(0.05, 0.02);
+  h.edge_type = type;
+  return h;
+}
+
+TEST(EdgeAcceptance, AllKeepsEveryHypothesisInOrder) {
+  const PoseGraph graph = out_and_back();
+  const std::vector<Hypothesis> h = {hypothesis(18, at_x(-2), EdgeType::kVisual, 80),
+                                     hypothesis(0, at_x(0), EdgeType::kLoop, 40),
+                                     hypothesis(5, at_x(0), EdgeType::kLoop, 90)};
+  EXPECT_EQ(AcceptAllHypotheses().choose(h, {&graph, 20, true}),
+            (std::vector<std::size_t>{0, 1, 2}));
+}
+
+TEST(EdgeAcceptance, BestKeepsVisualEdgesAndTheLoopHypothesisWithMostInliers) {
+  const PoseGraph graph = out_and_back();
+  const std::vector<Hypothesis> h = {
+      hypothesis(0, at_x(0), EdgeType::kLoop, 40), hypothesis(18, at_x(-2), EdgeType::kVisual, 80),
+      hypothesis(5, at_x(0), EdgeType::kLoop, 90), hypothesis(1, at_x(-1), EdgeType::kLoop, 90)};
+  EXPECT_EQ(AcceptBestLoopHypothesis().choose(h, {&graph, 20, true}),
+            (std::vector<std::size_t>{1, 2}));
+}
+
+TEST(EdgeAcceptance, GraphConsistencyRefusesAPlantedFalseLoopClosureAndKeepsTheTrueOne) {
+  const PoseGraph graph = out_and_back();
+  const AcceptGraphConsistentHypotheses policy(std::make_unique<AcceptAllHypotheses>(), 3.0,
+                                               PoseGraphOptions{}, 20);
+  const Hypothesis truth = hypothesis(0, at_x(0), EdgeType::kLoop, 60);
+  // "Keyframe 20 stands where keyframe 5 stood": 5 m from where the chain puts it.
+  const Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
+  const Hypothesis visual = hypothesis(18, at_x(-2), EdgeType::kVisual, 80);
+
+  EXPECT_EQ(policy.choose({truth}, {&graph, 20, true}), (std::vector<std::size_t>{0}));
+  EXPECT_TRUE(policy.choose({planted}, {&graph, 20, true}).empty());
+  // Both: the false one is dropped, the true one and the ordinary visual edge stay.
+  EXPECT_EQ(policy.choose({visual, planted, truth}, {&graph, 20, true}),
+            (std::vector<std::size_t>{0, 2}));
+  // The input graph is not touched.
+  EXPECT_EQ(graph.edges().size(), 20u);
+}
+
+TEST(EdgeAcceptance, ErrorRatioIsTheErrorInStandardDeviationsOfTheEdge) {
+  PoseGraph graph;
+  graph.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
+  graph.add_node(Timestamp::from_ns(1), 1, at_x(1.2));
+  // Measured 1.0 m with sigma 0.1 m: 0.2 m off = 2 standard deviations.
+  EXPECT_NEAR(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), information(0.1, 0.01)}),
+              2.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace wifislam::slam
