@@ -5,9 +5,13 @@
 //   trajectory.txt     every frame, TUM (timestamp tx ty tz qx qy qz qw), camera-to-map
 //   keyframes.txt      the keyframes, TUM, same frame; line k = keyframe id k
 //   graph.json         nodes (keyframe id, frame index, time, pose) and edges (type
-//                      odometry / visual / loop / weak, relative pose, information, inliers)
+//                      odometry / visual / loop / weak, relative pose, information, inliers,
+//                      and from format 3: "pruned" true when the back end's final pruning removed
+//                      the edge, "weight" < 1 when it discounted one it could not remove without
+//                      disconnecting the graph). Every edge accepted online is listed.
 //   loop_closures.csv  one row per loop-closure edge, with the candidate role that found it
-//   wifi_clusters.csv  Wi-Fi runs only: one row per cluster (slam/wifi/wifi_cluster_map.hpp)
+//   wifi_clusters.csv  Wi-Fi runs only: one row per cluster (slam/wifi/wifi_cluster_map.hpp); its
+//                      members are keyframe ids (lines of keyframes.txt)
 //   timing.json        {"modules": {name: {"total_s", "calls"}}, "counters": {name: n},
 //                       "roles": {role: {"comparisons", "ransac_runs", "verified", "accepted",
 //                       "time_s"}}, "keyframe_searches": [...], "wall_s"}
@@ -86,7 +90,8 @@ namespace role_key {
 inline constexpr const char* kComparisons = "comparisons";  // visual comparisons tried
 inline constexpr const char* kRansacRuns = "ransac_runs";
 inline constexpr const char* kVerified = "verified";  // transformation passed verification
-inline constexpr const char* kAccepted = "accepted";  // ... and became a graph edge
+inline constexpr const char* kAccepted = "accepted";  // ... and became a graph edge (for
+                                                      // "tracking": placed the frame)
 inline constexpr const char* kTimeS = "time_s";       // wall-clock of those comparisons
 }  // namespace role_key
 

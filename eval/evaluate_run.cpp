@@ -36,7 +36,7 @@ std::vector<Timestamp> times_of(const Trajectory& t) {
 
 /// What run.json says about the run: the front end and whether the Wi-Fi module ran. A folder
 /// without run.json (a run written by another tool) is a run without Wi-Fi of an unnamed front
-/// end.
+/// end. Format version 1 (before "wifi" existed) named a Wi-Fi run "<frontend>+wifi".
 struct RunIdentity {
   std::string frontend;
   bool wifi = false;
@@ -54,6 +54,15 @@ RunIdentity identity_of(const fs::path& run_json) {
     throw ParseError(run_json.string(), "", std::string("not valid JSON: ") + e.what());
   }
   if (!j.is_object()) throw ParseError(run_json.string(), "", "expected a JSON object");
+  if (j.contains(key::kFormatVersion)) {
+    const nlohmann::json& v = j[key::kFormatVersion];
+    if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > run_folder::kFormatVersion) {
+      throw ParseError(run_json.string(), key::kFormatVersion,
+                       fmt::format("expected a run format version from 1 to {} (this build's), "
+                                   "got {}",
+                                   run_folder::kFormatVersion, v.dump()));
+    }
+  }
   if (j.contains(key::kFrontend)) {
     if (!j[key::kFrontend].is_string()) {
       throw ParseError(run_json.string(), key::kFrontend, "expected a string");
@@ -65,6 +74,9 @@ RunIdentity identity_of(const fs::path& run_json) {
       throw ParseError(run_json.string(), key::kWifi, "expected true or false");
     }
     id.wifi = j[key::kWifi].get<bool>();
+  } else if (id.frontend.ends_with("+wifi")) {
+    id.frontend.resize(id.frontend.size() - 5);
+    id.wifi = true;
   }
   return id;
 }

@@ -31,23 +31,20 @@ std::vector<std::size_t> AcceptBestLoopHypothesis::choose(
   return out;
 }
 
-double edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge) {
-  const Pose& a = graph.node(edge.from).pose;
-  const Pose& b = graph.node(edge.to).pose;
-  const Pose estimated = a.inverse() * b;
-  // The optimiser's residual convention (optimize/relative_pose_error.hpp), unwhitened.
-  const Eigen::Vector3d translation_error = estimated.translation() - edge.from_to.translation();
-  const Eigen::Quaterniond q_measured(edge.from_to.linear());
-  const Eigen::Quaterniond q_estimated(estimated.linear());
-  const Eigen::Vector3d rotation_error = 2.0 * (q_measured * q_estimated.conjugate()).vec();
-  // Regularised inverse: an information matrix may be rank deficient along unobserved axes.
-  const Information6 regularised = edge.information + 1e-9 * Information6::Identity();
-  const Eigen::Matrix<double, 6, 6> covariance = regularised.inverse();
-  const double variance_t = covariance.diagonal().head<3>().maxCoeff();
-  const double variance_r = covariance.diagonal().tail<3>().maxCoeff();
-  const double ratio_t = translation_error.norm() / std::sqrt(std::max(variance_t, 1e-18));
-  const double ratio_r = rotation_error.norm() / std::sqrt(std::max(variance_r, 1e-18));
-  return std::max(ratio_t, ratio_r);
+std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge) {
+  const Eigen::Matrix<double, 6, 1> diagonal = edge.information.diagonal();
+  const double min_info_t = diagonal.head<3>().minCoeff();
+  const double min_info_r = diagonal.tail<3>().minCoeff();
+  if (!(min_info_t > 0.0) || !(min_info_r > 0.0)) return std::nullopt;
+  const double variance_t = 1.0 / min_info_t;
+  const double variance_r = 1.0 / min_info_r;
+  if (variance_t > 1.0) return std::nullopt;
+  const Pose estimated = graph.node(edge.from).pose.inverse() * graph.node(edge.to).pose;
+  const double linear_m =
+      (estimated.translation() - edge.from_to.translation()).cwiseAbs().maxCoeff();
+  const double angular_rad =
+      Eigen::AngleAxisd(edge.from_to.linear().transpose() * estimated.linear()).angle();
+  return std::max(linear_m / std::sqrt(variance_t), angular_rad / std::sqrt(variance_r));
 }
 
 AcceptGraphConsistentHypotheses::AcceptGraphConsistentHypotheses(
@@ -65,6 +62,14 @@ std::vector<std::size_t> AcceptGraphConsistentHypotheses::choose(
   while (std::any_of(chosen.begin(), chosen.end(), is_loop)) {
     PoseGraph trial = *context.graph;
     bool have_pose = context.keyframe_has_pose;
+    for (const GraphEdge& e : context.other_edges) {
+      trial.add_edge(e);
+      if (!have_pose && e.to == context.keyframe) {
+        trial.set_pose(context.keyframe, trial.node(e.from).pose * e.from_to);
+        have_pose = true;
+      }
+    }
+    const std::size_t first_new_edge = trial.edges().size();
     for (std::size_t i : chosen) {
       const Hypothesis& h = hypotheses[i];
       trial.add_edge({h.candidate.keyframe, context.keyframe, h.edge_type,
@@ -77,19 +82,22 @@ std::vector<std::size_t> AcceptGraphConsistentHypotheses::choose(
       }
     }
     optimise_pose_graph(trial, graph_options_, iterations_);
-    // The worst loop edge of this keyframe, if any is out of bounds.
+    double worst_link = 0.0;
+    for (const GraphEdge& e : trial.edges()) {
+      worst_link = std::max(worst_link, edge_error_ratio(trial, e).value_or(0.0));
+    }
+    if (worst_link <= max_error_ratio_) break;
+    // Inconsistent: drop the new loop edge that fits worst, and try the rest.
     std::size_t worst = chosen.size();
-    double worst_ratio = max_error_ratio_;
-    const std::size_t first_new_edge = trial.edges().size() - chosen.size();
+    double worst_ratio = -1.0;
     for (std::size_t k = 0; k < chosen.size(); ++k) {
       if (!is_loop(chosen[k])) continue;
-      const double ratio = edge_error_ratio(trial, trial.edges()[first_new_edge + k]);
+      const double ratio = edge_error_ratio(trial, trial.edges()[first_new_edge + k]).value_or(0.0);
       if (ratio > worst_ratio) {
         worst_ratio = ratio;
         worst = k;
       }
     }
-    if (worst == chosen.size()) break;
     chosen.erase(chosen.begin() + static_cast<std::ptrdiff_t>(worst));
   }
   return chosen;

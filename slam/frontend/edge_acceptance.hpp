@@ -4,14 +4,18 @@
 //   all               every verified hypothesis (RGBD-SLAM: the back end sorts them out later)
 //   best              every ordinary visual hypothesis, and of the loop hypotheses only the one
 //                     with most inliers (RTAB-Map and ORB-SLAM close at most one loop per node)
-//   graph-consistent  another policy's choice, then each loop edge is tried in the graph: after
-//                     optimisation its error against its own standard deviation must stay at or
-//                     below a bound (RTAB-Map's RGBD/OptimizeMaxError), else the worst offender is
-//                     dropped and the rest tried again
+//   graph-consistent  another policy's choice, tried in a copy of the graph: after optimisation
+//                     no link's error may exceed a bound in its own standard deviations
+//                     (RTAB-Map's RGBD/OptimizeMaxError, Graph.cpp computeMaxGraphErrors);
+//                     otherwise the new loop edge with the largest error ratio is dropped and the
+//                     rest tried again. A confident false loop closure is nearly satisfied after
+//                     optimisation and shows as torn links elsewhere, so every link is checked,
+//                     not only the new ones.
 // A policy returns indices into the hypotheses, in the order their edges are to be added.
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +31,10 @@ struct AcceptanceContext {
   KeyframeId keyframe = -1;
   /// False when tracking was lost: the keyframe's pose then comes from its first accepted edge.
   bool keyframe_has_pose = true;
+  /// Edges the pipeline may add besides the hypotheses (wheel odometry to the previous
+  /// keyframe): part of the trial graph, so a loop closure must agree with them too. When
+  /// tracking was lost a false relocalisation would otherwise hang on its own edge unopposed.
+  std::vector<GraphEdge> other_edges;
 };
 
 class EdgeAcceptance {
@@ -52,10 +60,14 @@ class AcceptBestLoopHypothesis final : public EdgeAcceptance {
                                   const AcceptanceContext& context) const override;
 };
 
-/// Normalised error of an edge in a graph: the larger of |translation error| / sigma_t and
-/// |rotation error| / sigma_r, with the sigmas the square roots of the largest translation and
-/// rotation variances of the edge's covariance (inverse information), as RTAB-Map computes it.
-double edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge);
+/// Error of an edge in a graph in its own standard deviations, as RTAB-Map's
+/// computeMaxGraphErrors measures it: the largest per-axis translation error over sqrt of the
+/// largest translation variance (1 / the smallest translation diagonal of the information), and
+/// the rotation error (here the angle of the error rotation, where RTAB-Map takes the largest
+/// Euler angle difference) over sqrt of the largest rotation variance; the larger of the two.
+/// Returns nullopt for a link RTAB-Map skips: translation variance above 1 m^2 (our weak edges),
+/// or a non-positive information diagonal.
+std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge);
 
 class AcceptGraphConsistentHypotheses final : public EdgeAcceptance {
  public:

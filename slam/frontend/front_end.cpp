@@ -27,15 +27,21 @@ void FrontEnd::observe_odometry(const OdometryReading& reading) {
   on_odometry(reading);
 }
 
+std::vector<Candidate> FrontEnd::candidates_for(const SelectionQuery& query) {
+  if (wifi_ && !assigns_wifi_clusters_itself()) wifi_->sign(query.keyframe);
+  return select(query);
+}
+
 EdgeType FrontEnd::classify(const Candidate& candidate, KeyframeId keyframe,
                             const LoopRule& rule) const {
   return rule.is_loop(candidate.keyframe, keyframe) ? EdgeType::kLoop : EdgeType::kVisual;
 }
 
 void FrontEnd::on_verified(const VerificationReport& report) {
-  // Cluster management for the keyframe the front end signed during selection.
-  if (wifi_ && !assigns_wifi_clusters_itself() && wifi_->current() == report.keyframe) {
-    wifi_->assign(report.keyframe, report.visually_connected());
+  // Cluster management for the keyframe signed by candidates_for() (the module throws if the
+  // pipeline reports another one).
+  if (wifi_ && !assigns_wifi_clusters_itself()) {
+    wifi_->assign(report.keyframe, wifi_connections(report));
   }
   after_verification(report);
 }
@@ -47,7 +53,7 @@ void FrontEnd::write_outputs(const std::filesystem::path& run_dir) const {
 
 nlohmann::json FrontEnd::summary() const {
   nlohmann::json out = own_summary();
-  if (wifi_) out.update(wifi_->summary());
+  if (wifi_) out["wifi"] = wifi_->summary();
   return out;
 }
 

@@ -55,8 +55,11 @@ class FrontEnd {
   /// candidates are filtered by it). Default: every keyframe.
   virtual bool searchable(KeyframeId /*keyframe*/) const { return true; }
 
-  /// Candidates for a new keyframe, in the order they should be verified.
-  virtual std::vector<Candidate> select(const SelectionQuery& query) = 0;
+  /// Candidates for a new keyframe, in the order they should be verified. Signs the keyframe
+  /// with the Wi-Fi module first (Wi-Fi clustering; unless the front end assigns its own
+  /// places), so every keyframe is clustered and the module's queries speak of it, then asks
+  /// select().
+  std::vector<Candidate> candidates_for(const SelectionQuery& query);
 
   /// Edge type of a verified match of `candidate` with the new keyframe. Default: the pipeline's
   /// loop rule (kLoop when the candidate is far enough back in keyframes and path).
@@ -66,8 +69,7 @@ class FrontEnd {
   const EdgeAcceptance& acceptance() const { return *acceptance_; }
 
   /// Called once per new keyframe after its hypotheses were accepted or not. Runs Wi-Fi cluster
-  /// management for the keyframe if the front end signed it during selection (unless it assigns
-  /// its own places), then after_verification().
+  /// management for it (unless the front end assigns its own places), then after_verification().
   void on_verified(const VerificationReport& report);
 
   /// Extra files for the run folder (wifi_clusters.csv, the front end's own) and the front end's
@@ -76,9 +78,17 @@ class FrontEnd {
   nlohmann::json summary() const;
 
  protected:
+  /// The front end's candidate selection (memory and candidate policy) for a new keyframe.
+  virtual std::vector<Candidate> select(const SelectionQuery& query) = 0;
   /// True for a front end whose places are not the pipeline's keyframes (RTAB-Map's nodes): it
-  /// signs and assigns its own places, and on_verified() leaves the module alone.
+  /// signs and assigns its own places, and the base class leaves the module alone.
   virtual bool assigns_wifi_clusters_itself() const { return false; }
+  /// The keyframes a verified keyframe counts as connected to for cluster management. Default:
+  /// its visual and loop edges (paper, "General approach"); an ORB-SLAM-style front end adds its
+  /// covisible keyframes (paper, "ORB-SLAM", "Cluster Management").
+  virtual std::vector<KeyframeId> wifi_connections(const VerificationReport& report) const {
+    return report.visually_connected();
+  }
   virtual void on_odometry(const OdometryReading& /*reading*/) {}
   virtual void after_verification(const VerificationReport& /*report*/) {}
   virtual void write_own_outputs(const std::filesystem::path& /*run_dir*/) const {}

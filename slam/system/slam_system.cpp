@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "slam/frontend/front_end_registry.hpp"
 
@@ -152,7 +155,7 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
     std::vector<Candidate> candidates;
     {
       ScopedTimer selection(instrumentation_, module::kCandidateSelection);
-      candidates = front_end_->select(query);
+      candidates = front_end_->candidates_for(query);
     }
     if (!tracking) {
       // Lost: also try the most recent searchable keyframes (relocalisation).
@@ -174,6 +177,10 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
     std::vector<Hypothesis> hypotheses;
     std::vector<std::size_t> outcome_of_hypothesis;
     for (const Candidate& candidate : candidates) {
+      if (candidate.keyframe < 0 || candidate.keyframe >= id) {
+        throw std::logic_error(fmt::format("front end {} named keyframe {} as a candidate of {}",
+                                           front_end_->name(), candidate.keyframe, id));
+      }
       instrumentation_.count(counter::kCandidateComparisons);
       const VisualTransformation t =
           compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current,
@@ -187,11 +194,38 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
       report.comparisons.push_back(outcome);
     }
 
-    // The front end's acceptance policy decides which hypotheses become edges.
+    // Wheel odometry from the previous keyframe, when the stream has it.
+    std::optional<GraphEdge> odometry_edge;
+    if (previous >= 0 && odometry_camera &&
+        keyframe_odometry_[static_cast<std::size_t>(previous)]) {
+      const Pose from_to =
+          keyframe_odometry_[static_cast<std::size_t>(previous)]->inverse() * *odometry_camera;
+      odometry_edge = GraphEdge{previous,
+                                id,
+                                EdgeType::kOdometry,
+                                from_to,
+                                diagonal_information(options_.tracking.odometry_sigma_m,
+                                                     options_.tracking.odometry_sigma_rad),
+                                0};
+    }
+
+    // The front end's acceptance policy decides which hypotheses become edges. It sees the
+    // odometry edge the keyframe may get (always with odometry_edges, else when tracking was
+    // lost), so a graph-consistency check weighs a loop closure against it.
     std::vector<std::size_t> accepted;
     {
       ScopedTimer acceptance(instrumentation_, module::kEdgeAcceptance);
-      accepted = front_end_->acceptance().choose(hypotheses, {&graph_, id, tracking.has_value()});
+      AcceptanceContext context{&graph_, id, tracking.has_value(), {}};
+      if (odometry_edge && (options_.tracking.odometry_edges || !tracking)) {
+        context.other_edges.push_back(*odometry_edge);
+      }
+      accepted = front_end_->acceptance().choose(hypotheses, context);
+    }
+    for (std::size_t k = 0; k < accepted.size(); ++k) {
+      if (accepted[k] >= hypotheses.size() || (k > 0 && accepted[k] <= accepted[k - 1])) {
+        throw std::logic_error("acceptance policy " + front_end_->acceptance().name() +
+                               " returned indices that are not ascending, unique and in range");
+      }
     }
     instrumentation_.count(counter::kRejectedHypotheses,
                            static_cast<std::int64_t>(hypotheses.size() - accepted.size()));
@@ -217,17 +251,10 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
 
     // Attach a keyframe nothing visual connects (or add odometry edges when asked to).
     if (previous >= 0) {
-      const std::optional<Pose>& previous_odometry =
-          keyframe_odometry_[static_cast<std::size_t>(previous)];
       const bool unattached = graph_.adjacent(id).empty();
-      if (odometry_camera && previous_odometry &&
-          (unattached || options_.tracking.odometry_edges)) {
-        const Pose from_to = previous_odometry->inverse() * *odometry_camera;
-        graph_.add_edge({previous, id, EdgeType::kOdometry, from_to,
-                         diagonal_information(options_.tracking.odometry_sigma_m,
-                                              options_.tracking.odometry_sigma_rad),
-                         0});
-        if (unattached) graph_.set_pose(id, graph_.node(previous).pose * from_to);
+      if (odometry_edge && (unattached || options_.tracking.odometry_edges)) {
+        graph_.add_edge(*odometry_edge);
+        if (unattached) graph_.set_pose(id, graph_.node(previous).pose * odometry_edge->from_to);
       } else if (unattached) {
         graph_.add_edge(
             {previous, id, EdgeType::kWeak, Pose::Identity(),

@@ -201,6 +201,25 @@ TEST(EvalCommand, WifiRunIsWhatRunJsonSays) {
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("wifi_clusters.csv"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "wifi"));
+  // A version-1 run folder named its Wi-Fi runs "<frontend>+wifi" and had no "wifi" key.
+  std::ofstream(run.run_dir / "wifi_clusters.csv")
+      << "cluster_id,founder_keyframe,keyframes,representative_signature\n"
+         "0,0,0 1 2,02:1a:11:00:00:30=-61.5\n";
+  std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam+wifi"})";
+  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
+                   " --no-plots -o " + (dir / "v1").string(),
+               dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json v1 = nlohmann::json::parse(std::ifstream(dir / "v1" / "metrics.json"));
+  EXPECT_EQ(v1["wifi_run"], true);
+  EXPECT_EQ(v1["frontend"], "rgbdslam");
+  // A run folder from a newer format is refused, naming the key.
+  std::ofstream(run.run_dir / "run.json") << R"({"format_version": 99, "frontend": "rgbdslam"})";
+  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
+                   (dir / "v99").string(),
+               dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("format_version"), std::string::npos) << r.err;
   // A wrongly typed flag is located.
   std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam", "wifi": "yes"})";
   r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +

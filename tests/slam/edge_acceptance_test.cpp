@@ -58,7 +58,7 @@ TEST(EdgeAcceptance, AllKeepsEveryHypothesisInOrder) {
   const std::vector<Hypothesis> h = {hypothesis(18, at_x(-2), EdgeType::kVisual, 80),
                                      hypothesis(0, at_x(0), EdgeType::kLoop, 40),
                                      hypothesis(5, at_x(0), EdgeType::kLoop, 90)};
-  EXPECT_EQ(AcceptAllHypotheses().choose(h, {&graph, 20, true}),
+  EXPECT_EQ(AcceptAllHypotheses().choose(h, {&graph, 20, true, {}}),
             (std::vector<std::size_t>{0, 1, 2}));
 }
 
@@ -67,7 +67,7 @@ TEST(EdgeAcceptance, BestKeepsVisualEdgesAndTheLoopHypothesisWithMostInliers) {
   const std::vector<Hypothesis> h = {
       hypothesis(0, at_x(0), EdgeType::kLoop, 40), hypothesis(18, at_x(-2), EdgeType::kVisual, 80),
       hypothesis(5, at_x(0), EdgeType::kLoop, 90), hypothesis(1, at_x(-1), EdgeType::kLoop, 90)};
-  EXPECT_EQ(AcceptBestLoopHypothesis().choose(h, {&graph, 20, true}),
+  EXPECT_EQ(AcceptBestLoopHypothesis().choose(h, {&graph, 20, true, {}}),
             (std::vector<std::size_t>{1, 2}));
 }
 
@@ -80,13 +80,44 @@ TEST(EdgeAcceptance, GraphConsistencyRefusesAPlantedFalseLoopClosureAndKeepsTheT
   const Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
   const Hypothesis visual = hypothesis(18, at_x(-2), EdgeType::kVisual, 80);
 
-  EXPECT_EQ(policy.choose({truth}, {&graph, 20, true}), (std::vector<std::size_t>{0}));
-  EXPECT_TRUE(policy.choose({planted}, {&graph, 20, true}).empty());
+  EXPECT_EQ(policy.choose({truth}, {&graph, 20, true, {}}), (std::vector<std::size_t>{0}));
+  EXPECT_TRUE(policy.choose({planted}, {&graph, 20, true, {}}).empty());
   // Both: the false one is dropped, the true one and the ordinary visual edge stay.
-  EXPECT_EQ(policy.choose({visual, planted, truth}, {&graph, 20, true}),
+  EXPECT_EQ(policy.choose({visual, planted, truth}, {&graph, 20, true, {}}),
             (std::vector<std::size_t>{0, 2}));
   // The input graph is not touched.
   EXPECT_EQ(graph.edges().size(), 20u);
+}
+
+TEST(EdgeAcceptance, AConfidentFalseLoopClosureIsCaughtByTheLinksItTears) {
+  // The planted loop claims a hundred times the chain's certainty: after optimisation it is
+  // nearly satisfied itself, and the chain edges carry the 5 m instead. Checking every link (as
+  // RTAB-Map does) still refuses it.
+  const PoseGraph graph = out_and_back();
+  const AcceptGraphConsistentHypotheses policy(std::make_unique<AcceptAllHypotheses>(), 3.0,
+                                               PoseGraphOptions{}, 20);
+  Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
+  planted.transformation.information = information(0.005, 0.002);
+  EXPECT_TRUE(policy.choose({planted}, {&graph, 20, true, {}}).empty());
+}
+
+TEST(EdgeAcceptance, WithTrackingLostTheLoopClosureMustAgreeWithOdometry) {
+  // Keyframe 20 lost tracking: without odometry in the trial a lone false loop edge would hang
+  // unopposed; with the odometry edge from keyframe 19 it is refused, and the true one kept.
+  PoseGraph graph = out_and_back();
+  const AcceptGraphConsistentHypotheses policy(std::make_unique<AcceptAllHypotheses>(), 3.0,
+                                               PoseGraphOptions{}, 20);
+  PoseGraph lost;
+  for (const GraphNode& n : graph.nodes()) lost.add_node(n.time, n.frame_index, n.pose);
+  for (const GraphEdge& e : graph.edges()) {
+    if (e.to != 20) lost.add_edge(e);
+  }
+  const GraphEdge odometry{19, 20, EdgeType::kOdometry, at_x(-1), information(0.05, 0.02), 0};
+  const Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
+  const Hypothesis truth = hypothesis(0, at_x(0), EdgeType::kLoop, 60);
+  EXPECT_EQ(policy.choose({planted}, {&lost, 20, false, {}}), (std::vector<std::size_t>{0}));
+  EXPECT_TRUE(policy.choose({planted}, {&lost, 20, false, {odometry}}).empty());
+  EXPECT_EQ(policy.choose({truth}, {&lost, 20, false, {odometry}}), (std::vector<std::size_t>{0}));
 }
 
 TEST(EdgeAcceptance, ErrorRatioIsTheErrorInStandardDeviationsOfTheEdge) {
@@ -94,8 +125,17 @@ TEST(EdgeAcceptance, ErrorRatioIsTheErrorInStandardDeviationsOfTheEdge) {
   graph.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
   graph.add_node(Timestamp::from_ns(1), 1, at_x(1.2));
   // Measured 1.0 m with sigma 0.1 m: 0.2 m off = 2 standard deviations.
-  EXPECT_NEAR(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), information(0.1, 0.01)}),
-              2.0, 1e-6);
+  EXPECT_NEAR(
+      edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), information(0.1, 0.01)}).value(),
+      2.0, 1e-6);
+  // The largest translation variance counts: sigma 0.1 m along x, 0.4 m along y.
+  Information6 anisotropic = information(0.1, 0.01);
+  anisotropic(1, 1) = 1.0 / (0.4 * 0.4);
+  EXPECT_NEAR(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), anisotropic}).value(), 0.5,
+              1e-6);
+  // Links RTAB-Map skips: translation variance above 1 m^2 (weak edges), no information.
+  EXPECT_FALSE(edge_error_ratio(graph, {0, 1, EdgeType::kWeak, at_x(1.0), information(2.0, 1.0)}));
+  EXPECT_FALSE(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), Information6::Zero()}));
 }
 
 }  // namespace

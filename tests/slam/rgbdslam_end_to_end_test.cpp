@@ -16,6 +16,7 @@
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "slam/frontend/front_end_registry.hpp"
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/slam_system.hpp"
 #include "tests/slam/slam_test_scene.hpp"
@@ -157,6 +158,71 @@ TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
   EXPECT_EQ(slam::graph_to_json(a.system->graph()).dump(),
             slam::graph_to_json(b.system->graph()).dump());
   EXPECT_GT(a.system->graph().node_count(), 3u);
+}
+
+/// A front end unlike RGBD-SLAM, defined outside the library: the last keyframe plus every
+/// qualifying keyframe of the similar Wi-Fi clusters, only the best loop hypothesis accepted.
+class WifiOnlyFrontEnd final : public slam::FrontEnd {
+ public:
+  WifiOnlyFrontEnd() : FrontEnd(std::make_unique<slam::AcceptBestLoopHypothesis>()) {}
+  std::string name() const override { return "wifi_only_test"; }
+  std::vector<slam::Candidate> select(const slam::SelectionQuery& query) override {
+    std::vector<slam::Candidate> out;
+    if (query.keyframe >= 2) out.push_back({query.keyframe - 2, slam::CandidateRole::kPredecessor});
+    std::vector<slam::KeyframeId> qualifying;
+    for (slam::KeyframeId k = 0; k < query.keyframe; ++k) {
+      if (query.loop_rule->is_loop(k, query.keyframe)) qualifying.push_back(k);
+    }
+    for (slam::KeyframeId k : wifi()->bound(qualifying)) {
+      out.push_back({k, slam::CandidateRole::kLongTerm});
+    }
+    return out;
+  }
+};
+
+// --wifi works with any registered front end through the real pipeline: the module clusters the
+// keyframes, and the per-role counters add up to the pipeline's totals.
+TEST(RgbdslamEndToEnd, AnotherFrontEndRunsWithTheWifiModule) {
+  slam::register_front_end("wifi_only_test", [](const slam::FrontEndContext&) {
+    return std::make_unique<WifiOnlyFrontEnd>();
+  });
+  slam::SlamOptions options = test_options();
+  options.frontend = "wifi_only_test";
+  options.wifi.enabled = true;
+  const RunResult run = run_on_generated(test::small_loop_with_wifi_scene(), 3.0, 200, options);
+  const slam::SlamSystem& system = *run.system;
+  ASSERT_NE(system.front_end().wifi(), nullptr);
+  EXPECT_GT(system.front_end().wifi()->pause_count(), 3);
+  const slam::WifiClusterMap& clusters = system.front_end().wifi()->clusters();
+  EXPECT_GE(clusters.clusters().size(), 2u);
+  std::size_t clustered = 0;
+  for (const slam::WifiCluster& c : clusters.clusters()) clustered += c.keyframes.size();
+  EXPECT_GT(clustered, system.graph().node_count() / 2);
+
+  const slam::Instrumentation& inst = system.instrumentation();
+  std::int64_t candidate_comparisons = 0, accepted = 0;
+  for (const auto& [role, work] : inst.roles()) {
+    EXPECT_LE(work.accepted, work.verified) << role;
+    EXPECT_LE(work.verified, work.comparisons) << role;
+    if (role == slam::kTrackingRole) continue;
+    candidate_comparisons += work.comparisons;
+    accepted += work.accepted;
+  }
+  EXPECT_EQ(candidate_comparisons, inst.counter(slam::counter::kCandidateComparisons));
+  EXPECT_GT(inst.roles().at(slam::kTrackingRole).comparisons, 0);
+  // Accepted candidate comparisons are the graph's visual and loop edges, less tracking's.
+  std::int64_t visual_or_loop = 0;
+  for (const slam::GraphEdge& e : system.graph().edges()) {
+    if (e.type == slam::EdgeType::kVisual || e.type == slam::EdgeType::kLoop) ++visual_or_loop;
+  }
+  EXPECT_LE(accepted, visual_or_loop);
+  EXPECT_EQ(accepted + inst.counter(slam::counter::kRejectedHypotheses), [&] {
+    std::int64_t verified = 0;
+    for (const auto& [role, work] : inst.roles()) {
+      if (role != slam::kTrackingRole) verified += work.verified;
+    }
+    return verified;
+  }());
 }
 
 TEST(RgbdslamEndToEnd, RunsOnAPlainTumFolderWithoutWifi) {

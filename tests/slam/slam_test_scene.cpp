@@ -34,4 +34,15 @@ radio: {environment: office}
 
 Scene small_loop_scene() { return load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop"); }
 
+std::string small_loop_with_wifi_scene_yaml() {
+  std::string yaml = small_loop_scene_yaml();
+  const std::string short_pause = "duration_s: 1.0";
+  yaml.replace(yaml.find(short_pause), short_pause.size(), "duration_s: 6.0");
+  return yaml;
+}
+
+Scene small_loop_with_wifi_scene() {
+  return load_scene_yaml(small_loop_with_wifi_scene_yaml(), "slam_small_loop_with_wifi");
+}
+
 }  // namespace wifislam::test
