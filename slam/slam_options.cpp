@@ -19,8 +19,6 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"wifi_floor_dbm", &o.wifi.floor_dbm, "RSSI floor: weight = max(0, rssi - floor) (dBm)"},
       {"wifi_pause_gap_s", &o.wifi.pause_gap_s, "scan gap that ends a pause (s)"},
       {"wifi_pause_motion_m", &o.wifi.pause_motion_m, "odometry motion that ends a pause (m)"},
-      {"wifi_sampled_candidates", &o.wifi.sampled_candidates,
-       "long-term candidates from similar clusters (0 = all)"},
       {"max_keypoints", &o.features.max_keypoints, "ORB keypoints per frame"},
       {"orb_scale_factor", &o.features.scale_factor, "ORB pyramid scale step"},
       {"orb_levels", &o.features.pyramid_levels, "ORB pyramid levels"},
@@ -61,12 +59,15 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"weak_sigma_m", &o.tracking.weak_sigma_m, "weak edge translation sigma (m)"},
       {"weak_sigma_rad", &o.tracking.weak_sigma_rad, "weak edge rotation sigma (rad)"},
       {"predecessor_candidates", &o.rgbdslam.predecessor_candidates,
-       "rgbdslam: recent keyframes compared"},
+       "rgbdslam: recent keyframes compared (RGBDSLAMv2: 4; before 2015: 2)"},
       {"neighbor_candidates", &o.rgbdslam.neighbor_candidates,
-       "rgbdslam: geodesic neighbours sampled"},
+       "rgbdslam: geodesic neighbours sampled, weighted by id distance (4; before 2015: 2)"},
       {"geodesic_depth", &o.rgbdslam.geodesic_depth, "rgbdslam: graph depth of neighbours"},
       {"min_sampled_candidates", &o.rgbdslam.min_sampled_candidates,
-       "rgbdslam: random earlier keyframes"},
+       "rgbdslam: long-term candidates, random earlier keyframes (4; before 2015: 2)"},
+      {"wifi_long_term_candidates", &o.rgbdslam.wifi_long_term_candidates,
+       "rgbdslam with Wi-Fi: long-term candidates from similar clusters, best signature first "
+       "(-1 = min_sampled_candidates, 0 = all)"},
       {"optimizer_iterations", &o.graph.max_iterations, "iterations of the final optimisation"},
       {"optimizer_incremental_iterations", &o.graph.incremental_max_iterations,
        "iterations after each loop closure"},
@@ -163,6 +164,7 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.neighbor_candidates >= 0, "neighbor_candidates must be >= 0");
   require(o.rgbdslam.geodesic_depth >= 0, "geodesic_depth must be >= 0");
   require(o.rgbdslam.min_sampled_candidates >= 0, "min_sampled_candidates must be >= 0");
+  require(o.rgbdslam.wifi_long_term_candidates >= -1, "wifi_long_term_candidates must be >= -1");
   require(o.graph.max_iterations >= 1 && o.graph.incremental_max_iterations >= 0,
           "optimizer iterations must be >= 1 (final) and >= 0 (incremental)");
   require(o.graph.robust_loss == "none" || o.graph.robust_loss == "huber" ||
@@ -173,7 +175,6 @@ void validate(const SlamOptions& o) {
   require(o.wifi.similarity >= -1 && o.wifi.similarity <= 1, "wifi_similarity must be in [-1, 1]");
   require(o.wifi.pause_gap_s > 0, "wifi_pause_gap_s must be > 0");
   require(o.wifi.pause_motion_m > 0, "wifi_pause_motion_m must be > 0");
-  require(o.wifi.sampled_candidates >= 0, "wifi_sampled_candidates must be >= 0");
 }
 
 nlohmann::json to_json(const SlamOptions& options) {

@@ -22,7 +22,7 @@ Registry& registry() {
     auto* reg = new Registry;
     reg->factories["rgbdslam"] = [](const FrontEndContext& context) {
       const SlamOptions& o = *context.options;
-      return std::make_unique<RgbdslamFrontEnd>(o.rgbdslam, o.wifi.sampled_candidates, o.seed);
+      return std::make_unique<RgbdslamFrontEnd>(o.rgbdslam, o.seed);
     };
     return reg;
   }();

@@ -26,12 +26,6 @@ struct WifiOptions {
   /// ... or, when wheel odometry is in the stream, when the base moved more than this since the
   /// pause's first scan (so scanning while moving gives one signature per scan, not one per run).
   double pause_motion_m = 0.05;
-  /// Long-term candidates drawn (uniformly, seeded) from the keyframes of similar clusters. The
-  /// default equals RGBD-SLAM's `min_sampled_candidates`, so the Wi-Fi variant never compares
-  /// more than the vanilla one: it replaces *where* the random keyframes come from, not how many.
-  /// 0 = compare with every keyframe of the similar clusters (exhaustive, the costliest reading
-  /// of the paper's "compare the current frame only to keyframes within similar clusters").
-  int sampled_candidates = 2;
 };
 
 }  // namespace wifislam::slam

@@ -13,10 +13,11 @@ TEST(SlamOptions, DefaultsAreRgbdslamV2s) {
   EXPECT_EQ(o.features.max_keypoints, 600);
   EXPECT_EQ(o.transform.min_matches, 20);
   EXPECT_EQ(o.transform.ransac_iterations, 200);
-  EXPECT_EQ(o.rgbdslam.predecessor_candidates, 2);
-  EXPECT_EQ(o.rgbdslam.neighbor_candidates, 2);
+  EXPECT_EQ(o.rgbdslam.predecessor_candidates, 4);
+  EXPECT_EQ(o.rgbdslam.neighbor_candidates, 4);
   EXPECT_EQ(o.rgbdslam.geodesic_depth, 3);
-  EXPECT_EQ(o.rgbdslam.min_sampled_candidates, 2);
+  EXPECT_EQ(o.rgbdslam.min_sampled_candidates, 4);
+  EXPECT_EQ(o.rgbdslam.wifi_long_term_candidates, -1);
   EXPECT_NO_THROW(validate(o));
 }
 

@@ -28,10 +28,10 @@ const std::vector<std::pair<std::uint64_t, int>> kPlaceB = {{0x10, -90}, {0x20, 
 /// previous one.
 class Driver {
  public:
-  explicit Driver(WifiOptions wifi = {}) : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
+  explicit Driver(RgbdslamOptions rgbdslam = {}, WifiOptions wifi = {})
+      : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
     wifi.enabled = true;
-    selector_ = std::make_unique<RgbdslamFrontEnd>(RgbdslamOptions{}, wifi.sampled_candidates,
-                                                   /*seed=*/5);
+    selector_ = std::make_unique<RgbdslamFrontEnd>(rgbdslam, /*seed=*/5);
     selector_->attach_wifi(std::make_unique<WifiModule>(wifi, instrumentation_));
   }
   std::vector<Candidate> add_keyframe() {
@@ -44,7 +44,7 @@ class Driver {
     q.graph = &graph_;
     q.loop_rule = &rule_;
     if (id > 0) q.already_compared = {id - 1};
-    std::vector<Candidate> c = selector_->select(q);
+    std::vector<Candidate> c = selector_->candidates_for(q);
     VerificationReport report;
     report.keyframe = id;
     report.tracked_from = id - 1;
@@ -80,13 +80,13 @@ TEST(WifiRgbdslamSelection, LongTermCandidatesComeOnlyFromSimilarClusters) {
   d.selector().observe_wifi_scan(scan_of(200, kPlaceA));
   for (int i = 0; i < 10; ++i) {  // back at A: 60..69
     const std::set<KeyframeId> s = sampled(d.add_keyframe());
-    EXPECT_EQ(s.size(), 2u);
+    EXPECT_EQ(s.size(), 4u);
     for (KeyframeId k : s) EXPECT_LT(k, 30) << "keyframe " << k << " is at B";
   }
   // At B the pool is B's keyframes old enough to close a loop (30..(query-15)).
   d.selector().observe_wifi_scan(scan_of(300, kPlaceB));
   const std::set<KeyframeId> s = sampled(d.add_keyframe());  // keyframe 70
-  ASSERT_EQ(s.size(), 2u);
+  ASSERT_EQ(s.size(), 4u);
   for (KeyframeId k : s) {
     EXPECT_GE(k, 30);
     EXPECT_LE(k, 55);
@@ -99,8 +99,8 @@ TEST(WifiRgbdslamSelection, PredecessorsStayAndRecentKeyframesAreNotLongTermCand
   d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
   std::vector<Candidate> c;
   for (int i = 0; i < 12; ++i) c = d.add_keyframe();
-  // Keyframe 11: predecessor 10 was compared by tracking, 9 is returned; the cluster's other
-  // keyframes are all within the loop gap, so nothing long-term.
+  // Keyframe 11: predecessor 10 was compared by tracking, 9, 8, 7 are returned; the cluster's
+  // other keyframes are all within the loop gap, so nothing long-term.
   ASSERT_FALSE(c.empty());
   EXPECT_EQ(c[0].keyframe, 9);
   EXPECT_EQ(c[0].role, CandidateRole::kPredecessor);
@@ -108,9 +108,9 @@ TEST(WifiRgbdslamSelection, PredecessorsStayAndRecentKeyframesAreNotLongTermCand
 }
 
 TEST(WifiRgbdslamSelection, ZeroSampledCandidatesMeansEveryKeyframeOfTheSimilarClusters) {
-  WifiOptions wifi;
-  wifi.sampled_candidates = 0;
-  Driver d(wifi);
+  RgbdslamOptions rgbdslam;
+  rgbdslam.wifi_long_term_candidates = 0;
+  Driver d(rgbdslam);
   d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
   for (int i = 0; i < 20; ++i) d.add_keyframe();
   d.selector().observe_wifi_scan(scan_of(100, kPlaceB));
@@ -122,6 +122,65 @@ TEST(WifiRgbdslamSelection, ZeroSampledCandidatesMeansEveryKeyframeOfTheSimilarC
   // Neighbour sampling may have taken a couple of them already; the rest must all be here.
   for (KeyframeId k : s) EXPECT_TRUE(expected.count(k));
   EXPECT_GE(s.size(), 18u);
+}
+
+TEST(WifiRgbdslamSelection, TheMostSimilarSignaturesComeFirst) {
+  // A and A2 are similar (cosine >= 0.9) but not identical; back at A, the 4 long-term
+  // candidates all come from A's own pause, never from A2's, though both clusters are similar.
+  const std::vector<std::pair<std::uint64_t, int>> place_a2 = {
+      {0x10, -45}, {0x20, -60}, {0x30, -85}};
+  Driver d;
+  d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
+  for (int i = 0; i < 20; ++i) d.add_keyframe();  // 0..19
+  d.selector().observe_wifi_scan(scan_of(100, kPlaceB));
+  for (int i = 0; i < 20; ++i) d.add_keyframe();  // 20..39
+  d.selector().observe_wifi_scan(scan_of(200, place_a2));
+  for (int i = 0; i < 20; ++i) d.add_keyframe();  // 40..59, a cluster of their own
+  d.selector().observe_wifi_scan(scan_of(300, kPlaceA));
+  const std::set<KeyframeId> s = sampled(d.add_keyframe());  // 60
+  ASSERT_EQ(s.size(), 4u);
+  for (KeyframeId k : s) EXPECT_LT(k, 20) << k;
+}
+
+TEST(WifiRgbdslamSelection, NoQualifyingKeyframeInASimilarClusterMeansNoLongTermCandidate) {
+  Driver d;
+  d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
+  for (int i = 0; i < 30; ++i) d.add_keyframe();
+  d.selector().observe_wifi_scan(scan_of(100, kPlaceB));
+  // New place: no similar cluster yet, so no long-term comparison at all (vanilla would draw 4).
+  EXPECT_TRUE(sampled(d.add_keyframe()).empty());
+}
+
+TEST(WifiRgbdslamSelection, VanillaAndWifiDrawTheSameWhereWifiDoesNotAct) {
+  // Same seed, same keyframes: before the first scan the Wi-Fi run samples its long-term
+  // candidates exactly as vanilla does, and its neighbours always match vanilla's.
+  Driver wifi;
+  RgbdslamFrontEnd vanilla(RgbdslamOptions{}, /*seed=*/5);
+  PoseGraph graph;
+  LoopRule rule(15, 0.0);
+  for (KeyframeId id = 0; id < 60; ++id) {
+    if (id == 40) wifi.selector().observe_wifi_scan(scan_of(0, kPlaceA));
+    const std::vector<Candidate> w = wifi.add_keyframe();
+    graph.add_node(Timestamp::from_ns(id), id, Pose::Identity());
+    if (id > 0) graph.add_edge({id - 1, id, EdgeType::kVisual});
+    rule.add_keyframe(static_cast<double>(id));
+    SelectionQuery q;
+    q.keyframe = id;
+    q.graph = &graph;
+    q.loop_rule = &rule;
+    if (id > 0) q.already_compared = {id - 1};
+    const std::vector<Candidate> v = vanilla.candidates_for(q);
+    if (id < 40) {
+      EXPECT_EQ(w, v) << "keyframe " << id;
+    } else {
+      std::vector<Candidate> wn, vn;
+      for (const Candidate& c : w)
+        if (c.role != CandidateRole::kLongTerm) wn.push_back(c);
+      for (const Candidate& c : v)
+        if (c.role != CandidateRole::kLongTerm) vn.push_back(c);
+      EXPECT_EQ(wn, vn) << "keyframe " << id;
+    }
+  }
 }
 
 TEST(WifiRgbdslamSelection, WithoutWifiInformationItSamplesLikeVanilla) {

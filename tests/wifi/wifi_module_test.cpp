@@ -35,7 +35,6 @@ class BoundedExhaustiveFrontEnd final : public FrontEnd {
   BoundedExhaustiveFrontEnd() : FrontEnd(std::make_unique<AcceptBestLoopHypothesis>()) {}
   std::string name() const override { return "bounded_exhaustive_test"; }
   std::vector<Candidate> select(const SelectionQuery& query) override {
-    wifi()->sign(query.keyframe);
     std::vector<KeyframeId> earlier;
     for (KeyframeId k = 0; k < query.keyframe; ++k) earlier.push_back(k);
     std::vector<Candidate> out;
@@ -87,7 +86,7 @@ std::string run_walk(FrontEnd& front_end, const Walk& walk) {
     LoopRule rule(15, 0.0);
     for (KeyframeId k = 0; k <= id; ++k) rule.add_keyframe(static_cast<double>(k));
     query.loop_rule = &rule;
-    front_end.select(query);
+    front_end.candidates_for(query);
     front_end.on_verified(step.report);
   }
   return front_end.wifi()->clusters().to_csv();
@@ -97,7 +96,7 @@ TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
   Instrumentation inst_a, inst_b;
   WifiOptions options;
   options.enabled = true;
-  RgbdslamFrontEnd rgbdslam(RgbdslamOptions{}, 2, 3);
+  RgbdslamFrontEnd rgbdslam(RgbdslamOptions{}, 3);
   rgbdslam.attach_wifi(std::make_unique<WifiModule>(options, inst_a));
   BoundedExhaustiveFrontEnd other;
   other.attach_wifi(std::make_unique<WifiModule>(options, inst_b));

@@ -1,6 +1,10 @@
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 
 #include <algorithm>
+#include <map>
+#include <string>
+
+#include "slam/wifi/signature_similarity.hpp"
 
 namespace wifislam::slam {
 
@@ -20,18 +24,46 @@ std::vector<KeyframeId> sample_without_replacement(const std::vector<KeyframeId>
   return out;
 }
 
-RgbdslamFrontEnd::RgbdslamFrontEnd(const RgbdslamOptions& options, int wifi_long_term_candidates,
-                                   std::uint64_t seed)
+std::vector<KeyframeId> sample_weighted_without_replacement(const std::vector<KeyframeId>& pool,
+                                                            const std::vector<double>& weights,
+                                                            int count, Rng& rng) {
+  std::vector<KeyframeId> remaining = pool;
+  std::vector<double> w = weights;
+  std::vector<KeyframeId> out;
+  while (static_cast<int>(out.size()) < count && !remaining.empty()) {
+    double total = 0.0;
+    for (double x : w) total += x;
+    // Roulette over what is left (RGBDSLAMv2 draws the same way with integer weights).
+    const double pick = rng.uniform() * total;
+    std::size_t chosen = remaining.size() - 1;
+    double so_far = 0.0;
+    for (std::size_t i = 0; i < remaining.size(); ++i) {
+      so_far += w[i];
+      if (pick < so_far) {
+        chosen = i;
+        break;
+      }
+    }
+    out.push_back(remaining[chosen]);
+    remaining.erase(remaining.begin() + static_cast<std::ptrdiff_t>(chosen));
+    w.erase(w.begin() + static_cast<std::ptrdiff_t>(chosen));
+  }
+  return out;
+}
+
+RgbdslamFrontEnd::RgbdslamFrontEnd(const RgbdslamOptions& options, std::uint64_t seed)
     : FrontEnd(std::make_unique<AcceptAllHypotheses>()),
       options_(options),
-      wifi_long_term_candidates_(wifi_long_term_candidates),
-      rng_(Rng::stream(seed, "slam/rgbdslam/candidates")),
-      wifi_rng_(Rng::stream(seed, "slam/wifi/candidates")) {}
+      wifi_long_term_candidates_(options.wifi_long_term_candidates < 0
+                                     ? options.min_sampled_candidates
+                                     : options.wifi_long_term_candidates),
+      seed_(seed) {}
+
+Rng RgbdslamFrontEnd::group_rng(const char* group, KeyframeId keyframe) const {
+  return Rng::stream(seed_, "slam/rgbdslam/" + std::string(group) + "/" + std::to_string(keyframe));
+}
 
 std::vector<Candidate> RgbdslamFrontEnd::select(const SelectionQuery& query) {
-  // Wi-Fi clustering: the new keyframe's signature and its similar clusters.
-  if (wifi() != nullptr) wifi()->sign(query.keyframe);
-
   std::vector<Candidate> out;
   const KeyframeId current = query.keyframe;
   std::vector<std::uint8_t> taken(static_cast<std::size_t>(std::max(current, 0)) + 1, 0);
@@ -54,14 +86,20 @@ std::vector<Candidate> RgbdslamFrontEnd::select(const SelectionQuery& query) {
   for (KeyframeId id = first_predecessor; id < current; ++id)
     taken[static_cast<std::size_t>(id)] = 1;
 
-  // (b) Geodesic neighbours of the previous keyframe.
+  // (b) Geodesic neighbours of the previous keyframe, predecessors excluded, weighted by their
+  // id distance from it.
   if (current >= 1 && query.graph != nullptr) {
     std::vector<KeyframeId> neighbours;
+    std::vector<double> weights;
     for (KeyframeId id : query.graph->geodesic_neighbours(current - 1, options_.geodesic_depth)) {
-      if (id < current && !taken[static_cast<std::size_t>(id)]) neighbours.push_back(id);
+      if (id < current && !taken[static_cast<std::size_t>(id)]) {
+        neighbours.push_back(id);
+        weights.push_back(static_cast<double>(current - 1 - id));
+      }
     }
-    for (KeyframeId id :
-         sample_without_replacement(neighbours, options_.neighbor_candidates, rng_)) {
+    Rng rng = group_rng("neighbours", current);
+    for (KeyframeId id : sample_weighted_without_replacement(neighbours, weights,
+                                                             options_.neighbor_candidates, rng)) {
       take(id, CandidateRole::kNeighbour);
     }
   }
@@ -71,33 +109,66 @@ std::vector<Candidate> RgbdslamFrontEnd::select(const SelectionQuery& query) {
   for (KeyframeId id = 0; id < current; ++id) {
     if (!taken[static_cast<std::size_t>(id)]) eligible.push_back(id);
   }
-  for (KeyframeId id : long_term_candidates(query, eligible)) take(id, CandidateRole::kLongTerm);
+  Rng rng = group_rng("long_term", current);
+  for (KeyframeId id : long_term_candidates(query, eligible, rng)) {
+    take(id, CandidateRole::kLongTerm);
+  }
   return out;
 }
 
 std::vector<KeyframeId> RgbdslamFrontEnd::long_term_candidates(
-    const SelectionQuery& query, const std::vector<KeyframeId>& eligible) {
+    const SelectionQuery& query, const std::vector<KeyframeId>& eligible, Rng& rng) {
   if (wifi() == nullptr || !wifi()->has_signature()) {
-    return sample_without_replacement(eligible, options_.min_sampled_candidates, rng_);
+    return sample_without_replacement(eligible, options_.min_sampled_candidates, rng);
   }
-  // Bounding: eligible keyframes old enough for a match to be a loop closure, kept when they
-  // belong to a similar cluster.
-  const int gap = query.loop_rule != nullptr ? query.loop_rule->min_keyframe_gap() : 0;
-  std::vector<KeyframeId> old_enough;
+  return wifi_long_term_candidates(query, eligible, rng);
+}
+
+std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
+    const SelectionQuery& query, const std::vector<KeyframeId>& eligible, Rng& rng) {
+  // Bounding: eligible keyframes of the similar clusters that qualify as a loop closure.
+  std::vector<KeyframeId> qualifying;
   for (KeyframeId id : eligible) {
-    if (query.keyframe - id < gap) break;
-    old_enough.push_back(id);
+    if (query.loop_rule == nullptr || query.loop_rule->is_loop(id, query.keyframe)) {
+      qualifying.push_back(id);
+    }
   }
-  const std::vector<KeyframeId> pool = wifi()->bound(old_enough);
-  if (wifi_long_term_candidates_ <= 0) return pool;
-  return sample_without_replacement(pool, wifi_long_term_candidates_, wifi_rng_);
+  const std::vector<KeyframeId> pool = wifi()->bound(qualifying);
+  // Ranking: similarity of each keyframe's own signature (shared by the keyframes of a pause, so
+  // computed once per signature), then a seeded tie-break key.
+  const WifiSignature& current = *wifi()->signature_of(query.keyframe);
+  std::map<const WifiSignature*, double> similarity_of;
+  struct Ranked {
+    KeyframeId keyframe;
+    double similarity;
+    std::uint64_t tie_break;
+  };
+  std::vector<Ranked> ranked;
+  ranked.reserve(pool.size());
+  for (KeyframeId id : pool) {
+    const auto signature = wifi()->signature_of(id);
+    auto [it, inserted] = similarity_of.try_emplace(signature.get(), 0.0);
+    if (inserted) it->second = cosine_similarity(current, *signature, wifi()->options().floor_dbm);
+    ranked.push_back({id, it->second, rng.next_u64()});
+  }
+  std::sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {
+    if (a.similarity != b.similarity) return a.similarity > b.similarity;
+    if (a.tie_break != b.tie_break) return a.tie_break < b.tie_break;
+    return a.keyframe < b.keyframe;
+  });
+  const std::size_t budget = wifi_long_term_candidates_ <= 0
+                                 ? ranked.size()
+                                 : std::min<std::size_t>(ranked.size(), wifi_long_term_candidates_);
+  std::vector<KeyframeId> out;
+  for (std::size_t i = 0; i < budget; ++i) out.push_back(ranked[i].keyframe);
+  return out;
 }
 
 nlohmann::json RgbdslamFrontEnd::own_summary() const {
   nlohmann::json out = {{"predecessor_candidates", options_.predecessor_candidates},
                         {"neighbor_candidates", options_.neighbor_candidates},
                         {"min_sampled_candidates", options_.min_sampled_candidates}};
-  if (wifi() != nullptr) out["wifi_sampled_candidates"] = wifi_long_term_candidates_;
+  if (wifi() != nullptr) out["wifi_long_term_candidates"] = wifi_long_term_candidates_;
   return out;
 }
 

@@ -1,17 +1,30 @@
 #pragma once
-// RGBD-SLAM's node selection (paper, "RGBD SLAM"; Endres et al., RGBDSLAMv2): a new keyframe is
-// compared with (a) its predecessors, (b) a sample of its geodesic neighbours in the graph and
-// (c) a random sample of earlier keyframes. (a) and (b) serve motion estimation, (c) long-term
-// loop closure. Every keyframe stays searchable, and every verified comparison becomes an edge.
+// RGBD-SLAM's node selection (paper, "RGBD SLAM"; Endres et al., RGBDSLAMv2,
+// GraphManager::getPotentialEdgeTargetsWithDijkstra): a new keyframe is compared with
+//   (a) its predecessors, the most recent keyframes;
+//   (b) geodesic neighbours: keyframes within `geodesic_depth` edges of the previous keyframe,
+//       predecessors excluded, drawn without replacement with probability proportional to their
+//       id distance from the previous keyframe (far ones are likelier: they close small loops);
+//   (c) long-term candidates: earlier keyframes drawn uniformly (RGBDSLAMv2's "sampled"
+//       candidates).
+// (a) and (b) serve motion estimation, (c) long-term loop closure. Every keyframe stays
+// searchable, and every verified comparison becomes an edge.
 //
-// With a Wi-Fi module (paper, "RGBD SLAM", "Wi-Fi Augmentation"), (a) and (b) stay as they are;
-// the long-term candidates (c) are drawn only from keyframes of clusters similar to the new
-// keyframe's signature (bounding loop-closure search). Choices where the paper is silent:
-// - The number drawn is WifiOptions::sampled_candidates (default: vanilla's
-//   `min_sampled_candidates`), uniformly from the bounded pool; 0 takes the whole pool.
-// - The pool leaves out the last `loop_min_keyframe_gap` keyframes: a match with one of them is
-//   an ordinary visual edge, not a loop closure, and predecessors/neighbours already cover them.
-// - A keyframe made before the first scan has no Wi-Fi information: its long-term candidates are
+// Random draws: each group of each keyframe has its own sub-stream, (seed, group, keyframe id),
+// so a vanilla and a Wi-Fi run of one dataset draw the same numbers wherever Wi-Fi does not act,
+// and their first difference is where Wi-Fi first changed something.
+//
+// With a Wi-Fi module (paper, "RGBD SLAM", "Wi-Fi Augmentation": "we compare the current frame
+// only to RGBD keyframes within similar clusters"), (a) and (b) stay as they are and (c) becomes:
+//   - the pool: keyframes of the similar clusters that qualify as a loop closure (the pipeline's
+//     LoopRule: keyframe gap and estimated path back);
+//   - ranked by the cosine similarity of their own signature with the new keyframe's, best
+//     first; ties (every keyframe of one pause shares its signature) are broken by a seeded draw
+//     from the long-term sub-stream, which spreads the choice over the tied keyframes;
+//   - at most RgbdslamOptions::wifi_long_term_candidates of them (default: vanilla's
+//     `min_sampled_candidates`, so Wi-Fi never verifies more), none when no similar cluster has
+//     a qualifying keyframe.
+//   A keyframe made before the first scan has no Wi-Fi information: its long-term candidates are
 //   drawn as in vanilla RGBD-SLAM, and it joins no cluster.
 
 #include <cstdint>
@@ -21,28 +34,30 @@
 
 namespace wifislam::slam {
 
-/// Defaults are RGBDSLAMv2's.
+/// Defaults are RGBDSLAMv2's current ones (parameter_server.cpp, since 2015): 4 / 4 / 4. Its
+/// defaults before 2015 were 2 / 2 / 2 (`--set predecessor_candidates=2 --set
+/// neighbor_candidates=2 --set min_sampled_candidates=2`).
 struct RgbdslamOptions {
-  /// The most recent keyframes compared with every new keyframe (`predecessor_candidates` 2).
-  int predecessor_candidates = 2;
+  /// The most recent keyframes compared with every new keyframe (`predecessor_candidates`).
+  int predecessor_candidates = 4;
   /// Keyframes sampled among the geodesic neighbours of the previous keyframe
-  /// (`neighbor_candidates` 2) within `geodesic_depth` edges (3). After a loop closure these
+  /// (`neighbor_candidates`) within `geodesic_depth` edges (3). After a loop closure these
   /// reach back to the revisited place, which keeps the loop "closed" from then on.
-  int neighbor_candidates = 2;
+  int neighbor_candidates = 4;
   int geodesic_depth = 3;
-  /// Random earlier keyframes per new keyframe (`min_sampled_candidates` 2): the only source of
+  /// Random earlier keyframes per new keyframe (`min_sampled_candidates`): the only source of
   /// long-term loop closures; the chance of drawing the right one falls as the map grows.
-  int min_sampled_candidates = 2;
+  int min_sampled_candidates = 4;
+  /// With a Wi-Fi module: long-term candidates taken from the ranked pool of similar clusters.
+  /// -1 = `min_sampled_candidates` (Wi-Fi never verifies more than vanilla); 0 = the whole pool
+  /// (exhaustive: the costliest reading of "compare the current frame only to keyframes within
+  /// similar clusters").
+  int wifi_long_term_candidates = -1;
 };
 
 class RgbdslamFrontEnd final : public FrontEnd {
  public:
-  /// Random draws come from Rng::stream(seed, "slam/rgbdslam/candidates"), and the Wi-Fi
-  /// variant's long-term draws from Rng::stream(seed, "slam/wifi/candidates").
-  /// `wifi_long_term_candidates`: long-term candidates drawn from the bounded pool when a Wi-Fi
-  /// module is attached (0 = the whole pool).
-  RgbdslamFrontEnd(const RgbdslamOptions& options, int wifi_long_term_candidates,
-                   std::uint64_t seed);
+  RgbdslamFrontEnd(const RgbdslamOptions& options, std::uint64_t seed);
 
   std::string name() const override { return "rgbdslam"; }
   std::vector<Candidate> select(const SelectionQuery& query) override;
@@ -56,16 +71,27 @@ class RgbdslamFrontEnd final : public FrontEnd {
   /// Group (c): long-term candidates among `eligible` (earlier keyframes not chosen by (a) or
   /// (b), ascending ids).
   std::vector<KeyframeId> long_term_candidates(const SelectionQuery& query,
-                                               const std::vector<KeyframeId>& eligible);
+                                               const std::vector<KeyframeId>& eligible, Rng& rng);
+  /// The Wi-Fi variant of (c).
+  std::vector<KeyframeId> wifi_long_term_candidates(const SelectionQuery& query,
+                                                    const std::vector<KeyframeId>& eligible,
+                                                    Rng& rng);
+  /// The sub-stream of one candidate group of one keyframe.
+  Rng group_rng(const char* group, KeyframeId keyframe) const;
 
   RgbdslamOptions options_;
   int wifi_long_term_candidates_;
-  Rng rng_;
-  Rng wifi_rng_;
+  std::uint64_t seed_;
 };
 
 /// `count` distinct entries of `pool`, uniformly without replacement, in draw order.
 std::vector<KeyframeId> sample_without_replacement(const std::vector<KeyframeId>& pool, int count,
                                                    Rng& rng);
+
+/// `count` distinct entries of `pool`, without replacement, each draw picking an entry with
+/// probability proportional to its weight among those left (weights > 0), in draw order.
+std::vector<KeyframeId> sample_weighted_without_replacement(const std::vector<KeyframeId>& pool,
+                                                            const std::vector<double>& weights,
+                                                            int count, Rng& rng);
 
 }  // namespace wifislam::slam
