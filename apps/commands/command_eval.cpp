@@ -34,7 +34,7 @@ std::string thresholds_help() {
   for (const auto& [name, description] : wifislam::eval::option_descriptions()) {
     text += fmt::format("  {:<36} {:>6}  {}\n", name, values[name].dump(), description);
   }
-  text += "\nAssociation rule: ";
+  text += "\n";
   text += wifislam::eval::kAssociationRule;
   text += "\n";
   return text;
