@@ -41,6 +41,33 @@ inline constexpr const char* kFrontend = "frontend";  // "rgbdslam", without a W
 inline constexpr const char* kWifi = "wifi";          // true when the Wi-Fi module ran
 }  // namespace run_key
 
+/// Keys of graph.json. An edge: {"from", "to" (keyframe ids), "type" (edge_type), "inliers",
+/// "from_to": {"t": [x, y, z], "q_xyzw": [x, y, z, w]} (pose of "to" in the frame of "from"),
+/// "information": 36 numbers}; from format version 3 also "pruned" (absent = false: the edge
+/// survived the after-run pruning) and "weight" (absent = 1).
+namespace graph_key {
+inline constexpr const char* kNodes = "nodes";
+inline constexpr const char* kEdges = "edges";
+inline constexpr const char* kFrom = "from";
+inline constexpr const char* kTo = "to";
+inline constexpr const char* kType = "type";
+inline constexpr const char* kInliers = "inliers";
+inline constexpr const char* kFromTo = "from_to";
+inline constexpr const char* kTranslation = "t";
+inline constexpr const char* kRotationXyzw = "q_xyzw";
+inline constexpr const char* kInformation = "information";
+inline constexpr const char* kPruned = "pruned";
+inline constexpr const char* kWeight = "weight";
+}  // namespace graph_key
+
+/// Values of a graph.json edge's "type".
+namespace edge_type {
+inline constexpr const char* kOdometry = "odometry";
+inline constexpr const char* kVisual = "visual";
+inline constexpr const char* kLoop = "loop";
+inline constexpr const char* kWeak = "weak";
+}  // namespace edge_type
+
 /// Keys of timing.json.
 namespace timing_key {
 inline constexpr const char* kModules = "modules";

@@ -6,6 +6,25 @@
 
 namespace wifislam::eval {
 
+const char* to_string(AlignmentMode mode) {
+  switch (mode) {
+    case AlignmentMode::kNone:
+      return "none";
+    case AlignmentMode::kSe3:
+      return "se3";
+    case AlignmentMode::kSim3:
+      return "sim3";
+  }
+  return "se3";
+}
+
+std::optional<AlignmentMode> parse_alignment_mode(std::string_view text) {
+  for (AlignmentMode m : {AlignmentMode::kNone, AlignmentMode::kSe3, AlignmentMode::kSim3}) {
+    if (text == to_string(m)) return m;
+  }
+  return std::nullopt;
+}
+
 Pose Alignment::apply(const Pose& pose) const {
   Pose out = Pose::Identity();
   out.linear() = rotation * pose.linear();

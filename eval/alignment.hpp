@@ -3,11 +3,24 @@
 // Eigen::umeyama (SVD with the reflection fix; the same rigid solution as Horn's method in TUM's
 // evaluate_ate.py). Rigid by default; with scale for monocular-style comparisons (evo -as).
 
+#include <optional>
+#include <string_view>
+
 #include <Eigen/Core>
 
 #include "core/pose.hpp"
 
 namespace wifislam::eval {
+
+/// What the estimate may be moved by before its error is measured: nothing (the estimate is
+/// already in the ground-truth frame), a rigid motion (SE(3): evaluate_ate.py, evo -a; right for
+/// RGB-D, whose depth fixes the scale) or a similarity (Sim(3): evo -as, for monocular systems).
+enum class AlignmentMode { kNone, kSe3, kSim3 };
+
+/// "none", "se3", "sim3".
+const char* to_string(AlignmentMode mode);
+/// Inverse of to_string; nullopt for anything else.
+std::optional<AlignmentMode> parse_alignment_mode(std::string_view text);
 
 struct Alignment {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();

@@ -15,18 +15,27 @@ std::int64_t max_difference_ns(double max_difference_s) {
 
 std::vector<AssociatedIndices> associate_by_time(const std::vector<Timestamp>& first,
                                                  const std::vector<Timestamp>& second,
-                                                 double max_difference_s) {
+                                                 double max_difference_s,
+                                                 std::int64_t second_offset_ns) {
   const std::int64_t max_ns = max_difference_ns(max_difference_s);
+  // A repeated stamp is one dict key in associate.py, holding its last line.
+  auto last_of_stamp = [](const std::vector<Timestamp>& list, std::size_t i) {
+    return i + 1 == list.size() || list[i + 1].ns != list[i].ns;
+  };
   // Candidates (|dt|, a, b): both lists are sorted, so each a only looks at a window of b.
+  // Index order is stamp order, so sorting by index breaks ties as associate.py's tuple sort.
   std::vector<std::tuple<std::int64_t, std::size_t, std::size_t>> candidates;
   std::size_t window_start = 0;
   for (std::size_t a = 0; a < first.size(); ++a) {
-    while (window_start < second.size() && second[window_start].ns <= first[a].ns - max_ns) {
+    while (window_start < second.size() &&
+           second[window_start].ns + second_offset_ns <= first[a].ns - max_ns) {
       ++window_start;
     }
-    for (std::size_t b = window_start; b < second.size() && second[b].ns < first[a].ns + max_ns;
-         ++b) {
-      candidates.emplace_back(std::abs(first[a].ns - second[b].ns), a, b);
+    if (!last_of_stamp(first, a)) continue;
+    for (std::size_t b = window_start;
+         b < second.size() && second[b].ns + second_offset_ns < first[a].ns + max_ns; ++b) {
+      if (!last_of_stamp(second, b)) continue;
+      candidates.emplace_back(std::abs(first[a].ns - (second[b].ns + second_offset_ns)), a, b);
     }
   }
   std::sort(candidates.begin(), candidates.end());

@@ -62,9 +62,12 @@ void plot_error_along_path(const std::filesystem::path& path, const RunEvaluatio
     cairo_stroke(cr);
     // Loop closures (their later keyframe) as vertical ticks at the top.
     for (const ScoredLoopClosure& c : ev.loop_closure_score.closures) {
-      const double at = ev.keyframe_truth[static_cast<std::size_t>(c.detected.to_keyframe)].path_m;
+      const double at = ev.keyframe_truth[static_cast<std::size_t>(c.edge.to_keyframe)].path_m;
       const Eigen::Vector2d p = to_px(std::clamp(at, x_min, x_max), 0);
-      set_colour(cr, c.correct ? Colour{0.10, 0.65, 0.20} : Colour{0.90, 0.10, 0.10});
+      set_colour(cr, c.correct() ? Colour{0.10, 0.65, 0.20}
+                     : c.verdict == LoopClosureVerdict::kRightPlaceImprecise
+                         ? Colour{0.95, 0.60, 0.05}
+                         : Colour{0.90, 0.10, 0.10});
       cairo_set_line_width(cr, 2.0);
       cairo_move_to(cr, p.x(), top);
       cairo_line_to(cr, p.x(), top + 12);

@@ -1,6 +1,8 @@
 #include "eval/eval_options.hpp"
 
 #include <cmath>
+#include <optional>
+#include <type_traits>
 #include <variant>
 
 #include <fmt/format.h>
@@ -12,7 +14,8 @@ namespace wifislam::eval {
 
 namespace {
 
-using Field = std::variant<double EvalOptions::*, int EvalOptions::*, bool EvalOptions::*>;
+using Field = std::variant<double EvalOptions::*, int EvalOptions::*, bool EvalOptions::*,
+                           AlignmentMode EvalOptions::*>;
 
 struct OptionEntry {
   const char* name;
@@ -24,7 +27,10 @@ const std::vector<OptionEntry>& entries() {
   static const std::vector<OptionEntry> table = {
       {"max_time_difference_s", &EvalOptions::max_time_difference_s,
        "pair estimated and ground-truth stamps closer than this (s)"},
-      {"align_scale", &EvalOptions::align_scale, "align with scale (Sim(3)); 0 = rigid"},
+      {"time_offset_s", &EvalOptions::time_offset_s,
+       "added to the estimate's stamps before pairing (s, evaluate_ate.py --offset)"},
+      {"align", &EvalOptions::align,
+       "move the estimate onto ground truth: none, se3 (rigid) or sim3 (with scale)"},
       {"rpe_delta_m", &EvalOptions::rpe_delta_m, "RPE over this ground-truth path length (m)"},
       {"overlap_max_distance_m", &EvalOptions::overlap_max_distance_m,
        "views farther apart than this never overlap (m)"},
@@ -48,6 +54,14 @@ const std::vector<OptionEntry>& entries() {
        "correct loop closure: relative translation error at most this (m)"},
       {"loop_max_rotation_error_deg", &EvalOptions::loop_max_rotation_error_deg,
        "correct loop closure: relative rotation error at most this (deg)"},
+      {"right_place_max_distance_m", &EvalOptions::right_place_max_distance_m,
+       "right place, imprecise: keyframes truly at most this far apart (m)"},
+      {"right_place_max_translation_error_m", &EvalOptions::right_place_max_translation_error_m,
+       "right place, imprecise: relative translation error at most this (m)"},
+      {"right_place_max_rotation_error_deg", &EvalOptions::right_place_max_rotation_error_deg,
+       "right place, imprecise: relative rotation error at most this (deg)"},
+      {"far_distance_m", &EvalOptions::far_distance_m,
+       "far wrong-place closure: keyframes truly farther apart than this (m)"},
   };
   return table;
 }
@@ -57,7 +71,16 @@ const std::vector<OptionEntry>& entries() {
 nlohmann::ordered_json EvalOptions::to_json() const {
   nlohmann::ordered_json j;
   for (const OptionEntry& e : entries()) {
-    std::visit([&](auto member) { j[e.name] = this->*member; }, e.field);
+    std::visit(
+        [&](auto member) {
+          if constexpr (std::is_same_v<std::remove_cvref_t<decltype(this->*member)>,
+                                       AlignmentMode>) {
+            j[e.name] = eval::to_string(this->*member);
+          } else {
+            j[e.name] = this->*member;
+          }
+        },
+        e.field);
   }
   return j;
 }
@@ -77,6 +100,16 @@ void set_option(EvalOptions& options, const std::string& assignment) {
   for (const OptionEntry& e : entries()) {
     if (key != e.name) continue;
     EvalOptions updated = options;  // unchanged when the value is rejected
+    if (std::holds_alternative<AlignmentMode EvalOptions::*>(e.field)) {
+      const std::optional<AlignmentMode> mode = parse_alignment_mode(text);
+      if (!mode) {
+        throw InvalidInputError(
+            fmt::format("--set {}: '{}' is not one of none, se3, sim3", key, text));
+      }
+      updated.*std::get<AlignmentMode EvalOptions::*>(e.field) = *mode;
+      options = updated;
+      return;
+    }
     double value = 0.0;
     if (text == "true" || text == "false") {
       value = text == "true" ? 1.0 : 0.0;
@@ -94,7 +127,7 @@ void set_option(EvalOptions& options, const std::string& assignment) {
             if (value != std::round(value) || std::abs(value) > 1e9)
               throw InvalidInputError(fmt::format("--set {}: expected an integer", key));
             updated.*member = static_cast<int>(value);
-          } else {
+          } else if constexpr (std::is_same_v<T, double>) {
             updated.*member = value;
           }
         },
@@ -127,6 +160,12 @@ void validate(const EvalOptions& o) {
   require(o.episode_max_gap_keyframes >= 0, "episode_max_gap_keyframes", ">= 0");
   require(o.loop_max_translation_error_m > 0, "loop_max_translation_error_m", "> 0");
   require(o.loop_max_rotation_error_deg > 0, "loop_max_rotation_error_deg", "> 0");
+  require(std::isfinite(o.time_offset_s), "time_offset_s", "a finite number");
+  require(o.right_place_max_distance_m >= 0, "right_place_max_distance_m", ">= 0");
+  require(o.right_place_max_translation_error_m >= 0, "right_place_max_translation_error_m",
+          ">= 0");
+  require(o.right_place_max_rotation_error_deg >= 0, "right_place_max_rotation_error_deg", ">= 0");
+  require(o.far_distance_m >= 0, "far_distance_m", ">= 0");
 }
 
 }  // namespace wifislam::eval

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "eval/alignment.hpp"
+
 namespace wifislam::eval {
 
 struct EvalOptions {
@@ -15,9 +17,14 @@ struct EvalOptions {
   /// Estimated and ground-truth poses are paired when their stamps differ by less than this
   /// (TUM associate.py / evaluate_ate.py --max_difference default).
   double max_time_difference_s = 0.02;
-  /// Umeyama alignment with scale (Sim(3), evo -as). Off: rigid (SE(3)), as for RGB-D where the
-  /// depth sensor fixes the scale and evaluate_ate.py does.
-  bool align_scale = false;
+  /// Added to the estimate's stamps (trajectory and keyframes) before they are paired with ground
+  /// truth: a clock offset between the two recorders (evaluate_ate.py --offset).
+  double time_offset_s = 0.0;
+  /// How the estimate is moved onto ground truth before ATE: Umeyama rigid (SE(3)) by default, as
+  /// evaluate_ate.py does and as RGB-D needs (the depth sensor fixes the scale); Sim(3) for
+  /// monocular-style estimates (evo -as); none when the estimate is already in the ground-truth
+  /// frame.
+  AlignmentMode align = AlignmentMode::kSe3;
   /// RPE pairs frame i with the first frame j whose ground-truth path length from i reaches this
   /// (a delta in metres, as evo's --delta_unit m). 1 m gives per-metre drift directly.
   double rpe_delta_m = 1.0;
@@ -52,11 +59,22 @@ struct EvalOptions {
   /// Consecutive revisiting keyframes form one episode; up to this many keyframes without a
   /// partner inside an episode do not split it (a turn or a blurred view in the middle).
   int episode_max_gap_keyframes = 2;
-  /// A detected loop closure is correct when the views overlap and its estimated relative pose
-  /// is within these of the ground-truth one inv(gt_from) * gt_to. 0.3 m / 5 deg: a correct
-  /// RANSAC estimate on our renders is within centimetres; a wrong one is off by metres.
+  /// An accepted loop-closure edge is correct when its estimated relative pose is within these
+  /// of the ground-truth one inv(gt_from) * gt_to (the pose decides, not view overlap). 0.3 m /
+  /// 5 deg: a correct RANSAC estimate on our renders is within centimetres; a wrong one is off by
+  /// metres.
   double loop_max_translation_error_m = 0.3;
   double loop_max_rotation_error_deg = 5.0;
+  /// Not correct, but the right place: the two keyframes truly stand within this of each other
+  /// and the pose error is within the looser bounds below. Such an edge bends the map a little
+  /// instead of tearing it; it is not the paper's false positive. 3 m = the view-overlap range.
+  double right_place_max_distance_m = 3.0;
+  double right_place_max_translation_error_m = 1.0;
+  double right_place_max_rotation_error_deg = 10.0;
+  /// A wrong-place edge whose keyframes truly stand farther apart than this is "far": it joins
+  /// another part of the building (the aliasing case), not a near miss. 12 m is more than a
+  /// corridor wing's length in our scenes, well past the right-place range.
+  double far_distance_m = 12.0;
 
   /// The thresholds as JSON (key -> value), in declaration order.
   nlohmann::ordered_json to_json() const;
@@ -65,8 +83,8 @@ struct EvalOptions {
 /// Names of the options `set_option` accepts, each with a one-line description.
 std::vector<std::pair<std::string, std::string>> option_descriptions();
 
-/// Applies "key=value". Throws InvalidInputError naming the key (unknown key, value not a
-/// number, out of range).
+/// Applies "key=value" (`align` takes none / se3 / sim3). Throws InvalidInputError naming the key
+/// (unknown key, value not a number, out of range).
 void set_option(EvalOptions& options, const std::string& assignment);
 
 /// Throws InvalidInputError when a value is out of its range.

@@ -1,6 +1,9 @@
 #include "eval/evaluate_run.hpp"
 
+#include <cmath>
 #include <fstream>
+#include <map>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -12,6 +15,7 @@
 #include "core/tum_trajectory.hpp"
 #include "eval/association.hpp"
 #include "eval/dataset_depth.hpp"
+#include "eval/graph_edges_json.hpp"
 #include "eval/loop_closure_csv.hpp"
 #include "eval/trajectory_error.hpp"
 
@@ -81,35 +85,118 @@ RunIdentity identity_of(const fs::path& run_json) {
   return id;
 }
 
+/// Scored edges from graph.json (every accepted edge, pruned or not) or, for a run without one,
+/// from loop_closures.csv; the csv's candidate role is joined onto graph edges by (from, to).
+std::vector<AcceptedEdge> accepted_edges(const fs::path& graph_file,
+                                         const std::vector<DetectedLoopClosure>& csv_rows,
+                                         const fs::path& csv_file) {
+  std::map<std::pair<std::int64_t, std::int64_t>, std::string> role_of;
+  for (const DetectedLoopClosure& lc : csv_rows)
+    role_of[{lc.from_keyframe, lc.to_keyframe}] = lc.role;
+  std::vector<AcceptedEdge> edges;
+  if (fs::is_regular_file(graph_file)) {
+    for (const GraphEdgeRecord& g : read_graph_edges_json(graph_file)) {
+      AcceptedEdge e;
+      e.from_keyframe = g.from_keyframe;
+      e.to_keyframe = g.to_keyframe;
+      e.type = g.type;
+      const auto role = role_of.find({g.from_keyframe, g.to_keyframe});
+      if (role != role_of.end()) e.role = role->second;
+      e.inliers = g.inliers;
+      e.from_to = g.from_to;
+      e.pruned = g.pruned;
+      e.weight = g.weight;
+      e.where = graph_file.string();
+      e.from_key = fmt::format("{}[{}].{}", run_folder::graph_key::kEdges, g.index,
+                               run_folder::graph_key::kFrom);
+      e.to_key = fmt::format("{}[{}].{}", run_folder::graph_key::kEdges, g.index,
+                             run_folder::graph_key::kTo);
+      edges.push_back(std::move(e));
+    }
+    return edges;
+  }
+  for (const DetectedLoopClosure& lc : csv_rows) {
+    AcceptedEdge e;
+    e.from_keyframe = lc.from_keyframe;
+    e.to_keyframe = lc.to_keyframe;
+    e.type = run_folder::edge_type::kLoop;
+    e.role = lc.role;
+    e.inliers = lc.inliers;
+    e.from_to = lc.from_to;
+    e.where = fmt::format("{}:{}", csv_file.string(), lc.line);
+    e.from_key = "from_keyframe";
+    e.to_key = "to_keyframe";
+    edges.push_back(std::move(e));
+  }
+  return edges;
+}
+
 }  // namespace
 
-RunEvaluation evaluate_run(const fs::path& run_dir, const fs::path& dataset_dir,
+RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
                            const EvalOptions& options) {
   validate(options);
-  if (!fs::is_directory(run_dir)) throw IoError(run_dir.string() + ": run folder not found");
+  const bool bare_trajectory = fs::is_regular_file(input);
+  if (!bare_trajectory && !fs::is_directory(input)) {
+    throw IoError(input.string() + ": neither a run folder nor a trajectory file");
+  }
   if (!fs::is_directory(dataset_dir)) {
     throw IoError(dataset_dir.string() + ": dataset folder not found");
   }
   RunEvaluation ev;
-  ev.run_dir = run_dir.string();
+  ev.run_dir = input.string();
   ev.dataset_dir = dataset_dir.string();
   ev.options = options;
+  const fs::path run_dir = bare_trajectory ? fs::path() : input;
+  auto optional_file = [&](const char* name) {
+    return bare_trajectory || !fs::is_regular_file(run_dir / name) ? fs::path() : run_dir / name;
+  };
+  const std::int64_t offset_ns = std::llround(options.time_offset_s * 1e9);
+  auto on_dataset_clock = [offset_ns](Timestamp t) { return Timestamp::from_ns(t.ns + offset_ns); };
 
-  // Inputs (everything read and checked before anything is computed or written).
+  // Inputs (everything read and checked before anything is computed or written). Only the
+  // trajectory is required: a folder or file from another system has nothing else.
   required_file(dataset_dir, dataset::kGroundTruth, "the dataset's ground truth");
   const Trajectory ground_truth = read_ground_truth(dataset_dir);
   const fs::path trajectory_file =
-      required_file(run_dir, run_folder::kTrajectory, "the run's estimated trajectory");
-  const fs::path keyframes_file =
-      required_file(run_dir, run_folder::kKeyframes, "the run's keyframes");
-  const fs::path loops_file =
-      required_file(run_dir, run_folder::kLoopClosures, "the run's loop closures");
-  const fs::path timing_file = required_file(run_dir, run_folder::kTiming, "the run's timing");
+      bare_trajectory
+          ? input
+          : required_file(run_dir, run_folder::kTrajectory, "the run's estimated trajectory");
   const Trajectory estimated = read_tum_trajectory(trajectory_file.string());
-  const Trajectory keyframes = read_tum_trajectory(keyframes_file.string());
-  const std::vector<DetectedLoopClosure> loops = read_loop_closures_csv(loops_file);
-  ev.timing = read_timing_json(timing_file);
-  const RunIdentity identity = identity_of(run_dir / run_folder::kRun);
+  const fs::path keyframes_file = optional_file(run_folder::kKeyframes);
+  const fs::path graph_file = optional_file(run_folder::kGraph);
+  const fs::path loops_file = optional_file(run_folder::kLoopClosures);
+  const fs::path timing_file = optional_file(run_folder::kTiming);
+  const Trajectory keyframes =
+      keyframes_file.empty() ? Trajectory{} : read_tum_trajectory(keyframes_file.string());
+  const std::vector<DetectedLoopClosure> loops =
+      loops_file.empty() ? std::vector<DetectedLoopClosure>{} : read_loop_closures_csv(loops_file);
+  const std::vector<AcceptedEdge> edges = accepted_edges(graph_file, loops, loops_file);
+  ev.loop_closure_csv_rows = static_cast<std::int64_t>(loops.size());
+  if (!timing_file.empty()) {
+    ev.timing = read_timing_json(timing_file);
+    ev.timing_available = true;
+  } else {
+    ev.timing_note = bare_trajectory ? "not available: a bare trajectory file has no timing"
+                                     : "not available: the run folder has no timing.json";
+  }
+  if (bare_trajectory) {
+    ev.loop_closure_note = "not available: a bare trajectory file has no keyframes or graph";
+  } else if (keyframes_file.empty()) {
+    ev.loop_closure_note = "not available: the run folder has no keyframes.txt";
+  } else if (graph_file.empty() && loops_file.empty()) {
+    ev.loop_closure_note =
+        "not available: the run folder has neither graph.json nor "
+        "loop_closures.csv";
+  } else {
+    ev.loop_closures_available = true;
+    ev.loop_closure_source = graph_file.empty()
+                                 ? std::string(run_folder::kLoopClosures) +
+                                       " (no graph.json: its rows are the loop edges, none pruned)"
+                                 : std::string(run_folder::kGraph);
+  }
+  const RunIdentity identity =
+      bare_trajectory ? RunIdentity{} : identity_of(run_dir / run_folder::kRun);
   ev.frontend = identity.frontend;
   ev.wifi_run = identity.wifi;
   DatasetCalibration calibration;
@@ -131,26 +218,26 @@ RunEvaluation evaluate_run(const fs::path& run_dir, const fs::path& dataset_dir,
   const std::vector<double> gt_path_m = cumulative_path_length_m(gt_poses);
   const std::vector<Timestamp> gt_times = times_of(ground_truth);
 
-  // Trajectory error.
+  // Trajectory error. Ground truth is associate.py's first list, the estimate its second (with
+  // the offset), as evaluate_ate.py calls it: ties and repeated stamps go the same way.
   const std::vector<AssociatedIndices> pairs =
-      associate_by_time(times_of(estimated), gt_times, options.max_time_difference_s);
+      associate_by_time(gt_times, times_of(estimated), options.max_time_difference_s, offset_ns);
   ev.frames_estimated = static_cast<std::int64_t>(estimated.size());
   ev.frames_ground_truth = static_cast<std::int64_t>(ground_truth.size());
   ev.frames_associated = static_cast<std::int64_t>(pairs.size());
   if (pairs.size() < 3) {
     throw InvalidInputError(
-        fmt::format("{} and {}: only {} poses share a timestamp (within {} s); need at least 3 "
-                    "(is this the run of that dataset?)",
+        fmt::format("{} and {}: only {} poses share a timestamp (within {} s, estimate shifted "
+                    "by {} s); need at least 3 (is this the run of that dataset?)",
                     trajectory_file.string(), (dataset_dir / dataset::kGroundTruth).string(),
-                    pairs.size(), options.max_time_difference_s));
+                    pairs.size(), options.max_time_difference_s, options.time_offset_s));
   }
   std::vector<Pose> est_assoc, gt_assoc;
   for (const AssociatedIndices& a : pairs) {
-    est_assoc.push_back(estimated[a.first].pose());
-    gt_assoc.push_back(gt_poses[a.second]);
+    est_assoc.push_back(estimated[a.second].pose());
+    gt_assoc.push_back(gt_poses[a.first]);
   }
-  const AbsoluteTrajectoryError ate =
-      absolute_trajectory_error(est_assoc, gt_assoc, options.align_scale);
+  const AbsoluteTrajectoryError ate = absolute_trajectory_error(est_assoc, gt_assoc, options.align);
   ev.alignment = ate.alignment;
   ev.ate_rmse_m = ate.rmse_m;
   ev.ate_mean_m = ate.mean_m;
@@ -165,24 +252,24 @@ RunEvaluation evaluate_run(const fs::path& run_dir, const fs::path& dataset_dir,
   ev.rpe_rot_rmse_deg = rpe.rotation_rmse_deg;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     PathSample s;
-    s.time = ground_truth[pairs[i].second].time;
+    s.time = ground_truth[pairs[i].first].time;
     s.ground_truth_m = gt_assoc[i].translation();
     s.estimated_aligned_m = ate.alignment.apply(Eigen::Vector3d(est_assoc[i].translation()));
-    s.path_m = gt_path_m[pairs[i].second];
+    s.path_m = gt_path_m[pairs[i].first];
     s.error_m = ate.errors_m[i];
     ev.path.push_back(s);
   }
 
-  // Keyframes with their ground truth.
+  // Keyframes with their ground truth (times on the dataset's clock).
   for (std::size_t k = 0; k < keyframes.size(); ++k) {
-    const std::optional<std::size_t> g =
-        nearest_stamp(gt_times, keyframes[k].time, options.max_time_difference_s);
+    const Timestamp t = on_dataset_clock(keyframes[k].time);
+    const std::optional<std::size_t> g = nearest_stamp(gt_times, t, options.max_time_difference_s);
     if (!g) {
       throw ParseError(keyframes_file.string(), "",
                        fmt::format("keyframe {} at t = {} has no ground-truth pose within {} s", k,
-                                   keyframes[k].time.to_string(6), options.max_time_difference_s));
+                                   t.to_string(6), options.max_time_difference_s));
     }
-    ev.keyframe_truth.push_back({keyframes[k].time, gt_poses[*g], gt_path_m[*g]});
+    ev.keyframe_truth.push_back({t, gt_poses[*g], gt_path_m[*g]});
   }
   ev.keyframes = static_cast<std::int64_t>(keyframes.size());
   for (const WifiCluster& c : ev.wifi_cluster_list) {
@@ -196,30 +283,32 @@ RunEvaluation evaluate_run(const fs::path& run_dir, const fs::path& dataset_dir,
   }
 
   // Loop closures.
-  DatasetDepth depth(dataset_dir, calibration.intrinsics, calibration.depth_units_per_metre,
-                     options);
-  ev.loop_closure_score = score_loop_closures(
-      ev.keyframe_truth, loops, loops_file.string(),
-      [&depth](Timestamp t) { return depth.view(t); }, calibration.intrinsics, options);
-  const LoopClosureScore& s = ev.loop_closure_score;
-  ev.loop_closures_detected = s.detected;
-  ev.loop_closures_correct = s.correct;
-  ev.false_positives = s.false_positives;
-  ev.false_positive_pct = s.false_positive_pct;
-  ev.revisit_episodes = static_cast<std::int64_t>(s.episodes.size());
-  ev.revisit_keyframes = s.revisit_keyframes;
-  ev.false_negatives = s.false_negatives;
-  ev.false_negative_pct = s.false_negative_pct;
-  ev.overlap_used_depth = depth.available() && s.pairs_geometric_only == 0;
-  if (!depth.available()) {
-    ev.overlap_method =
-        "geometric bound only: the dataset has no depth images (generated with --no-images)";
-  } else if (s.pairs_geometric_only > 0) {
-    ev.overlap_method = fmt::format(
-        "depth test; {} of {} pairs geometric bound only (no depth image at their time)",
-        s.pairs_geometric_only, s.pairs_tested);
-  } else {
-    ev.overlap_method = "depth test (ground-truth depth reprojection)";
+  if (ev.loop_closures_available) {
+    DatasetDepth depth(dataset_dir, calibration.intrinsics, calibration.depth_units_per_metre,
+                       options);
+    ev.loop_closure_score = score_loop_closures(
+        ev.keyframe_truth, edges, [&depth](Timestamp t) { return depth.view(t); },
+        calibration.intrinsics, options);
+    const LoopClosureScore& s = ev.loop_closure_score;
+    ev.loop_closures_detected = s.online.scored;
+    ev.loop_closures_correct = s.online.correct;
+    ev.false_positives = s.online.wrong_place;
+    ev.false_positive_pct = s.online.false_positive_pct;
+    ev.revisit_episodes = static_cast<std::int64_t>(s.episodes.size());
+    ev.revisit_keyframes = s.revisit_keyframes;
+    ev.false_negatives = s.online.false_negatives;
+    ev.false_negative_pct = s.online.false_negative_pct;
+    ev.overlap_used_depth = depth.available() && s.pairs_geometric_only == 0;
+    if (!depth.available()) {
+      ev.overlap_method =
+          "geometric bound only: the dataset has no depth images (generated with --no-images)";
+    } else if (s.pairs_geometric_only > 0) {
+      ev.overlap_method = fmt::format(
+          "depth test; {} of {} pairs geometric bound only (no depth image at their time)",
+          s.pairs_geometric_only, s.pairs_tested);
+    } else {
+      ev.overlap_method = "depth test (ground-truth depth reprojection)";
+    }
   }
 
   // Time.

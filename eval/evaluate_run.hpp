@@ -1,8 +1,11 @@
 #pragma once
-// Evaluates a run folder (written by `wifislam slam`: trajectory.txt, keyframes.txt,
-// loop_closures.csv, timing.json, run.json, and wifi_clusters.csv for Wi-Fi runs) against a
-// dataset folder's exact ground truth (groundtruth.txt, depth.txt + depth/, calibration.yaml).
-// Reads files only: works on any run folder in this format and never links the SLAM library.
+// Evaluates a run folder (written by `wifislam slam`: trajectory.txt, keyframes.txt, graph.json,
+// loop_closures.csv, timing.json, run.json, and wifi_clusters.csv for Wi-Fi runs) or a bare TUM
+// trajectory file (another system's CameraTrajectory.txt) against a dataset folder's exact
+// ground truth (groundtruth.txt, depth.txt + depth/, calibration.yaml). Only the trajectory is
+// required: without keyframes.txt and graph.json / loop_closures.csv the loop closures are "not
+// available", without timing.json the timing is, and the evaluation says so. Reads files only:
+// works on any run folder in this format and never links the SLAM library.
 
 #include <filesystem>
 
@@ -11,10 +14,11 @@
 
 namespace wifislam::eval {
 
-/// Throws IoError for a missing or unreadable file and ParseError naming file:line (and key) for
-/// malformed content (e.g. a NaN in trajectory.txt); InvalidInputError when the run and the
-/// ground truth have fewer than 3 poses in common.
-RunEvaluation evaluate_run(const std::filesystem::path& run_dir,
+/// `run_or_trajectory`: a run folder, or a TUM trajectory file. Throws IoError for a missing or
+/// unreadable file and ParseError naming file:line (and key) for malformed content (e.g. a NaN in
+/// trajectory.txt, a graph.json edge without "from_to"); InvalidInputError when the estimate and
+/// the ground truth have fewer than 3 poses in common.
+RunEvaluation evaluate_run(const std::filesystem::path& run_or_trajectory,
                            const std::filesystem::path& dataset_dir, const EvalOptions& options);
 
 }  // namespace wifislam::eval

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/run_format.hpp"
 
 namespace wifislam::eval {
 
@@ -24,8 +25,7 @@ struct Partner {
 }  // namespace
 
 LoopClosureScore score_loop_closures(const std::vector<KeyframeTruth>& keyframes,
-                                     const std::vector<DetectedLoopClosure>& detected,
-                                     const std::string& loop_closures_file,
+                                     const std::vector<AcceptedEdge>& edges,
                                      const DepthLookup& depth, const CameraIntrinsics& intrinsics,
                                      const EvalOptions& options) {
   LoopClosureScore score;
@@ -79,89 +79,121 @@ LoopClosureScore score_loop_closures(const std::vector<KeyframeTruth>& keyframes
       score.episodes.back().last_keyframe = j;
       ++score.episodes.back().revisiting_keyframes;
     } else {
-      score.episodes.push_back({j, j, 1, p.keyframe, p.path_m, false});
+      score.episodes.push_back({j, j, 1, p.keyframe, p.path_m, false, false});
     }
     last = j;
   }
 
-  // Detected loop closures.
-  for (const DetectedLoopClosure& lc : detected) {
-    for (std::int64_t id : {lc.from_keyframe, lc.to_keyframe}) {
-      if (id >= n) {
-        throw ParseError(fmt::format("{}:{}", loop_closures_file, lc.line),
-                         id == lc.from_keyframe ? "from_keyframe" : "to_keyframe",
+  // Accepted edges: the visual and loop ones far enough apart along the path are scored.
+  for (const AcceptedEdge& edge : edges) {
+    for (const auto& [id, key] : {std::pair{edge.from_keyframe, &edge.from_key},
+                                  std::pair{edge.to_keyframe, &edge.to_key}}) {
+      if (id < 0 || id >= n) {
+        throw ParseError(edge.where, *key,
                          fmt::format("keyframe {} is not in keyframes.txt ({} keyframes)", id, n));
       }
     }
+    if (edge.type != run_folder::edge_type::kVisual && edge.type != run_folder::edge_type::kLoop) {
+      continue;
+    }
+    ++score.edges_considered;
+    const KeyframeTruth& from = keyframes[static_cast<std::size_t>(edge.from_keyframe)];
+    const KeyframeTruth& to = keyframes[static_cast<std::size_t>(edge.to_keyframe)];
     ScoredLoopClosure s;
-    s.detected = lc;
-    const KeyframeTruth& from = keyframes[static_cast<std::size_t>(lc.from_keyframe)];
-    const KeyframeTruth& to = keyframes[static_cast<std::size_t>(lc.to_keyframe)];
     s.path_between_m = std::abs(to.path_m - from.path_m);
-    s.overlap = overlap_of(lc.from_keyframe, lc.to_keyframe);
+    if (s.path_between_m < options.revisit_min_path_m) {
+      ++score.edges_short_path;  // tracking and local edges, not loop closures
+      continue;
+    }
+    s.edge = edge;
+    s.true_distance_m = (to.ground_truth.translation() - from.ground_truth.translation()).norm();
+    s.overlap = overlap_of(edge.from_keyframe, edge.to_keyframe);
     const Pose gt_from_to = from.ground_truth.inverse() * to.ground_truth;
-    const Pose error = gt_from_to.inverse() * lc.from_to;
+    const Pose error = gt_from_to.inverse() * edge.from_to;
     s.translation_error_m = error.translation().norm();
     s.rotation_error_deg = rotation_deg(error.linear());
-    const bool pose_ok = s.translation_error_m <= options.loop_max_translation_error_m &&
-                         s.rotation_error_deg <= options.loop_max_rotation_error_deg;
-    s.correct = s.overlap.overlap && pose_ok;
-    if (s.correct) {
-      s.verdict = "correct";
-    } else if (!s.overlap.within_geometric_bound) {
-      s.verdict = "views do not overlap (outside geometric bound)";
-    } else if (!s.overlap.overlap) {
-      s.verdict = "views do not overlap (depth)";
-    } else {
-      s.verdict = "relative pose off";
+    s.verdict = classify_loop_closure(s.translation_error_m, s.rotation_error_deg,
+                                      s.true_distance_m, options);
+    s.far = is_far_wrong_place(s.verdict, s.true_distance_m, options);
+    for (LoopClosureCounts* counts : {&score.online, &score.after_pruning}) {
+      if (counts == &score.after_pruning && edge.pruned) continue;
+      ++counts->scored;
+      switch (s.verdict) {
+        case LoopClosureVerdict::kCorrect:
+          ++counts->correct;
+          break;
+        case LoopClosureVerdict::kRightPlaceImprecise:
+          ++counts->right_place_imprecise;
+          break;
+        case LoopClosureVerdict::kWrongPlace:
+          ++counts->wrong_place;
+          break;
+      }
+      if (s.far) ++counts->far_wrong_place;
     }
-    ++score.detected;
-    if (s.correct) {
-      ++score.correct;
+    if (s.correct()) {
       for (std::size_t e = 0; e < score.episodes.size(); ++e) {
         RevisitEpisode& ep = score.episodes[e];
         const bool touches =
-            (lc.from_keyframe >= ep.first_keyframe && lc.from_keyframe <= ep.last_keyframe) ||
-            (lc.to_keyframe >= ep.first_keyframe && lc.to_keyframe <= ep.last_keyframe);
-        if (touches) {
-          ep.detected = true;
-          if (s.episode < 0) s.episode = static_cast<int>(e);
-        }
+            (edge.from_keyframe >= ep.first_keyframe && edge.from_keyframe <= ep.last_keyframe) ||
+            (edge.to_keyframe >= ep.first_keyframe && edge.to_keyframe <= ep.last_keyframe);
+        if (!touches) continue;
+        ep.detected_online = true;
+        if (!edge.pruned) ep.detected_after_pruning = true;
+        if (s.episode < 0) s.episode = static_cast<int>(e);
       }
-    } else {
-      ++score.false_positives;
     }
     score.closures.push_back(std::move(s));
   }
-  for (const RevisitEpisode& ep : score.episodes) score.false_negatives += ep.detected ? 0 : 1;
-  score.false_positive_pct = score.detected ? 100.0 * static_cast<double>(score.false_positives) /
-                                                  static_cast<double>(score.detected)
-                                            : 0.0;
-  score.false_negative_pct = score.episodes.empty()
-                                 ? 0.0
-                                 : 100.0 * static_cast<double>(score.false_negatives) /
-                                       static_cast<double>(score.episodes.size());
+  auto percent = [](std::int64_t part, std::int64_t whole) {
+    return whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+  };
+  const auto episodes = static_cast<std::int64_t>(score.episodes.size());
+  for (const RevisitEpisode& ep : score.episodes) {
+    score.online.false_negatives += ep.detected_online ? 0 : 1;
+    score.after_pruning.false_negatives += ep.detected_after_pruning ? 0 : 1;
+  }
+  for (LoopClosureCounts* counts : {&score.online, &score.after_pruning}) {
+    counts->false_positive_pct = percent(counts->wrong_place, counts->scored);
+    counts->false_negative_pct = percent(counts->false_negatives, episodes);
+  }
   return score;
 }
 
-nlohmann::ordered_json to_json(const ScoredLoopClosure& s) {
-  const DetectedLoopClosure& d = s.detected;
+nlohmann::ordered_json LoopClosureCounts::to_json() const {
+  return {{"scored", scored},
+          {"correct", correct},
+          {"right_place_imprecise", right_place_imprecise},
+          {"wrong_place", wrong_place},
+          {"far_wrong_place", far_wrong_place},
+          {"false_positive_pct", false_positive_pct},
+          {"false_negatives", false_negatives},
+          {"false_negative_pct", false_negative_pct}};
+}
+
+nlohmann::ordered_json to_json(const ScoredLoopClosure& s,
+                               const std::vector<KeyframeTruth>& keyframes) {
+  const AcceptedEdge& e = s.edge;
   nlohmann::ordered_json j;
-  j["from_keyframe"] = d.from_keyframe;
-  j["to_keyframe"] = d.to_keyframe;
-  j["from_time"] = d.from_time.to_string(6);
-  j["to_time"] = d.to_time.to_string(6);
-  j["role"] = d.role;
-  j["inliers"] = d.inliers;
-  j["correct"] = s.correct;
-  j["verdict"] = s.verdict;
-  j["gt_distance_m"] = s.overlap.distance_m;
-  j["gt_view_angle_deg"] = s.overlap.angle_deg;
-  j["gt_path_between_m"] = s.path_between_m;
-  j["overlap_depth_checked"] = s.overlap.depth_checked;
-  j["overlap_fraction"] = s.overlap.fraction;
+  j["from_keyframe"] = e.from_keyframe;
+  j["to_keyframe"] = e.to_keyframe;
+  j["from_time"] = keyframes[static_cast<std::size_t>(e.from_keyframe)].time.to_string(6);
+  j["to_time"] = keyframes[static_cast<std::size_t>(e.to_keyframe)].time.to_string(6);
+  j["type"] = e.type;
+  j["role"] = e.role;
+  j["inliers"] = e.inliers;
+  j["pruned"] = e.pruned;
+  j["weight"] = e.weight;
+  j["verdict"] = to_string(s.verdict);
+  j["far"] = s.far;
   j["translation_error_m"] = s.translation_error_m;
   j["rotation_error_deg"] = s.rotation_error_deg;
+  j["gt_distance_m"] = s.true_distance_m;
+  j["gt_path_between_m"] = s.path_between_m;
+  j["gt_view_angle_deg"] = s.overlap.angle_deg;
+  j["overlap"] = s.overlap.overlap;
+  j["overlap_depth_checked"] = s.overlap.depth_checked;
+  j["overlap_fraction"] = s.overlap.fraction;
   j["episode"] = s.episode;
   return j;
 }
@@ -172,7 +204,8 @@ nlohmann::ordered_json to_json(const RevisitEpisode& e) {
           {"revisiting_keyframes", e.revisiting_keyframes},
           {"first_partner", e.first_partner},
           {"first_partner_path_m", e.first_partner_path_m},
-          {"detected", e.detected}};
+          {"detected_online", e.detected_online},
+          {"detected_after_pruning", e.detected_after_pruning}};
 }
 
 }  // namespace wifislam::eval

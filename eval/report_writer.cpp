@@ -1,6 +1,7 @@
 #include "eval/report_writer.hpp"
 
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -14,6 +15,14 @@
 namespace wifislam::eval {
 
 namespace fs = std::filesystem;
+
+const char* const kAssociationRule =
+    "Association (TUM associate.py, ground truth first, estimate second): a stamp repeated in a "
+    "file counts once, with its last line; every pair closer than max_time_difference_s "
+    "(strictly) is a candidate; candidates are taken greedily by smallest |difference|, exact "
+    "ties going to the earlier ground-truth stamp, then the earlier estimate stamp, each stamp "
+    "used once. Differences are exact in integer nanoseconds (associate.py subtracts "
+    "floating-point seconds).";
 
 namespace {
 
@@ -30,6 +39,18 @@ std::string csv_field(const nlohmann::ordered_json& v) {
   std::string quoted = "\"";
   for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
   return quoted + "\"";
+}
+
+std::string alignment_name(AlignmentMode mode) {
+  switch (mode) {
+    case AlignmentMode::kNone:
+      return "no alignment";
+    case AlignmentMode::kSe3:
+      return "Umeyama rigid, SE(3)";
+    case AlignmentMode::kSim3:
+      return "Umeyama with scale, Sim(3)";
+  }
+  return "";
 }
 
 std::string value_text(const nlohmann::ordered_json& v) {
@@ -63,32 +84,56 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
                                                      ev.wifi_run ? ", with Wi-Fi" : "")));
   line(fmt::format("- ground truth: `{}`", ev.dataset_dir));
   line();
+  const LoopClosureScore& score = ev.loop_closure_score;
+  const LoopClosureCounts& online = score.online;
+  const LoopClosureCounts& pruned = score.after_pruning;
   line("## Summary");
   line();
   line("| metric | value |");
   line("| --- | --- |");
-  line(fmt::format("| trajectory error (ATE RMSE) | {:.4f} m |", ev.ate_rmse_m));
-  line(fmt::format("| false positive loop closures | {} of {} ({:.1f} %) |", ev.false_positives,
-                   ev.loop_closures_detected, ev.false_positive_pct));
-  line(fmt::format("| false negatives (missed revisit episodes) | {} of {} ({:.1f} %) |",
-                   ev.false_negatives, ev.revisit_episodes, ev.false_negative_pct));
-  line(fmt::format("| loop-closure detection time | {:.3f} s |", ev.loop_closure_detection_s));
-  line(fmt::format("| Wi-Fi overhead (clustering + cluster management) | {:.4f} s |",
-                   ev.wifi_overhead_s));
-  line(fmt::format("| optimisation time | {:.3f} s |", ev.optimisation_s));
-  line(fmt::format("| pipeline total / wall-clock | {:.3f} s / {:.3f} s |", ev.total_s, ev.wall_s));
-  line(fmt::format("| keyframes / candidate comparisons | {} / {} |", ev.keyframes,
-                   ev.candidate_comparisons));
+  line(fmt::format("| trajectory error (ATE RMSE, {}) | {:.4f} m |",
+                   alignment_name(ev.options.align), ev.ate_rmse_m));
+  if (ev.loop_closures_available) {
+    line(fmt::format(
+        "| false positive loop closures (wrong place), online / after pruning | {} of {} ({:.1f} "
+        "%) / {} of {} ({:.1f} %) |",
+        online.wrong_place, online.scored, online.false_positive_pct, pruned.wrong_place,
+        pruned.scored, pruned.false_positive_pct));
+    line(fmt::format(
+        "| false negatives (missed revisit episodes), online / after pruning | {} of {} ({:.1f} "
+        "%) / {} of {} ({:.1f} %) |",
+        online.false_negatives, ev.revisit_episodes, online.false_negative_pct,
+        pruned.false_negatives, ev.revisit_episodes, pruned.false_negative_pct));
+  } else {
+    line(fmt::format("| loop closures | {} |", ev.loop_closure_note));
+  }
+  if (ev.timing_available) {
+    line(fmt::format("| loop-closure detection time | {:.3f} s |", ev.loop_closure_detection_s));
+    line(fmt::format("| Wi-Fi overhead (clustering + cluster management) | {:.4f} s |",
+                     ev.wifi_overhead_s));
+    line(fmt::format("| optimisation time | {:.3f} s |", ev.optimisation_s));
+    line(fmt::format("| pipeline total / wall-clock | {:.3f} s / {:.3f} s |", ev.total_s,
+                     ev.wall_s));
+    line(fmt::format("| keyframes / candidate comparisons | {} / {} |", ev.keyframes,
+                     ev.candidate_comparisons));
+  } else {
+    line(fmt::format("| timing | {} |", ev.timing_note));
+  }
   if (ev.wifi_run) line(fmt::format("| Wi-Fi clusters | {} |", ev.wifi_clusters));
   line();
   line("## Trajectory error");
   line();
   line(fmt::format(
-      "{} estimated poses, {} ground-truth poses, {} associated (stamps closer than {} s, TUM "
-      "associate rule). Estimate aligned onto ground truth with Umeyama ({}{}).",
-      ev.frames_estimated, ev.frames_ground_truth, ev.frames_associated,
-      ev.options.max_time_difference_s, ev.options.align_scale ? "with scale" : "rigid, no scale",
-      ev.options.align_scale ? fmt::format(", scale {:.5f}", ev.alignment.scale) : ""));
+      "{} estimated poses, {} ground-truth poses, {} associated{}. {}", ev.frames_estimated,
+      ev.frames_ground_truth, ev.frames_associated,
+      ev.options.time_offset_s != 0.0
+          ? fmt::format(" (estimate stamps shifted by {} s first)", ev.options.time_offset_s)
+          : "",
+      kAssociationRule));
+  line(fmt::format("Estimate aligned onto ground truth: {}{}.", alignment_name(ev.options.align),
+                   ev.options.align == AlignmentMode::kSim3
+                       ? fmt::format(", scale {:.5f}", ev.alignment.scale)
+                       : ""));
   line();
   line("| ATE | RMSE | mean | median | max |");
   line("| --- | --- | --- | --- | --- |");
@@ -104,83 +149,121 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
   line("## Loop closures");
   line();
   const EvalOptions& o = ev.options;
-  line(
-      fmt::format("Views overlap: ground-truth cameras at most {} m apart with optical axes "
-                  "within {} deg, and (with depth) at least {:.0f} % of one view's depth "
-                  "samples (every {} px) land in the other view with its depth agreeing within "
-                  "max({} m, {:.0f} %) (lookup grid {} px).",
-                  o.overlap_max_distance_m, o.overlap_max_angle_deg, 100 * o.overlap_min_fraction,
-                  o.overlap_sample_stride_px, o.overlap_depth_tolerance_m,
-                  100 * o.overlap_depth_tolerance_rel, o.overlap_lookup_stride_px));
-  line(fmt::format("Overlap judged by: **{}**.", ev.overlap_method));
-  line(
-      fmt::format("True revisit: overlapping keyframes with at least {} m of ground-truth travel "
-                  "between them; an episode is a run of revisiting keyframes (gaps of up to {} "
-                  "keyframes allowed). A detected closure is correct when the views overlap and "
-                  "its relative pose is within {} m and {} deg of the ground truth.",
-                  o.revisit_min_path_m, o.episode_max_gap_keyframes, o.loop_max_translation_error_m,
-                  o.loop_max_rotation_error_deg));
-  line();
-  line(
-      fmt::format("{} detected, {} correct, {} false positives ({:.1f} %); {} revisit episodes "
-                  "({} revisiting keyframes), {} missed ({:.1f} %).",
-                  ev.loop_closures_detected, ev.loop_closures_correct, ev.false_positives,
-                  ev.false_positive_pct, ev.revisit_episodes, ev.revisit_keyframes,
-                  ev.false_negatives, ev.false_negative_pct));
-  if (!ev.loop_closure_score.closures.empty()) {
+  if (!ev.loop_closures_available) {
+    line(fmt::format("Loop closures {}; only the trajectory was scored.", ev.loop_closure_note));
+    line();
+  } else {
+    line(fmt::format(
+        "Scored edges (from {}): every accepted `visual` or `loop` edge whose keyframes lie at "
+        "least {} m of ground-truth path apart, whatever the front end called it ({} such edges "
+        "of {} visual/loop edges; {} shorter ones are tracking or local edges, not scored; "
+        "loop_closures.csv has {} rows).",
+        ev.loop_closure_source, o.revisit_min_path_m, online.scored, score.edges_considered,
+        score.edges_short_path, ev.loop_closure_csv_rows));
+    line(fmt::format(
+        "Verdict from the relative pose and the true positions only: **correct** when the "
+        "estimated relative pose is within {} m and {} deg of the ground truth inv(gt_from) * "
+        "gt_to; **right place, imprecise** when not, but the keyframes truly stand within {} m of "
+        "each other and the error is within {} m and {} deg; **wrong place** otherwise (the "
+        "paper's false positive; **far** when the keyframes truly stand more than {} m apart). "
+        "FP % = wrong place / scored edges. Online = every scored edge as accepted during the "
+        "run; after pruning = those the after-run pruning kept.",
+        o.loop_max_translation_error_m, o.loop_max_rotation_error_deg, o.right_place_max_distance_m,
+        o.right_place_max_translation_error_m, o.right_place_max_rotation_error_deg,
+        o.far_distance_m));
     line();
     line(
-        "| from kf | to kf | role | inliers | true distance m | angle deg | overlap | "
-        "trans err m | rot err deg | verdict |");
-    line("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
-    for (const ScoredLoopClosure& c : ev.loop_closure_score.closures) {
-      line(fmt::format(
-          "| {} | {} | {} | {} | {:.2f} | {:.1f} | {} | {:.3f} | {:.2f} | {} |",
-          c.detected.from_keyframe, c.detected.to_keyframe, c.detected.role, c.detected.inliers,
-          c.overlap.distance_m, c.overlap.angle_deg,
-          c.overlap.depth_checked ? fmt::format("{:.2f}", c.overlap.fraction) : std::string("-"),
-          c.translation_error_m, c.rotation_error_deg, c.verdict));
+        "| set | scored | correct | right place, imprecise | wrong place | far wrong place | FP % "
+        "| missed episodes (FN) | FN % |");
+    line("| --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    for (const auto& [name, c] :
+         {std::pair{"online", &online}, std::pair{"after pruning", &pruned}}) {
+      line(fmt::format("| {} | {} | {} | {} | {} | {} | {:.1f} | {} of {} | {:.1f} |", name,
+                       c->scored, c->correct, c->right_place_imprecise, c->wrong_place,
+                       c->far_wrong_place, c->false_positive_pct, c->false_negatives,
+                       ev.revisit_episodes, c->false_negative_pct));
     }
-  }
-  if (!ev.loop_closure_score.episodes.empty()) {
     line();
-    line("| episode | keyframes | revisiting | partner of first | travel between m | detected |");
-    line("| --- | --- | --- | --- | --- | --- |");
-    for (std::size_t i = 0; i < ev.loop_closure_score.episodes.size(); ++i) {
-      const RevisitEpisode& e = ev.loop_closure_score.episodes[i];
-      line(fmt::format("| {} | {}-{} | {} | {} | {:.1f} | {} |", i, e.first_keyframe,
-                       e.last_keyframe, e.revisiting_keyframes, e.first_partner,
-                       e.first_partner_path_m, e.detected ? "yes" : "**no (FN)**"));
+    line(fmt::format(
+        "False negatives: views overlap when the ground-truth cameras are at most {} m apart with "
+        "optical axes within {} deg, and (with depth) at least {:.0f} % of one view's depth "
+        "samples (every {} px) land in the other view with its depth agreeing within max({} m, "
+        "{:.0f} %) (lookup grid {} px). Overlap judged by: **{}**. A true revisit is a pair of "
+        "overlapping keyframes with at least {} m of ground-truth travel between them; an "
+        "episode is a run of revisiting keyframes (gaps of up to {} keyframes allowed), detected "
+        "when a correct edge of the set touches it. {} revisit episodes ({} revisiting "
+        "keyframes).",
+        o.overlap_max_distance_m, o.overlap_max_angle_deg, 100 * o.overlap_min_fraction,
+        o.overlap_sample_stride_px, o.overlap_depth_tolerance_m,
+        100 * o.overlap_depth_tolerance_rel, o.overlap_lookup_stride_px, ev.overlap_method,
+        o.revisit_min_path_m, o.episode_max_gap_keyframes, ev.revisit_episodes,
+        ev.revisit_keyframes));
+    if (!score.closures.empty()) {
+      line();
+      line(
+          "| from kf | to kf | type | role | inliers | pruned | true distance m | path between m "
+          "| trans err m | rot err deg | overlap | verdict |");
+      line("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+      for (const ScoredLoopClosure& c : score.closures) {
+        const AcceptedEdge& e = c.edge;
+        line(fmt::format(
+            "| {} | {} | {} | {} | {} | {} | {:.2f} | {:.1f} | {:.3f} | {:.2f} | {} | {}{} |",
+            e.from_keyframe, e.to_keyframe, e.type, e.role.empty() ? "-" : e.role, e.inliers,
+            e.pruned ? "yes" : "no", c.true_distance_m, c.path_between_m, c.translation_error_m,
+            c.rotation_error_deg,
+            c.overlap.depth_checked ? fmt::format("{:.2f}", c.overlap.fraction)
+                                    : std::string(c.overlap.overlap ? "bound" : "no"),
+            to_string(c.verdict), c.far ? " (far)" : ""));
+      }
     }
+    if (!score.episodes.empty()) {
+      line();
+      line(
+          "| episode | keyframes | revisiting | partner of first | travel between m | detected "
+          "online | detected after pruning |");
+      line("| --- | --- | --- | --- | --- | --- | --- |");
+      for (std::size_t i = 0; i < score.episodes.size(); ++i) {
+        const RevisitEpisode& e = score.episodes[i];
+        line(fmt::format("| {} | {}-{} | {} | {} | {:.1f} | {} | {} |", i, e.first_keyframe,
+                         e.last_keyframe, e.revisiting_keyframes, e.first_partner,
+                         e.first_partner_path_m, e.detected_online ? "yes" : "**no (FN)**",
+                         e.detected_after_pruning ? "yes" : "**no (FN)**"));
+      }
+    }
+    line();
   }
-  line();
   line("## Time");
   line();
-  line("Wall-clock of the run per module (timing.json) and work counters (machine-independent).");
-  line();
-  line("| module | seconds | calls |");
-  line("| --- | --- | --- |");
-  for (const auto& [name, m] : ev.timing.modules) {
-    line(fmt::format("| {} | {:.4f} | {} |", name, m.total_s, m.calls));
-  }
-  line();
-  line("| counter | value |");
-  line("| --- | --- |");
-  for (const auto& [name, v] : ev.timing.counters) line(fmt::format("| {} | {} |", name, v));
-  if (!ev.timing.roles.empty()) {
+  if (!ev.timing_available) {
+    line(fmt::format("Timing {}.", ev.timing_note));
     line();
-    line(
-        "Visual comparisons by the role that asked for them (verified: the transformation "
-        "passed; accepted: it became an edge, or for tracking, the frame was tracked).");
+  } else {
+    line("Wall-clock of the run per module (timing.json) and work counters (machine-independent).");
     line();
-    line("| role | comparisons | RANSAC runs | verified | accepted | seconds |");
-    line("| --- | --- | --- | --- | --- | --- |");
-    for (const auto& [name, r] : ev.timing.roles) {
-      line(fmt::format("| {} | {} | {} | {} | {} | {:.4f} |", name, r.comparisons, r.ransac_runs,
-                       r.verified, r.accepted, r.time_s));
+    line("| module | seconds | calls |");
+    line("| --- | --- | --- |");
+    for (const auto& [name, m] : ev.timing.modules) {
+      line(fmt::format("| {} | {:.4f} | {} |", name, m.total_s, m.calls));
     }
+    line();
+    line("| counter | value |");
+    line("| --- | --- |");
+    for (const auto& [name, v] : ev.timing.counters) line(fmt::format("| {} | {} |", name, v));
+    if (!ev.timing.roles.empty()) {
+      line();
+      line(
+          "Visual comparisons by the role that asked for them (verified: the transformation "
+          "passed; accepted: it became an edge, or for tracking, the frame was tracked).");
+      line();
+      line("| role | comparisons | RANSAC runs | verified | accepted | seconds |");
+      line("| --- | --- | --- | --- | --- | --- |");
+      for (const auto& [name, r] : ev.timing.roles) {
+        line(fmt::format("| {} | {} | {} | {} | {} | {:.4f} |", name, r.comparisons, r.ransac_runs,
+                         r.verified, r.accepted, r.time_s));
+      }
+    }
+    line();
   }
-  line();
   line("## Thresholds");
   line();
   line("| threshold | value | meaning |");

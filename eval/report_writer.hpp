@@ -12,6 +12,9 @@
 
 namespace wifislam::eval {
 
+/// The timestamp association rule, as report.md and `wifislam eval --help` state it.
+extern const char* const kAssociationRule;
+
 /// Replaces an existing `out_dir`. `plots` false: text files only. The floor plan behind the plots
 /// is the dataset's scene.yaml, generated; without one the plots show the paths alone (and the
 /// report says so). Throws IoError when the folder cannot be written.

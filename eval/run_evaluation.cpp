@@ -1,5 +1,7 @@
 #include "eval/run_evaluation.hpp"
 
+#include <utility>
+
 namespace wifislam::eval {
 
 nlohmann::ordered_json RunEvaluation::flat_metrics() const {
@@ -21,27 +23,37 @@ nlohmann::ordered_json RunEvaluation::flat_metrics() const {
   j["rpe_rot_deg_per_m"] = rpe_rot_deg_per_m;
   j["rpe_trans_rmse_m"] = rpe_trans_rmse_m;
   j["rpe_rot_rmse_deg"] = rpe_rot_rmse_deg;
-  j["loop_closures_detected"] = loop_closures_detected;
-  j["loop_closures_correct"] = loop_closures_correct;
-  j["false_positives"] = false_positives;
-  j["false_positive_pct"] = false_positive_pct;
-  j["revisit_episodes"] = revisit_episodes;
-  j["revisit_keyframes"] = revisit_keyframes;
-  j["false_negatives"] = false_negatives;
-  j["false_negative_pct"] = false_negative_pct;
-  j["overlap_used_depth"] = overlap_used_depth;
-  j["overlap_method"] = overlap_method;
-  j["overlap_pairs_tested"] = loop_closure_score.pairs_tested;
-  j["overlap_pairs_geometric_only"] = loop_closure_score.pairs_geometric_only;
-  j["loop_closure_detection_s"] = loop_closure_detection_s;
-  j["wifi_overhead_s"] = wifi_overhead_s;
-  j["optimisation_s"] = optimisation_s;
-  j["total_s"] = total_s;
-  j["wall_s"] = wall_s;
+  j["loop_closures_available"] = loop_closures_available;
+  if (loop_closures_available) {
+    j["loop_closure_source"] = loop_closure_source;
+    j["loop_closure_csv_rows"] = loop_closure_csv_rows;
+    const LoopClosureScore& s = loop_closure_score;
+    j["loop_edges_considered"] = s.edges_considered;
+    j["loop_edges_short_path"] = s.edges_short_path;
+    for (const auto& [prefix, counts] :
+         {std::pair{"online_", &s.online}, std::pair{"pruned_", &s.after_pruning}}) {
+      const nlohmann::ordered_json values = counts->to_json();  // outlives the loop below
+      for (const auto& [name, value] : values.items()) j[prefix + name] = value;
+    }
+    j["revisit_episodes"] = revisit_episodes;
+    j["revisit_keyframes"] = revisit_keyframes;
+    j["overlap_used_depth"] = overlap_used_depth;
+    j["overlap_method"] = overlap_method;
+    j["overlap_pairs_tested"] = s.pairs_tested;
+    j["overlap_pairs_geometric_only"] = s.pairs_geometric_only;
+  }
+  j["timing_available"] = timing_available;
+  if (timing_available) {
+    j["loop_closure_detection_s"] = loop_closure_detection_s;
+    j["wifi_overhead_s"] = wifi_overhead_s;
+    j["optimisation_s"] = optimisation_s;
+    j["total_s"] = total_s;
+    j["wall_s"] = wall_s;
+    j["candidate_comparisons"] = candidate_comparisons;
+    for (const auto& [name, value] : timing.counters) j["counter." + name] = value;
+  }
   j["keyframes"] = keyframes;
-  j["candidate_comparisons"] = candidate_comparisons;
   j["wifi_clusters"] = wifi_clusters;
-  for (const auto& [name, value] : timing.counters) j["counter." + name] = value;
   const nlohmann::ordered_json thresholds = options.to_json();
   for (const auto& [name, value] : thresholds.items()) j["threshold." + name] = value;
   return j;
@@ -63,7 +75,8 @@ nlohmann::ordered_json RunEvaluation::to_ordered_json() const {
       {"ate_median_m", ate_median_m},
       {"ate_max_m", ate_max_m},
       {"alignment",
-       {{"scale", alignment.scale},
+       {{"mode", eval::to_string(options.align)},
+        {"scale", alignment.scale},
         {"rotation_row_major",
          {alignment.rotation(0, 0), alignment.rotation(0, 1), alignment.rotation(0, 2),
           alignment.rotation(1, 0), alignment.rotation(1, 1), alignment.rotation(1, 2),
@@ -76,28 +89,39 @@ nlohmann::ordered_json RunEvaluation::to_ordered_json() const {
       {"rpe_trans_rmse_m", rpe_trans_rmse_m},
       {"rpe_rot_rmse_deg", rpe_rot_rmse_deg}};
   nlohmann::ordered_json lc;
-  lc["detected"] = loop_closures_detected;
-  lc["correct"] = loop_closures_correct;
-  lc["false_positives"] = false_positives;
-  lc["false_positive_pct"] = false_positive_pct;
-  lc["revisit_episodes"] = revisit_episodes;
-  lc["revisit_keyframes"] = revisit_keyframes;
-  lc["false_negatives"] = false_negatives;
-  lc["false_negative_pct"] = false_negative_pct;
-  lc["overlap_method"] = overlap_method;
-  lc["overlap_used_depth"] = overlap_used_depth;
-  lc["overlap_pairs_tested"] = loop_closure_score.pairs_tested;
-  lc["overlap_pairs_geometric_only"] = loop_closure_score.pairs_geometric_only;
-  lc["closures"] = nlohmann::ordered_json::array();
-  for (const ScoredLoopClosure& c : loop_closure_score.closures)
-    lc["closures"].push_back(eval::to_json(c));
-  lc["episodes"] = nlohmann::ordered_json::array();
-  for (const RevisitEpisode& e : loop_closure_score.episodes)
-    lc["episodes"].push_back(eval::to_json(e));
+  lc["available"] = loop_closures_available;
+  if (!loop_closures_available) {
+    lc["note"] = loop_closure_note;
+  } else {
+    const LoopClosureScore& s = loop_closure_score;
+    lc["source"] = loop_closure_source;
+    lc["loop_closure_csv_rows"] = loop_closure_csv_rows;
+    lc["edges_considered"] = s.edges_considered;
+    lc["edges_short_path"] = s.edges_short_path;
+    lc["online"] = s.online.to_json();
+    lc["pruned"] = s.after_pruning.to_json();
+    lc["revisit_episodes"] = revisit_episodes;
+    lc["revisit_keyframes"] = revisit_keyframes;
+    lc["overlap_method"] = overlap_method;
+    lc["overlap_used_depth"] = overlap_used_depth;
+    lc["overlap_pairs_tested"] = s.pairs_tested;
+    lc["overlap_pairs_geometric_only"] = s.pairs_geometric_only;
+    lc["closures"] = nlohmann::ordered_json::array();
+    for (const ScoredLoopClosure& c : s.closures)
+      lc["closures"].push_back(eval::to_json(c, keyframe_truth));
+    lc["episodes"] = nlohmann::ordered_json::array();
+    for (const RevisitEpisode& e : s.episodes) lc["episodes"].push_back(eval::to_json(e));
+  }
   j["loop_closures"] = lc;
-  nlohmann::ordered_json time = timing.to_json();
+  nlohmann::ordered_json time;
+  time["available"] = timing_available;
+  if (!timing_available) {
+    time["note"] = timing_note;
+  } else {
+    time.update(timing.to_json());
+    time["candidate_comparisons"] = candidate_comparisons;
+  }
   time["keyframes"] = keyframes;
-  time["candidate_comparisons"] = candidate_comparisons;
   j["timing"] = time;
   j["wifi_clusters"] = wifi_clusters;
   return j;

@@ -46,7 +46,13 @@ struct RunEvaluation {
   double rpe_trans_rmse_m = 0.0;   // RMSE of the translation errors over rpe_delta_m
   double rpe_rot_rmse_deg = 0.0;
 
-  // Loop closures.
+  // Loop closures. Available with keyframes.txt and graph.json or loop_closures.csv; the
+  // scalars below are the online set (every scored edge as accepted; the paper's numbers), the
+  // after-pruning set is in loop_closure_score.after_pruning.
+  bool loop_closures_available = false;
+  std::string loop_closure_source;  // "graph.json", or loop_closures.csv and why
+  std::string loop_closure_note;    // why not available
+  std::int64_t loop_closure_csv_rows = 0;
   std::int64_t loop_closures_detected = 0, loop_closures_correct = 0, false_positives = 0;
   double false_positive_pct = 0.0;
   std::int64_t revisit_episodes = 0, revisit_keyframes = 0, false_negatives = 0;
@@ -54,7 +60,9 @@ struct RunEvaluation {
   bool overlap_used_depth = false;
   std::string overlap_method;  // how views were judged (depth test, or geometric bound only)
 
-  // Time (seconds, wall-clock of the run) and work.
+  // Time (seconds, wall-clock of the run) and work, from timing.json when there is one.
+  bool timing_available = false;
+  std::string timing_note;  // why not available
   double loop_closure_detection_s = 0.0, wifi_overhead_s = 0.0, optimisation_s = 0.0;
   double total_s = 0.0, wall_s = 0.0;
   std::int64_t keyframes = 0, candidate_comparisons = 0;

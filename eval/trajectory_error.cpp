@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "core/error.hpp"
 
@@ -10,7 +11,7 @@ namespace wifislam::eval {
 
 AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estimated,
                                                   const std::vector<Pose>& ground_truth,
-                                                  bool with_scale) {
+                                                  AlignmentMode mode) {
   if (estimated.size() != ground_truth.size()) {
     throw InvalidInputError("ATE: estimated and ground-truth pose counts differ");
   }
@@ -21,7 +22,12 @@ AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estim
     gt.col(i) = ground_truth[static_cast<std::size_t>(i)].translation();
   }
   AbsoluteTrajectoryError out;
-  out.alignment = align_points(est, gt, with_scale);
+  // kNone keeps the identity: the estimate is scored in its own frame.
+  if (mode != AlignmentMode::kNone) {
+    out.alignment = align_points(est, gt, mode == AlignmentMode::kSim3);
+  } else if (n < 3) {
+    throw InvalidInputError("ATE: needs at least 3 associated poses, got " + std::to_string(n));
+  }
   out.errors_m.resize(estimated.size());
   double sum = 0.0, sum_sq = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -38,6 +44,13 @@ AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estim
   const std::size_t mid = sorted.size() / 2;
   out.median_m = sorted.size() % 2 ? sorted[mid] : 0.5 * (sorted[mid - 1] + sorted[mid]);
   return out;
+}
+
+AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estimated,
+                                                  const std::vector<Pose>& ground_truth,
+                                                  bool with_scale) {
+  return absolute_trajectory_error(estimated, ground_truth,
+                                   with_scale ? AlignmentMode::kSim3 : AlignmentMode::kSe3);
 }
 
 std::vector<double> cumulative_path_length_m(const std::vector<Pose>& poses) {

@@ -29,6 +29,10 @@ struct AbsoluteTrajectoryError {
 /// fewer than 3 pairs.
 AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estimated,
                                                   const std::vector<Pose>& ground_truth,
+                                                  AlignmentMode mode);
+/// The same, rigid (`with_scale` false) or with scale.
+AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estimated,
+                                                  const std::vector<Pose>& ground_truth,
                                                   bool with_scale);
 
 struct RelativePoseError {

@@ -9,7 +9,20 @@ namespace {
 constexpr Colour kGroundTruth{0.15, 0.15, 0.15};
 constexpr Colour kEstimate{0.10, 0.35, 0.90};
 constexpr Colour kCorrect{0.10, 0.65, 0.20};
+constexpr Colour kImprecise{0.95, 0.60, 0.05};
 constexpr Colour kFalse{0.90, 0.10, 0.10};
+
+Colour verdict_colour(LoopClosureVerdict v) {
+  switch (v) {
+    case LoopClosureVerdict::kCorrect:
+      return kCorrect;
+    case LoopClosureVerdict::kRightPlaceImprecise:
+      return kImprecise;
+    case LoopClosureVerdict::kWrongPlace:
+      return kFalse;
+  }
+  return kFalse;
+}
 }  // namespace
 
 MetricCanvas plan_canvas(const RunEvaluation& ev, const World* world) {
@@ -39,25 +52,30 @@ void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
     draw_polyline(cr, canvas, gt, 2.0);
     set_colour(cr, kEstimate, 0.85);
     draw_polyline(cr, canvas, est, 2.0);
-    std::int64_t correct = 0, wrong = 0;
+    std::int64_t correct = 0, imprecise = 0, wrong = 0;
     for (const ScoredLoopClosure& c : ev.loop_closure_score.closures) {
       const auto& kf = ev.keyframe_truth;
-      const Eigen::Vector2d a = canvas.px(kf[static_cast<std::size_t>(c.detected.from_keyframe)]
-                                              .ground_truth.translation()
-                                              .head<2>());
-      const Eigen::Vector2d b = canvas.px(kf[static_cast<std::size_t>(c.detected.to_keyframe)]
-                                              .ground_truth.translation()
-                                              .head<2>());
-      set_colour(cr, c.correct ? kCorrect : kFalse, 0.9);
-      cairo_set_line_width(cr, c.correct ? 2.0 : 2.5);
+      const Eigen::Vector2d a = canvas.px(
+          kf[static_cast<std::size_t>(c.edge.from_keyframe)].ground_truth.translation().head<2>());
+      const Eigen::Vector2d b = canvas.px(
+          kf[static_cast<std::size_t>(c.edge.to_keyframe)].ground_truth.translation().head<2>());
+      set_colour(cr, verdict_colour(c.verdict), 0.9);
+      cairo_set_line_width(cr, c.correct() ? 2.0 : 2.5);
+      if (c.edge.pruned) {
+        const double dash[] = {6.0, 4.0};
+        cairo_set_dash(cr, dash, 2, 0);
+      }
       cairo_move_to(cr, a.x(), a.y());
       cairo_line_to(cr, b.x(), b.y());
       cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0);
       for (const Eigen::Vector2d& p : {a, b}) {
         cairo_arc(cr, p.x(), p.y(), 3.0, 0, 2 * M_PI);
         cairo_fill(cr);
       }
-      (c.correct ? correct : wrong) += 1;
+      (c.correct()                                    ? correct
+       : c.verdict == LoopClosureVerdict::kWrongPlace ? wrong
+                                                      : imprecise) += 1;
     }
     if (!gt.empty()) {
       const Eigen::Vector2d start = canvas.px(gt.front());
@@ -67,21 +85,31 @@ void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
     }
     set_colour(cr, {0, 0, 0});
     draw_text(cr, MetricCanvas::kMarginPx, 28,
-              fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closure{} ({} false)",
-                          ev.ate_rmse_m, ev.loop_closures_detected,
-                          ev.loop_closures_detected == 1 ? "" : "s", ev.false_positives),
+              ev.loop_closures_available
+                  ? fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closure{} ({} wrong place)",
+                                ev.ate_rmse_m, ev.loop_closures_detected,
+                                ev.loop_closures_detected == 1 ? "" : "s", ev.false_positives)
+                  : fmt::format("Trajectory: ATE RMSE {:.3f} m (loop closures not available)",
+                                ev.ate_rmse_m),
               18, true);
     const double x = canvas.plan_right_px() + MetricCanvas::kMarginPx;
     double y = MetricCanvas::kTitlePx + 14;
     y = legend_line(cr, x, y, kGroundTruth, 2.0, "ground truth");
     y = legend_line(cr, x, y, kEstimate, 2.0,
-                    ev.options.align_scale ? "estimate (Sim(3)-aligned)" : "estimate (aligned)");
-    y = legend_line(cr, x, y, kCorrect, 2.0, fmt::format("correct loop closure ({})", correct));
-    y = legend_line(cr, x, y, kFalse, 2.5, fmt::format("false loop closure ({})", wrong));
+                    ev.options.align == AlignmentMode::kSim3  ? "estimate (Sim(3)-aligned)"
+                    : ev.options.align == AlignmentMode::kSe3 ? "estimate (aligned)"
+                                                              : "estimate (not aligned)");
+    if (ev.loop_closures_available) {
+      y = legend_line(cr, x, y, kCorrect, 2.0, fmt::format("correct loop closure ({})", correct));
+      y = legend_line(cr, x, y, kImprecise, 2.5,
+                      fmt::format("right place, imprecise ({})", imprecise));
+      y = legend_line(cr, x, y, kFalse, 2.5, fmt::format("wrong place ({})", wrong));
+    }
     y = legend_dot(cr, x, y, kCorrect, "start");
     set_colour(cr, {0.3, 0.3, 0.3});
     draw_text(cr, x, y + 6, "closures drawn between the", 11);
     draw_text(cr, x, y + 20, "keyframes' true positions", 11);
+    draw_text(cr, x, y + 34, "(dashed: pruned after the run)", 11);
     draw_scale_bar(cr, canvas);
   });
 }

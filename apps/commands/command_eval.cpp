@@ -1,22 +1,27 @@
-// `wifislam eval <run-dir> --gt <dataset-dir> [-o out-dir] [--scale] [--no-plots]
-// [--set key=value ...]`: score a SLAM run folder against the exact ground truth of its dataset
-// and write report.md, metrics.json, metrics.csv and plots.
+// `wifislam eval <run-dir | trajectory.txt> --gt <dataset-dir> [-o out-dir] [--align MODE]
+// [--time-offset S] [--no-plots] [--set key=value ...]`: score a SLAM run folder, or any TUM
+// trajectory file, against the exact ground truth of a dataset and write report.md,
+// metrics.json, metrics.csv and plots.
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "core/error.hpp"
 #include "eval/eval.hpp"
 
 namespace {
 
 struct EvalArgs {
-  std::string run_dir;
+  std::string input;
   std::string dataset_dir;
   std::string output;
+  std::string align;
+  std::optional<double> time_offset_s;
   bool scale = false;
   bool no_plots = false;
   std::vector<std::string> settings;
@@ -27,34 +32,70 @@ std::string thresholds_help() {
   const nlohmann::ordered_json values = defaults.to_json();
   std::string text = "Thresholds (--set key=value; all are written into the outputs):\n";
   for (const auto& [name, description] : wifislam::eval::option_descriptions()) {
-    text += fmt::format("  {:<30} {:>6}  {}\n", name, values[name].dump(), description);
+    text += fmt::format("  {:<36} {:>6}  {}\n", name, values[name].dump(), description);
   }
+  text += "\n";
+  text += wifislam::eval::kAssociationRule;
+  text += "\n";
   return text;
+}
+
+/// Default output: <run>/eval for a folder, <name>_eval beside a trajectory file.
+std::filesystem::path default_output(const std::filesystem::path& input) {
+  if (std::filesystem::is_regular_file(input)) {
+    return input.parent_path() / (input.stem().string() + "_eval");
+  }
+  return input / "eval";
 }
 
 void run(const EvalArgs& args) {
   using namespace wifislam;
   eval::EvalOptions options;
-  options.align_scale = args.scale;
+  if (args.scale) options.align = eval::AlignmentMode::kSim3;  // deprecated spelling
+  if (!args.align.empty()) {
+    const std::optional<eval::AlignmentMode> mode = eval::parse_alignment_mode(args.align);
+    if (!mode) {
+      throw InvalidInputError("--align '" + args.align + "': expected none, se3 or sim3");
+    }
+    if (args.scale && *mode != eval::AlignmentMode::kSim3) {
+      throw InvalidInputError("--scale (= --align sim3) contradicts --align " + args.align);
+    }
+    options.align = *mode;
+  }
+  if (args.time_offset_s) options.time_offset_s = *args.time_offset_s;
   for (const std::string& s : args.settings) eval::set_option(options, s);
-  const std::filesystem::path out = args.output.empty()
-                                        ? std::filesystem::path(args.run_dir) / "eval"
-                                        : std::filesystem::path(args.output);
-  const eval::RunEvaluation ev = eval::evaluate_run(args.run_dir, args.dataset_dir, options);
-  eval::write_evaluation(out, ev, args.run_dir, args.dataset_dir, !args.no_plots);
-  fmt::print("ATE RMSE           {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}; {} poses)\n",
-             ev.ate_rmse_m, ev.ate_mean_m, ev.ate_median_m, ev.ate_max_m, ev.frames_associated);
+  const std::filesystem::path out =
+      args.output.empty() ? default_output(args.input) : std::filesystem::path(args.output);
+  const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
+  eval::write_evaluation(out, ev, args.input, args.dataset_dir, !args.no_plots);
+  fmt::print("ATE RMSE           {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}; {} poses, {})\n",
+             ev.ate_rmse_m, ev.ate_mean_m, ev.ate_median_m, ev.ate_max_m, ev.frames_associated,
+             eval::to_string(options.align));
   fmt::print("RPE                {:.4f} m/m, {:.3f} deg/m over {} m\n", ev.rpe_trans_per_m,
              ev.rpe_rot_deg_per_m, options.rpe_delta_m);
-  fmt::print("loop closures      {} detected, {} false positive ({:.1f} %)\n",
-             ev.loop_closures_detected, ev.false_positives, ev.false_positive_pct);
-  fmt::print("revisit episodes   {}, {} missed ({:.1f} %)\n", ev.revisit_episodes,
-             ev.false_negatives, ev.false_negative_pct);
-  fmt::print("overlap judged by  {}\n", ev.overlap_method);
-  fmt::print(
-      "time               loop-closure detection {:.3f} s, Wi-Fi overhead {:.4f} s, "
-      "optimisation {:.3f} s, total {:.3f} s\n",
-      ev.loop_closure_detection_s, ev.wifi_overhead_s, ev.optimisation_s, ev.total_s);
+  if (ev.loop_closures_available) {
+    for (const auto& [name, c] :
+         {std::pair{"online", &ev.loop_closure_score.online},
+          std::pair{"after pruning", &ev.loop_closure_score.after_pruning}}) {
+      fmt::print(
+          "loop closures      {:<14} {} scored: {} correct, {} right place imprecise, {} wrong "
+          "place ({:.1f} %, {} far); {} of {} episodes missed ({:.1f} %)\n",
+          name, c->scored, c->correct, c->right_place_imprecise, c->wrong_place,
+          c->false_positive_pct, c->far_wrong_place, c->false_negatives, ev.revisit_episodes,
+          c->false_negative_pct);
+    }
+    fmt::print("overlap judged by  {}\n", ev.overlap_method);
+  } else {
+    fmt::print("loop closures      {}\n", ev.loop_closure_note);
+  }
+  if (ev.timing_available) {
+    fmt::print(
+        "time               loop-closure detection {:.3f} s, Wi-Fi overhead {:.4f} s, "
+        "optimisation {:.3f} s, total {:.3f} s\n",
+        ev.loop_closure_detection_s, ev.wifi_overhead_s, ev.optimisation_s, ev.total_s);
+  } else {
+    fmt::print("time               {}\n", ev.timing_note);
+  }
   fmt::print("wrote {}\n", std::filesystem::absolute(out).lexically_normal().string());
 }
 
@@ -64,18 +105,32 @@ WIFISLAM_COMMAND(eval, 70) {
   auto args = std::make_shared<EvalArgs>();
   CLI::App* app = parent.add_subcommand(
       "eval",
-      "Score a SLAM run folder against its dataset's exact ground truth: trajectory error (ATE\n"
-      "after Umeyama alignment, RPE per metre), false positive / false negative loop closures,\n"
-      "loop-closure time and Wi-Fi overhead. Writes report.md, metrics.json, metrics.csv and\n"
-      "PNG/SVG plots (trajectory over the floor plan, error along the path, Wi-Fi clusters).");
-  app->add_option("run", args->run_dir, "Run folder written by `wifislam slam`")->required();
+      "Score a SLAM run folder, or any TUM trajectory file (e.g. another system's\n"
+      "CameraTrajectory.txt), against a dataset's exact ground truth: trajectory error (ATE after\n"
+      "alignment, RPE per metre) and, for run folders with keyframes.txt and graph.json or\n"
+      "loop_closures.csv, loop closures (correct / right place imprecise / wrong place, online\n"
+      "and after pruning; missed revisits); with timing.json, loop-closure time and Wi-Fi\n"
+      "overhead. What the input lacks is reported as not available. Writes report.md,\n"
+      "metrics.json, metrics.csv and PNG/SVG plots (trajectory over the floor plan, error along\n"
+      "the path, Wi-Fi clusters).");
+  app->add_option("run", args->input,
+                  "Run folder written by `wifislam slam` (only trajectory.txt is required), or a "
+                  "TUM trajectory file")
+      ->required();
   app->add_option("--gt", args->dataset_dir,
                   "Dataset folder the run was made from (groundtruth.txt, depth images, "
                   "calibration.yaml, scene.yaml)")
       ->required();
   app->add_option("-o,--output", args->output,
-                  "Folder to write (default: <run>/eval; replaced if it exists)");
-  app->add_flag("--scale", args->scale, "Align with scale (Sim(3)) instead of rigidly");
+                  "Folder to write (default: <run>/eval, or <file>_eval beside a trajectory "
+                  "file; replaced if it exists)");
+  app->add_option("--align", args->align,
+                  "Move the estimate onto ground truth before ATE: none, se3 (rigid Umeyama, "
+                  "default, as evaluate_ate.py) or sim3 (with scale, evo -as)");
+  app->add_option("--time-offset", args->time_offset_s,
+                  "Seconds added to the estimate's stamps before association (evaluate_ate.py "
+                  "--offset)");
+  app->add_flag("--scale", args->scale, "Deprecated: same as --align sim3");
   app->add_flag("--no-plots", args->no_plots, "Write the text outputs only");
   app->add_option("--set", args->settings, "Threshold key=value (repeatable), see below");
   app->footer(thresholds_help());

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -40,6 +41,12 @@ Result wifislam(const std::string& args, const fs::path& dir) {
   r.out = o.str();
   r.err = e.str();
   return r;
+}
+
+std::string fmt_stamp(double t) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6f", t);
+  return buf;
 }
 
 bool is_png(const fs::path& p) {
@@ -133,11 +140,16 @@ TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
   EXPECT_GT(rmse, 0.0);
   EXPECT_GT(m["trajectory"]["frames_associated"].get<int>(), 100);
   EXPECT_EQ(m["loop_closures"]["overlap_used_depth"], true);
-  // The run's own loop-closure count agrees with what eval read.
+  // The run's own loop-closure count agrees with the loop_closures.csv rows eval read.
   const nlohmann::json timing = nlohmann::json::parse(std::ifstream(run / "timing.json"));
   if (timing["counters"].contains("loop_closures")) {
-    EXPECT_EQ(m["loop_closures"]["detected"], timing["counters"]["loop_closures"]);
+    EXPECT_EQ(m["loop_closures"]["loop_closure_csv_rows"], timing["counters"]["loop_closures"]);
   }
+  EXPECT_EQ(m["loop_closures"]["source"], "graph.json");
+  EXPECT_EQ(m["loop_closures"]["online"]["scored"].get<int>(),
+            m["loop_closures"]["online"]["correct"].get<int>() +
+                m["loop_closures"]["online"]["right_place_imprecise"].get<int>() +
+                m["loop_closures"]["online"]["wrong_place"].get<int>());
 
   std::ifstream csv(out / "metrics.csv");
   std::string header, row, extra;
@@ -151,6 +163,12 @@ TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
   EXPECT_NEAR(std::stod(values[static_cast<std::size_t>(at)]), rmse, 1e-12 * rmse);
   EXPECT_NE(std::find(names.begin(), names.end(), "threshold.loop_max_rotation_error_deg"),
             names.end());
+  for (const char* key : {"online_correct", "online_right_place_imprecise", "online_wrong_place",
+                          "online_far_wrong_place", "online_false_positive_pct",
+                          "online_false_negatives", "pruned_correct", "pruned_wrong_place",
+                          "pruned_false_positive_pct", "pruned_false_negatives"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), key), names.end()) << key;
+  }
 
   std::stringstream report;
   report << std::ifstream(out / "report.md").rdbuf();
@@ -263,10 +281,118 @@ TEST(EvalCommand, BadInputFailsWithoutOutput) {
   EXPECT_NE(r.err.find("overlap_fraction"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 
+  // Unknown alignment.
+  r = wifislam(args + " --align similarity", dir);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--align"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+
+  // A graph.json edge without its relative pose: the file and the key are named.
+  std::ofstream(run.run_dir / "graph.json")
+      << R"({"edges": [{"from": 0, "to": 1, "type": "odometry", "from_to": {"t": [0, 0, 0],
+         "q_xyzw": [0, 0, 0, 1]}}, {"from": 0, "to": 40, "type": "loop"}]})";
+  r = wifislam(args, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("graph.json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("edges[1].from_to"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  fs::remove(run.run_dir / "graph.json");
+
   // And the repaired folder evaluates.
   r = wifislam(args, dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "metrics.json"));
+  fs::remove_all(dir);
+}
+
+// Another system's trajectory: a bare TUM file (or a folder holding only trajectory.txt) is
+// scored on its trajectory alone, and the outputs say loop closures and timing were not there.
+TEST(EvalCommand, BareTrajectoryFileGetsTrajectoryTablesOnly) {
+  const fs::path dir = scratch("bare");
+  const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
+  const fs::path file = dir / "CameraTrajectory.txt";
+  fs::copy_file(run.run_dir / "trajectory.txt", file);
+  Result r = wifislam("eval " + file.string() + " --gt " + run.dataset_dir.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("not available"), std::string::npos) << r.out;
+  const fs::path out = dir / "CameraTrajectory_eval";
+  EXPECT_TRUE(is_png(out / "trajectory.png"));
+  EXPECT_TRUE(is_png(out / "ate_along_path.png"));
+  const nlohmann::json m = nlohmann::json::parse(std::ifstream(out / "metrics.json"));
+  EXPECT_LT(m["trajectory"]["ate_rmse_m"].get<double>(), 1e-6);  // rigidly moved ground truth
+  EXPECT_EQ(m["loop_closures"]["available"], false);
+  EXPECT_EQ(m["timing"]["available"], false);
+  EXPECT_FALSE(m["loop_closures"].contains("online"));
+  std::stringstream report, csv;
+  report << std::ifstream(out / "report.md").rdbuf();
+  csv << std::ifstream(out / "metrics.csv").rdbuf();
+  EXPECT_NE(report.str().find("Loop closures not available"), std::string::npos) << report.str();
+  EXPECT_NE(report.str().find("Timing not available"), std::string::npos);
+  EXPECT_NE(report.str().find("| ATE | RMSE"), std::string::npos);
+  EXPECT_EQ(csv.str().find("online_wrong_place"), std::string::npos);
+  EXPECT_NE(csv.str().find("loop_closures_available"), std::string::npos);
+
+  // A folder with only trajectory.txt.
+  const fs::path only = dir / "only_trajectory";
+  fs::create_directories(only);
+  fs::copy_file(file, only / "trajectory.txt");
+  r = wifislam("eval " + only.string() + " --gt " + run.dataset_dir.string() + " --no-plots", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m2 = nlohmann::json::parse(std::ifstream(only / "eval" / "metrics.json"));
+  EXPECT_EQ(m2["loop_closures"]["available"], false);
+  EXPECT_NE(m2["loop_closures"]["note"].get<std::string>().find("keyframes.txt"),
+            std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(EvalCommand, AlignNoneAndTimeOffset) {
+  const fs::path dir = scratch("align");
+  const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
+  const fs::path file = run.run_dir / "trajectory.txt";
+  auto ate = [&](const std::string& options, const std::string& name) {
+    const Result r = wifislam("eval " + file.string() + " --gt " + run.dataset_dir.string() +
+                                  " --no-plots -o " + (dir / name).string() + " " + options,
+                              dir);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / name / "metrics.json"));
+    EXPECT_EQ(m["trajectory"]["alignment"]["mode"],
+              options.find("none") != std::string::npos ? "none" : "se3");
+    return m["trajectory"]["ate_rmse_m"].get<double>();
+  };
+  // The estimate is the ground truth in another frame (5.8 m and 23 deg away): SE(3) alignment
+  // removes that, none keeps it.
+  EXPECT_LT(ate("", "se3"), 1e-6);
+  EXPECT_LT(ate("--align se3", "se3b"), 1e-6);
+  EXPECT_GT(ate("--align none", "none"), 3.0);
+
+  // Stamps 30 ms late: nothing pairs within 20 ms (exit 2, no output) until the offset undoes it.
+  std::ifstream in(file);
+  std::ofstream late(dir / "late.txt");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream fields(line);
+    double t = 0;
+    fields >> t;
+    std::string rest;
+    std::getline(fields, rest);
+    late << fmt_stamp(t + 0.03) << rest << "\n";
+  }
+  late.close();
+  Result r = wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
+                          " -o " + (dir / "late_out").string(),
+                      dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("share a timestamp"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "late_out"));
+  r = wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
+                   " --time-offset -0.03 --no-plots -o " + (dir / "late_out").string(),
+               dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "late_out" / "metrics.json"));
+  EXPECT_LT(m["trajectory"]["ate_rmse_m"].get<double>(), 1e-6);
+  EXPECT_EQ(m["thresholds"]["time_offset_s"], -0.03);
   fs::remove_all(dir);
 }
 

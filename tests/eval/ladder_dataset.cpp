@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "core/dataset_calibration.hpp"
 #include "core/tum_trajectory.hpp"
@@ -188,6 +189,38 @@ void write_loop_closures(const LadderRun& run, const std::vector<LoopClosureRow>
                        run.keyframe_times[static_cast<std::size_t>(r.to)].to_string(6), t.x(),
                        t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
   }
+}
+
+}  // namespace wifislam::test
+
+namespace wifislam::test {
+
+namespace {
+nlohmann::json edge_json(int from, int to, const char* type, const Pose& from_to, int pruned) {
+  const Eigen::Quaterniond q(from_to.linear());
+  const Eigen::Vector3d t = from_to.translation();
+  nlohmann::json e = {
+      {"from", from},
+      {"to", to},
+      {"type", type},
+      {"inliers", 60},
+      {"from_to", {{"t", {t.x(), t.y(), t.z()}}, {"q_xyzw", {q.x(), q.y(), q.z(), q.w()}}}},
+      {"information", std::vector<double>(36, 0.0)}};
+  if (pruned >= 0) e["pruned"] = pruned == 1;
+  return e;
+}
+}  // namespace
+
+void write_graph(const LadderRun& run, const std::vector<GraphEdgeRow>& edges) {
+  nlohmann::json list = nlohmann::json::array();
+  for (std::size_t k = 1; k < run.keyframe_poses.size(); ++k) {
+    const int from = static_cast<int>(k) - 1, to = static_cast<int>(k);
+    list.push_back(edge_json(from, to, "odometry", run.true_relative(from, to), -1));
+  }
+  for (const GraphEdgeRow& e : edges)
+    list.push_back(edge_json(e.from, e.to, e.type, e.from_to, e.pruned));
+  std::ofstream(run.run_dir / "graph.json")
+      << nlohmann::json{{"nodes", nlohmann::json::array()}, {"edges", list}}.dump(1);
 }
 
 }  // namespace wifislam::test

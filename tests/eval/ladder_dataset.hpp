@@ -34,11 +34,23 @@ struct LoopClosureRow {
   Pose from_to = Pose::Identity();  // the "estimated" relative pose
 };
 
+/// An accepted edge of the run's graph.json.
+struct GraphEdgeRow {
+  int from = 0, to = 0;
+  const char* type = "loop";
+  Pose from_to = Pose::Identity();  // the "estimated" relative pose
+  int pruned = -1;                  // -1: no "pruned" key (format before 3), 0/1: false/true
+};
+
 /// Builds both folders under `root` (replaced). `depth` false: no depth images (like a dataset
 /// generated with --no-images).
 LadderRun build_ladder_run(const std::filesystem::path& root, bool depth);
 
 /// Writes the run's loop_closures.csv.
 void write_loop_closures(const LadderRun& run, const std::vector<LoopClosureRow>& rows);
+
+/// Writes the run's graph.json: an odometry edge between consecutive keyframes (their true
+/// relative pose) followed by `edges`.
+void write_graph(const LadderRun& run, const std::vector<GraphEdgeRow>& edges);
 
 }  // namespace wifislam::test

@@ -147,10 +147,16 @@ TEST(TimingTable, ReadsPerRoleWorkAndLocatesAMissingField) {
 TEST(EvalOptions, SetAndValidate) {
   EvalOptions o;
   set_option(o, "revisit_min_path_m=12.5");
-  set_option(o, "align_scale=true");
+  set_option(o, "align=sim3");
+  set_option(o, "time_offset_s=-0.25");
   set_option(o, "episode_max_gap_keyframes=4");
   EXPECT_DOUBLE_EQ(o.revisit_min_path_m, 12.5);
-  EXPECT_TRUE(o.align_scale);
+  EXPECT_EQ(o.align, AlignmentMode::kSim3);
+  EXPECT_EQ(o.to_json()["align"], "sim3");
+  EXPECT_DOUBLE_EQ(o.time_offset_s, -0.25);
+  EXPECT_NE(error_of([&] { set_option(o, "align=affine"); }).find("none, se3, sim3"),
+            std::string::npos);
+  EXPECT_EQ(o.align, AlignmentMode::kSim3);  // unchanged by the rejected value
   EXPECT_EQ(o.episode_max_gap_keyframes, 4);
   EXPECT_EQ(o.to_json()["revisit_min_path_m"], 12.5);
   EXPECT_NE(error_of([&] { set_option(o, "revisit_min_pth_m=3"); }).find("unknown"),

@@ -1,6 +1,7 @@
 // Cross-check against the TUM RGB-D benchmark's evaluate_ate.py definition: a faithful Python
 // port (reference/evaluate_ate.py, numpy) reads the same two files; association count and RMSE
 // must agree.
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -85,6 +86,71 @@ TEST(TumReference, RmseMatchesEvaluateAtePort) {
   EXPECT_EQ(pairs.size(), est.size());
   EXPECT_NEAR(ate.rmse_m, rmse, 1e-9 * rmse);
   EXPECT_GT(rmse, 0.03);  // the noise is there: not a trivially zero comparison
+  fs::remove_all(dir);
+}
+
+// associate.py's rule where it is easy to get wrong: a ground-truth stamp written twice counts
+// once, with its last line (associate.py keeps a dict), and an estimate stamp exactly half-way
+// between two ground-truth stamps goes to the earlier one (its tuple sort). Stamps are dyadic
+// fractions of a second, so associate.py's floating-point differences are exact too.
+TEST(TumReference, RepeatedStampAndHalfWayTieAsAssociatePy) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("wifislam_eval_assoc_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  auto stamp = [](double s) { return Timestamp::from_ns(std::llround(s * 1e9)); };
+  auto at = [](double x, double y, double z) { return camera_pose_from_planar(x, y, 0.3 * x, z); };
+  const Trajectory gt = {
+      StampedPose::from_pose(stamp(1.0), at(0, 0, 1)),
+      StampedPose::from_pose(stamp(1.03125), at(1, 0, 1.1)),
+      StampedPose::from_pose(stamp(1.0625), at(9, 9, 9)),  // overwritten by the next line
+      StampedPose::from_pose(stamp(1.0625), at(1, 1, 1.3)),
+      StampedPose::from_pose(stamp(1.09375), at(0, 1, 1.2)),
+      StampedPose::from_pose(stamp(1.125), at(0.5, 2, 1.0)),
+      StampedPose::from_pose(stamp(1.25), at(2, 2, 1.4)),
+      StampedPose::from_pose(stamp(1.5), at(3, 1, 0.9)),
+  };
+  const Trajectory est = {
+      StampedPose::from_pose(stamp(1.015625), at(0.1, 0, 1)),    // tie: g 1.0 / 1.03125
+      StampedPose::from_pose(stamp(1.046875), at(1, 0.1, 1.1)),  // tie: g 1.03125 / 1.0625
+      StampedPose::from_pose(stamp(1.0625), at(1, 1, 1.25)),     // the repeated stamp
+      StampedPose::from_pose(stamp(1.109375), at(0, 1.1, 1.2)),  // tie: g 1.09375 / 1.125
+      StampedPose::from_pose(stamp(1.26), at(2, 2.1, 1.4)),
+      StampedPose::from_pose(stamp(1.495), at(3, 1, 0.95)),
+  };
+  write_tum_trajectory((dir / "gt.txt").string(), gt);
+  write_tum_trajectory((dir / "est.txt").string(), est);
+  const Trajectory gt_read = read_tum_trajectory((dir / "gt.txt").string());
+  const Trajectory est_read = read_tum_trajectory((dir / "est.txt").string());
+  std::vector<Timestamp> gt_times, est_times;
+  for (const auto& p : gt_read) gt_times.push_back(p.time);
+  for (const auto& p : est_read) est_times.push_back(p.time);
+  const auto pairs = associate_by_time(gt_times, est_times, 0.02);
+  const std::vector<AssociatedIndices> expected = {{0, 0}, {1, 1}, {3, 2}, {4, 3}, {6, 4}, {7, 5}};
+  EXPECT_EQ(pairs, expected);
+
+  std::vector<Pose> a, b;
+  for (const auto& m : pairs) {
+    a.push_back(est_read[m.second].pose());
+    b.push_back(gt_read[m.first].pose());
+  }
+  const AbsoluteTrajectoryError ate = absolute_trajectory_error(a, b, false);
+  const std::string out =
+      run_capture(std::string(WIFISLAM_PYTHON) + " " + WIFISLAM_EVAL_REFERENCE_SCRIPT + " " +
+                  (dir / "gt.txt").string() + " " + (dir / "est.txt").string() + " 2>&1");
+  std::istringstream in(out);
+  std::size_t matches = 0;
+  double rmse = -1;
+  in >> matches >> rmse;
+  ASSERT_GT(rmse, 0.0) << "reference script failed: " << out;
+  EXPECT_EQ(matches, pairs.size());
+  EXPECT_NEAR(ate.rmse_m, rmse, 1e-9 * rmse);
+
+  // The offset is added to the second list's stamps (evaluate_ate.py --offset): shifted 40 ms
+  // late and corrected by -40 ms, the same pairs.
+  std::vector<Timestamp> late;
+  for (const Timestamp& t : est_times) late.push_back(Timestamp::from_ns(t.ns + 40'000'000));
+  EXPECT_TRUE(associate_by_time(gt_times, late, 0.02).size() < pairs.size());
+  EXPECT_EQ(associate_by_time(gt_times, late, 0.02, -40'000'000), expected);
   fs::remove_all(dir);
 }
 
