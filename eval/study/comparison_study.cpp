@@ -85,6 +85,7 @@ struct Cell {
   /// clustering included, and the long-term candidates' verifications) plus optimisation.
   double bounded_module_s = 0;
   std::int64_t detected = 0, false_positives = 0, episodes = 0, false_negatives = 0;
+  std::int64_t far_wrong_place = 0, imprecise = 0;
   std::int64_t comparisons = 0, long_term_comparisons = 0, keyframes = 0;
 
   void add(const eval::RunEvaluation& e) {
@@ -93,6 +94,9 @@ struct Cell {
     const eval::RoleTiming lt =
         long_term == e.timing.roles.end() ? eval::RoleTiming{} : long_term->second;
     long_term_comparisons += lt.comparisons;
+    const eval::LoopClosureScore& score = e.loop_closure_score;
+    far_wrong_place += score.online.far_wrong_place;
+    imprecise += score.online.right_place_imprecise;
     bounded_module_s += e.timing.candidate_selection_s + lt.time_s + e.optimisation_s;
     ate_rmse_m += e.ate_rmse_m;
     loop_closure_s += e.loop_closure_detection_s;
@@ -258,8 +262,12 @@ std::string ComparisonResult::markdown() const {
   const std::vector<Metric> metrics = {
       {"Trajectory error: ATE RMSE (m)",
        [](const Cell& c, bool) { return fmt::format("{:.3f}", c.mean(c.ate_rmse_m)); }},
-      {"False positive loop closures: % of detected (false/detected)",
+      {"False positive loop closures (wrong place): % of scored edges, online (false/scored)",
        [](const Cell& c, bool) { return percent_of(c.false_positives, c.detected); }},
+      {"Wrong-place closures between far places (true positions > 12 m apart), online",
+       [](const Cell& c, bool) { return fmt::format("{}", c.far_wrong_place); }},
+      {"Right place, imprecise (within 3 m, error within 1 m / 10 deg; not false), online",
+       [](const Cell& c, bool) { return fmt::format("{}", c.imprecise); }},
       {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes)",
        [](const Cell& c, bool) { return percent_of(c.false_negatives, c.episodes); }},
       {"Loop-closure detection time (s, wall-clock)",
