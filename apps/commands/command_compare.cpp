@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/presets/shipped_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "eval/eval_options.hpp"
@@ -31,10 +32,32 @@ struct CompareArgs {
   bool force = false;
   bool no_plots = false;
   bool quiet = false;
+  std::string preset;
 };
 
-void run(const CompareArgs& args) {
+/// `--preset paper-rgbdslam`: the paper's RGBD-SLAM experiment ("RGBD SLAM performance", C Hall)
+/// on our c_hall twin: min_matches 50 and 70, 5 seeds, 3 fps (the robot's 30 fps make one run
+/// ten times longer; the route, pauses and scans are the same). Options given explicitly win.
+void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<wifislam::Scene>& scenes) {
   using namespace wifislam;
+  if (args.preset.empty()) return;
+  if (args.preset != "paper-rgbdslam") {
+    throw ParseError("--preset", args.preset, "unknown preset; known: paper-rgbdslam");
+  }
+  if (scenes.empty()) scenes.push_back(load_scene_yaml(cli::kCHallSceneYaml, "<c_hall twin>"));
+  if (args.sweeps.empty()) args.sweeps.push_back("min_matches=50,70");
+  if (app.count("--seeds") == 0) args.seeds = 5;
+  if (args.fps <= 0) args.fps = 3.0;
+}
+
+void run(CompareArgs args, const CLI::App& app) {
+  using namespace wifislam;
+  std::vector<Scene> scenes;
+  for (const std::string& path : args.scenes) scenes.push_back(load_scene_file(path));
+  apply_preset(args, app, scenes);
+  if (scenes.empty()) {
+    throw ParseError("compare", "scenes", "give scene files, or --preset paper-rgbdslam");
+  }
   study::ComparisonOptions options;
   options.frontend = args.frontend;
   options.settings = args.settings;
@@ -50,9 +73,6 @@ void run(const CompareArgs& args) {
       fmt::print(stderr, "compare: {}\n", line);
     };
   }
-  std::vector<Scene> scenes;
-  for (const std::string& path : args.scenes) scenes.push_back(load_scene_file(path));
-
   AtomicDirectory out(args.output, args.force);
   const study::ComparisonResult result = study::run_comparison(scenes, options, out.staging_path());
   out.commit();
@@ -74,9 +94,11 @@ WIFISLAM_COMMAND(compare, 65) {
       "settings and seeds, evaluate every run against exact ground truth, and print the paper's\n"
       "tables (rows: scenes; columns: setting x {Vanilla, WiFi}): trajectory error, false\n"
       "positive %, false negative %, loop-closure time, candidate comparisons, Wi-Fi overhead.");
-  app->add_option("scenes", args->scenes, "Scene files (YAML)")
-      ->required()
+  app->add_option("scenes", args->scenes, "Scene files (YAML); none with --preset")
       ->check(CLI::ExistingFile);
+  app->add_option("--preset", args->preset,
+                  "paper-rgbdslam: the paper's RGBD-SLAM experiment on the built-in c_hall twin\n"
+                  "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 45 min)");
   app->add_option("--frontend", args->frontend, "Front end (rgbdslam)")->capture_default_str();
   app->add_option("--sweep", args->sweeps,
                   "Swept SLAM option key=v1,v2,... (repeatable; every combination is run), e.g.\n"
@@ -104,5 +126,5 @@ WIFISLAM_COMMAND(compare, 65) {
       "with eval/ reports), comparison.md/.csv/.json. Written as <dir>.partial, renamed at the "
       "end.\n"
       "Timing columns are wall-clock; keep --jobs 1 when comparing them.");
-  app->callback([args] { run(*args); });
+  app->callback([args, app] { run(*args, *app); });
 }

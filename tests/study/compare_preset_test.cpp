@@ -1,0 +1,51 @@
+// `wifislam compare --preset paper-rgbdslam`: the paper's RGBD-SLAM experiment built in (the c_hall
+// twin, min_matches 50 and 70), with options given on the command line winning over the preset's.
+// Cut to 30 frames and one seed here; the full preset is a benchmark-length run.
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(ComparePreset, PaperRgbdslamRunsTheCHallTwinAtMinMatches50And70) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("wifislam_compare_preset_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string command = std::string(WIFISLAM_BINARY) +
+                              " compare --preset paper-rgbdslam --seeds 1 --max-frames 30 "
+                              "--no-plots -q -o " +
+                              (dir / "out").string() + " > " + (dir / "log.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / "log.txt");
+  const std::string md = read_text(dir / "out" / "comparison.md");
+  EXPECT_NE(md.find("| c_hall |"), std::string::npos) << md;
+  EXPECT_NE(md.find("min_matches=50 Vanilla"), std::string::npos) << md;
+  EXPECT_NE(md.find("min_matches=70 WiFi"), std::string::npos) << md;
+  EXPECT_NE(md.find("Bounded-module time, WiFi / Vanilla"), std::string::npos) << md;
+  // --seeds 1 won over the preset's 5: one dataset.
+  EXPECT_EQ(
+      std::distance(fs::directory_iterator(dir / "out" / "datasets"), fs::directory_iterator{}), 1);
+  fs::remove_all(dir);
+}
+
+TEST(ComparePreset, NoScenesAndNoPresetIsAnError) {
+  const std::string command = std::string(WIFISLAM_BINARY) + " compare -o /nonexistent/x 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 2);
+}
+
+}  // namespace
