@@ -29,7 +29,8 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"max_hamming_distance", &o.transform.matching.max_hamming_distance,
        "largest accepted descriptor distance"},
       {"min_matches", &o.transform.min_matches,
-       "minimum RANSAC inliers to accept a transformation"},
+       "minimum RANSAC inliers to accept a transformation (the paper's min_matches: agreeing "
+       "features; RGBDSLAMv2 also gates on raw matches, see visual_transformation.hpp)"},
       {"inlier_distance", &o.transform.inlier_distance,
        "RANSAC inlier threshold: reprojection error (px)"},
       {"ransac_iterations", &o.transform.ransac_iterations, "maximum RANSAC iterations"},

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
+#include "eval/run_divergence.hpp"
 #include "sim/generate/dataset_writer.hpp"
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
@@ -244,6 +245,18 @@ ComparisonResult run_comparison(const std::vector<Scene>& scenes, const Comparis
   for (std::thread& t : pool) t.join();
   if (first_error) std::rethrow_exception(first_error);
 
+  // Pairing: where each Wi-Fi run first departs from its vanilla twin.
+  for (const ComparisonCase& w : result.cases) {
+    if (!w.wifi) continue;
+    for (const ComparisonCase& v : result.cases) {
+      if (v.wifi || v.scene != w.scene || v.seed != w.seed || v.setting != w.setting) continue;
+      const std::optional<eval::RunDivergence> d =
+          eval::first_divergence(out_dir / v.run_dir, out_dir / w.run_dir);
+      result.divergences.push_back(
+          {w.scene, w.seed, w.setting, d ? d->keyframe : -1, d ? d->time_s : 0.0});
+    }
+  }
+
   write_file_atomic(out_dir / "comparison.md", result.markdown());
   write_file_atomic(out_dir / "comparison.csv", result.csv());
   write_file_atomic(out_dir / "comparison.json", result.to_json().dump(1) + "\n");
@@ -333,6 +346,18 @@ std::string ComparisonResult::markdown() const {
   ratio_table("Loop-closure detection time", &Cell::loop_closure_s);
   out += "\n";
   ratio_table("Bounded-module time", &Cell::bounded_module_s);
+  if (!divergences.empty()) {
+    out +=
+        "\n### First keyframe where the WiFi run differs from vanilla (same dataset and "
+        "random draws)\n\n| scene | seed | setting | keyframe | time (s) |\n| --- | ---: | --- | "
+        "---: | ---: |\n";
+    for (const PairDivergence& d : divergences) {
+      out += d.keyframe < 0
+                 ? fmt::format("| {} | {} | {} | none | - |\n", d.scene, d.seed, d.setting)
+                 : fmt::format("| {} | {} | {} | {} | {:.3f} |\n", d.scene, d.seed, d.setting,
+                               d.keyframe, d.time_s);
+    }
+  }
   return out;
 }
 
@@ -364,7 +389,19 @@ nlohmann::json ComparisonResult::to_json() const {
                     {"run_dir", c.run_dir.string()},
                     {"metrics", c.evaluation.flat_metrics()}});
   }
-  return {{"scenes", scenes}, {"settings", settings}, {"seeds", seeds}, {"runs", runs}};
+  nlohmann::json divergence = nlohmann::json::array();
+  for (const PairDivergence& d : divergences) {
+    divergence.push_back({{"scene", d.scene},
+                          {"seed", d.seed},
+                          {"setting", d.setting},
+                          {"first_divergent_keyframe", d.keyframe},
+                          {"time_s", d.time_s}});
+  }
+  return {{"scenes", scenes},
+          {"settings", settings},
+          {"seeds", seeds},
+          {"runs", runs},
+          {"divergence", divergence}};
 }
 
 }  // namespace wifislam::study

@@ -66,11 +66,22 @@ struct ComparisonCase {
   eval::RunEvaluation evaluation;
 };
 
+/// Where the Wi-Fi run of one scene, seed and setting first differs from its vanilla twin
+/// (eval/run_divergence.hpp); keyframe -1 = nowhere.
+struct PairDivergence {
+  std::string scene;
+  std::uint64_t seed = 0;
+  std::string setting;
+  std::int64_t keyframe = -1;
+  double time_s = 0.0;
+};
+
 struct ComparisonResult {
   std::vector<std::string> scenes;    // row order
   std::vector<std::string> settings;  // column order
   int seeds = 1;
   std::vector<ComparisonCase> cases;
+  std::vector<PairDivergence> divergences;
 
   /// The paper-style tables (one per metric) in Markdown; metrics averaged over seeds, counts
   /// summed.

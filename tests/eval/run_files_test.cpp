@@ -2,14 +2,17 @@
 // the line and the column/key.
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <unistd.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
 #include "eval/eval_options.hpp"
 #include "eval/loop_closure_csv.hpp"
+#include "eval/run_divergence.hpp"
 #include "eval/timing_table.hpp"
 #include "eval/wifi_clusters_csv.hpp"
 
@@ -142,6 +145,39 @@ TEST(TimingTable, ReadsPerRoleWorkAndLocatesAMissingField) {
                                   "time_s": 0.1}}})");
   EXPECT_NE(error_of([&] { read_timing_json(missing); }).find("roles.neighbour.accepted"),
             std::string::npos);
+}
+
+/// A run folder with three keyframes (1, 2, 3 s) and the given edges ("from to type").
+fs::path write_run(const std::string& name, const std::vector<std::string>& edges) {
+  std::string graph = R"({"edges": [)";
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    std::istringstream in(edges[i]);
+    int from = 0, to = 0;
+    std::string type;
+    in >> from >> to >> type;
+    graph +=
+        (i ? "," : "") + fmt::format(R"({{"from": {}, "to": {}, "type": "{}", "inliers": 30,)"
+                                     R"( "from_to": {{"t": [0, 0, 1], "q_xyzw": [0, 0, 0, 1]}}}})",
+                                     from, to, type);
+  }
+  graph += "]}";
+  const fs::path dir = write_temp(name + "_keyframes.txt", "").parent_path() / name;
+  fs::create_directories(dir);
+  std::ofstream(dir / "keyframes.txt") << "1.0 0 0 0 0 0 0 1\n2.0 0 0 1 0 0 0 1\n"
+                                          "3.0 0 0 2 0 0 0 1\n";
+  std::ofstream(dir / "graph.json") << graph;
+  return dir;
+}
+
+TEST(RunDivergence, FindsTheFirstKeyframeWhoseEdgesDiffer) {
+  const fs::path a = write_run("div_a", {"0 1 visual", "1 2 visual", "0 2 loop"});
+  const fs::path same = write_run("div_same", {"0 2 loop", "0 1 visual", "1 2 visual"});
+  const fs::path other = write_run("div_other", {"0 1 visual", "1 2 visual"});
+  EXPECT_FALSE(first_divergence(a, same).has_value());  // edge order does not matter
+  const auto d = first_divergence(a, other);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_EQ(d->keyframe, 2);
+  EXPECT_DOUBLE_EQ(d->time_s, 3.0);
 }
 
 TEST(EvalOptions, SetAndValidate) {

@@ -69,6 +69,11 @@ TEST(WifiBoundingClaim, WifiBoundingRemovesFalseLoopClosuresAndLowersTrajectoryE
       << md;
   EXPECT_NE(md.find("| twin_corridors |"), std::string::npos);
   EXPECT_NE(md.find("False positive loop closures"), std::string::npos);
+  // Paired runs: each Wi-Fi run is compared with its vanilla twin, and they part ways somewhere
+  // after the first keyframe (before the first scan both runs draw the same).
+  ASSERT_EQ(result.divergences.size(), 2u);
+  for (const PairDivergence& d : result.divergences) EXPECT_GT(d.keyframe, 0) << d.seed;
+  EXPECT_NE(md.find("First keyframe where the WiFi run differs"), std::string::npos);
   const std::string csv = read_text(out / "comparison.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header + 4 runs
   for (const ComparisonCase& c : result.cases) {
