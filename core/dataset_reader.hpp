@@ -8,9 +8,10 @@
 //
 // Opening checks everything but the image contents: the manifest's SHA-256 of every text file
 // (unless verification is off), each list file line by line, and that every listed PNG exists.
-// Errors name the file and line. Images are then loaded lazily, one frame per next(), and each
-// PNG's hash is checked against images.sha256 as it is read, so memory stays flat whatever the
-// dataset's length and no byte is read twice.
+// Errors name the file and line. Images are then loaded lazily, a few frames ahead of next() on
+// other threads (DatasetReaderOptions::prefetch_frames), and each PNG's hash is checked against
+// images.sha256 as it is read, so memory stays flat whatever the dataset's length and no byte is
+// read twice.
 //
 // Ground truth is not part of the stream (SLAM never sees it): read_ground_truth() reads it.
 
@@ -35,6 +36,10 @@ struct DatasetReaderOptions {
   /// Decode images in next(). Off: frames carry their paths and times only (quick passes over
   /// Wi-Fi and odometry).
   bool load_images = true;
+  /// Frames read, checked and decoded ahead on other threads while the current one is used
+  /// (0 = decode in next(), on the caller's thread). The frames, their order and any error are
+  /// the same whatever the value; only the wall time changes.
+  int prefetch_frames = 4;
 };
 
 class DatasetReader final : public SensorStream {
@@ -65,6 +70,8 @@ class DatasetReader final : public SensorStream {
   struct Cursors;
   void validate();
   void open_cursors();
+  /// Tops up the queue of upcoming frames, starting their decodes.
+  void fill_frame_queue();
 
   std::filesystem::path folder_;
   DatasetReaderOptions options_;

@@ -220,6 +220,41 @@ TEST(DatasetReader, ChangedImageIsCaughtWhenItIsRead) {
   EXPECT_EQ(open_error(dir, {.verify_checksums = false}), "no error");
 }
 
+// Decoding ahead on other threads changes the wall time only: the same events with the same
+// pixels, and an error still surfaces at the frame it belongs to, after every earlier frame.
+TEST(DatasetReader, PrefetchingGivesTheSameFramesAndTheSameErrorAtTheSameFrame) {
+  const auto dir = test::fresh_folder("prefetch");
+  write_ours(dir);
+  for (int prefetch : {1, 4, 16}) {
+    DatasetReader inline_reader(dir, {.prefetch_frames = 0});
+    DatasetReader ahead(dir, {.prefetch_frames = prefetch});
+    const auto a = read_all(inline_reader);
+    const auto b = read_all(ahead);
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a[i].index(), b[i].index()) << i;
+      if (const auto* fa = std::get_if<RgbdFrame>(&a[i])) {
+        const auto& fb = std::get<RgbdFrame>(b[i]);
+        EXPECT_EQ(fa->index, fb.index);
+        EXPECT_EQ(cv::norm(fa->rgb, fb.rgb, cv::NORM_INF), 0.0);
+        EXPECT_EQ(cv::norm(fa->depth_m, fb.depth_m, cv::NORM_INF), 0.0);
+      }
+    }
+  }
+  // Frame 3's depth image changed: frames 0..2 come out, then the error naming the file.
+  cv::imwrite((dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(3))).string(),
+              cv::Mat(24, 32, CV_16UC1, cv::Scalar(1234)));
+  DatasetReader reader(dir, {.prefetch_frames = 4});
+  int frames = 0;
+  try {
+    while (auto e = reader.next()) frames += std::holds_alternative<RgbdFrame>(*e) ? 1 : 0;
+    ADD_FAILURE() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("depth/0.300000.png"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(frames, 3);
+}
+
 TEST(DatasetReader, CorruptFilesAreErrorsWithFileAndLine) {
   const auto dir = test::fresh_folder("corrupt");
   write_ours(dir);
