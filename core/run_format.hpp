@@ -23,7 +23,9 @@ namespace wifislam::run_folder {
 
 inline constexpr const char* kFormatName = "wifislam-run";
 /// 2: run.json names the front end and the Wi-Fi switch separately and timing.json has "roles".
-inline constexpr int kFormatVersion = 2;
+/// 3: graph.json edges carry "pruned" and "weight"; run.json has "pruning" (one entry per stage:
+///    threshold_chi2, pruned, discounted).
+inline constexpr int kFormatVersion = 3;
 
 inline constexpr const char* kTrajectory = "trajectory.txt";
 inline constexpr const char* kKeyframes = "keyframes.txt";
@@ -38,6 +40,7 @@ namespace run_key {
 inline constexpr const char* kFormat = "format";
 inline constexpr const char* kFormatVersion = "format_version";
 inline constexpr const char* kFrontend = "frontend";  // "rgbdslam", without a Wi-Fi suffix
+inline constexpr const char* kPruning = "pruning";    // format 3: the after-run pruning stages
 inline constexpr const char* kWifi = "wifi";          // true when the Wi-Fi module ran
 }  // namespace run_key
 
@@ -104,6 +107,11 @@ inline constexpr const char* kAcceptedTransformations = "accepted_transformation
 inline constexpr const char* kLoopClosures = "loop_closures";
 inline constexpr const char* kRejectedHypotheses = "rejected_hypotheses";
 inline constexpr const char* kOptimisations = "optimisations";
+/// Optimisations whose result Ceres called unusable (the poses before it were kept).
+inline constexpr const char* kOptimisationFailures = "optimisation_failures";
+/// After-run pruning: edges removed, and edges discounted because removal would split the graph.
+inline constexpr const char* kPrunedEdges = "pruned_edges";
+inline constexpr const char* kDiscountedEdges = "discounted_edges";
 inline constexpr const char* kTrackingFailures = "tracking_failures";
 inline constexpr const char* kWifiSimilarityComparisons = "wifi_similarity_comparisons";
 inline constexpr const char* kWifiUnsignedKeyframes = "wifi_keyframes_without_signature";

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "slam/optimize/edge_pruning.hpp"
 
 namespace wifislam::slam {
 
@@ -37,6 +38,8 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"ransac_confidence", &o.transform.ransac_confidence, "RANSAC stopping confidence (< 1)"},
       {"min_reprojection_sigma_px", &o.transform.min_reprojection_sigma_px,
        "floor of the reprojection noise in the information matrix (px)"},
+      {"information_scale", &o.transform.information_scale,
+       "multiplies visual edges' information so correct edges' chi^2 follows chi^2(6) (measured)"},
       {"depth_noise_coeff_per_m", &o.transform.depth_noise_coeff_per_m,
        "depth noise sigma_z = coeff z^2 in the information matrix (1/m)"},
       {"depth_consistency_sigmas", &o.transform.depth_consistency_sigmas,
@@ -69,11 +72,16 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"wifi_long_term_candidates", &o.rgbdslam.wifi_long_term_candidates,
        "rgbdslam with Wi-Fi: long-term candidates from similar clusters, best signature first "
        "(-1 = min_sampled_candidates, 0 = all)"},
+      {"robust_kernel", &o.rgbdslam.robust_kernel,
+       "rgbdslam: kernel on every edge: none, huber (RGBDSLAMv2), cauchy"},
+      {"robust_kernel_chi2", &o.rgbdslam.robust_kernel_chi2,
+       "rgbdslam: chi^2 where the kernel leaves the quadratic (4 x the last pruning stage)"},
+      {"prune_chi2", &o.rgbdslam.prune_chi2,
+       "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
+       "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge"},
       {"optimizer_iterations", &o.graph.max_iterations, "iterations of the final optimisation"},
       {"optimizer_incremental_iterations", &o.graph.incremental_max_iterations,
        "iterations after each loop closure"},
-      {"robust_loss", &o.graph.robust_loss, "loss on loop edges: none, huber, cauchy"},
-      {"robust_loss_scale", &o.graph.robust_loss_scale, "robust loss scale (whitened units)"},
       {"optimizer_threads", &o.graph.threads, "Ceres residual evaluation threads"},
   };
 }
@@ -151,6 +159,8 @@ void validate(const SlamOptions& o) {
   require(o.transform.ransac_confidence > 0 && o.transform.ransac_confidence < 1,
           "ransac_confidence must be in (0, 1)");
   require(o.transform.min_reprojection_sigma_px > 0, "min_reprojection_sigma_px must be > 0");
+  require(o.transform.information_scale > 0 && std::isfinite(o.transform.information_scale),
+          "information_scale must be a positive number");
   require(o.transform.depth_noise_coeff_per_m >= 0, "depth_noise_coeff_per_m must be >= 0");
   require(o.transform.depth_consistency_sigmas >= 0, "depth_consistency_sigmas must be >= 0");
   require(o.tracking.keyframe_max_translation_m > 0, "keyframe_max_translation_m must be > 0");
@@ -166,12 +176,14 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.geodesic_depth >= 0, "geodesic_depth must be >= 0");
   require(o.rgbdslam.min_sampled_candidates >= 0, "min_sampled_candidates must be >= 0");
   require(o.rgbdslam.wifi_long_term_candidates >= -1, "wifi_long_term_candidates must be >= -1");
+  require(o.rgbdslam.robust_kernel == "none" || o.rgbdslam.robust_kernel == "huber" ||
+              o.rgbdslam.robust_kernel == "cauchy",
+          "robust_kernel must be none, huber or cauchy, got '" + o.rgbdslam.robust_kernel + "'");
+  require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
+          "robust_kernel_chi2 must be a positive number");
+  parse_chi2_thresholds("prune_chi2", o.rgbdslam.prune_chi2);  // throws naming the entry
   require(o.graph.max_iterations >= 1 && o.graph.incremental_max_iterations >= 0,
           "optimizer iterations must be >= 1 (final) and >= 0 (incremental)");
-  require(o.graph.robust_loss == "none" || o.graph.robust_loss == "huber" ||
-              o.graph.robust_loss == "cauchy",
-          "robust_loss must be none, huber or cauchy");
-  require(o.graph.robust_loss_scale > 0, "robust_loss_scale must be > 0");
   require(o.graph.threads >= 1, "optimizer_threads must be >= 1");
   require(o.wifi.similarity >= -1 && o.wifi.similarity <= 1, "wifi_similarity must be in [-1, 1]");
   require(o.wifi.pause_gap_s > 0, "wifi_pause_gap_s must be > 0");

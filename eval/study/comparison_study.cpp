@@ -1,6 +1,8 @@
 #include "eval/study/comparison_study.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <map>
 #include <mutex>
 #include <thread>
@@ -81,12 +83,13 @@ std::string csv_field(const nlohmann::ordered_json& value) {
 /// Metrics of one table cell: the cases of one scene, setting and variant (one per seed).
 struct Cell {
   int runs = 0;
-  double ate_rmse_m = 0, loop_closure_s = 0, wifi_overhead_s = 0, total_s = 0;
+  std::vector<double> ate_rmse_m;  // one per seed: mean and spread
+  double loop_closure_s = 0, wifi_overhead_s = 0, total_s = 0;
   /// The paper's time figure: the module bounding acts on (candidate selection, Wi-Fi
   /// clustering included, and the long-term candidates' verifications) plus optimisation.
   double bounded_module_s = 0;
-  std::int64_t detected = 0, false_positives = 0, episodes = 0, false_negatives = 0;
-  std::int64_t far_wrong_place = 0, imprecise = 0;
+  std::int64_t episodes = 0;
+  eval::LoopClosureCounts online, pruned;  // summed over seeds (percentages not used)
   std::int64_t comparisons = 0, long_term_comparisons = 0, keyframes = 0;
 
   void add(const eval::RunEvaluation& e) {
@@ -95,22 +98,41 @@ struct Cell {
     const eval::RoleTiming lt =
         long_term == e.timing.roles.end() ? eval::RoleTiming{} : long_term->second;
     long_term_comparisons += lt.comparisons;
-    const eval::LoopClosureScore& score = e.loop_closure_score;
-    far_wrong_place += score.online.far_wrong_place;
-    imprecise += score.online.right_place_imprecise;
+    for (auto [sum, one] : {std::pair{&online, &e.loop_closure_score.online},
+                            std::pair{&pruned, &e.loop_closure_score.after_pruning}}) {
+      sum->scored += one->scored;
+      sum->correct += one->correct;
+      sum->right_place_imprecise += one->right_place_imprecise;
+      sum->wrong_place += one->wrong_place;
+      sum->far_wrong_place += one->far_wrong_place;
+      sum->false_negatives += one->false_negatives;
+    }
     bounded_module_s += e.timing.candidate_selection_s + lt.time_s + e.optimisation_s;
-    ate_rmse_m += e.ate_rmse_m;
+    ate_rmse_m.push_back(e.ate_rmse_m);
     loop_closure_s += e.loop_closure_detection_s;
     wifi_overhead_s += e.wifi_overhead_s;
     total_s += e.total_s;
-    detected += e.loop_closures_detected;
-    false_positives += e.false_positives;
     episodes += e.revisit_episodes;
-    false_negatives += e.false_negatives;
     comparisons += e.candidate_comparisons;
     keyframes += e.keyframes;
   }
   double mean(double sum) const { return runs > 0 ? sum / runs : 0.0; }
+  /// "mean" for one run, "mean +- sd (min-max)" over seeds.
+  std::string ate_text() const {
+    if (ate_rmse_m.empty()) return "-";
+    double sum = 0, lo = ate_rmse_m.front(), hi = lo;
+    for (double x : ate_rmse_m) {
+      sum += x;
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    const double m = sum / static_cast<double>(ate_rmse_m.size());
+    if (ate_rmse_m.size() == 1) return fmt::format("{:.3f}", m);
+    double ss = 0;
+    for (double x : ate_rmse_m) ss += (x - m) * (x - m);
+    const double sd = std::sqrt(ss / static_cast<double>(ate_rmse_m.size() - 1));
+    return fmt::format("{:.2f} &plusmn; {:.2f} ({:.2f}-{:.2f})", m, sd, lo, hi);
+  }
 };
 
 std::string percent_of(std::int64_t part, std::int64_t whole) {
@@ -273,16 +295,28 @@ std::string ComparisonResult::markdown() const {
     std::function<std::string(const Cell&, bool wifi)> cell;
   };
   const std::vector<Metric> metrics = {
-      {"Trajectory error: ATE RMSE (m)",
-       [](const Cell& c, bool) { return fmt::format("{:.3f}", c.mean(c.ate_rmse_m)); }},
+      {"Trajectory error: ATE RMSE (m), after the back end's pruning",
+       [](const Cell& c, bool) { return c.ate_text(); }},
       {"False positive loop closures (wrong place): % of scored edges, online (false/scored)",
-       [](const Cell& c, bool) { return percent_of(c.false_positives, c.detected); }},
-      {"Wrong-place closures between far places (true positions > 12 m apart), online",
-       [](const Cell& c, bool) { return fmt::format("{}", c.far_wrong_place); }},
-      {"Right place, imprecise (within 3 m, error within 1 m / 10 deg; not false), online",
-       [](const Cell& c, bool) { return fmt::format("{}", c.imprecise); }},
-      {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes)",
-       [](const Cell& c, bool) { return percent_of(c.false_negatives, c.episodes); }},
+       [](const Cell& c, bool) { return percent_of(c.online.wrong_place, c.online.scored); }},
+      {"... after pruning (edges the back end kept)",
+       [](const Cell& c, bool) { return percent_of(c.pruned.wrong_place, c.pruned.scored); }},
+      {"Wrong-place closures between far places (true positions > 12 m apart): online / after "
+       "pruning",
+       [](const Cell& c, bool) {
+         return fmt::format("{} / {}", c.online.far_wrong_place, c.pruned.far_wrong_place);
+       }},
+      {"Right place, imprecise (within 3 m, error within 1 m / 10 deg; not false): online / after "
+       "pruning",
+       [](const Cell& c, bool) {
+         return fmt::format("{} / {}", c.online.right_place_imprecise,
+                            c.pruned.right_place_imprecise);
+       }},
+      {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes), "
+       "online",
+       [](const Cell& c, bool) { return percent_of(c.online.false_negatives, c.episodes); }},
+      {"... after pruning",
+       [](const Cell& c, bool) { return percent_of(c.pruned.false_negatives, c.episodes); }},
       {"Loop-closure detection time (s, wall-clock)",
        [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.loop_closure_s)); }},
       {"Candidate comparisons (visual transformations tried for loop closure)",
@@ -301,8 +335,10 @@ std::string ComparisonResult::markdown() const {
 
   std::string out;
   if (seeds > 1) {
-    out += fmt::format("Each cell: {} seeds; times and ATE averaged, counts summed over seeds.\n\n",
-                       seeds);
+    out += fmt::format(
+        "Each cell: {} seeds; ATE as mean &plusmn; standard deviation (min-max), times and "
+        "comparisons averaged, closures summed over seeds.\n\n",
+        seeds);
   }
   for (const Metric& metric : metrics) {
     out += "### " + metric.title + "\n\n| scene |";

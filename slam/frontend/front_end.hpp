@@ -25,9 +25,18 @@
 #include "core/wifi_scan.hpp"
 #include "slam/frontend/candidate.hpp"
 #include "slam/frontend/edge_acceptance.hpp"
+#include "slam/optimize/edge_pruning.hpp"
+#include "slam/optimize/robust_kernel.hpp"
 #include "slam/wifi/wifi_module.hpp"
 
 namespace wifislam::slam {
+
+/// How a family's back end copes with wrong edges: a robust kernel in every optimisation and a
+/// pruning schedule at the end of the run. The default is plain least squares, no pruning.
+struct GraphRobustness {
+  RobustKernel kernel;
+  PruningSchedule pruning;
+};
 
 class FrontEnd {
  public:
@@ -67,6 +76,8 @@ class FrontEnd {
                             const LoopRule& rule) const;
 
   const EdgeAcceptance& acceptance() const { return *acceptance_; }
+  /// The family's robust kernel and after-run pruning (the shared optimiser applies them).
+  virtual GraphRobustness graph_robustness() const { return {}; }
 
   /// Called once per new keyframe after its hypotheses were accepted or not. Runs Wi-Fi cluster
   /// management for it (unless the front end assigns its own places), then after_verification().

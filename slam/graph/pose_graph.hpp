@@ -39,6 +39,12 @@ struct GraphEdge {
   /// Information of the residual [p_est - p_meas; 2 vec(q_meas q_est^-1)] (translation first).
   Information6 information = Information6::Identity();
   int inliers = 0;  // visual and loop edges; 0 otherwise
+  /// Multiplies `information` in the optimisation: 1 as measured; below 1 when the after-run
+  /// pruning discounted an edge it could not remove without disconnecting the graph.
+  double weight = 1.0;
+  /// Removed by the after-run pruning: kept in the graph (and in graph.json) for scoring, but no
+  /// longer optimised.
+  bool pruned = false;
 };
 
 class PoseGraph {
@@ -54,8 +60,12 @@ class PoseGraph {
   void set_pose(KeyframeId id, const Pose& pose) {
     nodes_.at(static_cast<std::size_t>(id)).pose = pose;
   }
+  /// After-run pruning (slam/optimize/edge_pruning.hpp): the edge stays listed, out of the
+  /// optimisation. Adjacency is unchanged: it describes the graph as it grew online.
+  void prune_edge(std::size_t index) { edges_.at(index).pruned = true; }
+  void set_edge_weight(std::size_t index, double weight) { edges_.at(index).weight = weight; }
   bool has_edge(KeyframeId a, KeyframeId b) const;
-  /// Keyframes joined to `id` by an edge, ascending.
+  /// Keyframes joined to `id` by an edge (pruned or not), ascending.
   const std::vector<KeyframeId>& adjacent(KeyframeId id) const {
     return adjacency_.at(static_cast<std::size_t>(id));
   }

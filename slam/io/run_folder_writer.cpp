@@ -34,7 +34,9 @@ nlohmann::json graph_to_json(const PoseGraph& graph) {
                      {"type", to_string(e.type)},
                      {"inliers", e.inliers},
                      {"from_to", pose_json(e.from_to)},
-                     {"information", info}});
+                     {"information", info},
+                     {run_folder::graph_key::kPruned, e.pruned},
+                     {run_folder::graph_key::kWeight, e.weight}});
   }
   return {{"pose_convention", "camera-to-map; edge from_to = pose of 'to' in the frame of 'from'"},
           {"information_convention",
@@ -84,6 +86,18 @@ void write_run_folder(const std::filesystem::path& run_dir, const SlamSystem& sy
   run["options"] = to_json(system.options());
   run["frontend_summary"] = system.front_end().summary();
   run["edge_acceptance"] = system.front_end().acceptance().name();
+  nlohmann::json pruning = nlohmann::json::array();
+  for (const PruningStage& stage : system.pruning()) {
+    pruning.push_back({{"threshold_chi2", stage.threshold_chi2},
+                       {"pruned", stage.pruned},
+                       {"discounted", stage.discounted},
+                       {"reoptimised", stage.optimisation.ran},
+                       {"usable", stage.optimisation.usable}});
+  }
+  run[run_folder::run_key::kPruning] = std::move(pruning);
+  run["final_optimisation"] = {{"usable", system.final_optimisation().usable},
+                               {"iterations", system.final_optimisation().iterations},
+                               {"termination", system.final_optimisation().termination}};
   run["stream"] = {{"has_wifi", system.stream_info().has_wifi},
                    {"has_odometry", system.stream_info().has_odometry},
                    {"intrinsics",

@@ -1,6 +1,7 @@
 #include "slam/optimize/pose_graph_optimizer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <vector>
 
@@ -27,20 +28,40 @@ Eigen::Matrix<double, 6, 6> information_square_root(const Information6& informat
 
 namespace {
 
-ceres::LossFunction* make_loss(const PoseGraphOptions& options) {
-  if (options.robust_loss == "none") return nullptr;
-  if (options.robust_loss == "huber") return new ceres::HuberLoss(options.robust_loss_scale);
-  if (options.robust_loss == "cauchy") return new ceres::CauchyLoss(options.robust_loss_scale);
-  throw InvalidInputError("robust_loss must be none, huber or cauchy, got '" + options.robust_loss +
-                          "'");
+// Ceres' losses act on s = r^T Omega r (chi^2) with a parameter a such that rho(s) = s up to
+// s = a^2 (Huber), so a = sqrt(width_chi2).
+ceres::LossFunction* make_loss(const RobustKernel& kernel) {
+  const double a = std::sqrt(kernel.width_chi2);
+  switch (kernel.kind) {
+    case RobustKernel::Kind::kNone:
+      return nullptr;
+    case RobustKernel::Kind::kHuber:
+      return new ceres::HuberLoss(a);
+    case RobustKernel::Kind::kCauchy:
+      return new ceres::CauchyLoss(a);
+  }
+  return nullptr;
 }
 
 }  // namespace
 
 OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions& options,
-                                        int max_iterations, KeyframeId fixed_node) {
+                                        int max_iterations, const RobustKernel& kernel,
+                                        KeyframeId fixed_node) {
   OptimisationSummary summary;
-  if (graph.node_count() < 2 || graph.edges().empty()) return summary;
+  if (!(kernel.width_chi2 > 0.0) || !std::isfinite(kernel.width_chi2)) {
+    throw InvalidInputError("robust kernel width must be a positive chi^2");
+  }
+  // Nodes with no edge left (pruned ones do not count) have no residual: they stay out.
+  std::vector<char> in_problem(graph.node_count(), 0);
+  bool any_edge = false;
+  for (const GraphEdge& edge : graph.edges()) {
+    if (edge.pruned) continue;
+    in_problem[static_cast<std::size_t>(edge.from)] = 1;
+    in_problem[static_cast<std::size_t>(edge.to)] = 1;
+    any_edge = true;
+  }
+  if (graph.node_count() < 2 || !any_edge) return summary;
 
   struct State {
     Eigen::Vector3d p;
@@ -52,28 +73,30 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
         node.pose.translation(), Eigen::Quaterniond(node.pose.linear()).normalized()};
   }
 
-  // The loss is shared by all loop edges, so the problem must not delete it per block.
+  // The loss is shared by the edges it applies to, so the problem must not delete it per block.
   ceres::Problem::Options problem_options;
   problem_options.loss_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
   ceres::Problem problem(problem_options);
-  std::unique_ptr<ceres::LossFunction> loss(make_loss(options));
+  std::unique_ptr<ceres::LossFunction> loss(make_loss(kernel));
   // One manifold object for all quaternions (the problem deletes it once).
   ceres::Manifold* quaternion_manifold = new ceres::EigenQuaternionManifold;
   bool manifold_used = false;
   for (std::size_t i = 0; i < states.size(); ++i) {
-    // Nodes without edges have no residual: they are left out of the problem.
-    if (graph.adjacent(static_cast<KeyframeId>(i)).empty()) continue;
+    if (!in_problem[i]) continue;
     problem.AddParameterBlock(states[i].p.data(), 3);
     problem.AddParameterBlock(states[i].q.coeffs().data(), 4, quaternion_manifold);
     manifold_used = true;
   }
   if (!manifold_used) delete quaternion_manifold;
   for (const GraphEdge& edge : graph.edges()) {
+    if (edge.pruned) continue;
     State& a = states[static_cast<std::size_t>(edge.from)];
     State& b = states[static_cast<std::size_t>(edge.to)];
-    ceres::LossFunction* edge_loss = edge.type == EdgeType::kLoop ? loss.get() : nullptr;
+    ceres::LossFunction* edge_loss =
+        kernel.every_edge || edge.type == EdgeType::kLoop ? loss.get() : nullptr;
     problem.AddResidualBlock(
-        RelativePoseError::create(edge.from_to, information_square_root(edge.information)),
+        RelativePoseError::create(
+            edge.from_to, std::sqrt(edge.weight) * information_square_root(edge.information)),
         edge_loss, a.p.data(), a.q.coeffs().data(), b.p.data(), b.q.coeffs().data());
   }
   State& fixed = states.at(static_cast<std::size_t>(fixed_node));
@@ -91,11 +114,27 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
   ceres::Solver::Summary ceres_summary;
   ceres::Solve(solver_options, &problem, &ceres_summary);
 
-  for (const GraphNode& node : graph.nodes()) {
-    const State& s = states[static_cast<std::size_t>(node.id)];
-    graph.set_pose(node.id, pose_from_translation_quaternion(s.p, s.q));
-  }
   summary.ran = true;
+  summary.usable = ceres_summary.IsSolutionUsable();
+  summary.termination =
+      std::string(ceres::TerminationTypeToString(ceres_summary.termination_type)) + ": " +
+      ceres_summary.message;
+  if (summary.usable) {
+    for (const GraphNode& node : graph.nodes()) {
+      const State& s = states[static_cast<std::size_t>(node.id)];
+      if (!s.p.allFinite() || !s.q.coeffs().allFinite()) {
+        summary.usable = false;  // defensive: never write a non-finite pose
+        summary.termination += " (non-finite pose)";
+        break;
+      }
+    }
+  }
+  if (summary.usable) {
+    for (const GraphNode& node : graph.nodes()) {
+      const State& s = states[static_cast<std::size_t>(node.id)];
+      graph.set_pose(node.id, pose_from_translation_quaternion(s.p, s.q));
+    }
+  }
   summary.iterations = static_cast<int>(ceres_summary.iterations.size());
   summary.initial_cost = ceres_summary.initial_cost;
   summary.final_cost = ceres_summary.final_cost;

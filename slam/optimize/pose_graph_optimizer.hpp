@@ -1,10 +1,13 @@
 #pragma once
 // Pose-graph optimisation with Ceres: positions in R^3, orientations on the quaternion manifold,
-// one relative-pose residual per edge, the first keyframe held fixed (gauge).
+// one relative-pose residual per edge (information x the edge's weight; pruned edges left out),
+// an optional robust kernel, the first keyframe held fixed (gauge). Poses are written back only
+// when Ceres reports a usable solution.
 
 #include <string>
 
 #include "slam/graph/pose_graph.hpp"
+#include "slam/optimize/robust_kernel.hpp"
 
 namespace wifislam::slam {
 
@@ -14,25 +17,26 @@ struct PoseGraphOptions {
   /// Iterations of the incremental optimisation after a keyframe brought loop closures; starts
   /// from the current estimate, so few are needed. Fewer: faster, less converged in between.
   int incremental_max_iterations = 10;
-  /// Robust loss on loop-closure edges: "none", "huber" or "cauchy". A robust loss limits the
-  /// damage of a false loop closure, but the vanilla systems the paper compares use none.
-  std::string robust_loss = "none";
-  /// Scale of the robust loss, in units of the whitened residual (standard deviations).
-  double robust_loss_scale = 3.0;
   /// Ceres threads for residual evaluation (the factorisation is single-threaded anyway).
   int threads = 1;
 };
 
 struct OptimisationSummary {
   bool ran = false;
+  /// Ceres' verdict (Solver::Summary::IsSolutionUsable). When false the graph's poses were left
+  /// as they were before the call.
+  bool usable = true;
+  std::string termination;  // Ceres' termination type and message
   int iterations = 0;
   double initial_cost = 0.0, final_cost = 0.0;
   double seconds = 0.0;
   std::string brief;  // Ceres' BriefReport()
 };
 
-/// Optimises the poses of `graph` in place, with node `fixed_node` held constant.
+/// Optimises the poses of `graph` in place, with node `fixed_node` held constant. The robust
+/// kernel is the front end's choice (FrontEnd::graph_robustness).
 OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions& options,
-                                        int max_iterations, KeyframeId fixed_node = 0);
+                                        int max_iterations, const RobustKernel& kernel = {},
+                                        KeyframeId fixed_node = 0);
 
 }  // namespace wifislam::slam

@@ -182,8 +182,9 @@ VisualTransformation estimate_visual_transformation(const FrameFeatures& a, cons
   // Per-axis residual variance: the squared 2-D residual has two components.
   const double sigma_px =
       std::max(options.min_reprojection_sigma_px, std::sqrt(sum_sq / (2.0 * result.inliers)));
-  result.information = pnp_information(inlier_points_b, result.a_from_b, intrinsics, sigma_px,
-                                       options.depth_noise_coeff_per_m);
+  result.information =
+      options.information_scale * pnp_information(inlier_points_b, result.a_from_b, intrinsics,
+                                                  sigma_px, options.depth_noise_coeff_per_m);
   result.accepted = true;
   instrumentation.count(counter::kAcceptedTransformations);
   return result;

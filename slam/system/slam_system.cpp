@@ -33,6 +33,7 @@ SlamSystem::SlamSystem(const SlamOptions& options, const StreamInfo& stream)
   context.stream_has_wifi = stream_.has_wifi;
   context.stream_has_odometry = stream_.has_odometry;
   front_end_ = make_front_end(context);
+  robustness_ = front_end_->graph_robustness();
 }
 
 SlamSystem::~SlamSystem() = default;
@@ -269,15 +270,28 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
 
   if (loop_found && options_.graph.incremental_max_iterations > 0) {
     ScopedTimer timer(instrumentation_, module::kOptimisation);
-    optimise_pose_graph(graph_, options_.graph, options_.graph.incremental_max_iterations);
-    instrumentation_.count(counter::kOptimisations);
+    optimise(options_.graph.incremental_max_iterations);
   }
+}
+
+OptimisationSummary SlamSystem::optimise(int max_iterations) {
+  OptimisationSummary summary =
+      optimise_pose_graph(graph_, options_.graph, max_iterations, robustness_.kernel);
+  if (summary.ran) instrumentation_.count(counter::kOptimisations);
+  if (!summary.usable) instrumentation_.count(counter::kOptimisationFailures);
+  return summary;
 }
 
 void SlamSystem::finish() {
   ScopedTimer timer(instrumentation_, module::kOptimisation);
-  final_optimisation_ = optimise_pose_graph(graph_, options_.graph, options_.graph.max_iterations);
-  if (final_optimisation_.ran) instrumentation_.count(counter::kOptimisations);
+  final_optimisation_ = optimise(options_.graph.max_iterations);
+  pruning_ = prune_inconsistent_edges(graph_, robustness_.pruning, [&](PoseGraph&) {
+    return optimise(options_.graph.max_iterations);
+  });
+  for (const PruningStage& stage : pruning_) {
+    instrumentation_.count(counter::kPrunedEdges, stage.pruned);
+    instrumentation_.count(counter::kDiscountedEdges, stage.discounted);
+  }
 }
 
 Trajectory SlamSystem::trajectory() const {

@@ -64,7 +64,7 @@ class SlamSystem {
   /// Feeds one event of the stream (frames, Wi-Fi scans, odometry in time order).
   void process(const SensorEvent& event);
   void process_frame(const RgbdFrame& frame);
-  /// Full optimisation of the graph; call once at the end.
+  /// Full optimisation of the graph, then the front end's after-run pruning; call once at the end.
   void finish();
 
   const SlamOptions& options() const { return options_; }
@@ -76,6 +76,8 @@ class SlamSystem {
   const FrontEnd& front_end() const { return *front_end_; }
   const LoopRule& loop_rule() const { return loop_rule_; }
   const OptimisationSummary& final_optimisation() const { return final_optimisation_; }
+  /// The after-run pruning stages finish() ran (the front end's schedule; empty: none).
+  const std::vector<PruningStage>& pruning() const { return pruning_; }
   const StreamInfo& stream_info() const { return stream_; }
 
   /// Camera-to-map pose of every frame processed so far (current graph estimate).
@@ -106,6 +108,8 @@ class SlamSystem {
   /// Visual transformation between two frames; its work is booked under `role`.
   VisualTransformation compare(const FrameFeatures& a, const FrameFeatures& b,
                                const std::string& role);
+  /// One optimisation with the front end's kernel; counts it, and a failure.
+  OptimisationSummary optimise(int max_iterations);
 
   SlamOptions options_;
   StreamInfo stream_;
@@ -120,7 +124,9 @@ class SlamSystem {
   std::vector<LoopClosureRecord> loop_closures_;
   std::optional<TrackedFrame> last_tracked_;
   std::optional<OdometryReading> last_odometry_;
+  GraphRobustness robustness_;  // the front end's, fixed for the run
   OptimisationSummary final_optimisation_;
+  std::vector<PruningStage> pruning_;
 };
 
 }  // namespace wifislam::slam

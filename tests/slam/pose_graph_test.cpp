@@ -130,8 +130,9 @@ TEST(PoseGraph, RobustLossLimitsAFalseLoopClosure) {
   build(robust);
   PoseGraphOptions options;
   optimise_pose_graph(plain, options, 100);
-  options.robust_loss = "cauchy";
-  optimise_pose_graph(robust, options, 100);
+  RobustKernel cauchy;
+  cauchy.kind = RobustKernel::Kind::kCauchy;
+  optimise_pose_graph(robust, options, 100, cauchy);
   const double plain_error = translation_distance_m(plain.node(50).pose, truth[50]);
   const double robust_error = translation_distance_m(robust.node(50).pose, truth[50]);
   std::printf("mid-loop error with a false closure: plain %.3f m, cauchy %.3f m\n", plain_error,

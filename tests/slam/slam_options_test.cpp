@@ -21,17 +21,37 @@ TEST(SlamOptions, DefaultsAreRgbdslamV2s) {
   EXPECT_NO_THROW(validate(o));
 }
 
+TEST(SlamOptions, RefusesABadKernelOrPruningScheduleNamingIt) {
+  for (const char* bad : {"robust_kernel=tukey", "prune_chi2=5,,1", "prune_chi2=5,-1",
+                          "prune_chi2=abc", "prune_chi2=nan", "robust_kernel_chi2=0"}) {
+    SlamOptions o;
+    set_option_assignment(o, bad);
+    const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
+    try {
+      validate(o);
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+    }
+  }
+  SlamOptions none;
+  set_option_assignment(none, "prune_chi2=none");
+  EXPECT_NO_THROW(validate(none));
+}
+
 TEST(SlamOptions, SetsThePapersParametersByName) {
   SlamOptions o;
   set_option_assignment(o, "min_matches=15");
   set_option_assignment(o, "inlier_distance=2.5");
   set_option_assignment(o, "odometry_edges=true");
-  set_option_assignment(o, "robust_loss=huber");
+  set_option_assignment(o, "robust_kernel=cauchy");
+  set_option_assignment(o, "prune_chi2=30, 10");
   set_option_assignment(o, "seed=42");
   EXPECT_EQ(o.transform.min_matches, 15);
   EXPECT_DOUBLE_EQ(o.transform.inlier_distance, 2.5);
   EXPECT_TRUE(o.tracking.odometry_edges);
-  EXPECT_EQ(o.graph.robust_loss, "huber");
+  EXPECT_EQ(o.rgbdslam.robust_kernel, "cauchy");
+  EXPECT_NO_THROW(validate(o));
   EXPECT_EQ(o.seed, 42u);
   const nlohmann::json j = to_json(o);
   EXPECT_EQ(j.at("min_matches"), 15);

@@ -164,6 +164,15 @@ std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
   return out;
 }
 
+GraphRobustness RgbdslamFrontEnd::graph_robustness() const {
+  GraphRobustness robustness;
+  robustness.kernel.kind = robust_kernel_kind(options_.robust_kernel);
+  robustness.kernel.width_chi2 = options_.robust_kernel_chi2;
+  robustness.kernel.every_edge = true;
+  robustness.pruning.chi2_thresholds = parse_chi2_thresholds("prune_chi2", options_.prune_chi2);
+  return robustness;
+}
+
 nlohmann::json RgbdslamFrontEnd::own_summary() const {
   nlohmann::json out = {{"predecessor_candidates", options_.predecessor_candidates},
                         {"neighbor_candidates", options_.neighbor_candidates},

@@ -53,6 +53,19 @@ struct RgbdslamOptions {
   /// (exhaustive: the costliest reading of "compare the current frame only to keyframes within
   /// similar clusters").
   int wifi_long_term_candidates = -1;
+
+  /// The robust back end (RGBDSLAMv2 GraphManager: a Huber kernel on every edge; at the end of a
+  /// run, edges over chi^2 5, then 1, then 0.25 pruned with a re-optimisation after each).
+  ///
+  /// RGBDSLAMv2's information is not calibrated (inliers / rmse^2 x identity, rmse a unitless 3-D
+  /// Mahalanobis distance), so its numbers cannot be carried over: on our information, whose
+  /// chi^2 follows chi^2(6) for correct edges (docs: README, "Robust back end"), a threshold of
+  /// 0.25 would prune every edge. We keep its schedule's shape, 20 : 4 : 1 with the kernel at 4x
+  /// the last stage, and anchor the last stage at the 99.9 % quantile of chi^2(6) (22.46): an
+  /// edge measured as well as it claims is pruned with probability 0.1 %.
+  std::string robust_kernel = "huber";           // none, huber, cauchy
+  double robust_kernel_chi2 = 4 * 22.46;         // where the kernel leaves the quadratic
+  std::string prune_chi2 = "449.2,89.84,22.46";  // stages, comma-separated; "none": no pruning
 };
 
 class RgbdslamFrontEnd final : public FrontEnd {
@@ -61,6 +74,7 @@ class RgbdslamFrontEnd final : public FrontEnd {
 
   std::string name() const override { return "rgbdslam"; }
   std::vector<Candidate> select(const SelectionQuery& query) override;
+  GraphRobustness graph_robustness() const override;
 
   const RgbdslamOptions& options() const { return options_; }
 

@@ -1,0 +1,121 @@
+#include "slam/optimize/edge_pruning.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "slam/optimize/relative_pose_error.hpp"
+
+namespace wifislam::slam {
+
+double edge_chi2(const PoseGraph& graph, const GraphEdge& edge) {
+  const Pose& a = graph.node(edge.from).pose;
+  const Pose& b = graph.node(edge.to).pose;
+  const Eigen::Vector3d p_a = a.translation(), p_b = b.translation();
+  const Eigen::Quaterniond q_a = Eigen::Quaterniond(a.linear()).normalized();
+  const Eigen::Quaterniond q_b = Eigen::Quaterniond(b.linear()).normalized();
+  const RelativePoseError error(edge.from_to,
+                                std::sqrt(edge.weight) * information_square_root(edge.information));
+  Eigen::Matrix<double, 6, 1> r;
+  error(p_a.data(), q_a.coeffs().data(), p_b.data(), q_b.coeffs().data(), r.data());
+  return r.squaredNorm();
+}
+
+namespace {
+
+bool prunable(const GraphEdge& edge) {
+  return !edge.pruned && (edge.type == EdgeType::kVisual || edge.type == EdgeType::kLoop);
+}
+
+/// Whether edge `skip`'s two ends stay connected through the other unpruned edges.
+bool ends_connected_without(const PoseGraph& graph,
+                            const std::vector<std::vector<std::size_t>>& incident,
+                            std::size_t skip) {
+  const GraphEdge& cut = graph.edges()[skip];
+  std::vector<char> seen(graph.node_count(), 0);
+  std::deque<KeyframeId> queue{cut.from};
+  seen[static_cast<std::size_t>(cut.from)] = 1;
+  while (!queue.empty()) {
+    const KeyframeId node = queue.front();
+    queue.pop_front();
+    for (std::size_t e : incident[static_cast<std::size_t>(node)]) {
+      const GraphEdge& edge = graph.edges()[e];
+      if (e == skip || edge.pruned) continue;
+      const KeyframeId next = edge.from == node ? edge.to : edge.from;
+      if (next == cut.to) return true;
+      if (seen[static_cast<std::size_t>(next)]) continue;
+      seen[static_cast<std::size_t>(next)] = 1;
+      queue.push_back(next);
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<PruningStage> prune_inconsistent_edges(
+    PoseGraph& graph, const PruningSchedule& schedule,
+    const std::function<OptimisationSummary(PoseGraph&)>& reoptimise) {
+  std::vector<std::vector<std::size_t>> incident(graph.node_count());
+  for (std::size_t e = 0; e < graph.edges().size(); ++e) {
+    incident[static_cast<std::size_t>(graph.edges()[e].from)].push_back(e);
+    incident[static_cast<std::size_t>(graph.edges()[e].to)].push_back(e);
+  }
+  std::vector<PruningStage> stages;
+  for (double threshold : schedule.chi2_thresholds) {
+    PruningStage stage;
+    stage.threshold_chi2 = threshold;
+    // Worst first, so that of two edges that could each be removed but not both, the worse one
+    // goes and the better one is discounted.
+    std::vector<std::pair<double, std::size_t>> over;
+    for (std::size_t e = 0; e < graph.edges().size(); ++e) {
+      const GraphEdge& edge = graph.edges()[e];
+      if (!prunable(edge) || edge.weight < 1.0) continue;  // discounted: already out of play
+      const double chi2 = edge_chi2(graph, edge);
+      if (!(chi2 <= threshold)) over.emplace_back(chi2, e);  // NaN counts as over
+    }
+    std::sort(over.begin(), over.end(), [](const auto& x, const auto& y) {
+      return x.first != y.first ? x.first > y.first : x.second < y.second;
+    });
+    for (const auto& [chi2, e] : over) {
+      if (ends_connected_without(graph, incident, e)) {
+        graph.prune_edge(e);
+        ++stage.pruned;
+      } else {
+        graph.set_edge_weight(e, schedule.discount_weight);
+        ++stage.discounted;
+      }
+    }
+    if (stage.pruned + stage.discounted > 0) stage.optimisation = reoptimise(graph);
+    stages.push_back(stage);
+  }
+  return stages;
+}
+
+std::vector<double> parse_chi2_thresholds(const std::string& key, const std::string& text) {
+  std::vector<double> out;
+  if (text.empty() || text == "none") return out;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+      value = std::stod(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    while (used < item.size() && item[used] == ' ') ++used;
+    if (used == 0 || used != item.size() || !(value > 0.0) || !std::isfinite(value)) {
+      throw InvalidInputError(key + ": '" + item +
+                              "' is not a positive chi^2 threshold (expected e.g. 449,90,22.5 or "
+                              "none)");
+    }
+    out.push_back(value);
+  }
+  return out;
+}
+
+}  // namespace wifislam::slam

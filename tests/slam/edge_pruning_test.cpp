@@ -1,0 +1,243 @@
+// The robust back end on synthetic graphs: RGBDSLAMv2-style after-run pruning with the Huber
+// kernel, bridges discounted instead of removed, and Ceres' verdict checked before poses change.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <numbers>
+
+#include "core/error.hpp"
+#include "core/rng.hpp"
+#include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
+#include "slam/graph/pose_graph.hpp"
+#include "slam/optimize/edge_pruning.hpp"
+#include "slam/optimize/pose_graph_optimizer.hpp"
+
+namespace wifislam::slam {
+namespace {
+
+constexpr double kSigmaM = 0.02, kSigmaRad = 0.01;
+
+Information6 information(double sigma_m, double sigma_rad) {
+  Information6 info = Information6::Zero();
+  info.diagonal() << Eigen::Vector3d::Constant(1 / (sigma_m * sigma_m)),
+      Eigen::Vector3d::Constant(1 / (sigma_rad * sigma_rad));
+  return info;
+}
+
+Pose planar(double x, double y, double yaw) {
+  Pose p = Pose::Identity();
+  p.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  p.translation() = Eigen::Vector3d(x, y, 0);
+  return p;
+}
+
+/// A measurement of `truth` with the noise its information claims (translation sigma_m per axis,
+/// rotation sigma_rad per axis, in the residual's convention), so its chi^2 follows chi^2(6).
+Pose measure(const Pose& truth, Rng& rng) {
+  Pose noise = Pose::Identity();
+  noise.translation() =
+      Eigen::Vector3d(rng.normal(0, kSigmaM), rng.normal(0, kSigmaM), rng.normal(0, kSigmaM));
+  const Eigen::Vector3d axis_angle(rng.normal(0, kSigmaRad), rng.normal(0, kSigmaRad),
+                                   rng.normal(0, kSigmaRad));
+  noise.linear() = Eigen::AngleAxisd(axis_angle.norm(), axis_angle.normalized()).toRotationMatrix();
+  Pose out = truth;
+  out.translation() += noise.translation();
+  out.linear() = truth.linear() * noise.linear();
+  return out;
+}
+
+/// Every node reachable from node 0 through edges that were not pruned.
+bool connected(const PoseGraph& graph) {
+  std::vector<char> seen(graph.node_count(), 0);
+  std::deque<KeyframeId> queue{0};
+  seen[0] = 1;
+  std::size_t reached = 1;
+  while (!queue.empty()) {
+    const KeyframeId n = queue.front();
+    queue.pop_front();
+    for (const GraphEdge& e : graph.edges()) {
+      if (e.pruned || (e.from != n && e.to != n)) continue;
+      const KeyframeId m = e.from == n ? e.to : e.from;
+      if (seen[static_cast<std::size_t>(m)]) continue;
+      seen[static_cast<std::size_t>(m)] = 1;
+      ++reached;
+      queue.push_back(m);
+    }
+  }
+  return reached == graph.node_count();
+}
+
+TEST(EdgePruning, RgbdslamScheduleRemovesAPlantedFalseLoopKeepsTrueEdgesAndTheGraphWhole) {
+  // A 10 x 10 m square walked twice (160 poses, 0.5 m apart): sequential and skip-one visual
+  // edges, and on the second lap a loop edge back to the same place on the first lap, all
+  // measured with the noise their information claims. One false loop says pose 30 (middle of the
+  // second side) is pose 70 (middle of the fourth), the look-alike corridor across the square.
+  std::vector<Pose> truth;
+  for (int lap = 0; lap < 2; ++lap) {
+    double x = 0, y = 0, yaw = 0;
+    for (int side = 0; side < 4; ++side) {
+      for (int step = 0; step < 20; ++step) {
+        truth.push_back(planar(x, y, yaw));
+        x += 0.5 * std::cos(yaw);
+        y += 0.5 * std::sin(yaw);
+      }
+      yaw += std::numbers::pi / 2;
+    }
+  }
+  Rng rng = Rng::stream(5, "test/edge_pruning/measurements");
+  PoseGraph graph;
+  Pose chained = truth[0];
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if (i > 0) {
+      const Pose m = measure(truth[i - 1].inverse() * truth[i], rng);
+      chained = chained * m;
+    }
+    graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
+                   chained);
+  }
+  const auto add = [&](std::size_t a, std::size_t b, EdgeType type) {
+    graph.add_edge({static_cast<KeyframeId>(a), static_cast<KeyframeId>(b), type,
+                    measure(truth[a].inverse() * truth[b], rng), information(kSigmaM, kSigmaRad),
+                    100});
+  };
+  for (std::size_t i = 1; i < truth.size(); ++i) add(i - 1, i, EdgeType::kVisual);
+  for (std::size_t i = 2; i < truth.size(); ++i) add(i - 2, i, EdgeType::kVisual);
+  for (std::size_t i = 80; i < truth.size(); i += 4) add(i - 80, i, EdgeType::kLoop);
+  const std::size_t true_edges = graph.edges().size();
+  PoseGraph without_false_loop = graph;
+  graph.add_edge({30, 110, EdgeType::kLoop, truth[30].inverse() * truth[70],
+                  information(kSigmaM, kSigmaRad), 60});
+
+  const GraphRobustness robustness = RgbdslamFrontEnd({}, 1).graph_robustness();
+  ASSERT_EQ(robustness.kernel.kind, RobustKernel::Kind::kHuber);
+  ASSERT_TRUE(robustness.kernel.every_edge);
+  ASSERT_EQ(robustness.pruning.chi2_thresholds.size(), 3u);
+  int reoptimisations = 0;
+  const auto reoptimise = [&](PoseGraph& g) {
+    ++reoptimisations;
+    return optimise_pose_graph(g, PoseGraphOptions{}, 100, robustness.kernel);
+  };
+  ASSERT_TRUE(reoptimise(graph).usable);
+  const double false_chi2 = edge_chi2(graph, graph.edges().back());
+  const std::vector<PruningStage> stages =
+      prune_inconsistent_edges(graph, robustness.pruning, reoptimise);
+
+  ASSERT_EQ(stages.size(), 3u);
+  EXPECT_TRUE(graph.edges().back().pruned) << "false loop chi^2 " << false_chi2;
+  int true_pruned = 0;
+  for (std::size_t e = 0; e < true_edges; ++e) true_pruned += graph.edges()[e].pruned ? 1 : 0;
+  EXPECT_EQ(true_pruned, 0);
+  EXPECT_EQ(stages[0].pruned, 1);  // the false loop goes at the first, loosest stage
+  EXPECT_TRUE(stages[0].optimisation.ran && stages[0].optimisation.usable);
+  EXPECT_TRUE(connected(graph));
+  // With the false loop gone, the map is what the true edges alone give (within 1 cm), not the
+  // metres-off map the false loop pulled it to.
+  ASSERT_TRUE(reoptimise(without_false_loop).usable);
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    const KeyframeId id = static_cast<KeyframeId>(i);
+    EXPECT_LT(translation_distance_m(graph.node(id).pose, without_false_loop.node(id).pose), 0.01)
+        << "pose " << i;
+  }
+  // The correct edges' chi^2 at the optimum is at or below chi^2(6)'s mean.
+  double sum = 0.0;
+  for (std::size_t e = 0; e < true_edges; ++e) sum += edge_chi2(graph, graph.edges()[e]);
+  EXPECT_LT(sum / static_cast<double>(true_edges), 6.0);
+}
+
+TEST(EdgePruning, ABridgeIsDiscountedNotRemovedAndTheWorstOfAPairGoesFirst) {
+  // Nodes 0-1-2 form a triangle whose 0-2 edge contradicts the other two; 2-3 is the only link
+  // to node 3 and also contradicts the poses (nothing was optimised yet).
+  PoseGraph graph;
+  for (int i = 0; i < 4; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
+  const Information6 info = information(kSigmaM, kSigmaRad);
+  graph.add_edge({0, 1, EdgeType::kVisual, planar(1, 0, 0), info, 50});
+  graph.add_edge({1, 2, EdgeType::kVisual, planar(1, 0, 0), info, 50});
+  graph.add_edge({0, 2, EdgeType::kLoop, planar(3, 0, 0), info, 50});
+  graph.add_edge({2, 3, EdgeType::kVisual, planar(0.5, 0, 0), info, 50});
+  graph.add_edge({0, 3, EdgeType::kOdometry, planar(9, 0, 0), info, 0});  // never pruned
+  graph.prune_edge(4);  // ... unless already out: odometry marked pruned does not connect
+  PruningSchedule schedule;
+  schedule.chi2_thresholds = {10.0};
+  int calls = 0;
+  const std::vector<PruningStage> stages =
+      prune_inconsistent_edges(graph, schedule, [&](PoseGraph&) {
+        ++calls;
+        return OptimisationSummary{};
+      });
+  ASSERT_EQ(stages.size(), 1u);
+  EXPECT_EQ(stages[0].pruned, 1);
+  EXPECT_EQ(stages[0].discounted, 1);
+  EXPECT_EQ(calls, 1);
+  EXPECT_TRUE(graph.edges()[2].pruned);   // the contradicting triangle edge
+  EXPECT_FALSE(graph.edges()[0].pruned);  // the two that agree with the poses stay
+  EXPECT_FALSE(graph.edges()[1].pruned);
+  EXPECT_FALSE(graph.edges()[3].pruned);  // the bridge stays, discounted
+  EXPECT_DOUBLE_EQ(graph.edges()[3].weight, schedule.discount_weight);
+  EXPECT_LT(edge_chi2(graph, graph.edges()[3]), 1e-3);
+}
+
+TEST(EdgePruning, NothingOverTheThresholdMeansNoReoptimisation) {
+  PoseGraph graph;
+  for (int i = 0; i < 3; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
+  graph.add_edge({0, 1, EdgeType::kVisual, planar(1, 0, 0), information(kSigmaM, kSigmaRad), 50});
+  graph.add_edge({1, 2, EdgeType::kVisual, planar(1, 0, 0), information(kSigmaM, kSigmaRad), 50});
+  PruningSchedule schedule;
+  schedule.chi2_thresholds = {5.0, 1.0, 0.25};
+  int calls = 0;
+  const auto stages = prune_inconsistent_edges(graph, schedule, [&](PoseGraph&) {
+    ++calls;
+    return OptimisationSummary{};
+  });
+  EXPECT_EQ(stages.size(), 3u);
+  EXPECT_EQ(calls, 0);
+  for (const GraphEdge& e : graph.edges()) EXPECT_FALSE(e.pruned);
+}
+
+TEST(EdgePruning, ParsesScheduleListsAndRefusesBadEntriesByKey) {
+  EXPECT_EQ(parse_chi2_thresholds("prune_chi2", "449.2,89.84, 22.46"),
+            (std::vector<double>{449.2, 89.84, 22.46}));
+  EXPECT_TRUE(parse_chi2_thresholds("prune_chi2", "none").empty());
+  EXPECT_TRUE(parse_chi2_thresholds("prune_chi2", "").empty());
+  for (const char* bad : {"5,,1", "0", "-1", "1e999", "inf", "5;1", "x"}) {
+    EXPECT_THROW(parse_chi2_thresholds("prune_chi2", bad), InvalidInputError) << bad;
+  }
+}
+
+TEST(PoseGraphOptimiser, KeepsThePosesWhenCeresCannotUseItsSolution) {
+  PoseGraph graph;
+  for (int i = 0; i < 3; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
+  Pose broken = planar(1, 0, 0);
+  broken.translation().x() = std::numeric_limits<double>::quiet_NaN();
+  graph.add_edge({0, 1, EdgeType::kVisual, planar(1.5, 0, 0), information(kSigmaM, kSigmaRad)});
+  graph.add_edge({1, 2, EdgeType::kVisual, broken, information(kSigmaM, kSigmaRad)});
+  const PoseGraph before = graph;
+  const OptimisationSummary summary = optimise_pose_graph(graph, PoseGraphOptions{}, 50);
+  EXPECT_TRUE(summary.ran);
+  EXPECT_FALSE(summary.usable) << summary.termination;
+  EXPECT_FALSE(summary.termination.empty());
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_TRUE(graph.node(i).pose.isApprox(before.node(i).pose)) << i;
+  }
+}
+
+TEST(PoseGraphOptimiser, PrunedEdgesAreLeftOutAndWeightsScaleInformation) {
+  // Two contradicting edges between the same nodes: the optimum sits between them, by weight.
+  PoseGraph graph;
+  graph.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
+  graph.add_node(Timestamp::from_ns(1), 1, Pose::Identity());
+  const Information6 info = information(kSigmaM, kSigmaRad);
+  graph.add_edge({0, 1, EdgeType::kVisual, planar(1, 0, 0), info});
+  graph.add_edge({0, 1, EdgeType::kLoop, planar(2, 0, 0), info});
+  graph.set_edge_weight(1, 3.0);  // x = (1 * 1 + 3 * 2) / 4
+  optimise_pose_graph(graph, PoseGraphOptions{}, 50);
+  EXPECT_NEAR(graph.node(1).pose.translation().x(), 1.75, 1e-3);
+  graph.prune_edge(1);
+  optimise_pose_graph(graph, PoseGraphOptions{}, 50);
+  EXPECT_NEAR(graph.node(1).pose.translation().x(), 1.0, 1e-3);
+}
+
+}  // namespace
+}  // namespace wifislam::slam
