@@ -12,12 +12,16 @@
 //   loop_closures.csv  one row per loop-closure edge, with the candidate role that found it
 //   wifi_clusters.csv  Wi-Fi runs only: one row per cluster (slam/wifi/wifi_cluster_map.hpp); its
 //                      members are keyframe ids (lines of keyframes.txt)
+//   rtabmap_memory.csv rtabmap runs only: one row per node (memory sizes, transfers, retrievals,
+//                      hypothesis, time over budget; columns in rtabmap_memory_column below)
 //   timing.json        {"modules": {name: {"total_s", "calls"}}, "counters": {name: n},
 //                       "roles": {role: {"comparisons", "ransac_runs", "verified", "accepted",
 //                       "time_s"}}, "keyframe_searches": [...], "wall_s"}
 //   run.json           {"format", "format_version", "frontend", "wifi", "options", counts, ...}
 //
 // Whether a run used the Wi-Fi module is run.json's "wifi", never guessed from which files exist.
+
+#include <array>
 
 namespace wifislam::run_folder {
 
@@ -32,6 +36,7 @@ inline constexpr const char* kKeyframes = "keyframes.txt";
 inline constexpr const char* kGraph = "graph.json";
 inline constexpr const char* kLoopClosures = "loop_closures.csv";
 inline constexpr const char* kWifiClusters = "wifi_clusters.csv";
+inline constexpr const char* kRtabmapMemory = "rtabmap_memory.csv";
 inline constexpr const char* kTiming = "timing.json";
 inline constexpr const char* kRun = "run.json";
 
@@ -119,6 +124,20 @@ inline constexpr const char* kWifiBoundedPool = "wifi_bounded_pool_keyframes";
 inline constexpr const char* kWifiClustersFounded = "wifi_clusters_founded";
 inline constexpr const char* kWifiClusterJoins = "wifi_cluster_joins";
 }  // namespace counter
+
+/// Columns of rtabmap_memory.csv, in order (slam/frontend/rtabmap/rtabmap_front_end.hpp,
+/// RtabmapNodeRecord). Sizes are after the node's memory management; times in ms.
+namespace rtabmap_memory_column {
+// clang-format off
+inline constexpr std::array<const char*, 23> kAll = {
+    "node", "stm", "wm", "ltm",
+    "entered_wm", "retrieved", "wifi_retrieved", "transferred", "immune", "rehearsed",
+    "words", "scored", "likelihood_terms",
+    "best", "best_probability", "virtual_probability",
+    "loop_candidate", "loop_verified", "loop_accepted", "verifications",
+    "cost_ms", "wall_ms", "over_budget_ms"};
+// clang-format on
+}  // namespace rtabmap_memory_column
 
 /// Fields of one role's entry in timing.json's "roles".
 namespace role_key {

@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 #include <fmt/format.h>
 
@@ -79,6 +81,38 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"prune_chi2", &o.rgbdslam.prune_chi2,
        "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
        "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge"},
+      {"stm_size", &o.rtabmap.stm_size,
+       "rtabmap: Mem/STMSize, newest nodes never searched for loop closures (10)"},
+      {"rehearsal_similarity", &o.rtabmap.rehearsal_similarity,
+       "rtabmap: Mem/RehearsalSimilarity, similarity with the previous node that merges (0.6)"},
+      {"kp_max_features", &o.rtabmap.max_features,
+       "rtabmap: Kp/MaxFeatures, strongest keypoints per node quantised into words (500)"},
+      {"kp_nndr_ratio", &o.rtabmap.nndr_ratio,
+       "rtabmap: Kp/NndrRatio, nearest-word distance ratio, else a new word (0.8)"},
+      {"bayes_prediction_lc", &o.rtabmap.prediction_lc,
+       "rtabmap: Bayes/PredictionLC, {virtual place, margin 0, 1, ...} (\"0.1 0.36 0.30 0.16 "
+       "0.062 0.0151 0.00255 0.000324 2.5e-05 1.3e-06 4.8e-08 1.5e-09 4.5e-11\")"},
+      {"virtual_place_prior", &o.rtabmap.virtual_place_prior,
+       "rtabmap: Bayes/VirtualPlacePriorThr, P(no loop closure stays no loop closure) (0.9)"},
+      {"loop_threshold", &o.rtabmap.loop_threshold,
+       "rtabmap: Rtabmap/LoopThr, posterior at which the best hypothesis is verified (0.11)"},
+      {"max_retrieved", &o.rtabmap.max_retrieved,
+       "rtabmap: Rtabmap/MaxRetrieved, LTM neighbours of the best hypothesis retrieved (2)"},
+      {"optimize_max_error", &o.rtabmap.optimize_max_error,
+       "rtabmap: RGBD/OptimizeMaxError, link error (own sigmas) that rejects a loop closure (3)"},
+      {"time_threshold_ms", &o.rtabmap.time_threshold_ms,
+       "rtabmap: Rtabmap/TimeThr (ms), over it WM nodes move to LTM; inf = off (RTAB-Map: 0)"},
+      {"time_source", &o.rtabmap.time_source,
+       "rtabmap: what TimeThr is compared with: cost (deterministic cost model) or wall"},
+      {"cost_ms_per_node", &o.rtabmap.cost.ms_per_node, "rtabmap cost model: fixed ms per node"},
+      {"cost_ms_per_likelihood_term", &o.rtabmap.cost.ms_per_likelihood_term,
+       "rtabmap cost model: ms per inverted-index reference of the likelihood"},
+      {"cost_ms_per_hypothesis", &o.rtabmap.cost.ms_per_hypothesis,
+       "rtabmap cost model: ms per Bayes filter hypothesis"},
+      {"cost_ms_per_verification", &o.rtabmap.cost.ms_per_verification,
+       "rtabmap cost model: ms per visual verification"},
+      {"wifi_max_retrieved", &o.rtabmap.wifi_max_retrieved,
+       "rtabmap with Wi-Fi: LTM nodes of similar clusters retrieved per node (0 = all)"},
       {"optimizer_iterations", &o.graph.max_iterations, "iterations of the final optimisation"},
       {"optimizer_incremental_iterations", &o.graph.incremental_max_iterations,
        "iterations after each loop closure"},
@@ -95,6 +129,9 @@ bool parse_number(const std::string& text, T& out) {
   const auto [ptr, ec] = std::from_chars(begin, end, out);
   return ec == std::errc() && ptr == end;
 }
+
+/// Options where infinity means "off" (Rtabmap/TimeThr).
+bool infinity_allowed(const std::string& key) { return key == "time_threshold_ms"; }
 
 std::string known_keys(SlamOptions& options) {
   std::string keys;
@@ -114,7 +151,11 @@ void set_option(SlamOptions& options, const std::string& key, const std::string&
       if (!parse_number(value, **p)) throw bad("an integer");
     } else if (auto* p = std::get_if<double*>(&field.target)) {
       double v = 0;
-      if (!parse_number(value, v) || !std::isfinite(v)) throw bad("a finite number");
+      if (infinity_allowed(key) && (value == "inf" || value == "infinity")) {
+        v = std::numeric_limits<double>::infinity();
+      } else if (!parse_number(value, v) || !std::isfinite(v)) {
+        throw bad(infinity_allowed(key) ? "a finite number or inf" : "a finite number");
+      }
       **p = v;
     } else if (auto* p = std::get_if<std::uint64_t*>(&field.target)) {
       if (!parse_number(value, **p)) throw bad("a non-negative integer");
@@ -182,6 +223,24 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
           "robust_kernel_chi2 must be a positive number");
   parse_chi2_thresholds("prune_chi2", o.rgbdslam.prune_chi2);  // throws naming the entry
+  require(o.rtabmap.stm_size >= 0, "stm_size must be >= 0");
+  require(o.rtabmap.rehearsal_similarity >= 0, "rehearsal_similarity must be >= 0");
+  require(o.rtabmap.max_features >= 1, "kp_max_features must be >= 1");
+  require(o.rtabmap.nndr_ratio > 0 && o.rtabmap.nndr_ratio <= 1, "kp_nndr_ratio must be in (0, 1]");
+  rtabmap::parse_prediction_lc("bayes_prediction_lc", o.rtabmap.prediction_lc);
+  require(o.rtabmap.virtual_place_prior >= 0 && o.rtabmap.virtual_place_prior <= 1,
+          "virtual_place_prior must be in [0, 1]");
+  require(o.rtabmap.loop_threshold >= 0 && o.rtabmap.loop_threshold <= 1,
+          "loop_threshold must be in [0, 1]");
+  require(o.rtabmap.max_retrieved >= 0, "max_retrieved must be >= 0");
+  require(o.rtabmap.optimize_max_error > 0, "optimize_max_error must be > 0");
+  require(o.rtabmap.time_threshold_ms > 0, "time_threshold_ms must be > 0 (inf = off)");
+  require(o.rtabmap.time_source == "cost" || o.rtabmap.time_source == "wall",
+          "time_source must be cost or wall, got '" + o.rtabmap.time_source + "'");
+  require(o.rtabmap.cost.ms_per_node >= 0 && o.rtabmap.cost.ms_per_likelihood_term >= 0 &&
+              o.rtabmap.cost.ms_per_hypothesis >= 0 && o.rtabmap.cost.ms_per_verification >= 0,
+          "cost_ms_* must be >= 0");
+  require(o.rtabmap.wifi_max_retrieved >= 0, "wifi_max_retrieved must be >= 0");
   require(o.graph.max_iterations >= 1 && o.graph.incremental_max_iterations >= 0,
           "optimizer iterations must be >= 1 (final) and >= 0 (incremental)");
   require(o.graph.threads >= 1, "optimizer_threads must be >= 1");
@@ -194,7 +253,18 @@ nlohmann::json to_json(const SlamOptions& options) {
   SlamOptions copy = options;
   nlohmann::json out = nlohmann::json::object();
   for (const OptionField& f : option_fields(copy)) {
-    std::visit([&](auto* p) { out[f.key] = *p; }, f.target);
+    std::visit(
+        [&](auto* p) {
+          if constexpr (std::is_same_v<decltype(p), double*>) {
+            // JSON has no infinity; "inf" reads back through set_option.
+            if (!std::isfinite(*p)) {
+              out[f.key] = "inf";
+              return;
+            }
+          }
+          out[f.key] = *p;
+        },
+        f.target);
   }
   return out;
 }

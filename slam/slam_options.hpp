@@ -12,6 +12,7 @@
 
 #include "slam/feature/orb_feature_extractor.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
+#include "slam/frontend/rtabmap/rtabmap_options.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 #include "slam/solve/visual_transformation.hpp"
 #include "slam/wifi/wifi_options.hpp"
@@ -57,6 +58,7 @@ struct SlamOptions {
   VisualTransformOptions transform;
   TrackingOptions tracking;
   RgbdslamOptions rgbdslam;
+  RtabmapOptions rtabmap;
   PoseGraphOptions graph;
 };
 

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
+#include "slam/frontend/rtabmap/rtabmap_front_end.hpp"
 
 namespace wifislam::slam {
 
@@ -23,6 +24,10 @@ Registry& registry() {
     reg->factories["rgbdslam"] = [](const FrontEndContext& context) {
       const SlamOptions& o = *context.options;
       return std::make_unique<RgbdslamFrontEnd>(o.rgbdslam, o.seed);
+    };
+    reg->factories["rtabmap"] = [](const FrontEndContext& context) {
+      const SlamOptions& o = *context.options;
+      return std::make_unique<RtabmapFrontEnd>(o.rtabmap, o.graph);
     };
     return reg;
   }();

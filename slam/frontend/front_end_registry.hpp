@@ -25,7 +25,7 @@ struct FrontEndContext {
 
 using FrontEndFactory = std::function<std::unique_ptr<FrontEnd>(const FrontEndContext&)>;
 
-/// Adds (or replaces) a front end. Built in: "rgbdslam".
+/// Adds (or replaces) a front end. Built in: "rgbdslam", "rtabmap".
 void register_front_end(const std::string& name, FrontEndFactory factory);
 
 /// The front end named `context.options->frontend`, holding a Wi-Fi module when

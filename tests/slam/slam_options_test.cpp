@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "core/error.hpp"
 #include "slam/slam_options.hpp"
 
@@ -72,6 +74,32 @@ TEST(SlamOptions, BadInputNamesTheKey) {
   EXPECT_THROW(set_option_assignment(o, "odometry_edges=maybe"), ParseError);
   set_option_assignment(o, "ransac_confidence=1.0");
   EXPECT_THROW(validate(o), InvalidInputError);  // OpenCV asserts at exactly 1
+}
+
+TEST(SlamOptions, RtabmapParametersHaveRtabmapDefaultsAndTimeThresholdTakesInf) {
+  SlamOptions o;
+  EXPECT_EQ(o.rtabmap.stm_size, 10);                     // Mem/STMSize
+  EXPECT_EQ(o.rtabmap.rehearsal_similarity, 0.6);        // Mem/RehearsalSimilarity
+  EXPECT_EQ(o.rtabmap.max_features, 500);                // Kp/MaxFeatures
+  EXPECT_EQ(o.rtabmap.nndr_ratio, 0.8);                  // Kp/NndrRatio
+  EXPECT_EQ(o.rtabmap.virtual_place_prior, 0.9);         // Bayes/VirtualPlacePriorThr
+  EXPECT_EQ(o.rtabmap.loop_threshold, 0.11);             // Rtabmap/LoopThr
+  EXPECT_EQ(o.rtabmap.max_retrieved, 2);                 // Rtabmap/MaxRetrieved
+  EXPECT_EQ(o.rtabmap.optimize_max_error, 3.0);          // RGBD/OptimizeMaxError
+  EXPECT_TRUE(std::isinf(o.rtabmap.time_threshold_ms));  // Rtabmap/TimeThr off
+  EXPECT_EQ(to_json(o).at("time_threshold_ms"), "inf");
+  set_option_assignment(o, "time_threshold_ms=70");
+  EXPECT_EQ(o.rtabmap.time_threshold_ms, 70.0);
+  set_option_assignment(o, "time_threshold_ms=inf");
+  EXPECT_TRUE(std::isinf(o.rtabmap.time_threshold_ms));
+  EXPECT_THROW(set_option_assignment(o, "kp_nndr_ratio=inf"), ParseError);  // only the threshold
+  set_option_assignment(o, "bayes_prediction_lc=0.1 0.5 0.4");
+  EXPECT_NO_THROW(validate(o));
+  set_option_assignment(o, "bayes_prediction_lc=0.1");
+  EXPECT_THROW(validate(o), InvalidInputError);
+  o.rtabmap.prediction_lc = "0.1 0.36";
+  set_option_assignment(o, "time_source=sundial");
+  EXPECT_THROW(validate(o), InvalidInputError);
 }
 
 }  // namespace

@@ -1,0 +1,278 @@
+#include "slam/frontend/rtabmap/rtabmap_front_end.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.hpp"
+#include "core/run_format.hpp"
+#include "slam/frontend/rtabmap/likelihood.hpp"
+
+namespace wifislam::slam {
+
+RtabmapFrontEnd::RtabmapFrontEnd(const RtabmapOptions& options,
+                                 const PoseGraphOptions& graph_options)
+    : FrontEnd(std::make_unique<AcceptGraphConsistentHypotheses>(
+          std::make_unique<AcceptBestLoopHypothesis>(), options.optimize_max_error, graph_options,
+          graph_options.incremental_max_iterations)),
+      options_(options),
+      vocabulary_(options.nndr_ratio),
+      memory_(options.stm_size),
+      filter_(rtabmap::parse_prediction_lc("bayes_prediction_lc", options.prediction_lc),
+              options.virtual_place_prior) {}
+
+bool RtabmapFrontEnd::searchable(KeyframeId keyframe) const {
+  const rtabmap::MemoryPlace place = memory_.place(keyframe);
+  return place == rtabmap::MemoryPlace::kStm || place == rtabmap::MemoryPlace::kWm;
+}
+
+void RtabmapFrontEnd::retrieve(KeyframeId node, RtabmapNodeRecord& record) {
+  memory_.retrieve(node);
+  vocabulary_.enable_references(node, words_of_.at(node));
+  ++record.entered_wm;
+}
+
+std::map<rtabmap::NodeId, int> RtabmapFrontEnd::neighbours_in_memory(KeyframeId node,
+                                                                     int max_margin,
+                                                                     bool include_ltm) const {
+  std::map<rtabmap::NodeId, int> margin{{node, 0}};
+  if (graph_ == nullptr) return margin;
+  std::deque<KeyframeId> queue{node};
+  while (!queue.empty()) {
+    const KeyframeId current = queue.front();
+    queue.pop_front();
+    const int m = margin.at(current);
+    if (m >= max_margin) continue;
+    for (KeyframeId next : graph_->adjacent(current)) {
+      if (margin.contains(next)) continue;
+      const rtabmap::MemoryPlace place = memory_.place(next);
+      if (place == rtabmap::MemoryPlace::kUnknown) continue;
+      if (!include_ltm && place == rtabmap::MemoryPlace::kLtm) continue;
+      margin[next] = m + 1;
+      queue.push_back(next);
+    }
+  }
+  return margin;
+}
+
+bool RtabmapFrontEnd::linked_to_stm(KeyframeId node) const {
+  if (graph_ == nullptr) return false;
+  for (KeyframeId k : graph_->adjacent(node)) {
+    if (memory_.place(k) == rtabmap::MemoryPlace::kStm) return true;
+  }
+  return false;
+}
+
+std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
+  started_ = std::chrono::steady_clock::now();
+  graph_ = query.graph;
+  const KeyframeId t = query.keyframe;
+  pending_ = RtabmapNodeRecord{};
+  pending_.node = t;
+  immune_now_.clear();
+  last_transferred_.clear();
+
+  // 1. Words, and the node enters STM.
+  cv::Mat descriptors;
+  if (query.features != nullptr) {
+    descriptors = rtabmap::strongest_descriptors(
+        query.features->keypoints, query.features->descriptors, options_.max_features);
+  }
+  words_of_[t] = vocabulary_.add_node(t, descriptors);
+  if (memory_.add(t) >= 0) ++pending_.entered_wm;
+  pending_.words = vocabulary_.size();
+
+  // 2. Rehearsal with the previous node.
+  if (t >= 1 && memory_.place(t - 1) == rtabmap::MemoryPlace::kStm &&
+      rtabmap::node_similarity(words_of_.at(t - 1), words_of_.at(t)) >=
+          options_.rehearsal_similarity) {
+    memory_.merge(t - 1, t);
+    pending_.rehearsed = true;
+  }
+
+  // 3. Retrieval around the last node's best hypothesis: nearest first, newest first within a
+  // margin (Rtabmap::process sorts each margin's ids in reverse).
+  if (last_best_ >= 0) {
+    std::map<int, std::vector<KeyframeId>> by_margin;
+    for (const auto& [id, m] : neighbours_in_memory(last_best_, filter_.max_margin(), true)) {
+      if (memory_.place(id) != rtabmap::MemoryPlace::kStm) by_margin[m].push_back(id);
+    }
+    for (auto& [m, ids] : by_margin) {
+      for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
+        immune_now_.insert(*it);
+        if (memory_.place(*it) == rtabmap::MemoryPlace::kLtm &&
+            pending_.retrieved < options_.max_retrieved) {
+          retrieve(*it, pending_);
+          ++pending_.retrieved;
+        }
+      }
+    }
+  }
+  // Wi-Fi cluster retrieval: LTM nodes of similar clusters come back, immune while similar.
+  if (wifi() != nullptr && wifi()->has_signature()) {
+    for (KeyframeId k : wifi()->similar_cluster_keyframes()) {
+      if (options_.wifi_max_retrieved > 0 && pending_.wifi_retrieved >= options_.wifi_max_retrieved)
+        break;
+      if (memory_.place(k) == rtabmap::MemoryPlace::kLtm) {
+        retrieve(k, pending_);
+        ++pending_.wifi_retrieved;
+      }
+    }
+  }
+
+  // 4. Likelihood over WM (bounded by Wi-Fi), then the Bayes filter.
+  std::vector<KeyframeId> scored(memory_.wm().begin(), memory_.wm().end());
+  if (wifi() != nullptr) scored = wifi()->bound(scored);
+  pending_.scored = scored.size();
+  rtabmap::RawLikelihood raw = rtabmap::tf_idf_likelihood(words_of_.at(t), scored, vocabulary_,
+                                                          words_of_, memory_.in_memory());
+  pending_.likelihood_terms = raw.terms;
+  std::pair<KeyframeId, double> best{-1, 0.0};
+  if (!scored.empty()) {
+    const rtabmap::NormalisedLikelihood l = rtabmap::normalise_likelihood(raw.score);
+    filter_.update(l.node, l.virtual_place, [this](rtabmap::NodeId id, int max_margin) {
+      std::map<rtabmap::NodeId, int> out;
+      for (const auto& [k, m] : neighbours_in_memory(id, max_margin, false)) {
+        if (memory_.place(k) == rtabmap::MemoryPlace::kWm) out[k] = m;
+      }
+      return out;
+    });
+    best = filter_.best();
+    pending_.virtual_probability = filter_.virtual_probability();
+  }
+  pending_.best = best.first;
+  pending_.best_probability = best.second;
+  last_best_ = best.first;
+
+  // 5. Candidates.
+  std::vector<Candidate> out;
+  const auto compared = [&](KeyframeId k) {
+    return std::find(query.already_compared.begin(), query.already_compared.end(), k) !=
+           query.already_compared.end();
+  };
+  if (t >= 1 && !compared(t - 1)) out.push_back({t - 1, CandidateRole::kPredecessor});
+  if (best.first >= 0 && best.second >= options_.loop_threshold) {
+    pending_.loop_candidate = best.first;
+    if (!compared(best.first) && best.first != t - 1) {
+      out.push_back({best.first, CandidateRole::kLongTerm});
+    }
+  }
+  return out;
+}
+
+double RtabmapFrontEnd::node_time_ms(const RtabmapNodeRecord& record) const {
+  return options_.time_source == "wall" ? record.wall_ms : record.cost_ms;
+}
+
+void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
+  RtabmapNodeRecord& r = pending_;
+  if (report.keyframe != r.node) {
+    throw std::logic_error(fmt::format("rtabmap: keyframe {} verified, but node {} was selected",
+                                       report.keyframe, r.node));
+  }
+  r.verifications = static_cast<int>(report.comparisons.size());
+  for (const ComparisonOutcome& c : report.comparisons) {
+    if (c.candidate.keyframe == r.loop_candidate && c.candidate.role == CandidateRole::kLongTerm) {
+      r.loop_verified = c.verified;
+      r.loop_accepted = c.accepted;
+    }
+  }
+  const RtabmapCostModel& cost = options_.cost;
+  const std::size_t hypotheses = filter_.posterior().size();
+  r.cost_ms = cost.ms_per_node +
+              cost.ms_per_likelihood_term * static_cast<double>(r.likelihood_terms) +
+              cost.ms_per_hypothesis * static_cast<double>(r.scored > 0 ? hypotheses : 0) +
+              cost.ms_per_verification * r.verifications;
+
+  // 6. Memory management under Rtabmap/TimeThr (Memory::forget: one more than entered WM).
+  const auto kept = [&](KeyframeId id) {
+    if (immune_now_.contains(id) || id == r.best || linked_to_stm(id)) return true;
+    return wifi() != nullptr && wifi()->in_similar_cluster(id);
+  };
+  if (wifi() != nullptr) {
+    for (KeyframeId id : memory_.wm()) {
+      if (wifi()->in_similar_cluster(id)) ++r.immune;
+    }
+  }
+  r.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_)
+                  .count();
+  const double time_ms = node_time_ms(r);
+  if (time_ms > options_.time_threshold_ms) {
+    r.over_budget_ms = time_ms - options_.time_threshold_ms;
+    last_transferred_ = memory_.transfer(static_cast<std::size_t>(r.entered_wm) + 1, kept);
+    for (KeyframeId id : last_transferred_) {
+      vocabulary_.disable_references(id, words_of_.at(id));
+    }
+    r.transferred = static_cast<int>(last_transferred_.size());
+  }
+  r.stm = memory_.stm().size();
+  r.wm = memory_.wm().size();
+  r.ltm = memory_.ltm().size();
+  records_.push_back(r);
+}
+
+void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) const {
+  namespace col = run_folder::rtabmap_memory_column;
+  std::string csv;
+  for (std::size_t i = 0; i < col::kAll.size(); ++i) {
+    csv += (i == 0 ? "" : ",");
+    csv += col::kAll[i];
+  }
+  csv += '\n';
+  for (const RtabmapNodeRecord& r : records_) {
+    csv += fmt::format(
+        "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{:.6g},{:.6g},{},{},{},{},{:.4f},{:.4f},{:.4f}"
+        "\n",
+        r.node, r.stm, r.wm, r.ltm, r.entered_wm, r.retrieved, r.wifi_retrieved, r.transferred,
+        r.immune, r.rehearsed ? 1 : 0, r.words, r.scored, r.likelihood_terms, r.best,
+        r.best_probability, r.virtual_probability, r.loop_candidate, r.loop_verified ? 1 : 0,
+        r.loop_accepted ? 1 : 0, r.verifications, r.cost_ms, r.wall_ms, r.over_budget_ms);
+  }
+  write_file_atomic(run_dir / run_folder::kRtabmapMemory, csv);
+}
+
+nlohmann::json RtabmapFrontEnd::own_summary() const {
+  std::int64_t transferred = 0, retrieved = 0, wifi_retrieved = 0, rehearsed = 0, over = 0,
+               candidates = 0, accepted = 0;
+  std::size_t max_wm = 0;
+  double wm_sum = 0.0, over_ms = 0.0;
+  for (const RtabmapNodeRecord& r : records_) {
+    transferred += r.transferred;
+    retrieved += r.retrieved;
+    wifi_retrieved += r.wifi_retrieved;
+    rehearsed += r.rehearsed ? 1 : 0;
+    over += r.over_budget_ms > 0 ? 1 : 0;
+    over_ms += r.over_budget_ms;
+    candidates += r.loop_candidate >= 0 ? 1 : 0;
+    accepted += r.loop_accepted ? 1 : 0;
+    max_wm = std::max(max_wm, r.wm);
+    wm_sum += static_cast<double>(r.wm);
+  }
+  const auto json_ms = [](double v) -> nlohmann::json {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf");
+  };
+  return {{"nodes", records_.size()},
+          {"stm_size", options_.stm_size},
+          {"time_threshold_ms", json_ms(options_.time_threshold_ms)},
+          {"time_source", options_.time_source},
+          {"memory",
+           {{"stm", memory_.stm().size()},
+            {"wm", memory_.wm().size()},
+            {"ltm", memory_.ltm().size()},
+            {"max_wm", max_wm},
+            {"mean_wm", records_.empty() ? 0.0 : wm_sum / static_cast<double>(records_.size())},
+            {"transferred", transferred},
+            {"retrieved", retrieved},
+            {"wifi_retrieved", wifi_retrieved},
+            {"rehearsed", rehearsed}}},
+          {"vocabulary_words", vocabulary_.size()},
+          {"nodes_over_budget", over},
+          {"over_budget_ms", over_ms},
+          {"loop_candidates", candidates},
+          {"loop_closures_accepted", accepted}};
+}
+
+}  // namespace wifislam::slam

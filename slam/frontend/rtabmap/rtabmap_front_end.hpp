@@ -1,0 +1,127 @@
+#pragma once
+// RTAB-Map's loop-closure detection and memory management (Labbé & Michaud 2013, 2019; paper,
+// "RTAB-Map") as a front end of the shared pipeline, with the paper's Wi-Fi augmentation.
+//
+// Nodes. RTAB-Map makes a node at Rtabmap/DetectionRate (1 Hz) when the robot moved
+// RGBD/LinearUpdate (0.1 m) or turned RGBD/AngularUpdate (0.1 rad). In this front end a node is
+// one of the pipeline's keyframes (node id = keyframe id); nodes made on RTAB-Map's own schedule
+// are left for later.
+//
+// For each new node (select):
+//   1. its strongest Kp/MaxFeatures ORB descriptors are quantised into the incremental
+//      vocabulary (visual_vocabulary.hpp) and the node enters STM; the oldest STM node leaves
+//      for WM (node_memory.hpp);
+//   2. rehearsal: at Mem/RehearsalSimilarity or more with the previous node, the previous node
+//      takes the new one's weight + 1. RTAB-Map then deletes the new node (the robot has not
+//      moved); here the pipeline owns its graph nodes, so the new node stays, with weight 0;
+//   3. retrieval: the graph neighbours of the last node's best hypothesis (margin up to the
+//      prediction's reach, nearest first, STM left out) are immune to transfer this step, and up
+//      to Rtabmap/MaxRetrieved of them come back from LTM (Rtabmap::process, "RETRIEVAL");
+//      with Wi-Fi also every LTM node of a similar cluster, immune as long as its cluster is
+//      similar ("Wi-Fi Cluster Retrieval");
+//   4. likelihood of the node against every WM node (with Wi-Fi: only those of similar clusters,
+//      "Bounding"), normalised, and the Bayes filter update (likelihood.hpp, bayes_filter.hpp);
+//   5. candidates: the previous node (role predecessor: RTAB-Map links consecutive nodes), and
+//      the best hypothesis when its posterior reaches Rtabmap/LoopThr (role long_term). The
+//      pipeline verifies them (Vis/MinInliers = min_matches); acceptance keeps every ordinary
+//      visual edge and the best loop closure, then drops loop closures that tear the graph
+//      (RGBD/OptimizeMaxError; edge_acceptance.hpp).
+// After verification (after_verification):
+//   6. the node's processing time (cost model or wall clock) against Rtabmap/TimeThr: over it,
+//      RTAB-Map's Memory::forget moves one node more than entered WM this step to LTM, lowest
+//      weight and oldest first, keeping nodes immune this step, the best hypothesis, nodes linked
+//      to an STM node (RTAB-Map: "links must not be in STM"), and with Wi-Fi every node of a
+//      similar cluster ("Wi-Fi Immunization").
+//
+// What bounds WM when many nodes are immune: immunity lasts one step (retrieval) or while the
+// cluster is similar to the current node (Wi-Fi). Transfers take only non-immune nodes, so WM is
+// at most the immune nodes plus what the threshold allows of the rest; when the robot moves on,
+// its old clusters stop being similar and become transferable again.
+//
+// Cost model calibration (RtabmapCostModel): measured on this machine (see the note in the run
+// folder docs); the per-unit times are means of wall-clock over the work counters of a run.
+
+#include <chrono>
+#include <deque>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "slam/frontend/front_end.hpp"
+#include "slam/frontend/rtabmap/bayes_filter.hpp"
+#include "slam/frontend/rtabmap/node_memory.hpp"
+#include "slam/frontend/rtabmap/rtabmap_options.hpp"
+#include "slam/frontend/rtabmap/visual_vocabulary.hpp"
+#include "slam/optimize/pose_graph_optimizer.hpp"
+
+namespace wifislam::slam {
+
+/// What happened to one node (a row of rtabmap_memory.csv).
+struct RtabmapNodeRecord {
+  KeyframeId node = -1;
+  std::size_t stm = 0, wm = 0, ltm = 0;  // after the node's memory management
+  int entered_wm = 0;                    // from STM or retrieved this step
+  int retrieved = 0;                     // around the last best hypothesis
+  int wifi_retrieved = 0;                // of similar Wi-Fi clusters
+  int transferred = 0;                   // WM -> LTM
+  int immune = 0;                        // WM nodes kept by Wi-Fi immunisation this step
+  bool rehearsed = false;                // merged with the previous node
+  std::size_t words = 0;                 // vocabulary size after the node
+  std::size_t scored = 0;                // WM nodes the likelihood was computed for
+  std::int64_t likelihood_terms = 0;
+  KeyframeId best = -1;
+  double best_probability = 0.0;
+  double virtual_probability = 1.0;
+  KeyframeId loop_candidate = -1;  // best hypothesis at or above Rtabmap/LoopThr
+  bool loop_verified = false, loop_accepted = false;
+  int verifications = 0;
+  double cost_ms = 0.0, wall_ms = 0.0;
+  double over_budget_ms = 0.0;  // time (of time_source) over Rtabmap/TimeThr
+};
+
+class RtabmapFrontEnd final : public FrontEnd {
+ public:
+  RtabmapFrontEnd(const RtabmapOptions& options, const PoseGraphOptions& graph_options);
+
+  std::string name() const override { return "rtabmap"; }
+  /// STM and WM nodes may be compared (STM: predecessors, relocalisation); LTM nodes may not.
+  bool searchable(KeyframeId keyframe) const override;
+  std::vector<Candidate> select(const SelectionQuery& query) override;
+
+  const RtabmapOptions& options() const { return options_; }
+  const rtabmap::NodeMemory& memory() const { return memory_; }
+  const rtabmap::BayesFilter& bayes_filter() const { return filter_; }
+  const rtabmap::VisualVocabulary& vocabulary() const { return vocabulary_; }
+  const std::vector<RtabmapNodeRecord>& records() const { return records_; }
+  /// Nodes moved to LTM by the last node's memory management.
+  const std::vector<KeyframeId>& last_transferred() const { return last_transferred_; }
+  /// The processing time of `record` as the threshold sees it.
+  double node_time_ms(const RtabmapNodeRecord& record) const;
+
+ protected:
+  void after_verification(const VerificationReport& report) override;
+  void write_own_outputs(const std::filesystem::path& run_dir) const override;
+  nlohmann::json own_summary() const override;
+
+ private:
+  void retrieve(KeyframeId node, RtabmapNodeRecord& record);
+  /// Graph neighbours of `node` within `max_margin` links over nodes in memory, with margins.
+  std::map<rtabmap::NodeId, int> neighbours_in_memory(KeyframeId node, int max_margin,
+                                                      bool include_ltm) const;
+  bool linked_to_stm(KeyframeId node) const;
+
+  RtabmapOptions options_;
+  rtabmap::VisualVocabulary vocabulary_;
+  rtabmap::NodeMemory memory_;
+  rtabmap::BayesFilter filter_;
+  std::map<rtabmap::NodeId, rtabmap::NodeWords> words_of_;
+  const PoseGraph* graph_ = nullptr;  // the pipeline's, seen through the selection query
+  KeyframeId last_best_ = -1;         // best hypothesis of the previous node (retrieval)
+  std::set<KeyframeId> immune_now_;   // retrieval neighbourhood of this step
+  RtabmapNodeRecord pending_;
+  std::chrono::steady_clock::time_point started_;
+  std::vector<RtabmapNodeRecord> records_;
+  std::vector<KeyframeId> last_transferred_;
+};
+
+}  // namespace wifislam::slam

@@ -1,0 +1,65 @@
+#pragma once
+// Options of the RTAB-Map-style front end. Defaults are RTAB-Map's (Parameters.h), named after its
+// parameters; the flat `--set` keys are listed in slam_options.cpp.
+//
+// Vis/MinInliers (20) is the pipeline's `min_matches` (RANSAC inliers needed to accept a visual
+// transformation, default 20): candidates are verified by the shared pipeline, so the two are one
+// setting.
+
+#include <limits>
+#include <string>
+
+#include "slam/frontend/rtabmap/bayes_filter.hpp"
+
+namespace wifislam::slam {
+
+/// Deterministic processing time of one node, in milliseconds: a fixed part plus work units
+/// (RTAB-Map measures wall-clock, which makes runs machine-dependent; DESIGN.md, "Ground truth
+/// and metrics"). The units are the front end's own work counters, so a run's transfers are
+/// exactly reproducible whatever the load.
+///
+/// Calibration (this machine, 2 cores shared with other jobs, release build): see
+/// RtabmapFrontEnd's header comment and the note; the defaults below are the measured means.
+struct RtabmapCostModel {
+  /// Per node: quantisation of its words, memory update, Bayes bookkeeping.
+  double ms_per_node = 2.0;
+  /// Per inverted-index reference visited by the tf-idf likelihood.
+  double ms_per_likelihood_term = 0.0001;
+  /// Per hypothesis of the Bayes filter (prediction column and update).
+  double ms_per_hypothesis = 0.004;
+  /// Per visual verification (matching + RANSAC of one candidate).
+  double ms_per_verification = 6.0;
+};
+
+struct RtabmapOptions {
+  /// Mem/STMSize: the newest nodes kept out of loop-closure search.
+  int stm_size = 10;
+  /// Mem/RehearsalSimilarity: a new node this similar to the previous one merges with it.
+  double rehearsal_similarity = 0.6;
+  /// Kp/MaxFeatures: the strongest keypoints of a node quantised into words.
+  int max_features = 500;
+  /// Kp/NndrRatio: a descriptor joins its nearest word when d1 <= ratio x d2, else founds one.
+  double nndr_ratio = 0.8;
+  /// Bayes/PredictionLC: {virtual place, margin 0, margin 1, ...}.
+  std::string prediction_lc = rtabmap::kDefaultPredictionLc;
+  /// Bayes/VirtualPlacePriorThr: probability that "no loop closure" stays "no loop closure".
+  double virtual_place_prior = 0.9;
+  /// Rtabmap/LoopThr: the best hypothesis becomes a loop-closure candidate at this posterior.
+  double loop_threshold = 0.11;
+  /// Rtabmap/MaxRetrieved: LTM neighbours of the best hypothesis brought back per node.
+  int max_retrieved = 2;
+  /// RGBD/OptimizeMaxError: a loop closure is dropped when, after a trial optimisation, some link's
+  /// error exceeds this many of its own standard deviations.
+  double optimize_max_error = 3.0;
+  /// Rtabmap/TimeThr in ms: over it, WM nodes move to LTM. RTAB-Map's 0 (off) is infinity here.
+  double time_threshold_ms = std::numeric_limits<double>::infinity();
+  /// What the threshold is compared with: "cost" (the deterministic cost model) or "wall"
+  /// (measured wall-clock of the node's selection, verification and memory management).
+  std::string time_source = "cost";
+  RtabmapCostModel cost;
+  /// With a Wi-Fi module: LTM nodes of similar clusters retrieved per node (0 = all of them; they
+  /// are the nodes the bounded search scores anyway, see RtabmapFrontEnd).
+  int wifi_max_retrieved = 0;
+};
+
+}  // namespace wifislam::slam
