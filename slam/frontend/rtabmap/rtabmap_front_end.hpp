@@ -75,7 +75,9 @@ struct RtabmapNodeRecord {
   KeyframeId loop_candidate = -1;  // best hypothesis at or above Rtabmap/LoopThr
   bool loop_verified = false, loop_accepted = false;
   int verifications = 0;
-  double cost_ms = 0.0, wall_ms = 0.0;
+  /// Cost model, wall-clock, and CPU time of this thread (what wall-clock would be on an idle
+  /// core: the calibration's reference on a shared machine), from selection to memory management.
+  double cost_ms = 0.0, wall_ms = 0.0, cpu_ms = 0.0;
   double over_budget_ms = 0.0;  // time (of time_source) over Rtabmap/TimeThr
 };
 
@@ -120,6 +122,7 @@ class RtabmapFrontEnd final : public FrontEnd {
   std::set<KeyframeId> immune_now_;   // retrieval neighbourhood of this step
   RtabmapNodeRecord pending_;
   std::chrono::steady_clock::time_point started_;
+  double started_cpu_ms_ = 0.0;
   std::vector<RtabmapNodeRecord> records_;
   std::vector<KeyframeId> last_transferred_;
 };
