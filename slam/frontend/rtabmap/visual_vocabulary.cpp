@@ -1,53 +1,95 @@
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 
 #include <algorithm>
+#include <array>
+#include <bit>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
 
 namespace wifislam::slam::rtabmap {
 
+namespace {
+
+/// Hamming distances of one 32-byte descriptor to `count` consecutive 32-byte words. The inner
+/// loop of the exhaustive search: 4 x 64-bit popcounts per word, compiled for the popcnt
+/// instruction where the CPU has it (x86-64-v2 and later; checked at run time), plain C++
+/// otherwise. Same integers either way.
+void distances_portable(const std::uint64_t* query, const std::uint64_t* words, std::size_t count,
+                        int* out) {
+  for (std::size_t w = 0; w < count; ++w) {
+    const std::uint64_t* word = words + 4 * w;
+    out[w] = std::popcount(query[0] ^ word[0]) + std::popcount(query[1] ^ word[1]) +
+             std::popcount(query[2] ^ word[2]) + std::popcount(query[3] ^ word[3]);
+  }
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target("popcnt"))) void distances_with_popcnt(const std::uint64_t* query,
+                                                             const std::uint64_t* words,
+                                                             std::size_t count, int* out) {
+  for (std::size_t w = 0; w < count; ++w) {
+    const std::uint64_t* word = words + 4 * w;
+    out[w] = std::popcount(query[0] ^ word[0]) + std::popcount(query[1] ^ word[1]) +
+             std::popcount(query[2] ^ word[2]) + std::popcount(query[3] ^ word[3]);
+  }
+}
+#endif
+
+void distances_to_words(const std::uint64_t* query, const std::uint64_t* words, std::size_t count,
+                        int* out) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  static const bool has_popcnt = __builtin_cpu_supports("popcnt");
+  if (has_popcnt) {
+    distances_with_popcnt(query, words, count, out);
+    return;
+  }
+#endif
+  distances_portable(query, words, count, out);
+}
+
+std::array<std::uint64_t, 4> packed(const cv::Mat& descriptors, int row) {
+  std::array<std::uint64_t, 4> out{};
+  std::memcpy(out.data(), descriptors.ptr(row), 32);
+  return out;
+}
+
+}  // namespace
+
 VisualVocabulary::VisualVocabulary(double nndr_ratio) : nndr_ratio_(nndr_ratio) {}
 
 NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
   NodeWords out;
   if (descriptors.empty()) return out;
-  if (descriptors.type() != CV_8U) {
-    throw std::invalid_argument("VisualVocabulary: descriptors must be CV_8U (ORB)");
+  if (descriptors.type() != CV_8U || descriptors.cols != 32) {
+    throw std::invalid_argument("VisualVocabulary: descriptors must be 32-byte ORB rows (CV_8U)");
   }
-  // Distances to the words that existed before this node, in one batch.
-  const int existing = descriptors_.rows;
-  cv::Mat distances;
-  if (existing > 0) {
-    cv::batchDistance(descriptors, descriptors_, distances, CV_32S, cv::noArray(),
-                      cv::NORM_HAMMING);
-    distance_computations_ += static_cast<std::int64_t>(descriptors.rows) * existing;
-  }
+  std::vector<int> distances;
   for (int i = 0; i < descriptors.rows; ++i) {
+    const std::array<std::uint64_t, 4> query = packed(descriptors, i);
+    // Every word, including those this node founded a moment ago.
+    distances.resize(words_.size() / 4);
+    distances_to_words(query.data(), words_.data(), distances.size(), distances.data());
+    distance_computations_ += static_cast<std::int64_t>(distances.size());
     int best = std::numeric_limits<int>::max(), second = std::numeric_limits<int>::max();
     WordId best_word = -1;
-    const auto consider = [&](int d, WordId w) {
+    for (std::size_t w = 0; w < distances.size(); ++w) {
+      const int d = distances[w];
       if (d < best) {
         second = best;
         best = d;
-        best_word = w;
+        best_word = static_cast<WordId>(w);
       } else if (d < second) {
         second = d;
       }
-    };
-    for (int w = 0; w < existing; ++w) consider(distances.at<int>(i, w), w);
-    // Words founded earlier in this node.
-    for (int w = existing; w < descriptors_.rows; ++w) {
-      consider(
-          static_cast<int>(cv::norm(descriptors.row(i), descriptors_.row(w), cv::NORM_HAMMING)), w);
-      ++distance_computations_;
     }
-    const bool matched = descriptors_.rows >= 2 &&
+    const bool matched = distances.size() >= 2 &&
                          static_cast<double>(best) <= nndr_ratio_ * static_cast<double>(second);
     WordId word = best_word;
     if (!matched) {
-      word = descriptors_.rows;
-      descriptors_.push_back(descriptors.row(i));
+      word = static_cast<WordId>(size());
+      words_.insert(words_.end(), query.begin(), query.end());
       references_.emplace_back();
     }
     ++out.counts[word];

@@ -1,0 +1,113 @@
+// `wifislam slam --frontend rtabmap [--wifi]` through the command line on a small generated loop:
+// the run folder is complete (rtabmap_memory.csv one row per node, memory totals in run.json) and
+// `wifislam eval` accepts it.
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/run_format.hpp"
+#include "tests/slam/slam_test_scene.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+int wifislam_cli(const std::string& args, const fs::path& dir) {
+  const std::string command =
+      std::string(WIFISLAM_BINARY) + " " + args + " >>" + (dir / "out.txt").string() + " 2>&1";
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string log_of(const fs::path& dir) {
+  std::stringstream s;
+  s << std::ifstream(dir / "out.txt").rdbuf();
+  return s.str();
+}
+
+class RtabmapEndToEnd : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    dir_ = fs::temp_directory_path() / ("wifislam_rtabmap_e2e_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "loop.yaml") << test::small_loop_with_wifi_scene_yaml();
+    generated_ = wifislam_cli("generate " + (dir_ / "loop.yaml").string() + " --fps 2 -q -o " +
+                                  (dir_ / "ds").string(),
+                              dir_) == 0;
+  }
+  static void TearDownTestSuite() { fs::remove_all(dir_); }
+
+  void run_and_check(bool wifi) {
+    ASSERT_TRUE(generated_) << log_of(dir_);
+    const fs::path run = dir_ / (wifi ? "run_wifi" : "run_vanilla");
+    ASSERT_EQ(
+        wifislam_cli("slam " + (dir_ / "ds").string() + " --frontend rtabmap" +
+                         (wifi ? " --wifi" : "") + " --set max_keypoints=500 -o " + run.string(),
+                     dir_),
+        0)
+        << log_of(dir_);
+    namespace rf = run_folder;
+    for (const char* f : {rf::kTrajectory, rf::kKeyframes, rf::kGraph, rf::kLoopClosures,
+                          rf::kTiming, rf::kRun, rf::kRtabmapMemory}) {
+      EXPECT_TRUE(fs::is_regular_file(run / f)) << f;
+    }
+    EXPECT_EQ(fs::exists(run / rf::kWifiClusters), wifi);
+
+    const nlohmann::json j = nlohmann::json::parse(std::ifstream(run / rf::kRun));
+    EXPECT_EQ(j.at(rf::run_key::kFrontend), "rtabmap");
+    EXPECT_EQ(j.at(rf::run_key::kWifi), wifi);
+    EXPECT_EQ(j.at("edge_acceptance"), "best+graph_consistent");
+    const nlohmann::json& memory = j.at("frontend_summary").at("memory");
+    const int keyframes = j.at("keyframes");
+    EXPECT_EQ(
+        memory.at("stm").get<int>() + memory.at("wm").get<int>() + memory.at("ltm").get<int>(),
+        keyframes);
+    EXPECT_EQ(j.at("options").at("time_threshold_ms"), "inf");
+    EXPECT_EQ(memory.at("transferred"), 0);  // no threshold: nothing moves
+
+    // One CSV row per node, with the header of core/run_format.hpp.
+    std::ifstream csv(run / rf::kRtabmapMemory);
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_EQ(header.substr(0, 12), "node,stm,wm,");
+    int rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    EXPECT_EQ(rows, keyframes);
+
+    ASSERT_EQ(wifislam_cli("eval " + run.string() + " --gt " + (dir_ / "ds").string() +
+                               " --set revisit_min_path_m=8",
+                           dir_),
+              0)
+        << log_of(dir_);
+    const nlohmann::json m = nlohmann::json::parse(std::ifstream(run / "eval" / "metrics.json"));
+    std::printf("rtabmap%s: %d keyframes, ATE RMSE %.3f m, loop closures online: %s\n",
+                wifi ? "+wifi" : "", keyframes, m["trajectory"]["ate_rmse_m"].get<double>(),
+                m["loop_closures"]["online"].dump().c_str());
+    EXPECT_GT(m["trajectory"]["ate_rmse_m"].get<double>(), 0.0);
+  }
+
+  static fs::path dir_;
+  static bool generated_;
+};
+
+fs::path RtabmapEndToEnd::dir_;
+bool RtabmapEndToEnd::generated_ = false;
+
+TEST_F(RtabmapEndToEnd, VanillaRunWritesAValidRunFolderThatEvalAccepts) { run_and_check(false); }
+
+TEST_F(RtabmapEndToEnd, WifiRunWritesAValidRunFolderThatEvalAccepts) { run_and_check(true); }
+
+}  // namespace
+}  // namespace wifislam
