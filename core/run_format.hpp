@@ -129,10 +129,10 @@ inline constexpr const char* kWifiClusterJoins = "wifi_cluster_joins";
 /// RtabmapNodeRecord). Sizes are after the node's memory management; times in ms.
 namespace rtabmap_memory_column {
 // clang-format off
-inline constexpr std::array<const char*, 24> kAll = {
+inline constexpr std::array<const char*, 25> kAll = {
     "node", "stm", "wm", "ltm",
     "entered_wm", "retrieved", "wifi_retrieved", "transferred", "immune", "rehearsed",
-    "words", "scored", "likelihood_terms",
+    "words", "word_comparisons", "scored", "likelihood_terms",
     "best", "best_probability", "virtual_probability",
     "loop_candidate", "loop_verified", "loop_accepted", "verifications",
     "cost_ms", "wall_ms", "cpu_ms", "over_budget_ms"};

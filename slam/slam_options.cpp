@@ -105,6 +105,8 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"time_source", &o.rtabmap.time_source,
        "rtabmap: what TimeThr is compared with: cost (deterministic cost model) or wall"},
       {"cost_ms_per_node", &o.rtabmap.cost.ms_per_node, "rtabmap cost model: fixed ms per node"},
+      {"cost_ms_per_word_comparison", &o.rtabmap.cost.ms_per_word_comparison,
+       "rtabmap cost model: ms per descriptor-word distance of the vocabulary search"},
       {"cost_ms_per_likelihood_term", &o.rtabmap.cost.ms_per_likelihood_term,
        "rtabmap cost model: ms per inverted-index reference of the likelihood"},
       {"cost_ms_per_hypothesis", &o.rtabmap.cost.ms_per_hypothesis,
@@ -237,8 +239,9 @@ void validate(const SlamOptions& o) {
   require(o.rtabmap.time_threshold_ms > 0, "time_threshold_ms must be > 0 (inf = off)");
   require(o.rtabmap.time_source == "cost" || o.rtabmap.time_source == "wall",
           "time_source must be cost or wall, got '" + o.rtabmap.time_source + "'");
-  require(o.rtabmap.cost.ms_per_node >= 0 && o.rtabmap.cost.ms_per_likelihood_term >= 0 &&
-              o.rtabmap.cost.ms_per_hypothesis >= 0 && o.rtabmap.cost.ms_per_verification >= 0,
+  require(o.rtabmap.cost.ms_per_node >= 0 && o.rtabmap.cost.ms_per_word_comparison >= 0 &&
+              o.rtabmap.cost.ms_per_likelihood_term >= 0 && o.rtabmap.cost.ms_per_hypothesis >= 0 &&
+              o.rtabmap.cost.ms_per_verification >= 0,
           "cost_ms_* must be >= 0");
   require(o.rtabmap.wifi_max_retrieved >= 0, "wifi_max_retrieved must be >= 0");
   require(o.graph.max_iterations >= 1 && o.graph.incremental_max_iterations >= 0,

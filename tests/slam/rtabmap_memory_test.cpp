@@ -30,6 +30,7 @@ TEST(RtabmapMemory, StmNodesAreNeverLoopCandidatesAndEveryNodeIsInOneMemory) {
   // Only nodes that verify a loop closure go over budget: transfers start on the second lap.
   RtabmapOptions options;
   options.cost.ms_per_node = 0.0;
+  options.cost.ms_per_word_comparison = 0.0;
   options.cost.ms_per_verification = 10.0;
   options.time_threshold_ms = 5.0;
   test::RtabmapDriver d(options);

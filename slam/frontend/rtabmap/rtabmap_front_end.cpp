@@ -94,7 +94,9 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
     descriptors = rtabmap::strongest_descriptors(
         query.features->keypoints, query.features->descriptors, options_.max_features);
   }
+  const std::int64_t comparisons_before = vocabulary_.distance_computations();
   words_of_[t] = vocabulary_.add_node(t, descriptors);
+  pending_.word_comparisons = vocabulary_.distance_computations() - comparisons_before;
   if (memory_.add(t) >= 0) ++pending_.entered_wm;
   pending_.words = vocabulary_.size();
 
@@ -196,6 +198,7 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
   const RtabmapCostModel& cost = options_.cost;
   const std::size_t hypotheses = filter_.posterior().size();
   r.cost_ms = cost.ms_per_node +
+              cost.ms_per_word_comparison * static_cast<double>(r.word_comparisons) +
               cost.ms_per_likelihood_term * static_cast<double>(r.likelihood_terms) +
               cost.ms_per_hypothesis * static_cast<double>(r.scored > 0 ? hypotheses : 0) +
               cost.ms_per_verification * r.verifications;
@@ -212,6 +215,7 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
   }
   r.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_)
                   .count();
+  r.cpu_ms = thread_cpu_ms() - started_cpu_ms_;
   const double time_ms = node_time_ms(r);
   if (time_ms > options_.time_threshold_ms) {
     r.over_budget_ms = time_ms - options_.time_threshold_ms;
@@ -236,9 +240,10 @@ void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) co
   }
   csv += '\n';
   for (const RtabmapNodeRecord& r : records_) {
-    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
-                       r.entered_wm, r.retrieved, r.wifi_retrieved, r.transferred, r.immune,
-                       r.rehearsed ? 1 : 0, r.words, r.scored, r.likelihood_terms);
+    csv +=
+        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
+                    r.entered_wm, r.retrieved, r.wifi_retrieved, r.transferred, r.immune,
+                    r.rehearsed ? 1 : 0, r.words, r.word_comparisons, r.scored, r.likelihood_terms);
     csv += fmt::format("{},{:.6g},{:.6g},{},{},{},{},", r.best, r.best_probability,
                        r.virtual_probability, r.loop_candidate, r.loop_verified ? 1 : 0,
                        r.loop_accepted ? 1 : 0, r.verifications);

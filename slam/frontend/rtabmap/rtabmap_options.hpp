@@ -18,17 +18,29 @@ namespace wifislam::slam {
 /// and metrics"). The units are the front end's own work counters, so a run's transfers are
 /// exactly reproducible whatever the load.
 ///
-/// Calibration (this machine, 2 cores shared with other jobs, release build): see
-/// RtabmapFrontEnd's header comment and the note; the defaults below are the measured means.
+/// Calibration (first pass; 2 shared cores under a load average of ~20, release build): the
+/// small test loop at 3 fps, 417 frames, 142 nodes, `--frontend rtabmap`, threshold off. Per node
+/// the run folder records the thread CPU time from selection to memory management (cpu_ms; the
+/// wall-clock was 4.4 x larger under that load). A least-squares fit of cpu_ms over the 105 nodes
+/// without a verification gives 0.94 ms + 1.76e-6 ms per descriptor-word comparison (rms residual
+/// ~5 ms). The likelihood terms and hypotheses grow with the map like the vocabulary does, so that
+/// run cannot separate them; together they are under 1 ms per node at ~130 hypotheses, and the
+/// values below are estimates. Thread CPU does not see OpenCV's worker threads, so a verification
+/// is charged its mean wall-clock per long-term comparison in the same run (timing.json roles:
+/// 9.0 ms). The fixed part adds the node's feature extraction (timing.json: 8.5 ms per frame).
+/// To be redone on an idle machine; `cost_ms_*` override every value.
 struct RtabmapCostModel {
-  /// Per node: quantisation of its words, memory update, Bayes bookkeeping.
-  double ms_per_node = 2.0;
-  /// Per inverted-index reference visited by the tf-idf likelihood.
-  double ms_per_likelihood_term = 0.0001;
-  /// Per hypothesis of the Bayes filter (prediction column and update).
-  double ms_per_hypothesis = 0.004;
+  /// Per node: its feature extraction (RTAB-Map extracts a node's features inside its
+  /// processing) and the fixed part of memory update and Bayes bookkeeping (0.94 + 8.5).
+  double ms_per_node = 9.4;
+  /// Per descriptor-word distance of the node's quantisation (exhaustive vocabulary search).
+  double ms_per_word_comparison = 1.76e-6;
+  /// Per inverted-index reference visited by the tf-idf likelihood (estimate).
+  double ms_per_likelihood_term = 1e-4;
+  /// Per hypothesis of the Bayes filter: prediction column and update (estimate).
+  double ms_per_hypothesis = 4e-3;
   /// Per visual verification (matching + RANSAC of one candidate).
-  double ms_per_verification = 6.0;
+  double ms_per_verification = 9.0;
 };
 
 struct RtabmapOptions {
