@@ -308,7 +308,13 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
       ++summary.odometry_readings;
     } else if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
       wifi.write(format_wifi_csv_rows(*scan));
-      ++summary.wifi_scans;
+      // wifi.csv has one row per reading, so a scan that heard nothing leaves no trace in it:
+      // the manifest counts the scans the file holds, and the silent ones apart.
+      if (scan->readings.empty()) {
+        ++summary.wifi_scans_empty;
+      } else {
+        ++summary.wifi_scans;
+      }
       summary.wifi_readings += static_cast<std::int64_t>(scan->readings.size());
       const int pause = scan_windows[scan_index++].pause_index;
       if (pause >= 0) {
@@ -358,11 +364,15 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
                        {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
                                              EIGEN_MINOR_VERSION)}};
   manifest.parameters_json = parameters_json(scene, options);
-  manifest.counts = {
-      {"frames", options.images ? summary.frames : 0},  {"groundtruth_poses", summary.frames},
-      {"odometry_readings", summary.odometry_readings}, {"wifi_scans", summary.wifi_scans},
-      {"wifi_readings", summary.wifi_readings},         {"pauses", summary.pauses},
-      {"access_points", summary.access_points},         {"bssids", summary.bssids}};
+  manifest.counts = {{"frames", options.images ? summary.frames : 0},
+                     {"groundtruth_poses", summary.frames},
+                     {"odometry_readings", summary.odometry_readings},
+                     {"wifi_scans", summary.wifi_scans},
+                     {"wifi_scans_that_heard_nothing", summary.wifi_scans_empty},
+                     {"wifi_readings", summary.wifi_readings},
+                     {"pauses", summary.pauses},
+                     {"access_points", summary.access_points},
+                     {"bssids", summary.bssids}};
   std::vector<std::string> files;
   if (options.images) files = {dataset::kRgbList, dataset::kDepthList, dataset::kAssociations};
   for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
@@ -408,7 +418,10 @@ std::string GenerateSummary::full_report() const {
                    frames, images ? "" : " (poses only, no images)", fps, duration_s,
                    route_length_m);
   r += fmt::format("pauses            {}\n", pauses);
-  r += fmt::format("wifi scans        {} ({} readings)\n", wifi_scans, wifi_readings);
+  r += fmt::format("wifi scans        {} ({} readings){}\n", wifi_scans, wifi_readings,
+                   wifi_scans_empty > 0
+                       ? fmt::format("; {} more heard no access point", wifi_scans_empty)
+                       : std::string());
   r += fmt::format(
       "access points     {} ({} BSSIDs); heard per pause: mean {:.1f}, min {}, max {}\n",
       access_points, bssids, aps_heard_per_pause_mean, aps_heard_per_pause_min,

@@ -149,5 +149,39 @@ TEST_F(GenerateCli, ManifestMismatchIsAClearError) {
   EXPECT_EQ(run("check " + dir.string() + " --no-verify", scratch_).exit_code, 0);
 }
 
+// A scene without access points is a legitimate study case (no Wi-Fi): its scans hear nothing,
+// which wifi.csv (one row per reading) cannot show, so the manifest counts the scans the file
+// holds and the silent ones apart; `check` accepts the dataset, vanilla SLAM runs on it and the
+// Wi-Fi variant refuses it with a message that says why.
+TEST_F(GenerateCli, ZeroAccessPointsGiveADatasetCheckAcceptsVanillaRunsAndWifiRefuses) {
+  std::string yaml = test::kSmallSceneYaml;
+  const std::string aps = "access_points: {placement: rooms, count: 6}";
+  yaml.replace(yaml.find(aps), aps.size(), "access_points: {placement: rooms, count: 0}");
+  const fs::path scene = scratch_ / "no_aps.yaml";
+  test::write_text(scene, yaml);
+  const fs::path dataset = scratch_ / "no_aps";
+  const RunResult generated = run("generate " + scene.string() + " -o " + dataset.string() +
+                                      " --fps 2 --max-frames 40 --threads 2 -q",
+                                  scratch_);
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  const std::string manifest = test::read_text(dataset / dataset::kManifest);
+  EXPECT_NE(manifest.find("\"wifi_scans\": 0"), std::string::npos) << manifest;
+  EXPECT_EQ(manifest.find("\"wifi_scans_that_heard_nothing\": 0"), std::string::npos)
+      << "the route should pause and scan within 40 frames:\n"
+      << manifest;
+
+  const RunResult checked = run("check " + dataset.string(), scratch_);
+  EXPECT_EQ(checked.exit_code, 0) << checked.err;
+  const RunResult vanilla =
+      run("slam " + dataset.string() + " -o " + (scratch_ / "vanilla").string(), scratch_);
+  EXPECT_EQ(vanilla.exit_code, 0) << vanilla.err;
+  EXPECT_TRUE(fs::is_regular_file(scratch_ / "vanilla" / "trajectory.txt"));
+  const RunResult wifi =
+      run("slam " + dataset.string() + " --wifi -o " + (scratch_ / "wifi").string(), scratch_);
+  EXPECT_EQ(wifi.exit_code, 2) << wifi.err;
+  EXPECT_NE(wifi.err.find("without a scan"), std::string::npos) << wifi.err;
+  EXPECT_FALSE(fs::exists(scratch_ / "wifi"));
+}
+
 }  // namespace
 }  // namespace wifislam
