@@ -8,6 +8,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/radio_map.hpp"
@@ -30,6 +31,8 @@ struct RadiomapArgs {
 
 void run_radiomap(const RadiomapArgs& args) {
   using namespace wifislam;
+  check_output_file(args.output, {args.scene_path});
+  if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
   const Scene scene = load_scene_file(args.scene_path);
   const World world = generate_world(scene);
   PropagationModel model(world, make_access_points(scene, world.plan),
