@@ -1,0 +1,97 @@
+// Hostile input never crashes the command line (issue 18, "Crashes"): numbers out of any
+// physical range, heights outside the building, absurd thread counts under resource limits, a
+// broken image, and SLAM options OpenCV cannot take all end in one located line on stderr and
+// exit 2 (or, for threads, in a finished dataset), with no half-written output left behind.
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_wifislam;
+
+class BadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scratch_ = test::scratch_folder();
+    scene_ = scratch_ / "tiny.yaml";
+    test::write_file(scene_, test::kTinyLoopYaml);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  test::CliResult wifislam(const std::string& args, const std::string& prefix = "") {
+    return run_wifislam(args, scratch_, {}, prefix);
+  }
+  // The tiny loop with `from` replaced by `to` (which must occur in it).
+  fs::path scene_with(const std::string& from, const std::string& to, const std::string& name) {
+    std::string yaml = test::kTinyLoopYaml;
+    const auto at = yaml.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+    const fs::path path = scratch_ / name;
+    test::write_file(path, yaml);
+    return path;
+  }
+  static void expect_located_error(const test::CliResult& r, const std::string& where,
+                                   const std::string& key) {
+    EXPECT_EQ(r.signal, 0) << r.err;
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+
+  fs::path scratch_, scene_;
+};
+
+// Once a SIGFPE in the exact floor-plan arithmetic (1e308), a bad_alloc after 15 s (1e9) and a
+// route check running for minutes (1e5): coordinates are limited to 10 km.
+TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
+  for (const std::string value : {"1e308", "1e9", "1e5", "-10000.5", ".nan", ".inf"}) {
+    const fs::path scene =
+        scene_with("position_m: [7, 0]", "position_m: [" + value + ", 0]", "far.yaml");
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = wifislam("world " + scene.string());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    expect_located_error(r, "far.yaml:8:", "nodes[1].position_m[0]");
+    EXPECT_NE(r.err.find("[-10000, 10000]"), std::string::npos) << r.err;
+    EXPECT_LT(seconds, 10.0) << value;
+  }
+  // Every other coordinate too: the corner of an open area, a colinear AP line.
+  const fs::path area =
+      scene_with("corridors:",
+                 "open_areas:\n  - {id: hall, polygon_m: [[0, 0], [3, 0], [3, 1e12]]}\ncorridors:",
+                 "area.yaml");
+  expect_located_error(wifislam("world " + area.string()),
+                       "area.yaml:", "open_areas[0].polygon_m[2][1]");
+}
+
+// Once an Embree assertion (abort) that left DS.partial behind.
+TEST_F(BadInput, AccessPointAboveTheBuildingIsALocatedError) {
+  const fs::path scene = scene_with(
+      "access_points: {placement: random, count: 8}",
+      "access_points:\n  placement: explicit\n  list: [{position_m: [1, 0, 1e300]}]", "ap.yaml");
+  const fs::path out = scratch_ / "ds";
+  const auto r =
+      wifislam("generate " + scene.string() + " -o " + out.string() + " --fps 2 --max-frames 2 -q");
+  expect_located_error(r, "ap.yaml:", "access_points.list[0].position_m[2]");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  // Within the schema's range but above this building's 2.8 m ceiling.
+  const fs::path high = scene_with("access_points: {placement: random, count: 8}",
+                                   "access_points:\n  placement: explicit\n  list: [{position_m: "
+                                   "[1, 0, 4.0]}]",
+                                   "high.yaml");
+  expect_located_error(wifislam("world " + high.string()),
+                       "high.yaml:", "access_points.list[0].position_m[2]");
+}
+
+}  // namespace
+}  // namespace wifislam
