@@ -2,6 +2,8 @@
 // physical range, heights outside the building, absurd thread counts under resource limits, a
 // broken image, and SLAM options OpenCV cannot take all end in one located line on stderr and
 // exit 2 (or, for threads, in a finished dataset), with no half-written output left behind.
+#include <sys/resource.h>
+
 #include <chrono>
 #include <filesystem>
 #include <string>
@@ -71,6 +73,38 @@ TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
                  "area.yaml");
   expect_located_error(wifislam("world " + area.string()),
                        "area.yaml:", "open_areas[0].polygon_m[2][1]");
+}
+
+// Within the limits a building can still be 20 km long: the route's wall-clearance check and the
+// AP candidate spots once scanned every wall face per point (over half a minute of CPU for this
+// L; minutes for larger plans). Measured in the child's CPU seconds, so a busy machine does not
+// make it fail.
+TEST_F(BadInput, TheLargestBuildingsTheLimitsAllowBuildInSeconds) {
+  const fs::path scene = scratch_ / "ell.yaml";
+  test::write_file(scene, R"(version: 1
+name: twenty_km_ell
+seed: 1
+nodes:
+  - {id: A, position_m: [-10000, -10000]}
+  - {id: B, position_m: [10000, -10000]}
+  - {id: C, position_m: [10000, 10000]}
+corridors:
+  - {id: south, from: A, to: B, width_m: 2.0}
+  - {id: east, from: B, to: C, width_m: 2.0}
+access_points: {placement: rooms, count: 4}
+route:
+  nodes: [A, B, C]
+)");
+  rusage before{}, after{};
+  ::getrusage(RUSAGE_CHILDREN, &before);
+  const auto r = wifislam("world " + scene.string());
+  ::getrusage(RUSAGE_CHILDREN, &after);
+  const auto cpu_s = [](const rusage& u) {
+    return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  };
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("route length: 39999."), std::string::npos) << r.out;
+  EXPECT_LT(cpu_s(after) - cpu_s(before), 8.0);
 }
 
 // Once an Embree assertion (abort) that left DS.partial behind.
