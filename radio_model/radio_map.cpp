@@ -101,6 +101,12 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
   if (!(options.resolution_m > 0.0))
     throw InvalidInputError(
         fmt::format("radio map resolution must be > 0 (got {})", options.resolution_m));
+  if (!(options.receiver_height_m > 0.0 && options.receiver_height_m < plan.wall_height_m)) {
+    throw InvalidInputError(
+        fmt::format("radio map: receiver height {} m is not between the floor and the ceiling "
+                    "(0 to {} m)",
+                    options.receiver_height_m, plan.wall_height_m));
+  }
   if (model.access_points().empty())
     throw InvalidInputError("radio map: the scene has no access points");
   std::optional<std::size_t> only;

@@ -127,5 +127,20 @@ TEST_F(BadInput, AccessPointAboveTheBuildingIsALocatedError) {
                        "high.yaml:", "access_points.list[0].position_m[2]");
 }
 
+// Once an Embree assertion (abort) for nan, inf and 1e300.
+TEST_F(BadInput, RadioMapHeightOutsideTheBuildingIsAnError) {
+  const fs::path png = scratch_ / "map.png";
+  for (const char* height : {"nan", "inf", "1e300", "-1", "0", "2.8"}) {
+    const auto r = wifislam("radiomap " + scene_.string() + " --strongest --height " + height +
+                            " -o " + png.string());
+    expect_located_error(r, "--height", "ceiling");
+    EXPECT_FALSE(fs::exists(png)) << height;
+  }
+  const auto r = wifislam("radiomap " + scene_.string() +
+                          " --strongest --res 0.5 --height 1.2 -o " + png.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(png));
+}
+
 }  // namespace
 }  // namespace wifislam
