@@ -91,7 +91,9 @@ WIFISLAM_COMMAND(generate, 50) {
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--no-images", args->no_images, "Write poses, odometry and Wi-Fi only");
-  app->add_option("--threads", args->threads, "PNG encoding threads (default: one per core)")
+  app->add_option("--threads", args->threads,
+                  "PNG encoding threads (default: one per core; at most 4 per core, fewer if the\n"
+                  "system will not start more)")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--force", args->force,
                 "Replace the output folder if it exists and holds this tool's output (never an\n"

@@ -142,5 +142,20 @@ TEST_F(BadInput, RadioMapHeightOutsideTheBuildingIsAnError) {
   EXPECT_TRUE(fs::is_regular_file(png));
 }
 
+// Once `terminate called without an active exception` (exit 134) and a DS.partial left behind:
+// under a memory limit the system refuses most of 600 thread stacks. Thread counts are clamped,
+// and whatever threads will not start are done without.
+TEST_F(BadInput, HundredsOfThreadsUnderAMemoryLimitStillGiveADataset) {
+  const fs::path out = scratch_ / "ds";
+  // 256 MB stacks against a 2 GB address space: only a handful of threads can ever start.
+  const auto r = wifislam("generate " + scene_.string() + " -o " + out.string() +
+                              " --fps 2 --max-frames 4 --threads 600",
+                          "ulimit -s 262144 && ulimit -v 2000000 && LP_NUM_THREADS=0");
+  EXPECT_EQ(r.signal, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  EXPECT_EQ(wifislam("check " + out.string()).exit_code, 0);
+}
+
 }  // namespace
 }  // namespace wifislam
