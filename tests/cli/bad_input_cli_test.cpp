@@ -157,5 +157,21 @@ TEST_F(BadInput, HundredsOfThreadsUnderAMemoryLimitStillGiveADataset) {
   EXPECT_EQ(wifislam("check " + out.string()).exit_code, 0);
 }
 
+// Once an OpenCV assertion (exit 70) on the empty buffer.
+TEST_F(BadInput, EmptyPngInADatasetWithoutManifestIsALocatedError) {
+  const fs::path ds = scratch_ / "ds";
+  ASSERT_EQ(
+      wifislam("generate " + scene_.string() + " -o " + ds.string() + " --fps 2 --max-frames 3 -q")
+          .exit_code,
+      0);
+  fs::remove(ds / "manifest.json");
+  fs::path png;
+  for (const auto& e : fs::directory_iterator(ds / "rgb")) png = e.path();
+  ASSERT_FALSE(png.empty());
+  fs::resize_file(png, 0);
+  const auto r = wifislam("check " + ds.string());
+  expect_located_error(r, png.filename().string(), "0 bytes");
+}
+
 }  // namespace
 }  // namespace wifislam
