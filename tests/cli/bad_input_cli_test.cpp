@@ -173,5 +173,25 @@ TEST_F(BadInput, EmptyPngInADatasetWithoutManifestIsALocatedError) {
   expect_located_error(r, png.filename().string(), "0 bytes");
 }
 
+// Once exit 70 from inside OpenCV's ORB (pyramid levels of no pixels, unbounded allocation).
+TEST_F(BadInput, OrbOptionsOutsideTheirRangeAreErrors) {
+  const fs::path ds = scratch_ / "ds";
+  ASSERT_EQ(
+      wifislam("generate " + scene_.string() + " -o " + ds.string() + " --fps 2 --max-frames 3 -q")
+          .exit_code,
+      0);
+  const fs::path run = scratch_ / "run";
+  for (const std::string setting :
+       {"orb_levels=1000", "orb_scale_factor=1e308", "max_keypoints=2147483647",
+        "orb_levels=20 --set orb_scale_factor=2"}) {
+    const auto r = wifislam("slam " + ds.string() + " --set " + setting + " -o " + run.string());
+    expect_located_error(r, "SLAM option", setting.substr(0, setting.find('=')));
+    EXPECT_FALSE(fs::exists(run)) << setting;
+  }
+  const auto r = wifislam("slam " + ds.string() +
+                          " --set orb_levels=6 --set orb_scale_factor=2 -o " + run.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 }  // namespace
 }  // namespace wifislam
