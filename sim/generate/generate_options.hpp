@@ -33,7 +33,8 @@ struct GenerateOptions {
   /// not start more (GenerateSummary::threads says how many ran). The output is byte-identical
   /// whatever the count.
   int threads = 0;
-  /// Replace an existing output folder.
+  /// Replace an existing output folder (only one that looks like this tool's output, and never
+  /// `/`, the current directory or the home folder: core/output_folder.hpp).
   bool overwrite = false;
   /// Renderer settings (near/far planes, lighting).
   RenderOptions render;
