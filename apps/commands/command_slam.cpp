@@ -11,6 +11,7 @@
 #include "apps/command_registry.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
@@ -74,9 +75,7 @@ void run(const SlamArgs& args) {
   options.wifi.enabled = args.wifi;
   for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
   slam::validate(options);
-  if (std::filesystem::exists(args.output) && !args.force) {
-    throw IoError(args.output + ": already exists (pass --force to replace it)");
-  }
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
   nlohmann::json info;
   std::unique_ptr<SensorStream> stream = open_input(args, info);
   const bool tty = cli::stderr_is_tty();
@@ -87,7 +86,7 @@ void run(const SlamArgs& args) {
   const std::unique_ptr<slam::SlamSystem> system =
       slam::run_slam(*stream, options, summary, progress);
   if (tty) fmt::print(stderr, "\n");
-  slam::write_run_folder(args.output, *system, summary, args.force, info);
+  slam::write_run_folder(args.output, *system, summary, replace, info);
   fmt::print("{}", summary.FullReport());
   fmt::print("wrote {}\n", std::filesystem::absolute(args.output).lexically_normal().string());
 }
@@ -116,7 +115,9 @@ WIFISLAM_COMMAND(slam, 60) {
                   "SLAM option key=value (repeatable), e.g. --set min_matches=15 "
                   "--set inlier_distance=2.0");
   app->add_option("-o,--output", args->output, "Run folder to write")->required();
-  app->add_flag("--force", args->force, "Replace an existing run folder");
+  app->add_flag("--force", args->force,
+                "Replace an existing run folder (never an input, the current directory, the\n"
+                "home folder or a folder that is not this tool's output)");
   app->add_flag("--no-verify", args->no_verify, "Do not check the dataset's SHA-256 sums");
   app->add_option("--max-frames", args->max_frames, "Scene input: stop after this many frames");
   app->add_option("--fps", args->fps, "Scene input: frame rate (default: the scene's)");

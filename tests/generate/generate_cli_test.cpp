@@ -88,19 +88,30 @@ TEST_F(GenerateCli, BadSceneFailsAndWritesNothing) {
 }
 
 TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
-  const fs::path out = scratch_ / "existing";
-  fs::create_directories(out);
-  test::write_text(out / "keep.txt", "mine");
+  // A folder of the user's is never replaced, --force or not.
+  const fs::path mine = scratch_ / "existing";
+  fs::create_directories(mine);
+  test::write_text(mine / "keep.txt", "mine");
+  for (const char* force : {"", " --force"}) {
+    const RunResult r =
+        run("generate " + scene_.string() + " -o " + mine.string() + " --max-frames 3 -q" + force,
+            scratch_);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("does not look like wifislam output"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_text(mine / "keep.txt"), "mine");
+  }
+  // A dataset is replaced with --force only.
+  const fs::path out = make_dataset("dataset");
+  const std::string manifest = test::read_text(out / dataset::kManifest);
   RunResult r =
       run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3", scratch_);
-  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  EXPECT_EQ(test::read_text(out / "keep.txt"), "mine");
+  EXPECT_EQ(test::read_text(out / dataset::kManifest), manifest);
   r = run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3 --force -q",
           scratch_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_FALSE(fs::exists(out / "keep.txt"));
-  EXPECT_TRUE(fs::exists(out / dataset::kManifest));
+  EXPECT_NE(test::read_text(out / dataset::kManifest), manifest);
 }
 
 // Each damage: a non-zero exit, a message naming the file, and the folder left as it was.
