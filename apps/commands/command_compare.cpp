@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "apps/presets/shipped_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -114,7 +115,8 @@ WIFISLAM_COMMAND(compare, 65) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app->add_option("--fps", args->fps, "Dataset frame rate (default: each scene's)")
-      ->check(CLI::Range(0.1, 1000.0));
+      ->check(CLI::Range(0.1, 1000.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--max-frames", args->max_frames, "Cut each dataset after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_option("--jobs", args->jobs,

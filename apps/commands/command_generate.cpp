@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/output_folder.hpp"
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -85,9 +86,11 @@ WIFISLAM_COMMAND(generate, 50) {
       ->required()
       ->check(CLI::ExistingFile);
   app->add_option("-o,--output", args->output, "Dataset folder to create")->required();
-  app->add_option("--seed", args->seed, "Replace the scene's seed");
+  app->add_option("--seed", args->seed, "Replace the scene's seed")
+      ->check(wifislam::cli::kSeedValidator);
   app->add_option("--fps", args->fps, "Camera frame rate (default: the scene's, 30)")
-      ->check(CLI::Range(0.1, 1000.0));
+      ->check(CLI::Range(0.1, 1000.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--no-images", args->no_images, "Write poses, odometry and Wi-Fi only");
