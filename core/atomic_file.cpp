@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 
 namespace wifislam {
 
@@ -34,17 +35,39 @@ void write_file_atomic(const fs::path& path, std::string_view contents) {
   }
 }
 
-AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite)
-    : final_(std::move(final_path)), overwrite_(overwrite) {
-  if (final_.has_filename() == false) final_ = final_.parent_path();
-  staging_ = final_.string() + ".partial";
-  if (fs::exists(final_) && !overwrite_) {
-    throw IoError(final_.string() + ": already exists (pass --force to replace it)");
-  }
+AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrite_(overwrite) {
+  if (final_path.empty()) throw InvalidInputError("output folder: the path is empty");
+  final_ = resolve_path(final_path);
   std::error_code ec;
-  fs::remove_all(staging_, ec);
+  if (fs::exists(final_, ec)) {
+    if (!fs::is_directory(final_, ec)) {
+      throw InvalidInputError(final_.string() + ": exists and is not a folder");
+    }
+    if (!overwrite_) {
+      throw InvalidInputError(final_.string() + ": already exists (pass --force to replace it)");
+    }
+    check_folder_replaceable(final_);
+  }
+  staging_ = final_.string() + ".partial";
+  if (fs::exists(fs::symlink_status(staging_, ec))) {
+    // Left over from an interrupted run: ours (it carries the marker from the start) or empty.
+    if (!fs::is_directory(fs::symlink_status(staging_, ec)) ||
+        !(fs::is_empty(staging_, ec) || looks_like_tool_output(staging_))) {
+      throw InvalidInputError(staging_.string() +
+                              ": exists and is not an unfinished wifislam output; remove it or "
+                              "choose another output folder");
+    }
+    fs::remove_all(staging_, ec);
+  }
   fs::create_directories(staging_, ec);
   if (ec) throw IoError(staging_.string() + ": cannot create folder: " + ec.message());
+  try {
+    write_file_atomic(staging_ / kOutputMarkerFile,
+                      "Written by wifislam. `--force` may replace this folder.\n");
+  } catch (...) {
+    fs::remove_all(staging_, ec);
+    throw;
+  }
 }
 
 AtomicDirectory::~AtomicDirectory() {
@@ -56,15 +79,33 @@ AtomicDirectory::~AtomicDirectory() {
 
 void AtomicDirectory::commit() {
   std::error_code ec;
-  if (fs::exists(final_)) {
-    if (!overwrite_) throw IoError(final_.string() + ": already exists");
-    fs::remove_all(final_, ec);
+  fs::path set_aside;  // the folder being replaced, until the new one is in place
+  if (fs::exists(final_, ec)) {
+    if (!overwrite_) throw InvalidInputError(final_.string() + ": already exists");
+    if (!fs::is_directory(final_, ec)) {
+      throw InvalidInputError(final_.string() + ": exists and is not a folder");
+    }
+    check_folder_replaceable(final_);
+    set_aside = final_.string() + ".replaced";
+    if (fs::exists(fs::symlink_status(set_aside, ec))) {
+      if (!fs::is_directory(fs::symlink_status(set_aside, ec)) ||
+          !(fs::is_empty(set_aside, ec) || looks_like_tool_output(set_aside))) {
+        throw InvalidInputError(set_aside.string() +
+                                ": exists and is not a replaced wifislam output; remove it");
+      }
+      fs::remove_all(set_aside, ec);
+    }
+    fs::rename(final_, set_aside, ec);
     if (ec) throw IoError(final_.string() + ": cannot replace: " + ec.message());
   }
   fs::rename(staging_, final_, ec);
-  if (ec)
-    throw IoError(final_.string() + ": cannot move finished folder into place: " + ec.message());
+  if (ec) {
+    const std::string message = ec.message();
+    if (!set_aside.empty()) fs::rename(set_aside, final_, ec);
+    throw IoError(final_.string() + ": cannot move finished folder into place: " + message);
+  }
   committed_ = true;
+  if (!set_aside.empty()) fs::remove_all(set_aside, ec);
 }
 
 namespace {

@@ -12,8 +12,13 @@ namespace wifislam {
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
 
 /// A folder under construction: everything is written into `<final>.partial/`, and `commit()`
-/// renames it to `<final>` (replacing an existing folder only if `overwrite`). Destroying an
-/// uncommitted AtomicDirectory removes the partial folder.
+/// renames it to `<final>`. Destroying an uncommitted AtomicDirectory removes the partial folder.
+///
+/// An existing `<final>` is replaced only if `overwrite`, and never when it is `/`, the current
+/// directory or the home folder (or holds one of them), or does not look like this tool's output
+/// and is not empty (core/output_folder.hpp); the staging folder carries the marker file that
+/// makes it look like one. Commands check the rest of the rule (inputs, `--force`) with
+/// `check_output_folder` first. Refusals are InvalidInputError; nothing is created then.
 class AtomicDirectory {
  public:
   AtomicDirectory(std::filesystem::path final_path, bool overwrite);

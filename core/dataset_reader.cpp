@@ -49,11 +49,22 @@ void check_size(const cv::Mat& image, const CameraIntrinsics& k, const std::stri
   }
 }
 
+/// cv::imdecode with its assertions (an empty buffer, a malformed header) turned into a located
+/// error; an empty result means OpenCV could not read the bytes as an image.
+cv::Mat decode_image(const std::vector<unsigned char>& bytes, int flags, const std::string& name) {
+  if (bytes.empty()) throw ParseError(name, "", "the file is empty (0 bytes), not a PNG image");
+  try {
+    return cv::imdecode(bytes, flags);
+  } catch (const cv::Exception& e) {
+    throw ParseError(name, "", "not a readable PNG image (" + e.err + ")");
+  }
+}
+
 }  // namespace
 
 cv::Mat decode_depth_png(const std::vector<unsigned char>& bytes, double units_per_metre,
                          const std::string& name) {
-  const cv::Mat raw = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  const cv::Mat raw = decode_image(bytes, cv::IMREAD_UNCHANGED, name);
   if (raw.empty()) throw ParseError(name, "", "not a readable PNG image (corrupt or truncated)");
   if (raw.type() != CV_16UC1) {
     throw ParseError(name, "",
@@ -209,7 +220,7 @@ DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
     }
   }
   DecodedImages out;
-  out.rgb = cv::imdecode(rgb_bytes, cv::IMREAD_COLOR);
+  out.rgb = decode_image(rgb_bytes, cv::IMREAD_COLOR, rgb_file.string());
   if (out.rgb.empty()) {
     throw ParseError(rgb_file.string(), "", "not a readable PNG image (corrupt or truncated)");
   }

@@ -51,7 +51,9 @@ class DatasetReader final : public SensorStream {
   std::optional<SensorEvent> next() override;
   const CameraIntrinsics& intrinsics() const override { return calibration_.intrinsics; }
   Pose camera_in_base() const override { return calibration_.camera_in_base; }
-  bool has_wifi() const override { return has_wifi_; }
+  /// A wifi.csv with at least one scan (a file with its header only, as a scene without access
+  /// points gives, holds no Wi-Fi information).
+  bool has_wifi() const override { return has_wifi_ && scan_count_ > 0; }
   bool has_odometry() const override { return has_odometry_; }
   std::string description() const override;
 

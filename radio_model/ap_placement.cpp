@@ -2,13 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "radio_model/plan_geometry.hpp"
+#include "sim/world/wall_face_grid.hpp"
 
 namespace wifislam {
 
@@ -18,7 +22,8 @@ constexpr double kLatticeM = 0.5;    // spacing of candidate spots
 constexpr double kClearanceM = 0.4;  // keep APs off the wall faces
 
 // Free-space spots on a lattice over the plan bounds, optionally restricted to one polygon.
-std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const Polygon2* inside) {
+std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFaceGrid& walls,
+                                             const Polygon2* inside) {
   std::vector<Eigen::Vector2d> spots;
   Eigen::Vector2d lo = plan.bounds_min_m, hi = plan.bounds_max_m;
   if (inside) {
@@ -30,12 +35,52 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const Polygo
   }
   const double x0 = std::floor(lo.x() / kLatticeM) * kLatticeM + 0.5 * kLatticeM;
   const double y0 = std::floor(lo.y() / kLatticeM) * kLatticeM + 0.5 * kLatticeM;
+  std::vector<double> crossings;
+  std::vector<std::pair<double, double>> spans;
   for (double y = y0; y < hi.y(); y += kLatticeM) {
-    for (double x = x0; x < hi.x(); x += kLatticeM) {
+    // The row's spans inside some free-space outer ring, by point_in_polygon's own crossing rule
+    // (inside iff an odd number of crossings lies right of x): a spot outside every span fails
+    // point_in_regions, so only spots within spans are tested. A big sparse plan (a 10 km L) then
+    // costs a test per free spot, not per lattice point of its bounding box.
+    spans.clear();
+    for (const PolygonWithHoles2& region : plan.free_space) {
+      const Polygon2& ring = region.outer;
+      crossings.clear();
+      for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
+        const Eigen::Vector2d& a = ring[i];
+        const Eigen::Vector2d& b = ring[j];
+        if ((a.y() > y) != (b.y() > y)) {
+          crossings.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+        }
+      }
+      std::sort(crossings.begin(), crossings.end());
+      for (std::size_t k = 0; k + 1 < crossings.size(); k += 2) {
+        spans.emplace_back(crossings[k], crossings[k + 1]);
+      }
+    }
+    std::sort(spans.begin(), spans.end());
+    std::size_t span = 0;
+    double span_end = spans.empty() ? 0.0 : spans[0].second;
+    // x0 + k * kLatticeM is exact (multiples of 0.25 m within the scene's 10 km), so these are the
+    // lattice's x values whether stepped through or jumped to.
+    for (std::int64_t k = 0;; ++k) {
+      const double x = x0 + static_cast<double>(k) * kLatticeM;
+      if (!(x < hi.x())) break;
+      // Spans are half-open, [start, end); overlapping ones are merged as they are passed.
+      while (span < spans.size() && x >= span_end) {
+        if (++span < spans.size()) span_end = std::max(span_end, spans[span].second);
+      }
+      if (span == spans.size()) break;
+      if (x < spans[span].first) {
+        const auto next =
+            static_cast<std::int64_t>(std::ceil((spans[span].first - x0) / kLatticeM));
+        if (next > k + 1) k = next - 1;  // continue at the span's first lattice x
+        continue;
+      }
       const Eigen::Vector2d p(x, y);
       if (inside && !point_in_polygon(*inside, p)) continue;
       if (!point_in_regions(plan.free_space, p)) continue;
-      if (distance_to_walls_m(plan, p) < kClearanceM) continue;
+      if (walls.nearest_within_m(p, kClearanceM) < kClearanceM) continue;
       spots.push_back(p);
     }
   }
@@ -108,7 +153,8 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
   }
 
   Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
-  std::vector<Eigen::Vector2d> free_spots = candidate_spots(plan, nullptr);
+  const WallFaceGrid walls(plan, kClearanceM);
+  std::vector<Eigen::Vector2d> free_spots = candidate_spots(plan, walls, nullptr);
   if (free_spots.empty())
     throw InvalidInputError(
         "access_points: the floor plan has no free space at least 0.4 m from the walls");
@@ -158,7 +204,7 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
             order[static_cast<std::size_t>(rng.uniform_int(0, static_cast<std::int64_t>(i) - 1))]);
       for (std::size_t room : order) {
         if (static_cast<int>(chosen.size()) >= in_rooms_wanted) break;
-        auto spots = candidate_spots(plan, &plan.rooms[room].polygon_m);
+        auto spots = candidate_spots(plan, walls, &plan.rooms[room].polygon_m);
         shuffle(spots, rng);
         for (const auto& p : spots) {
           if (far_enough(chosen, p, spec.min_spacing_m)) {

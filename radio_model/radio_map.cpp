@@ -14,6 +14,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/thread_start.hpp"
 
 namespace wifislam {
 
@@ -101,6 +102,12 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
   if (!(options.resolution_m > 0.0))
     throw InvalidInputError(
         fmt::format("radio map resolution must be > 0 (got {})", options.resolution_m));
+  if (!(options.receiver_height_m > 0.0 && options.receiver_height_m < plan.wall_height_m)) {
+    throw InvalidInputError(
+        fmt::format("radio map: receiver height {} m is not between the floor and the ceiling "
+                    "(0 to {} m)",
+                    options.receiver_height_m, plan.wall_height_m));
+  }
   if (model.access_points().empty())
     throw InvalidInputError("radio map: the scene has no access points");
   std::optional<std::size_t> only;
@@ -168,11 +175,11 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
       }
     }
   };
-  const int threads = options.threads > 0
-                          ? options.threads
-                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  // The calling thread works too; helpers are as many as the system will start (rows are taken
+  // from a shared counter, so any number gives the same map).
+  const int threads = clamp_thread_count(options.threads);
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  start_threads(pool, threads - 1, worker);
   worker();
   for (auto& t : pool) t.join();
   return map;

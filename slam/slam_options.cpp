@@ -189,9 +189,18 @@ void validate(const SlamOptions& o) {
   const auto require = [](bool ok, const std::string& message) {
     if (!ok) throw InvalidInputError("SLAM option " + message);
   };
-  require(o.features.max_keypoints >= 8, "max_keypoints must be >= 8");
-  require(o.features.scale_factor > 1.0, "orb_scale_factor must be > 1");
-  require(o.features.pyramid_levels >= 1, "orb_levels must be >= 1");
+  // ORB ranges: beyond them OpenCV asserts (pyramid levels of zero pixels) or allocates without
+  // bound. The coarsest level keeps at least 1/32 of the image (20 px of a 640 px frame).
+  require(o.features.max_keypoints >= 8 && o.features.max_keypoints <= 100000,
+          fmt::format("max_keypoints must be in [8, 100000], got {}", o.features.max_keypoints));
+  require(o.features.scale_factor > 1.0 && o.features.scale_factor <= 2.0,
+          fmt::format("orb_scale_factor must be in (1, 2], got {}", o.features.scale_factor));
+  require(o.features.pyramid_levels >= 1 && o.features.pyramid_levels <= 32,
+          fmt::format("orb_levels must be in [1, 32], got {}", o.features.pyramid_levels));
+  require(std::pow(o.features.scale_factor, o.features.pyramid_levels - 1) <= 32.0 + 1e-9,
+          fmt::format("orb_scale_factor^(orb_levels - 1) must be <= 32 (the coarsest pyramid "
+                      "level keeps 1/32 of the image), got {}^{}",
+                      o.features.scale_factor, o.features.pyramid_levels - 1));
   require(o.features.min_depth_m >= 0 && o.features.max_depth_m > o.features.min_depth_m,
           "min_depth_m/max_depth_m must satisfy 0 <= min < max");
   require(o.transform.matching.ratio > 0 && o.transform.matching.ratio <= 1,

@@ -9,9 +9,11 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "apps/presets/shipped_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "eval/eval_options.hpp"
 #include "eval/study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -52,6 +54,9 @@ void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<wifislam::
 
 void run(CompareArgs args, const CLI::App& app) {
   using namespace wifislam;
+  OutputFolderRequest output{args.output, args.force, {}, {}};
+  for (const std::string& path : args.scenes) output.inputs.emplace_back(path);
+  const bool replace = check_output_folder(output);
   std::vector<Scene> scenes;
   for (const std::string& path : args.scenes) scenes.push_back(load_scene_file(path));
   apply_preset(args, app, scenes);
@@ -73,7 +78,7 @@ void run(CompareArgs args, const CLI::App& app) {
       fmt::print(stderr, "compare: {}\n", line);
     };
   }
-  AtomicDirectory out(args.output, args.force);
+  AtomicDirectory out(args.output, replace);
   const study::ComparisonResult result = study::run_comparison(scenes, options, out.staging_path());
   out.commit();
   fmt::print("{}", result.markdown());
@@ -110,7 +115,8 @@ WIFISLAM_COMMAND(compare, 65) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app->add_option("--fps", args->fps, "Dataset frame rate (default: each scene's)")
-      ->check(CLI::Range(0.1, 1000.0));
+      ->check(CLI::Range(0.1, 1000.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--max-frames", args->max_frames, "Cut each dataset after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_option("--jobs", args->jobs,
@@ -118,7 +124,9 @@ WIFISLAM_COMMAND(compare, 65) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app->add_option("-o,--output", args->output, "Folder to write")->required();
-  app->add_flag("--force", args->force, "Replace the output folder if it exists");
+  app->add_flag("--force", args->force,
+                "Replace the output folder if it exists and holds this tool's output (never an\n"
+                "input, the current directory, the home folder or a folder of your own)");
   app->add_flag("--no-plots", args->no_plots, "Skip the per-run PNG/SVG plots");
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   app->footer(

@@ -10,6 +10,7 @@
 #include "apps/command_registry.hpp"
 #include "apps/demo_scene.hpp"
 #include "core/atomic_file.hpp"
+#include "core/output_folder.hpp"
 #include "eval/study/comparison_study.hpp"
 #include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
@@ -20,10 +21,13 @@
 
 namespace {
 
+/// The demo's own folder: replaced on every run without --force (scripts/demo.sh runs it twice).
+constexpr const char* kDefaultOutput = "demo-output";
+
 struct DemoArgs {
-  std::string output_dir = "demo-output";
+  std::string output_dir = kDefaultOutput;
   std::string scene_path;
-  bool force = true;
+  bool force = false;
   bool quiet = false;
 };
 
@@ -46,10 +50,12 @@ void draw_scene_pictures(const wifislam::Scene& scene, const std::filesystem::pa
 
 void run_demo(const DemoArgs& args) {
   using namespace wifislam;
+  const bool replace =
+      check_output_folder({args.output_dir, args.force, kDefaultOutput, {args.scene_path}});
   const Scene scene = args.scene_path.empty()
                           ? load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
                           : load_scene_file(args.scene_path);
-  AtomicDirectory out(args.output_dir, args.force);
+  AtomicDirectory out(args.output_dir, replace);
   draw_scene_pictures(scene, out.staging_path());
 
   // rgbdslam, one seed, min_matches 10: the low end of the paper's sweep, where vanilla RGBD-SLAM
@@ -92,9 +98,13 @@ WIFISLAM_COMMAND(demo, 10) {
       "(min_matches 10) vanilla and with Wi-Fi, score both against exact ground truth and print\n"
       "the comparison\n"
       "(trajectory error, false/missed loop closures, loop-closure time, Wi-Fi overhead).\n"
-      "Everything, plots included, goes into the output folder (replaced if it exists).\n"
+      "Everything, plots included, goes into the output folder; ./demo-output, the default,\n"
+      "is replaced on every run, any other existing folder only with --force.\n"
       "For bigger studies use `wifislam compare`.");
   app->add_option("-o,--output", args->output_dir, "Output folder")->capture_default_str();
+  app->add_flag("--force", args->force,
+                "Replace an existing output folder other than the default (only this tool's "
+                "output)");
   app->add_option("--scene", args->scene_path, "Use this scene file instead of the embedded one")
       ->check(CLI::ExistingFile);
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");

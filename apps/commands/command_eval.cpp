@@ -12,6 +12,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "eval/eval.hpp"
 
 namespace {
@@ -24,6 +25,7 @@ struct EvalArgs {
   std::optional<double> time_offset_s;
   bool scale = false;
   bool no_plots = false;
+  bool force = false;
   std::vector<std::string> settings;
 };
 
@@ -64,8 +66,10 @@ void run(const EvalArgs& args) {
   }
   if (args.time_offset_s) options.time_offset_s = *args.time_offset_s;
   for (const std::string& s : args.settings) eval::set_option(options, s);
+  const std::filesystem::path default_out = default_output(args.input);
   const std::filesystem::path out =
-      args.output.empty() ? default_output(args.input) : std::filesystem::path(args.output);
+      args.output.empty() ? default_out : std::filesystem::path(args.output);
+  check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}});
   const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
   eval::write_evaluation(out, ev, args.input, args.dataset_dir, !args.no_plots);
   fmt::print("ATE RMSE           {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}; {} poses, {})\n",
@@ -123,7 +127,11 @@ WIFISLAM_COMMAND(eval, 70) {
       ->required();
   app->add_option("-o,--output", args->output,
                   "Folder to write (default: <run>/eval, or <file>_eval beside a trajectory "
-                  "file; replaced if it exists)");
+                  "file, which is replaced if it exists; any other existing folder only with "
+                  "--force)");
+  app->add_flag("--force", args->force,
+                "Replace an existing output folder that is not the default (only this tool's "
+                "output, never an input, the current directory or the home folder)");
   app->add_option("--align", args->align,
                   "Move the estimate onto ground truth before ATE: none, se3 (rigid Umeyama, "
                   "default, as evaluate_ate.py) or sim3 (with scale, evo -as)");

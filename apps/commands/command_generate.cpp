@@ -9,6 +9,8 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
+#include "core/output_folder.hpp"
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/scene/scene_loader.hpp"
 
@@ -40,6 +42,7 @@ void draw_progress(const wifislam::GenerateProgress& p) {
 
 void run_generate(const GenerateArgs& args) {
   using namespace wifislam;
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.scene_path}});
   const Scene scene = load_scene_file(args.scene_path);
   GenerateOptions options;
   options.seed = args.seed;
@@ -47,7 +50,7 @@ void run_generate(const GenerateArgs& args) {
   options.max_frames = args.max_frames;
   options.images = !args.no_images;
   options.threads = args.threads;
-  options.overwrite = args.force;
+  options.overwrite = replace;
   if (cli::stderr_is_tty() && !args.quiet) {
     std::int64_t last_drawn = -1;
     options.on_progress = [last_drawn](const GenerateProgress& p) mutable {
@@ -83,15 +86,21 @@ WIFISLAM_COMMAND(generate, 50) {
       ->required()
       ->check(CLI::ExistingFile);
   app->add_option("-o,--output", args->output, "Dataset folder to create")->required();
-  app->add_option("--seed", args->seed, "Replace the scene's seed");
+  app->add_option("--seed", args->seed, "Replace the scene's seed")
+      ->check(wifislam::cli::kSeedValidator);
   app->add_option("--fps", args->fps, "Camera frame rate (default: the scene's, 30)")
-      ->check(CLI::Range(0.1, 1000.0));
+      ->check(CLI::Range(0.1, 1000.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--no-images", args->no_images, "Write poses, odometry and Wi-Fi only");
-  app->add_option("--threads", args->threads, "PNG encoding threads (default: one per core)")
+  app->add_option("--threads", args->threads,
+                  "PNG encoding threads (default: one per core; at most 4 per core, fewer if the\n"
+                  "system will not start more)")
       ->check(CLI::NonNegativeNumber);
-  app->add_flag("--force", args->force, "Replace the output folder if it exists");
+  app->add_flag("--force", args->force,
+                "Replace the output folder if it exists and holds this tool's output (never an\n"
+                "input, the current directory, the home folder or a folder of your own)");
   app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   app->callback([args] { run_generate(*args); });
 }

@@ -8,6 +8,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/radio_map.hpp"
@@ -30,7 +31,16 @@ struct RadiomapArgs {
 
 void run_radiomap(const RadiomapArgs& args) {
   using namespace wifislam;
+  check_output_file(args.output, {args.scene_path});
+  if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
   const Scene scene = load_scene_file(args.scene_path);
+  const double ceiling_m = scene.building.wall_height_m;
+  if (!(args.height_m > 0.0 && args.height_m < ceiling_m)) {
+    throw InvalidInputError(fmt::format(
+        "--height: {} m is not between the floor and the ceiling (0 to {} m, the scene's "
+        "building.wall_height_m)",
+        args.height_m, ceiling_m));
+  }
   const World world = generate_world(scene);
   PropagationModel model(world, make_access_points(scene, world.plan),
                          PropagationOptions::from_scene(scene.radio), scene.seed);
@@ -71,7 +81,8 @@ WIFISLAM_COMMAND(radiomap, 40) {
   app->add_option("--res", args->resolution_m, "Grid resolution (m)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  app->add_option("--height", args->height_m, "Receiver height above the floor (m)")
+  app->add_option("--height", args->height_m,
+                  "Receiver height above the floor (m), below the scene's ceiling")
       ->capture_default_str();
   app->add_option("--band", args->band, "Radio: 2.4, 5 or best (the stronger of the two)")
       ->capture_default_str()

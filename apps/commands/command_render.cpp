@@ -13,6 +13,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "core/pose.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/render/depth_sensor_model.hpp"
@@ -60,6 +61,12 @@ PlanarPose parse_pose(const std::string& text) {
 void run_render(const RenderArgs& args) {
   using namespace wifislam;
   const PlanarPose planar = parse_pose(args.pose);
+  const std::string rgb_path = args.prefix + "_rgb.png";
+  const std::string depth_path = args.prefix + "_depth.png";
+  const std::string color_path = args.prefix + "_depth_color.png";
+  for (const std::string& path : {rgb_path, depth_path, color_path}) {
+    check_output_file(path, {args.scene_path});
+  }
   const Scene scene = load_scene_file(args.scene_path);
   const World world = generate_world(scene);
   const CameraSpec& camera = scene.sensors.camera;
@@ -82,9 +89,6 @@ void run_render(const RenderArgs& args) {
   const DepthSensorModel sensor(depth_spec, camera.intrinsics, scene.seed);
   const cv::Mat depth_m = sensor.measure(view, args.frame_index);
 
-  const std::string rgb_path = args.prefix + "_rgb.png";
-  const std::string depth_path = args.prefix + "_depth.png";
-  const std::string color_path = args.prefix + "_depth_color.png";
   write_color_png(rgb_path, view.color_bgr);
   write_depth_png(depth_path, depth_m);
   write_depth_false_color_png(color_path, depth_m, depth_spec.min_range_m, depth_spec.max_range_m);

@@ -3,14 +3,19 @@
 // file, on frames streamed straight from the generator (nothing written but the run folder).
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
+#include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/frame_limited_stream.hpp"
+#include "core/output_folder.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
@@ -30,24 +35,49 @@ struct SlamArgs {
   // Scene input only.
   std::int64_t max_frames = -1;
   double fps = 0.0;
-  std::int64_t scene_seed = -1;
+  std::optional<std::uint64_t> scene_seed;
 };
 
 std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohmann::json& info) {
   using namespace wifislam;
   const std::filesystem::path input = args.input;
   if (std::filesystem::is_directory(input)) {
+    // A dataset's frame rate and noise are fixed when it is generated: say so rather than
+    // ignore the options.
+    if (args.fps > 0) {
+      throw ParseError("--fps", fmt::format("{}", args.fps),
+                       "applies to scene input only; a dataset's frame rate is fixed (generate "
+                       "it again with `wifislam generate --fps`)");
+    }
+    if (args.scene_seed) {
+      throw ParseError("--seed", std::to_string(*args.scene_seed),
+                       "applies to scene input only; a dataset was rendered with its scene's seed "
+                       "(for SLAM's own draws use --set seed=N)");
+    }
+    // An interrupted `generate` leaves a staging folder with this tool's marker and no manifest
+    // (written last): its files are incomplete, so SLAM on it would score a truncated route.
+    if (!args.no_verify && !std::filesystem::exists(input / dataset::kManifest) &&
+        (std::filesystem::exists(input / kOutputMarkerFile) ||
+         input.filename().string().ends_with(".partial"))) {
+      throw InvalidInputError(input.string() +
+                              ": an unfinished dataset (no manifest.json: `wifislam generate` was "
+                              "interrupted?); generate it again, or pass --no-verify to read what "
+                              "is there");
+    }
     DatasetReaderOptions options;
     options.verify_checksums = !args.no_verify;
-    info["input"] = {{"kind", "dataset"}, {"path", input.string()}};
-    return std::make_unique<DatasetReader>(input, options);
+    info["input"] = {
+        {"kind", "dataset"}, {"path", input.string()}, {"max_frames", args.max_frames}};
+    std::unique_ptr<SensorStream> reader = std::make_unique<DatasetReader>(input, options);
+    if (args.max_frames < 0) return reader;
+    return std::make_unique<FrameLimitedStream>(std::move(reader), args.max_frames);
   }
   if (!std::filesystem::is_regular_file(input)) {
     throw IoError(input.string() + ": neither a dataset folder nor a scene file");
   }
   const Scene scene = load_scene_file(input.string());
   GenerateOptions options;
-  if (args.scene_seed >= 0) options.seed = static_cast<std::uint64_t>(args.scene_seed);
+  if (args.scene_seed) options.seed = *args.scene_seed;
   if (args.fps > 0) options.fps = args.fps;
   options.max_frames = args.max_frames;
   info["input"] = {{"kind", "scene"},
@@ -74,9 +104,7 @@ void run(const SlamArgs& args) {
   options.wifi.enabled = args.wifi;
   for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
   slam::validate(options);
-  if (std::filesystem::exists(args.output) && !args.force) {
-    throw IoError(args.output + ": already exists (pass --force to replace it)");
-  }
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
   nlohmann::json info;
   std::unique_ptr<SensorStream> stream = open_input(args, info);
   const bool tty = cli::stderr_is_tty();
@@ -87,7 +115,7 @@ void run(const SlamArgs& args) {
   const std::unique_ptr<slam::SlamSystem> system =
       slam::run_slam(*stream, options, summary, progress);
   if (tty) fmt::print(stderr, "\n");
-  slam::write_run_folder(args.output, *system, summary, args.force, info);
+  slam::write_run_folder(args.output, *system, summary, replace, info);
   fmt::print("{}", summary.FullReport());
   fmt::print("wrote {}\n", std::filesystem::absolute(args.output).lexically_normal().string());
 }
@@ -116,10 +144,17 @@ WIFISLAM_COMMAND(slam, 60) {
                   "SLAM option key=value (repeatable), e.g. --set min_matches=15 "
                   "--set inlier_distance=2.0");
   app->add_option("-o,--output", args->output, "Run folder to write")->required();
-  app->add_flag("--force", args->force, "Replace an existing run folder");
+  app->add_flag("--force", args->force,
+                "Replace an existing run folder (never an input, the current directory, the\n"
+                "home folder or a folder that is not this tool's output)");
   app->add_flag("--no-verify", args->no_verify, "Do not check the dataset's SHA-256 sums");
-  app->add_option("--max-frames", args->max_frames, "Scene input: stop after this many frames");
-  app->add_option("--fps", args->fps, "Scene input: frame rate (default: the scene's)");
-  app->add_option("--seed", args->scene_seed, "Scene input: replace the scene's seed");
+  app->add_option("--max-frames", args->max_frames,
+                  "Stop after this many frames (scene or dataset input)")
+      ->check(CLI::PositiveNumber);
+  app->add_option("--fps", args->fps, "Scene input only: frame rate (default: the scene's)")
+      ->check(CLI::Range(0.1, 1000.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
+  app->add_option("--seed", args->scene_seed, "Scene input only: replace the scene's seed")
+      ->check(wifislam::cli::kSeedValidator);
   app->callback([args] { run(*args); });
 }

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "core/output_folder.hpp"
 #include "radio_model/ap_placement.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/plan_drawing.hpp"
@@ -20,6 +21,7 @@ struct WorldArgs {
 
 void run_world(const WorldArgs& args) {
   using namespace wifislam;
+  if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
   const Scene scene = load_scene_file(args.scene_path);
   const World world = generate_world(scene);
   // The access points as the radio model places them (explicit list or placement generator).
@@ -33,6 +35,7 @@ void run_world(const WorldArgs& args) {
     fmt::print("wrote {}\n", png.string());
     if (args.svg && png.extension() != ".svg") {
       const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
+      check_output_file(svg, {args.scene_path});
       draw_floor_plan(world, svg, options);
       fmt::print("wrote {}\n", svg.string());
     }

@@ -12,6 +12,7 @@
 #include "core/atomic_file.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/thread_start.hpp"
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
 #include "eval/run_divergence.hpp"
@@ -260,9 +261,12 @@ ComparisonResult run_comparison(const std::vector<Scene>& scenes, const Comparis
       }
     }
   };
-  const int threads = std::min<int>(options.jobs, static_cast<int>(jobs.size()));
+  // The calling thread is one worker; the others are started as far as the machine allows (a
+  // process limit must not end the program), and the jobs queue works with however many run.
+  const int threads =
+      std::min<int>(clamp_thread_count(options.jobs), static_cast<int>(jobs.size()));
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  start_threads(pool, threads - 1, worker);
   worker();
   for (std::thread& t : pool) t.join();
   if (first_error) std::rethrow_exception(first_error);

@@ -21,6 +21,7 @@
 #include "core/dataset_manifest.hpp"
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
+#include "core/thread_start.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
@@ -93,12 +94,14 @@ WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_pat
 }
 
 /// A fixed set of worker threads running jobs in submission order of start; results are
-/// collected through futures in submission order.
+/// collected through futures in submission order. Starts as many of the requested threads as the
+/// system allows (`size()`, possibly 0).
 class WorkerPool {
  public:
   explicit WorkerPool(int threads) {
-    for (int i = 0; i < threads; ++i) workers_.emplace_back([this] { run(); });
+    start_threads(workers_, threads, [this] { run(); });
   }
+  int size() const { return static_cast<int>(workers_.size()); }
   ~WorkerPool() {
     {
       std::lock_guard lock(mutex_);
@@ -231,10 +234,7 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
   summary.access_points = static_cast<std::int64_t>(pipeline.radio().access_points().size());
   for (const AccessPoint& ap : pipeline.radio().access_points())
     summary.bssids += static_cast<std::int64_t>(ap.bssids.size());
-  int threads = options.threads > 0
-                    ? options.threads
-                    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  summary.threads = options.images ? threads : 1;
+  int threads = clamp_thread_count(options.threads);
 
   auto t_io = Clock::now();
   write_file_atomic(dir / dataset::kScene, resolved_scene_yaml(scene));
@@ -271,7 +271,13 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
   };
   std::deque<Pending> pending;
   std::optional<WorkerPool> pool;
-  if (options.images && threads > 1) pool.emplace(threads);
+  if (options.images && threads > 1) {
+    pool.emplace(threads);
+    // A process or memory limit may allow fewer threads: encode with those, or inline.
+    threads = std::max(1, pool->size());
+    if (pool->size() == 0) pool.reset();
+  }
+  summary.threads = options.images ? threads : 1;
   const std::size_t max_pending = static_cast<std::size_t>(2 * threads);
   const std::int64_t frames_total = pipeline.schedule().frame_count();
   std::int64_t frames_done = 0;
@@ -308,7 +314,13 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
       ++summary.odometry_readings;
     } else if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
       wifi.write(format_wifi_csv_rows(*scan));
-      ++summary.wifi_scans;
+      // wifi.csv has one row per reading, so a scan that heard nothing leaves no trace in it:
+      // the manifest counts the scans the file holds, and the silent ones apart.
+      if (scan->readings.empty()) {
+        ++summary.wifi_scans_empty;
+      } else {
+        ++summary.wifi_scans;
+      }
       summary.wifi_readings += static_cast<std::int64_t>(scan->readings.size());
       const int pause = scan_windows[scan_index++].pause_index;
       if (pause >= 0) {
@@ -358,11 +370,15 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
                        {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
                                              EIGEN_MINOR_VERSION)}};
   manifest.parameters_json = parameters_json(scene, options);
-  manifest.counts = {
-      {"frames", options.images ? summary.frames : 0},  {"groundtruth_poses", summary.frames},
-      {"odometry_readings", summary.odometry_readings}, {"wifi_scans", summary.wifi_scans},
-      {"wifi_readings", summary.wifi_readings},         {"pauses", summary.pauses},
-      {"access_points", summary.access_points},         {"bssids", summary.bssids}};
+  manifest.counts = {{"frames", options.images ? summary.frames : 0},
+                     {"groundtruth_poses", summary.frames},
+                     {"odometry_readings", summary.odometry_readings},
+                     {"wifi_scans", summary.wifi_scans},
+                     {"wifi_scans_that_heard_nothing", summary.wifi_scans_empty},
+                     {"wifi_readings", summary.wifi_readings},
+                     {"pauses", summary.pauses},
+                     {"access_points", summary.access_points},
+                     {"bssids", summary.bssids}};
   std::vector<std::string> files;
   if (options.images) files = {dataset::kRgbList, dataset::kDepthList, dataset::kAssociations};
   for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
@@ -408,7 +424,10 @@ std::string GenerateSummary::full_report() const {
                    frames, images ? "" : " (poses only, no images)", fps, duration_s,
                    route_length_m);
   r += fmt::format("pauses            {}\n", pauses);
-  r += fmt::format("wifi scans        {} ({} readings)\n", wifi_scans, wifi_readings);
+  r += fmt::format("wifi scans        {} ({} readings){}\n", wifi_scans, wifi_readings,
+                   wifi_scans_empty > 0
+                       ? fmt::format("; {} more heard no access point", wifi_scans_empty)
+                       : std::string());
   r += fmt::format(
       "access points     {} ({} BSSIDs); heard per pause: mean {:.1f}, min {}, max {}\n",
       access_points, bssids, aps_heard_per_pause_mean, aps_heard_per_pause_min,

@@ -16,7 +16,8 @@
 namespace wifislam {
 
 /// Generates the dataset of `scene` (with the options' overrides) into `output`. Throws
-/// IoError when `output` exists and `options.overwrite` is false, or on write errors; the
+/// InvalidInputError when `output` exists and `options.overwrite` is false, or when it may not be
+/// replaced at all (AtomicDirectory, core/output_folder.hpp); IoError on write errors; the
 /// scene's and the renderer's errors pass through.
 GenerateSummary generate_dataset(const Scene& scene, const std::filesystem::path& output,
                                  const GenerateOptions& options = {});

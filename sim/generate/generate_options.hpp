@@ -29,9 +29,12 @@ struct GenerateOptions {
   /// false: write poses, odometry and Wi-Fi only (no rendering; fast radio studies).
   bool images = true;
   /// Threads encoding and writing PNGs while the main thread renders (1 = encode inline;
-  /// 0 = one per core). The output is byte-identical whatever the count.
+  /// 0 = one per core). Clamped to 4 per core, and fewer when a process or memory limit will
+  /// not start more (GenerateSummary::threads says how many ran). The output is byte-identical
+  /// whatever the count.
   int threads = 0;
-  /// Replace an existing output folder.
+  /// Replace an existing output folder (only one that looks like this tool's output, and never
+  /// `/`, the current directory or the home folder: core/output_folder.hpp).
   bool overwrite = false;
   /// Renderer settings (near/far planes, lighting).
   RenderOptions render;
@@ -49,7 +52,8 @@ struct GenerateSummary {
   int threads = 1;
   std::int64_t frames = 0;
   std::int64_t odometry_readings = 0;
-  std::int64_t wifi_scans = 0;
+  std::int64_t wifi_scans = 0;        // scans with at least one reading (wifi.csv's scans)
+  std::int64_t wifi_scans_empty = 0;  // scans that heard no access point (no row in wifi.csv)
   std::int64_t wifi_readings = 0;
   std::int64_t pauses = 0;
   std::int64_t access_points = 0;

@@ -12,6 +12,8 @@ GeneratorStream::GeneratorStream(const Scene& scene, const GenerateOptions& opti
 
 GeneratorStream::~GeneratorStream() = default;
 
+bool GeneratorStream::has_wifi() const { return !pipeline_->radio().access_points().empty(); }
+
 std::optional<SensorEvent> GeneratorStream::next() {
   auto generated = pipeline_->next();
   if (!generated) return std::nullopt;

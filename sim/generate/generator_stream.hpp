@@ -24,7 +24,9 @@ class GeneratorStream final : public SensorStream {
   std::optional<SensorEvent> next() override;
   const CameraIntrinsics& intrinsics() const override;
   Pose camera_in_base() const override;
-  bool has_wifi() const override { return true; }
+  /// False for a scene without access points: no scan can hear anything (as in a dataset whose
+  /// wifi.csv holds no scan), so the Wi-Fi variant refuses it and vanilla runs.
+  bool has_wifi() const override;
   bool has_odometry() const override { return true; }
   std::string description() const override;
 

@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -130,20 +131,20 @@ class YamlReader {
       fail(*n, key, "expected one of " + options + "; got " + describe(*n));
     }
   }
-  void vec2(const char* key, Eigen::Vector2d& out) {
-    if (auto n = fetch(key)) out = to_vector<2>(*n, key);
+  void vec2(const char* key, Eigen::Vector2d& out, Limits limits) {
+    if (auto n = fetch(key)) out = to_vector<2>(*n, key, {limits, limits});
   }
-  void vec3(const char* key, Eigen::Vector3d& out) {
-    if (auto n = fetch(key)) out = to_vector<3>(*n, key);
+  void vec3(const char* key, Eigen::Vector3d& out, Limits xy, Limits z) {
+    if (auto n = fetch(key)) out = to_vector<3>(*n, key, {xy, xy, z});
   }
-  void polygon(const char* key, std::vector<Eigen::Vector2d>& out) {
+  void polygon(const char* key, std::vector<Eigen::Vector2d>& out, Limits limits) {
     if (auto n = fetch(key)) {
       if (!n->IsSequence() || n->size() < 3) {
         fail(*n, key, "expected a list of at least 3 [x, y] points, got " + describe(*n));
       }
       out.clear();
       for (std::size_t i = 0; i < n->size(); ++i) {
-        out.push_back(to_vector<2>((*n)[i], fmt::format("{}[{}]", key, i)));
+        out.push_back(to_vector<2>((*n)[i], fmt::format("{}[{}]", key, i), {limits, limits}));
       }
     }
   }
@@ -255,12 +256,13 @@ class YamlReader {
   }
 
   template <int N>
-  Eigen::Matrix<double, N, 1> to_vector(const YAML::Node& n, const std::string& key) const {
+  Eigen::Matrix<double, N, 1> to_vector(const YAML::Node& n, const std::string& key,
+                                        const std::array<Limits, N>& limits) const {
     if (!n.IsSequence() || static_cast<int>(n.size()) != N) {
       fail(n, key, fmt::format("expected a list of {} numbers, got {}", N, describe(n)));
     }
     Eigen::Matrix<double, N, 1> v;
-    for (int i = 0; i < N; ++i) v[i] = to_number(n[i], fmt::format("{}[{}]", key, i), schema::kAny);
+    for (int i = 0; i < N; ++i) v[i] = to_number(n[i], fmt::format("{}[{}]", key, i), limits[i]);
     return v;
   }
 
@@ -337,15 +339,15 @@ class YamlWriter {
     for (int i = 0; i < v.size(); ++i) out_ << exact(v[i]);
     out_ << YAML::EndSeq;
   }
-  void vec2(const char* key, const Eigen::Vector2d& v) {
+  void vec2(const char* key, const Eigen::Vector2d& v, Limits) {
     out_ << YAML::Key << key << YAML::Value;
     write_vector(v);
   }
-  void vec3(const char* key, const Eigen::Vector3d& v) {
+  void vec3(const char* key, const Eigen::Vector3d& v, Limits, Limits) {
     out_ << YAML::Key << key << YAML::Value;
     write_vector(v);
   }
-  void polygon(const char* key, const std::vector<Eigen::Vector2d>& points) {
+  void polygon(const char* key, const std::vector<Eigen::Vector2d>& points, Limits) {
     out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
     for (const auto& p : points) write_vector(p);
     out_ << YAML::EndSeq;
@@ -483,6 +485,22 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
     invalid(locate, "sensors.depth.max_range_m", "must be larger than min_range_m");
   }
   const auto& ap = scene.access_points;
+  // Heights within the building: from the floor to the ceiling.
+  const double ceiling_m = scene.building.wall_height_m;
+  if (ap.height_m > ceiling_m) {
+    invalid(locate, "access_points.height_m",
+            fmt::format("{} m is above the ceiling (building.wall_height_m {} m)", ap.height_m,
+                        ceiling_m));
+  }
+  for (std::size_t i = 0; i < ap.explicit_list.size(); ++i) {
+    const double z_m = ap.explicit_list[i].position_m.z();
+    if (!(z_m >= 0.0 && z_m <= ceiling_m)) {
+      invalid(locate, fmt::format("access_points.list[{}].position_m[2]", i),
+              fmt::format("height {} m is not within the building (0 to {} m, "
+                          "building.wall_height_m)",
+                          z_m, ceiling_m));
+    }
+  }
   if (ap.placement == ApPlacement::kExplicit && ap.explicit_list.empty() && ap.count > 0) {
     invalid(locate, "access_points.list", "placement 'explicit' needs a list of access points");
   }

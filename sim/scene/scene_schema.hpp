@@ -7,7 +7,8 @@
 //   number(key, double&, Limits), integer(key, int&, Limits), uint64(key, uint64_t&),
 //   boolean(key, bool&), text(key, std::string&), optional_number(key, std::optional<double>&,
 //   Limits), optional_uint64(key, std::optional<uint64_t>&), choice(key, Enum&, names),
-//   vec2(key, Eigen::Vector2d&), vec3(key, Eigen::Vector3d&), polygon(key, vector<Vector2d>&),
+//   vec2(key, Eigen::Vector2d&, Limits), vec3(key, Eigen::Vector3d&, Limits xy, Limits z),
+//   polygon(key, vector<Vector2d>&, Limits),
 //   text_list(key, vector<string>&), interval(key, double& lo, double& hi, Limits),
 //   object(key, T&), list(key, vector<T>&), and `required(key)` to mark the next key mandatory.
 
@@ -32,6 +33,12 @@ inline constexpr Limits kAny{};
 inline constexpr Limits kPositive{0.0, std::numeric_limits<double>::infinity(), true};
 inline constexpr Limits kNonNegative{0.0, std::numeric_limits<double>::infinity(), false};
 inline constexpr Limits kUnit{0.0, 1.0, false};
+/// Every coordinate in a scene: within 10 km of the origin. Larger numbers describe no building
+/// and only overflow the floor-plan geometry (exact CGAL arithmetic) and the radio ray casts.
+inline constexpr Limits kCoordinateM{-10000.0, 10000.0, false};
+/// A height above the floor, up to the highest ceiling a scene may have (building.wall_height_m);
+/// the scene validation compares it with the scene's own ceiling.
+inline constexpr Limits kHeightM{0.0, 10.0, false};
 
 template <class E>
 using Names = std::vector<std::pair<E, std::string_view>>;
@@ -55,7 +62,7 @@ void visit(V& v, SceneNode& n) {
   v.required();
   v.text("id", n.id);
   v.required();
-  v.vec2("position_m", n.position_m);
+  v.vec2("position_m", n.position_m, kCoordinateM);
 }
 
 template <class V>
@@ -90,7 +97,7 @@ void visit(V& v, Corridor& c) {
 template <class V>
 void visit(V& v, OpenArea::Pillar& p) {
   v.required();
-  v.vec2("center_m", p.center_m);
+  v.vec2("center_m", p.center_m, kCoordinateM);
   v.number("size_m", p.size_m, Limits{0.1, 5.0});
 }
 
@@ -99,7 +106,7 @@ void visit(V& v, OpenArea& a) {
   v.required();
   v.text("id", a.id);
   v.required();
-  v.polygon("polygon_m", a.polygon_m);
+  v.polygon("polygon_m", a.polygon_m, kCoordinateM);
   v.choice("material", a.material, material_names());
   v.list("pillars", a.pillars);
 }
@@ -115,7 +122,7 @@ void visit(V& v, AppearanceThemes& t) {
 template <class V>
 void visit(V& v, Landmark& l) {
   v.required();
-  v.vec2("position_m", l.position_m);
+  v.vec2("position_m", l.position_m, kCoordinateM);
   v.number("height_m", l.height_m, Limits{0.2, 5.0});
   v.number("width_m", l.width_m, Limits{0.1, 5.0});
   v.text("kind", l.kind);
@@ -137,7 +144,7 @@ void visit(V& v, Appearance& a) {
 template <class V>
 void visit(V& v, AccessPointSpec& s) {
   v.required();
-  v.vec3("position_m", s.position_m);
+  v.vec3("position_m", s.position_m, kCoordinateM, kHeightM);
   v.optional_number("tx_power_dbm", s.tx_power_dbm, Limits{-10.0, 36.0});
 }
 
@@ -151,13 +158,13 @@ void visit(V& v, AccessPoints& a) {
                               {ApPlacement::kColinear, "colinear"}});
   v.integer("count", a.count, Limits{0, 10000});
   v.optional_uint64("seed", a.seed);
-  v.number("height_m", a.height_m, Limits{0.0, 10.0});
+  v.number("height_m", a.height_m, kHeightM);
   v.number("tx_power_dbm", a.tx_power_dbm, Limits{-10.0, 36.0});
   v.integer("ssids_per_radio", a.ssids_per_radio, Limits{1, 16});
   v.number("min_spacing_m", a.min_spacing_m, kNonNegative);
   v.list("list", a.explicit_list);
-  v.vec2("line_from_m", a.line_from_m);
-  v.vec2("line_to_m", a.line_to_m);
+  v.vec2("line_from_m", a.line_from_m, kCoordinateM);
+  v.vec2("line_to_m", a.line_to_m, kCoordinateM);
 }
 
 template <class V>
@@ -174,7 +181,7 @@ void visit(V& v, Route& r) {
   v.number("speed_mps", r.speed_mps, Limits{0.05, 5.0});
   v.number("max_yaw_rate_radps", r.max_yaw_rate_radps, Limits{0.05, 10.0});
   v.number("turn_radius_m", r.turn_radius_m, Limits{0.0, 20.0});
-  v.number("min_wall_clearance_m", r.min_wall_clearance_m, kNonNegative);
+  v.number("min_wall_clearance_m", r.min_wall_clearance_m, Limits{0.0, 25.0});
   v.object("pause", r.pause);
 }
 

@@ -74,7 +74,8 @@ std::unique_ptr<FrontEnd> make_front_end(const FrontEndContext& context) {
   }
   if (options.wifi.enabled && !context.stream_has_wifi) {
     throw InvalidInputError(
-        "the Wi-Fi variant (wifi=true) needs Wi-Fi scans, but the input has none (no wifi.csv)");
+        "the Wi-Fi variant (wifi=true) needs Wi-Fi scans, but the input has none (no wifi.csv, "
+        "or one without a scan: a scene without access points); run without --wifi");
   }
   std::unique_ptr<FrontEnd> front_end = factory(context);
   if (options.wifi.enabled) {

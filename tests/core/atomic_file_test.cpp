@@ -37,7 +37,7 @@ TEST(AtomicDirectory, CommitMovesTheFolderIntoPlace) {
     dir.commit();
   }
   EXPECT_TRUE(fs::exists(out / "a.txt"));
-  EXPECT_THROW(AtomicDirectory(out, false), IoError);  // no silent overwrite
+  EXPECT_THROW(AtomicDirectory(out, false), InvalidInputError);  // no silent overwrite
   {
     AtomicDirectory dir(out, true);
     std::ofstream(dir.staging_path() / "b.txt") << "y";

@@ -88,19 +88,30 @@ TEST_F(GenerateCli, BadSceneFailsAndWritesNothing) {
 }
 
 TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
-  const fs::path out = scratch_ / "existing";
-  fs::create_directories(out);
-  test::write_text(out / "keep.txt", "mine");
+  // A folder of the user's is never replaced, --force or not.
+  const fs::path mine = scratch_ / "existing";
+  fs::create_directories(mine);
+  test::write_text(mine / "keep.txt", "mine");
+  for (const char* force : {"", " --force"}) {
+    const RunResult r =
+        run("generate " + scene_.string() + " -o " + mine.string() + " --max-frames 3 -q" + force,
+            scratch_);
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_NE(r.err.find("does not look like wifislam output"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_text(mine / "keep.txt"), "mine");
+  }
+  // A dataset is replaced with --force only.
+  const fs::path out = make_dataset("dataset");
+  const std::string manifest = test::read_text(out / dataset::kManifest);
   RunResult r =
       run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3", scratch_);
-  EXPECT_EQ(r.exit_code, 3);
+  EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  EXPECT_EQ(test::read_text(out / "keep.txt"), "mine");
+  EXPECT_EQ(test::read_text(out / dataset::kManifest), manifest);
   r = run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3 --force -q",
           scratch_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_FALSE(fs::exists(out / "keep.txt"));
-  EXPECT_TRUE(fs::exists(out / dataset::kManifest));
+  EXPECT_NE(test::read_text(out / dataset::kManifest), manifest);
 }
 
 // Each damage: a non-zero exit, a message naming the file, and the folder left as it was.
@@ -147,6 +158,40 @@ TEST_F(GenerateCli, ManifestMismatchIsAClearError) {
   const RunResult r = run("check " + dir.string(), scratch_);
   EXPECT_NE(r.err.find("manifest mismatch"), std::string::npos) << r.err;
   EXPECT_EQ(run("check " + dir.string() + " --no-verify", scratch_).exit_code, 0);
+}
+
+// A scene without access points is a legitimate study case (no Wi-Fi): its scans hear nothing,
+// which wifi.csv (one row per reading) cannot show, so the manifest counts the scans the file
+// holds and the silent ones apart; `check` accepts the dataset, vanilla SLAM runs on it and the
+// Wi-Fi variant refuses it with a message that says why.
+TEST_F(GenerateCli, ZeroAccessPointsGiveADatasetCheckAcceptsVanillaRunsAndWifiRefuses) {
+  std::string yaml = test::kSmallSceneYaml;
+  const std::string aps = "access_points: {placement: rooms, count: 6}";
+  yaml.replace(yaml.find(aps), aps.size(), "access_points: {placement: rooms, count: 0}");
+  const fs::path scene = scratch_ / "no_aps.yaml";
+  test::write_text(scene, yaml);
+  const fs::path dataset = scratch_ / "no_aps";
+  const RunResult generated = run("generate " + scene.string() + " -o " + dataset.string() +
+                                      " --fps 2 --max-frames 40 --threads 2 -q",
+                                  scratch_);
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  const std::string manifest = test::read_text(dataset / dataset::kManifest);
+  EXPECT_NE(manifest.find("\"wifi_scans\": 0"), std::string::npos) << manifest;
+  EXPECT_EQ(manifest.find("\"wifi_scans_that_heard_nothing\": 0"), std::string::npos)
+      << "the route should pause and scan within 40 frames:\n"
+      << manifest;
+
+  const RunResult checked = run("check " + dataset.string(), scratch_);
+  EXPECT_EQ(checked.exit_code, 0) << checked.err;
+  const RunResult vanilla =
+      run("slam " + dataset.string() + " -o " + (scratch_ / "vanilla").string(), scratch_);
+  EXPECT_EQ(vanilla.exit_code, 0) << vanilla.err;
+  EXPECT_TRUE(fs::is_regular_file(scratch_ / "vanilla" / "trajectory.txt"));
+  const RunResult wifi =
+      run("slam " + dataset.string() + " --wifi -o " + (scratch_ / "wifi").string(), scratch_);
+  EXPECT_EQ(wifi.exit_code, 2) << wifi.err;
+  EXPECT_NE(wifi.err.find("without a scan"), std::string::npos) << wifi.err;
+  EXPECT_FALSE(fs::exists(scratch_ / "wifi"));
 }
 
 }  // namespace

@@ -8,21 +8,14 @@
 
 #include "core/error.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
+#include "tests/wifi/synthetic_scans.hpp"
 
 namespace wifislam::slam {
 namespace {
 
-WifiScan scan_of(double start_s, std::vector<std::pair<std::uint64_t, int>> aps) {
-  WifiScan scan;
-  scan.start_time = Timestamp::from_seconds(start_s);
-  scan.end_time = scan.time = Timestamp::from_seconds(start_s + 1.0);
-  for (const auto& [ap, rssi] : aps)
-    scan.readings.push_back({MacAddress{ap}, 2412000, rssi, "corp"});
-  return scan;
-}
-
-const std::vector<std::pair<std::uint64_t, int>> kPlaceA = {{0x10, -40}, {0x20, -60}, {0x30, -90}};
-const std::vector<std::pair<std::uint64_t, int>> kPlaceB = {{0x10, -90}, {0x20, -60}, {0x30, -40}};
+using test::kPlaceA;
+using test::kPlaceB;
+using test::scan_of;
 
 /// Drives RGBD-SLAM holding a Wi-Fi module over a chain of keyframes, each tracked from the
 /// previous one.

@@ -6,6 +6,7 @@
 #include "core/error.hpp"
 #include "sim/world/floor_plan_builder.hpp"
 #include "sim/world/plan_queries.hpp"
+#include "sim/world/wall_face_grid.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
@@ -151,6 +152,33 @@ TEST(FloorPlan, OpenAreaWithPillarsIsFreeSpaceAroundSolidPillars) {
   EXPECT_EQ(f1.wall_id, f2.wall_id);
   EXPECT_EQ(f1.material, WallMaterial::kConcrete);
   EXPECT_FALSE(world.plan.lights.empty());
+}
+
+// The grid answers "is a wall closer than r?" exactly as scanning every face does: the same
+// distance below r, infinity at or above it. Points on a fine lattice over the whole plan,
+// including inside walls and outside the building, with several radii.
+TEST(FloorPlan, WallFaceGridAgreesWithTheFullScan) {
+  const Scene scene = test::square_loop_scene(14.0);
+  const FloorPlan plan = build_floor_plan(scene);
+  ASSERT_GT(plan.wall_faces.size(), 20u);
+  for (const double radius : {0.3, 0.4, 1.0, 2.5}) {
+    const WallFaceGrid grid(plan, radius);
+    int near = 0;
+    for (double y = plan.bounds_min_m.y() - 2.0; y < plan.bounds_max_m.y() + 2.0; y += 0.173) {
+      for (double x = plan.bounds_min_m.x() - 2.0; x < plan.bounds_max_m.x() + 2.0; x += 0.191) {
+        const Eigen::Vector2d p(x, y);
+        const double full = nearest_wall_distance_m(plan, p);
+        const double fast = grid.nearest_within_m(p, radius);
+        if (full < radius) {
+          ++near;
+          ASSERT_EQ(fast, full) << "at " << x << ", " << y << " radius " << radius;
+        } else {
+          ASSERT_TRUE(std::isinf(fast)) << "at " << x << ", " << y << " radius " << radius;
+        }
+      }
+    }
+    EXPECT_GT(near, 1000) << radius;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,41 @@
+#pragma once
+// Checks shared by the commands' options, where CLI11's own are not strict enough:
+//   kSeedValidator      every `--seed`: a whole number in [0, 2^64 - 1], in plain digits. CLI11
+//                       would otherwise turn "-1" or "18446744073709551616" into 2^64 - 1
+//                       silently, while a scene file's `seed:` refuses both;
+//   kPositiveFinite     rates and sizes such as `--fps`: CLI::PositiveNumber lets "nan" through.
+
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace wifislam::cli {
+
+inline const CLI::Validator kSeedValidator(
+    [](std::string& text) -> std::string {
+      std::uint64_t value = 0;
+      const char* end = text.data() + text.size();
+      const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+      if (text.empty() || text[0] == '-' || text[0] == '+' || ec != std::errc() || ptr != end) {
+        return "a seed is a whole number from 0 to 18446744073709551615, got '" + text + "'";
+      }
+      return {};
+    },
+    "SEED");
+
+inline const CLI::Validator kPositiveFinite(
+    [](std::string& text) -> std::string {
+      double value = 0.0;
+      const char* end = text.data() + text.size();
+      const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+      if (ec != std::errc() || ptr != end || !std::isfinite(value) || !(value > 0.0)) {
+        return "expected a positive finite number, got '" + text + "'";
+      }
+      return {};
+    },
+    "POSITIVE");
+
+}  // namespace wifislam::cli

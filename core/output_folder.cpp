@@ -1,0 +1,151 @@
+#include "core/output_folder.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/dataset_format.hpp"
+#include "core/error.hpp"
+#include "core/run_format.hpp"
+
+namespace wifislam {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// True when `inner` is `outer` or lies inside it (both resolved).
+bool is_within(const fs::path& inner, const fs::path& outer) {
+  auto i = inner.begin();
+  for (auto o = outer.begin(); o != outer.end(); ++o, ++i) {
+    if (o->empty()) continue;  // a trailing separator
+    if (i == inner.end() || *i != *o) return false;
+  }
+  return true;
+}
+
+[[noreturn]] void refuse(const fs::path& path, const std::string& reason) {
+  throw InvalidInputError(fmt::format("output folder {}: {}", path.string(), reason));
+}
+
+/// The "format" of a small JSON file, or "" when it is missing, unreadable or not JSON.
+std::string json_format(const fs::path& file) {
+  std::error_code ec;
+  const auto size = fs::file_size(file, ec);
+  if (ec || size > (std::uintmax_t{64} << 20)) return "";
+  std::ifstream in(file, std::ios::binary);
+  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!doc.is_object()) return "";
+  const auto it = doc.find("format");
+  return it != doc.end() && it->is_string() ? it->get<std::string>() : "";
+}
+
+bool is_empty_folder(const fs::path& folder) {
+  std::error_code ec;
+  return fs::is_empty(folder, ec) && !ec;
+}
+
+bool is_regular(const fs::path& file) {
+  std::error_code ec;
+  return fs::is_regular_file(file, ec);
+}
+
+}  // namespace
+
+fs::path resolve_path(const fs::path& path) {
+  std::error_code ec;
+  fs::path resolved = fs::weakly_canonical(fs::absolute(path, ec), ec);
+  if (ec) resolved = fs::absolute(path, ec).lexically_normal();
+  while (!resolved.has_filename() && resolved.has_relative_path()) {
+    resolved = resolved.parent_path();  // "dir/" -> "dir"
+  }
+  return resolved;
+}
+
+bool looks_like_tool_output(const fs::path& folder) {
+  if (is_regular(folder / kOutputMarkerFile)) return true;
+  if (is_regular(folder / dataset::kManifest) &&
+      json_format(folder / dataset::kManifest) == dataset::kFormatName) {
+    return true;
+  }
+  if (is_regular(folder / run_folder::kRun) &&
+      json_format(folder / run_folder::kRun) == run_folder::kFormatName) {
+    return true;
+  }
+  return (is_regular(folder / "metrics.json") && is_regular(folder / "report.md")) ||
+         (is_regular(folder / "comparison.json") && is_regular(folder / "comparison.md"));
+}
+
+void check_folder_replaceable(const fs::path& resolved) {
+  if (resolved == resolved.root_path()) refuse(resolved, "refusing to replace the root folder");
+  std::error_code ec;
+  const fs::path cwd = resolve_path(fs::current_path(ec));
+  if (!ec && is_within(cwd, resolved)) {
+    refuse(resolved, cwd == resolved ? "is the current directory; refusing to replace it"
+                                     : "holds the current directory (" + cwd.string() +
+                                           "); refusing to replace it");
+  }
+  if (const char* home_env = std::getenv("HOME"); home_env && *home_env) {
+    const fs::path home = resolve_path(home_env);
+    if (is_within(home, resolved)) {
+      refuse(resolved, home == resolved ? "is the home folder; refusing to replace it"
+                                        : "holds the home folder (" + home.string() +
+                                              "); refusing to replace it");
+    }
+  }
+  if (!is_empty_folder(resolved) && !looks_like_tool_output(resolved)) {
+    refuse(resolved,
+           fmt::format("does not look like wifislam output (no {}, manifest.json or run.json) "
+                       "and is not empty; refusing to replace it, even with --force. Choose "
+                       "another folder or remove this one yourself",
+                       kOutputMarkerFile));
+  }
+}
+
+bool check_output_folder(const OutputFolderRequest& request) {
+  if (request.path.empty()) throw InvalidInputError("output folder: the path is empty");
+  const fs::path out = resolve_path(request.path);
+  std::error_code ec;
+  const fs::file_status status = fs::status(out, ec);
+  if (!fs::exists(status)) return false;
+  if (!fs::is_directory(status)) {
+    refuse(out, "exists and is not a folder; refusing to replace it");
+  }
+  const bool is_default =
+      !request.owned_default.empty() && resolve_path(request.owned_default) == out;
+  for (const fs::path& input : request.inputs) {
+    if (input.empty()) continue;
+    const fs::path in = resolve_path(input);
+    if (in == out) refuse(out, "is an input of this command (" + input.string() + ")");
+    if (is_within(in, out)) {
+      refuse(out, "holds an input of this command (" + input.string() + ")");
+    }
+    if (!is_default && is_within(out, in)) {
+      refuse(out, "lies inside an input of this command (" + input.string() + ")");
+    }
+  }
+  check_folder_replaceable(out);
+  if (!request.force && !is_default) refuse(out, "already exists (pass --force to replace it)");
+  return true;
+}
+
+void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs) {
+  if (path.empty()) throw InvalidInputError("output file: the path is empty");
+  const fs::path out = resolve_path(path);
+  std::error_code ec;
+  if (fs::is_directory(out, ec)) {
+    throw InvalidInputError("output file " + path.string() +
+                            ": is a folder; give a file name to write");
+  }
+  for (const fs::path& input : inputs) {
+    if (!input.empty() && resolve_path(input) == out) {
+      throw InvalidInputError("output file " + path.string() +
+                              ": is an input of this command; refusing to overwrite it");
+    }
+  }
+}
+
+}  // namespace wifislam

@@ -1,0 +1,61 @@
+#pragma once
+// The one rule every command that writes a folder follows before it replaces anything, so that
+// no flag or path ever deletes what the user did not ask to delete (README, "Output folders").
+//
+// An existing output folder is replaced only when all of these hold:
+//   - `--force` was given, or the folder is the command's documented default output that the
+//     command owns (eval's <run>/eval, the demo's demo-output);
+//   - it is not an input of the same command, does not contain one and, unless it is that
+//     default, does not lie inside one;
+//   - it is not `/`, the current directory or the home folder, and holds none of them;
+//   - it looks like this tool's output (see `looks_like_tool_output`), or is empty.
+// Paths are compared after resolving symlinks, `..` and trailing slashes. A refusal is an
+// InvalidInputError (exit 2) naming the path and the reason, raised before anything is written.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace wifislam {
+
+/// Written into every folder AtomicDirectory creates, so a later `--force` can tell this tool's
+/// output from a folder of the user's.
+inline constexpr const char* kOutputMarkerFile = ".wifislam-output";
+
+/// What a command is about to write, and what it reads.
+struct OutputFolderRequest {
+  /// The output folder as the user gave it.
+  std::filesystem::path path;
+  /// `--force`: replace an existing folder that passes the safety checks.
+  bool force = false;
+  /// The command's documented default output (empty: none). That folder may be replaced without
+  /// `--force`, and may lie inside an input (eval's <run>/eval lies inside <run>).
+  std::filesystem::path owned_default;
+  /// Every file or folder the command reads (scene files, datasets, run folders ...).
+  std::vector<std::filesystem::path> inputs;
+};
+
+/// Applies the rule above. Returns true when the folder exists and may be replaced, false when
+/// it does not exist yet. Throws InvalidInputError otherwise.
+bool check_output_folder(const OutputFolderRequest& request);
+
+/// For commands that write single files (plots, maps, rendered views): the file must not be an
+/// input of the command and must not be an existing folder. Throws InvalidInputError.
+void check_output_file(const std::filesystem::path& path,
+                       const std::vector<std::filesystem::path>& inputs);
+
+/// The parts of the rule that need no knowledge of the command: `resolved` (an existing folder,
+/// see `resolve_path`) is not `/`, the current directory or the home folder, holds none of them,
+/// and looks like this tool's output or is empty. Throws InvalidInputError. AtomicDirectory
+/// applies this to every folder it replaces, whoever asked.
+void check_folder_replaceable(const std::filesystem::path& resolved);
+
+/// Absolute path with symlinks, `.`, `..` and trailing slashes resolved as far as the path exists.
+std::filesystem::path resolve_path(const std::filesystem::path& path);
+
+/// True when `folder` holds the marker file, a dataset manifest.json or a run.json of this tool
+/// (their "format" says so), or the report files of eval or compare as written before the
+/// marker existed (metrics.json with report.md; comparison.json with comparison.md).
+bool looks_like_tool_output(const std::filesystem::path& folder);
+
+}  // namespace wifislam

@@ -1,0 +1,197 @@
+// Hostile input never crashes the command line (issue 18, "Crashes"): numbers out of any
+// physical range, heights outside the building, absurd thread counts under resource limits, a
+// broken image, and SLAM options OpenCV cannot take all end in one located line on stderr and
+// exit 2 (or, for threads, in a finished dataset), with no half-written output left behind.
+#include <sys/resource.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_wifislam;
+
+class BadInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scratch_ = test::scratch_folder();
+    scene_ = scratch_ / "tiny.yaml";
+    test::write_file(scene_, test::kTinyLoopYaml);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  test::CliResult wifislam(const std::string& args, const std::string& prefix = "") {
+    return run_wifislam(args, scratch_, {}, prefix);
+  }
+  // The tiny loop with `from` replaced by `to` (which must occur in it).
+  fs::path scene_with(const std::string& from, const std::string& to, const std::string& name) {
+    std::string yaml = test::kTinyLoopYaml;
+    const auto at = yaml.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+    const fs::path path = scratch_ / name;
+    test::write_file(path, yaml);
+    return path;
+  }
+  static void expect_located_error(const test::CliResult& r, const std::string& where,
+                                   const std::string& key) {
+    EXPECT_EQ(r.signal, 0) << r.err;
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+
+  fs::path scratch_, scene_;
+};
+
+// Once a SIGFPE in the exact floor-plan arithmetic (1e308), a bad_alloc after 15 s (1e9) and a
+// route check running for minutes (1e5): coordinates are limited to 10 km.
+TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
+  for (const std::string value : {"1e308", "1e9", "1e5", "-10000.5", ".nan", ".inf"}) {
+    const fs::path scene =
+        scene_with("position_m: [7, 0]", "position_m: [" + value + ", 0]", "far.yaml");
+    const auto start = std::chrono::steady_clock::now();
+    const auto r = wifislam("world " + scene.string());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    expect_located_error(r, "far.yaml:8:", "nodes[1].position_m[0]");
+    EXPECT_NE(r.err.find("[-10000, 10000]"), std::string::npos) << r.err;
+    EXPECT_LT(seconds, 10.0) << value;
+  }
+  // Every other coordinate too: the corner of an open area, a colinear AP line.
+  const fs::path area =
+      scene_with("corridors:",
+                 "open_areas:\n  - {id: hall, polygon_m: [[0, 0], [3, 0], [3, 1e12]]}\ncorridors:",
+                 "area.yaml");
+  expect_located_error(wifislam("world " + area.string()),
+                       "area.yaml:", "open_areas[0].polygon_m[2][1]");
+}
+
+// Within the limits a building can still be 20 km long: the route's wall-clearance check and the
+// AP candidate spots once scanned every wall face per point (over half a minute of CPU for this
+// L; minutes for larger plans). Measured in the child's CPU seconds, so a busy machine does not
+// make it fail.
+TEST_F(BadInput, TheLargestBuildingsTheLimitsAllowBuildInSeconds) {
+  const fs::path scene = scratch_ / "ell.yaml";
+  test::write_file(scene, R"(version: 1
+name: twenty_km_ell
+seed: 1
+nodes:
+  - {id: A, position_m: [-10000, -10000]}
+  - {id: B, position_m: [10000, -10000]}
+  - {id: C, position_m: [10000, 10000]}
+corridors:
+  - {id: south, from: A, to: B, width_m: 2.0}
+  - {id: east, from: B, to: C, width_m: 2.0}
+access_points: {placement: rooms, count: 4}
+route:
+  nodes: [A, B, C]
+)");
+  rusage before{}, after{};
+  ::getrusage(RUSAGE_CHILDREN, &before);
+  const auto r = wifislam("world " + scene.string());
+  ::getrusage(RUSAGE_CHILDREN, &after);
+  const auto cpu_s = [](const rusage& u) {
+    return u.ru_utime.tv_sec + u.ru_stime.tv_sec + 1e-6 * (u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  };
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("route length: 39999."), std::string::npos) << r.out;
+  EXPECT_LT(cpu_s(after) - cpu_s(before), 8.0);
+}
+
+// Once an Embree assertion (abort) that left DS.partial behind.
+TEST_F(BadInput, AccessPointAboveTheBuildingIsALocatedError) {
+  const fs::path scene = scene_with(
+      "access_points: {placement: random, count: 8}",
+      "access_points:\n  placement: explicit\n  list: [{position_m: [1, 0, 1e300]}]", "ap.yaml");
+  const fs::path out = scratch_ / "ds";
+  const auto r =
+      wifislam("generate " + scene.string() + " -o " + out.string() + " --fps 2 --max-frames 2 -q");
+  expect_located_error(r, "ap.yaml:", "access_points.list[0].position_m[2]");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  // Within the schema's range but above this building's 2.8 m ceiling.
+  const fs::path high = scene_with("access_points: {placement: random, count: 8}",
+                                   "access_points:\n  placement: explicit\n  list: [{position_m: "
+                                   "[1, 0, 4.0]}]",
+                                   "high.yaml");
+  expect_located_error(wifislam("world " + high.string()),
+                       "high.yaml:", "access_points.list[0].position_m[2]");
+}
+
+// Once an Embree assertion (abort) for nan, inf and 1e300.
+TEST_F(BadInput, RadioMapHeightOutsideTheBuildingIsAnError) {
+  const fs::path png = scratch_ / "map.png";
+  for (const char* height : {"nan", "inf", "1e300", "-1", "0", "2.8"}) {
+    const auto r = wifislam("radiomap " + scene_.string() + " --strongest --height " + height +
+                            " -o " + png.string());
+    expect_located_error(r, "--height", "ceiling");
+    EXPECT_FALSE(fs::exists(png)) << height;
+  }
+  const auto r = wifislam("radiomap " + scene_.string() +
+                          " --strongest --res 0.5 --height 1.2 -o " + png.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(png));
+}
+
+// Once `terminate called without an active exception` (exit 134) and a DS.partial left behind:
+// under a memory limit the system refuses most of 600 thread stacks. Thread counts are clamped,
+// and whatever threads will not start are done without.
+TEST_F(BadInput, HundredsOfThreadsUnderAMemoryLimitStillGiveADataset) {
+  const fs::path out = scratch_ / "ds";
+  // 256 MB stacks against a 2 GB address space: only a handful of threads can ever start.
+  const auto r = wifislam("generate " + scene_.string() + " -o " + out.string() +
+                              " --fps 2 --max-frames 4 --threads 600",
+                          "ulimit -s 262144 && ulimit -v 2000000 && LP_NUM_THREADS=0");
+  EXPECT_EQ(r.signal, 0) << r.err;
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  EXPECT_EQ(wifislam("check " + out.string()).exit_code, 0);
+}
+
+// Once an OpenCV assertion (exit 70) on the empty buffer.
+TEST_F(BadInput, EmptyPngInADatasetWithoutManifestIsALocatedError) {
+  const fs::path ds = scratch_ / "ds";
+  ASSERT_EQ(
+      wifislam("generate " + scene_.string() + " -o " + ds.string() + " --fps 2 --max-frames 3 -q")
+          .exit_code,
+      0);
+  fs::remove(ds / "manifest.json");
+  fs::path png;
+  for (const auto& e : fs::directory_iterator(ds / "rgb")) png = e.path();
+  ASSERT_FALSE(png.empty());
+  fs::resize_file(png, 0);
+  const auto r = wifislam("check " + ds.string());
+  expect_located_error(r, png.filename().string(), "0 bytes");
+}
+
+// Once exit 70 from inside OpenCV's ORB (pyramid levels of no pixels, unbounded allocation).
+TEST_F(BadInput, OrbOptionsOutsideTheirRangeAreErrors) {
+  const fs::path ds = scratch_ / "ds";
+  ASSERT_EQ(
+      wifislam("generate " + scene_.string() + " -o " + ds.string() + " --fps 2 --max-frames 3 -q")
+          .exit_code,
+      0);
+  const fs::path run = scratch_ / "run";
+  for (const std::string setting :
+       {"orb_levels=1000", "orb_scale_factor=1e308", "max_keypoints=2147483647",
+        "orb_levels=20 --set orb_scale_factor=2"}) {
+    const auto r = wifislam("slam " + ds.string() + " --set " + setting + " -o " + run.string());
+    expect_located_error(r, "SLAM option", setting.substr(0, setting.find('=')));
+    EXPECT_FALSE(fs::exists(run)) << setting;
+  }
+  const auto r = wifislam("slam " + ds.string() +
+                          " --set orb_levels=6 --set orb_scale_factor=2 -o " + run.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+}  // namespace
+}  // namespace wifislam

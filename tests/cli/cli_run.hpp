@@ -1,0 +1,105 @@
+#pragma once
+// Running the real `wifislam` binary as a user does, in a scratch folder of its own: the exit
+// code (or the signal that ended it), stdout and stderr.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace wifislam::test {
+
+struct CliResult {
+  int exit_code = -1;  // -1 when a signal ended the process
+  int signal = 0;
+  std::string out, err;
+};
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+inline void write_file(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+/// A fresh folder under the system's temporary directory, named after the running test.
+inline std::filesystem::path scratch_folder() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                    ("wifislam_cli_" + std::string(info->test_suite_name()) + "_" +
+                                     info->name() + "_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Runs `wifislam <args>` through the shell, in `cwd`, after `prefix` (e.g. "ulimit -v 1000000;").
+/// Output goes to files in `scratch`, which must not be a folder the command may change.
+inline CliResult run_wifislam(const std::string& args, const std::filesystem::path& scratch,
+                              const std::filesystem::path& cwd = {},
+                              const std::string& prefix = "") {
+  const std::filesystem::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
+  std::string command = "(";
+  if (!cwd.empty()) command += "cd '" + cwd.string() + "' && ";
+  command += prefix + " exec " + std::string(WIFISLAM_BINARY) + " " + args + ") >'" + out.string() +
+             "' 2>'" + err.string() + "'";
+  const int status = std::system(command.c_str());
+  CliResult r;
+  if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
+  // The shell reports a child killed by a signal as 128 + signal.
+  if (r.exit_code > 128 && r.exit_code < 160) r.signal = r.exit_code - 128;
+  r.out = read_file(out);
+  r.err = read_file(err);
+  return r;
+}
+
+/// Every path under `dir` with its size, sorted: a folder's contents before and after a command.
+inline std::vector<std::string> listing(const std::filesystem::path& dir) {
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) {
+    names.push_back(e.path().string() +
+                    (e.is_regular_file() ? " " + std::to_string(e.file_size()) : "/"));
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/// A small square loop (7 x 5 m) with distinct walls: a world, a renderer and a radio model build
+/// in well under a second, and 12 frames at 2 fps give SLAM and eval a short real run.
+inline const char* kTinyLoopYaml = R"(version: 1
+name: cli_tiny_loop
+description: Small square loop for command-line tests.
+seed: 91
+building: {wall_height_m: 2.8, wall_thickness_m: 0.15}
+nodes:
+  - {id: A, position_m: [0, 0]}
+  - {id: B, position_m: [7, 0]}
+  - {id: C, position_m: [7, 5]}
+  - {id: D, position_m: [0, 5]}
+corridors:
+  - {id: south, from: A, to: B, width_m: 2.0}
+  - {id: east, from: B, to: C, width_m: 2.0}
+  - {id: north, from: C, to: D, width_m: 2.0}
+  - {id: west, from: D, to: A, width_m: 2.0}
+appearance:
+  aliasing: 0.0
+  posters_per_10m: 4.0
+access_points: {placement: random, count: 8}
+route:
+  nodes: [A, B, C, D, A]
+  speed_mps: 0.5
+  pause: {spacing_m: [3.0, 4.0], duration_s: 1.0}
+radio: {environment: office}
+)";
+
+}  // namespace wifislam::test

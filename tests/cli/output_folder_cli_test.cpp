@@ -1,0 +1,221 @@
+// No command deletes what the user did not ask to delete (core/output_folder.hpp): the cases of
+// issue 18, run through the real binary on a real small dataset and SLAM run in a scratch folder.
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::listing;
+using test::run_wifislam;
+
+class OutputFolders : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scratch_ = test::scratch_folder();
+    work_ = scratch_ / "work";
+    fs::create_directories(work_);
+    scene_ = work_ / "tiny.yaml";
+    test::write_file(scene_, test::kTinyLoopYaml);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  test::CliResult wifislam(const std::string& args, const fs::path& cwd = {},
+                           const std::string& prefix = "") {
+    return run_wifislam(args, scratch_, cwd, prefix);
+  }
+  fs::path make_dataset() {
+    const fs::path ds = work_ / "ds";
+    const auto r = wifislam("generate " + scene_.string() + " -o " + ds.string() +
+                            " --fps 2 --max-frames 12 --threads 2 -q");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return ds;
+  }
+  fs::path make_run(const fs::path& ds) {
+    const fs::path run = work_ / "run";
+    const auto r = wifislam("slam " + ds.string() + " -o " + run.string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return run;
+  }
+  // A folder of the user's: no marker, no manifest, not empty.
+  fs::path user_folder(const std::string& name) {
+    const fs::path dir = work_ / name;
+    test::write_file(dir / "thesis.tex", "years of work");
+    return dir;
+  }
+  static void expect_refused(const test::CliResult& r, const fs::path& path,
+                             const std::string& reason) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(path.filename().string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(reason), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+
+  fs::path scratch_, work_, scene_;
+};
+
+TEST_F(OutputFolders, EvalNeverWritesOverTheGroundTruthDataset) {
+  const fs::path ds = make_dataset(), run = make_run(ds);
+  const auto before = listing(ds);
+  for (const std::string& out : {ds.string(), ds.string() + "/", ds.string() + "/../ds"}) {
+    for (const char* force : {"", " --force"}) {
+      const auto r = wifislam("eval " + run.string() + " --gt " + ds.string() + " -o " + out +
+                              force + " --no-plots");
+      expect_refused(r, ds, "is an input of this command");
+      EXPECT_EQ(listing(ds), before) << out << force;
+    }
+  }
+  EXPECT_FALSE(fs::exists(ds.string() + ".partial"));
+  EXPECT_EQ(wifislam("check " + ds.string()).exit_code, 0);
+}
+
+TEST_F(OutputFolders, EvalNeverWritesOverItsRunFolder) {
+  const fs::path ds = make_dataset(), run = make_run(ds);
+  const auto before = listing(run);
+  for (const char* force : {"", " --force"}) {
+    const auto r = wifislam("eval " + run.string() + " --gt " + ds.string() + " -o " +
+                            run.string() + force + " --no-plots");
+    expect_refused(r, run, "is an input of this command");
+    EXPECT_EQ(listing(run), before);
+  }
+  // The folder holding both inputs is refused too.
+  const auto r = wifislam("eval " + run.string() + " --gt " + ds.string() + " -o " +
+                          work_.string() + " --force --no-plots");
+  expect_refused(r, work_, "holds an input of this command");
+}
+
+TEST_F(OutputFolders, EvalNeverEmptiesTheCurrentDirectory) {
+  const fs::path ds = make_dataset(), run = make_run(ds);
+  const fs::path here = work_ / "here";
+  test::write_file(here / "notes.txt", "my notes");
+  for (const char* force : {"", " --force"}) {
+    const auto r =
+        wifislam("eval ../run --gt ../ds -o ." + std::string(force) + " --no-plots", here);
+    expect_refused(r, here, "current directory");
+    EXPECT_EQ(test::read_file(here / "notes.txt"), "my notes");
+  }
+  EXPECT_EQ(listing(here).size(), 1u);
+}
+
+TEST_F(OutputFolders, EvalReplacesItsOwnDefaultFolderButNoOtherWithoutForce) {
+  const fs::path ds = make_dataset(), run = make_run(ds);
+  for (int i = 0; i < 2; ++i) {
+    const auto r = wifislam("eval " + run.string() + " --gt " + ds.string() + " --no-plots");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::is_regular_file(run / "eval" / "report.md"));
+  }
+  const fs::path other = work_ / "other_eval";
+  fs::copy(run / "eval", other, fs::copy_options::recursive);
+  auto r = wifislam("eval " + run.string() + " --gt " + ds.string() + " -o " + other.string() +
+                    " --no-plots");
+  expect_refused(r, other, "--force");
+  r = wifislam("eval " + run.string() + " --gt " + ds.string() + " -o " + other.string() +
+               " --force --no-plots");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(other / "report.md"));
+}
+
+TEST_F(OutputFolders, GenerateWithForceNeverEmptiesTheCurrentOrHomeDirectory) {
+  const fs::path here = work_ / "here";
+  test::write_file(here / "notes.txt", "my notes");
+  auto r = wifislam("generate ../tiny.yaml -o . --force --fps 2 --max-frames 2 -q", here);
+  expect_refused(r, here, "current directory");
+  r = wifislam("generate ../tiny.yaml -o .. --force --fps 2 --max-frames 2 -q", here);
+  expect_refused(r, work_, "holds");
+  EXPECT_EQ(test::read_file(here / "notes.txt"), "my notes");
+  EXPECT_EQ(listing(here).size(), 1u);
+
+  // The home folder, made a scratch folder here so the test never goes near the real one.
+  const fs::path home = work_ / "home";
+  test::write_file(home / "notes.txt", "my notes");
+  test::write_file(home / ".wifislam-output", "looks like output, still home");
+  r = wifislam(
+      "generate " + scene_.string() + " -o " + home.string() + " --force --fps 2 --max-frames 2 -q",
+      {}, "HOME='" + home.string() + "'");
+  expect_refused(r, home, "home folder");
+  EXPECT_EQ(test::read_file(home / "notes.txt"), "my notes");
+  EXPECT_FALSE(fs::exists(home.string() + ".partial"));
+}
+
+TEST_F(OutputFolders, ForceNeverReplacesAFolderThatIsNotThisToolsOutput) {
+  const fs::path mine = user_folder("mine");
+  const auto before = listing(mine);
+  auto r = wifislam("generate " + scene_.string() + " -o " + mine.string() +
+                    " --force --fps 2 --max-frames 2 -q");
+  expect_refused(r, mine, "does not look like wifislam output");
+  EXPECT_NE(r.err.find("even with --force"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(mine), before);
+  EXPECT_FALSE(fs::exists(mine.string() + ".partial"));
+
+  const fs::path ds = make_dataset();
+  r = wifislam("slam " + ds.string() + " -o " + mine.string() + " --force");
+  expect_refused(r, mine, "does not look like wifislam output");
+  EXPECT_EQ(listing(mine), before);
+}
+
+TEST_F(OutputFolders, AnEmptyFolderIsReplacedWithForceOnly) {
+  const fs::path empty = work_ / "empty";
+  fs::create_directories(empty);
+  auto r = wifislam("generate " + scene_.string() + " -o " + empty.string() +
+                    " --fps 2 --max-frames 2 -q");
+  expect_refused(r, empty, "already exists (pass --force to replace it)");
+  r = wifislam("generate " + scene_.string() + " -o " + empty.string() +
+               " --fps 2 --max-frames 2 -q --force");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::is_regular_file(empty / "manifest.json"));
+  // And the dataset it holds now is this tool's output: --force replaces it again.
+  r = wifislam("generate " + scene_.string() + " -o " + empty.string() +
+               " --fps 2 --max-frames 3 -q --force");
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(empty.string() + ".replaced"));
+}
+
+TEST_F(OutputFolders, NoCommandReplacesItsOwnInput) {
+  const fs::path ds = make_dataset();
+  auto r = wifislam("slam " + ds.string() + " -o " + ds.string() + " --force");
+  expect_refused(r, ds, "is an input of this command");
+  EXPECT_EQ(wifislam("check " + ds.string()).exit_code, 0);
+  // A folder of outputs that also holds the scene file being read.
+  const fs::path scenes = work_ / "scenes";
+  test::write_file(scenes / "tiny.yaml", test::kTinyLoopYaml);
+  test::write_file(scenes / ".wifislam-output", "");
+  r = wifislam("generate " + (scenes / "tiny.yaml").string() + " -o " + scenes.string() +
+               " --force --fps 2 --max-frames 2 -q");
+  expect_refused(r, scenes, "holds an input of this command");
+  EXPECT_TRUE(fs::is_regular_file(scenes / "tiny.yaml"));
+  // Single-file outputs never overwrite the scene they draw.
+  r = wifislam("world " + scene_.string() + " --plan " + scene_.string());
+  expect_refused(r, scene_, "is an input of this command");
+  r = wifislam("radiomap " + scene_.string() + " --strongest -o " + scene_.string());
+  expect_refused(r, scene_, "is an input of this command");
+  EXPECT_EQ(test::read_file(scene_), test::kTinyLoopYaml);
+}
+
+// The demo's own folder (./demo-output) is replaced on every run, so scripts/demo.sh runs twice
+// in a row; another existing folder needs --force. A very short route keeps the demo quick.
+TEST_F(OutputFolders, DemoRunsTwiceInARowIntoItsOwnFolder) {
+  std::string yaml = test::kTinyLoopYaml;
+  yaml.replace(yaml.find("nodes: [A, B, C, D, A]"), 22, "nodes: [A, B]");
+  yaml += "sensors: {camera: {fps: 1.0}}\n";
+  test::write_file(work_ / "short.yaml", yaml);
+  for (int i = 0; i < 2; ++i) {
+    const auto r = wifislam("demo --scene short.yaml -q", work_);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(fs::is_regular_file(work_ / "demo-output" / "comparison.md"));
+  }
+  fs::copy(work_ / "demo-output", work_ / "mine", fs::copy_options::recursive);
+  auto r = wifislam("demo --scene short.yaml -q -o mine", work_);
+  expect_refused(r, work_ / "mine", "--force");
+  fs::create_directories(work_ / "sub");
+  r = wifislam("demo --scene ../short.yaml -q -o .", work_ / "sub");
+  expect_refused(r, work_ / "sub", "current directory");
+  EXPECT_TRUE(fs::is_regular_file(work_ / "short.yaml"));
+}
+
+}  // namespace
+}  // namespace wifislam

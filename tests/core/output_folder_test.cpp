@@ -1,0 +1,207 @@
+// The output-folder rule (core/output_folder.hpp) on real folders in a temporary directory: what
+// may be replaced, what never is, and that paths are compared after resolving them.
+#include <gtest/gtest.h>
+
+#include <stdlib.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+class OutputFolderRule : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    root_ = fs::temp_directory_path() / ("wifislam_output_folder_" + std::string(info->name()) +
+                                         "_" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+  }
+  void TearDown() override {
+    fs::remove_all(root_);
+    fs::remove_all(root_.string() + ".partial");
+  }
+  // A folder as this tool leaves it (marker file) with one more file in it.
+  fs::path tool_folder(const std::string& name) {
+    const fs::path dir = root_ / name;
+    fs::create_directories(dir);
+    std::ofstream(dir / kOutputMarkerFile) << "x";
+    std::ofstream(dir / "data.txt") << "data";
+    return dir;
+  }
+  fs::path user_folder(const std::string& name) {
+    const fs::path dir = root_ / name;
+    fs::create_directories(dir);
+    std::ofstream(dir / "thesis.tex") << "years of work";
+    return dir;
+  }
+  // The message of the refusal, or nullopt when the request is accepted.
+  static std::optional<std::string> refusal(const OutputFolderRequest& request) {
+    try {
+      check_output_folder(request);
+      return std::nullopt;
+    } catch (const InvalidInputError& e) {
+      return std::string(e.what());
+    }
+  }
+  fs::path root_;
+};
+
+TEST_F(OutputFolderRule, NewFolderNeedsNothing) {
+  EXPECT_FALSE(check_output_folder({root_ / "new", false, {}, {}}));
+}
+
+TEST_F(OutputFolderRule, ExistingOutputOfThisToolIsReplacedOnlyWithForce) {
+  const fs::path out = tool_folder("out");
+  const auto message = refusal({out, false, {}, {}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find(out.string()), std::string::npos) << *message;
+  EXPECT_NE(message->find("--force"), std::string::npos) << *message;
+  EXPECT_TRUE(check_output_folder({out, true, {}, {}}));
+}
+
+TEST_F(OutputFolderRule, DatasetManifestAndRunJsonMarkToolOutputOnlyWithTheirFormat) {
+  const fs::path ds = user_folder("ds");
+  std::ofstream(ds / "manifest.json") << R"({"format": "wifislam-dataset"})";
+  EXPECT_TRUE(looks_like_tool_output(ds));
+  const fs::path run = user_folder("run");
+  std::ofstream(run / "run.json") << R"({"format": "wifislam-run", "format_version": 2})";
+  EXPECT_TRUE(looks_like_tool_output(run));
+  // A browser extension has a manifest.json too.
+  const fs::path extension = user_folder("extension");
+  std::ofstream(extension / "manifest.json") << R"({"manifest_version": 3, "name": "x"})";
+  EXPECT_FALSE(looks_like_tool_output(extension));
+  const auto message = refusal({extension, true, {}, {}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("does not look like wifislam output"), std::string::npos) << *message;
+}
+
+TEST_F(OutputFolderRule, UserFolderIsRefusedEvenWithForceButAnEmptyOneIsNot) {
+  const fs::path mine = user_folder("mine");
+  const auto message = refusal({mine, true, {}, {}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find(mine.string()), std::string::npos) << *message;
+  EXPECT_NE(message->find("even with --force"), std::string::npos) << *message;
+  EXPECT_TRUE(fs::exists(mine / "thesis.tex"));
+  fs::create_directories(root_ / "empty");
+  EXPECT_TRUE(check_output_folder({root_ / "empty", true, {}, {}}));
+}
+
+TEST_F(OutputFolderRule, OwnedDefaultIsReplacedWithoutForceEvenInsideItsInput) {
+  const fs::path run = tool_folder("run");
+  const fs::path eval = tool_folder("run/eval");
+  EXPECT_TRUE(check_output_folder({eval, false, eval, {run}}));
+  // The same folder spelt differently is still the default.
+  EXPECT_TRUE(check_output_folder({root_ / "run/./eval/", false, eval, {run}}));
+  // Not the default: inside an input, refused even with --force.
+  const fs::path other = tool_folder("run/other");
+  const auto message = refusal({other, true, eval, {run}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
+}
+
+TEST_F(OutputFolderRule, AnInputOrAFolderHoldingOneIsNeverReplaced) {
+  const fs::path ds = tool_folder("ds");
+  const fs::path run = tool_folder("run");
+  for (const fs::path& out : {ds, run, root_}) {
+    const auto message = refusal({out, true, run / "eval", {run, ds}});
+    ASSERT_TRUE(message) << out;
+    EXPECT_NE(message->find("input"), std::string::npos) << *message;
+  }
+  const fs::path scene = root_ / "scenes" / "a.yaml";
+  fs::create_directories(scene.parent_path());
+  std::ofstream(scene) << "version: 1\n";
+  std::ofstream(root_ / "scenes" / kOutputMarkerFile) << "x";
+  EXPECT_TRUE(refusal({root_ / "scenes", true, {}, {scene}}));
+}
+
+TEST_F(OutputFolderRule, PathsAreComparedAfterResolvingSymlinksDotsAndSlashes) {
+  const fs::path ds = tool_folder("ds");
+  fs::create_directory_symlink(ds, root_ / "link");
+  for (const fs::path& spelling :
+       {root_ / "link", root_ / "ds/", root_ / "ds/../ds", root_ / "link/./"}) {
+    EXPECT_TRUE(refusal({spelling, true, {}, {ds}})) << spelling;
+    EXPECT_TRUE(refusal({ds, true, {}, {spelling}})) << spelling;
+  }
+}
+
+TEST_F(OutputFolderRule, CurrentDirectoryItsParentsTheHomeFolderAndRootAreNeverReplaced) {
+  const fs::path work = tool_folder("work");
+  const fs::path inner = tool_folder("work/inner");
+  const fs::path saved = fs::current_path();
+  fs::current_path(inner);
+  for (const fs::path& out : {fs::path("."), fs::path(".."), inner, work}) {
+    const auto message = refusal({out, true, {}, {}});
+    ASSERT_TRUE(message) << out;
+    EXPECT_NE(message->find("current directory"), std::string::npos) << *message;
+  }
+  fs::current_path(saved);
+
+  const char* home_before = std::getenv("HOME");
+  const std::string saved_home = home_before ? home_before : "";
+  ::setenv("HOME", inner.c_str(), 1);
+  const auto message = refusal({work, true, {}, {}});
+  if (home_before) {
+    ::setenv("HOME", saved_home.c_str(), 1);
+  } else {
+    ::unsetenv("HOME");
+  }
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("home folder"), std::string::npos) << *message;
+
+  const auto root_message = refusal({"/", true, {}, {}});
+  ASSERT_TRUE(root_message);
+  EXPECT_NE(root_message->find("root"), std::string::npos) << *root_message;
+}
+
+TEST_F(OutputFolderRule, AFileIsNotAFolderToReplace) {
+  std::ofstream(root_ / "notes.txt") << "notes";
+  EXPECT_TRUE(refusal({root_ / "notes.txt", true, {}, {}}));
+  EXPECT_TRUE(fs::exists(root_ / "notes.txt"));
+}
+
+TEST_F(OutputFolderRule, OutputFileMustNotBeAnInputOrAFolder) {
+  const fs::path scene = root_ / "scene.yaml";
+  std::ofstream(scene) << "version: 1\n";
+  EXPECT_THROW(check_output_file(root_ / "./scene.yaml", {scene}), InvalidInputError);
+  EXPECT_THROW(check_output_file(root_, {scene}), InvalidInputError);
+  EXPECT_NO_THROW(check_output_file(root_ / "plan.png", {scene}));
+}
+
+TEST_F(OutputFolderRule, AtomicDirectoryMarksItsFolderAndKeepsUserFolders) {
+  const fs::path out = root_ / "out";
+  {
+    AtomicDirectory dir(out, false);
+    std::ofstream(dir.staging_path() / "a.txt") << "a";
+    dir.commit();
+  }
+  EXPECT_TRUE(fs::is_regular_file(out / kOutputMarkerFile));
+  EXPECT_TRUE(looks_like_tool_output(out));
+  {
+    AtomicDirectory dir(out, true);  // its own output: replaced
+    std::ofstream(dir.staging_path() / "b.txt") << "b";
+    dir.commit();
+  }
+  EXPECT_FALSE(fs::exists(out / "a.txt"));
+  EXPECT_TRUE(fs::exists(out / "b.txt"));
+  EXPECT_FALSE(fs::exists(out.string() + ".replaced"));
+
+  const fs::path mine = user_folder("mine");
+  EXPECT_THROW(AtomicDirectory(mine, true), InvalidInputError);
+  EXPECT_TRUE(fs::exists(mine / "thesis.tex"));
+  EXPECT_FALSE(fs::exists(mine.string() + ".partial"));
+}
+
+}  // namespace
+}  // namespace wifislam
