@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
 namespace wifislam::slam {
@@ -32,13 +33,21 @@ std::vector<std::size_t> AcceptBestLoopHypothesis::choose(
 }
 
 std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge) {
-  const Eigen::Matrix<double, 6, 1> diagonal = edge.information.diagonal();
-  const double min_info_t = diagonal.head<3>().minCoeff();
-  const double min_info_r = diagonal.tail<3>().minCoeff();
-  if (!(min_info_t > 0.0) || !(min_info_r > 0.0)) return std::nullopt;
-  const double variance_t = 1.0 / min_info_t;
-  const double variance_r = 1.0 / min_info_r;
-  if (variance_t > 1.0) return std::nullopt;
+  // RTAB-Map's links carry a diagonal covariance, so 1 / information diagonal is each axis'
+  // variance there. Ours are full 6x6 matrices from the inliers' geometry, whose translation and
+  // rotation are strongly coupled (a yaw and a sideways shift explain the same image motion), so
+  // 1 / diagonal would understate the variance by orders of magnitude; the marginal variances are
+  // the diagonal of the covariance, the inverse of the information.
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(edge.information);
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
+      !(ldlt.vectorD().minCoeff() > 0.0)) {
+    return std::nullopt;
+  }
+  const Eigen::Matrix<double, 6, 6> covariance =
+      ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
+  const double variance_t = covariance.diagonal().head<3>().maxCoeff();
+  const double variance_r = covariance.diagonal().tail<3>().maxCoeff();
+  if (!(variance_t > 0.0) || !(variance_r > 0.0) || variance_t > 1.0) return std::nullopt;
   const Pose estimated = graph.node(edge.from).pose.inverse() * graph.node(edge.to).pose;
   const double linear_m =
       (estimated.translation() - edge.from_to.translation()).cwiseAbs().maxCoeff();

@@ -61,12 +61,14 @@ class AcceptBestLoopHypothesis final : public EdgeAcceptance {
 };
 
 /// Error of an edge in a graph in its own standard deviations, as RTAB-Map's
-/// computeMaxGraphErrors measures it: the largest per-axis translation error over sqrt of the
-/// largest translation variance (1 / the smallest translation diagonal of the information), and
-/// the rotation error (here the angle of the error rotation, where RTAB-Map takes the largest
-/// Euler angle difference) over sqrt of the largest rotation variance; the larger of the two.
+/// computeMaxGraphErrors measures it: the largest per-axis translation error over the largest
+/// translation standard deviation, and the rotation error (here the angle of the error rotation,
+/// where RTAB-Map takes the largest Euler angle difference) over the largest rotation standard
+/// deviation; the larger of the two. The standard deviations are marginal ones, from the
+/// covariance (the inverse of the information): RTAB-Map's links are diagonal, where this is the
+/// same as 1 / the information diagonal, but ours couple translation and rotation.
 /// Returns nullopt for a link RTAB-Map skips: translation variance above 1 m^2 (our weak edges),
-/// or a non-positive information diagonal.
+/// or an information matrix that is not positive definite.
 std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge);
 
 class AcceptGraphConsistentHypotheses final : public EdgeAcceptance {

@@ -133,6 +133,23 @@ TEST(EdgeAcceptance, ErrorRatioIsTheErrorInStandardDeviationsOfTheEdge) {
   anisotropic(1, 1) = 1.0 / (0.4 * 0.4);
   EXPECT_NEAR(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), anisotropic}).value(), 0.5,
               1e-6);
+  // Coupled translation and rotation (a sideways shift y and a yaw explain the same image
+  // motion): the information's diagonal is large, but the marginal standard deviation of y, from
+  // the covariance, is what the error is measured against. Covariance: sigma_x = sigma_z = 0.01
+  // m, sigma_y 0.1 m, sigma_yaw 0.01 rad, y-yaw correlation 0.999; 1 / the information diagonal
+  // would say sigma_y = 0.1 * sqrt(1 - 0.999^2) and make the error 20 standard deviations.
+  Information6 coupled_covariance = Information6::Zero();
+  coupled_covariance.diagonal() << 1e-4, 0.01, 1e-4, 1e-4, 1e-4, 1e-4;
+  coupled_covariance(1, 5) = coupled_covariance(5, 1) = 0.999 * 0.1 * 0.01;
+  PoseGraph sideways;
+  sideways.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
+  Pose off = at_x(1.0);
+  off.translation().y() = 0.2;  // 0.2 m off along y = 2 marginal standard deviations
+  sideways.add_node(Timestamp::from_ns(1), 1, off);
+  EXPECT_NEAR(edge_error_ratio(sideways, {0, 1, EdgeType::kLoop, at_x(1.0),
+                                          Information6(coupled_covariance.inverse())})
+                  .value(),
+              2.0, 1e-6);
   // Links RTAB-Map skips: translation variance above 1 m^2 (weak edges), no information.
   EXPECT_FALSE(edge_error_ratio(graph, {0, 1, EdgeType::kWeak, at_x(1.0), information(2.0, 1.0)}));
   EXPECT_FALSE(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), Information6::Zero()}));
