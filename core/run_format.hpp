@@ -118,6 +118,9 @@ inline constexpr const char* kOptimisationFailures = "optimisation_failures";
 inline constexpr const char* kPrunedEdges = "pruned_edges";
 inline constexpr const char* kDiscountedEdges = "discounted_edges";
 inline constexpr const char* kTrackingFailures = "tracking_failures";
+/// Keyframes made because tracking against the last one failed (a promoted tracked frame, or a
+/// frame without tracking edge): off a front end's keyframe schedule.
+inline constexpr const char* kKeyframesAfterTrackingLoss = "keyframes_after_tracking_loss";
 inline constexpr const char* kWifiSimilarityComparisons = "wifi_similarity_comparisons";
 inline constexpr const char* kWifiUnsignedKeyframes = "wifi_keyframes_without_signature";
 inline constexpr const char* kWifiBoundedPool = "wifi_bounded_pool_keyframes";

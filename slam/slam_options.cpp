@@ -81,6 +81,12 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"prune_chi2", &o.rgbdslam.prune_chi2,
        "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
        "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge"},
+      {"detection_rate_hz", &o.rtabmap.detection_rate_hz,
+       "rtabmap: Rtabmap/DetectionRate, most nodes per second; 0 = no time limit (1)"},
+      {"linear_update_m", &o.rtabmap.linear_update_m,
+       "rtabmap: RGBD/LinearUpdate, least translation since the last node for a new one (0.1)"},
+      {"angular_update_rad", &o.rtabmap.angular_update_rad,
+       "rtabmap: RGBD/AngularUpdate, least rotation since the last node for a new one (0.1)"},
       {"stm_size", &o.rtabmap.stm_size,
        "rtabmap: Mem/STMSize, newest nodes never searched for loop closures (10)"},
       {"rehearsal_similarity", &o.rtabmap.rehearsal_similarity,
@@ -234,6 +240,12 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
           "robust_kernel_chi2 must be a positive number");
   parse_chi2_thresholds("prune_chi2", o.rgbdslam.prune_chi2);  // throws naming the entry
+  require(o.rtabmap.detection_rate_hz >= 0 && std::isfinite(o.rtabmap.detection_rate_hz),
+          "detection_rate_hz must be a number >= 0");
+  require(o.rtabmap.linear_update_m >= 0 && std::isfinite(o.rtabmap.linear_update_m),
+          "linear_update_m must be a number >= 0");
+  require(o.rtabmap.angular_update_rad >= 0 && std::isfinite(o.rtabmap.angular_update_rad),
+          "angular_update_rad must be a number >= 0");
   require(o.rtabmap.stm_size >= 0, "stm_size must be >= 0");
   require(o.rtabmap.rehearsal_similarity >= 0, "rehearsal_similarity must be >= 0");
   require(o.rtabmap.max_features >= 1, "kp_max_features must be >= 1");

@@ -16,6 +16,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,7 @@
 #include "core/wifi_scan.hpp"
 #include "slam/frontend/candidate.hpp"
 #include "slam/frontend/edge_acceptance.hpp"
+#include "slam/frontend/keyframe_schedule.hpp"
 #include "slam/optimize/edge_pruning.hpp"
 #include "slam/optimize/robust_kernel.hpp"
 #include "slam/wifi/wifi_module.hpp"
@@ -74,6 +76,10 @@ class FrontEnd {
   /// loop rule (kLoop when the candidate is far enough back in keyframes and path).
   virtual EdgeType classify(const Candidate& candidate, KeyframeId keyframe,
                             const LoopRule& rule) const;
+
+  /// When the family makes keyframes by time and motion (RTAB-Map's nodes); nullopt: the
+  /// pipeline's tracking-quality rule (TrackingOptions).
+  virtual std::optional<KeyframeSchedule> keyframe_schedule() const { return std::nullopt; }
 
   const EdgeAcceptance& acceptance() const { return *acceptance_; }
   /// The family's robust kernel and after-run pruning (the shared optimiser applies them).

@@ -32,6 +32,7 @@ RunSummary summarize(const SlamSystem& system, const std::string& input, double 
     }
   }
   s.tracking_failures = inst.counter(counter::kTrackingFailures);
+  s.keyframes_after_tracking_loss = inst.counter(counter::kKeyframesAfterTrackingLoss);
   s.candidate_comparisons = inst.counter(counter::kCandidateComparisons);
   s.ransac_runs = inst.counter(counter::kRansacRuns);
   s.wall_s = wall_s;
@@ -55,7 +56,8 @@ std::string RunSummary::FullReport() const {
   out += fmt::format("  keyframes              {}\n", keyframes);
   out += fmt::format("  edges                  {} visual, {} loop, {} odometry, {} weak\n",
                      visual_edges, loop_edges, odometry_edges, weak_edges);
-  out += fmt::format("  tracking failures      {}\n", tracking_failures);
+  out += fmt::format("  tracking failures      {} ({} keyframes made after them)\n",
+                     tracking_failures, keyframes_after_tracking_loss);
   out += fmt::format("  candidate comparisons  {}\n", candidate_comparisons);
   out += fmt::format("  RANSAC runs            {}\n", ransac_runs);
   out += fmt::format("  wall-clock             {:.3f} s ({:.1f} fps)\n", wall_s, wall_fps());
@@ -85,6 +87,7 @@ nlohmann::json RunSummary::to_json() const {
             {"odometry", odometry_edges},
             {"weak", weak_edges}}},
           {"tracking_failures", tracking_failures},
+          {"keyframes_after_tracking_loss", keyframes_after_tracking_loss},
           {"candidate_comparisons", candidate_comparisons},
           {"ransac_runs", ransac_runs},
           {"final_optimisation",

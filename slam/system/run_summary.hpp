@@ -19,6 +19,7 @@ struct RunSummary {
   bool wifi = false;     // the front end held a Wi-Fi module
   std::int64_t frames = 0, keyframes = 0;
   std::int64_t visual_edges = 0, loop_edges = 0, odometry_edges = 0, weak_edges = 0;
+  std::int64_t keyframes_after_tracking_loss = 0;
   std::int64_t tracking_failures = 0, candidate_comparisons = 0, ransac_runs = 0;
   double wall_s = 0.0;        // processing time, reading the input included
   double processing_s = 0.0;  // time inside the pipeline (the "total" module)

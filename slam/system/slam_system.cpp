@@ -34,6 +34,7 @@ SlamSystem::SlamSystem(const SlamOptions& options, const StreamInfo& stream)
   context.stream_has_odometry = stream_.has_odometry;
   front_end_ = make_front_end(context);
   robustness_ = front_end_->graph_robustness();
+  keyframe_schedule_ = front_end_->keyframe_schedule();
 }
 
 SlamSystem::~SlamSystem() = default;
@@ -67,7 +68,11 @@ VisualTransformation SlamSystem::compare(const FrameFeatures& a, const FrameFeat
   return t;
 }
 
-bool SlamSystem::needs_new_keyframe(const VisualTransformation& t) const {
+bool SlamSystem::needs_new_keyframe(const VisualTransformation& t, Timestamp frame_time) const {
+  if (keyframe_schedule_) {
+    const KeyframeId last = static_cast<KeyframeId>(graph_.node_count()) - 1;
+    return keyframe_schedule_->due(frame_time.ns - graph_.node(last).time.ns, t.a_from_b);
+  }
   const int min_inliers =
       std::max(options_.tracking.keyframe_min_inliers, options_.transform.min_matches);
   return t.inliers < min_inliers ||
@@ -96,7 +101,7 @@ void SlamSystem::process_frame(const RgbdFrame& frame) {
     const VisualTransformation t =
         compare(keyframe_features_[static_cast<std::size_t>(keyframe)], features, kTrackingRole);
     if (t.accepted) instrumentation_.record_role_accepted(kTrackingRole);
-    if (t.accepted && !needs_new_keyframe(t)) {
+    if (t.accepted && !needs_new_keyframe(t, frame.time)) {
       frames_.push_back({frame.time, frame.index, keyframe, t.a_from_b});
       last_tracked_ =
           TrackedFrame{std::move(features), t.a_from_b, t.inliers, t.information, odometry};
@@ -115,10 +120,12 @@ void SlamSystem::process_frame(const RgbdFrame& frame) {
     if (!frames_.empty() && frames_.back().frame_index == promoted.features.frame_index) {
       frames_.pop_back();
     }
+    instrumentation_.count(counter::kKeyframesAfterTrackingLoss);
     add_keyframe(std::move(promoted.features), promoted.odometry_camera,
                  TrackingEdge{keyframe, promoted.keyframe_from_frame, promoted.information,
                               promoted.inliers});
   }
+  instrumentation_.count(counter::kKeyframesAfterTrackingLoss);
   add_keyframe(std::move(features), odometry, std::nullopt);
 }
 

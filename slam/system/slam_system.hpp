@@ -5,7 +5,8 @@
 // (slam/frontend/front_end.hpp); everything here is shared.
 //
 // Tracking: each frame is matched against the last keyframe. It becomes a keyframe when its
-// inliers drop below `keyframe_min_inliers` or it moved beyond the keyframe bounds. When the
+// inliers drop below `keyframe_min_inliers` or it moved beyond the keyframe bounds, or, for a
+// front end with a keyframe schedule (RTAB-Map's nodes), when the schedule says so. When the
 // match fails, the last well-tracked frame is promoted to keyframe and the match retried; if that
 // fails too, the frame starts a keyframe without tracking edge, which candidate verification
 // (plus the most recent keyframes) tries to relocalise; failing that, wheel odometry or a weak
@@ -100,7 +101,9 @@ class SlamSystem {
     int inliers;
   };
 
-  bool needs_new_keyframe(const VisualTransformation& t) const;
+  /// Whether a frame tracked by `t` from the last keyframe becomes the next keyframe: the front
+  /// end's schedule when it has one, else the tracking-quality rule.
+  bool needs_new_keyframe(const VisualTransformation& t, Timestamp frame_time) const;
   std::optional<Pose> current_odometry_camera() const;
   /// Adds a keyframe, verifies its candidates, attaches it, optimises after loop closures.
   void add_keyframe(FrameFeatures features, std::optional<Pose> odometry_camera,
@@ -125,6 +128,7 @@ class SlamSystem {
   std::optional<TrackedFrame> last_tracked_;
   std::optional<OdometryReading> last_odometry_;
   GraphRobustness robustness_;  // the front end's, fixed for the run
+  std::optional<KeyframeSchedule> keyframe_schedule_;  // the front end's, fixed for the run
   OptimisationSummary final_optimisation_;
   std::vector<PruningStage> pruning_;
 };

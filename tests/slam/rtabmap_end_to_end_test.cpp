@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -76,6 +77,21 @@ class RtabmapEndToEnd : public ::testing::Test {
         keyframes);
     EXPECT_EQ(j.at("options").at("time_threshold_ms"), "inf");
     EXPECT_EQ(memory.at("transferred"), 0);  // no threshold: nothing moves
+
+    // Nodes on RTAB-Map's schedule (Rtabmap/DetectionRate 1 Hz): closer than 1 s apart only
+    // where tracking against the last node failed and the last tracked frame became one.
+    std::ifstream kf_file(run / rf::kKeyframes);
+    std::vector<double> node_times_s;
+    for (std::string kf_line; std::getline(kf_file, kf_line);) {
+      if (!kf_line.empty() && kf_line[0] != '#') node_times_s.push_back(std::stod(kf_line));
+    }
+    ASSERT_EQ(static_cast<int>(node_times_s.size()), keyframes);
+    int early_nodes = 0;
+    for (std::size_t k = 1; k < node_times_s.size(); ++k) {
+      if (node_times_s[k] - node_times_s[k - 1] < 1.0 - 1e-3) ++early_nodes;
+    }
+    EXPECT_LE(early_nodes, j.at("keyframes_after_tracking_loss").get<int>());
+    EXPECT_LT(early_nodes, keyframes / 2);
 
     // One CSV row per node, with the header of core/run_format.hpp.
     std::ifstream csv(run / rf::kRtabmapMemory);

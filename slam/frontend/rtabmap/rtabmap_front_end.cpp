@@ -36,6 +36,11 @@ RtabmapFrontEnd::RtabmapFrontEnd(const RtabmapOptions& options,
       filter_(rtabmap::parse_prediction_lc("bayes_prediction_lc", options.prediction_lc),
               options.virtual_place_prior) {}
 
+std::optional<KeyframeSchedule> RtabmapFrontEnd::keyframe_schedule() const {
+  return KeyframeSchedule{options_.detection_rate_hz > 0 ? 1.0 / options_.detection_rate_hz : 0.0,
+                          options_.linear_update_m, options_.angular_update_rad};
+}
+
 bool RtabmapFrontEnd::searchable(KeyframeId keyframe) const {
   const rtabmap::MemoryPlace place = memory_.place(keyframe);
   return place == rtabmap::MemoryPlace::kStm || place == rtabmap::MemoryPlace::kWm;

@@ -3,9 +3,12 @@
 // "RTAB-Map") as a front end of the shared pipeline, with the paper's Wi-Fi augmentation.
 //
 // Nodes. RTAB-Map makes a node at Rtabmap/DetectionRate (1 Hz) when the robot moved
-// RGBD/LinearUpdate (0.1 m) or turned RGBD/AngularUpdate (0.1 rad). In this front end a node is
-// one of the pipeline's keyframes (node id = keyframe id); nodes made on RTAB-Map's own schedule
-// are left for later.
+// RGBD/LinearUpdate (0.1 m) or turned RGBD/AngularUpdate (0.1 rad); this front end gives the
+// pipeline that schedule (keyframe_schedule), so a node is a keyframe (node id = keyframe id)
+// made on it. The pipeline tracks each frame against the last node (with wheel odometry as the
+// motion prior where tracking is lost); where that fails, its last tracked frame becomes a node
+// off the schedule, as our tracking needs an anchor where RTAB-Map's frame-to-frame odometry
+// would carry on (run.json: keyframes_after_tracking_loss).
 //
 // For each new node (select):
 //   1. its strongest Kp/MaxFeatures ORB descriptors are quantised into the incremental
@@ -90,6 +93,8 @@ class RtabmapFrontEnd final : public FrontEnd {
   std::string name() const override { return "rtabmap"; }
   /// STM and WM nodes may be compared (STM: predecessors, relocalisation); LTM nodes may not.
   bool searchable(KeyframeId keyframe) const override;
+  /// Nodes as RTAB-Map makes them: Rtabmap/DetectionRate, RGBD/LinearUpdate, RGBD/AngularUpdate.
+  std::optional<KeyframeSchedule> keyframe_schedule() const override;
   std::vector<Candidate> select(const SelectionQuery& query) override;
 
   const RtabmapOptions& options() const { return options_; }

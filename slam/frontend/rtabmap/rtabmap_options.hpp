@@ -44,6 +44,12 @@ struct RtabmapCostModel {
 };
 
 struct RtabmapOptions {
+  /// Rtabmap/DetectionRate (Hz): at most this many nodes per second (0 = no time limit) ...
+  double detection_rate_hz = 1.0;
+  /// ... and only after RGBD/LinearUpdate metres or RGBD/AngularUpdate radians of motion since
+  /// the last node (the tracking estimate, which starts from wheel odometry).
+  double linear_update_m = 0.1;
+  double angular_update_rad = 0.1;
   /// Mem/STMSize: the newest nodes kept out of loop-closure search.
   int stm_size = 10;
   /// Mem/RehearsalSimilarity: a new node this similar to the previous one merges with it.
