@@ -89,14 +89,6 @@ std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohman
   return std::make_unique<GeneratorStream>(scene, options);
 }
 
-std::string frontend_names() {
-  std::string names;
-  for (const std::string& n : wifislam::slam::front_end_names()) {
-    names += (names.empty() ? "" : ", ") + n;
-  }
-  return names;
-}
-
 void run(const SlamArgs& args) {
   using namespace wifislam;
   slam::SlamOptions options;
@@ -133,7 +125,7 @@ WIFISLAM_COMMAND(slam, 60) {
   app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
   app->add_option("--frontend", args->frontend,
                   "SLAM front end: memory, loop-closure candidates and acceptance (" +
-                      frontend_names() + ")")
+                      wifislam::slam::front_end_name_list() + ")")
       ->capture_default_str();
   app->add_flag(
       "--wifi", args->wifi,

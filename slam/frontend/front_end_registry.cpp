@@ -34,12 +34,6 @@ Registry& registry() {
   return *r;
 }
 
-std::string joined_names() {
-  std::string names;
-  for (const std::string& n : front_end_names()) names += (names.empty() ? "" : ", ") + n;
-  return names;
-}
-
 }  // namespace
 
 void register_front_end(const std::string& name, FrontEndFactory factory) {
@@ -70,7 +64,7 @@ std::unique_ptr<FrontEnd> make_front_end(const FrontEndContext& context) {
   }
   if (!factory) {
     throw InvalidInputError("unknown SLAM front end '" + options.frontend +
-                            "'; known: " + joined_names());
+                            "'; known: " + front_end_name_list());
   }
   if (options.wifi.enabled && !context.stream_has_wifi) {
     throw InvalidInputError(
@@ -82,6 +76,12 @@ std::unique_ptr<FrontEnd> make_front_end(const FrontEndContext& context) {
     front_end->attach_wifi(std::make_unique<WifiModule>(options.wifi, *context.instrumentation));
   }
   return front_end;
+}
+
+std::string front_end_name_list() {
+  std::string names;
+  for (const std::string& n : front_end_names()) names += (names.empty() ? "" : ", ") + n;
+  return names;
 }
 
 }  // namespace wifislam::slam

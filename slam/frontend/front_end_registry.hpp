@@ -34,5 +34,7 @@ void register_front_end(const std::string& name, FrontEndFactory factory);
 std::unique_ptr<FrontEnd> make_front_end(const FrontEndContext& context);
 
 std::vector<std::string> front_end_names();
+/// The names joined with ", " (for messages and --help).
+std::string front_end_name_list();
 
 }  // namespace wifislam::slam
