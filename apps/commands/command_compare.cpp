@@ -105,7 +105,9 @@ WIFISLAM_COMMAND(compare, 65) {
   app->add_option("--preset", args->preset,
                   "paper-rgbdslam: the paper's RGBD-SLAM experiment on the built-in c_hall twin\n"
                   "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 45 min)");
-  app->add_option("--frontend", args->frontend, "Front end (" + wifislam::slam::front_end_name_list() + ")")->capture_default_str();
+  app->add_option("--frontend", args->frontend,
+                  "Front end (" + wifislam::slam::front_end_name_list() + ")")
+      ->capture_default_str();
   app->add_option("--sweep", args->sweeps,
                   "Swept SLAM option key=v1,v2,... (repeatable; every combination is run), e.g.\n"
                   "--sweep min_matches=10,15,20,50 --sweep inlier_distance=2,3,5");

@@ -39,8 +39,7 @@ std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& 
   // 1 / diagonal would understate the variance by orders of magnitude; the marginal variances are
   // the diagonal of the covariance, the inverse of the information.
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(edge.information);
-  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() ||
-      !(ldlt.vectorD().minCoeff() > 0.0)) {
+  if (ldlt.info() != Eigen::Success || !ldlt.isPositive() || !(ldlt.vectorD().minCoeff() > 0.0)) {
     return std::nullopt;
   }
   const Eigen::Matrix<double, 6, 6> covariance =

@@ -127,7 +127,7 @@ class SlamSystem {
   std::vector<LoopClosureRecord> loop_closures_;
   std::optional<TrackedFrame> last_tracked_;
   std::optional<OdometryReading> last_odometry_;
-  GraphRobustness robustness_;  // the front end's, fixed for the run
+  GraphRobustness robustness_;                         // the front end's, fixed for the run
   std::optional<KeyframeSchedule> keyframe_schedule_;  // the front end's, fixed for the run
   OptimisationSummary final_optimisation_;
   std::vector<PruningStage> pruning_;

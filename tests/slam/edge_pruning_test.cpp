@@ -14,25 +14,15 @@
 #include "slam/graph/pose_graph.hpp"
 #include "slam/optimize/edge_pruning.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
+#include "tests/slam/graph_test_poses.hpp"
 
 namespace wifislam::slam {
 namespace {
 
 constexpr double kSigmaM = 0.02, kSigmaRad = 0.01;
 
-Information6 information(double sigma_m, double sigma_rad) {
-  Information6 info = Information6::Zero();
-  info.diagonal() << Eigen::Vector3d::Constant(1 / (sigma_m * sigma_m)),
-      Eigen::Vector3d::Constant(1 / (sigma_rad * sigma_rad));
-  return info;
-}
-
-Pose planar(double x, double y, double yaw) {
-  Pose p = Pose::Identity();
-  p.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  p.translation() = Eigen::Vector3d(x, y, 0);
-  return p;
-}
+using test::information;
+using test::planar;
 
 /// A measurement of `truth` with the noise its information claims (translation sigma_m per axis,
 /// rotation sigma_rad per axis, in the residual's convention), so its chi^2 follows chi^2(6).

@@ -20,8 +20,8 @@ Pose moved(double x_m, double yaw_rad) {
 }
 
 TEST(KeyframeSchedule, NeedsBothThePeriodAndEnoughMotion) {
-  const KeyframeSchedule rtabmap;  // 1 Hz, 0.1 m, 0.1 rad
-  EXPECT_FALSE(rtabmap.due(kSecondNs / 2, moved(1.0, 0.0)));  // moved, too soon
+  const KeyframeSchedule rtabmap;                               // 1 Hz, 0.1 m, 0.1 rad
+  EXPECT_FALSE(rtabmap.due(kSecondNs / 2, moved(1.0, 0.0)));    // moved, too soon
   EXPECT_FALSE(rtabmap.due(5 * kSecondNs, moved(0.05, 0.05)));  // time, standing still
   EXPECT_TRUE(rtabmap.due(kSecondNs, moved(0.12, 0.0)));
   EXPECT_TRUE(rtabmap.due(2 * kSecondNs, moved(0.0, 0.12)));  // turning in place counts

@@ -9,23 +9,13 @@
 #include "core/rng.hpp"
 #include "slam/graph/pose_graph.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
+#include "tests/slam/graph_test_poses.hpp"
 
 namespace wifislam::slam {
 namespace {
 
-Information6 information(double sigma_m, double sigma_rad) {
-  Information6 info = Information6::Zero();
-  info.diagonal() << Eigen::Vector3d::Constant(1 / (sigma_m * sigma_m)),
-      Eigen::Vector3d::Constant(1 / (sigma_rad * sigma_rad));
-  return info;
-}
-
-Pose planar(double x, double y, double yaw) {
-  Pose p = Pose::Identity();
-  p.linear() = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  p.translation() = Eigen::Vector3d(x, y, 0);
-  return p;
-}
+using test::information;
+using test::planar;
 
 /// Poses around a 10 x 10 m square, 0.5 m apart, turning at the corners; back at the start.
 std::vector<Pose> square_loop() {

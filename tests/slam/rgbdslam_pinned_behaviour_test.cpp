@@ -11,11 +11,11 @@
 // bounding (ranked keyframes of similar clusters), on the small loop with 6 s pauses so that
 // the Wi-Fi run really clusters; re-recorded when the back end became RGBDSLAMv2's (Huber kernel
 // on every edge, after-run pruning, graph.json format 3 with "pruned" and "weight") and visual
-// information was calibrated (information_scale). Recorded on this project's machine kind (Debian 12, llvmpipe,
-// OpenCV 4.6, Ceres 2.1). The dataset's image
-// digest is checked first: where the renderer produces other pixels (another CPU's llvmpipe code
-// path), the SLAM digests cannot be compared and the test says so and skips; where the images
-// match, the SLAM digests must match exactly.
+// information was calibrated (information_scale). Recorded on this project's machine kind (Debian
+// 12, llvmpipe, OpenCV 4.6, Ceres 2.1). The dataset's image digest is checked first: where the
+// renderer produces other pixels (another CPU's llvmpipe code path), the SLAM digests cannot be
+// compared and the test says so and skips; where the images match, the SLAM digests must match
+// exactly.
 //
 // Digest of a run folder: SHA-256 over trajectory.txt, keyframes.txt, graph.json,
 // wifi_clusters.csv (when present) and loop_closures.csv without its `role` column (the role
