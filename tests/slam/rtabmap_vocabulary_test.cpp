@@ -47,6 +47,33 @@ TEST(RtabmapVocabulary, DescriptorJoinsNearestWordOnlyWhenTheRatioTestPasses) {
   EXPECT_EQ(vocabulary.references(0).at(1), 1);
 }
 
+TEST(RtabmapVocabulary, WordsOfNodesOutOfMemoryLeaveTheDictionaryUntilRetrieved) {
+  // Memory::cleanUnusedWords: a word no node in memory references is not searched.
+  VisualVocabulary vocabulary(0.8);
+  const NodeWords place0 = vocabulary.add_node(0, test::place_features(0).descriptors);
+  const std::size_t words = vocabulary.size();
+  EXPECT_EQ(vocabulary.dictionary_size(), words);
+
+  vocabulary.disable_references(0, place0);  // node 0 moves to LTM
+  EXPECT_EQ(vocabulary.dictionary_size(), 0u);
+  const std::int64_t before = vocabulary.distance_computations();
+  const NodeWords copy = vocabulary.add_node(1, test::place_features(0).descriptors);
+  // The same place again founds new words (and compares only with the ones it founds).
+  EXPECT_GE(vocabulary.size(), words + 150);
+  for (const auto& [word, count] : copy.counts) EXPECT_GE(word, static_cast<WordId>(words));
+  EXPECT_LT(vocabulary.distance_computations() - before,
+            static_cast<std::int64_t>(copy.total) * static_cast<std::int64_t>(words));
+
+  vocabulary.enable_references(0, place0);  // retrieved: its words are searched again
+  EXPECT_EQ(vocabulary.dictionary_size(), vocabulary.size());
+  const NodeWords third = vocabulary.add_node(2, test::place_features(0).descriptors);
+  bool reuses_an_old_word = false;
+  for (const auto& [word, count] : third.counts) {
+    reuses_an_old_word |= word < static_cast<WordId>(words);
+  }
+  EXPECT_TRUE(reuses_an_old_word);
+}
+
 TEST(RtabmapVocabulary, RevisitedPlaceReusesItsWordsAndNewPlaceFoundsNewOnes) {
   VisualVocabulary vocabulary(0.8);
   const FrameFeatures place0 = test::place_features(0);

@@ -103,7 +103,7 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
   words_of_[t] = vocabulary_.add_node(t, descriptors);
   pending_.word_comparisons = vocabulary_.distance_computations() - comparisons_before;
   if (memory_.add(t) >= 0) ++pending_.entered_wm;
-  pending_.words = vocabulary_.size();
+  pending_.words = vocabulary_.dictionary_size();
 
   // 2. Rehearsal with the previous node.
   if (t >= 1 && memory_.place(t - 1) == rtabmap::MemoryPlace::kStm &&

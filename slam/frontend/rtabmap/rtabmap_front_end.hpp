@@ -70,7 +70,7 @@ struct RtabmapNodeRecord {
   int transferred = 0;                   // WM -> LTM
   int immune = 0;                        // WM nodes kept by Wi-Fi immunisation this step
   bool rehearsed = false;                // merged with the previous node
-  std::size_t words = 0;                 // vocabulary size after the node
+  std::size_t words = 0;                 // searched dictionary size after the node
   std::int64_t word_comparisons = 0;     // descriptor-word distances of its quantisation
   std::size_t scored = 0;                // WM nodes the likelihood was computed for
   std::int64_t likelihood_terms = 0;

@@ -65,12 +65,14 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
   if (descriptors.type() != CV_8U || descriptors.cols != 32) {
     throw std::invalid_argument("VisualVocabulary: descriptors must be 32-byte ORB rows (CV_8U)");
   }
+  refresh_dictionary();
   std::vector<int> distances;
   for (int i = 0; i < descriptors.rows; ++i) {
     const std::array<std::uint64_t, 4> query = packed(descriptors, i);
-    // Every word, including those this node founded a moment ago.
-    distances.resize(words_.size() / 4);
-    distances_to_words(query.data(), words_.data(), distances.size(), distances.data());
+    // Every word of the dictionary, including those this node founded a moment ago.
+    distances.resize(dictionary_ids_.size());
+    distances_to_words(query.data(), dictionary_words_.data(), distances.size(),
+                       distances.data());
     distance_computations_ += static_cast<std::int64_t>(distances.size());
     int best = std::numeric_limits<int>::max(), second = std::numeric_limits<int>::max();
     WordId best_word = -1;
@@ -79,7 +81,7 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
       if (d < best) {
         second = best;
         best = d;
-        best_word = static_cast<WordId>(w);
+        best_word = dictionary_ids_[w];
       } else if (d < second) {
         second = d;
       }
@@ -91,6 +93,8 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
       word = static_cast<WordId>(size());
       words_.insert(words_.end(), query.begin(), query.end());
       references_.emplace_back();
+      dictionary_words_.insert(dictionary_words_.end(), query.begin(), query.end());
+      dictionary_ids_.push_back(word);
     }
     ++out.counts[word];
     ++out.total;
@@ -101,14 +105,35 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
 
 void VisualVocabulary::disable_references(NodeId node, const NodeWords& words) {
   for (const auto& [word, count] : words.counts) {
-    references_.at(static_cast<std::size_t>(word)).erase(node);
+    std::map<NodeId, int>& refs = references_.at(static_cast<std::size_t>(word));
+    if (refs.erase(node) > 0 && refs.empty()) dictionary_stale_ = true;
   }
 }
 
 void VisualVocabulary::enable_references(NodeId node, const NodeWords& words) {
   for (const auto& [word, count] : words.counts) {
-    references_.at(static_cast<std::size_t>(word))[node] = count;
+    std::map<NodeId, int>& refs = references_.at(static_cast<std::size_t>(word));
+    if (refs.empty()) dictionary_stale_ = true;
+    refs[node] = count;
   }
+}
+
+void VisualVocabulary::refresh_dictionary() {
+  if (!dictionary_stale_) return;
+  dictionary_words_.clear();
+  dictionary_ids_.clear();
+  for (std::size_t w = 0; w < references_.size(); ++w) {
+    if (references_[w].empty()) continue;
+    dictionary_words_.insert(dictionary_words_.end(), words_.begin() + 4 * w,
+                             words_.begin() + 4 * (w + 1));
+    dictionary_ids_.push_back(static_cast<WordId>(w));
+  }
+  dictionary_stale_ = false;
+}
+
+std::size_t VisualVocabulary::dictionary_size() {
+  refresh_dictionary();
+  return dictionary_ids_.size();
 }
 
 cv::Mat strongest_descriptors(const std::vector<cv::KeyPoint>& keypoints,

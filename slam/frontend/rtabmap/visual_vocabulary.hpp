@@ -18,7 +18,10 @@
 //
 // The vocabulary also holds the inverted index of RTAB-Map's VisualWord references: for each word,
 // the nodes in memory (STM and WM) that contain it and how often. A node moved to long-term memory
-// gives its references up (Memory::disableWordsRef) and takes them back when retrieved.
+// gives its references up (Memory::disableWordsRef) and takes them back when retrieved. As in
+// RTAB-Map (Memory::cleanUnusedWords), a word no node in memory references leaves the searched
+// dictionary until a retrieved node references it again, so a new descriptor near it founds a
+// new word: memory management bounds the quantisation's cost along with the likelihood's.
 
 #include <cstdint>
 #include <map>
@@ -51,7 +54,11 @@ class VisualVocabulary {
   void disable_references(NodeId node, const NodeWords& words);
   void enable_references(NodeId node, const NodeWords& words);
 
+  /// Words ever founded (ids are 0..size()-1).
   std::size_t size() const { return words_.size() / 4; }
+  /// Words in the searched dictionary: those referenced by a node in memory, plus any founded
+  /// since the last add_node (RTAB-Map's dictionary size).
+  std::size_t dictionary_size();
   /// Nodes in memory referencing `word`, with their counts.
   const std::map<NodeId, int>& references(WordId word) const {
     return references_.at(static_cast<std::size_t>(word));
@@ -63,6 +70,12 @@ class VisualVocabulary {
   std::vector<std::uint64_t> words_;  // 4 per word (its founding descriptor), id = index
   std::vector<std::map<NodeId, int>> references_;
   std::int64_t distance_computations_ = 0;
+  /// The searched dictionary, in word-id order (ties go to the lower id): packed descriptors and
+  /// ids, rebuilt when a word left or rejoined it.
+  void refresh_dictionary();
+  std::vector<std::uint64_t> dictionary_words_;
+  std::vector<WordId> dictionary_ids_;
+  bool dictionary_stale_ = false;
 };
 
 /// The strongest `max_features` keypoints' descriptor rows (Kp/MaxFeatures), by response, ties by
