@@ -44,6 +44,8 @@ std::vector<Timestamp> times_of(const Trajectory& t) {
 struct RunIdentity {
   std::string frontend;
   bool wifi = false;
+  /// frontend_summary.node_time_s.cost, for a front end with a deterministic cost model.
+  std::optional<double> cost_model_s;
 };
 
 RunIdentity identity_of(const fs::path& run_json) {
@@ -81,6 +83,18 @@ RunIdentity identity_of(const fs::path& run_json) {
   } else if (id.frontend.ends_with("+wifi")) {
     id.frontend.resize(id.frontend.size() - 5);
     id.wifi = true;
+  }
+  const nlohmann::json* cost = &j;
+  for (const char* k : {"frontend_summary", "node_time_s", "cost"}) {
+    cost = cost->is_object() && cost->contains(k) ? &(*cost)[k] : nullptr;
+    if (cost == nullptr) break;
+  }
+  if (cost != nullptr) {
+    if (!cost->is_number() || !(cost->get<double>() >= 0.0)) {
+      throw ParseError(run_json.string(), "frontend_summary.node_time_s.cost",
+                       "expected a number of seconds >= 0");
+    }
+    id.cost_model_s = cost->get<double>();
   }
   return id;
 }
@@ -199,6 +213,7 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
       bare_trajectory ? RunIdentity{} : identity_of(run_dir / run_folder::kRun);
   ev.frontend = identity.frontend;
   ev.wifi_run = identity.wifi;
+  ev.cost_model_s = identity.cost_model_s;
   DatasetCalibration calibration;
   if (fs::exists(dataset_dir / dataset::kCalibration)) {
     calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);

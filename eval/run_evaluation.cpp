@@ -10,6 +10,7 @@ nlohmann::ordered_json RunEvaluation::flat_metrics() const {
   j["dataset_dir"] = dataset_dir;
   j["frontend"] = frontend;
   j["wifi_run"] = wifi_run;
+  if (cost_model_s) j["cost_model_s"] = *cost_model_s;
   j["frames_estimated"] = frames_estimated;
   j["frames_ground_truth"] = frames_ground_truth;
   j["frames_associated"] = frames_associated;
@@ -65,6 +66,7 @@ nlohmann::ordered_json RunEvaluation::to_ordered_json() const {
   j["dataset_dir"] = dataset_dir;
   j["frontend"] = frontend;
   j["wifi_run"] = wifi_run;
+  if (cost_model_s) j["cost_model_s"] = *cost_model_s;
   j["thresholds"] = options.to_json();
   j["trajectory"] = {
       {"frames_estimated", frames_estimated},

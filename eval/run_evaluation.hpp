@@ -5,6 +5,7 @@
 // episodes, the aligned path for plots) and the thresholds used.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct RunEvaluation {
   std::string run_dir, dataset_dir;
   std::string frontend;   // from run.json, "" when absent
   bool wifi_run = false;  // run.json's "wifi" (false when absent)
+  /// The front end's deterministic time (rtabmap's cost model, summed over nodes), when run.json
+  /// has one: independent of machine load, unlike the wall-clock times below.
+  std::optional<double> cost_model_s;
   EvalOptions options;
 
   // Trajectory error (ATE after alignment, RPE per metre travelled).

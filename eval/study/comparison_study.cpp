@@ -89,6 +89,8 @@ struct Cell {
   /// The paper's time figure: the module bounding acts on (candidate selection, Wi-Fi
   /// clustering included, and the long-term candidates' verifications) plus optimisation.
   double bounded_module_s = 0;
+  double cost_model_s = 0;  // the front end's deterministic time, when it has one
+  bool has_cost_model = false;
   std::int64_t episodes = 0;
   eval::LoopClosureCounts online, pruned;  // summed over seeds (percentages not used)
   std::int64_t comparisons = 0, long_term_comparisons = 0, keyframes = 0;
@@ -109,6 +111,10 @@ struct Cell {
       sum->false_negatives += one->false_negatives;
     }
     bounded_module_s += e.timing.candidate_selection_s + lt.time_s + e.optimisation_s;
+    if (e.cost_model_s) {
+      cost_model_s += *e.cost_model_s;
+      has_cost_model = true;
+    }
     ate_rmse_m.push_back(e.ate_rmse_m);
     loop_closure_s += e.loop_closure_detection_s;
     wifi_overhead_s += e.wifi_overhead_s;
@@ -298,7 +304,9 @@ std::string ComparisonResult::markdown() const {
     std::string title;
     std::function<std::string(const Cell&, bool wifi)> cell;
   };
-  const std::vector<Metric> metrics = {
+  bool any_cost_model = false;
+  for (const ComparisonCase& c : cases) any_cost_model |= c.evaluation.cost_model_s.has_value();
+  std::vector<Metric> metrics = {
       {"Trajectory error: ATE RMSE (m), after the back end's pruning",
        [](const Cell& c, bool) { return c.ate_text(); }},
       {"False positive loop closures (wrong place): % of scored edges, online (false/scored)",
@@ -336,6 +344,14 @@ std::string ComparisonResult::markdown() const {
                             c.total_s > 0 ? 100.0 * c.wifi_overhead_s / c.total_s : 0.0);
        }},
   };
+  if (any_cost_model) {
+    metrics.push_back(
+        {"Front-end time, deterministic cost model (s; what rtabmap's Rtabmap/TimeThr compares)",
+         [](const Cell& c, bool) {
+           return c.has_cost_model ? fmt::format("{:.2f}", c.mean(c.cost_model_s))
+                                   : std::string("-");
+         }});
+  }
 
   std::string out;
   if (seeds > 1) {
@@ -386,6 +402,10 @@ std::string ComparisonResult::markdown() const {
   ratio_table("Loop-closure detection time", &Cell::loop_closure_s);
   out += "\n";
   ratio_table("Bounded-module time", &Cell::bounded_module_s);
+  if (any_cost_model) {
+    out += "\n";
+    ratio_table("Front-end time (cost model)", &Cell::cost_model_s);
+  }
   if (!divergences.empty()) {
     out +=
         "\n### First keyframe where the WiFi run differs from vanilla (same dataset and "

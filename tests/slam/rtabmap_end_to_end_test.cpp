@@ -120,6 +120,10 @@ class RtabmapEndToEnd : public ::testing::Test {
     EXPECT_EQ(online["false_negatives"].get<int>(), 0);
     EXPECT_GT(m["trajectory"]["ate_rmse_m"].get<double>(), 0.0);
     EXPECT_LT(m["trajectory"]["ate_rmse_m"].get<double>(), 0.15);
+    // The deterministic cost model's total reaches eval (compare's cost-model table).
+    const double cost_s = j.at("frontend_summary").at("node_time_s").at("cost").get<double>();
+    EXPECT_GT(cost_s, 0.0);
+    EXPECT_EQ(m.at("cost_model_s").get<double>(), cost_s);
   }
 
   static fs::path dir_;

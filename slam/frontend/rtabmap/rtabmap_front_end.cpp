@@ -262,8 +262,11 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
   std::int64_t transferred = 0, retrieved = 0, wifi_retrieved = 0, rehearsed = 0, over = 0,
                candidates = 0, accepted = 0;
   std::size_t max_wm = 0;
-  double wm_sum = 0.0, over_ms = 0.0;
+  double wm_sum = 0.0, over_ms = 0.0, cost_ms = 0.0, wall_ms = 0.0, cpu_ms = 0.0;
   for (const RtabmapNodeRecord& r : records_) {
+    cost_ms += r.cost_ms;
+    wall_ms += r.wall_ms;
+    cpu_ms += r.cpu_ms;
     transferred += r.transferred;
     retrieved += r.retrieved;
     wifi_retrieved += r.wifi_retrieved;
@@ -278,25 +281,28 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
   const auto json_ms = [](double v) -> nlohmann::json {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json("inf");
   };
-  return {{"nodes", records_.size()},
-          {"stm_size", options_.stm_size},
-          {"time_threshold_ms", json_ms(options_.time_threshold_ms)},
-          {"time_source", options_.time_source},
-          {"memory",
-           {{"stm", memory_.stm().size()},
-            {"wm", memory_.wm().size()},
-            {"ltm", memory_.ltm().size()},
-            {"max_wm", max_wm},
-            {"mean_wm", records_.empty() ? 0.0 : wm_sum / static_cast<double>(records_.size())},
-            {"transferred", transferred},
-            {"retrieved", retrieved},
-            {"wifi_retrieved", wifi_retrieved},
-            {"rehearsed", rehearsed}}},
-          {"vocabulary_words", vocabulary_.size()},
-          {"nodes_over_budget", over},
-          {"over_budget_ms", over_ms},
-          {"loop_candidates", candidates},
-          {"loop_closures_accepted", accepted}};
+  return {
+      {"nodes", records_.size()},
+      {"stm_size", options_.stm_size},
+      {"time_threshold_ms", json_ms(options_.time_threshold_ms)},
+      {"time_source", options_.time_source},
+      {"memory",
+       {{"stm", memory_.stm().size()},
+        {"wm", memory_.wm().size()},
+        {"ltm", memory_.ltm().size()},
+        {"max_wm", max_wm},
+        {"mean_wm", records_.empty() ? 0.0 : wm_sum / static_cast<double>(records_.size())},
+        {"transferred", transferred},
+        {"retrieved", retrieved},
+        {"wifi_retrieved", wifi_retrieved},
+        {"rehearsed", rehearsed}}},
+      {"vocabulary_words", vocabulary_.size()},
+      {"nodes_over_budget", over},
+      // Sum over nodes of what TimeThr is compared with, under each time source.
+      {"node_time_s", {{"cost", cost_ms * 1e-3}, {"wall", wall_ms * 1e-3}, {"cpu", cpu_ms * 1e-3}}},
+      {"over_budget_ms", over_ms},
+      {"loop_candidates", candidates},
+      {"loop_closures_accepted", accepted}};
 }
 
 }  // namespace wifislam::slam
