@@ -4,16 +4,15 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
+#include "core/yaml_document.hpp"
 #include "sim/scene/scene_schema.hpp"
 
 namespace wifislam {
@@ -511,7 +510,10 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
   }
 }
 
-Scene load_from_node(const YAML::Node& root, SourceMap& sources) {
+Scene load_scene_node(const YAML::Node& root, const std::string& source_name) {
+  if (!root.IsDefined() || root.IsNull())
+    throw ParseError(source_name, "", "the scene file is empty");
+  SourceMap sources{source_name, {}};
   Scene scene;
   YamlReader reader(root, "", sources);
   // Check the version first so a future file fails with a clear message, not a wrong key.
@@ -535,24 +537,11 @@ Scene load_from_node(const YAML::Node& root, SourceMap& sources) {
 }  // namespace
 
 Scene load_scene_yaml(const std::string& yaml_text, const std::string& source_name) {
-  SourceMap sources{source_name, {}};
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw ParseError(sources.where(e.mark), "", "not valid YAML: " + e.msg);
-  }
-  if (!root.IsDefined() || root.IsNull())
-    throw ParseError(source_name, "", "the scene file is empty");
-  return load_from_node(root, sources);
+  return load_scene_node(parse_yaml_document(yaml_text, source_name), source_name);
 }
 
 Scene load_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return load_scene_yaml(buffer.str(), path);
+  return load_scene_node(load_yaml_file(path), path);
 }
 
 void validate_scene(const Scene& scene) { validate_scene_impl(scene, nullptr); }

@@ -200,6 +200,43 @@ TEST(SceneErrors, MissingFileIsAnIoErrorNamingThePath) {
   }
 }
 
+// Issue 18: yaml-cpp keeps the first of two equal keys; the second one silently did nothing.
+TEST(SceneErrors, DuplicateKeyNamesBothLines) {
+  auto e = expect_parse_error(std::string(kValidBody) + "route:\n  nodes: [C, B, A]\n");
+  EXPECT_EQ(e.key_path(), "route");
+  EXPECT_EQ(e.where(), "bad.yaml:11:1");
+  EXPECT_NE(e.detail().find("duplicate key"), std::string::npos) << e.what();
+  EXPECT_NE(e.detail().find("line 9"), std::string::npos) << e.what();
+  // Nested and in flow style too.
+  e = expect_parse_error(
+      replace(kValidBody, "{id: bc, from: B, to: C}", "{id: bc, from: B, to: C, to: A}"));
+  EXPECT_EQ(e.key_path(), "corridors[1].to");
+  EXPECT_EQ(e.where(), "bad.yaml:8:30");
+}
+
+// Issue 18: yaml-cpp says "bad file" when lists nest deeper than its limit.
+TEST(SceneErrors, DeepNestingSaysSoWithAPosition) {
+  const std::string deep = std::string(3000, '[') + std::string(3000, ']');
+  const auto e = expect_parse_error("version: 1\nname: " + deep + "\n");
+  EXPECT_NE(e.where().find("bad.yaml:2:"), std::string::npos) << e.what();
+  EXPECT_NE(e.detail().find("nested deeper than"), std::string::npos) << e.what();
+  EXPECT_EQ(e.detail().find("bad file"), std::string::npos) << e.what();
+}
+
+// Issue 18: a folder given as the scene was exit 105 in some commands and 3 in others.
+TEST(SceneErrors, AFolderIsAParseErrorNamingIt) {
+  const std::string dir = ::testing::TempDir() + "scene_folder.yaml";
+  std::filesystem::create_directories(dir);
+  try {
+    load_scene_file(dir);
+    ADD_FAILURE() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.where(), dir);
+    EXPECT_NE(e.detail().find("is a folder"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(dir);
+}
+
 TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
   Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
   scene.route.nodes = {"A", "C"};
