@@ -152,9 +152,9 @@ void DatasetReader::validate() {
     frame_count_ = static_cast<std::int64_t>(associated_.size());
     has_frames_ = true;
   } else if (!(manifest_ && !manifest_->images)) {
-    throw IoError(fmt::format("{}: not an RGB-D dataset: found neither {} nor {} + {}",
-                              folder_.string(), dataset::kAssociations, dataset::kRgbList,
-                              dataset::kDepthList));
+    throw InvalidInputError(fmt::format("{}: not an RGB-D dataset: found neither {} nor {} + {}",
+                                        folder_.string(), dataset::kAssociations, dataset::kRgbList,
+                                        dataset::kDepthList));
   }
   if (has_odometry_) {
     TumTrajectoryReader reader((folder_ / dataset::kOdometry).string());

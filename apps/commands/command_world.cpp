@@ -51,8 +51,7 @@ WIFISLAM_COMMAND(world, 20) {
   CLI::App* app = parent.add_subcommand(
       "world", "Generate a scene's world (floor plan, mesh, route) and print a summary.");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();  // the scene loader says what is wrong with the path
   app->add_option("--plan", args->plan_path,
                   "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)");
   app->add_flag("--svg", args->svg, "Also write the plan as SVG next to the PNG");

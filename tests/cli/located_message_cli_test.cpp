@@ -1,0 +1,79 @@
+// Messages a user can act on (issue 18, "Messages"): bad input found after the scene is loaded
+// (the floor plan, AP placement) names the file, line, column and key like the loader's own
+// errors, and exits 2; a folder given as a scene is refused alike by every command; a radio map
+// too fine for memory says what resolution would do; a second run into a folder being written
+// says so instead of "write failed (disk full?)".
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::run_wifislam;
+
+class LocatedMessage : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    scratch_ = test::scratch_folder();
+    scene_ = scratch_ / "tiny.yaml";
+    test::write_file(scene_, test::kTinyLoopYaml);
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  test::CliResult wifislam(const std::string& args) { return run_wifislam(args, scratch_); }
+  fs::path scene_with(const std::string& from, const std::string& to, const std::string& name) {
+    std::string yaml = test::kTinyLoopYaml;
+    const auto at = yaml.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+    const fs::path path = scratch_ / name;
+    test::write_file(path, yaml);
+    return path;
+  }
+  static void expect_bad_input(const test::CliResult& r, const std::string& where,
+                               const std::string& what) {
+    EXPECT_EQ(r.signal, 0) << r.err;
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+
+  fs::path scratch_, scene_;
+};
+
+// Once exit 105 (CLI11's check) in some commands and 3 in another.
+TEST_F(LocatedMessage, AFolderGivenAsTheSceneIsBadInputInEveryCommand) {
+  const fs::path folder = scratch_ / "folder.yaml";
+  fs::create_directories(folder);
+  const fs::path out = scratch_ / "out";
+  for (const std::string& command :
+       {"world " + folder.string(), "generate " + folder.string() + " -o " + out.string(),
+        "radiomap " + folder.string() + " --strongest -o " + (scratch_ / "m.png").string(),
+        "render " + folder.string() + " --pose 1,0,0 -o " + (scratch_ / "view").string(),
+        "compare " + folder.string() + " -o " + out.string(), "demo --scene " + folder.string()}) {
+    // In the scratch folder: the demo writes ./demo-output.
+    expect_bad_input(run_wifislam(command, scratch_, scratch_), folder.string(), "is a folder");
+  }
+  // `slam` reads a folder as a dataset: this one is not one.
+  expect_bad_input(wifislam("slam " + folder.string() + " -o " + out.string()), folder.string(),
+                   "not an RGB-D dataset");
+  EXPECT_FALSE(fs::exists(out));
+  // A missing file is a file error (exit 3), the same in every command.
+  const auto missing = wifislam("world " + (scratch_ / "nope.yaml").string());
+  EXPECT_EQ(missing.exit_code, 3) << missing.err;
+  EXPECT_NE(missing.err.find("nope.yaml"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace wifislam
