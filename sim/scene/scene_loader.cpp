@@ -114,6 +114,16 @@ class YamlReader {
       if (!n->IsScalar()) fail(*n, key, "expected text, got " + describe(*n));
       out = n->Scalar();
       if (out.empty()) fail(*n, key, "must not be empty");
+      // Names and descriptions go into one-line headers of the dataset's text files.
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(out[i]);
+        if (c < 0x20 || c == 0x7f) {
+          fail(*n, key,
+               fmt::format("must be one line of printable text; character {} is a control "
+                           "character ({})",
+                           i + 1, c == '\n' ? "a line break" : fmt::format("code {}", c)));
+        }
+      }
     }
   }
   template <class E>
