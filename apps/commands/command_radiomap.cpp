@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "radio_model/ap_placement.hpp"
@@ -77,9 +78,10 @@ WIFISLAM_COMMAND(radiomap, 40) {
       app->add_flag("--strongest", args->strongest, "Strongest access point at every cell");
   ap->excludes(strongest);
   strongest->excludes(ap);
-  app->add_option("--res", args->resolution_m, "Grid resolution (m)")
+  app->add_option("--res", args->resolution_m, "Grid resolution (m), 0.01 to 10")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.01, 10.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--height", args->height_m,
                   "Receiver height above the floor (m), below the scene's ceiling")
       ->capture_default_str();

@@ -75,5 +75,36 @@ TEST_F(LocatedMessage, AFolderGivenAsTheSceneIsBadInputInEveryCommand) {
   EXPECT_NE(missing.err.find("nope.yaml"), std::string::npos) << missing.err;
 }
 
+// Once a 1 x 1 map for --res 1e-9 (the cell count overflowed an int).
+TEST_F(LocatedMessage, RadioMapResolutionHasARangeAndTheMapACellLimit) {
+  const fs::path png = scratch_ / "map.png";
+  for (const char* res : {"1e-9", "0", "-1", "nan", "11"}) {
+    const auto r = wifislam("radiomap " + scene_.string() + " --strongest --res " + res + " -o " +
+                            png.string());
+    EXPECT_NE(r.exit_code, 0) << res;
+    EXPECT_NE(r.err.find("--res"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(png)) << res;
+  }
+  // 50 x 50 m at 1 cm would be 25 million cells.
+  const fs::path ell = scratch_ / "ell.yaml";
+  test::write_file(ell, R"(version: 1
+name: ell
+nodes:
+  - {id: A, position_m: [0, 0]}
+  - {id: B, position_m: [50, 0]}
+  - {id: C, position_m: [50, 50]}
+corridors:
+  - {id: south, from: A, to: B}
+  - {id: east, from: B, to: C}
+access_points: {placement: random, count: 2}
+route: {nodes: [A, B, C]}
+)");
+  const auto r =
+      wifislam("radiomap " + ell.string() + " --strongest --res 0.01 -o " + png.string());
+  expect_bad_input(r, "radio map", "at most 16 million cells");
+  EXPECT_NE(r.err.find("--res"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(png));
+}
+
 }  // namespace
 }  // namespace wifislam
