@@ -407,6 +407,19 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
               "duplicate node id '" + scene.nodes[i].id + "'");
     }
   }
+  // Two nodes at one spot make two corridor ends that the graph does not join, and a route through
+  // both turns back where it seems to go on.
+  std::map<std::pair<double, double>, std::size_t> node_at;
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    const Eigen::Vector2d& p = scene.nodes[i].position_m;
+    const auto [other, fresh] = node_at.emplace(std::pair{p.x(), p.y()}, i);
+    if (!fresh) {
+      invalid(locate, fmt::format("nodes[{}].position_m", i),
+              fmt::format("node '{}' is at the same spot as node '{}' (nodes[{}]); use one node "
+                          "and name it in every corridor and route step that meets there",
+                          scene.nodes[i].id, scene.nodes[other->second].id, other->second));
+    }
+  }
   if (scene.corridors.empty()) invalid(locate, "corridors", "a scene needs at least one corridor");
   std::set<std::string> corridor_ids;
   std::map<std::string, std::vector<std::string>> adjacency;
@@ -537,6 +550,8 @@ Scene load_scene_node(const YAML::Node& root, const std::string& source_name) {
   schema::visit(reader, scene);
   reader.finish();
   scene.source_path = sources.file;
+  for (const auto& [key_path, mark] : sources.marks)
+    scene.key_locations[key_path] = sources.where(mark);
   validate_scene_impl(scene, [&](const std::string& key) { return sources.where(key); });
   if (scene.access_points.placement == ApPlacement::kExplicit && scene.access_points.count == 0) {
     scene.access_points.count = static_cast<int>(scene.access_points.explicit_list.size());

@@ -52,6 +52,39 @@ class LocatedMessage : public ::testing::Test {
   fs::path scratch_, scene_;
 };
 
+// Once "open area 'hall': polygon_m must be a simple polygon" without file or line.
+TEST_F(LocatedMessage, SelfIntersectingPolygonNamesItsLineAndKey) {
+  const fs::path scene = scene_with(
+      "corridors:",
+      "open_areas:\n  - {id: hall, polygon_m: [[0, 0], [4, 4], [4, 0], [0, 4]]}\ncorridors:",
+      "bowtie.yaml");
+  expect_bad_input(wifislam("world " + scene.string()),
+                   "bowtie.yaml:12:", "key 'open_areas[0].polygon_m'");
+  EXPECT_NE(wifislam("world " + scene.string()).err.find("crosses"), std::string::npos);
+}
+
+// Once "the floor plan has no free space at least 0.4 m from the walls" for a corridor of the
+// schema's smallest width.
+TEST_F(LocatedMessage, NarrowestCorridorsTakeAccessPoints) {
+  std::string yaml = test::kTinyLoopYaml;
+  for (std::size_t at; (at = yaml.find("width_m: 2.0")) != std::string::npos;) {
+    yaml.replace(at, 12, "width_m: 0.8");
+  }
+  const fs::path scene = scratch_ / "narrow.yaml";
+  test::write_file(scene, yaml);
+  const auto r = wifislam("world " + scene.string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("access points: 8"), std::string::npos) << r.out;
+}
+
+// AP placement that cannot be done is bad input located at the scene's access_points.
+TEST_F(LocatedMessage, AccessPointsThatDoNotFitAreLocated) {
+  const fs::path scene =
+      scene_with("access_points: {placement: random, count: 8}",
+                 "access_points: {placement: grid, count: 10000}", "crowded.yaml");
+  expect_bad_input(wifislam("world " + scene.string()), "crowded.yaml:19:", "key 'access_points'");
+}
+
 // Once exit 105 (CLI11's check) in some commands and 3 in another.
 TEST_F(LocatedMessage, AFolderGivenAsTheSceneIsBadInputInEveryCommand) {
   const fs::path folder = scratch_ / "folder.yaml";

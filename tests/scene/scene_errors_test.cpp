@@ -266,6 +266,17 @@ TEST(SceneErrors, HugeNumbersArePrintedAsWritten) {
   EXPECT_LT(e.detail().size(), 100u) << e.what();
 }
 
+// Issue 18: a route through two nodes at one spot failed in `generate` with "arc length does not
+// increase at point 161", naming neither node nor line.
+TEST(SceneErrors, TwoNodesAtOneSpotAreNamed) {
+  const auto e = expect_parse_error(
+      replace(kValidBody, "  - {id: C, position_m: [10, 10]}\n",
+              "  - {id: C, position_m: [10, 10]}\n  - {id: D, position_m: [10, 0]}\n"));
+  EXPECT_EQ(e.key_path(), "nodes[3].position_m");
+  EXPECT_EQ(e.where(), "bad.yaml:6:25");
+  EXPECT_NE(e.detail().find("'D' is at the same spot as node 'B'"), std::string::npos) << e.what();
+}
+
 // Issue 18: a folder given as the scene was exit 105 in some commands and 3 in others.
 TEST(SceneErrors, AFolderIsAParseErrorNamingIt) {
   const std::string dir = ::testing::TempDir() + "scene_folder.yaml";
