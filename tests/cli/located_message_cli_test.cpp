@@ -139,5 +139,38 @@ route: {nodes: [A, B, C]}
   EXPECT_FALSE(fs::exists(png));
 }
 
+// Once: the second run deleted the first one's staging folder, and the first failed with
+// "write failed (disk full?)".
+TEST_F(LocatedMessage, SecondGenerateIntoAFolderBeingWrittenIsRefused) {
+  const fs::path out = scratch_ / "ds", partial = scratch_ / "ds.partial";
+  const fs::path first_rc = scratch_ / "first_rc.txt";
+  const std::string first =
+      "( " + std::string(WIFISLAM_BINARY) + " generate " + scene_.string() + " -o " + out.string() +
+      " --fps 10 --max-frames 150 --threads 1 -q >'" + (scratch_ / "first_out.txt").string() +
+      "' 2>'" + (scratch_ / "first_err.txt").string() + "'; echo $? >'" + first_rc.string() +
+      ".tmp' && mv '" + first_rc.string() + ".tmp' '" + first_rc.string() + "' ) &";
+  ASSERT_EQ(std::system(first.c_str()), 0);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
+  while (!fs::exists(partial / "rgb") && !fs::exists(first_rc) &&
+         std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  ASSERT_TRUE(fs::exists(partial / "rgb")) << "the first run never started writing";
+  const auto second =
+      wifislam("generate " + scene_.string() + " -o " + out.string() + " --fps 10 -q");
+  while (!fs::exists(first_rc) && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_TRUE(fs::exists(first_rc));
+  expect_bad_input(second, out.string(), "another wifislam run is writing this folder");
+  EXPECT_EQ(test::read_file(first_rc), "0\n") << test::read_file(scratch_ / "first_err.txt");
+  EXPECT_EQ(wifislam("check " + out.string()).exit_code, 0);
+  // The lock goes with the run: a later run, with --force, replaces the folder.
+  EXPECT_EQ(wifislam("generate " + scene_.string() + " -o " + out.string() +
+                     " --fps 2 --max-frames 2 -q --force")
+                .exit_code,
+            0);
+}
+
 }  // namespace
 }  // namespace wifislam
