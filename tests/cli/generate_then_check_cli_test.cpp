@@ -212,6 +212,7 @@ sensors:
   ASSERT_EQ(world.exit_code, 0) << world.err;
   const fs::path ds = generate_and_check(scene, "--fps 3");
   const auto poses = read_truth(ds);
+  ASSERT_GT(poses.size(), 50u);
   expect_half_turn_on_the_spot(poses, 3.0);
   EXPECT_LT(std::hypot(poses.back().x - 8.0, poses.back().y - 5.0), 0.5 / 3 + 1e-3);
 }
