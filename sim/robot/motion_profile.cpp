@@ -44,18 +44,21 @@ MotionProfile::MotionProfile(const RoutePath& path, const RobotMotionOptions& op
   if (n < 2 || path_.arc_length_m.size() != n || path_.heading_rad.size() != n) {
     throw InvalidInputError("robot route: needs at least two points with arc length and heading");
   }
-  // Progress: arc length along straight and curved parts, radians where the robot turns on the
-  // spot (a dead end it goes back from), so that every part of the route takes time.
-  progress_.push_back(0.0);
+  // Progress: arc length plus the radians turned on the spot so far (a dead end the robot goes
+  // back from), so that every part of the route takes time. On a route without such turns it is
+  // the arc length itself, bit for bit, and the robot's poses are those of arc-length timing.
+  turned_rad_.push_back(0.0);
+  progress_.push_back(path_.arc_length_m.front());
   for (std::size_t i = 1; i < n; ++i) {
     const double ds = path_.arc_length_m[i] - path_.arc_length_m[i - 1];
     if (!(ds >= 0.0)) {
       throw InvalidInputError("robot route: arc length decreases at point " + std::to_string(i));
     }
     const double turn_rad = std::abs(wrap_angle(path_.heading_rad[i] - path_.heading_rad[i - 1]));
-    progress_.push_back(progress_.back() + (ds > 0.0 ? ds : turn_rad));
+    turned_rad_.push_back(turned_rad_.back() + (ds > 0.0 ? 0.0 : turn_rad));
+    progress_.push_back(path_.arc_length_m[i] + turned_rad_.back());
   }
-  if (!(progress_.back() > 0.0)) {
+  if (!(progress_.back() > progress_.front())) {
     throw InvalidInputError("robot route: the route neither moves nor turns");
   }
   if (!(options_.speed_mps > 0.0) || !(options_.max_yaw_rate_radps > 0.0)) {
@@ -110,7 +113,7 @@ MotionProfile::MotionProfile(const RoutePath& path, const RobotMotionOptions& op
       const double sp = std::max(pause_s[next_pause], s_now);
       if (sp > s_now) {
         t_s += (sp - s_now) / v;
-        u_now += sp - s_now;
+        u_now = sp + turned_rad_[i];
         add_knot(u_now, -1);
         s_now = sp;
       }
@@ -182,11 +185,19 @@ RobotState MotionProfile::state_at(Timestamp t) const {
   }
   // The route segment holding u; at its far end (or a knot) the next one, as upper_bound gives.
   const std::size_t i = progress_segment(u);
-  const double u0 = progress_[i], u1 = progress_[i + 1];
-  const double f = u1 > u0 ? std::clamp((u - u0) / (u1 - u0), 0.0, 1.0) : 1.0;
   const double s0 = path_.arc_length_m[i], s1 = path_.arc_length_m[i + 1];
   const double dh = wrap_angle(path_.heading_rad[i + 1] - path_.heading_rad[i]);
-  state.arc_length_m = s0 + f * (s1 - s0);
+  double f = 1.0;
+  if (s1 > s0) {
+    // Moving: arc length as arc-length timing gives it (turned_rad_ is 0 on routes without turns
+    // on the spot), then the same interpolation as position_at_arc_length.
+    state.arc_length_m = u - turned_rad_[i];
+    f = std::clamp((state.arc_length_m - s0) / (s1 - s0), 0.0, 1.0);
+  } else {
+    state.arc_length_m = s0;
+    const double u0 = progress_[i], u1 = progress_[i + 1];
+    if (u1 > u0) f = std::clamp((u - u0) / (u1 - u0), 0.0, 1.0);
+  }
   state.position_m = path_.points_m[i] + f * (path_.points_m[i + 1] - path_.points_m[i]);
   state.heading_rad = wrap_angle(path_.heading_rad[i] + f * dh);
   if (rate > 0.0) {

@@ -86,9 +86,10 @@ class MotionProfile {
 
   RoutePath path_;
   RobotMotionOptions options_;
-  // Progress along the route at each route point: arc length, plus the turn in radians where the
-  // robot turns on the spot; strictly increases wherever the robot moves or turns.
+  // Progress along the route at each route point: arc length plus the radians turned on the spot
+  // up to it (turned_rad_); strictly increases wherever the robot moves or turns.
   std::vector<double> progress_;
+  std::vector<double> turned_rad_;
   std::vector<std::int64_t> knot_ns_;  // non-decreasing
   std::vector<double> knot_u_;         // progress at each knot (non-decreasing)
   std::vector<int> knot_pause_;        // pause index of the interval [knot i, knot i+1], else -1
