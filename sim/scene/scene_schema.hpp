@@ -244,7 +244,9 @@ void visit(V& v, RadioSpec& r) {
                                    {RadioEnvironment::kCommercial, "commercial"}});
   v.optional_number("distance_coefficient", r.distance_coefficient, Limits{10.0, 60.0});
   v.number("shadowing_sigma_db", r.shadowing_sigma_db, Limits{0.0, 30.0});
-  v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, kPositive);
+  // Gudmundson distances are metres indoors; the field's grid cell is a quarter of this, so a
+  // tiny value asked for more cells than memory holds.
+  v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, Limits{0.5, 1000.0});
   v.number("fast_fading_sigma_db", r.fast_fading_sigma_db, Limits{0.0, 30.0});
   v.number("people_disturbance_db", r.people_disturbance_db, Limits{0.0, 100.0});
 }

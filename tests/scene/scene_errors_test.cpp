@@ -243,6 +243,8 @@ TEST(SceneErrors, NoiseAndPauseBeyondPhysicalRangesAreRefused) {
       {"radio: {shadowing_sigma_db: 1e308}\n", "radio.shadowing_sigma_db"},
       {"radio: {fast_fading_sigma_db: 31}\n", "radio.fast_fading_sigma_db"},
       {"radio: {people_disturbance_db: 1e308}\n", "radio.people_disturbance_db"},
+      // Once a bad_alloc (exit 70) building the shadowing grid.
+      {"radio: {shadowing_decorrelation_m: 1e-6}\n", "radio.shadowing_decorrelation_m"},
   };
   for (const auto& [yaml, key] : cases) {
     const auto e = expect_parse_error(std::string(kValidBody) + yaml);
