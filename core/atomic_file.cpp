@@ -1,6 +1,10 @@
 #include "core/atomic_file.hpp"
 
+#include <fcntl.h>
 #include <openssl/evp.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -13,6 +17,30 @@
 namespace wifislam {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// An exclusive lock on a folder (flock on its descriptor), without waiting: the descriptor, or
+// -1 when another process holds the lock or the folder cannot be opened.
+int lock_folder(const fs::path& folder) {
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) return -1;
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    ::close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+// Whether the open descriptor `fd` is the folder now at `path`.
+bool same_folder(int fd, const fs::path& path) {
+  struct stat open_one {
+  }, at_path{};
+  return ::fstat(fd, &open_one) == 0 && ::stat(path.c_str(), &at_path) == 0 &&
+         open_one.st_dev == at_path.st_dev && open_one.st_ino == at_path.st_ino;
+}
+
+}  // namespace
 
 void write_file_atomic(const fs::path& path, std::string_view contents) {
   const fs::path tmp = path.string() + ".partial";
@@ -49,6 +77,9 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
     check_folder_replaceable(final_);
   }
   staging_ = final_.string() + ".partial";
+  const std::string busy =
+      final_.string() + ": another wifislam run is writing this folder now (into " +
+      staging_.string() + "); wait for it to finish or choose another output folder";
   if (fs::exists(fs::symlink_status(staging_, ec))) {
     // Left over from an interrupted run: ours (it carries the marker from the start) or empty.
     if (!fs::is_directory(fs::symlink_status(staging_, ec)) ||
@@ -57,15 +88,30 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
                               ": exists and is not an unfinished wifislam output; remove it or "
                               "choose another output folder");
     }
+    // A run that is still writing holds the lock on its staging folder: leave it alone.
+    const int leftover = lock_folder(staging_);
+    if (leftover < 0) throw InvalidInputError(busy);
     fs::remove_all(staging_, ec);
+    ::close(leftover);
   }
-  fs::create_directories(staging_, ec);
-  if (ec) throw IoError(staging_.string() + ": cannot create folder: " + ec.message());
+  fs::create_directories(final_.parent_path(), ec);
+  if (!fs::create_directory(staging_, ec)) {
+    if (ec) throw IoError(staging_.string() + ": cannot create folder: " + ec.message());
+    throw InvalidInputError(busy);  // another run created it since
+  }
+  // Held until the folder is committed or removed; the same folder (not one made in its place
+  // by another run in between) must be the one locked.
+  lock_fd_ = lock_folder(staging_);
+  if (lock_fd_ < 0 || !same_folder(lock_fd_, staging_)) {
+    if (lock_fd_ >= 0) ::close(lock_fd_);
+    throw InvalidInputError(busy);
+  }
   try {
     write_file_atomic(staging_ / kOutputMarkerFile,
                       "Written by wifislam. `--force` may replace this folder.\n");
   } catch (...) {
     fs::remove_all(staging_, ec);
+    ::close(lock_fd_);
     throw;
   }
 }
@@ -75,6 +121,7 @@ AtomicDirectory::~AtomicDirectory() {
     std::error_code ec;
     fs::remove_all(staging_, ec);
   }
+  if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
 void AtomicDirectory::commit() {
@@ -106,6 +153,8 @@ void AtomicDirectory::commit() {
   }
   committed_ = true;
   if (!set_aside.empty()) fs::remove_all(set_aside, ec);
+  if (lock_fd_ >= 0) ::close(lock_fd_);
+  lock_fd_ = -1;
 }
 
 namespace {

@@ -19,6 +19,8 @@ void write_file_atomic(const std::filesystem::path& path, std::string_view conte
 /// and is not empty (core/output_folder.hpp); the staging folder carries the marker file that
 /// makes it look like one. Commands check the rest of the rule (inputs, `--force`) with
 /// `check_output_folder` first. Refusals are InvalidInputError; nothing is created then.
+/// The staging folder is locked (flock) while it is written, so a second run into the same
+/// folder is refused with a message saying so instead of deleting the first one's files.
 class AtomicDirectory {
  public:
   AtomicDirectory(std::filesystem::path final_path, bool overwrite);
@@ -34,6 +36,7 @@ class AtomicDirectory {
  private:
   std::filesystem::path final_, staging_;
   bool overwrite_ = false, committed_ = false;
+  int lock_fd_ = -1;  // the staging folder's lock, held until commit or destruction
 };
 
 /// SHA-256 of a file's bytes as lower-case hex (manifests).

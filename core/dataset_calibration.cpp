@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
+#include "core/yaml_document.hpp"
 
 namespace wifislam {
 
@@ -89,15 +90,7 @@ double number(const Ctx& ctx, const YAML::Node& n, const std::string& path) {
 
 DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
   const Ctx ctx{path.string()};
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(path.string());
-  } catch (const YAML::BadFile&) {
-    throw IoError(path.string() + ": cannot open file for reading");
-  } catch (const YAML::ParserException& e) {
-    throw ParseError(fmt::format("{}:{}:{}", path.string(), e.mark.line + 1, e.mark.column + 1), "",
-                     e.msg);
-  }
+  const YAML::Node root = load_yaml_file(path.string());
   if (!root.IsMap()) throw ParseError(path.string(), "", "expected a YAML mapping");
   DatasetCalibration c;
   const YAML::Node cam = child(ctx, root, "camera", "", true);

@@ -152,9 +152,9 @@ void DatasetReader::validate() {
     frame_count_ = static_cast<std::int64_t>(associated_.size());
     has_frames_ = true;
   } else if (!(manifest_ && !manifest_->images)) {
-    throw IoError(fmt::format("{}: not an RGB-D dataset: found neither {} nor {} + {}",
-                              folder_.string(), dataset::kAssociations, dataset::kRgbList,
-                              dataset::kDepthList));
+    throw InvalidInputError(fmt::format("{}: not an RGB-D dataset: found neither {} nor {} + {}",
+                                        folder_.string(), dataset::kAssociations, dataset::kRgbList,
+                                        dataset::kDepthList));
   }
   if (has_odometry_) {
     TumTrajectoryReader reader((folder_ / dataset::kOdometry).string());
@@ -220,9 +220,17 @@ DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
     }
   }
   DecodedImages out;
-  out.rgb = decode_image(rgb_bytes, cv::IMREAD_COLOR, rgb_file.string());
+  // IMREAD_COLOR alone would scale a 16-bit image (a depth map in the RGB list) down to 8 bits
+  // without a word; with IMREAD_ANYDEPTH it keeps its depth, and anything but 8 bits is refused.
+  out.rgb = decode_image(rgb_bytes, cv::IMREAD_COLOR | cv::IMREAD_ANYDEPTH, rgb_file.string());
   if (out.rgb.empty()) {
     throw ParseError(rgb_file.string(), "", "not a readable PNG image (corrupt or truncated)");
+  }
+  if (out.rgb.depth() != CV_8U) {
+    throw ParseError(rgb_file.string(), "",
+                     fmt::format("an RGB image must have 8 bits per channel, this one has {} "
+                                 "(a depth image listed as RGB at {}?)",
+                                 8 * out.rgb.elemSize1(), listed_at));
   }
   check_size(out.rgb, intrinsics, rgb_file.string());
   out.depth_m = decode_depth_png(depth_bytes, depth_units_per_metre, depth_file.string());
@@ -255,7 +263,9 @@ void DatasetReader::fill_frame_queue() {
       const FramePair& p = pending.pair;
       const std::string listed_at =
           p.line > 0 ? fmt::format("{}:{}", (folder_ / dataset::kAssociations).string(), p.line)
-                     : (folder_ / dataset::kRgbList).string();
+          : p.rgb_line > 0
+              ? fmt::format("{}:{}", (folder_ / dataset::kRgbList).string(), p.rgb_line)
+              : (folder_ / dataset::kRgbList).string();
       std::array<std::string, 2> expected, where;
       std::exception_ptr checksum_error;
       if (c.checksums) {

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 
 namespace wifislam {
 
@@ -54,6 +55,11 @@ std::optional<Timestamp> Timestamp::parse(std::string_view text) {
     }
   }
   if (whole_digits == 0 && frac_digits == 0) return std::nullopt;
+  // Ten digits of seconds reach 9999999999 s, beyond the 64-bit nanoseconds (the year 2262):
+  // refused rather than wrapped.
+  constexpr std::int64_t kMaxWholeS =
+      (std::numeric_limits<std::int64_t>::max() - 999'999'999) / 1'000'000'000;
+  if (whole > kMaxWholeS) return std::nullopt;
   for (std::size_t k = frac_digits; k < 9; ++k) frac_ns *= 10;
   std::int64_t total = whole * 1'000'000'000 + frac_ns;
   return Timestamp{negative ? -total : total};

@@ -92,7 +92,8 @@ std::vector<FramePair> associate_tum(const std::vector<TumFileEntry>& rgb,
   for (const Candidate& c : candidates) {
     if (rgb_used[c.r] || depth_used[c.d]) continue;
     rgb_used[c.r] = depth_used[c.d] = 1;
-    pairs.push_back({rgb[c.r].time, rgb[c.r].path, depth[c.d].time, depth[c.d].path, 0});
+    pairs.push_back(
+        {rgb[c.r].time, rgb[c.r].path, depth[c.d].time, depth[c.d].path, 0, rgb[c.r].line});
   }
   std::sort(pairs.begin(), pairs.end(),
             [](const FramePair& a, const FramePair& b) { return a.rgb_time < b.rgb_time; });

@@ -26,7 +26,8 @@ struct FramePair {
   std::string rgb_path;
   Timestamp depth_time;
   std::string depth_path;
-  int line = 0;  // line in associations.txt (0 when associated in memory)
+  int line = 0;      // line in associations.txt (0 when associated in memory)
+  int rgb_line = 0;  // line in rgb.txt when associated in memory (0 otherwise)
 };
 
 /// Streams "timestamp filename" lines. ParseError("file:line") for a line without exactly two

@@ -1,5 +1,8 @@
 #include "core/wifi_csv.hpp"
 
+#include <cstdint>
+#include <limits>
+
 #include <fmt/format.h>
 
 #include "core/error.hpp"
@@ -93,9 +96,22 @@ std::optional<WifiCsvReader::Row> WifiCsvReader::read_row() {
       }
       return static_cast<std::int64_t>(value);
     };
+    // Microseconds to nanoseconds must not wrap: times are 64-bit nanoseconds inside, which
+    // reach the year 2262 (as far as Timestamp::parse reads TUM timestamps).
+    auto microseconds = [&](std::size_t column) {
+      constexpr std::int64_t kLimitUs = std::numeric_limits<std::int64_t>::max() / 1000;
+      const std::int64_t us = integer(column);
+      if (us < -kLimitUs || us > kLimitUs) {
+        throw ParseError(where, kColumns[column],
+                         fmt::format("{} {} us is beyond the year 2262, the last time 64-bit "
+                                     "nanoseconds hold",
+                                     kColumns[column], us));
+      }
+      return Timestamp::from_ns(us * 1000);
+    };
     Row row;
     row.line = line.number;
-    row.key.time = Timestamp::from_ns(integer(0) * 1000);
+    row.key.time = microseconds(0);
     row.key.sensor_id = std::string(trim(fields[1]));
     if (row.key.sensor_id.empty()) throw ParseError(where, "sensor_id", "sensor_id is empty");
     const auto mac = MacAddress::parse(trim(fields[2]));
@@ -110,13 +126,16 @@ std::optional<WifiCsvReader::Row> WifiCsvReader::read_row() {
       throw ParseError(where, "frequency_khz", "frequency_khz must be positive");
     }
     const std::int64_t rssi = integer(4);
-    if (rssi < -200 || rssi > 50) {
-      throw ParseError(where, "rssi_dbm", fmt::format("rssi_dbm {} is not a plausible RSSI", rssi));
+    if (rssi < kMinRssiDbm || rssi > kMaxRssiDbm) {
+      throw ParseError(where, "rssi_dbm",
+                       fmt::format("rssi_dbm {} is outside the range a receiver reports ({} to "
+                                   "{} dBm)",
+                                   rssi, kMinRssiDbm, kMaxRssiDbm));
     }
     row.reading.rssi_dbm = static_cast<int>(rssi);
     row.reading.ssid = std::string(trim(fields[5]));
-    row.key.start_time = Timestamp::from_ns(integer(6) * 1000);
-    row.key.end_time = Timestamp::from_ns(integer(7) * 1000);
+    row.key.start_time = microseconds(6);
+    row.key.end_time = microseconds(7);
     if (row.key.end_time < row.key.start_time) {
       throw ParseError(where, "scan_time_end_us", "scan_time_end_us is before scan_time_start_us");
     }

@@ -13,6 +13,13 @@
 
 namespace wifislam {
 
+/// The RSSI a reading may carry. -120 dBm lies below any receiver's noise floor (and is the
+/// lowest sensitivity a scene may set); +30 dBm (1 W) is above the most any regulator lets an
+/// access point radiate at 2.4 or 5 GHz (20-30 dBm EIRP), so no receiver ever reports more.
+/// The reader refuses readings outside, and the simulated receiver saturates at the top.
+inline constexpr int kMinRssiDbm = -120;
+inline constexpr int kMaxRssiDbm = 30;
+
 struct WifiReading {
   MacAddress bssid;
   std::int64_t frequency_khz = 0;

@@ -18,12 +18,22 @@ namespace wifislam {
 
 namespace {
 
-constexpr double kLatticeM = 0.5;    // spacing of candidate spots
-constexpr double kClearanceM = 0.4;  // keep APs off the wall faces
+// Candidate spots: a 0.5 m lattice, 0.4 m off the wall faces. A plan too narrow for that (a
+// corridor of the schema's smallest width, 0.8 m, has no lattice row 0.4 m from both walls)
+// takes spots from a 0.1 m lattice 0.1 m off the walls, which any corridor of 0.8 m holds
+// whatever its direction; the ray casts only need the AP off the wall faces.
+struct Lattice {
+  double spacing_m, clearance_m;
+};
+constexpr Lattice kLattice{0.5, 0.4};
+constexpr Lattice kNarrowLattice{0.1, 0.1};
+constexpr double kClearanceM = kLattice.clearance_m;
 
 // Free-space spots on a lattice over the plan bounds, optionally restricted to one polygon.
 std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFaceGrid& walls,
-                                             const Polygon2* inside) {
+                                             const Polygon2* inside,
+                                             const Lattice& lattice = kLattice) {
+  const double spacing_m = lattice.spacing_m;
   std::vector<Eigen::Vector2d> spots;
   Eigen::Vector2d lo = plan.bounds_min_m, hi = plan.bounds_max_m;
   if (inside) {
@@ -33,11 +43,11 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
       hi = hi.cwiseMax(v);
     }
   }
-  const double x0 = std::floor(lo.x() / kLatticeM) * kLatticeM + 0.5 * kLatticeM;
-  const double y0 = std::floor(lo.y() / kLatticeM) * kLatticeM + 0.5 * kLatticeM;
+  const double x0 = std::floor(lo.x() / spacing_m) * spacing_m + 0.5 * spacing_m;
+  const double y0 = std::floor(lo.y() / spacing_m) * spacing_m + 0.5 * spacing_m;
   std::vector<double> crossings;
   std::vector<std::pair<double, double>> spans;
-  for (double y = y0; y < hi.y(); y += kLatticeM) {
+  for (double y = y0; y < hi.y(); y += spacing_m) {
     // The row's spans inside some free-space outer ring, by point_in_polygon's own crossing rule
     // (inside iff an odd number of crossings lies right of x): a spot outside every span fails
     // point_in_regions, so only spots within spans are tested. A big sparse plan (a 10 km L) then
@@ -61,10 +71,10 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
     std::sort(spans.begin(), spans.end());
     std::size_t span = 0;
     double span_end = spans.empty() ? 0.0 : spans[0].second;
-    // x0 + k * kLatticeM is exact (multiples of 0.25 m within the scene's 10 km), so these are the
-    // lattice's x values whether stepped through or jumped to.
+    // x is computed afresh from k (never accumulated), so these are the lattice's x values
+    // whether stepped through or jumped to.
     for (std::int64_t k = 0;; ++k) {
-      const double x = x0 + static_cast<double>(k) * kLatticeM;
+      const double x = x0 + static_cast<double>(k) * spacing_m;
       if (!(x < hi.x())) break;
       // Spans are half-open, [start, end); overlapping ones are merged as they are passed.
       while (span < spans.size() && x >= span_end) {
@@ -73,14 +83,14 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
       if (span == spans.size()) break;
       if (x < spans[span].first) {
         const auto next =
-            static_cast<std::int64_t>(std::ceil((spans[span].first - x0) / kLatticeM));
+            static_cast<std::int64_t>(std::ceil((spans[span].first - x0) / spacing_m));
         if (next > k + 1) k = next - 1;  // continue at the span's first lattice x
         continue;
       }
       const Eigen::Vector2d p(x, y);
       if (inside && !point_in_polygon(*inside, p)) continue;
       if (!point_in_regions(plan.free_space, p)) continue;
-      if (walls.nearest_within_m(p, kClearanceM) < kClearanceM) continue;
+      if (walls.nearest_within_m(p, lattice.clearance_m) < lattice.clearance_m) continue;
       spots.push_back(p);
     }
   }
@@ -142,8 +152,7 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
   if (spec.placement == ApPlacement::kColinear) {
     const Eigen::Vector2d a = spec.line_from_m, b = spec.line_to_m;
     if ((b - a).norm() < 1e-9 && spec.count > 1)
-      throw InvalidInputError(
-          "access_points: colinear placement needs line_from_m and line_to_m to differ");
+      throw InvalidInputError("colinear placement needs line_from_m and line_to_m to differ");
     std::vector<Eigen::Vector2d> xy;
     for (int i = 0; i < spec.count; ++i) {
       const double t = spec.count == 1 ? 0.5 : static_cast<double>(i) / (spec.count - 1);
@@ -155,9 +164,12 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
   Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
   const WallFaceGrid walls(plan, kClearanceM);
   std::vector<Eigen::Vector2d> free_spots = candidate_spots(plan, walls, nullptr);
+  if (free_spots.empty()) free_spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
   if (free_spots.empty())
-    throw InvalidInputError(
-        "access_points: the floor plan has no free space at least 0.4 m from the walls");
+    throw InvalidInputError(fmt::format(
+        "no spot of the floor plan is {} m from the walls to hold an access point (placement "
+        "'{}'); give their positions with placement: explicit",
+        kNarrowLattice.clearance_m, to_string(spec.placement)));
   std::vector<Eigen::Vector2d> chosen;
 
   switch (spec.placement) {
@@ -183,7 +195,8 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
         }
         if (best == free_spots.size())
           throw InvalidInputError(
-              fmt::format("access_points: the floor plan has room for only {} grid positions", i));
+              fmt::format("the floor plan has room for only {} grid positions of the {} asked for",
+                          i, spec.count));
         used[best] = true;
         chosen.push_back(free_spots[best]);
       }
@@ -228,16 +241,20 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
       break;
   }
   if (static_cast<int>(chosen.size()) < spec.count)
-    throw InvalidInputError(
-        fmt::format("access_points: only {} of {} access points fit in the floor plan",
-                    chosen.size(), spec.count));
+    throw InvalidInputError(fmt::format("only {} of {} access points fit in the floor plan",
+                                        chosen.size(), spec.count));
   return lift(chosen);
 }
 
 std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan) {
   const AccessPoints& spec = scene.access_points;
   const std::uint64_t seed = access_point_seed(scene);
-  const auto positions = place_access_point_positions(spec, plan, seed);
+  std::vector<Eigen::Vector3d> positions;
+  try {
+    positions = place_access_point_positions(spec, plan, seed);
+  } catch (const InvalidInputError& e) {
+    scene.reject("access_points", e.what());  // located at the scene's access_points
+  }
   MacAllocator macs(seed);
   std::vector<AccessPoint> aps;
   for (std::size_t i = 0; i < positions.size(); ++i) {

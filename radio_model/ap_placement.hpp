@@ -28,7 +28,8 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
                                                           const FloorPlan& plan,
                                                           std::uint64_t seed);
 
-/// The scene's access points with their BSSIDs; ids 0..n-1 in placement order.
+/// The scene's access points with their BSSIDs; ids 0..n-1 in placement order. A placement that
+/// cannot be done is rejected at the scene's `access_points` key (Scene::reject).
 std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan);
 
 /// The seed the access points derive from: `access_points.seed`, else the scene seed.

@@ -108,6 +108,28 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
                     "(0 to {} m)",
                     options.receiver_height_m, plan.wall_height_m));
   }
+  RadioMap map;
+  map.origin_m = plan.bounds_min_m;
+  map.resolution_m = options.resolution_m;
+  map.ap_id = options.ap_id;
+  const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
+  // Counted in doubles first: a tiny resolution once overflowed the int and gave a 1 x 1 map.
+  const double cols = std::max(1.0, std::ceil(extent.x() / options.resolution_m));
+  const double rows = std::max(1.0, std::ceil(extent.y() / options.resolution_m));
+  if (cols > kRadioMapMaxSide || rows > kRadioMapMaxSide ||
+      cols * rows > static_cast<double>(kRadioMapMaxCells)) {
+    const double finest_m =
+        std::max(std::sqrt(extent.x() * extent.y() / static_cast<double>(kRadioMapMaxCells)),
+                 std::max(extent.x(), extent.y()) / kRadioMapMaxSide);
+    throw InvalidInputError(fmt::format(
+        "radio map: a resolution of {} m gives {:.0f} x {:.0f} cells over this {:.1f} x {:.1f} m "
+        "plan; a map has at most {} million cells and {} a side, so use a resolution of at "
+        "least {:.3g} m (--res)",
+        options.resolution_m, cols, rows, extent.x(), extent.y(), kRadioMapMaxCells / 1'000'000,
+        kRadioMapMaxSide, finest_m * 1.001));
+  }
+  map.cols = static_cast<int>(cols);
+  map.rows = static_cast<int>(rows);
   if (model.access_points().empty())
     throw InvalidInputError("radio map: the scene has no access points");
   std::optional<std::size_t> only;
@@ -117,14 +139,6 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
       throw InvalidInputError(fmt::format("radio map: no access point with id {} (ids 0..{})",
                                           *options.ap_id, model.access_points().size() - 1));
   }
-
-  RadioMap map;
-  map.origin_m = plan.bounds_min_m;
-  map.resolution_m = options.resolution_m;
-  map.ap_id = options.ap_id;
-  const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
-  map.cols = std::max(1, static_cast<int>(std::ceil(extent.x() / options.resolution_m)));
-  map.rows = std::max(1, static_cast<int>(std::ceil(extent.y() / options.resolution_m)));
   const std::size_t cells = static_cast<std::size_t>(map.cols) * map.rows;
   map.rssi_dbm.assign(cells, std::numeric_limits<float>::quiet_NaN());
   map.best_ap_id.assign(cells, -1);

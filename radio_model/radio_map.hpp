@@ -6,6 +6,7 @@
 // Computed row by row on worker threads; every cell depends only on its own position, so the map
 // is identical whatever the thread count.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <vector>
@@ -47,8 +48,13 @@ struct RadioMap {
   float at(int col, int row) const { return rssi_dbm[static_cast<std::size_t>(row) * cols + col]; }
 };
 
-/// Throws InvalidInputError for an unknown ap_id, a non-positive resolution or a model without
-/// access points.
+/// The largest map: 16 million cells (about 150 MB with its picture), at most 16384 a side (the
+/// picture is a cairo surface, which takes at most 32767).
+inline constexpr std::int64_t kRadioMapMaxCells = 16'000'000;
+inline constexpr int kRadioMapMaxSide = 16384;
+
+/// Throws InvalidInputError for an unknown ap_id, a non-positive resolution, a resolution that
+/// needs more cells than kRadioMapMaxCells or kRadioMapMaxSide, or a model without access points.
 RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
                            const RadioMapOptions& options);
 

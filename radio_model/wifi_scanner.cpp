@@ -1,5 +1,6 @@
 #include "radio_model/wifi_scanner.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -74,8 +75,11 @@ WifiScan WifiScanner::scan(Timestamp start,
           const double margin = sample - options_.sensitivity_dbm;
           if (margin < 0.0) continue;
           if (u >= 1.0 - std::exp(-margin / options_.detection_width_db)) continue;
+          // A receiver saturates: it never reports more than kMaxRssiDbm, however strong the
+          // shadowing and fading draws are.
           out.readings.push_back(
-              {b.mac, b.frequency_khz, static_cast<int>(std::lround(sample)), b.ssid});
+              {b.mac, b.frequency_khz,
+               static_cast<int>(std::lround(std::min<double>(sample, kMaxRssiDbm))), b.ssid});
         }
       }
     }

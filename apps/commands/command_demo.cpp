@@ -105,8 +105,8 @@ WIFISLAM_COMMAND(demo, 10) {
   app->add_flag("--force", args->force,
                 "Replace an existing output folder other than the default (only this tool's "
                 "output)");
-  app->add_option("--scene", args->scene_path, "Use this scene file instead of the embedded one")
-      ->check(CLI::ExistingFile);
+  // No CLI::ExistingFile: the scene loader says what is wrong with a path, alike in every command.
+  app->add_option("--scene", args->scene_path, "Use this scene file instead of the embedded one");
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   app->callback([args] { run_demo(*args); });
 }

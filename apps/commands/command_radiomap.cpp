@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "radio_model/ap_placement.hpp"
@@ -71,16 +72,16 @@ WIFISLAM_COMMAND(radiomap, 40) {
       "Draw a scene's mean RSSI (ITU-R P.1238 + walls + shadowing) as a heat map over its\n"
       "floor plan, for one access point (--ap ID) or the strongest at every cell (--strongest).");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();  // the scene loader says what is wrong with the path
   auto* ap = app->add_option("--ap", args->ap_id, "Access point id (0 .. count-1)");
   auto* strongest =
       app->add_flag("--strongest", args->strongest, "Strongest access point at every cell");
   ap->excludes(strongest);
   strongest->excludes(ap);
-  app->add_option("--res", args->resolution_m, "Grid resolution (m)")
+  app->add_option("--res", args->resolution_m, "Grid resolution (m), 0.01 to 10")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(0.01, 10.0))
+      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--height", args->height_m,
                   "Receiver height above the floor (m), below the scene's ceiling")
       ->capture_default_str();

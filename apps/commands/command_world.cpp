@@ -7,6 +7,7 @@
 #include "apps/command_registry.hpp"
 #include "core/output_folder.hpp"
 #include "radio_model/ap_placement.hpp"
+#include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/plan_drawing.hpp"
 #include "sim/world/world_generator.hpp"
@@ -24,6 +25,9 @@ void run_world(const WorldArgs& args) {
   if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
   const Scene scene = load_scene_file(args.scene_path);
   const World world = generate_world(scene);
+  // The robot's timing along the route, as `generate` computes it: a route `world` accepts is
+  // one `generate` can drive.
+  const MotionProfile motion(world.route, RobotMotionOptions::from_route(scene.route), scene.seed);
   // The access points as the radio model places them (explicit list or placement generator).
   const std::vector<AccessPoint> access_points = make_access_points(scene, world.plan);
   if (!args.plan_path.empty()) {
@@ -40,7 +44,8 @@ void run_world(const WorldArgs& args) {
       fmt::print("wrote {}\n", svg.string());
     }
   }
-  fmt::print("scene: {}\n{}access points: {}\n", scene.name, summarize_world(world).to_text(),
+  fmt::print("scene: {}\n{}route time: {:.1f} s ({} pauses)\naccess points: {}\n", scene.name,
+             summarize_world(world).to_text(), motion.end_time().seconds(), motion.pauses().size(),
              access_points.size());
 }
 
@@ -51,8 +56,7 @@ WIFISLAM_COMMAND(world, 20) {
   CLI::App* app = parent.add_subcommand(
       "world", "Generate a scene's world (floor plan, mesh, route) and print a summary.");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required()
-      ->check(CLI::ExistingFile);
+      ->required();  // the scene loader says what is wrong with the path
   app->add_option("--plan", args->plan_path,
                   "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)");
   app->add_flag("--svg", args->svg, "Also write the plan as SVG next to the PNG");

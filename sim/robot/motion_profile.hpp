@@ -8,6 +8,8 @@
 // exceeds `max_yaw_rate_radps` (the route's corners are already rounded by the world generator,
 // so slowing down is enough for smooth turns). Between two route points the speed is constant and
 // the heading changes linearly with time, so the bound holds exactly, not just at the points.
+// Where the route turns on the spot (points at one arc length with changing heading: a dead end
+// the robot goes back from), the robot stands and turns at exactly `max_yaw_rate_radps`.
 //
 // Pauses (paper, "Wi-Fi data processing": the robot stands still ~10 s every few metres to scan):
 // one at the start of the route, then one after every spacing drawn uniformly from
@@ -58,7 +60,8 @@ struct RobotState {
 
 class MotionProfile {
  public:
-  /// Throws InvalidInputError for a route with fewer than two points or non-increasing arc length.
+  /// Throws InvalidInputError for a route with fewer than two points, decreasing arc length, or
+  /// neither length nor turn.
   MotionProfile(const RoutePath& path, const RobotMotionOptions& options, std::uint64_t seed);
 
   /// The state at time t; times before 0 give the start, after end_time() the end.
@@ -78,11 +81,17 @@ class MotionProfile {
  private:
   // Index i such that arc_length_m[i] <= s < arc_length_m[i + 1] (clamped).
   std::size_t path_segment(double s_m) const;
+  // The same for progress u (progress_[i] <= u < progress_[i + 1], clamped).
+  std::size_t progress_segment(double u) const;
 
   RoutePath path_;
   RobotMotionOptions options_;
+  // Progress along the route at each route point: arc length plus the radians turned on the spot
+  // up to it (turned_rad_); strictly increases wherever the robot moves or turns.
+  std::vector<double> progress_;
+  std::vector<double> turned_rad_;
   std::vector<std::int64_t> knot_ns_;  // non-decreasing
-  std::vector<double> knot_s_m_;       // arc length at each knot (non-decreasing)
+  std::vector<double> knot_u_;         // progress at each knot (non-decreasing)
   std::vector<int> knot_pause_;        // pause index of the interval [knot i, knot i+1], else -1
   std::vector<RobotPause> pauses_;
 };

@@ -1,5 +1,7 @@
 #include "sim/scene/scene.hpp"
 
+#include "core/error.hpp"
+
 namespace wifislam {
 
 const char* to_string(WallMaterial material) {
@@ -70,6 +72,25 @@ const Corridor* Scene::corridor_between(const std::string& a, const std::string&
   for (const auto& c : corridors)
     if ((c.from == a && c.to == b) || (c.from == b && c.to == a)) return &c;
   return nullptr;
+}
+
+std::string Scene::where(std::string key_path) const {
+  while (true) {
+    const auto it = key_locations.find(key_path);
+    if (it != key_locations.end()) return it->second;
+    const auto cut = key_path.find_last_of(".[");
+    if (cut == std::string::npos) break;
+    key_path.resize(cut);
+  }
+  return source_path.empty() ? "scene" : source_path;
+}
+
+void Scene::reject(const std::string& key_path, const std::string& message) const {
+  // As validate_scene does: a scene built in code has no file to point into.
+  if (source_path.empty() && key_locations.empty()) {
+    throw InvalidInputError("scene: key '" + key_path + "': " + message);
+  }
+  throw ParseError(where(key_path), key_path, message);
 }
 
 }  // namespace wifislam

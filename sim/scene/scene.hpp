@@ -5,6 +5,7 @@
 // Defaults live here, next to the field, with what they trade off.
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -219,6 +220,16 @@ struct Scene {
 
   /// The file it was loaded from (empty for scenes built in code); used in error messages.
   std::string source_path;
+  /// "file:line:column" of every key path the loader read (e.g. "route.nodes[2]"), so that
+  /// problems found after loading (the floor plan, the route, AP placement) are located too.
+  std::map<std::string, std::string> key_locations;
+
+  /// Where `key_path`, or its closest parent key found in the file, is written:
+  /// "file:line:column", else the file, else "scene" (built in code).
+  std::string where(std::string key_path) const;
+  /// Throws ParseError at `key_path` (exit 2 on the command line): bad input found after loading.
+  /// For a scene built in code, InvalidInputError naming the key (as validate_scene does).
+  [[noreturn]] void reject(const std::string& key_path, const std::string& message) const;
 
   const SceneNode* find_node(const std::string& id) const;
   const Corridor* find_corridor(const std::string& id) const;

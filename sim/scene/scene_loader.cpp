@@ -4,16 +4,15 @@
 
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <map>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
+#include "core/yaml_document.hpp"
 #include "sim/scene/scene_schema.hpp"
 
 namespace wifislam {
@@ -115,6 +114,16 @@ class YamlReader {
       if (!n->IsScalar()) fail(*n, key, "expected text, got " + describe(*n));
       out = n->Scalar();
       if (out.empty()) fail(*n, key, "must not be empty");
+      // Names and descriptions go into one-line headers of the dataset's text files.
+      for (std::size_t i = 0; i < out.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(out[i]);
+        if (c < 0x20 || c == 0x7f) {
+          fail(*n, key,
+               fmt::format("must be one line of printable text; character {} is a control "
+                           "character ({})",
+                           i + 1, c == '\n' ? "a line break" : fmt::format("code {}", c)));
+        }
+      }
     }
   }
   template <class E>
@@ -398,6 +407,19 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
               "duplicate node id '" + scene.nodes[i].id + "'");
     }
   }
+  // Two nodes at one spot make two corridor ends that the graph does not join, and a route through
+  // both turns back where it seems to go on.
+  std::map<std::pair<double, double>, std::size_t> node_at;
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
+    const Eigen::Vector2d& p = scene.nodes[i].position_m;
+    const auto [other, fresh] = node_at.emplace(std::pair{p.x(), p.y()}, i);
+    if (!fresh) {
+      invalid(locate, fmt::format("nodes[{}].position_m", i),
+              fmt::format("node '{}' is at the same spot as node '{}' (nodes[{}]); use one node "
+                          "and name it in every corridor and route step that meets there",
+                          scene.nodes[i].id, scene.nodes[other->second].id, other->second));
+    }
+  }
   if (scene.corridors.empty()) invalid(locate, "corridors", "a scene needs at least one corridor");
   std::set<std::string> corridor_ids;
   std::map<std::string, std::vector<std::string>> adjacency;
@@ -511,7 +533,10 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
   }
 }
 
-Scene load_from_node(const YAML::Node& root, SourceMap& sources) {
+Scene load_scene_node(const YAML::Node& root, const std::string& source_name) {
+  if (!root.IsDefined() || root.IsNull())
+    throw ParseError(source_name, "", "the scene file is empty");
+  SourceMap sources{source_name, {}};
   Scene scene;
   YamlReader reader(root, "", sources);
   // Check the version first so a future file fails with a clear message, not a wrong key.
@@ -525,6 +550,8 @@ Scene load_from_node(const YAML::Node& root, SourceMap& sources) {
   schema::visit(reader, scene);
   reader.finish();
   scene.source_path = sources.file;
+  for (const auto& [key_path, mark] : sources.marks)
+    scene.key_locations[key_path] = sources.where(mark);
   validate_scene_impl(scene, [&](const std::string& key) { return sources.where(key); });
   if (scene.access_points.placement == ApPlacement::kExplicit && scene.access_points.count == 0) {
     scene.access_points.count = static_cast<int>(scene.access_points.explicit_list.size());
@@ -535,24 +562,11 @@ Scene load_from_node(const YAML::Node& root, SourceMap& sources) {
 }  // namespace
 
 Scene load_scene_yaml(const std::string& yaml_text, const std::string& source_name) {
-  SourceMap sources{source_name, {}};
-  YAML::Node root;
-  try {
-    root = YAML::Load(yaml_text);
-  } catch (const YAML::ParserException& e) {
-    throw ParseError(sources.where(e.mark), "", "not valid YAML: " + e.msg);
-  }
-  if (!root.IsDefined() || root.IsNull())
-    throw ParseError(source_name, "", "the scene file is empty");
-  return load_from_node(root, sources);
+  return load_scene_node(parse_yaml_document(yaml_text, source_name), source_name);
 }
 
 Scene load_scene_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open scene file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return load_scene_yaml(buffer.str(), path);
+  return load_scene_node(load_yaml_file(path), path);
 }
 
 void validate_scene(const Scene& scene) { validate_scene_impl(scene, nullptr); }

@@ -170,7 +170,7 @@ void visit(V& v, AccessPoints& a) {
 template <class V>
 void visit(V& v, PauseSpec& p) {
   v.interval("spacing_m", p.spacing_min_m, p.spacing_max_m, Limits{0.5, 1000.0});
-  v.number("duration_s", p.duration_s, kNonNegative);
+  v.number("duration_s", p.duration_s, Limits{0.0, 3600.0});
   v.boolean("scan_while_moving", p.scan_while_moving);
 }
 
@@ -222,8 +222,8 @@ void visit(V& v, WifiScannerSpec& w) {
 template <class V>
 void visit(V& v, OdometrySpec& o) {
   v.number("rate_hz", o.rate_hz, Limits{1.0, 1000.0});
-  v.number("noise_per_m", o.noise_per_m, kNonNegative);
-  v.number("noise_per_rad", o.noise_per_rad, kNonNegative);
+  v.number("noise_per_m", o.noise_per_m, Limits{0.0, 1.0});
+  v.number("noise_per_rad", o.noise_per_rad, Limits{0.0, 1.0});
   v.number("scale_error", o.scale_error, Limits{-0.5, 0.5});
   v.number("yaw_bias_radpm", o.yaw_bias_radpm, Limits{-1.0, 1.0});
 }
@@ -243,10 +243,12 @@ void visit(V& v, RadioSpec& r) {
                                    {RadioEnvironment::kOffice, "office"},
                                    {RadioEnvironment::kCommercial, "commercial"}});
   v.optional_number("distance_coefficient", r.distance_coefficient, Limits{10.0, 60.0});
-  v.number("shadowing_sigma_db", r.shadowing_sigma_db, kNonNegative);
-  v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, kPositive);
-  v.number("fast_fading_sigma_db", r.fast_fading_sigma_db, kNonNegative);
-  v.number("people_disturbance_db", r.people_disturbance_db, kNonNegative);
+  v.number("shadowing_sigma_db", r.shadowing_sigma_db, Limits{0.0, 30.0});
+  // Gudmundson distances are metres indoors; the field's grid cell is a quarter of this, so a
+  // tiny value asked for more cells than memory holds.
+  v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, Limits{0.5, 1000.0});
+  v.number("fast_fading_sigma_db", r.fast_fading_sigma_db, Limits{0.0, 30.0});
+  v.number("people_disturbance_db", r.people_disturbance_db, Limits{0.0, 100.0});
 }
 
 template <class V>

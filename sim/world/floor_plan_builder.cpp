@@ -159,11 +159,15 @@ FloorPlan build_floor_plan(const Scene& scene) {
     corridors.push_back(exact_rect(c.rect));
     dilated.push_back(exact_rect(c.rect.grown(t)));
   }
-  for (const OpenArea& area : scene.open_areas) {
+  for (std::size_t i = 0; i < scene.open_areas.size(); ++i) {
+    const OpenArea& area = scene.open_areas[i];
     Polygon p = exact_polygon(area.polygon_m);
-    if (area.polygon_m.size() < 3 || !p.is_simple() || p.area() == 0)
-      throw InvalidInputError(fmt::format(
-          "open area '{}': polygon_m must be a simple polygon with at least 3 corners", area.id));
+    if (area.polygon_m.size() < 3 || !p.is_simple() || p.area() == 0) {
+      scene.reject(fmt::format("open_areas[{}].polygon_m", i),
+                   fmt::format("open area '{}': the outline crosses or touches itself, or encloses "
+                               "no area; list the corners once around the area, in order",
+                               area.id));
+    }
     if (p.is_clockwise_oriented()) p.reverse_orientation();
     const PolygonWH grown =
         CGAL::minkowski_sum_2(p, dilation_kernel(t, is_axis_aligned(area.polygon_m)));

@@ -78,9 +78,9 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
       throw InvalidInputError(
           fmt::format("route.nodes[{}]: node '{}' does not exist", i, route.nodes[i]));
     if (i > 0 && scene.corridor_between(route.nodes[i - 1], route.nodes[i]) == nullptr)
-      throw InvalidInputError(
-          fmt::format("route.nodes[{}] -> route.nodes[{}]: no corridor joins nodes '{}' and '{}'",
-                      i - 1, i, route.nodes[i - 1], route.nodes[i]));
+      scene.reject(
+          fmt::format("route.nodes[{}]", i),
+          fmt::format("no corridor joins nodes '{}' and '{}'", route.nodes[i - 1], route.nodes[i]));
     pts.push_back(node->position_m);
   }
 
@@ -136,12 +136,15 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
       return fmt::format("route leg {} (from node '{}' to '{}'), point {} at ({:.2f}, {:.2f}) m",
                          leg, route.nodes[leg], route.nodes[leg + 1], k, p.x(), p.y());
     };
+    // Located at the node the leg leads to.
+    const auto key = [&] { return fmt::format("route.nodes[{}]", leg + 1); };
     if (!regions_contain(plan.walkable, p))
-      throw InvalidInputError(where() + ": outside the corridors and open areas");
+      scene.reject(key(), where() + ": outside the corridors and open areas");
     if (!walls) continue;
     const double d = walls->nearest_within_m(p, clearance);
     if (d < clearance - 1e-9)
-      throw InvalidInputError(
+      scene.reject(
+          key(),
           fmt::format("{}: only {:.3f} m from a wall, route.min_wall_clearance_m is {:.3f} m",
                       where(), d, clearance));
   }

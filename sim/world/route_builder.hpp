@@ -12,10 +12,11 @@ namespace wifislam {
 /// first and last points are the first and last nodes, unsmoothed (also for loops, which end where
 /// they start).
 ///
-/// Throws InvalidInputError when two consecutive nodes are not joined by a corridor (naming both),
-/// or when a sample leaves walkable space or comes closer than `min_wall_clearance_m` to a wall
-/// face (naming the leg, the position and the clearance found). The clearance is the exact
-/// point-to-segment distance to every wall face of the plan.
+/// Rejects (Scene::reject: located at `route.nodes[i]` in the scene file) a route where two
+/// consecutive nodes are not joined by a corridor (naming both), or where a sample leaves walkable
+/// space or comes closer than `min_wall_clearance_m` to a wall face (naming the leg, the position
+/// and the clearance found). The clearance is the exact point-to-segment distance to every wall
+/// face of the plan.
 RoutePath build_route(const Scene& scene, const FloorPlan& plan);
 
 }  // namespace wifislam

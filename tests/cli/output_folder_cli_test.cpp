@@ -197,10 +197,13 @@ TEST_F(OutputFolders, NoCommandReplacesItsOwnInput) {
 }
 
 // The demo's own folder (./demo-output) is replaced on every run, so scripts/demo.sh runs twice
-// in a row; another existing folder needs --force. A very short route keeps the demo quick.
+// in a row; another existing folder needs --force. A very short route keeps the demo quick; its
+// pauses are long enough for a Wi-Fi scan (the tiny loop's 1 s are not), which the demo's Wi-Fi
+// run needs.
 TEST_F(OutputFolders, DemoRunsTwiceInARowIntoItsOwnFolder) {
   std::string yaml = test::kTinyLoopYaml;
   yaml.replace(yaml.find("nodes: [A, B, C, D, A]"), 22, "nodes: [A, B]");
+  yaml.replace(yaml.find("duration_s: 1.0"), 15, "duration_s: 5.0");
   yaml += "sensors: {camera: {fps: 1.0}}\n";
   test::write_file(work_ / "short.yaml", yaml);
   for (int i = 0; i < 2; ++i) {

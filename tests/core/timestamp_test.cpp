@@ -19,6 +19,16 @@ TEST(Timestamp, RejectsWhatIsNotADecimalTime) {
   }
 }
 
+// Issue 18 (found with the Wi-Fi times): ten digits of seconds overflowed 64-bit nanoseconds
+// and wrapped to a time long ago.
+TEST(Timestamp, TimesBeyondSixtyFourBitNanosecondsAreRefused) {
+  EXPECT_EQ(Timestamp::parse("9223372035.999999999")->ns, 9'223'372'035'999'999'999LL);
+  EXPECT_EQ(Timestamp::parse("-9223372035.5")->ns, -9'223'372'035'500'000'000LL);
+  for (const char* far : {"9223372036", "9999999999.5", "-9999999999"}) {
+    EXPECT_FALSE(Timestamp::parse(far).has_value()) << far;
+  }
+}
+
 TEST(Timestamp, FormatsWithRequestedDecimalsAndRounds) {
   EXPECT_EQ(Timestamp::from_ns(1305031102175304000LL).to_string(6), "1305031102.175304");
   EXPECT_EQ(Timestamp::from_ns(33'333'333).to_string(6), "0.033333");

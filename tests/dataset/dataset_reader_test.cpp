@@ -278,6 +278,27 @@ TEST(DatasetReader, CorruptFilesAreErrorsWithFileAndLine) {
   EXPECT_NE(e.find("not a readable PNG"), std::string::npos) << e;
 }
 
+// Issue 18: a 16-bit image in the RGB list (a depth map, say) was scaled to 8 bits and read as
+// colour, in a plain TUM folder and with --no-verify alike.
+TEST(DatasetReader, SixteenBitImageInTheRgbSlotIsRefused) {
+  const auto dir = test::fresh_folder("rgb16");
+  write_plain_tum(dir, 3);
+  const fs::path rgb = dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(1));
+  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_16UC1, cv::Scalar(5000)));
+  std::string e = open_error(dir);
+  EXPECT_NE(e.find("rgb/0.100000.png"), std::string::npos) << e;
+  EXPECT_NE(e.find("8 bits per channel"), std::string::npos) << e;
+  EXPECT_NE(e.find("has 16"), std::string::npos) << e;
+  EXPECT_NE(e.find("rgb.txt:5"), std::string::npos) << e;
+  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_16UC3, cv::Scalar(5000, 5000, 5000)));
+  EXPECT_NE(open_error(dir).find("8 bits per channel"), std::string::npos);
+  // Grey and colour-with-alpha 8-bit images are colour images.
+  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(7)));
+  EXPECT_EQ(open_error(dir), "no error");
+  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_8UC4, cv::Scalar(1, 2, 3, 255)));
+  EXPECT_EQ(open_error(dir), "no error");
+}
+
 TEST(DatasetReader, TruncatedGroundTruthIsAnError) {
   const auto dir = test::fresh_folder("gt");
   write_ours(dir);

@@ -67,6 +67,41 @@ TEST(WifiCsv, MalformedRowsNameTheFileLineAndColumn) {
   EXPECT_NE(e.find("wifi.csv:1"), std::string::npos) << e;
 }
 
+// Issue 18: a timestamp of 2^63 / 1000 us or more wrapped when turned into nanoseconds and was
+// read as a time long ago; +50 dBm passed as an RSSI.
+TEST(WifiCsv, TimestampsThatWouldWrapAndRssiNoReceiverReportsAreRefused) {
+  const auto dir = test::fresh_folder("range");
+  const auto file = dir / "wifi.csv";
+  const std::string header = wifi_csv_header() + "\n";
+  const std::string good = "3500000,wifi0,02:1a:2b:3c:4d:50,2412000,-40,campus,0,3500000\n";
+  std::string e = error_of(
+      header + good +
+          "9223372036854776,wifi0,02:1a:2b:3c:4d:50,2412000,-40,campus,0,9223372036854776\n",
+      file);
+  EXPECT_NE(e.find("wifi.csv:3"), std::string::npos) << e;
+  EXPECT_NE(e.find("'timestamp'"), std::string::npos) << e;
+  EXPECT_NE(e.find("year 2262"), std::string::npos) << e;
+  e = error_of(header +
+                   "3500000,wifi0,02:1a:2b:3c:4d:50,2412000,-40,campus,-9223372036854776,"
+                   "3500000\n",
+               file);
+  EXPECT_NE(e.find("scan_time_start_us"), std::string::npos) << e;
+  for (const char* rssi : {"50", "31", "-121", "-200"}) {
+    e = error_of(
+        header + good + "3500000,wifi0,02:1a:2b:3c:4d:51,2412000," + rssi + ",campus,0,3500000\n",
+        file);
+    EXPECT_NE(e.find("wifi.csv:3"), std::string::npos) << rssi << ": " << e;
+    EXPECT_NE(e.find("'rssi_dbm'"), std::string::npos) << e;
+    EXPECT_NE(e.find("-120 to 30 dBm"), std::string::npos) << e;
+  }
+  // The ends of the range are readings.
+  test::write_text(file, header + "3500000,wifi0,02:1a:2b:3c:4d:50,2412000,30,campus,0,3500000\n" +
+                             "3500000,wifi0,02:1a:2b:3c:4d:51,2412000,-120,campus,0,3500000\n" +
+                             "9223372036854775,wifi0,02:1a:2b:3c:4d:51,2412000,-1,x,0,"
+                             "9223372036854775\n");
+  EXPECT_EQ(read_wifi_csv(file.string()).size(), 2u);
+}
+
 TEST(WifiCsv, RefusesToWriteWhatTheFormatCannotHold) {
   WifiScan scan = make_scan(0, 1);
   scan.readings[0].ssid = "guest,free";

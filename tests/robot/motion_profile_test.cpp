@@ -163,6 +163,50 @@ TEST(MotionProfile, CameraSitsAtTheMountHeightLookingAlongTheHeading) {
   }
 }
 
+// Issue 18: a route that turns back at a dead end ("arc length does not increase") could not be
+// generated. The robot stands and turns at its yaw-rate limit, then drives back.
+TEST(MotionProfile, DeadEndIsATurnOnTheSpotAtTheYawRateLimit) {
+  const RoutePath route = test::there_and_back_route(10.0);
+  RobotMotionOptions options = default_options();
+  options.pause.duration_s = 0.0;
+  const MotionProfile motion(route, options, 3);
+  const double turn_s = std::numbers::pi / 0.6;
+  EXPECT_NEAR(motion.end_time().seconds(), 20.0 / 0.5 + turn_s, 1e-5);
+  EXPECT_NEAR(motion.moving_time_s(), 20.0 / 0.5 + turn_s, 1e-5);
+  // Arrives at the dead end after 20 s, turns for pi / 0.6 s without moving, and comes back.
+  for (double t = 20.0 + 0.01; t < 20.0 + turn_s - 0.01; t += 0.25) {
+    const RobotState s = motion.state_at(at_s(t));
+    EXPECT_NEAR(s.position_m.x(), 10.0, 1e-9) << t;
+    EXPECT_EQ(s.speed_mps, 0.0) << t;
+    EXPECT_NEAR(s.yaw_rate_radps, 0.6, 1e-3) << t;
+    EXPECT_FALSE(s.paused()) << t;
+    EXPECT_NEAR(s.arc_length_m, 10.0, 1e-9) << t;
+    EXPECT_NEAR(std::remainder(s.heading_rad - 0.6 * (t - 20.0), 2 * std::numbers::pi), 0.0, 2e-3)
+        << t;
+  }
+  const RobotState back = motion.state_at(at_s(20.0 + turn_s + 4.0));
+  EXPECT_NEAR(back.position_m.x(), 8.0, 1e-3);
+  EXPECT_NEAR(std::abs(back.heading_rad), std::numbers::pi, 1e-9);
+  EXPECT_NEAR(back.arc_length_m, 12.0, 1e-3);
+  const RobotState end = motion.state_at(motion.end_time());
+  EXPECT_NEAR(end.position_m.norm(), 0.0, 1e-9);
+  EXPECT_NEAR(end.arc_length_m, 20.0, 1e-9);
+}
+
+// Pauses fall before or after the turn, never inside it, and the turn keeps its length.
+TEST(MotionProfile, PausesAroundATurnOnTheSpotKeepItsDuration) {
+  const RoutePath route = test::there_and_back_route(10.0);
+  const MotionProfile motion(route, default_options(), 3);
+  const double turn_s = std::numbers::pi / 0.6;
+  const double paused_s = 10.0 * static_cast<double>(motion.pauses().size());
+  EXPECT_NEAR(motion.end_time().seconds(), 20.0 / 0.5 + turn_s + paused_s, 1e-5);
+  for (const RobotPause& p : motion.pauses()) {
+    const RobotState s = motion.state_at(Timestamp::from_ns((p.start.ns + p.end.ns) / 2));
+    EXPECT_TRUE(s.paused());
+    EXPECT_EQ(s.yaw_rate_radps, 0.0);
+  }
+}
+
 TEST(MotionProfile, RejectsARouteWithoutLength) {
   RoutePath one_point;
   test::append_point(one_point, {0, 0}, 0);

@@ -1,6 +1,7 @@
 #pragma once
 // Hand-built robot routes (dense RoutePaths) for tests that must not depend on the world
-// generator: a straight line, a circle, and a rectangle with rounded corners.
+// generator: a straight line, a circle, a rectangle with rounded corners, and a corridor walked
+// down and back with a turn on the spot at its end.
 
 #include <cmath>
 #include <numbers>
@@ -62,6 +63,18 @@ inline RoutePath rounded_rectangle_route(double w_m, double h_m, double radius_m
     heading += std::numbers::pi / 2;
     at = path.points_m.back();
   }
+  return path;
+}
+
+/// Along +x for `length_m`, a half turn on the spot (to the left, in steps of at most 0.05 rad, as
+/// the route builder turns at a dead end), and back to the origin.
+inline RoutePath there_and_back_route(double length_m, double step_m = 0.05) {
+  RoutePath path = straight_route(length_m, step_m);
+  const Eigen::Vector2d end = path.points_m.back();
+  const int turn_steps = static_cast<int>(std::ceil(std::numbers::pi / 0.05));
+  for (int k = 1; k <= turn_steps; ++k) append_point(path, end, std::numbers::pi * k / turn_steps);
+  const int n = static_cast<int>(std::round(length_m / step_m));
+  for (int i = n - 1; i >= 0; --i) append_point(path, {i * step_m, 0.0}, std::numbers::pi);
   return path;
 }
 

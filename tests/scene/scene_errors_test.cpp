@@ -200,6 +200,99 @@ TEST(SceneErrors, MissingFileIsAnIoErrorNamingThePath) {
   }
 }
 
+// Issue 18: yaml-cpp keeps the first of two equal keys; the second one silently did nothing.
+TEST(SceneErrors, DuplicateKeyNamesBothLines) {
+  auto e = expect_parse_error(std::string(kValidBody) + "route:\n  nodes: [C, B, A]\n");
+  EXPECT_EQ(e.key_path(), "route");
+  EXPECT_EQ(e.where(), "bad.yaml:11:1");
+  EXPECT_NE(e.detail().find("duplicate key"), std::string::npos) << e.what();
+  EXPECT_NE(e.detail().find("line 9"), std::string::npos) << e.what();
+  // Nested and in flow style too.
+  e = expect_parse_error(
+      replace(kValidBody, "{id: bc, from: B, to: C}", "{id: bc, from: B, to: C, to: A}"));
+  EXPECT_EQ(e.key_path(), "corridors[1].to");
+  EXPECT_EQ(e.where(), "bad.yaml:8:30");
+}
+
+// Issue 18: yaml-cpp says "bad file" when lists nest deeper than its limit.
+TEST(SceneErrors, DeepNestingSaysSoWithAPosition) {
+  const std::string deep = std::string(3000, '[') + std::string(3000, ']');
+  const auto e = expect_parse_error("version: 1\nname: " + deep + "\n");
+  EXPECT_NE(e.where().find("bad.yaml:2:"), std::string::npos) << e.what();
+  EXPECT_NE(e.detail().find("nested deeper than"), std::string::npos) << e.what();
+  EXPECT_EQ(e.detail().find("bad file"), std::string::npos) << e.what();
+}
+
+// Issue 18: a line break in the name broke the '# file:' header lines of the dataset's lists.
+TEST(SceneErrors, TextWithALineBreakIsRefused) {
+  const auto e = expect_parse_error(std::string(kValidBody) + "name: \"a\\nb\"\n");
+  EXPECT_EQ(e.key_path(), "name");
+  EXPECT_EQ(e.where(), "bad.yaml:11:7");
+  EXPECT_NE(e.detail().find("line break"), std::string::npos) << e.what();
+  EXPECT_EQ(expect_parse_error(std::string(kValidBody) + "description: \"tab\\x01\"\n").key_path(),
+            "description");
+}
+
+// Issue 18: odometry noise of 1e308 wrote 'inf' into odometry.txt, a pause of 1e308 s gave a
+// dataset of one pose; shadowing of 1e308 dB gave RSSI no reader accepts. Each has a physical
+// range now, and the message prints the number as written.
+TEST(SceneErrors, NoiseAndPauseBeyondPhysicalRangesAreRefused) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"sensors: {odometry: {noise_per_m: 1e308}}\n", "sensors.odometry.noise_per_m"},
+      {"sensors: {odometry: {noise_per_rad: 2}}\n", "sensors.odometry.noise_per_rad"},
+      {"radio: {shadowing_sigma_db: 1e308}\n", "radio.shadowing_sigma_db"},
+      {"radio: {fast_fading_sigma_db: 31}\n", "radio.fast_fading_sigma_db"},
+      {"radio: {people_disturbance_db: 1e308}\n", "radio.people_disturbance_db"},
+      // Once a bad_alloc (exit 70) building the shadowing grid.
+      {"radio: {shadowing_decorrelation_m: 1e-6}\n", "radio.shadowing_decorrelation_m"},
+  };
+  for (const auto& [yaml, key] : cases) {
+    const auto e = expect_parse_error(std::string(kValidBody) + yaml);
+    EXPECT_EQ(e.key_path(), key);
+    EXPECT_NE(e.where().find("bad.yaml:11:"), std::string::npos) << e.what();
+  }
+  const auto e = expect_parse_error(replace(kValidBody, "  nodes: [A, B, C]\n",
+                                            "  nodes: [A, B, C]\n  pause: {duration_s: 1e308}\n"));
+  EXPECT_EQ(e.key_path(), "route.pause.duration_s");
+  EXPECT_NE(e.detail().find("[0, 3600]"), std::string::npos) << e.what();
+  EXPECT_NE(e.detail().find("got 1e308"), std::string::npos) << e.what();
+  EXPECT_LT(e.detail().size(), 100u) << e.what();
+}
+
+// Issue 18: a clearance of 1e308 was printed as a 309-digit number.
+TEST(SceneErrors, HugeNumbersArePrintedAsWritten) {
+  const auto e = expect_parse_error(replace(kValidBody, "  nodes: [A, B, C]\n",
+                                            "  nodes: [A, B, C]\n  min_wall_clearance_m: 1e308\n"));
+  EXPECT_EQ(e.key_path(), "route.min_wall_clearance_m");
+  EXPECT_NE(e.detail().find("got 1e308"), std::string::npos) << e.what();
+  EXPECT_LT(e.detail().size(), 100u) << e.what();
+}
+
+// Issue 18: a route through two nodes at one spot failed in `generate` with "arc length does not
+// increase at point 161", naming neither node nor line.
+TEST(SceneErrors, TwoNodesAtOneSpotAreNamed) {
+  const auto e = expect_parse_error(
+      replace(kValidBody, "  - {id: C, position_m: [10, 10]}\n",
+              "  - {id: C, position_m: [10, 10]}\n  - {id: D, position_m: [10, 0]}\n"));
+  EXPECT_EQ(e.key_path(), "nodes[3].position_m");
+  EXPECT_EQ(e.where(), "bad.yaml:6:25");
+  EXPECT_NE(e.detail().find("'D' is at the same spot as node 'B'"), std::string::npos) << e.what();
+}
+
+// Issue 18: a folder given as the scene was exit 105 in some commands and 3 in others.
+TEST(SceneErrors, AFolderIsAParseErrorNamingIt) {
+  const std::string dir = ::testing::TempDir() + "scene_folder.yaml";
+  std::filesystem::create_directories(dir);
+  try {
+    load_scene_file(dir);
+    ADD_FAILURE() << "no error";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.where(), dir);
+    EXPECT_NE(e.detail().find("is a folder"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(dir);
+}
+
 TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
   Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
   scene.route.nodes = {"A", "C"};
