@@ -5,6 +5,8 @@
 // many as the machine allows and let the caller work with those.
 
 #include <algorithm>
+#include <exception>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <utility>
@@ -39,6 +41,29 @@ int start_threads(std::vector<std::thread>& pool, int count, const F& body) {
     }
   }
   return started;
+}
+
+/// Runs `worker` on the calling thread and on up to `threads - 1` helpers (as many as the system
+/// starts), joins them all, then rethrows the first exception any of them threw. An exception
+/// must not leave a helper thread (std::terminate) or leave helpers running unjoined; the worker
+/// shares its work through its own counter, so any number of threads gives the same result.
+template <class F>
+void run_on_threads(int threads, const F& worker) {
+  std::mutex error_mutex;
+  std::exception_ptr first_error;
+  const auto guarded = [&] {
+    try {
+      worker();
+    } catch (...) {
+      std::lock_guard lock(error_mutex);
+      if (!first_error) first_error = std::current_exception();
+    }
+  };
+  std::vector<std::thread> pool;
+  start_threads(pool, threads - 1, guarded);
+  guarded();
+  for (std::thread& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
 }
 
 }  // namespace wifislam

@@ -191,11 +191,7 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
   };
   // The calling thread works too; helpers are as many as the system will start (rows are taken
   // from a shared counter, so any number gives the same map).
-  const int threads = clamp_thread_count(options.threads);
-  std::vector<std::thread> pool;
-  start_threads(pool, threads - 1, worker);
-  worker();
-  for (auto& t : pool) t.join();
+  run_on_threads(clamp_thread_count(options.threads), worker);
   return map;
 }
 

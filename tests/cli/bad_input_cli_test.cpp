@@ -30,23 +30,8 @@ class BadInput : public ::testing::Test {
   test::CliResult wifislam(const std::string& args, const std::string& prefix = "") {
     return run_wifislam(args, scratch_, {}, prefix);
   }
-  // The tiny loop with `from` replaced by `to` (which must occur in it).
   fs::path scene_with(const std::string& from, const std::string& to, const std::string& name) {
-    std::string yaml = test::kTinyLoopYaml;
-    const auto at = yaml.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    yaml.replace(at, from.size(), to);
-    const fs::path path = scratch_ / name;
-    test::write_file(path, yaml);
-    return path;
-  }
-  static void expect_located_error(const test::CliResult& r, const std::string& where,
-                                   const std::string& key) {
-    EXPECT_EQ(r.signal, 0) << r.err;
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(key), std::string::npos) << r.err;
-    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    return test::tiny_loop_with(scratch_, from, to, name);
   }
 
   fs::path scratch_, scene_;
@@ -62,7 +47,7 @@ TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
     const auto r = wifislam("world " + scene.string());
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    expect_located_error(r, "far.yaml:8:", "nodes[1].position_m[0]");
+    test::expect_located_bad_input(r, "far.yaml:8:", "nodes[1].position_m[0]");
     EXPECT_NE(r.err.find("[-10000, 10000]"), std::string::npos) << r.err;
     EXPECT_LT(seconds, 10.0) << value;
   }
@@ -71,8 +56,8 @@ TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
       scene_with("corridors:",
                  "open_areas:\n  - {id: hall, polygon_m: [[0, 0], [3, 0], [3, 1e12]]}\ncorridors:",
                  "area.yaml");
-  expect_located_error(wifislam("world " + area.string()),
-                       "area.yaml:", "open_areas[0].polygon_m[2][1]");
+  test::expect_located_bad_input(wifislam("world " + area.string()),
+                                 "area.yaml:", "open_areas[0].polygon_m[2][1]");
 }
 
 // Within the limits a building can still be 20 km long: the route's wall-clearance check and the
@@ -115,7 +100,7 @@ TEST_F(BadInput, AccessPointAboveTheBuildingIsALocatedError) {
   const fs::path out = scratch_ / "ds";
   const auto r =
       wifislam("generate " + scene.string() + " -o " + out.string() + " --fps 2 --max-frames 2 -q");
-  expect_located_error(r, "ap.yaml:", "access_points.list[0].position_m[2]");
+  test::expect_located_bad_input(r, "ap.yaml:", "access_points.list[0].position_m[2]");
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(out.string() + ".partial"));
   // Within the schema's range but above this building's 2.8 m ceiling.
@@ -123,8 +108,8 @@ TEST_F(BadInput, AccessPointAboveTheBuildingIsALocatedError) {
                                    "access_points:\n  placement: explicit\n  list: [{position_m: "
                                    "[1, 0, 4.0]}]",
                                    "high.yaml");
-  expect_located_error(wifislam("world " + high.string()),
-                       "high.yaml:", "access_points.list[0].position_m[2]");
+  test::expect_located_bad_input(wifislam("world " + high.string()),
+                                 "high.yaml:", "access_points.list[0].position_m[2]");
 }
 
 // Once an Embree assertion (abort) for nan, inf and 1e300.
@@ -133,7 +118,7 @@ TEST_F(BadInput, RadioMapHeightOutsideTheBuildingIsAnError) {
   for (const char* height : {"nan", "inf", "1e300", "-1", "0", "2.8"}) {
     const auto r = wifislam("radiomap " + scene_.string() + " --strongest --height " + height +
                             " -o " + png.string());
-    expect_located_error(r, "--height", "ceiling");
+    test::expect_located_bad_input(r, "--height", "ceiling");
     EXPECT_FALSE(fs::exists(png)) << height;
   }
   const auto r = wifislam("radiomap " + scene_.string() +
@@ -170,7 +155,7 @@ TEST_F(BadInput, EmptyPngInADatasetWithoutManifestIsALocatedError) {
   ASSERT_FALSE(png.empty());
   fs::resize_file(png, 0);
   const auto r = wifislam("check " + ds.string());
-  expect_located_error(r, png.filename().string(), "0 bytes");
+  test::expect_located_bad_input(r, png.filename().string(), "0 bytes");
 }
 
 // Once exit 70 from inside OpenCV's ORB (pyramid levels of no pixels, unbounded allocation).
@@ -185,7 +170,7 @@ TEST_F(BadInput, OrbOptionsOutsideTheirRangeAreErrors) {
        {"orb_levels=1000", "orb_scale_factor=1e308", "max_keypoints=2147483647",
         "orb_levels=20 --set orb_scale_factor=2"}) {
     const auto r = wifislam("slam " + ds.string() + " --set " + setting + " -o " + run.string());
-    expect_located_error(r, "SLAM option", setting.substr(0, setting.find('=')));
+    test::expect_located_bad_input(r, "SLAM option", setting.substr(0, setting.find('=')));
     EXPECT_FALSE(fs::exists(run)) << setting;
   }
   const auto r = wifislam("slam " + ds.string() +

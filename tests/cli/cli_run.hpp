@@ -102,4 +102,28 @@ route:
 radio: {environment: office}
 )";
 
+/// Writes `dir / name`: the tiny loop with `from` replaced by `to` (which must occur in it).
+inline std::filesystem::path tiny_loop_with(const std::filesystem::path& dir,
+                                            const std::string& from, const std::string& to,
+                                            const std::string& name) {
+  std::string yaml = kTinyLoopYaml;
+  const auto at = yaml.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) yaml.replace(at, from.size(), to);
+  const std::filesystem::path path = dir / name;
+  write_file(path, yaml);
+  return path;
+}
+
+/// Bad input as the README promises it: exit 2 (no signal), a message naming `where` (file,
+/// line) and `what` (key, value), and no "internal error".
+inline void expect_located_bad_input(const CliResult& r, const std::string& where,
+                                     const std::string& what) {
+  EXPECT_EQ(r.signal, 0) << r.err;
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+}
+
 }  // namespace wifislam::test

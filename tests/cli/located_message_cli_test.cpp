@@ -32,21 +32,7 @@ class LocatedMessage : public ::testing::Test {
 
   test::CliResult wifislam(const std::string& args) { return run_wifislam(args, scratch_); }
   fs::path scene_with(const std::string& from, const std::string& to, const std::string& name) {
-    std::string yaml = test::kTinyLoopYaml;
-    const auto at = yaml.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    yaml.replace(at, from.size(), to);
-    const fs::path path = scratch_ / name;
-    test::write_file(path, yaml);
-    return path;
-  }
-  static void expect_bad_input(const test::CliResult& r, const std::string& where,
-                               const std::string& what) {
-    EXPECT_EQ(r.signal, 0) << r.err;
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_NE(r.err.find(where), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
-    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    return test::tiny_loop_with(scratch_, from, to, name);
   }
 
   fs::path scratch_, scene_;
@@ -58,8 +44,8 @@ TEST_F(LocatedMessage, SelfIntersectingPolygonNamesItsLineAndKey) {
       "corridors:",
       "open_areas:\n  - {id: hall, polygon_m: [[0, 0], [4, 4], [4, 0], [0, 4]]}\ncorridors:",
       "bowtie.yaml");
-  expect_bad_input(wifislam("world " + scene.string()),
-                   "bowtie.yaml:12:", "key 'open_areas[0].polygon_m'");
+  test::expect_located_bad_input(wifislam("world " + scene.string()),
+                                 "bowtie.yaml:12:", "key 'open_areas[0].polygon_m'");
   EXPECT_NE(wifislam("world " + scene.string()).err.find("crosses"), std::string::npos);
 }
 
@@ -82,7 +68,8 @@ TEST_F(LocatedMessage, AccessPointsThatDoNotFitAreLocated) {
   const fs::path scene =
       scene_with("access_points: {placement: random, count: 8}",
                  "access_points: {placement: grid, count: 10000}", "crowded.yaml");
-  expect_bad_input(wifislam("world " + scene.string()), "crowded.yaml:19:", "key 'access_points'");
+  test::expect_located_bad_input(wifislam("world " + scene.string()),
+                                 "crowded.yaml:19:", "key 'access_points'");
 }
 
 // Once exit 105 (CLI11's check) in some commands and 3 in another.
@@ -96,11 +83,12 @@ TEST_F(LocatedMessage, AFolderGivenAsTheSceneIsBadInputInEveryCommand) {
         "render " + folder.string() + " --pose 1,0,0 -o " + (scratch_ / "view").string(),
         "compare " + folder.string() + " -o " + out.string(), "demo --scene " + folder.string()}) {
     // In the scratch folder: the demo writes ./demo-output.
-    expect_bad_input(run_wifislam(command, scratch_, scratch_), folder.string(), "is a folder");
+    test::expect_located_bad_input(run_wifislam(command, scratch_, scratch_), folder.string(),
+                                   "is a folder");
   }
   // `slam` reads a folder as a dataset: this one is not one.
-  expect_bad_input(wifislam("slam " + folder.string() + " -o " + out.string()), folder.string(),
-                   "not an RGB-D dataset");
+  test::expect_located_bad_input(wifislam("slam " + folder.string() + " -o " + out.string()),
+                                 folder.string(), "not an RGB-D dataset");
   EXPECT_FALSE(fs::exists(out));
   // A missing file is a file error (exit 3), the same in every command.
   const auto missing = wifislam("world " + (scratch_ / "nope.yaml").string());
@@ -134,7 +122,7 @@ route: {nodes: [A, B, C]}
 )");
   const auto r =
       wifislam("radiomap " + ell.string() + " --strongest --res 0.01 -o " + png.string());
-  expect_bad_input(r, "radio map", "at most 16 million cells");
+  test::expect_located_bad_input(r, "radio map", "at most 16 million cells");
   EXPECT_NE(r.err.find("--res"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(png));
 }
@@ -162,7 +150,8 @@ TEST_F(LocatedMessage, SecondGenerateIntoAFolderBeingWrittenIsRefused) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   ASSERT_TRUE(fs::exists(first_rc));
-  expect_bad_input(second, out.string(), "another wifislam run is writing this folder");
+  test::expect_located_bad_input(second, out.string(),
+                                 "another wifislam run is writing this folder");
   EXPECT_EQ(test::read_file(first_rc), "0\n") << test::read_file(scratch_ / "first_err.txt");
   EXPECT_EQ(wifislam("check " + out.string()).exit_code, 0);
   // The lock goes with the run: a later run, with --force, replaces the folder.
