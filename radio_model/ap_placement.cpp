@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
-#include "radio_model/plan_geometry.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
 namespace wifislam {
@@ -48,9 +48,9 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
   std::vector<double> crossings;
   std::vector<std::pair<double, double>> spans;
   for (double y = y0; y < hi.y(); y += spacing_m) {
-    // The row's spans inside some free-space outer ring, by point_in_polygon's own crossing rule
+    // The row's spans inside some free-space outer ring, by ring_contains's own crossing rule
     // (inside iff an odd number of crossings lies right of x): a spot outside every span fails
-    // point_in_regions, so only spots within spans are tested. A big sparse plan (a 10 km L) then
+    // regions_contain, so only spots within spans are tested. A big sparse plan (a 10 km L) then
     // costs a test per free spot, not per lattice point of its bounding box.
     spans.clear();
     for (const PolygonWithHoles2& region : plan.free_space) {
@@ -88,8 +88,8 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
         continue;
       }
       const Eigen::Vector2d p(x, y);
-      if (inside && !point_in_polygon(*inside, p)) continue;
-      if (!point_in_regions(plan.free_space, p)) continue;
+      if (inside && !ring_contains(*inside, p)) continue;
+      if (!regions_contain(plan.free_space, p)) continue;
       if (walls.nearest_within_m(p, lattice.clearance_m) < lattice.clearance_m) continue;
       spots.push_back(p);
     }
@@ -229,7 +229,7 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
       // The rest (and whatever the rooms could not take) in corridors and halls.
       std::vector<Eigen::Vector2d> walkable;
       for (const auto& p : free_spots)
-        if (point_in_regions(plan.walkable, p)) walkable.push_back(p);
+        if (regions_contain(plan.walkable, p)) walkable.push_back(p);
       if (walkable.empty()) walkable = free_spots;
       shuffle(walkable, rng);
       take_spaced(walkable, spec.count - static_cast<int>(chosen.size()), spec.min_spacing_m,

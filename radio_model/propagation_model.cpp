@@ -11,6 +11,8 @@ PropagationOptions PropagationOptions::from_scene(const RadioSpec& radio) {
   o.shadowing_sigma_db = radio.shadowing_sigma_db;
   o.shadowing_decorrelation_m = radio.shadowing_decorrelation_m;
   o.fast_fading_sigma_db = radio.fast_fading_sigma_db;
+  o.fading_coherence_s = radio.fading_coherence_s;
+  o.bssid_spread_db = radio.bssid_spread_db;
   o.people_disturbance_db = radio.people_disturbance_db;
   return o;
 }
@@ -34,12 +36,12 @@ PropagationModel::PropagationModel(const Mesh& mesh, const Eigen::Vector2d& boun
       options_(std::move(options)),
       walls_(std::make_unique<EmbreeWallScene>(mesh)),
       floor_loss_db_(itu_p1238_floor_loss_db(options_.environment, options_.floors_between)) {
+  // One grid and covariance spectrum for the site, one field per AP from its own stream.
+  const ShadowingGrid grid(bounds_min_m, bounds_max_m, options_.shadowing_sigma_db,
+                           options_.shadowing_decorrelation_m);
   shadowing_.reserve(aps_.size());
-  for (const AccessPoint& ap : aps_) {
-    shadowing_.emplace_back(bounds_min_m, bounds_max_m, options_.shadowing_sigma_db,
-                            options_.shadowing_decorrelation_m,
-                            Rng::stream(seed, fmt::format("shadowing/ap{}", ap.id)));
-  }
+  for (const AccessPoint& ap : aps_)
+    shadowing_.push_back(grid.draw(Rng::stream(seed, fmt::format("shadowing/ap{}", ap.id))));
 }
 
 RadioLink PropagationModel::link(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const {

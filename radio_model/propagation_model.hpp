@@ -38,8 +38,11 @@ struct PropagationOptions {
   /// explicit walls already model.
   double shadowing_sigma_db = 4.0;
   double shadowing_decorrelation_m = 3.0;
-  /// Per scan sample (scanner): Gaussian in dB, and random extra loss from people.
+  /// Scanner: the fading of each radio (fading_process.hpp) with its coherence time at a still
+  /// receiver, the per-BSSID spread around it, and random extra loss from people.
   double fast_fading_sigma_db = 2.0;
+  double fading_coherence_s = 3.0;
+  double bssid_spread_db = 0.5;
   double people_disturbance_db = 0.0;  // 0 = off; else extra loss up to this much
   double people_probability = 0.3;     // chance a person blocks a given AP during one scan
 

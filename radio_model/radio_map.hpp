@@ -22,7 +22,8 @@ enum class RadioMapBand { kBest, k2_4GHz, k5GHz };
 
 struct RadioMapOptions {
   double resolution_m = 0.25;
-  double receiver_height_m = 1.0;
+  /// Where datasets scan: pass Site::receiver_height_m() (the camera height; 0.5 m by default).
+  double receiver_height_m = 0.5;
   std::optional<int> ap_id;                 // nullopt: the strongest AP at every cell
   RadioMapBand band = RadioMapBand::kBest;  // best: the AP's stronger radio
   int threads = 0;                          // 0: all hardware threads

@@ -20,7 +20,38 @@ WifiScannerOptions WifiScannerOptions::from_scene(const WifiScannerSpec& spec) {
 
 WifiScanner::WifiScanner(const PropagationModel& model, WifiScannerOptions options,
                          std::uint64_t seed)
-    : model_(model), options_(std::move(options)), seed_(seed) {}
+    : model_(model), options_(std::move(options)), seed_(seed) {
+  const PropagationOptions& prop = model_.options();
+  for (const AccessPoint& ap : model_.access_points()) {
+    // One fading process per radio, at the carrier of its (shared) channel.
+    std::vector<FadingProcess>& radios = fading_.emplace_back();
+    for (RadioBand band : {RadioBand::k2_4GHz, RadioBand::k5GHz}) {
+      const auto it = std::find_if(ap.bssids.begin(), ap.bssids.end(),
+                                   [&](const Bssid& b) { return b.band == band; });
+      const double frequency_mhz =
+          it != ap.bssids.end() ? it->frequency_mhz() : (band == RadioBand::k5GHz ? 5500 : 2437);
+      radios.emplace_back(prop.fast_fading_sigma_db, prop.fading_coherence_s, frequency_mhz,
+                          Rng::stream(seed_, fmt::format("wifi/fading/{}/{}",
+                                                         ap.base_mac().to_string(),
+                                                         to_string(band))));
+    }
+    std::vector<double>& offsets = beacon_offsets_s_.emplace_back();
+    for (const Bssid& b : ap.bssids) {
+      offsets.push_back(Rng::stream(seed_, fmt::format("wifi/beacon/{}", b.mac.to_string()))
+                            .uniform(0.0, options_.beacon_interval_s));
+    }
+  }
+}
+
+bool WifiScanner::beacon_in_dwell(double offset_s, std::int64_t dwell_start_ns) const {
+  const double interval_s = options_.beacon_interval_s;
+  if (options_.dwell_per_channel_s >= interval_s) return true;
+  // Time from the dwell's start to the BSSID's next beacon (target beacon transmission time).
+  const double start_s = static_cast<double>(dwell_start_ns) * 1e-9;
+  double wait_s = std::fmod(offset_s - start_s, interval_s);
+  if (wait_s < 0.0) wait_s += interval_s;
+  return wait_s < options_.dwell_per_channel_s;
+}
 
 std::int64_t WifiScanner::scan_duration_ns() const {
   const std::size_t channels =
@@ -59,19 +90,28 @@ WifiScan WifiScanner::scan(Timestamp start,
   std::int64_t slot = 0;
   for (RadioBand band : {RadioBand::k2_4GHz, RadioBand::k5GHz}) {
     for (int channel : scan_channels(band)) {
-      const Timestamp mid = Timestamp::from_ns(start.ns + slot * dwell_ns + dwell_ns / 2);
+      const std::int64_t dwell_start_ns = start.ns + slot * dwell_ns;
+      const Timestamp mid = Timestamp::from_ns(dwell_start_ns + dwell_ns / 2);
       ++slot;
       std::optional<Eigen::Vector3d> where;
       for (std::size_t a = 0; a < aps.size(); ++a) {
         std::optional<RadioLink> link;
-        for (const Bssid& b : aps[a].bssids) {
+        std::optional<double> fading_db;
+        for (std::size_t k = 0; k < aps[a].bssids.size(); ++k) {
+          const Bssid& b = aps[a].bssids[k];
           if (b.band != band || b.channel != channel) continue;
           if (!where) where = position_at(mid);
           if (!link) link = model_.link(a, *where);
+          if (!fading_db) {
+            fading_db = fading_[a][band == RadioBand::k5GHz ? 1 : 0].at_db(mid.seconds(),
+                                                                          where->head<2>());
+          }
           // Always draw both numbers so one BSSID's outcome never shifts another's draws.
-          const double fading = rng.normal() * prop.fast_fading_sigma_db;
+          const double spread = rng.normal() * prop.bssid_spread_db;
           const double u = rng.uniform();
-          const double sample = model_.mean_rssi_dbm(a, b, *link) + fading - people_db[a];
+          if (!beacon_in_dwell(beacon_offsets_s_[a][k], dwell_start_ns)) continue;
+          const double sample =
+              model_.mean_rssi_dbm(a, b, *link) + *fading_db + spread - people_db[a];
           const double margin = sample - options_.sensitivity_dbm;
           if (margin < 0.0) continue;
           if (u >= 1.0 - std::exp(-margin / options_.detection_width_db)) continue;

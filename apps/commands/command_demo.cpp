@@ -12,12 +12,10 @@
 #include "core/atomic_file.hpp"
 #include "core/output_folder.hpp"
 #include "eval/study/comparison_study.hpp"
-#include "radio_model/ap_placement.hpp"
-#include "radio_model/propagation_model.hpp"
 #include "radio_model/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/site.hpp"
 #include "sim/world/plan_drawing.hpp"
-#include "sim/world/world_generator.hpp"
 
 namespace {
 
@@ -33,17 +31,17 @@ struct DemoArgs {
 
 void draw_scene_pictures(const wifislam::Scene& scene, const std::filesystem::path& dir) {
   using namespace wifislam;
-  const World world = generate_world(scene);
-  const std::vector<AccessPoint> access_points = make_access_points(scene, world.plan);
+  const Site site(scene);
   PlanDrawingOptions plan_options;
   plan_options.title = scene.name + " (seed " + std::to_string(scene.seed) + ")";
-  for (const auto& ap : access_points) plan_options.access_points_m.push_back(ap.position_m);
-  draw_floor_plan(world, dir / "plan.png", plan_options);
-  // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card would hear, on average.
-  const PropagationModel radio(world, access_points, PropagationOptions::from_scene(scene.radio),
-                               access_point_seed(scene));
-  const RadioMap map = compute_radio_map(radio, world.plan, RadioMapOptions{});
-  write_radio_map_png(map, world.plan, access_points, dir / "radio_map.png",
+  for (const auto& ap : site.access_points()) plan_options.access_points_m.push_back(ap.position_m);
+  draw_floor_plan(site.world(), dir / "plan.png", plan_options);
+  // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
+  // and with the shadowing of the dataset's scans.
+  RadioMapOptions map_options;
+  map_options.receiver_height_m = site.receiver_height_m();
+  const RadioMap map = compute_radio_map(site.radio(), site.world().plan, map_options);
+  write_radio_map_png(map, site.world().plan, site.access_points(), dir / "radio_map.png",
                       scene.sensors.wifi.sensitivity_dbm);
   write_file_atomic(dir / "scene.yaml", resolved_scene_yaml(scene));
 }

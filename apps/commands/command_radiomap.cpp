@@ -10,12 +10,12 @@
 #include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/radio_map.hpp"
 #include "radio_model/wifi_scanner.hpp"
 #include "sim/scene/scene_loader.hpp"
-#include "sim/world/world_generator.hpp"
+#include "sim/site/site.hpp"
+#include "sim/world/world_types.hpp"
 
 namespace {
 
@@ -24,7 +24,7 @@ struct RadiomapArgs {
   std::optional<int> ap_id;
   bool strongest = false;
   double resolution_m = 0.25;
-  double height_m = 1.0;
+  std::optional<double> height_m;  // default: the site's receiver height (the camera's)
   std::string band = "best";
   std::string output = "radiomap.png";
   std::string csv;
@@ -36,18 +36,18 @@ void run_radiomap(const RadiomapArgs& args) {
   if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
   const Scene scene = load_scene_file(args.scene_path);
   const double ceiling_m = scene.building.wall_height_m;
-  if (!(args.height_m > 0.0 && args.height_m < ceiling_m)) {
+  if (args.height_m && !(*args.height_m > 0.0 && *args.height_m < ceiling_m)) {
     throw InvalidInputError(fmt::format(
         "--height: {} m is not between the floor and the ceiling (0 to {} m, the scene's "
         "building.wall_height_m)",
-        args.height_m, ceiling_m));
+        *args.height_m, ceiling_m));
   }
-  const World world = generate_world(scene);
-  PropagationModel model(world, make_access_points(scene, world.plan),
-                         PropagationOptions::from_scene(scene.radio), scene.seed);
+  const Site site(scene);
+  const PropagationModel& model = site.radio();
+  const World& world = site.world();
   RadioMapOptions options;
   options.resolution_m = args.resolution_m;
-  options.receiver_height_m = args.height_m;
+  options.receiver_height_m = args.height_m.value_or(site.receiver_height_m());
   options.ap_id = args.strongest ? std::nullopt : args.ap_id;
   options.band = args.band == "2.4" ? RadioMapBand::k2_4GHz
                  : args.band == "5" ? RadioMapBand::k5GHz
@@ -83,8 +83,8 @@ WIFISLAM_COMMAND(radiomap, 40) {
       ->check(CLI::Range(0.01, 10.0))
       ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--height", args->height_m,
-                  "Receiver height above the floor (m), below the scene's ceiling")
-      ->capture_default_str();
+                  "Receiver height above the floor (m), below the scene's ceiling; default: the "
+                  "camera height (sensors.camera.height_m), where datasets scan");
   app->add_option("--band", args->band, "Radio: 2.4, 5 or best (the stronger of the two)")
       ->capture_default_str()
       ->check(CLI::IsMember({"2.4", "5", "best"}));

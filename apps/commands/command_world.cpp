@@ -6,9 +6,9 @@
 
 #include "apps/command_registry.hpp"
 #include "core/output_folder.hpp"
-#include "radio_model/ap_placement.hpp"
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/site.hpp"
 #include "sim/world/plan_drawing.hpp"
 #include "sim/world/world_generator.hpp"
 
@@ -24,12 +24,12 @@ void run_world(const WorldArgs& args) {
   using namespace wifislam;
   if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
   const Scene scene = load_scene_file(args.scene_path);
-  const World world = generate_world(scene);
-  // The robot's timing along the route, as `generate` computes it: a route `world` accepts is
-  // one `generate` can drive.
-  const MotionProfile motion(world.route, RobotMotionOptions::from_route(scene.route), scene.seed);
-  // The access points as the radio model places them (explicit list or placement generator).
-  const std::vector<AccessPoint> access_points = make_access_points(scene, world.plan);
+  // The site as `generate` builds it: a route `world` accepts is one `generate` can drive, and
+  // the access points are the ones the dataset's scans hear.
+  const Site site(scene);
+  const World& world = site.world();
+  const MotionProfile& motion = site.motion();
+  const std::vector<AccessPoint>& access_points = site.access_points();
   if (!args.plan_path.empty()) {
     PlanDrawingOptions options;
     options.title = fmt::format("{} (seed {})", scene.name, scene.seed);

@@ -11,20 +11,18 @@
 #include <memory>
 
 #include "core/rng.hpp"
-#include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
-#include "sim/world/world_generator.hpp"
+#include "sim/site/site.hpp"
+#include "sim/world/world_types.hpp"
 
 namespace {
 
 using namespace wifislam;
 
 struct JHall {
-  Scene scene;
-  World world;
-  std::unique_ptr<PropagationModel> model;
+  std::unique_ptr<Site> site;
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;  // 30 m each
 };
 
@@ -33,15 +31,11 @@ const JHall& j_hall() {
     auto* h = new JHall;
     // WIFISLAM_BENCH_SCENE picks another scene file (e.g. to compare halls).
     const char* other = std::getenv("WIFISLAM_BENCH_SCENE");
-    h->scene = load_scene_file(other ? std::string(other)
-                                     : std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
-    h->world = generate_world(h->scene);
-    h->model = std::make_unique<PropagationModel>(
-        h->world, make_access_points(h->scene, h->world.plan),
-        PropagationOptions::from_scene(h->scene.radio), h->scene.seed);
+    h->site = std::make_unique<Site>(load_scene_file(
+        other ? std::string(other) : std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml"));
     Rng rng = Rng::stream(1, "bench/segments");
-    const auto& lo = h->world.plan.bounds_min_m;
-    const auto& hi = h->world.plan.bounds_max_m;
+    const auto& lo = h->site->world().plan.bounds_min_m;
+    const auto& hi = h->site->world().plan.bounds_max_m;
     while (h->segments.size() < 4096) {
       const Eigen::Vector2d a(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y()));
       const double heading = rng.uniform(0.0, 2.0 * M_PI);
@@ -58,7 +52,7 @@ const JHall& j_hall() {
 // Both measured in one loop so machine noise hits both alike; the ratio is the figure to keep.
 void BM_WallCrossingVsBareEmbree(benchmark::State& state) {
   const JHall& h = j_hall();
-  const EmbreeWallScene& walls = h.model->wall_scene();
+  const EmbreeWallScene& walls = h.site->radio().wall_scene();
   std::vector<WallCrossing> out;
   double crossing_s = 0, bare_s = 0;
   std::size_t queries = 0, walls_total = 0;
@@ -93,16 +87,16 @@ void BM_RadioMapJHallAllAps(benchmark::State& state) {
   options.prune = state.range(1) != 0;
   std::size_t cells = 0;
   for (auto _ : state) {
-    const RadioMap map = compute_radio_map(*h.model, h.world.plan, options);
+    const RadioMap map = compute_radio_map(h.site->radio(), h.site->world().plan, options);
     cells = 0;
     for (float v : map.rssi_dbm) cells += std::isfinite(v);
     benchmark::DoNotOptimize(map.rssi_dbm.data());
   }
   state.counters["free_cells"] = static_cast<double>(cells);
-  state.counters["aps"] = static_cast<double>(h.model->access_points().size());
+  state.counters["aps"] = static_cast<double>(h.site->radio().access_points().size());
   // Cell x AP pairs covered per second (with pruning most of them need no ray).
   state.counters["cell_aps_per_s"] =
-      benchmark::Counter(static_cast<double>(cells * h.model->access_points().size()),
+      benchmark::Counter(static_cast<double>(cells * h.site->radio().access_points().size()),
                          benchmark::Counter::kIsIterationInvariantRate);
 }
 // Args: threads, prune (0: every AP's wall ray at every cell; 1: exact pruning of hopeless APs).

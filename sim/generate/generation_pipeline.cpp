@@ -2,10 +2,6 @@
 
 #include <limits>
 
-#include "radio_model/ap_placement.hpp"
-#include "sim/scene/scene_loader.hpp"
-#include "sim/world/world_generator.hpp"
-
 namespace wifislam {
 
 namespace {
@@ -27,16 +23,9 @@ Scene resolve_scene(const Scene& scene, const GenerateOptions& options) {
 GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions& options)
     : scene_(scene), mount_(scene.sensors.camera) {
   const auto t0 = Clock::now();
-  validate_scene(scene_);
-  world_ = std::make_unique<World>(generate_world(scene_));
-  motion_ = std::make_unique<MotionProfile>(
-      world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
-
-  radio_ =
-      std::make_unique<PropagationModel>(*world_, make_access_points(scene_, world_->plan),
-                                         PropagationOptions::from_scene(scene_.radio), scene_.seed);
+  site_ = std::make_unique<Site>(scene_);
   scanner_ = std::make_unique<WifiScanner>(
-      *radio_, WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
+      site_->radio(), WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
 
   SensorScheduleOptions schedule;
   schedule.fps = scene_.sensors.camera.fps;
@@ -45,12 +34,12 @@ GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions
   schedule.scan_duration_ns = scanner_->scan_duration_ns();
   schedule.scan_while_moving = scene_.route.pause.scan_while_moving;
   schedule.max_frames = options.max_frames;
-  schedule_ = std::make_unique<SensorSchedule>(*motion_, schedule);
+  schedule_ = std::make_unique<SensorSchedule>(site_->motion(), schedule);
   odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, scene_.seed);
 
   if (options.images) {
     renderer_ = std::make_unique<RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
-    renderer_->set_world(*world_, scene_);
+    renderer_->set_world(site_->world(), scene_);
     depth_model_ = std::make_unique<DepthSensorModel>(
         scene_.sensors.depth, scene_.sensors.camera.intrinsics, scene_.seed);
   }
@@ -72,7 +61,7 @@ std::optional<GeneratedEvent> GenerationPipeline::next() {
   if (t_odo <= t_scan && t_odo <= t_frame) {
     const Timestamp t = Timestamp::from_ns(t_odo);
     ++next_odometry_;
-    return GeneratedEvent{odometry_->measure(t, motion_->state_at(t))};
+    return GeneratedEvent{odometry_->measure(t, site_->motion().state_at(t))};
   }
   if (t_scan <= t_frame) return GeneratedEvent{make_scan(scans[next_scan_++])};
   return make_frame(next_frame_++);
@@ -83,7 +72,7 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
   frame.time = schedule_->frame_time(k);
   frame.index = k;
   GeneratedEvent out;
-  out.camera_to_world = mount_.camera_to_world(motion_->state_at(frame.time));
+  out.camera_to_world = mount_.camera_to_world(site_->motion().state_at(frame.time));
   if (renderer_) {
     auto t0 = Clock::now();
     renderer_->render(out.camera_to_world, view_);
@@ -99,9 +88,9 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
 
 WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
   const auto t0 = Clock::now();
-  const double antenna_height_m = scene_.sensors.camera.height_m;
+  const double antenna_height_m = site_->receiver_height_m();
   auto position_at = [&](Timestamp t) {
-    const RobotState s = motion_->state_at(t);
+    const RobotState s = site_->motion().state_at(t);
     return Eigen::Vector3d(s.position_m.x(), s.position_m.y(), antenna_height_m);
   };
   WifiScan scan = window.pause_index >= 0 && scene_.route.pause.scan_while_moving == false

@@ -28,6 +28,7 @@
 #include "sim/robot/sensor_schedule.hpp"
 #include "sim/robot/wheel_odometry.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/site/site.hpp"
 #include "sim/world/world_types.hpp"
 
 namespace wifislam {
@@ -53,11 +54,12 @@ class GenerationPipeline {
   std::optional<GeneratedEvent> next();
 
   const Scene& scene() const { return scene_; }
-  const World& world() const { return *world_; }
-  const MotionProfile& motion() const { return *motion_; }
+  const Site& site() const { return *site_; }
+  const World& world() const { return site_->world(); }
+  const MotionProfile& motion() const { return site_->motion(); }
   const SensorSchedule& schedule() const { return *schedule_; }
   const CameraMount& mount() const { return mount_; }
-  const PropagationModel& radio() const { return *radio_; }
+  const PropagationModel& radio() const { return site_->radio(); }
   const WifiScanner& scanner() const { return *scanner_; }
   bool images() const { return renderer_ != nullptr; }
   /// The renderer (null without images); benchmarks time it alone as a baseline.
@@ -69,13 +71,11 @@ class GenerationPipeline {
   WifiScan make_scan(const ScanWindow& window);
 
   Scene scene_;
-  std::unique_ptr<World> world_;
-  std::unique_ptr<MotionProfile> motion_;
+  std::unique_ptr<Site> site_;
   std::unique_ptr<SensorSchedule> schedule_;
   CameraMount mount_;
   std::unique_ptr<RgbdRenderer> renderer_;
   std::unique_ptr<DepthSensorModel> depth_model_;
-  std::unique_ptr<PropagationModel> radio_;
   std::unique_ptr<WifiScanner> scanner_;
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;

@@ -199,7 +199,9 @@ struct RadioSpec {
   std::optional<double> distance_coefficient;  // N; default chosen by the radio model
   double shadowing_sigma_db = 4.0;
   double shadowing_decorrelation_m = 3.0;
-  double fast_fading_sigma_db = 2.0;
+  double fast_fading_sigma_db = 2.0;   // per radio, shared by its BSSIDs (fading_process.hpp)
+  double fading_coherence_s = 3.0;     // at a still receiver
+  double bssid_spread_db = 0.5;        // per BSSID and scan, on top of the radio's fading
   double people_disturbance_db = 0.0;  // optional temporal disturbance for open halls
 };
 

@@ -161,7 +161,8 @@ void visit(V& v, AccessPoints& a) {
   v.number("height_m", a.height_m, kHeightM);
   v.number("tx_power_dbm", a.tx_power_dbm, Limits{-10.0, 36.0});
   v.integer("ssids_per_radio", a.ssids_per_radio, Limits{1, 16});
-  v.number("min_spacing_m", a.min_spacing_m, kNonNegative);
+  // Up to the diagonal of the largest site the coordinate limits allow (2 x 10 km x sqrt 2).
+  v.number("min_spacing_m", a.min_spacing_m, Limits{0.0, 30000.0});
   v.list("list", a.explicit_list);
   v.vec2("line_from_m", a.line_from_m, kCoordinateM);
   v.vec2("line_to_m", a.line_to_m, kCoordinateM);
@@ -248,6 +249,8 @@ void visit(V& v, RadioSpec& r) {
   // tiny value asked for more cells than memory holds.
   v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, Limits{0.5, 1000.0});
   v.number("fast_fading_sigma_db", r.fast_fading_sigma_db, Limits{0.0, 30.0});
+  v.number("fading_coherence_s", r.fading_coherence_s, Limits{0.01, 3600.0});
+  v.number("bssid_spread_db", r.bssid_spread_db, Limits{0.0, 10.0});
   v.number("people_disturbance_db", r.people_disturbance_db, Limits{0.0, 100.0});
 }
 

@@ -5,7 +5,7 @@
 #include "core/error.hpp"
 #include "radio_model/access_point.hpp"
 #include "radio_model/ap_placement.hpp"
-#include "radio_model/plan_geometry.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "tests/radio/test_plan.hpp"
 
 namespace wifislam {
@@ -75,11 +75,11 @@ TEST(ApPlacement, RoomsPlacementPutsMostApsInRoomsOffTheCorridor) {
   ASSERT_EQ(pos.size(), 6u);
   int in_rooms = 0;
   for (const auto& p : pos) {
-    EXPECT_TRUE(point_in_regions(plan.free_space, p.head<2>()));
+    EXPECT_TRUE(regions_contain(plan.free_space, p.head<2>()));
     EXPECT_DOUBLE_EQ(p.z(), spec.height_m);
-    EXPECT_GE(distance_to_walls_m(plan, p.head<2>()), 0.4 - 1e-9);
+    EXPECT_GE(nearest_wall_distance_m(plan, p.head<2>()), 0.4 - 1e-9);
     bool room = false;
-    for (const Room& r : plan.rooms) room |= point_in_polygon(r.polygon_m, p.head<2>());
+    for (const Room& r : plan.rooms) room |= ring_contains(r.polygon_m, p.head<2>());
     in_rooms += room;
   }
   EXPECT_EQ(in_rooms, 5);  // 6 - 6/4
@@ -97,7 +97,7 @@ TEST(ApPlacement, RandomGridColinearAndExplicit) {
   spec.placement = ApPlacement::kRandom;
   const auto random = place_access_point_positions(spec, plan, 3);
   ASSERT_EQ(random.size(), 5u);
-  for (const auto& p : random) EXPECT_TRUE(point_in_regions(plan.free_space, p.head<2>()));
+  for (const auto& p : random) EXPECT_TRUE(regions_contain(plan.free_space, p.head<2>()));
 
   spec.placement = ApPlacement::kGrid;
   spec.count = 4;

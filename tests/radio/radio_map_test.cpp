@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "radio_model/plan_geometry.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "radio_model/radio_map.hpp"
 #include "tests/radio/test_plan.hpp"
 #include "tests/radio/test_walls.hpp"
@@ -65,7 +65,7 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
     // Only free-space cells are computed: the corridor and the rooms, not the walls.
     const Eigen::Vector2d c = strongest1.cell_center_m(static_cast<int>(i) % strongest1.cols,
                                                        static_cast<int>(i) / strongest1.cols);
-    EXPECT_EQ(std::isfinite(strongest1.rssi_dbm[i]), point_in_regions(f.plan.free_space, c)) << i;
+    EXPECT_EQ(std::isfinite(strongest1.rssi_dbm[i]), regions_contain(f.plan.free_space, c)) << i;
     if (!std::isfinite(strongest1.rssi_dbm[i])) continue;
     EXPECT_EQ(strongest1.rssi_dbm[i], std::max(ap0.rssi_dbm[i], ap1.rssi_dbm[i]));
     (strongest1.best_ap_id[i] == 0 ? from0 : from1)++;
