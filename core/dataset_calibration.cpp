@@ -1,5 +1,7 @@
 #include "core/dataset_calibration.hpp"
 
+#include <cmath>
+
 #include <yaml-cpp/yaml.h>
 
 #include <fmt/format.h>
@@ -73,6 +75,10 @@ struct Ctx {
 
 YAML::Node child(const Ctx& ctx, const YAML::Node& parent, const char* key, const std::string& path,
                  bool required) {
+  if (!parent.IsMap()) {
+    throw ParseError(ctx.where(parent), path.empty() ? std::string(key) : path,
+                     "expected a mapping (key: value lines)");
+  }
   const YAML::Node n = parent[key];
   if (!n && required)
     throw ParseError(ctx.where(parent), path + "." + key, std::string("missing key '") + key + "'");
@@ -97,8 +103,17 @@ DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
   auto cam_number = [&](const char* key) {
     return number(ctx, child(ctx, cam, key, "camera", true), std::string("camera.") + key);
   };
-  c.intrinsics.width_px = static_cast<int>(cam_number("width_px"));
-  c.intrinsics.height_px = static_cast<int>(cam_number("height_px"));
+  // Image sizes are whole pixels; 65535 bounds them far above any depth camera.
+  auto cam_pixels = [&](const char* key) {
+    const double v = cam_number(key);
+    if (!(v >= 1 && v <= 65535 && v == std::floor(v))) {
+      throw ParseError(ctx.where(cam[key]), std::string("camera.") + key,
+                       "expected a whole number of pixels from 1 to 65535");
+    }
+    return static_cast<int>(v);
+  };
+  c.intrinsics.width_px = cam_pixels("width_px");
+  c.intrinsics.height_px = cam_pixels("height_px");
   c.intrinsics.fx_px = cam_number("fx_px");
   c.intrinsics.fy_px = cam_number("fy_px");
   c.intrinsics.cx_px = cam_number("cx_px");
@@ -135,11 +150,15 @@ DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
     c.odometry_rate_hz =
         number(ctx, child(ctx, odo, "rate_hz", "odometry", true), "odometry.rate_hz");
   if (const YAML::Node model = child(ctx, root, "sensor_model", "", false)) {
+    if (!model.IsMap()) throw ParseError(ctx.where(model), "sensor_model", "expected a mapping");
     for (const auto& group : model) {
       CalibrationGroup g;
       g.name = group.first.Scalar();
+      if (!group.second.IsMap()) {
+        throw ParseError(ctx.where(group.second), "sensor_model." + g.name, "expected a mapping");
+      }
       for (const auto& kv : group.second) {
-        if (!kv.second.IsScalar())
+        if (!kv.first.IsScalar() || !kv.second.IsScalar())
           throw ParseError(ctx.where(kv.second), "sensor_model." + g.name, "expected scalars");
         g.values.emplace_back(kv.first.Scalar(), kv.second.Scalar());
       }

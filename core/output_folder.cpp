@@ -1,8 +1,12 @@
 #include "core/output_folder.hpp"
 
+#include <pwd.h>
+#include <unistd.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -79,6 +83,27 @@ bool looks_like_tool_output(const fs::path& folder) {
          (is_regular(folder / "comparison.json") && is_regular(folder / "comparison.md"));
 }
 
+namespace {
+
+/// The user's home folder as $HOME says and as the password database says: a shell with HOME
+/// unset or pointed elsewhere must not make the real home replaceable.
+std::vector<fs::path> home_folders() {
+  std::vector<fs::path> homes;
+  if (const char* home_env = std::getenv("HOME"); home_env && *home_env) {
+    homes.push_back(resolve_path(home_env));
+  }
+  std::vector<char> buffer(16384);
+  passwd entry{};
+  passwd* found = nullptr;
+  if (::getpwuid_r(::getuid(), &entry, buffer.data(), buffer.size(), &found) == 0 && found &&
+      found->pw_dir && *found->pw_dir) {
+    homes.push_back(resolve_path(found->pw_dir));
+  }
+  return homes;
+}
+
+}  // namespace
+
 void check_folder_replaceable(const fs::path& resolved) {
   if (resolved == resolved.root_path()) refuse(resolved, "refusing to replace the root folder");
   std::error_code ec;
@@ -88,8 +113,7 @@ void check_folder_replaceable(const fs::path& resolved) {
                                      : "holds the current directory (" + cwd.string() +
                                            "); refusing to replace it");
   }
-  if (const char* home_env = std::getenv("HOME"); home_env && *home_env) {
-    const fs::path home = resolve_path(home_env);
+  for (const fs::path& home : home_folders()) {
     if (is_within(home, resolved)) {
       refuse(resolved, home == resolved ? "is the home folder; refusing to replace it"
                                         : "holds the home folder (" + home.string() +

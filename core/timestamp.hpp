@@ -21,6 +21,10 @@ struct Timestamp {
   /// Rounds to the nearest representable value (half away from zero).
   std::string to_string(int decimals = 6) const;
 
+  /// As TUM files write times: 6 decimals (microseconds, as the TUM tools do), or 9 when the time
+  /// has sub-microsecond digits, so that reading the text back gives exactly this time.
+  std::string to_tum_string() const { return to_string(ns % 1000 == 0 ? 6 : 9); }
+
   /// Parses "1305031102.175304" style text (optional sign, up to 9 decimals) exactly.
   /// Returns nullopt for anything else (exponents, more than 9 decimals, garbage).
   static std::optional<Timestamp> parse(std::string_view text);

@@ -101,11 +101,11 @@ std::vector<FramePair> associate_tum(const std::vector<TumFileEntry>& rgb,
 }
 
 std::string format_tum_file_line(Timestamp time, const std::string& path) {
-  return time.to_string(6) + " " + path + "\n";
+  return time.to_tum_string() + " " + path + "\n";
 }
 
 std::string format_association_line(const FramePair& p) {
-  return p.rgb_time.to_string(6) + " " + p.rgb_path + " " + p.depth_time.to_string(6) + " " +
+  return p.rgb_time.to_tum_string() + " " + p.rgb_path + " " + p.depth_time.to_tum_string() + " " +
          p.depth_path + "\n";
 }
 

@@ -18,7 +18,7 @@ StampedPose StampedPose::from_pose(Timestamp time, const Pose& pose) {
 }
 
 std::string format_tum_line(const StampedPose& p) {
-  std::string line = p.time.to_string(6);
+  std::string line = p.time.to_tum_string();
   for (double v : {p.translation_m.x(), p.translation_m.y(), p.translation_m.z(), p.rotation.x(),
                    p.rotation.y(), p.rotation.z(), p.rotation.w()}) {
     line += ' ';

@@ -1,6 +1,7 @@
 #pragma once
 // TUM RGB-D trajectory files: one pose per line, "timestamp tx ty tz qx qy qz qw", '#' comments.
-// Timestamps are written with 6 decimals (microseconds, as the TUM tools do); translations and
+// Timestamps are written with 6 decimals (microseconds, as the TUM tools do), or 9 for a time with
+// sub-microsecond digits (Timestamp::to_tum_string); translations and
 // quaternion components are written in their shortest exact decimal form, so a trajectory
 // written and read back is bit-for-bit the same. Reading rejects malformed lines with file:line.
 

@@ -6,7 +6,6 @@
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -60,6 +59,12 @@ void check_unique_keys(const YAML::Node& root, const std::string& source) {
 }  // namespace
 
 YAML::Node parse_yaml_document(const std::string& text, const std::string& source_name) {
+  if (text.size() > kMaxYamlDocumentBytes) {
+    throw ParseError(source_name, "",
+                     fmt::format("{} bytes; a scene or calibration file is at most {} MiB (the "
+                                 "YAML reader needs about 100 times a file's size in memory)",
+                                 text.size(), kMaxYamlDocumentBytes >> 20));
+  }
   YAML::Node root;
   try {
     root = YAML::Load(text);
@@ -84,10 +89,22 @@ YAML::Node load_yaml_file(const std::string& path) {
   if (!in) {
     throw IoError(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
   }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  // Read at most one byte past the cap (a FIFO or /dev/zero has no size to check first).
+  std::string text(kMaxYamlDocumentBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
   if (in.bad()) throw IoError(path + ": read error");
-  return parse_yaml_document(buffer.str(), path);
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (text.size() > kMaxYamlDocumentBytes) {
+    std::error_code size_error;
+    const auto bytes = std::filesystem::file_size(path, size_error);
+    throw ParseError(path, "",
+                     fmt::format("{}; a scene or calibration file is at most {} MiB (the YAML "
+                                 "reader needs about 100 times a file's size in memory)",
+                                 size_error ? std::string("larger than that")
+                                            : fmt::format("{} bytes", bytes),
+                                 kMaxYamlDocumentBytes >> 20));
+  }
+  return parse_yaml_document(text, path);
 }
 
 }  // namespace wifislam

@@ -60,6 +60,20 @@ TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
                                  "area.yaml:", "open_areas[0].polygon_m[2][1]");
 }
 
+// A 50 MB scene file once took 4.8 GB of memory in the YAML reader: files over 4 MiB are refused
+// before parsing, in a fraction of a second, naming the file and the limit. A 5 MB comment keeps
+// the text valid YAML, so only the size is wrong with it.
+TEST_F(BadInput, SceneFilesOverTheSizeLimitAreRefusedBeforeParsing) {
+  const fs::path big = scratch_ / "big.yaml";
+  test::write_file(big, std::string(test::kTinyLoopYaml) + "# " + std::string(5 << 20, 'x') + "\n");
+  const auto start = std::chrono::steady_clock::now();
+  const auto r = wifislam("world " + big.string());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  test::expect_located_bad_input(r, "big.yaml", "at most 4 MiB");
+  EXPECT_LT(seconds, 5.0);
+}
+
 // Within the limits a building can still be 20 km long: the route's wall-clearance check and the
 // AP candidate spots once scanned every wall face per point (over half a minute of CPU for this
 // L; minutes for larger plans). Measured in the child's CPU seconds, so a busy machine does not

@@ -2,6 +2,7 @@
 // may be replaced, what never is, and that paths are compared after resolving them.
 #include <gtest/gtest.h>
 
+#include <pwd.h>
 #include <stdlib.h>
 #include <unistd.h>
 
@@ -159,6 +160,15 @@ TEST_F(OutputFolderRule, CurrentDirectoryItsParentsTheHomeFolderAndRootAreNeverR
   }
   ASSERT_TRUE(message);
   EXPECT_NE(message->find("home folder"), std::string::npos) << *message;
+
+  // With HOME unset (or pointing elsewhere), the password database's home is still protected.
+  if (const passwd* user = ::getpwuid(::getuid()); user && user->pw_dir && *user->pw_dir) {
+    ::unsetenv("HOME");
+    const auto passwd_message = refusal({user->pw_dir, true, {}, {}});
+    if (home_before) ::setenv("HOME", saved_home.c_str(), 1);
+    ASSERT_TRUE(passwd_message);
+    EXPECT_NE(passwd_message->find("home folder"), std::string::npos) << *passwd_message;
+  }
 
   const auto root_message = refusal({"/", true, {}, {}});
   ASSERT_TRUE(root_message);

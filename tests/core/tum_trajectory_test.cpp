@@ -59,6 +59,25 @@ TEST_F(TumTrajectoryTest, WriteThenReadIsBitExact) {
   EXPECT_FALSE(fs::exists(path + ".partial"));
 }
 
+// Found by fuzzing: a time with sub-microsecond digits (read exactly, to the nanosecond) was
+// written with 6 decimals and read back as another time. Such times get 9 decimals; times on the
+// microsecond grid keep TUM's 6.
+TEST_F(TumTrajectoryTest, SubMicrosecondTimesAreWrittenExactly) {
+  const std::string path = (dir_ / "ns.txt").string();
+  std::ofstream(path) << "1.0000101 0 0 0 0 0 0 1\n2.5 0 0 0 0 0 0 1\n";
+  const Trajectory read = read_tum_trajectory(path);
+  ASSERT_EQ(read.size(), 2u);
+  EXPECT_EQ(read[0].time.ns, 1'000'010'100);
+  EXPECT_EQ(format_tum_line(read[0]).substr(0, 12), "1.000010100 ");
+  EXPECT_EQ(format_tum_line(read[1]).substr(0, 9), "2.500000 ");
+  const std::string again = (dir_ / "again.txt").string();
+  write_tum_trajectory(again, read);
+  const Trajectory back = read_tum_trajectory(again);
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(back[0].time, read[0].time);
+  EXPECT_EQ(back[1].time, read[1].time);
+}
+
 TEST_F(TumTrajectoryTest, ReadsTumBenchmarkStyleFilesWithComments) {
   const auto path = write("gt.txt",
                           "# ground truth trajectory\n# timestamp tx ty tz qx qy qz qw\n"

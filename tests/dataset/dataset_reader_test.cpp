@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <regex>
+
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/atomic_file.hpp"
@@ -271,6 +273,23 @@ TEST(DatasetReader, CorruptFilesAreErrorsWithFileAndLine) {
   e = open_error(dir, {.verify_checksums = false});
   EXPECT_NE(e.find("odometry.txt:9"), std::string::npos) << e;
   test::write_text(dir / "odometry.txt", odo);
+  // Found by fuzzing: calibration.yaml with a scalar where a mapping belongs escaped as a
+  // yaml-cpp exception (an internal error); so did a sensor_model group that is not a mapping.
+  const std::string calibration = test::read_text(dir / "calibration.yaml");
+  for (const std::string& bad : {std::string("camera: 5\n"),
+                                 calibration.substr(0, calibration.find("sensor_model:")) +
+                                     "sensor_model: [1, 2]\n",
+                                 calibration.substr(0, calibration.find("depth:")) + "depth: 3\n"}) {
+    test::write_text(dir / "calibration.yaml", bad);
+    e = open_error(dir, {.verify_checksums = false});
+    EXPECT_NE(e.find("calibration.yaml"), std::string::npos) << e;
+    EXPECT_NE(e.find("expected a mapping"), std::string::npos) << e;
+  }
+  test::write_text(dir / "calibration.yaml",
+                   std::regex_replace(calibration, std::regex("width_px: 32"), "width_px: 1e300"));
+  e = open_error(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("camera.width_px"), std::string::npos) << e;
+  test::write_text(dir / "calibration.yaml", calibration);
   // A PNG that is not an image.
   test::write_text(dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(4)), "garbage");
   e = open_error(dir, {.verify_checksums = false});

@@ -299,5 +299,22 @@ TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
   EXPECT_THROW(validate_scene(scene), InvalidInputError);
 }
 
+// An AP spacing of 1e308 m passed the loader and failed later as "only 1 of 8 access points fit",
+// naming no key: spacing is bounded by the largest site the coordinate limits allow.
+TEST(SceneErrors, AccessPointSpacingBeyondAnySiteIsALocatedError) {
+  const auto e = expect_parse_error(std::string(kValidBody) +
+                                    "access_points: {placement: random, count: 2, "
+                                    "min_spacing_m: 1e308}\n");
+  EXPECT_EQ(e.key_path(), "access_points.min_spacing_m");
+  EXPECT_NE(std::string(e.what()).find("30000"), std::string::npos) << e.what();
+}
+
+// A scene text over the size limit is refused before the YAML reader sees it.
+TEST(SceneErrors, TextOverTheSizeLimitIsRefusedWithTheLimit) {
+  const std::string big = std::string(kValidBody) + "# " + std::string(5 << 20, 'x') + "\n";
+  const auto e = expect_parse_error(big);
+  EXPECT_NE(std::string(e.what()).find("at most 4 MiB"), std::string::npos) << e.what();
+}
+
 }  // namespace
 }  // namespace wifislam
