@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
+#include <Eigen/Geometry>
 #include <fmt/format.h>
 
 #include "core/error.hpp"
@@ -76,6 +78,12 @@ EmbreeWallScene::EmbreeWallScene(const Mesh& mesh) : handles_(std::make_unique<H
     }
     wall_ids_.push_back(tri.wall_id);
     materials_.push_back(tri.material);
+    // The side the material lies on: the geometric normal, turned to agree with the mesh's
+    // shading normal (which points to free space); the winding alone is not a promise.
+    const Eigen::Vector3f& p0 = mesh.positions_m[tri.v[0]];
+    Eigen::Vector3f n = (mesh.positions_m[tri.v[1]] - p0).cross(mesh.positions_m[tri.v[2]] - p0);
+    if (tri.v[0] < mesh.normals.size() && n.dot(mesh.normals[tri.v[0]]) < 0.0f) n = -n;
+    normals_.push_back(n);
   }
 
   Handles& h = *handles_;
@@ -86,6 +94,9 @@ EmbreeWallScene::EmbreeWallScene(const Mesh& mesh) : handles_(std::make_unique<H
     RTCScene scene = rtcNewScene(h.device);
     throw_on_device_error(h.device, "rtcNewScene");
     rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    // Robust traversal: watertight triangle tests, so a segment through an edge or a vertex that
+    // faces share meets at least one of them (the fast mode can miss both).
+    rtcSetSceneFlags(scene, RTC_SCENE_FLAG_ROBUST);
     if (!wall_ids_.empty()) {
       RTCGeometry geom = rtcNewGeometry(h.device, RTC_GEOMETRY_TYPE_TRIANGLE);
       auto* vertices = static_cast<float*>(
@@ -148,22 +159,100 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
   rtcIntersect1(handles_->filtered, &collect.context, &rayhit);
 
-  // Merge hits per wall_id, keeping the nearest (traversal order is not distance order).
+  // Faces in order along the segment: +1 where the segment enters material (runs against the
+  // face's normal), -1 where it leaves; a hit in the face's plane (0) says nothing.
+  struct Face {
+    double at_m;
+    int side;
+    unsigned prim;
+  };
+  thread_local std::vector<Face> faces;
+  faces.clear();
+  const Eigen::Vector3f dir_f = dir.cast<float>();
   for (int i = 0; i < collect.count; ++i) {
-    const int wall = wall_ids_[hits[i].prim];
-    const double d = static_cast<double>(hits[i].t) * length;
-    auto it = std::find_if(out.begin(), out.end(),
-                           [wall](const WallCrossing& c) { return c.wall_id == wall; });
-    if (it == out.end()) {
-      out.push_back({wall, materials_[hits[i].prim], d});
-    } else if (d < it->distance_m) {
-      it->distance_m = d;
-      it->material = materials_[hits[i].prim];
-    }
+    const float along = normals_[hits[i].prim].dot(dir_f);
+    if (along == 0.0f) continue;
+    faces.push_back({static_cast<double>(hits[i].t) * length, along < 0.0f ? +1 : -1, hits[i].prim});
   }
-  std::sort(out.begin(), out.end(), [](const WallCrossing& a, const WallCrossing& b) {
-    return a.distance_m != b.distance_m ? a.distance_m < b.distance_m : a.wall_id < b.wall_id;
+  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
+    return a.at_m != b.at_m ? a.at_m < b.at_m : a.prim < b.prim;
   });
+
+  // Pieces between consecutive faces (and the segment's ends). A piece after an entered face and
+  // before a left one is inside; after a left face (or the start) and before an entered one (or
+  // the end) it is outside; anything else (two entries in a row where solids touch, a face Embree
+  // did not report where the segment passes exactly through an edge) is decided by probing the
+  // piece's midpoint (inside_material). Pieces shorter than kTouchGapM are skipped: they are the
+  // gap between coincident faces or a touch of an edge, and neither start nor end a crossing.
+  const double start_m = eps * length, end_m = (1.0 - eps) * length;
+  const Eigen::Vector3d unit = dir / length;
+  std::optional<WallCrossing> current;
+  auto close = [&] {
+    if (current && current->length_m >= kMinCrossingM) out.push_back(*current);
+    current.reset();
+  };
+  const std::size_t n = faces.size();
+  for (std::size_t k = 0; k <= n; ++k) {
+    const Face* before = k > 0 ? &faces[k - 1] : nullptr;
+    const Face* after = k < n ? &faces[k] : nullptr;
+    const double from_m = before ? before->at_m : start_m;
+    const double to_m = after ? after->at_m : end_m;
+    if (to_m - from_m < kTouchGapM) continue;
+    const bool entered = before && before->side > 0, left = after && after->side < 0;
+    const bool inside = entered == left
+                            ? entered
+                            : inside_material(from + (0.5 * (from_m + to_m)) * unit, unit);
+    if (!inside) {
+      close();
+      continue;
+    }
+    if (!current) {
+      // Named after the face where the material starts (or, when the segment starts inside, the
+      // face where it ends).
+      const unsigned prim = before ? before->prim : after ? after->prim : 0;
+      current = WallCrossing{wall_ids_[prim], materials_[prim], materials_[prim], from_m, 0.0};
+    }
+    if (after) current->exit_material = materials_[after->prim];
+    current->length_m = to_m - current->distance_m;
+  }
+  close();
+}
+
+bool EmbreeWallScene::inside_material(const Eigen::Vector3d& point,
+                                      const Eigen::Vector3d& along) const {
+  // Four horizontal probes (along the segment, back, and both sides): each votes inside when the
+  // first face it meets is one it leaves. Walls are vertical, so horizontal probes always meet
+  // the faces that bound the material around the point; a majority outvotes one probe that
+  // meets a face coincident with another solid's.
+  Eigen::Vector3d forward(along.x(), along.y(), 0.0);
+  if (forward.norm() < 1e-9) forward = Eigen::Vector3d::UnitX();
+  forward.normalize();
+  const Eigen::Vector3d side(-forward.y(), forward.x(), 0.0);
+  int inside_votes = 0;
+  for (const Eigen::Vector3d& probe : {forward, Eigen::Vector3d(-forward), side,
+                                       Eigen::Vector3d(-side)}) {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    rayhit.ray.org_x = static_cast<float>(point.x());
+    rayhit.ray.org_y = static_cast<float>(point.y());
+    rayhit.ray.org_z = static_cast<float>(point.z());
+    rayhit.ray.dir_x = static_cast<float>(probe.x());
+    rayhit.ray.dir_y = static_cast<float>(probe.y());
+    rayhit.ray.dir_z = static_cast<float>(probe.z());
+    rayhit.ray.tnear = 0.0f;
+    rayhit.ray.tfar = std::numeric_limits<float>::infinity();
+    rayhit.ray.time = 0.0f;
+    rayhit.ray.mask = 0xFFFFFFFFu;
+    rayhit.ray.id = 0;
+    rayhit.ray.flags = 0;
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(handles_->plain, &context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
+    inside_votes += normals_[rayhit.hit.primID].dot(probe.cast<float>()) > 0.0f;
+  }
+  return inside_votes > 2;
 }
 
 std::vector<WallCrossing> EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from,

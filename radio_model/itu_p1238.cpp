@@ -43,6 +43,19 @@ double itu_p1238_floor_loss_db(RadioEnvironment environment, int floors) {
   return 0.0;
 }
 
+ItuSiteGeneralFit itu_p1238_office_fit(bool line_of_sight) {
+  // ITU-R P.1238-11, Table 2 (office rows).
+  return line_of_sight ? ItuSiteGeneralFit{1.46, 34.62, 2.03, 3.76, 2.0}
+                       : ItuSiteGeneralFit{2.46, 29.53, 2.38, 5.04, 4.0};
+}
+
+double itu_p1238_fit_loss_db(const ItuSiteGeneralFit& fit, double frequency_mhz,
+                             double distance_m) {
+  const double d = std::max(distance_m, fit.min_distance_m);
+  return 10.0 * fit.alpha * std::log10(d) + fit.beta_db +
+         10.0 * fit.gamma * std::log10(frequency_mhz * 1e-3);
+}
+
 double itu_p1238_path_loss_db(double frequency_mhz, double distance_m, double distance_coefficient,
                               double floor_loss_db) {
   const double d = std::max(distance_m, 1.0);

@@ -29,6 +29,23 @@ double itu_p1238_floor_loss_db(RadioEnvironment environment, int floors);
 double itu_p1238_path_loss_db(double frequency_mhz, double distance_m, double distance_coefficient,
                               double floor_loss_db);
 
+/// The site-general fit of ITU-R P.1238-11 (2021), section 3.1, equation (1) and Table 2:
+///   L(d, f) = 10 alpha log10(d_m) + beta + 10 gamma log10(f_GHz)   [dB],  sigma: its spread.
+/// Office rows (the ones our environments have): line of sight 1.46 / 34.62 / 2.03, sigma 3.76 dB,
+/// fitted over 2-27 m; non line of sight 2.46 / 29.53 / 2.38, sigma 5.04 dB, over 4-30 m (both
+/// 0.3-83.5 GHz). The table also has corridor and factory rows, which are path types rather than
+/// building types and are not used.
+struct ItuSiteGeneralFit {
+  double alpha = 0.0, beta_db = 0.0, gamma = 0.0, sigma_db = 0.0;
+  double min_distance_m = 1.0;  // shortest distance of the fit's data
+};
+ItuSiteGeneralFit itu_p1238_office_fit(bool line_of_sight);
+
+/// L(d, f) of a fit row. Distances below the row's shortest are taken as the shortest: the fit
+/// is not stated there, and with the clamp the NLoS loss exceeds the LoS loss at every distance
+/// in the Wi-Fi bands (2.4-5.9 GHz), so a wall can only lower RSSI.
+double itu_p1238_fit_loss_db(const ItuSiteGeneralFit& fit, double frequency_mhz, double distance_m);
+
 /// The distance coefficient used when the scene does not set `radio.distance_coefficient`.
 /// P.1238's office N = 30 (31 at 5.2 GHz) lumps the walls of a typical office into the distance
 /// term; we ray-cast every wall and add its loss explicitly, so keeping N = 30 would count the

@@ -1,11 +1,14 @@
 #include "radio_model/propagation_model.hpp"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace wifislam {
 
 PropagationOptions PropagationOptions::from_scene(const RadioSpec& radio) {
   PropagationOptions o;
+  o.model = radio.model;
   o.environment = radio.environment;
   o.distance_coefficient = radio.distance_coefficient;
   o.shadowing_sigma_db = radio.shadowing_sigma_db;
@@ -17,9 +20,29 @@ PropagationOptions PropagationOptions::from_scene(const RadioSpec& radio) {
   return o;
 }
 
-int RadioLink::wall_count() const {
-  int n = 0;
-  for (int c : walls_per_material) n += c;
+double PropagationOptions::shadowing_sigma_db_for(RadioBand band, bool line_of_sight) const {
+  if (shadowing_sigma_db) return *shadowing_sigma_db;
+  switch (model) {
+    case PathLossModel::kItuWalls:
+      return 4.0;
+    case PathLossModel::kItuSiteGeneral:
+      return itu_p1238_coefficients(environment, band).shadow_sigma_db;
+    case PathLossModel::kItuSiteGeneralFit:
+      return itu_p1238_office_fit(line_of_sight).sigma_db;
+  }
+  return 0.0;
+}
+
+double PropagationOptions::max_shadowing_sigma_db() const {
+  double sigma = 0.0;
+  for (RadioBand band : {RadioBand::k2_4GHz, RadioBand::k5GHz})
+    for (bool los : {true, false}) sigma = std::max(sigma, shadowing_sigma_db_for(band, los));
+  return sigma;
+}
+
+double RadioLink::wall_count() const {
+  double n = 0;
+  for (double c : walls_per_material) n += c;
   return n;
 }
 
@@ -37,7 +60,9 @@ PropagationModel::PropagationModel(const Mesh& mesh, const Eigen::Vector2d& boun
       walls_(std::make_unique<EmbreeWallScene>(mesh)),
       floor_loss_db_(itu_p1238_floor_loss_db(options_.environment, options_.floors_between)) {
   // One grid and covariance spectrum for the site, one field per AP from its own stream.
-  const ShadowingGrid grid(bounds_min_m, bounds_max_m, options_.shadowing_sigma_db,
+  // Unit variance: each link scales it by its own sigma (shadowing_db).
+  const ShadowingGrid grid(bounds_min_m, bounds_max_m,
+                           options_.max_shadowing_sigma_db() > 0.0 ? 1.0 : 0.0,
                            options_.shadowing_decorrelation_m);
   shadowing_.reserve(aps_.size());
   for (const AccessPoint& ap : aps_)
@@ -48,12 +73,19 @@ RadioLink PropagationModel::link(std::size_t ap_index, const Eigen::Vector3d& re
   const AccessPoint& ap = aps_[ap_index];
   RadioLink l;
   l.distance_m = (receiver_m - ap.position_m).norm();
-  if (options_.walls) {
+  if (options_.walls && options_.model != PathLossModel::kItuSiteGeneral) {
     thread_local std::vector<WallCrossing> crossings;
     walls_->walls_crossed(ap.position_m, receiver_m, crossings);
-    for (const WallCrossing& c : crossings) ++l.walls_per_material[material_index(c.material)];
+    for (const WallCrossing& c : crossings) {
+      if (c.material == c.exit_material) {
+        l.walls_per_material[material_index(c.material)] += 1.0;
+      } else {
+        l.walls_per_material[material_index(c.material)] += 0.5;
+        l.walls_per_material[material_index(c.exit_material)] += 0.5;
+      }
+    }
   }
-  l.shadowing_db = shadowing_[ap_index].at_db(receiver_m.head<2>());
+  l.shadowing_normal = shadowing_[ap_index].at_db(receiver_m.head<2>());
   return l;
 }
 
@@ -61,11 +93,17 @@ RadioLink PropagationModel::link_without_walls(std::size_t ap_index,
                                                const Eigen::Vector3d& receiver_m) const {
   RadioLink l;
   l.distance_m = (receiver_m - aps_[ap_index].position_m).norm();
-  l.shadowing_db = shadowing_[ap_index].at_db(receiver_m.head<2>());
+  l.shadowing_normal = shadowing_[ap_index].at_db(receiver_m.head<2>());
   return l;
 }
 
 bool PropagationModel::walls_only_attenuate() const {
+  if (options_.model == PathLossModel::kItuSiteGeneral) return true;  // walls are not counted
+  if (options_.model == PathLossModel::kItuSiteGeneralFit) {
+    // The NLoS row loses more than the LoS row (itu_p1238_fit_loss_db), but its larger sigma can
+    // make a link's shadowing a gain bigger than that margin: bounds hold only without it.
+    return options_.shadowing_sigma_db.has_value();
+  }
   // Loss laws are linear in frequency: checking the band edges covers the bands.
   for (const WallLossLaw& law : options_.wall_losses.laws)
     if (law.at(2400.0) < 0.0 || law.at(5900.0) < 0.0) return false;
@@ -73,6 +111,20 @@ bool PropagationModel::walls_only_attenuate() const {
 }
 
 double PropagationModel::path_loss_db(const RadioLink& link, double frequency_mhz) const {
+  switch (options_.model) {
+    case PathLossModel::kItuWalls:
+      break;
+    case PathLossModel::kItuSiteGeneral: {
+      const RadioBand band = frequency_mhz < 4000.0 ? RadioBand::k2_4GHz : RadioBand::k5GHz;
+      return itu_p1238_path_loss_db(frequency_mhz, link.distance_m,
+                                    itu_p1238_coefficients(options_.environment, band)
+                                        .distance_coefficient,
+                                    floor_loss_db_);
+    }
+    case PathLossModel::kItuSiteGeneralFit:
+      return itu_p1238_fit_loss_db(itu_p1238_office_fit(link.wall_count() == 0.0), frequency_mhz,
+                                   link.distance_m);
+  }
   double loss = itu_p1238_path_loss_db(frequency_mhz, link.distance_m,
                                        options_.distance_coefficient_or_default(), floor_loss_db_);
   for (int m = 0; m < kWallMaterialCount; ++m) {
@@ -85,7 +137,11 @@ double PropagationModel::path_loss_db(const RadioLink& link, double frequency_mh
 double PropagationModel::mean_rssi_dbm(std::size_t ap_index, const Bssid& bssid,
                                        const RadioLink& link) const {
   return aps_[ap_index].tx_power_dbm - path_loss_db(link, bssid.frequency_mhz()) -
-         link.shadowing_db;
+         shadowing_db(link, bssid.band);
+}
+
+double PropagationModel::shadowing_db(const RadioLink& link, RadioBand band) const {
+  return options_.shadowing_sigma_db_for(band, link.wall_count() == 0.0) * link.shadowing_normal;
 }
 
 std::optional<std::size_t> PropagationModel::index_of(int ap_id) const {

@@ -56,6 +56,18 @@ const char* to_string(RadioEnvironment environment) {
   return "unknown";
 }
 
+const char* to_string(PathLossModel model) {
+  switch (model) {
+    case PathLossModel::kItuWalls:
+      return "itu_walls";
+    case PathLossModel::kItuSiteGeneral:
+      return "itu_site_general";
+    case PathLossModel::kItuSiteGeneralFit:
+      return "itu_site_general_fit";
+  }
+  return "unknown";
+}
+
 const SceneNode* Scene::find_node(const std::string& id) const {
   for (const auto& n : nodes)
     if (n.id == id) return &n;

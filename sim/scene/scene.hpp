@@ -194,10 +194,15 @@ struct Sensors {
 enum class RadioEnvironment { kResidential, kOffice, kCommercial };
 const char* to_string(RadioEnvironment environment);
 
+/// The mean path loss model (radio_model/propagation_model.hpp says what each computes).
+enum class PathLossModel { kItuWalls, kItuSiteGeneral, kItuSiteGeneralFit };
+const char* to_string(PathLossModel model);
+
 struct RadioSpec {
+  PathLossModel model = PathLossModel::kItuWalls;
   RadioEnvironment environment = RadioEnvironment::kOffice;
   std::optional<double> distance_coefficient;  // N; default chosen by the radio model
-  double shadowing_sigma_db = 4.0;
+  std::optional<double> shadowing_sigma_db;    // default chosen by the radio model
   double shadowing_decorrelation_m = 3.0;
   double fast_fading_sigma_db = 2.0;   // per radio, shared by its BSSIDs (fading_process.hpp)
   double fading_coherence_s = 3.0;     // at a still receiver

@@ -531,6 +531,20 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
     invalid(locate, "access_points.line_to_m",
             "placement 'colinear' needs line_from_m != line_to_m");
   }
+  const RadioSpec& radio = scene.radio;
+  if (radio.model == PathLossModel::kItuSiteGeneralFit &&
+      radio.environment != RadioEnvironment::kOffice) {
+    invalid(locate, "radio.environment",
+            fmt::format("model 'itu_site_general_fit' has rows for 'office' only (ITU-R P.1238-11 "
+                        "Table 2 fits offices, corridors and factories); this scene says '{}'",
+                        to_string(radio.environment)));
+  }
+  if (radio.model != PathLossModel::kItuWalls && radio.distance_coefficient) {
+    invalid(locate, "radio.distance_coefficient",
+            fmt::format("model '{}' takes N from ITU-R P.1238's tables; distance_coefficient is "
+                        "for model 'itu_walls'",
+                        to_string(radio.model)));
+  }
 }
 
 Scene load_scene_node(const YAML::Node& root, const std::string& source_name) {

@@ -239,12 +239,16 @@ void visit(V& v, Sensors& s) {
 
 template <class V>
 void visit(V& v, RadioSpec& r) {
+  v.choice("model", r.model,
+           Names<PathLossModel>{{PathLossModel::kItuWalls, "itu_walls"},
+                                {PathLossModel::kItuSiteGeneral, "itu_site_general"},
+                                {PathLossModel::kItuSiteGeneralFit, "itu_site_general_fit"}});
   v.choice("environment", r.environment,
            Names<RadioEnvironment>{{RadioEnvironment::kResidential, "residential"},
                                    {RadioEnvironment::kOffice, "office"},
                                    {RadioEnvironment::kCommercial, "commercial"}});
   v.optional_number("distance_coefficient", r.distance_coefficient, Limits{10.0, 60.0});
-  v.number("shadowing_sigma_db", r.shadowing_sigma_db, Limits{0.0, 30.0});
+  v.optional_number("shadowing_sigma_db", r.shadowing_sigma_db, Limits{0.0, 30.0});
   // Gudmundson distances are metres indoors; the field's grid cell is a quarter of this, so a
   // tiny value asked for more cells than memory holds.
   v.number("shadowing_decorrelation_m", r.shadowing_decorrelation_m, Limits{0.5, 1000.0});

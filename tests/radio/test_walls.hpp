@@ -34,17 +34,18 @@ inline void add_quad(Mesh& mesh, const Eigen::Vector3f& a, const Eigen::Vector3f
   }
 }
 
-// An axis-aligned box [lo, hi] with all six faces (outward normals) carrying `wall_id`.
+// An axis-aligned box [lo, hi] with all six faces carrying `wall_id`, normals pointing out of the
+// box (toward free space, as the world's mesh has them).
 inline void add_box(Mesh& mesh, const Eigen::Vector3f& lo, const Eigen::Vector3f& hi,
                     WallMaterial material, int wall_id) {
   const float x0 = lo.x(), y0 = lo.y(), z0 = lo.z(), x1 = hi.x(), y1 = hi.y(), z1 = hi.z();
   using V = Eigen::Vector3f;
-  add_quad(mesh, V(x0, y0, z0), V(x0, y1, z0), V(x0, y1, z1), V(x0, y0, z1), material, wall_id);
-  add_quad(mesh, V(x1, y0, z0), V(x1, y0, z1), V(x1, y1, z1), V(x1, y1, z0), material, wall_id);
-  add_quad(mesh, V(x0, y0, z0), V(x0, y0, z1), V(x1, y0, z1), V(x1, y0, z0), material, wall_id);
-  add_quad(mesh, V(x0, y1, z0), V(x1, y1, z0), V(x1, y1, z1), V(x0, y1, z1), material, wall_id);
-  add_quad(mesh, V(x0, y0, z0), V(x1, y0, z0), V(x1, y1, z0), V(x0, y1, z0), material, wall_id);
-  add_quad(mesh, V(x0, y0, z1), V(x0, y1, z1), V(x1, y1, z1), V(x1, y0, z1), material, wall_id);
+  add_quad(mesh, V(x0, y0, z0), V(x0, y0, z1), V(x0, y1, z1), V(x0, y1, z0), material, wall_id);
+  add_quad(mesh, V(x1, y0, z0), V(x1, y1, z0), V(x1, y1, z1), V(x1, y0, z1), material, wall_id);
+  add_quad(mesh, V(x0, y0, z0), V(x1, y0, z0), V(x1, y0, z1), V(x0, y0, z1), material, wall_id);
+  add_quad(mesh, V(x0, y1, z0), V(x0, y1, z1), V(x1, y1, z1), V(x1, y1, z0), material, wall_id);
+  add_quad(mesh, V(x0, y0, z0), V(x0, y1, z0), V(x1, y1, z0), V(x1, y0, z0), material, wall_id);
+  add_quad(mesh, V(x0, y0, z1), V(x1, y0, z1), V(x1, y1, z1), V(x0, y1, z1), material, wall_id);
 }
 
 // A wall across the x axis at x = x0 (thickness t, y in [-half_len, half_len], height h),
@@ -68,10 +69,10 @@ inline void add_wall_x(Mesh& mesh, float x0, float t, float half_len, float h,
 inline void add_two_face_wall_x(Mesh& mesh, float x0, float t, float half_len, float h,
                                 WallMaterial material, int wall_id) {
   using V = Eigen::Vector3f;
-  add_quad(mesh, V(x0, -half_len, 0), V(x0, half_len, 0), V(x0, half_len, h), V(x0, -half_len, h),
-           material, wall_id);
-  add_quad(mesh, V(x0 + t, -half_len, 0), V(x0 + t, -half_len, h), V(x0 + t, half_len, h),
-           V(x0 + t, half_len, 0), material, wall_id);
+  add_quad(mesh, V(x0, -half_len, 0), V(x0, -half_len, h), V(x0, half_len, h), V(x0, half_len, 0),
+           material, wall_id);  // normal -x
+  add_quad(mesh, V(x0 + t, -half_len, 0), V(x0 + t, half_len, 0), V(x0 + t, half_len, h),
+           V(x0 + t, -half_len, h), material, wall_id);  // normal +x
 }
 
 }  // namespace wifislam::test

@@ -46,8 +46,8 @@ TEST(WifiScanner, SameSeedGivesIdenticalScansAndDifferentSeedDifferentShadowing)
   for (double x = 0; x < 40; x += 1.0) {
     for (std::size_t ap = 0; ap < 4; ++ap) {
       const Eigen::Vector3d p(x, -2.0, 1.0);
-      const double ra = a.link(ap, p).shadowing_db, rc = c.link(ap, p).shadowing_db;
-      EXPECT_EQ(ra, b.link(ap, p).shadowing_db);
+      const double ra = a.link(ap, p).shadowing_normal, rc = c.link(ap, p).shadowing_normal;
+      EXPECT_EQ(ra, b.link(ap, p).shadowing_normal);
       differ += std::abs(ra - rc) > 0.1;
       ++total;
     }

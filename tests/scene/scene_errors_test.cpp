@@ -318,3 +318,32 @@ TEST(SceneErrors, TextOverTheSizeLimitIsRefusedWithTheLimit) {
 
 }  // namespace
 }  // namespace wifislam
+
+namespace wifislam {
+namespace {
+
+// The path loss model's keys: an unknown model is a located error that lists the three; the fit
+// model has office rows only; N is a key of the walls model only.
+TEST(SceneErrors, RadioModelKeysAreCheckedAgainstTheModel) {
+  auto e = expect_parse_error(std::string(kValidBody) + "radio: {model: cost231}\n");
+  EXPECT_EQ(e.key_path(), "radio.model");
+  EXPECT_NE(std::string(e.what()).find("itu_site_general_fit"), std::string::npos) << e.what();
+  e = expect_parse_error(std::string(kValidBody) +
+                         "radio: {model: itu_site_general_fit, environment: residential}\n");
+  EXPECT_EQ(e.key_path(), "radio.environment");
+  EXPECT_NE(std::string(e.what()).find("office"), std::string::npos) << e.what();
+  e = expect_parse_error(std::string(kValidBody) +
+                         "radio: {model: itu_site_general, distance_coefficient: 30}\n");
+  EXPECT_EQ(e.key_path(), "radio.distance_coefficient");
+  const Scene fit = load_scene_yaml(std::string(kValidBody) + "radio: {model: itu_site_general_fit}\n",
+                                    "fit.yaml");
+  EXPECT_EQ(fit.radio.model, PathLossModel::kItuSiteGeneralFit);
+  EXPECT_FALSE(fit.radio.shadowing_sigma_db.has_value());
+  // The resolved scene names the model and loads back to it.
+  const std::string resolved = resolved_scene_yaml(fit);
+  EXPECT_NE(resolved.find("itu_site_general_fit"), std::string::npos);
+  EXPECT_EQ(load_scene_yaml(resolved, "resolved.yaml").radio.model, PathLossModel::kItuSiteGeneralFit);
+}
+
+}  // namespace
+}  // namespace wifislam

@@ -57,9 +57,9 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
                                     Eigen::Vector3d(4, 6.3, 0.7)}) {
       const RadioLink a = site.radio().link(i, p);
       const RadioLink b = pipeline.radio().link(i, p);
-      EXPECT_EQ(a.shadowing_db, b.shadowing_db);
+      EXPECT_EQ(a.shadowing_normal, b.shadowing_normal);
       EXPECT_EQ(a.walls_per_material, b.walls_per_material);
-      differs_from_ap_seed += a.shadowing_db != seeded_by_ap_seed.link(i, p).shadowing_db;
+      differs_from_ap_seed += a.shadowing_normal != seeded_by_ap_seed.link(i, p).shadowing_normal;
     }
   }
   // The shadowing comes from the scene seed, as datasets have it, not from the placement seed.
