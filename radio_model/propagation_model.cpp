@@ -6,8 +6,10 @@
 
 namespace wifislam {
 
-PropagationOptions PropagationOptions::from_scene(const RadioSpec& radio) {
+PropagationOptions PropagationOptions::from_scene(const Scene& scene) {
+  const RadioSpec& radio = scene.radio;
   PropagationOptions o;
+  o.wall_losses = WallLossTable(scene.building.wall_thickness_m);
   o.model = radio.model;
   o.environment = radio.environment;
   o.distance_coefficient = radio.distance_coefficient;
@@ -104,7 +106,7 @@ bool PropagationModel::walls_only_attenuate() const {
     // make a link's shadowing a gain bigger than that margin: bounds hold only without it.
     return options_.shadowing_sigma_db.has_value();
   }
-  // Loss laws are linear in frequency: checking the band edges covers the bands.
+  // The linear parts are checked at the band edges; a passive slab's loss is never negative.
   for (const WallLossLaw& law : options_.wall_losses.laws)
     if (law.at(2400.0) < 0.0 || law.at(5900.0) < 0.0) return false;
   return true;

@@ -66,7 +66,8 @@ struct PropagationOptions {
   double shadowing_sigma_db_for(RadioBand band, bool line_of_sight) const;
   /// The largest sigma any link can have (0: no shadowing at all).
   double max_shadowing_sigma_db() const;
-  static PropagationOptions from_scene(const RadioSpec& radio);
+  /// The scene's radio keys, and wall losses for its building's wall thickness.
+  static PropagationOptions from_scene(const Scene& scene);
 };
 
 /// The geometry-dependent part of one AP -> receiver link, shared by all its BSSIDs.

@@ -1,15 +1,60 @@
 #include "radio_model/wall_materials.hpp"
 
+#include <cmath>
+#include <complex>
+#include <numbers>
+
 namespace wifislam {
 
-std::array<WallLossLaw, kWallMaterialCount> WallLossTable::default_laws() {
-  std::array<WallLossLaw, kWallMaterialCount> laws{};
-  laws[material_index(WallMaterial::kPlasterboard)] = {3.4 - 0.12 * 2.4, 0.12};  // COST 231 light
-  laws[material_index(WallMaterial::kBrick)] = {6.9 - 2.0 * 2.4, 2.0};           // COST 231 heavy
-  laws[material_index(WallMaterial::kConcrete)] = {5.0, 4.0};    // TR 38.901 Table 7.4.3-1
-  laws[material_index(WallMaterial::kGlass)] = {2.0, 0.2};       // TR 38.901 standard glass
-  laws[material_index(WallMaterial::kWoodDoor)] = {4.85, 0.12};  // TR 38.901 wood
-  return laws;
+namespace {
+constexpr double kSpeedOfLightMps = 299'792'458.0;
+constexpr double kPlasterboardSheetM = 0.0125;  // one 12.5 mm board of a stud partition
+}  // namespace
+
+double p2040_slab_loss_db(const P2040Material& m, double thickness_m, double frequency_mhz) {
+  using C = std::complex<double>;
+  const double f_ghz = frequency_mhz * 1e-3;
+  const double eta_real = m.a * std::pow(f_ghz, m.b);
+  const double sigma_spm = m.c * std::pow(f_ghz, m.d);
+  const C eta(eta_real, -17.98 * sigma_spm / f_ghz);
+  const C n = std::sqrt(eta);  // principal root: loss as a negative imaginary part
+  const C r = (1.0 - n) / (1.0 + n);
+  const C q = 2.0 * std::numbers::pi * frequency_mhz * 1e6 * thickness_m / kSpeedOfLightMps * n;
+  const C j(0.0, 1.0);
+  const C t = (1.0 - r * r) * std::exp(-j * q) / (1.0 - r * r * std::exp(-2.0 * j * q));
+  return -20.0 * std::log10(std::abs(t));
+}
+
+double WallLossLaw::at(double frequency_mhz) const {
+  double loss = a_db + b_db_per_ghz * frequency_mhz * 1e-3;
+  if (layers > 0) loss += layers * p2040_slab_loss_db(slab, slab_thickness_m, frequency_mhz);
+  return loss;
+}
+
+WallLossLaw WallLossLaw::linear(double a_db, double b_db_per_ghz) {
+  WallLossLaw law;
+  law.a_db = a_db;
+  law.b_db_per_ghz = b_db_per_ghz;
+  return law;
+}
+
+WallLossLaw WallLossLaw::slabs(const P2040Material& material, double thickness_m, int layers) {
+  WallLossLaw law;
+  law.slab = material;
+  law.slab_thickness_m = thickness_m;
+  law.layers = layers;
+  return law;
+}
+
+WallLossTable::WallLossTable(double wall_thickness_m) {
+  // TR 38.901 Table 7.4.3-1: concrete, standard glass, wood.
+  laws[material_index(WallMaterial::kConcrete)] = WallLossLaw::linear(5.0, 4.0);
+  laws[material_index(WallMaterial::kGlass)] = WallLossLaw::linear(2.0, 0.2);
+  laws[material_index(WallMaterial::kWoodDoor)] = WallLossLaw::linear(4.85, 0.12);
+  // P.2040-3 slabs: masonry of the wall's thickness; a stud partition of two boards.
+  laws[material_index(WallMaterial::kBrick)] = WallLossLaw::slabs(kP2040Brick, wall_thickness_m, 1);
+  laws[material_index(WallMaterial::kPlasterboard)] =
+      WallLossLaw::slabs(kP2040Plasterboard, kPlasterboardSheetM, 2);
 }
 
 }  // namespace wifislam

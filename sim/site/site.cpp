@@ -14,7 +14,7 @@ Site::Site(const Scene& scene) : scene_(scene) {
   motion_ = std::make_unique<MotionProfile>(
       world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
   radio_ = std::make_unique<PropagationModel>(*world_, make_access_points(scene_, world_->plan),
-                                              PropagationOptions::from_scene(scene_.radio),
+                                              PropagationOptions::from_scene(scene_),
                                               scene_.seed);
 }
 

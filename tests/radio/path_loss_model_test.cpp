@@ -61,10 +61,11 @@ TEST(PathLossModels, ItuWallsIsTheDistanceLawWithNTwentyTwoPlusTheWall) {
   const double d = 12.0;
   EXPECT_NEAR(open.rssi_24_dbm, 20 - (20 * std::log10(open.f_24_mhz) + 22 * std::log10(d) - 28),
               1e-9);
-  // Brick: 6.9 dB at 2.4 GHz with a 2 dB/GHz slope (wall_materials.hpp).
-  EXPECT_NEAR(open.rssi_24_dbm - walled.rssi_24_dbm, 6.9 + 2.0 * (open.f_24_mhz * 1e-3 - 2.4),
-              1e-9);
-  EXPECT_NEAR(open.rssi_5_dbm - walled.rssi_5_dbm, 6.9 + 2.0 * (open.f_5_mhz * 1e-3 - 2.4), 1e-9);
+  // Brick: a P.2040 slab of the default wall thickness, 0.15 m (wall_materials.hpp).
+  EXPECT_NEAR(open.rssi_24_dbm - walled.rssi_24_dbm,
+              p2040_slab_loss_db(kP2040Brick, 0.15, open.f_24_mhz), 1e-9);
+  EXPECT_NEAR(open.rssi_5_dbm - walled.rssi_5_dbm,
+              p2040_slab_loss_db(kP2040Brick, 0.15, open.f_5_mhz), 1e-9);
 }
 
 TEST(PathLossModels, ItuSiteGeneralTakesNFromTheTablePerBandAndIgnoresWalls) {

@@ -25,7 +25,7 @@ double scene_spearman(const std::string& file, std::size_t* pause_count = nullpt
   const Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + file);
   const World world = generate_world(scene);
   PropagationModel model(world, make_access_points(scene, world.plan),
-                         PropagationOptions::from_scene(scene.radio), scene.seed);
+                         PropagationOptions::from_scene(scene), scene.seed);
   WifiScanner scanner(model, WifiScannerOptions::from_scene(scene.sensors.wifi), scene.seed);
   const auto pauses = test::pauses_along_route(world.route, scanner, kPauseSpacingM, kScansPerPause,
                                                scene.sensors.camera.height_m);
@@ -46,7 +46,7 @@ TEST(RadioMapOnCHall, PrunedStrongestMapEqualsTheFullOne) {
   const Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   const World world = generate_world(scene);
   PropagationModel model(world, make_access_points(scene, world.plan),
-                         PropagationOptions::from_scene(scene.radio), scene.seed);
+                         PropagationOptions::from_scene(scene), scene.seed);
   RadioMapOptions o;
   o.resolution_m = 0.5;
   const RadioMap pruned = compute_radio_map(model, world.plan, o);

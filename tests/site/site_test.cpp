@@ -48,7 +48,7 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
   ASSERT_EQ(site.access_points().size(), 5u);
   ASSERT_EQ(pipeline.radio().access_points().size(), 5u);
   const PropagationModel seeded_by_ap_seed(site.world(), site.access_points(),
-                                           PropagationOptions::from_scene(scene.radio),
+                                           PropagationOptions::from_scene(scene),
                                            access_point_seed(scene));
   int differs_from_ap_seed = 0;
   for (std::size_t i = 0; i < site.access_points().size(); ++i) {
