@@ -20,6 +20,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy                          # reference port of TUM evaluate_ate.py (eval tests)
 )
+# --fuzz: also clang, whose compiler-rt has libFuzzer and the sanitizers (scripts/fuzz.sh).
+if [ "${1:-}" = "--fuzz" ]; then packages+=(clang); fi
 
 missing=()
 for p in "${packages[@]}"; do
