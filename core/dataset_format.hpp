@@ -5,6 +5,11 @@
 //
 //   rgb/<t>.png  depth/<t>.png   colour (8-bit BGR PNG) and depth (16-bit PNG, 5000 = 1 m,
 //                                0 = no reading); <t> is the frame time with 6 decimals
+//
+// Times are Unix seconds, as real sensors stamp them (TUM: "seconds since the Unix epoch"): a
+// generated dataset's route starts at the scene's sensors.time_origin_s, by default
+// kDefaultTimeOriginS. Readers take any origin (datasets written before it start at 0).
+//
 //   rgb.txt  depth.txt           "timestamp filename" per frame (TUM)
 //   associations.txt             "t_rgb rgb/<t>.png t_depth depth/<t>.png" (TUM associate.py)
 //   groundtruth.txt              camera-to-world poses at the frame times (TUM trajectory)
@@ -16,6 +21,7 @@
 //   images.sha256                SHA-256 of every PNG, `sha256sum -c` format
 //   manifest.json                versions, parameters, counts, SHA-256 of every other file
 
+#include <cstdint>
 #include <string>
 
 #include "core/timestamp.hpp"
@@ -38,6 +44,15 @@ inline constexpr const char* kCalibration = "calibration.yaml";
 inline constexpr const char* kScene = "scene.yaml";
 inline constexpr const char* kImageChecksums = "images.sha256";
 inline constexpr const char* kManifest = "manifest.json";
+
+/// Where generated datasets' clocks start: 1700000000 s = 2023-11-14 22:13:20 UTC. A whole
+/// number of seconds, so adding it keeps every time exact (frame times are whole microseconds),
+/// and a recent Unix time, so peers that read times from file names (RTAB-Map's
+/// rtabmap-rgbd_dataset refuses a frame named 0.000000.png) or expect Unix stamps take them.
+inline constexpr std::uint64_t kDefaultTimeOriginS = 1'700'000'000;
+/// The latest origin a scene may set: 2100-01-01 00:00:00 UTC, far from where 64-bit nanoseconds
+/// end (2262) whatever the route's length.
+inline constexpr std::uint64_t kMaxTimeOriginS = 4'102'444'800;
 
 /// TUM depth PNGs: 5000 units per metre (TUM RGB-D benchmark, "File Formats").
 inline constexpr double kDepthUnitsPerMetre = 5000.0;

@@ -367,6 +367,19 @@ std::string DatasetReader::description() const {
   return out + ")";
 }
 
+std::vector<FramePair> read_frame_pairs(const fs::path& folder) {
+  std::vector<FramePair> pairs;
+  if (is_file(folder / dataset::kAssociations)) {
+    AssociationsReader reader((folder / dataset::kAssociations).string());
+    while (auto pair = reader.next()) pairs.push_back(std::move(*pair));
+  } else if (is_file(folder / dataset::kRgbList) && is_file(folder / dataset::kDepthList)) {
+    pairs = associate_tum(read_tum_file_list((folder / dataset::kRgbList).string()),
+                          read_tum_file_list((folder / dataset::kDepthList).string()),
+                          dataset::kAssociationMaxDifferenceS);
+  }
+  return pairs;
+}
+
 Trajectory read_ground_truth(const fs::path& folder, bool verify_checksums) {
   const fs::path file = folder / dataset::kGroundTruth;
   if (!is_file(file)) throw IoError(file.string() + ": no ground truth in this dataset");

@@ -87,6 +87,12 @@ class DatasetReader final : public SensorStream {
   std::unique_ptr<Cursors> cursors_;
 };
 
+/// The (rgb, depth) image pairs of a dataset folder, in the order DatasetReader streams its frames:
+/// associations.txt when there is one, else rgb.txt and depth.txt associated as TUM's associate.py
+/// does; empty for a folder with neither. Paths are as listed, relative to the folder; whether the
+/// images exist is DatasetReader's check. ParseError names the file and line.
+std::vector<FramePair> read_frame_pairs(const std::filesystem::path& folder);
+
 /// groundtruth.txt of a dataset folder (camera-to-world poses at the frame times). When the folder
 /// has a manifest, the file's SHA-256 is checked (unless `verify_checksums` is false) and the pose
 /// count must match its counts; a truncated file is a ParseError naming the file.

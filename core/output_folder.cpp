@@ -134,6 +134,14 @@ bool check_output_folder(const OutputFolderRequest& request) {
   const fs::path out = resolve_path(request.path);
   std::error_code ec;
   const fs::file_status status = fs::status(out, ec);
+  if (request.never_inside_inputs) {
+    for (const fs::path& input : request.inputs) {
+      if (!input.empty() && is_within(out, resolve_path(input))) {
+        refuse(out, "lies inside an input of this command (" + input.string() +
+                        "); write it next to it instead");
+      }
+    }
+  }
   if (!fs::exists(status)) return false;
   if (!fs::is_directory(status)) {
     refuse(out, "exists and is not a folder; refusing to replace it");

@@ -33,6 +33,9 @@ struct OutputFolderRequest {
   std::filesystem::path owned_default;
   /// Every file or folder the command reads (scene files, datasets, run folders ...).
   std::vector<std::filesystem::path> inputs;
+  /// Refuse a folder inside an input even when it does not exist yet, for outputs that would
+  /// change the input by their mere presence (export's links would become part of the dataset).
+  bool never_inside_inputs = false;
 };
 
 /// Applies the rule above. Returns true when the folder exists and may be replaced, false when

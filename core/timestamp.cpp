@@ -1,5 +1,6 @@
 #include "core/timestamp.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -8,6 +9,17 @@ namespace wifislam {
 
 Timestamp Timestamp::from_seconds(double seconds) {
   return Timestamp{static_cast<std::int64_t>(std::llround(seconds * 1e9))};
+}
+
+Timestamp Timestamp::from_seconds_exact(double seconds) {
+  char text[64];
+  // Shortest text that reads back as the same double; fixed notation so parse() can take it.
+  const auto [end, ec] = std::to_chars(text, text + sizeof text, seconds, std::chars_format::fixed);
+  if (ec == std::errc()) {
+    if (const auto t = parse(std::string_view(text, static_cast<std::size_t>(end - text))))
+      return *t;
+  }
+  return from_seconds(seconds);
 }
 
 std::string Timestamp::to_string(int decimals) const {

@@ -14,8 +14,18 @@ struct Timestamp {
   std::int64_t ns = 0;
 
   static Timestamp from_seconds(double seconds);
+  /// The decimal number `seconds` was written as (its shortest round-trip text), exactly, when that
+  /// has at most 9 decimals: 1700000000.123456 gives 1700000000123456000 ns, where from_seconds'
+  /// product with 1e9 is off by up to a few hundred ns at Unix times. Otherwise as from_seconds.
+  static Timestamp from_seconds_exact(double seconds);
   static constexpr Timestamp from_ns(std::int64_t n) { return Timestamp{n}; }
+  /// Double seconds: only 2.4e-7 s apart at Unix times (~1.7e9 s), so time differences are taken
+  /// in nanoseconds first (seconds_since) rather than between two seconds() values.
   double seconds() const { return static_cast<double>(ns) * 1e-9; }
+  /// Seconds from `earlier` to this time, subtracted exactly in nanoseconds.
+  double seconds_since(Timestamp earlier) const {
+    return static_cast<double>(ns - earlier.ns) * 1e-9;
+  }
 
   /// Decimal seconds with `decimals` digits after the point (TUM files use 6).
   /// Rounds to the nearest representable value (half away from zero).

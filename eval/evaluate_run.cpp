@@ -165,7 +165,9 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
   auto optional_file = [&](const char* name) {
     return bare_trajectory || !fs::is_regular_file(run_dir / name) ? fs::path() : run_dir / name;
   };
-  const std::int64_t offset_ns = std::llround(options.time_offset_s * 1e9);
+  // Exactly the decimal given: an offset between Unix clocks has 16 digits or more, beyond what a
+  // product with 1e9 in doubles keeps.
+  const std::int64_t offset_ns = Timestamp::from_seconds_exact(options.time_offset_s).ns;
   auto on_dataset_clock = [offset_ns](Timestamp t) { return Timestamp::from_ns(t.ns + offset_ns); };
 
   // Inputs (everything read and checked before anything is computed or written). Only the

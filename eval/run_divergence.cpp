@@ -39,12 +39,13 @@ std::optional<RunDivergence> first_divergence(const std::filesystem::path& run_a
   const std::size_t common = std::min(a.size(), b.size());
   for (std::size_t k = 0; k < common; ++k) {
     if (a[k].time != b[k].time || edges_a[k] != edges_b[k]) {
-      return RunDivergence{static_cast<std::int64_t>(k), a[k].time.seconds()};
+      return RunDivergence{static_cast<std::int64_t>(k), a[k].time.seconds_since(a[0].time)};
     }
   }
   if (a.size() == b.size()) return std::nullopt;
   const Trajectory& longer = a.size() > b.size() ? a : b;
-  return RunDivergence{static_cast<std::int64_t>(common), longer[common].time.seconds()};
+  return RunDivergence{static_cast<std::int64_t>(common),
+                       longer[common].time.seconds_since(longer[0].time)};
 }
 
 }  // namespace wifislam::eval

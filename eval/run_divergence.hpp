@@ -12,7 +12,8 @@ namespace wifislam::eval {
 
 struct RunDivergence {
   std::int64_t keyframe = -1;  // first keyframe that differs
-  double time_s = 0.0;         // its time in the run that has it
+  /// Its time in the run that has it, since that run's first keyframe (stamps are Unix times).
+  double time_s = 0.0;
 };
 
 /// Reads keyframes.txt and graph.json of both run folders. nullopt when the runs agree on every

@@ -47,7 +47,9 @@ void run_check(const CheckArgs& args) {
   fmt::print("{}\n", reader.description());
   fmt::print("frames {}, wifi scans {} ({} readings), odometry {}, ground truth poses {}\n", frames,
              scans, readings, odometry, ground_truth);
-  fmt::print("time span {:.3f} s .. {:.3f} s\n", first.seconds(), last.seconds());
+  // Stamps at full precision (Unix times need 16 digits), the span subtracted in nanoseconds.
+  fmt::print("time span {} s .. {} s ({:.3f} s)\n", first.to_tum_string(), last.to_tum_string(),
+             last.seconds_since(first));
   fmt::print("{}\n", options.verify_checksums && reader.has_manifest()
                          ? "checksums: all files match manifest.json"
                          : "checksums: not verified");

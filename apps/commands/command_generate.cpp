@@ -80,6 +80,9 @@ WIFISLAM_COMMAND(generate, 50) {
       "over the same route: the robot's motion, pauses, Wi-Fi scans and odometry do not change.\n"
       "--max-frames cuts the run short instead. --no-images skips rendering (poses, odometry and\n"
       "Wi-Fi only) for fast radio studies.\n"
+      "Stamps are Unix time: the route starts at the scene's sensors.time_origin_s (default\n"
+      "1700000000 s = 2023-11-14 22:13:20 UTC; 0 for times from 0 s), so peers that want real\n"
+      "sensor stamps (RTAB-Map reads them from the image names) take the dataset as it is.\n"
       "The folder is written as <dir>.partial and renamed when complete; the output is\n"
       "byte-identical for the same scene, seed and options whatever --threads is.");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")

@@ -409,7 +409,8 @@ std::string ComparisonResult::markdown() const {
   if (!divergences.empty()) {
     out +=
         "\n### First keyframe where the WiFi run differs from vanilla (same dataset and "
-        "random draws)\n\n| scene | seed | setting | keyframe | time (s) |\n| --- | ---: | --- | "
+        "random draws)\n\n| scene | seed | setting | keyframe | time since first keyframe (s) |\n| "
+        "--- | ---: | --- | "
         "---: | ---: |\n";
     for (const PairDivergence& d : divergences) {
       out += d.keyframe < 0

@@ -203,6 +203,7 @@ std::string parameters_json(const Scene& scene, const GenerateOptions& options) 
   p["scene"] = scene.name;
   p["seed"] = scene.seed;
   p["fps"] = scene.sensors.camera.fps;
+  p["time_origin_s"] = scene.sensors.time_origin_s;
   p["max_frames"] = options.max_frames;
   p["images"] = options.images;
   p["render"] = {{"near_m", options.render.near_m},
@@ -230,6 +231,7 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
   summary.scene_name = scene.name;
   summary.seed = scene.seed;
   summary.fps = scene.sensors.camera.fps;
+  summary.time_origin_s = scene.sensors.time_origin_s;
   summary.images = options.images;
   summary.access_points = static_cast<std::int64_t>(pipeline.radio().access_points().size());
   for (const AccessPoint& ap : pipeline.radio().access_points())
@@ -307,7 +309,12 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
   std::map<int, std::set<MacAddress>> aps_by_pause;
   std::size_t scan_index = 0;
   const auto& scan_windows = pipeline.schedule().scans();
+  bool any_event = false;
   while (auto generated = pipeline.next()) {
+    const Timestamp t = event_time(generated->event);
+    if (!any_event) summary.first_time = t;
+    summary.last_time = t;
+    any_event = true;
     if (const auto* reading = std::get_if<OdometryReading>(&generated->event)) {
       odometry.write(format_tum_line(StampedPose::from_pose(reading->time, reading->base_in_odom)));
       odometry.write("\n");
@@ -423,6 +430,8 @@ std::string GenerateSummary::full_report() const {
   r += fmt::format("frames            {}{} at {} fps, {:.1f} s simulated, {:.1f} m travelled\n",
                    frames, images ? "" : " (poses only, no images)", fps, duration_s,
                    route_length_m);
+  r += fmt::format("time origin       {} s Unix time (sensors.time_origin_s); stamps {} .. {}\n",
+                   time_origin_s, first_time.to_tum_string(), last_time.to_tum_string());
   r += fmt::format("pauses            {}\n", pauses);
   r += fmt::format("wifi scans        {} ({} readings){}\n", wifi_scans, wifi_readings,
                    wifi_scans_empty > 0

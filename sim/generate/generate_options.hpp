@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/timestamp.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 
 namespace wifislam {
@@ -48,6 +49,8 @@ struct GenerateSummary {
   std::string scene_name;
   std::uint64_t seed = 0;
   double fps = 0.0;
+  std::uint64_t time_origin_s = 0;  // Unix time of the route's start (sensors.time_origin_s)
+  Timestamp first_time, last_time;  // the first and last stamp written (any sensor)
   bool images = true;
   int threads = 1;
   std::int64_t frames = 0;

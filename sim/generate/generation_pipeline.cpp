@@ -23,7 +23,10 @@ Scene resolve_scene(const Scene& scene, const GenerateOptions& options) {
 GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions& options)
     : scene_(scene), mount_(scene.sensors.camera) {
   const auto t0 = Clock::now();
-  site_ = std::make_unique<Site>(scene_);
+  site_ = std::make_unique<Site>(scene_);  // validates the scene
+  // The validated origin is before 2100, so whole seconds to nanoseconds cannot overflow.
+  time_origin_ =
+      Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
   scanner_ = std::make_unique<WifiScanner>(
       site_->radio(), WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
 
@@ -61,10 +64,19 @@ std::optional<GeneratedEvent> GenerationPipeline::next() {
   if (t_odo <= t_scan && t_odo <= t_frame) {
     const Timestamp t = Timestamp::from_ns(t_odo);
     ++next_odometry_;
-    return GeneratedEvent{odometry_->measure(t, site_->motion().state_at(t))};
+    OdometryReading reading = odometry_->measure(t, site_->motion().state_at(t));
+    reading.time = on_event_clock(reading.time);
+    return GeneratedEvent{reading};
   }
-  if (t_scan <= t_frame) return GeneratedEvent{make_scan(scans[next_scan_++])};
-  return make_frame(next_frame_++);
+  if (t_scan <= t_frame) {
+    WifiScan scan = make_scan(scans[next_scan_++]);
+    for (Timestamp* t : {&scan.time, &scan.start_time, &scan.end_time}) *t = on_event_clock(*t);
+    return GeneratedEvent{std::move(scan)};
+  }
+  GeneratedEvent frame = make_frame(next_frame_++);
+  RgbdFrame& f = std::get<RgbdFrame>(frame.event);
+  f.time = on_event_clock(f.time);
+  return frame;
 }
 
 GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {

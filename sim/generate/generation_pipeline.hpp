@@ -11,6 +11,11 @@
 //
 // Everything random is seeded from the scene seed through named sub-streams, so the events do
 // not depend on threads or on which consumer reads them.
+//
+// Clocks: the simulation (motion, schedule, fading, odometry) runs on route time, from 0 at the
+// route's start; the events next() returns carry Unix time, route time plus the scene's
+// sensors.time_origin_s, added in integer nanoseconds (exact). So the origin changes what the
+// stamps say and nothing else.
 
 #include <chrono>
 #include <cstdint>
@@ -65,10 +70,19 @@ class GenerationPipeline {
   /// The renderer (null without images); benchmarks time it alone as a baseline.
   RgbdRenderer* renderer() { return renderer_.get(); }
   const PipelineTimings& timings() const { return timings_; }
+  /// Added to route time in every event next() returns (sensors.time_origin_s).
+  Timestamp time_origin() const { return time_origin_; }
+  /// Route time of an event time (the clock motion() and schedule() run on).
+  Timestamp route_time(Timestamp event_time) const {
+    return Timestamp::from_ns(event_time.ns - time_origin_.ns);
+  }
 
  private:
   GeneratedEvent make_frame(std::int64_t k);
   WifiScan make_scan(const ScanWindow& window);
+  Timestamp on_event_clock(Timestamp route_time) const {
+    return Timestamp::from_ns(route_time.ns + time_origin_.ns);
+  }
 
   Scene scene_;
   std::unique_ptr<Site> site_;
@@ -82,6 +96,7 @@ class GenerationPipeline {
   std::int64_t next_frame_ = 0, next_odometry_ = 0;
   std::size_t next_scan_ = 0;
   PipelineTimings timings_;
+  Timestamp time_origin_;
 };
 
 /// The scene with the options' seed and fps overrides applied (what scene.yaml records).

@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "core/camera_intrinsics.hpp"
+#include "core/dataset_format.hpp"
 
 namespace wifislam {
 
@@ -189,6 +190,10 @@ struct Sensors {
   DepthSensorSpec depth;
   WifiScannerSpec wifi;
   OdometrySpec odometry;
+  /// Unix time (whole seconds) of the route's start: every time a dataset or the in-memory
+  /// stream carries is route time plus this (core/dataset_format.hpp). The simulation itself
+  /// runs on route time, so the origin changes no pixel, pose or RSSI. 0 = times from 0 s.
+  std::uint64_t time_origin_s = dataset::kDefaultTimeOriginS;
 };
 
 enum class RadioEnvironment { kResidential, kOffice, kCommercial };

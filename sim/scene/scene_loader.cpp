@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -91,8 +92,14 @@ class YamlReader {
       out = static_cast<int>(value);
     }
   }
-  void uint64(const char* key, std::uint64_t& out) {
-    if (auto n = fetch(key)) out = to_uint64(*n, key);
+  void uint64(const char* key, std::uint64_t& out,
+              std::uint64_t max = std::numeric_limits<std::uint64_t>::max()) {
+    if (auto n = fetch(key)) {
+      out = to_uint64(*n, key);
+      if (out > max) {
+        fail(*n, key, fmt::format("expected a whole number from 0 to {}, got {}", max, out));
+      }
+    }
   }
   void optional_uint64(const char* key, std::optional<std::uint64_t>& out) {
     if (auto n = fetch(key)) out = to_uint64(*n, key);
@@ -323,7 +330,7 @@ class YamlWriter {
   void integer(const char* key, int value, Limits) {
     out_ << YAML::Key << key << YAML::Value << value;
   }
-  void uint64(const char* key, std::uint64_t value) {
+  void uint64(const char* key, std::uint64_t value, std::uint64_t = 0) {
     out_ << YAML::Key << key << YAML::Value << value;
   }
   void optional_uint64(const char* key, const std::optional<std::uint64_t>& value) {
@@ -400,6 +407,12 @@ using Locator = std::function<std::string(const std::string& key_path)>;
 }
 
 void validate_scene_impl(const Scene& scene, const Locator& locate) {
+  // The loader bounds it already; a scene built in code is checked here.
+  if (scene.sensors.time_origin_s > dataset::kMaxTimeOriginS) {
+    invalid(locate, "sensors.time_origin_s",
+            fmt::format("expected a whole number from 0 to {}, got {}", dataset::kMaxTimeOriginS,
+                        scene.sensors.time_origin_s));
+  }
   std::set<std::string> node_ids;
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     if (!node_ids.insert(scene.nodes[i].id).second) {

@@ -4,7 +4,7 @@
 // schema is one line here (plus its documentation in scenes/README.md).
 //
 // A visitor `V` provides:
-//   number(key, double&, Limits), integer(key, int&, Limits), uint64(key, uint64_t&),
+//   number(key, double&, Limits), integer(key, int&, Limits), uint64(key, uint64_t&[, max]),
 //   boolean(key, bool&), text(key, std::string&), optional_number(key, std::optional<double>&,
 //   Limits), optional_uint64(key, std::optional<uint64_t>&), choice(key, Enum&, names),
 //   vec2(key, Eigen::Vector2d&, Limits), vec3(key, Eigen::Vector3d&, Limits xy, Limits z),
@@ -235,6 +235,7 @@ void visit(V& v, Sensors& s) {
   v.object("depth", s.depth);
   v.object("wifi", s.wifi);
   v.object("odometry", s.odometry);
+  v.uint64("time_origin_s", s.time_origin_s, dataset::kMaxTimeOriginS);
 }
 
 template <class V>

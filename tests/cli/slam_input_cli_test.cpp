@@ -46,6 +46,27 @@ TEST_F(SlamInput, MaxFramesStopsADatasetRunEarly) {
   EXPECT_EQ(pose_lines(scratch_ / "all" / "trajectory.txt"), 12);
 }
 
+// The in-memory stream hands SLAM the Unix stamps a generated dataset holds (sensors.time_origin_s
+// on route time), so a run on the scene and a run on its dataset are one run, to the byte.
+TEST_F(SlamInput, ASceneAndItsGeneratedDatasetGiveTheSameRun) {
+  const fs::path on_dataset = scratch_ / "on_dataset", on_scene = scratch_ / "on_scene";
+  const auto d = wifislam("slam " + dataset_.string() + " -o " + on_dataset.string());
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  const auto s =
+      wifislam("slam " + scene_.string() + " --fps 2 --max-frames 12 -o " + on_scene.string());
+  ASSERT_EQ(s.exit_code, 0) << s.err;
+  for (const char* file : {"trajectory.txt", "keyframes.txt", "graph.json", "loop_closures.csv"}) {
+    const std::string a = test::read_file(on_dataset / file);
+    EXPECT_FALSE(a.empty()) << file;
+    EXPECT_EQ(a, test::read_file(on_scene / file)) << file;
+  }
+  std::ifstream trajectory(on_scene / "trajectory.txt");
+  std::string line;
+  while (std::getline(trajectory, line) && line.starts_with("#")) {
+  }
+  EXPECT_TRUE(line.starts_with("1700000000.000000 ")) << line;
+}
+
 TEST_F(SlamInput, FpsAndSeedOnADatasetAreRefusedNotIgnored) {
   for (const char* option : {"--fps 5", "--seed 3"}) {
     const fs::path run = scratch_ / "run";

@@ -112,6 +112,20 @@ TEST_F(OutputFolderRule, OwnedDefaultIsReplacedWithoutForceEvenInsideItsInput) {
   EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
 }
 
+// A new folder inside an input replaces nothing, so it passes, unless the command asks: export's
+// links inside the dataset would become part of the dataset.
+TEST_F(OutputFolderRule, ANewFolderInsideAnInputIsRefusedWhenTheCommandSaysSo) {
+  const fs::path ds = tool_folder("ds");
+  EXPECT_FALSE(check_output_folder({ds / "new", false, {}, {ds}}));
+  OutputFolderRequest request{ds / "new", true, {}, {ds}, true};
+  const auto message = refusal(request);
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
+  EXPECT_FALSE(fs::exists(ds / "new"));
+  request.path = root_ / "beside";
+  EXPECT_FALSE(check_output_folder(request));
+}
+
 TEST_F(OutputFolderRule, AnInputOrAFolderHoldingOneIsNeverReplaced) {
   const fs::path ds = tool_folder("ds");
   const fs::path run = tool_folder("run");

@@ -45,5 +45,21 @@ TEST(Timestamp, MicrosecondTimesRoundTripThroughText) {
   }
 }
 
+// At Unix times a double holds seconds only to 2.4e-7 s: an offset such as --time-offset
+// 1700000000.123456 is taken as the decimal it was written as, and differences are exact.
+TEST(Timestamp, UnixTimesKeepNanosecondPrecision) {
+  EXPECT_EQ(Timestamp::from_seconds_exact(1700000000.123456).ns, 1'700'000'000'123'456'000LL);
+  EXPECT_EQ(Timestamp::from_seconds_exact(1700000000.333333).ns, 1'700'000'000'333'333'000LL);
+  EXPECT_EQ(Timestamp::from_seconds(1700000000.333333).ns, 1'700'000'000'333'332'992LL);
+  EXPECT_EQ(Timestamp::from_seconds_exact(-0.25).ns, -250'000'000LL);
+  EXPECT_EQ(Timestamp::from_seconds_exact(1.0 / 3.0).ns, 333'333'333LL);  // > 9 decimals: rounded
+  EXPECT_EQ(Timestamp::from_seconds_exact(0.0).ns, 0);
+  const Timestamp a = Timestamp::from_ns(1'700'000'000'000'000'001LL);
+  const Timestamp b = Timestamp::from_ns(1'700'000'000'000'000'000LL);
+  EXPECT_EQ(a.seconds_since(b), 1e-9);
+  EXPECT_EQ(a.seconds() - b.seconds(), 0.0);  // why seconds_since exists
+  EXPECT_EQ(Timestamp::parse("1700000000.333333")->to_tum_string(), "1700000000.333333");
+}
+
 }  // namespace
 }  // namespace wifislam

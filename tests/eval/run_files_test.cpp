@@ -163,8 +163,9 @@ fs::path write_run(const std::string& name, const std::vector<std::string>& edge
   graph += "]}";
   const fs::path dir = write_temp(name + "_keyframes.txt", "").parent_path() / name;
   fs::create_directories(dir);
-  std::ofstream(dir / "keyframes.txt") << "1.0 0 0 0 0 0 0 1\n2.0 0 0 1 0 0 0 1\n"
-                                          "3.0 0 0 2 0 0 0 1\n";
+  // Unix stamps, as generated datasets carry.
+  std::ofstream(dir / "keyframes.txt") << "1700000001.0 0 0 0 0 0 0 1\n1700000002.0 0 0 1 0 0 0 1\n"
+                                          "1700000003.250001 0 0 2 0 0 0 1\n";
   std::ofstream(dir / "graph.json") << graph;
   return dir;
 }
@@ -177,7 +178,9 @@ TEST(RunDivergence, FindsTheFirstKeyframeWhoseEdgesDiffer) {
   const auto d = first_divergence(a, other);
   ASSERT_TRUE(d.has_value());
   EXPECT_EQ(d->keyframe, 2);
-  EXPECT_DOUBLE_EQ(d->time_s, 3.0);
+  // Since the run's first keyframe, to the microsecond (a difference of two double seconds at
+  // 1.7e9 s would be off by up to 2.4e-7 s).
+  EXPECT_DOUBLE_EQ(d->time_s, 2.250001);
 }
 
 TEST(EvalOptions, SetAndValidate) {

@@ -135,8 +135,8 @@ TEST_F(GenerateCli, TruncatedGroundTruthIsAClearError) {
 
 TEST_F(GenerateCli, MissingPngIsAClearError) {
   const fs::path dir = make_dataset("png");
-  fs::remove(dir / "rgb" / "1.200000.png");
-  expect_check_fails(dir, scratch_, "rgb/1.200000.png");
+  fs::remove(dir / "rgb" / "1700000001.200000.png");  // frame 6 on the default time origin
+  expect_check_fails(dir, scratch_, "rgb/1700000001.200000.png");
   expect_check_fails(dir, scratch_, "associations.txt:7", "--no-verify");
 }
 

@@ -1,9 +1,13 @@
 // Writing datasets: determinism across runs and thread counts, the round trip through the
-// reader, the TUM association convention, the --no-images mode and the pause-and-scan protocol.
+// reader, the TUM association convention, the --no-images mode, the pause-and-scan protocol and
+// the time origin (Unix stamps that change nothing else).
 #include "sim/generate/dataset_writer.hpp"
 
 #include <gtest/gtest.h>
 
+#include <sstream>
+
+#include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
 #include "core/dataset_format.hpp"
@@ -162,8 +166,10 @@ TEST(GenerateDataset, ScansHappenOnlyWhileTheRobotPauses) {
   std::vector<int> scans_per_pause(pauses.size(), 0);
   for (const WifiScan& s : scans) {
     int inside = -1;
+    // The file carries Unix stamps; the pauses run on route time.
     for (std::size_t p = 0; p < pauses.size(); ++p)
-      if (s.start_time >= pauses[p].start && s.end_time <= pauses[p].end)
+      if (truth.route_time(s.start_time) >= pauses[p].start &&
+          truth.route_time(s.end_time) <= pauses[p].end)
         inside = static_cast<int>(p);
     ASSERT_GE(inside, 0) << "scan at " << s.time.to_string() << " outside every pause";
     ++scans_per_pause[inside];
@@ -185,10 +191,88 @@ TEST(GenerateDataset, ScansHappenOnlyWhileTheRobotPauses) {
   generate_dataset(moving, dir2, options);
   int while_moving = 0;
   for (const WifiScan& s : read_wifi_csv((dir2 / dataset::kWifi).string()))
-    while_moving += truth.motion().state_at(s.start_time).speed_mps > 0.0;
+    while_moving += truth.motion().state_at(truth.route_time(s.start_time)).speed_mps > 0.0;
   EXPECT_GT(while_moving, 5);
   fs::remove_all(dir);
   fs::remove_all(dir2);
+}
+
+/// The lines of a text file without '#' comments, each split at its first space: (time, rest).
+std::vector<std::pair<Timestamp, std::string>> stamped_lines(const fs::path& file,
+                                                             char separator = ' ') {
+  std::vector<std::pair<Timestamp, std::string>> out;
+  std::istringstream in(test::read_text(file));
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#' || line.starts_with("timestamp")) continue;
+    const auto cut = line.find(separator);
+    const auto t = Timestamp::parse(line.substr(0, cut));
+    EXPECT_TRUE(t.has_value()) << file << ": " << line;
+    out.emplace_back(t.value_or(Timestamp{}), line.substr(cut + 1));
+  }
+  return out;
+}
+
+// Every stamp a dataset holds is route time plus the scene's sensors.time_origin_s, exactly; the
+// origin changes nothing else (images, poses, odometry, RSSI are those of origin 0).
+TEST(GenerateDataset, EveryStampIsRouteTimePlusTheSceneTimeOrigin) {
+  const Scene scene = test::small_scene();
+  EXPECT_EQ(scene.sensors.time_origin_s, 1'700'000'000u);  // the default
+  Scene at_zero = scene, overridden = scene;
+  at_zero.sensors.time_origin_s = 0;
+  overridden.sensors.time_origin_s = 1'234'567'890;
+  const fs::path d0 = test::fresh_folder("origin0"), dd = test::fresh_folder("origin_default"),
+                 d1 = test::fresh_folder("origin_override");
+  generate_dataset(at_zero, d0, short_run(2));
+  const GenerateSummary summary = generate_dataset(scene, dd, short_run(2));
+  generate_dataset(overridden, d1, short_run(2));
+  EXPECT_EQ(summary.time_origin_s, 1'700'000'000u);
+  EXPECT_EQ(summary.first_time, Timestamp::from_ns(1'700'000'000'000'000'000LL));
+
+  for (const auto& [dir, origin_s] :
+       {std::pair{dd, std::int64_t{1'700'000'000}}, std::pair{d1, std::int64_t{1'234'567'890}}}) {
+    const std::int64_t origin_ns = origin_s * 1'000'000'000;
+    for (const char* file : {dataset::kRgbList, dataset::kDepthList, dataset::kGroundTruth,
+                             dataset::kOdometry, dataset::kAssociations}) {
+      const auto zero = stamped_lines(d0 / file), shifted = stamped_lines(dir / file);
+      ASSERT_EQ(zero.size(), shifted.size()) << file;
+      ASSERT_FALSE(zero.empty()) << file;
+      EXPECT_EQ(shifted.front().first.ns, origin_ns) << file << ": the route starts at the origin";
+      for (std::size_t i = 0; i < zero.size(); ++i) {
+        EXPECT_EQ(shifted[i].first.ns - zero[i].first.ns, origin_ns) << file << " line " << i;
+        if (std::string(file) == dataset::kGroundTruth || std::string(file) == dataset::kOdometry) {
+          EXPECT_EQ(shifted[i].second, zero[i].second) << file << ": poses moved";
+        }
+      }
+    }
+    // Image names are the stamps.
+    for (const FramePair& p : read_frame_pairs(dir)) {
+      EXPECT_EQ(p.rgb_path, "rgb/" + p.rgb_time.to_string(6) + ".png");
+      EXPECT_TRUE(fs::exists(dir / p.rgb_path)) << p.rgb_path;
+    }
+    const auto scans0 = read_wifi_csv((d0 / dataset::kWifi).string());
+    auto scans = read_wifi_csv((dir / dataset::kWifi).string());
+    ASSERT_EQ(scans.size(), scans0.size());
+    ASSERT_FALSE(scans.empty());
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+      for (Timestamp* t : {&scans[i].time, &scans[i].start_time, &scans[i].end_time}) {
+        t->ns -= origin_ns;
+      }
+      EXPECT_EQ(scans[i], scans0[i]) << "scan " << i;  // same readings, shifted stamps
+    }
+    // The pixels are the same; only the names in images.sha256 differ.
+    std::istringstream a(test::read_text(d0 / dataset::kImageChecksums)),
+        b(test::read_text(dir / dataset::kImageChecksums));
+    std::string line_a, line_b;
+    while (std::getline(a, line_a) && std::getline(b, line_b)) {
+      EXPECT_EQ(line_a.substr(0, 64), line_b.substr(0, 64));
+    }
+    const auto manifest = nlohmann::json::parse(test::read_text(dir / dataset::kManifest));
+    EXPECT_EQ(manifest.at("parameters").at("time_origin_s"), origin_s) << manifest.dump();
+    EXPECT_NE(
+        test::read_text(dir / dataset::kScene).find("time_origin_s: " + std::to_string(origin_s)),
+        std::string::npos);
+  }
+  for (const auto& dir : {d0, dd, d1}) fs::remove_all(dir);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <string>
 
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -55,6 +56,23 @@ TEST(SceneErrors, UnknownTopLevelKey) {
   const auto e = expect_parse_error(std::string(kValidBody) + "colour: red\n");
   EXPECT_EQ(e.key_path(), "colour");
   EXPECT_EQ(e.where(), "bad.yaml:11:1");
+}
+
+// The time origin is whole Unix seconds up to 2100, so route times on it stay far from where
+// 64-bit nanoseconds end; 0 (times from 0 s, as datasets had before the key) is allowed.
+TEST(SceneErrors, TimeOriginIsWholeSecondsFromZeroTo2100) {
+  for (const char* bad : {"-1", "1.5", "4102444801", "1e20", "soon"}) {
+    const auto e =
+        expect_parse_error(std::string(kValidBody) + "sensors: {time_origin_s: " + bad + "}\n");
+    EXPECT_EQ(e.key_path(), "sensors.time_origin_s") << bad;
+    EXPECT_EQ(e.where(), "bad.yaml:11:26") << bad;
+  }
+  for (const char* good : {"0", "4102444800", "1305031102"}) {
+    const Scene s =
+        load_scene_yaml(std::string(kValidBody) + "sensors: {time_origin_s: " + good + "}\n", "ok");
+    EXPECT_EQ(s.sensors.time_origin_s, std::stoull(good));
+  }
+  EXPECT_EQ(load_scene_yaml(kValidBody, "ok").sensors.time_origin_s, 1'700'000'000u);
 }
 
 TEST(SceneErrors, WrongTypeSaysWhatWasExpected) {

@@ -1,0 +1,87 @@
+// `wifislam export <dataset> --for rtabmap|orbslam2 -o <dir>`: lay a dataset out the way another
+// SLAM system's own dataset tool reads one, with links to the dataset's images (peers/).
+#include <memory>
+#include <string>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "core/output_folder.hpp"
+#include "peers/peer_export.hpp"
+
+namespace {
+
+struct ExportArgs {
+  std::string dataset;
+  std::string peer;
+  std::string output;
+  bool force = false;
+  bool no_verify = false;
+  bool quiet = false;
+};
+
+void run_export(const ExportArgs& args) {
+  using namespace wifislam;
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.dataset}, true});
+  peers::PeerExportOptions options;
+  options.peer = *peers::peer_from_string(args.peer);  // CLI11 checked the name
+  options.verify_checksums = !args.no_verify;
+  options.overwrite = replace;
+  const peers::PeerExportSummary summary =
+      peers::export_for_peer(args.dataset, args.output, options);
+  if (!args.quiet) fmt::print("{}", summary.full_report());
+  for (const std::string& w : summary.warnings) fmt::print(stderr, "wifislam: warning: {}\n", w);
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(export, 58) {
+  auto args = std::make_shared<ExportArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "export",
+      "Lay a dataset (wifislam or plain TUM RGB-D) out the way another SLAM system's own dataset\n"
+      "tool reads one. Images are relative symbolic links to the dataset's files, not copies,\n"
+      "so keep (or move, or mount) the dataset and the export together.");
+  app->footer(
+      "--for rtabmap: for RTAB-Map's `rtabmap-rgbd_dataset DIR`:\n"
+      "  rgb_sync/<t>.png and depth_sync/<t>.png  every associated pair, both under the rgb\n"
+      "                                           stamp <t> (the tool reads times from the names)\n"
+      "  groundtruth.txt                          link to the dataset's\n"
+      "  The tool takes intrinsics only from 'freiburg1', 'freiburg2' or 'freiburg3' in DIR's\n"
+      "  name (TUM's Kinects: fr1 fx 517.3 fy 516.5 cx 318.6 cy 255.3; fr2 520.9 521.0 325.1\n"
+      "  249.7; fr3 535.4 539.2 320.1 247.6, 640x480). The export says which one the dataset's\n"
+      "  calibration equals (within 0.05 px), warns when DIR's name does not contain it, and\n"
+      "  warns when none matches (our default 525/525/319.5/239.5 does not: set the scene's\n"
+      "  sensors.camera to one of them). Stamps must be positive: datasets generated before the\n"
+      "  time origin (scenes' sensors.time_origin_s) start at 0 and are refused.\n"
+      "--for orbslam2: for ORB-SLAM2's `rgbd_tum VOCABULARY DIR/orbslam2_settings.yaml DIR\n"
+      "  DIR/associations.txt`:\n"
+      "  rgb/<t>.png, depth/<t>.png               links under each image's own stamp\n"
+      "  associations.txt                         't_rgb rgb/<t>.png t_depth depth/<t>.png', as\n"
+      "                                           TUM's associate.py writes it, paths in DIR\n"
+      "  orbslam2_settings.yaml                   TUM1.yaml's keys with the dataset's intrinsics,\n"
+      "                                           no distortion, its fps, Camera.bf = depth\n"
+      "                                           baseline (Kinect v1: 0.075 m) x fx, Camera.RGB\n"
+      "                                           1, ThDepth 40, DepthMapFactor 5000 (the\n"
+      "                                           dataset's units per metre), ORB extractor and\n"
+      "                                           viewer defaults\n"
+      "  groundtruth.txt                          link to the dataset's\n"
+      "Both write export.json (what was exported, the TUM camera match, warnings, the command to\n"
+      "run). Names are stamps as TUM writes them (6 decimals, 9 when finer). Score the peer's\n"
+      "trajectory with `wifislam eval CameraTrajectory.txt --gt DATASET`.\n"
+      "DIR is written as DIR.partial and renamed when complete; it is never inside or around the\n"
+      "dataset. Exit 2 for a dataset without images, frames sharing a stamp, or (rtabmap) a\n"
+      "stamp that is not positive.");
+  app->add_option("dataset", args->dataset, "Dataset folder")->required();
+  app->add_option("--for", args->peer, "The peer whose dataset tool reads the export")
+      ->required()
+      ->check(CLI::IsMember({"rtabmap", "orbslam2"}));
+  app->add_option("-o,--output", args->output, "Folder to create")->required();
+  app->add_flag("--force", args->force,
+                "Replace the output folder if it holds this tool's output (a previous export,\n"
+                "with whatever a peer wrote into it, such as rtabmap.db); never the dataset, the\n"
+                "current directory, the home folder or a folder of your own");
+  app->add_flag("--no-verify", args->no_verify, "Do not check the dataset's SHA-256 sums");
+  app->add_flag("-q,--quiet", args->quiet, "Print nothing but warnings on success");
+  app->callback([args] { run_export(*args); });
+}

@@ -1,0 +1,280 @@
+#include "peers/peer_export.hpp"
+
+#include <map>
+#include <system_error>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "core/atomic_file.hpp"
+#include "core/dataset_format.hpp"
+#include "core/dataset_reader.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+#include "core/tum_file_list.hpp"
+#include "peers/orbslam2_settings.hpp"
+
+namespace wifislam::peers {
+
+namespace fs = std::filesystem;
+
+const char* to_string(Peer peer) { return peer == Peer::kRtabmap ? "rtabmap" : "orbslam2"; }
+
+std::optional<Peer> peer_from_string(std::string_view name) {
+  if (name == "rtabmap") return Peer::kRtabmap;
+  if (name == "orbslam2") return Peer::kOrbslam2;
+  return std::nullopt;
+}
+
+namespace {
+
+/// One link of the export: `name` inside `dir`, to `source` (relative to the dataset folder).
+struct Link {
+  std::string dir, name, source;
+  Timestamp stamp;
+  std::string listed_at;  // where the stamp comes from, for messages
+};
+
+std::string image_name(Timestamp t) { return t.to_tum_string() + ".png"; }
+
+std::string listed_at(const fs::path& dataset, const FramePair& p) {
+  if (p.line > 0) return fmt::format("{}:{}", (dataset / dataset::kAssociations).string(), p.line);
+  if (p.rgb_line > 0)
+    return fmt::format("{}:{}", (dataset / dataset::kRgbList).string(), p.rgb_line);
+  return dataset.string();
+}
+
+/// Adds `link` unless its dir/name is taken: by the same image (a depth map associated twice
+/// links once), or by another, which two files of one name cannot be.
+void add_link(std::vector<Link>& links, std::map<std::string, std::size_t>& by_name, Link link) {
+  const std::string key = link.dir + "/" + link.name;
+  const auto [it, fresh] = by_name.emplace(key, links.size());
+  if (fresh) {
+    links.push_back(std::move(link));
+    return;
+  }
+  const Link& first = links[it->second];
+  if (first.source == link.source) return;
+  throw InvalidInputError(fmt::format(
+      "{}: stamp {} names two images ({} and {}, first at {}); peers name frames by their stamps, "
+      "so every frame needs a time of its own",
+      link.listed_at, link.stamp.to_tum_string(), first.source, link.source, first.listed_at));
+}
+
+/// The TUM camera a plain TUM folder without calibration.yaml is from, by its name (as the TUM
+/// sequences are named, e.g. rgbd_dataset_freiburg1_desk).
+std::optional<TumCamera> camera_by_folder_name(const fs::path& folder) {
+  const std::string name = folder.filename().string();
+  for (const TumCamera& camera : tum_cameras()) {
+    if (name.find(camera.name) != std::string::npos) return camera;
+  }
+  return std::nullopt;
+}
+
+void rtabmap_warnings(PeerExportSummary& s, const DatasetCalibration& calibration) {
+  const std::string folder = s.output.filename().string();
+  if (!s.tum_camera) {
+    const TumCamera* closest = nullptr;
+    for (const TumCamera& camera : tum_cameras()) {
+      if (!closest || largest_difference_px(s.intrinsics, camera) <
+                          largest_difference_px(s.intrinsics, *closest)) {
+        closest = &camera;
+      }
+    }
+    s.warnings.push_back(fmt::format(
+        "the dataset's intrinsics ({}) match no TUM camera; rtabmap-rgbd_dataset takes intrinsics "
+        "only from 'freiburg1', 'freiburg2' or 'freiburg3' in the folder's name, so it would run "
+        "with another camera's (the closest, {}, is off by {:.1f} px) or, without such a name, "
+        "with none. For exact intrinsics set the scene's sensors.camera to a TUM camera's (e.g. "
+        "{}: {}) and generate again, or use --for orbslam2, whose settings carry any intrinsics",
+        describe_intrinsics(s.intrinsics), closest->name,
+        largest_difference_px(s.intrinsics, *closest), closest->name,
+        describe_intrinsics(closest->intrinsics)));
+  } else {
+    for (const TumCamera& camera : tum_cameras()) {
+      if (camera.name != std::string(s.tum_camera->name) &&
+          folder.find(camera.name) != std::string::npos) {
+        s.warnings.push_back(
+            fmt::format("the folder's name '{}' says {}, but the dataset's intrinsics are {}'s; "
+                        "rtabmap-rgbd_dataset would use {}'s: rename the folder",
+                        folder, camera.name, s.tum_camera->name, camera.name));
+      }
+    }
+    if (folder.find(s.tum_camera->name) == std::string::npos) {
+      s.warnings.push_back(fmt::format(
+          "rtabmap-rgbd_dataset takes the intrinsics from the folder's name: rename '{}' to "
+          "contain '{}' (e.g. '{}_{}') before running it",
+          folder, s.tum_camera->name, folder, s.tum_camera->name));
+    }
+  }
+  if (calibration.depth_units_per_metre != dataset::kDepthUnitsPerMetre) {
+    s.warnings.push_back(fmt::format(
+        "the depth images hold {} units per metre; rtabmap-rgbd_dataset reads them as TUM's {}, "
+        "so its depth will be scaled wrongly",
+        calibration.depth_units_per_metre, dataset::kDepthUnitsPerMetre));
+  }
+}
+
+nlohmann::ordered_json intrinsics_json(const CameraIntrinsics& k) {
+  return {{"width_px", k.width_px}, {"height_px", k.height_px}, {"fx_px", k.fx_px},
+          {"fy_px", k.fy_px},       {"cx_px", k.cx_px},         {"cy_px", k.cy_px}};
+}
+
+}  // namespace
+
+PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& output,
+                                  const PeerExportOptions& options) {
+  const fs::path dataset = resolve_path(dataset_path);
+  // As `slam` refuses it: an interrupted generate leaves this tool's marker and no manifest
+  // (written last), and its lists end early.
+  std::error_code ec;
+  if (options.verify_checksums && !fs::exists(dataset / dataset::kManifest, ec) &&
+      (fs::exists(dataset / kOutputMarkerFile, ec) ||
+       dataset.filename().string().ends_with(".partial"))) {
+    throw InvalidInputError(dataset.string() +
+                            ": an unfinished dataset (no manifest.json: `wifislam generate` was "
+                            "interrupted?); generate it again, or pass --no-verify to export what "
+                            "is there");
+  }
+  DatasetReaderOptions read;
+  read.verify_checksums = options.verify_checksums;
+  read.load_images = false;
+  read.prefetch_frames = 0;
+  // Checks the manifest, every list line and that every listed image exists.
+  const DatasetReader reader(dataset, read);
+  if (reader.frame_count() == 0) {
+    throw InvalidInputError(dataset.string() +
+                            ": has no images to export (generated with --no-images?)");
+  }
+  const std::vector<FramePair> pairs = read_frame_pairs(dataset);
+
+  PeerExportSummary summary;
+  summary.dataset = dataset;
+  summary.peer = options.peer;
+  summary.frames = static_cast<std::int64_t>(pairs.size());
+  summary.first_time = pairs.front().rgb_time;
+  summary.last_time = pairs.back().rgb_time;
+  // A plain TUM folder has no calibration.yaml (the reader then assumes TUM's default 525 px),
+  // but its name says which Kinect recorded it, as the peers read it.
+  DatasetCalibration calibration = reader.calibration();
+  if (fs::exists(dataset / dataset::kCalibration, ec)) {
+    summary.tum_camera = matching_tum_camera(calibration.intrinsics);
+  } else {
+    summary.tum_camera = camera_by_folder_name(dataset);
+    if (summary.tum_camera) calibration.intrinsics = summary.tum_camera->intrinsics;
+  }
+  summary.intrinsics = calibration.intrinsics;
+
+  // Every link and list line, checked before anything is written.
+  const bool rtabmap = options.peer == Peer::kRtabmap;
+  std::vector<Link> links;
+  std::map<std::string, std::size_t> by_name;
+  std::string associations;
+  for (const FramePair& p : pairs) {
+    const std::string at = listed_at(dataset, p);
+    if (rtabmap && p.rgb_time.ns <= 0) {
+      throw InvalidInputError(fmt::format(
+          "{}: frame time {} is not a positive time; rtabmap-rgbd_dataset reads times from the "
+          "file names and rejects such a frame and with it the sequence. This dataset starts at "
+          "0 s (generated before datasets had a time origin): generate it again (scene key "
+          "sensors.time_origin_s, by default {} s)",
+          at, p.rgb_time.to_tum_string(), dataset::kDefaultTimeOriginS));
+    }
+    if (rtabmap) {
+      // Both folders under the rgb stamp: the tool pairs them by position in the sorted listing.
+      add_link(links, by_name,
+               {kRtabmapRgbDir, image_name(p.rgb_time), p.rgb_path, p.rgb_time, at});
+      add_link(links, by_name,
+               {kRtabmapDepthDir, image_name(p.rgb_time), p.depth_path, p.rgb_time, at});
+    } else {
+      const Link rgb{dataset::kRgbDir, image_name(p.rgb_time), p.rgb_path, p.rgb_time, at};
+      const Link depth{dataset::kDepthDir, image_name(p.depth_time), p.depth_path, p.depth_time,
+                       at};
+      associations += format_association_line(
+          {p.rgb_time, rgb.dir + "/" + rgb.name, p.depth_time, depth.dir + "/" + depth.name});
+      add_link(links, by_name, rgb);
+      add_link(links, by_name, depth);
+    }
+  }
+
+  AtomicDirectory folder(output, options.overwrite);
+  summary.output = folder.final_path();
+  const fs::path staging = folder.staging_path();
+  // Targets relative to where the links will live after the rename; the staging folder is the
+  // final folder's sibling, so they resolve from there too.
+  auto link_to = [&](const fs::path& target, const fs::path& at_final, const fs::path& at) {
+    std::error_code link_error;
+    fs::create_symlink(resolve_path(target).lexically_relative(at_final.parent_path()), at,
+                       link_error);
+    if (link_error) {
+      throw IoError(
+          fmt::format("{}: cannot create a link to {} ({}; the export needs a file "
+                      "system with symbolic links)",
+                      at.string(), target.string(), link_error.message()));
+    }
+  };
+  fs::create_directory(staging / (rtabmap ? kRtabmapRgbDir : dataset::kRgbDir));
+  fs::create_directory(staging / (rtabmap ? kRtabmapDepthDir : dataset::kDepthDir));
+  for (const Link& l : links) {
+    link_to(dataset / l.source, summary.output / l.dir / l.name, staging / l.dir / l.name);
+  }
+  const bool has_ground_truth = fs::exists(dataset / dataset::kGroundTruth, ec);
+  if (has_ground_truth) {
+    link_to(dataset / dataset::kGroundTruth, summary.output / dataset::kGroundTruth,
+            staging / dataset::kGroundTruth);
+  }
+
+  const std::string dir = summary.output.string();
+  if (rtabmap) {
+    rtabmap_warnings(summary, calibration);
+    summary.run_command = fmt::format("rtabmap-rgbd_dataset {}", dir);
+  } else {
+    write_file_atomic(staging / dataset::kAssociations, associations);
+    write_file_atomic(staging / kOrbslam2Settings, orbslam2_settings_yaml(calibration));
+    summary.run_command =
+        fmt::format("Examples/RGB-D/rgbd_tum Vocabulary/ORBvoc.txt {}/{} {} {}/{}", dir,
+                    kOrbslam2Settings, dir, dir, dataset::kAssociations);
+  }
+  if (!has_ground_truth) {
+    summary.warnings.push_back(dataset.string() +
+                               " has no groundtruth.txt: the peer reports no trajectory error");
+  }
+
+  nlohmann::ordered_json j;
+  j["format"] = kExportFormatName;
+  j["format_version"] = kExportFormatVersion;
+  j["peer"] = to_string(options.peer);
+  j["dataset"] = dataset.string();
+  j["links"] = "relative symbolic links to the dataset's files";
+  j["frames"] = summary.frames;
+  j["first_time"] = summary.first_time.to_tum_string();
+  j["last_time"] = summary.last_time.to_tum_string();
+  j["intrinsics"] = intrinsics_json(summary.intrinsics);
+  j["tum_camera"] = summary.tum_camera ? nlohmann::ordered_json(summary.tum_camera->name)
+                                       : nlohmann::ordered_json(nullptr);
+  j["warnings"] = summary.warnings;
+  j["run"] = summary.run_command;
+  write_file_atomic(staging / kExportJson, j.dump(2) + "\n");
+  folder.commit();
+  return summary;
+}
+
+std::string PeerExportSummary::full_report() const {
+  std::string r;
+  r += fmt::format("export       {} ({} layout)\n", output.string(), to_string(peer));
+  r += fmt::format("dataset      {}\n", dataset.string());
+  r += fmt::format("frames       {} (stamps {} .. {}), images linked, not copied\n", frames,
+                   first_time.to_tum_string(), last_time.to_tum_string());
+  r += fmt::format("intrinsics   {}\n", describe_intrinsics(intrinsics));
+  r += fmt::format(
+      "TUM camera   {}\n",
+      tum_camera
+          ? fmt::format("{} ({})", tum_camera->name, describe_intrinsics(tum_camera->intrinsics))
+      : peer == Peer::kOrbslam2 ? std::string("none matches (the settings carry the dataset's own "
+                                              "intrinsics)")
+                                : std::string("none matches"));
+  r += fmt::format("run          {}\n", run_command);
+  return r;
+}
+
+}  // namespace wifislam::peers

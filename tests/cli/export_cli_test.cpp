@@ -1,0 +1,287 @@
+// `wifislam export DATASET --for rtabmap|orbslam2 -o DIR` as its peers' dataset tools read the
+// result: every frame name is a positive Unix-like stamp (RTAB-Map's rtabmap-rgbd_dataset rejects
+// "0.000000.png"), rgb_sync and depth_sync hold the same names, ORB-SLAM2's associations.txt names
+// exactly the linked files, every link resolves to the dataset's own image (same bytes, nothing
+// copied), the settings file reads back through OpenCV's FileStorage (as ORB-SLAM2 reads it) with
+// the calibration's intrinsics; refusals are exit 2 before anything is written, and a calibration
+// that is no TUM Kinect's warns.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <opencv2/core/persistence.hpp>
+
+#include "core/dataset_calibration.hpp"
+#include "core/timestamp.hpp"
+#include "core/tum_file_list.hpp"
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::read_file;
+
+/// TUM's freiburg1 Kinect, as a scene's sensors.camera.
+constexpr const char* kFreiburg1Camera =
+    "radio: {environment: office}\n"
+    "sensors: {camera: {fx_px: 517.3, fy_px: 516.5, cx_px: 318.6, cy_px: 255.3}}";
+
+class ExportCli : public ::testing::Test {
+ protected:
+  // Two tiny datasets shared by the tests (each export writes a folder of its own): one with the
+  // default calibration (525 px, no TUM camera's), one with freiburg1's intrinsics.
+  static void SetUpTestSuite() {
+    root_ = fs::temp_directory_path() / ("wifislam_cli_ExportCli_" + std::to_string(::getpid()));
+    fs::remove_all(root_);
+    fs::create_directories(root_);
+    const fs::path plain = root_ / "tiny.yaml";
+    test::write_file(plain, test::kTinyLoopYaml);
+    const fs::path fr1 =
+        test::tiny_loop_with(root_, "radio: {environment: office}", kFreiburg1Camera, "fr1.yaml");
+    const fs::path origin0 = test::tiny_loop_with(
+        root_, "radio: {environment: office}",
+        "radio: {environment: office}\nsensors: {time_origin_s: 0}", "origin0.yaml");
+    for (const auto& [scene, out] :
+         {std::pair{plain, "default_ds"}, {fr1, "fr1_ds"}, {origin0, "origin0_ds"}}) {
+      const std::string command = std::string(WIFISLAM_BINARY) + " generate " + scene.string() +
+                                  " --fps 2 --max-frames 6 -q -o " + (root_ / out).string();
+      generated_ = generated_ && std::system(command.c_str()) == 0;
+    }
+  }
+  static void TearDownTestSuite() { fs::remove_all(root_); }
+  void SetUp() override {
+    ASSERT_TRUE(generated_) << "wifislam generate failed";
+    scratch_ = test::scratch_folder();
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  test::CliResult wifislam(const std::string& args) { return test::run_wifislam(args, scratch_); }
+  test::CliResult export_to(const std::string& dataset, const std::string& peer,
+                            const fs::path& out, const std::string& more = "") {
+    return wifislam("export " + (root_ / dataset).string() + " --for " + peer + " -o " +
+                    out.string() + " " + more);
+  }
+
+  /// The dataset's frame pairs as its associations.txt lists them.
+  static std::vector<FramePair> dataset_pairs(const std::string& dataset) {
+    std::vector<FramePair> pairs;
+    AssociationsReader reader((root_ / dataset / "associations.txt").string());
+    while (auto p = reader.next()) pairs.push_back(*p);
+    return pairs;
+  }
+
+  /// Sorted file names in `dir`.
+  static std::vector<std::string> names_in(const fs::path& dir) {
+    std::vector<std::string> names;
+    for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  /// `link` is a relative symbolic link whose target is `image`, byte for byte the same file.
+  static void expect_links_to(const fs::path& link, const fs::path& image) {
+    ASSERT_TRUE(fs::is_symlink(link)) << link;
+    EXPECT_TRUE(fs::read_symlink(link).is_relative()) << link << " -> " << fs::read_symlink(link);
+    ASSERT_TRUE(fs::exists(link)) << link << " dangles";
+    EXPECT_EQ(fs::canonical(link), fs::canonical(image)) << link;
+    const std::string bytes = read_file(link);
+    EXPECT_FALSE(bytes.empty()) << link;
+    EXPECT_EQ(bytes, read_file(image)) << link;
+  }
+
+  /// The stamp a frame file is named by, as rtabmap-rgbd_dataset reads it (a decimal number of
+  /// seconds before ".png"), and as we do (exactly).
+  static void expect_unix_stamp_name(const std::string& name, Timestamp expected) {
+    ASSERT_TRUE(name.ends_with(".png")) << name;
+    const std::string stem = name.substr(0, name.size() - 4);
+    const auto t = Timestamp::parse(stem);
+    ASSERT_TRUE(t.has_value()) << name;
+    EXPECT_EQ(*t, expected) << name;
+    EXPECT_GT(std::strtod(stem.c_str(), nullptr), 1e9) << name << " is no Unix time";
+  }
+
+  static inline fs::path root_;
+  static inline bool generated_ = true;
+  fs::path scratch_;
+};
+
+TEST_F(ExportCli, RtabmapLayoutNamesEveryPairByItsPositiveUnixStampAndLinksTheDatasetsImages) {
+  const fs::path out = scratch_ / "tiny_freiburg1";
+  const auto r = export_to("fr1_ds", "rtabmap", out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("freiburg1"), std::string::npos) << r.out;
+
+  const std::vector<FramePair> pairs = dataset_pairs("fr1_ds");
+  ASSERT_EQ(pairs.size(), 6u);
+  const std::vector<std::string> rgb = names_in(out / "rgb_sync");
+  EXPECT_EQ(rgb, names_in(out / "depth_sync"));
+  ASSERT_EQ(rgb.size(), pairs.size());
+  // Sorted names are the frames in time order (the tool pairs the folders by position).
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    expect_unix_stamp_name(rgb[i], pairs[i].rgb_time);
+    expect_links_to(out / "rgb_sync" / rgb[i], root_ / "fr1_ds" / pairs[i].rgb_path);
+    expect_links_to(out / "depth_sync" / rgb[i], root_ / "fr1_ds" / pairs[i].depth_path);
+  }
+  expect_links_to(out / "groundtruth.txt", root_ / "fr1_ds" / "groundtruth.txt");
+
+  const auto j = nlohmann::json::parse(read_file(out / "export.json"));
+  EXPECT_EQ(j.at("peer"), "rtabmap");
+  EXPECT_EQ(j.at("tum_camera"), "freiburg1");
+  EXPECT_EQ(j.at("frames"), 6);
+  EXPECT_TRUE(j.at("warnings").empty());
+}
+
+TEST_F(ExportCli, Orbslam2LayoutListsExactlyTheLinkedImagesAndCarriesTheCalibration) {
+  const fs::path out = scratch_ / "orb";
+  const auto r = export_to("default_ds", "orbslam2", out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+
+  const std::vector<FramePair> pairs = dataset_pairs("default_ds");
+  std::ifstream in(out / "associations.txt");
+  std::set<std::string> listed_rgb, listed_depth;
+  std::size_t k = 0;
+  for (std::string line; std::getline(in, line); ++k) {
+    // rgbd_tum reads every line as a frame: no comments, four fields.
+    std::istringstream fields(line);
+    std::string t_rgb, rgb, t_depth, depth, extra;
+    ASSERT_TRUE(fields >> t_rgb >> rgb >> t_depth >> depth) << line;
+    EXPECT_FALSE(fields >> extra) << line;
+    ASSERT_LT(k, pairs.size());
+    EXPECT_EQ(rgb, "rgb/" + t_rgb + ".png");
+    EXPECT_EQ(depth, "depth/" + t_depth + ".png");
+    expect_unix_stamp_name(fs::path(rgb).filename().string(), pairs[k].rgb_time);
+    expect_unix_stamp_name(fs::path(depth).filename().string(), pairs[k].depth_time);
+    expect_links_to(out / rgb, root_ / "default_ds" / pairs[k].rgb_path);
+    expect_links_to(out / depth, root_ / "default_ds" / pairs[k].depth_path);
+    listed_rgb.insert(fs::path(rgb).filename().string());
+    listed_depth.insert(fs::path(depth).filename().string());
+  }
+  EXPECT_EQ(k, pairs.size());
+  const auto rgb_names = names_in(out / "rgb"), depth_names = names_in(out / "depth");
+  EXPECT_EQ(std::set<std::string>(rgb_names.begin(), rgb_names.end()), listed_rgb);
+  EXPECT_EQ(std::set<std::string>(depth_names.begin(), depth_names.end()), listed_depth);
+
+  // The settings as ORB-SLAM2 reads them (cv::FileStorage), against the dataset's calibration.
+  const DatasetCalibration c = read_calibration_yaml(root_ / "default_ds" / "calibration.yaml");
+  EXPECT_TRUE(read_file(out / "orbslam2_settings.yaml").starts_with("%YAML:1.0\n"));
+  cv::FileStorage settings((out / "orbslam2_settings.yaml").string(), cv::FileStorage::READ);
+  ASSERT_TRUE(settings.isOpened());
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.fx"]), c.intrinsics.fx_px);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.fy"]), c.intrinsics.fy_px);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.cx"]), c.intrinsics.cx_px);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.cy"]), c.intrinsics.cy_px);
+  for (const char* d : {"Camera.k1", "Camera.k2", "Camera.p1", "Camera.p2", "Camera.k3"}) {
+    EXPECT_EQ(static_cast<double>(settings[d]), 0.0) << d;
+  }
+  EXPECT_EQ(static_cast<int>(settings["Camera.width"]), c.intrinsics.width_px);
+  EXPECT_EQ(static_cast<int>(settings["Camera.height"]), c.intrinsics.height_px);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.fps"]), c.camera_fps);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.bf"]), 0.075 * c.intrinsics.fx_px);
+  EXPECT_EQ(static_cast<int>(settings["Camera.RGB"]), 1);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["ThDepth"]), 40.0);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["DepthMapFactor"]), 5000.0);
+  EXPECT_EQ(static_cast<int>(settings["ORBextractor.nFeatures"]), 1000);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["ORBextractor.scaleFactor"]), 1.2);
+  EXPECT_EQ(static_cast<int>(settings["ORBextractor.nLevels"]), 8);
+  EXPECT_EQ(static_cast<int>(settings["ORBextractor.iniThFAST"]), 20);
+  EXPECT_EQ(static_cast<int>(settings["ORBextractor.minThFAST"]), 7);
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Viewer.ViewpointF"]), 500.0);
+  expect_links_to(out / "groundtruth.txt", root_ / "default_ds" / "groundtruth.txt");
+}
+
+TEST_F(ExportCli, RtabmapExportOfACalibrationNoTumCameraHasWarns) {
+  const fs::path out = scratch_ / "default_freiburg1";
+  const auto r = export_to("default_ds", "rtabmap", out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: the dataset's intrinsics (fx 525 fy 525 cx 319.5 cy 239.5 "
+                       "(640x480)) match no TUM camera"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.out.find("none matches"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(read_file(out / "export.json"));
+  EXPECT_TRUE(j.at("tum_camera").is_null());
+  EXPECT_EQ(j.at("warnings").size(), 1u) << j.dump();
+}
+
+TEST_F(ExportCli, RtabmapExportSaysWhichNameTheFolderNeeds) {
+  const fs::path out = scratch_ / "tiny";
+  const auto r = export_to("fr1_ds", "rtabmap", out);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("rename 'tiny' to contain 'freiburg1'"), std::string::npos) << r.err;
+  const fs::path wrong = scratch_ / "tiny_freiburg3";
+  const auto w = export_to("fr1_ds", "rtabmap", wrong);
+  ASSERT_EQ(w.exit_code, 0) << w.err;
+  EXPECT_NE(w.err.find("says freiburg3, but the dataset's intrinsics are freiburg1's"),
+            std::string::npos)
+      << w.err;
+}
+
+TEST_F(ExportCli, AnExistingExportIsReplacedOnlyWithForce) {
+  const fs::path out = scratch_ / "twice";
+  ASSERT_EQ(export_to("default_ds", "orbslam2", out).exit_code, 0);
+  const auto before = test::listing(out);
+  const auto again = export_to("default_ds", "rtabmap", out);
+  test::expect_located_bad_input(again, out.string(), "--force");
+  EXPECT_EQ(test::listing(out), before);
+  const auto forced = export_to("default_ds", "rtabmap", out, "--force");
+  ASSERT_EQ(forced.exit_code, 0) << forced.err;
+  EXPECT_TRUE(fs::exists(out / "rgb_sync"));
+  EXPECT_FALSE(fs::exists(out / "rgb"));
+}
+
+TEST_F(ExportCli, AnOutputInsideOrAroundTheDatasetIsRefused) {
+  const auto before = test::listing(root_ / "default_ds");
+  for (const fs::path& out : {root_ / "default_ds" / "export", root_ / "default_ds", root_}) {
+    const auto r = export_to("default_ds", "rtabmap", out, "--force");
+    test::expect_located_bad_input(r, "output folder " + out.string(), "input of this command");
+  }
+  EXPECT_EQ(test::listing(root_ / "default_ds"), before);
+  EXPECT_FALSE(fs::exists(root_ / "default_ds" / "export.partial"));
+}
+
+TEST_F(ExportCli, ADatasetStartingAtZeroIsRefusedForRtabmapAndNothingIsWritten) {
+  const fs::path out = scratch_ / "zero";
+  const auto r = export_to("origin0_ds", "rtabmap", out);
+  test::expect_located_bad_input(r, "associations.txt:1", "0.000000 is not a positive time");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(scratch_ / "zero.partial"));
+  // ORB-SLAM2 reads the times from associations.txt and takes 0 as any other.
+  EXPECT_EQ(export_to("origin0_ds", "orbslam2", out).exit_code, 0);
+}
+
+TEST_F(ExportCli, ADatasetWithoutImagesIsRefused) {
+  const fs::path scene = scratch_ / "tiny.yaml";
+  test::write_file(scene, test::kTinyLoopYaml);
+  const fs::path ds = scratch_ / "noimg";
+  ASSERT_EQ(
+      wifislam("generate " + scene.string() + " --no-images --max-frames 4 -q -o " + ds.string())
+          .exit_code,
+      0);
+  const auto r =
+      wifislam("export " + ds.string() + " --for orbslam2 -o " + (scratch_ / "out").string());
+  test::expect_located_bad_input(r, ds.string(), "no images");
+  EXPECT_FALSE(fs::exists(scratch_ / "out"));
+}
+
+TEST_F(ExportCli, HelpExplainsBothLayouts) {
+  const auto r = wifislam("export --help");
+  ASSERT_EQ(r.exit_code, 0);
+  for (const char* phrase : {"rgb_sync/<t>.png", "freiburg1", "517.3", "associations.txt",
+                             "DepthMapFactor 5000", "0.075 m", "symbolic links", "--force"}) {
+    EXPECT_NE(r.out.find(phrase), std::string::npos) << phrase;
+  }
+}
+
+}  // namespace
+}  // namespace wifislam
