@@ -1,5 +1,7 @@
 #include "radio_model/propagation_model.hpp"
 
+#include "radio_model/shadowing_cache.hpp"
+
 #include <algorithm>
 
 #include <fmt/format.h>
@@ -62,13 +64,14 @@ PropagationModel::PropagationModel(const Mesh& mesh, const Eigen::Vector2d& boun
       walls_(std::make_unique<EmbreeWallScene>(mesh)),
       floor_loss_db_(itu_p1238_floor_loss_db(options_.environment, options_.floors_between)) {
   // One grid and covariance spectrum for the site, one field per AP from its own stream.
-  // Unit variance: each link scales it by its own sigma (shadowing_db).
-  const ShadowingGrid grid(bounds_min_m, bounds_max_m,
-                           options_.max_shadowing_sigma_db() > 0.0 ? 1.0 : 0.0,
-                           options_.shadowing_decorrelation_m);
+  // Unit variance: each link scales it by its own sigma (shadowing_db). One field per AP, from
+  // its own stream, shared with every other model of this site (shadowing_cache.hpp).
+  const double unit_sigma = options_.max_shadowing_sigma_db() > 0.0 ? 1.0 : 0.0;
   shadowing_.reserve(aps_.size());
-  for (const AccessPoint& ap : aps_)
-    shadowing_.push_back(grid.draw(Rng::stream(seed, fmt::format("shadowing/ap{}", ap.id))));
+  for (const AccessPoint& ap : aps_) {
+    shadowing_.push_back(shared_shadowing_field(bounds_min_m, bounds_max_m, unit_sigma,
+                                                options_.shadowing_decorrelation_m, seed, ap.id));
+  }
 }
 
 RadioLink PropagationModel::link(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const {
@@ -87,7 +90,7 @@ RadioLink PropagationModel::link(std::size_t ap_index, const Eigen::Vector3d& re
       }
     }
   }
-  l.shadowing_normal = shadowing_[ap_index].at_db(receiver_m.head<2>());
+  l.shadowing_normal = shadowing_[ap_index]->at_db(receiver_m.head<2>());
   return l;
 }
 
@@ -95,7 +98,7 @@ RadioLink PropagationModel::link_without_walls(std::size_t ap_index,
                                                const Eigen::Vector3d& receiver_m) const {
   RadioLink l;
   l.distance_m = (receiver_m - aps_[ap_index].position_m).norm();
-  l.shadowing_normal = shadowing_[ap_index].at_db(receiver_m.head<2>());
+  l.shadowing_normal = shadowing_[ap_index]->at_db(receiver_m.head<2>());
   return l;
 }
 

@@ -125,7 +125,7 @@ class PropagationModel {
   std::vector<AccessPoint> aps_;
   PropagationOptions options_;
   std::unique_ptr<EmbreeWallScene> walls_;
-  std::vector<ShadowingField> shadowing_;
+  std::vector<std::shared_ptr<const ShadowingField>> shadowing_;  // shadowing_cache.hpp
   double floor_loss_db_ = 0.0;
 };
 

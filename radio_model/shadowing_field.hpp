@@ -88,6 +88,7 @@ class ShadowingField {
   double at_db(const Eigen::Vector2d& p_m) const;
   double sigma_db() const { return sigma_db_; }
   double cell_m() const { return cell_m_; }
+  std::size_t memory_bytes() const { return values_.size() * sizeof(float); }
 
  private:
   friend class ShadowingGrid;

@@ -14,7 +14,8 @@ packages=(
   libceres-dev                           # pose-graph optimisation
   libyaml-cpp-dev nlohmann-json3-dev     # scene files, results
   libcli11-dev libspdlog-dev libfmt-dev  # command line, logging
-  libsqlite3-dev                         # study results store
+  libsqlite3-dev sqlite3                 # study results store (and its command-line shell)
+  slurm-wlm munge                        # studies on a cluster; the suite starts a one-node one
   libcairo2-dev                          # plots and floor-plan pictures
   libssl-dev                             # SHA-256 for dataset manifests
   libgtest-dev libgmock-dev libbenchmark-dev

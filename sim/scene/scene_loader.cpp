@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 
+#include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
 #include "core/yaml_document.hpp"
@@ -282,34 +283,7 @@ class YamlReader {
     return v;
   }
 
-  std::string suggestion(const std::string& key) const {
-    // Offer the closest known key when it is only a typo away.
-    std::string best;
-    std::size_t best_distance = 3;
-    for (const auto& known : known_keys_) {
-      const std::size_t d = edit_distance(key, known);
-      if (d < best_distance) {
-        best_distance = d;
-        best = known;
-      }
-    }
-    return best.empty() ? "" : "; did you mean '" + best + "'?";
-  }
-
-  static std::size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<std::size_t> row(b.size() + 1);
-    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (std::size_t i = 1; i <= a.size(); ++i) {
-      std::size_t diagonal = row[0];
-      row[0] = i;
-      for (std::size_t j = 1; j <= b.size(); ++j) {
-        const std::size_t up = row[j];
-        row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1])});
-        diagonal = up;
-      }
-    }
-    return row[b.size()];
-  }
+  std::string suggestion(const std::string& key) const { return did_you_mean(key, known_keys_); }
 
   YAML::Node node_;
   std::string path_;

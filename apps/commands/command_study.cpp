@@ -1,0 +1,260 @@
+// `wifislam study ...`: studies over scene keys and SLAM options (eval/study/study_file.hpp),
+// results in SQLite, resumable, sharded, and spread over a Slurm cluster.
+//
+//   study cases FILE                      list the cases (id and axis values)
+//   study run FILE -o DB [--shard i/N]    run (or resume) the cases into DB
+//   study merge SHARD.sqlite ... -o DB    union shard databases of one study
+//   study slurm FILE --tasks N -o DIR     write (and with --submit submit) a job array + merge
+//   study plot DB -o DIR                  the study's curves as PNG and SVG
+//   study place SCENE --budget K -o DIR   greedy AP placement against random placement
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+#include "eval/study/result_store.hpp"
+#include "eval/study/slurm_job.hpp"
+#include "eval/study/study_file.hpp"
+#include "eval/study/study_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace wifislam;
+
+/// The rule for a study database path: a new file; the database of the same study (resumed,
+/// the one documented exception to "replace only with --force"); with --force, a study database
+/// of another study (replaced). Anything else is refused.
+void prepare_database(const fs::path& path, const study::StudyFile& file, bool force,
+                      const std::vector<fs::path>& inputs) {
+  check_output_file(path, inputs);
+  std::error_code ec;
+  if (!fs::exists(path, ec)) return;
+  const auto identity = study::ResultStore::read_identity(path);
+  if (!identity) {
+    throw InvalidInputError(fmt::format(
+        "{}: exists and is not a study database; refusing to touch it (even with --force)",
+        path.string()));
+  }
+  if (*identity == study::identity_of(file)) return;  // resume
+  if (!force) {
+    throw InvalidInputError(fmt::format(
+        "{}: a study database of study '{}' (another study file, or another build of wifislam); "
+        "give --force to replace it, or another -o",
+        path.string(), identity->name));
+  }
+  fs::remove(path);
+  fs::remove(path.string() + "-journal", ec);
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  static const std::regex form(R"(^([0-9]{1,6})/([0-9]{1,6})$)");
+  std::smatch m;
+  if (!std::regex_match(text, m, form)) throw ParseError("--shard", text, "expected i/N, e.g. 0/4");
+  const int i = std::stoi(m[1]), n = std::stoi(m[2]);
+  if (n < 1 || i >= n) throw ParseError("--shard", text, "expected 0 <= i < N");
+  return {i, n};
+}
+
+struct RunArgs {
+  std::string file, output, shard = "0/1";
+  int jobs = 1;
+  bool force = false, quiet = false;
+};
+
+void run_study_command(const RunArgs& args) {
+  const study::StudyFile file = study::load_study_file(args.file);
+  const auto [index, count] = parse_shard(args.shard);
+  prepare_database(args.output, file, args.force, {args.file, file.scene_path});
+  study::StudyRunOptions options;
+  options.database = args.output;
+  options.shard_index = index;
+  options.shard_count = count;
+  options.jobs = args.jobs;
+  if (!args.quiet) {
+    options.on_progress = [](const std::string& line) { fmt::print(stderr, "study: {}\n", line); };
+  }
+  const study::StudyRunSummary s = study::run_study(file, options);
+  fmt::print("study {}: shard {}/{}: {} cases, {} already done, {} run in {:.1f} s -> {}\n",
+             file.name, index, count, s.cases, s.skipped, s.ran, s.wall_s, args.output);
+}
+
+struct SlurmArgs {
+  std::string file, output, partition, time_limit;
+  int tasks = 1, cpus = 1;
+  bool submit = false, force = false;
+};
+
+fs::path own_binary() {
+  std::error_code ec;
+  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) throw EnvironmentError("cannot find the wifislam binary (/proc/self/exe)");
+  return self;
+}
+
+/// Runs `command` and returns its standard output; throws naming it when it fails.
+std::string run_capturing(const std::string& command) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) throw EnvironmentError("cannot run: " + command);
+  std::string out;
+  char buffer[4096];
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  if (status != 0) {
+    throw EnvironmentError(fmt::format("`{}` failed (status {}): {}", command, status, out));
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  return out;
+}
+
+void slurm_command(const SlurmArgs& args) {
+  const study::StudyFile file = study::load_study_file(args.file);
+  study::check_cases(file);
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.file}});
+  study::SlurmJobRequest request;
+  request.wifislam_binary = own_binary();
+  request.study_file = fs::absolute(args.file).lexically_normal();
+  request.tasks = args.tasks;
+  request.cpus_per_task = args.cpus;
+  request.partition = args.partition;
+  request.time_limit = args.time_limit;
+  const fs::path folder = fs::absolute(args.output).lexically_normal();
+  const study::SlurmJobFiles files = study::slurm_job_files(file, request, folder);
+  {
+    AtomicDirectory out(folder, replace);
+    write_file_atomic(out.staging_path() / "study.sbatch", files.array_script);
+    write_file_atomic(out.staging_path() / "merge.sbatch", files.merge_script);
+    fs::create_directories(out.staging_path() / "shards");
+    fs::create_directories(out.staging_path() / "logs");
+    out.commit();
+  }
+  fmt::print("wrote {0}/study.sbatch ({1} tasks) and {0}/merge.sbatch\n", folder.string(),
+             args.tasks);
+  if (!args.submit) {
+    fmt::print("submit: cd {} && J=$(sbatch --parsable study.sbatch) && sbatch "
+               "--dependency=afterok:$J merge.sbatch\n",
+               folder.string());
+    return;
+  }
+  const std::string array_id =
+      run_capturing(fmt::format("sbatch --parsable '{}/study.sbatch' 2>&1", folder.string()));
+  const std::string merge_id = run_capturing(fmt::format(
+      "sbatch --parsable --dependency=afterok:{} '{}/merge.sbatch' 2>&1", array_id,
+      folder.string()));
+  fmt::print("submitted array job {} and merge job {}; merged database: {}/{}\n", array_id,
+             merge_id, folder.string(), files.merged_database.string());
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(study, 70) {
+  CLI::App* app = parent.add_subcommand(
+      "study",
+      "Studies: sweep scene keys (access-point count, placement, power, walls, shadowing, pause\n"
+      "spacing, aliasing) and SLAM options over the product of their values, at radio level (no\n"
+      "rendering) or SLAM level (vanilla and Wi-Fi), into one SQLite database; resumable,\n"
+      "sharded, and spread over a Slurm cluster. Study files: studies/*.yaml.");
+  app->require_subcommand(1);
+
+  {
+    auto file = std::make_shared<std::string>();
+    CLI::App* cases = app->add_subcommand("cases", "List a study file's cases: id and axis values");
+    cases->add_option("file", *file, "Study file (YAML)")->required();
+    cases->callback([file] {
+      const study::StudyFile s = study::load_study_file(*file);
+      std::string header = "case_id";
+      for (const study::StudyAxis& a : s.axes) header += "\t" + a.key;
+      fmt::print("{}\n", header);
+      for (const study::StudyCase& c : s.cases) {
+        std::string line = c.id;
+        for (const std::string& v : c.values) line += "\t" + v;
+        fmt::print("{}\n", line);
+      }
+      study::check_cases(s);
+      fmt::print(stderr, "study {}: {} cases, level {}, every case's scene and options check\n",
+                 s.name, s.cases.size(), study::to_string(s.level));
+    });
+  }
+  {
+    auto args = std::make_shared<RunArgs>();
+    CLI::App* run = app->add_subcommand(
+        "run", "Run a study's cases (or one shard's) into an SQLite database; a rerun resumes");
+    run->add_option("file", args->file, "Study file (YAML)")->required();
+    run->add_option("-o,--output", args->output,
+                    "Database file. An existing database of the same study is resumed (its\n"
+                    "finished cases are skipped): the one exception to replacing only with --force")
+        ->required();
+    run->add_option("--shard", args->shard,
+                    "i/N: run the cases whose index is i modulo N (0 <= i < N)")
+        ->capture_default_str();
+    run->add_option("--jobs", args->jobs,
+                    "Radio cases (or a SLAM case's two runs) in parallel; results do not depend on it")
+        ->capture_default_str()
+        ->check(CLI::PositiveNumber);
+    run->add_flag("--force", args->force, "Replace a database of another study");
+    run->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+    run->footer(
+        "Tables: study (name, study file hash, version, level, axes), results (one row per case\n"
+        "x variant: case_id, case_index, variant, one column per axis, every metric,\n"
+        "software_version, scene_hash; deterministic), timing (wall-clock seconds). A killed run\n"
+        "loses at most the case in flight; run it again to finish.");
+    run->callback([args] { run_study_command(*args); });
+  }
+  {
+    auto inputs = std::make_shared<std::vector<std::string>>();
+    auto output = std::make_shared<std::string>();
+    auto force = std::make_shared<bool>(false);
+    CLI::App* merge = app->add_subcommand(
+        "merge", "Union shard databases of one study into one database");
+    merge->add_option("shards", *inputs, "Shard databases")->required();
+    merge->add_option("-o,--output", *output, "Merged database (a new file)")->required();
+    merge->add_flag("--force", *force, "Replace an existing study database");
+    merge->callback([inputs, output, force] {
+      std::vector<fs::path> paths(inputs->begin(), inputs->end());
+      check_output_file(*output, paths);
+      std::error_code ec;
+      if (fs::exists(*output, ec)) {
+        if (!study::ResultStore::read_identity(*output)) {
+          throw InvalidInputError(*output + ": exists and is not a study database; refusing to "
+                                            "replace it (even with --force)");
+        }
+        if (!*force) throw InvalidInputError(*output + ": exists; give --force to replace it");
+      }
+      const std::int64_t rows = study::merge_study_databases(paths, *output);
+      fmt::print("merged {} shard databases: {} rows -> {}\n", paths.size(), rows, *output);
+    });
+  }
+  {
+    auto args = std::make_shared<SlurmArgs>();
+    CLI::App* slurm = app->add_subcommand(
+        "slurm",
+        "Write a Slurm job array (one shard per task) and a dependent merge job for a study;\n"
+        "--submit also submits both with sbatch");
+    slurm->add_option("file", args->file, "Study file (YAML)")->required();
+    slurm->add_option("--tasks", args->tasks, "Array tasks = shards")
+        ->required()
+        ->check(CLI::Range(1, 100000));
+    slurm->add_option("--cpus-per-task", args->cpus, "CPUs per task (the shard's --jobs)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1024));
+    slurm->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
+    slurm->add_option("--time", args->time_limit, "Time limit per task, e.g. 02:00:00");
+    slurm->add_option("-o,--output", args->output,
+                      "Job folder: study.sbatch, merge.sbatch, shards/, logs/, and the merged\n"
+                      "database once the merge job ran. On a cluster, a path every node sees")
+        ->required();
+    slurm->add_flag("--submit", args->submit, "Submit the array, then the merge (afterok)");
+    slurm->add_flag("--force", args->force, "Replace an existing job folder of this tool");
+    slurm->callback([args] { slurm_command(*args); });
+  }
+}

@@ -1,0 +1,130 @@
+// Study files: located errors for bad input, "did you mean" for unknown axis keys, the cases as
+// the product of the axes (or a listed subset) with stable ids, and shards that partition them.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/error.hpp"
+#include "eval/study/study_file.hpp"
+#include "eval/study/study_runner.hpp"
+
+namespace wifislam::study {
+namespace {
+
+const std::string kScene = std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml";
+
+std::string study_yaml(const std::string& axes, const std::string& extra = "") {
+  return "version: 1\nname: test\nscene: " + kScene + "\nlevel: radio\naxes:\n" + axes + extra;
+}
+
+ParseError parse_error(const std::string& yaml) {
+  try {
+    load_study_yaml(yaml, "s.yaml");
+  } catch (const ParseError& e) {
+    return e;
+  }
+  ADD_FAILURE() << "no ParseError for:\n" << yaml;
+  return ParseError("", "", "");
+}
+
+TEST(StudyFile, CasesAreTheProductOfTheAxesInOrderWithStableIds) {
+  const StudyFile s = load_study_yaml(
+      study_yaml("  access_points.count: [10, 20]\n  access_points.placement: [grid, rooms, "
+                 "random]\n  slam.wifi_similarity: 0.9\n"),
+      "s.yaml");
+  ASSERT_EQ(s.cases.size(), 6u);
+  EXPECT_EQ(s.cases[0].values, (std::vector<std::string>{"10", "grid", "0.9"}));
+  EXPECT_EQ(s.cases[1].values, (std::vector<std::string>{"10", "rooms", "0.9"}));
+  EXPECT_EQ(s.cases[5].values, (std::vector<std::string>{"20", "random", "0.9"}));
+  EXPECT_EQ(s.axes[2].kind, AxisKind::kSlamOption);
+  std::set<std::string> ids;
+  for (const StudyCase& c : s.cases) ids.insert(c.id);
+  EXPECT_EQ(ids.size(), 6u);
+  EXPECT_EQ(s.cases[3].id.substr(0, 6), "00003-");
+  // The same file reads to the same ids; a listed subset keeps the ids of the full product.
+  EXPECT_EQ(load_study_yaml(study_yaml("  access_points.count: [10, 20]\n  "
+                                       "access_points.placement: [grid, rooms, random]\n  "
+                                       "slam.wifi_similarity: 0.9\n"),
+                            "other.yaml")
+                .cases[4]
+                .id,
+            s.cases[4].id);
+  const StudyFile subset = load_study_yaml(
+      study_yaml("  access_points.count: [10, 20]\n  access_points.placement: [grid, rooms, "
+                 "random]\n  slam.wifi_similarity: 0.9\n",
+                 "cases:\n  - {access_points.count: 20, access_points.placement: rooms, "
+                 "slam.wifi_similarity: 0.9}\n"),
+      "s.yaml");
+  ASSERT_EQ(subset.cases.size(), 1u);
+  EXPECT_EQ(subset.cases[0].id, s.cases[4].id);
+}
+
+TEST(StudyFile, ShardsPartitionTheCases) {
+  const StudyFile s = load_study_yaml(study_yaml("  seed: [1, 2, 3, 4, 5, 6, 7]\n"), "s.yaml");
+  std::multiset<std::string> seen;
+  for (int i = 0; i < 3; ++i) {
+    for (const StudyCase& c : shard_cases(s, i, 3)) {
+      seen.insert(c.id);
+      EXPECT_EQ(static_cast<int>(c.index % 3), i);
+    }
+  }
+  EXPECT_EQ(seen.size(), s.cases.size());
+  EXPECT_EQ(std::set<std::string>(seen.begin(), seen.end()).size(), s.cases.size());
+}
+
+TEST(StudyFile, MalformedFilesAreLocatedErrors) {
+  // Unknown axis key: located on its line, with the closest scene key offered.
+  auto e = parse_error(study_yaml("  access_points.count: [1]\n  access_point.placement: [grid]\n"));
+  EXPECT_NE(e.where().find("s.yaml:7:3"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("did you mean 'access_points.placement'"), std::string::npos)
+      << e.what();
+  e = parse_error(study_yaml("  slam.min_matchs: [10]\n"));
+  EXPECT_NE(std::string(e.what()).find("did you mean 'slam.min_matches'"), std::string::npos)
+      << e.what();
+  // Unknown top-level key, bad YAML, empty axis, repeated value, unknown front end.
+  e = parse_error(study_yaml("  seed: [1]\n", "levle: slam\n"));
+  EXPECT_EQ(e.key_path(), "levle");
+  EXPECT_NE(std::string(e.what()).find("did you mean 'level'"), std::string::npos);
+  e = parse_error("version: 1\nname: [unclosed\n");
+  EXPECT_NE(e.where().find("s.yaml"), std::string::npos);
+  e = parse_error(study_yaml("  seed: []\n"));
+  EXPECT_EQ(e.key_path(), "axes.seed");
+  e = parse_error(study_yaml("  seed: [1, 1]\n"));
+  EXPECT_NE(std::string(e.what()).find("listed twice"), std::string::npos);
+  e = parse_error(study_yaml("  frontend: [rgbdslam, orbslam9]\n"));
+  EXPECT_NE(std::string(e.what()).find("orbslam9"), std::string::npos);
+  // A listed case that misses an axis or names a value the axis does not have.
+  e = parse_error(study_yaml("  seed: [1, 2]\n  access_points.count: [5]\n",
+                             "cases:\n  - {seed: 1}\n"));
+  EXPECT_EQ(e.key_path(), "cases[0]");
+  e = parse_error(study_yaml("  seed: [1, 2]\n", "cases:\n  - {seed: 3}\n"));
+  EXPECT_EQ(e.key_path(), "cases[0].seed");
+  // Version and required keys.
+  e = parse_error("version: 2\nname: x\nscene: a.yaml\naxes: {seed: [1]}\n");
+  EXPECT_EQ(e.key_path(), "version");
+  e = parse_error("version: 1\nname: x\naxes: {seed: [1]}\n");
+  EXPECT_EQ(e.key_path(), "scene");
+}
+
+TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
+  const StudyFile s = load_study_yaml(study_yaml("  access_points.count: [5, -3]\n"), "s.yaml");
+  try {
+    check_cases(s);
+    FAIL() << "a count of -3 was accepted";
+  } catch (const ParseError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(s.cases[1].id), std::string::npos) << what;
+    EXPECT_NE(what.find("access_points.count"), std::string::npos) << what;
+  }
+  // A wildcard over a list sets every element; a bad slam.* value is refused too.
+  const StudyFile materials =
+      load_study_yaml(study_yaml("  corridors[*].material: [concrete]\n"), "s.yaml");
+  const Scene scene = case_scene(materials, materials.cases[0]);
+  for (const Corridor& c : scene.corridors) EXPECT_EQ(c.material, WallMaterial::kConcrete);
+  const StudyFile bad_option =
+      load_study_yaml(study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
+  EXPECT_THROW(check_cases(bad_option), ParseError);
+}
+
+}  // namespace
+}  // namespace wifislam::study

@@ -1,0 +1,158 @@
+// Running studies into SQLite: a killed run resumes to the rows of an uninterrupted one, shards
+// merge to the unsharded run, databases of another study are refused, and the radio level tells
+// scattered access points from co-linear ones.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
+
+#include "core/error.hpp"
+#include "eval/study/result_store.hpp"
+#include "eval/study/study_file.hpp"
+#include "eval/study/study_runner.hpp"
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kScene = std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml";
+
+fs::path write_study(const fs::path& dir, const std::string& name, const std::string& axes) {
+  const fs::path path = dir / (name + ".yaml");
+  test::write_file(path, "version: 1\nname: " + name + "\nscene: " + kScene +
+                             "\nlevel: radio\naxes:\n" + axes);
+  return path;
+}
+
+std::int64_t rows_in(const fs::path& db) {
+  try {
+    return static_cast<std::int64_t>(dump_results(db).size());
+  } catch (const Error&) {
+    return 0;  // not created yet, or its tables not yet committed
+  }
+}
+
+TEST(StudyRun, AKilledRunResumesToTheRowsOfAnUninterruptedRun) {
+  const fs::path dir = test::scratch_folder();
+  // 40 radio cases of about 0.1 s each on c_hall.
+  const fs::path file =
+      write_study(dir, "resume", "  access_points.count: [8, 16, 24, 32]\n  seed: [1, 2, 3, 4, 5, "
+                                 "6, 7, 8, 9, 10]\n");
+  const fs::path whole = dir / "whole.sqlite", killed = dir / "killed.sqlite";
+  ASSERT_EQ(test::run_wifislam("study run " + file.string() + " -q -o " + whole.string(), dir)
+                .exit_code,
+            0);
+  const std::int64_t total = rows_in(whole);
+  ASSERT_EQ(total, 40);
+
+  // The same study, killed with SIGKILL once a few cases are in.
+  const pid_t child = ::fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    ::execl(WIFISLAM_BINARY, WIFISLAM_BINARY, "study", "run", file.c_str(), "-q", "-o",
+            killed.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (rows_in(killed) < 3 && std::chrono::steady_clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ::kill(child, SIGKILL);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "the run ended before it could be killed";
+  const std::int64_t at_kill = rows_in(killed);
+  EXPECT_GE(at_kill, 3);
+  EXPECT_LT(at_kill, total) << "every case was done before the kill: the test proves nothing";
+
+  // The rerun skips the finished cases and ends with exactly the uninterrupted run's rows.
+  const auto rerun =
+      test::run_wifislam("study run " + file.string() + " -o " + killed.string(), dir);
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
+  EXPECT_NE(rerun.err.find(std::to_string(at_kill) + " of 40 cases already in"), std::string::npos)
+      << rerun.err;
+  EXPECT_EQ(dump_results(killed), dump_results(whole));
+  fs::remove_all(dir);
+}
+
+TEST(StudyRun, ShardsMergeToTheUnshardedRunAndForeignDatabasesAreRefused) {
+  const fs::path dir = test::scratch_folder();
+  const fs::path file =
+      write_study(dir, "shards", "  access_points.count: [10, 20]\n  seed: [1, 2, 3]\n");
+  const StudyFile study = load_study_file(file);
+  StudyRunOptions whole;
+  whole.database = dir / "whole.sqlite";
+  run_study(study, whole);
+  std::vector<fs::path> shards;
+  for (int i = 0; i < 4; ++i) {  // 6 cases in 4 shards: sizes 2, 2, 1, 1
+    StudyRunOptions o;
+    o.database = dir / ("shard-" + std::to_string(i) + ".sqlite");
+    o.shard_index = i;
+    o.shard_count = 4;
+    o.jobs = 2;
+    EXPECT_EQ(run_study(study, o).ran, i < 2 ? 2u : 1u);
+    shards.push_back(o.database);
+  }
+  EXPECT_EQ(merge_study_databases(shards, dir / "merged.sqlite"), 6);
+  EXPECT_EQ(dump_results(dir / "merged.sqlite"), dump_results(whole.database));
+
+  // A shard of another study file (one value more) is refused by merge and by run.
+  const fs::path other_file =
+      write_study(dir, "other", "  access_points.count: [10, 20, 30]\n  seed: [1, 2, 3]\n");
+  const StudyFile other = load_study_file(other_file);
+  StudyRunOptions o;
+  o.database = dir / "other.sqlite";
+  o.shard_count = 9;  // one case: quick
+  run_study(other, o);
+  shards.push_back(o.database);
+  EXPECT_THROW(merge_study_databases(shards, dir / "merged2.sqlite"), InvalidInputError);
+  EXPECT_FALSE(fs::exists(dir / "merged2.sqlite"));
+  EXPECT_THROW(run_study(study, o), InvalidInputError);
+  // Through the command line: exit 2, and a file that is no study database is never touched.
+  test::write_file(dir / "notes.sqlite", "my notes");
+  const auto r = test::run_wifislam(
+      "study run " + file.string() + " -o " + (dir / "notes.sqlite").string() + " --force", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(test::read_file(dir / "notes.sqlite"), "my notes");
+  const auto foreign = test::run_wifislam(
+      "study run " + file.string() + " -o " + (dir / "other.sqlite").string(), dir);
+  EXPECT_EQ(foreign.exit_code, 2) << foreign.err;
+  EXPECT_NE(foreign.err.find("--force"), std::string::npos) << foreign.err;
+  fs::remove_all(dir);
+}
+
+// Co-linear access points (all on the south corridor's centre line) against scattered ones, on
+// one scene and three seeds: far places (> 12 m) look alike to the Wi-Fi far more often when the
+// APs lie on one line, and the route splits into fewer clusters.
+TEST(StudyRun, ScatteredAccessPointsTellPlacesApartBetterThanCoLinearOnes) {
+  const fs::path dir = test::scratch_folder();
+  const fs::path file = write_study(dir, "colinear",
+                                    "  access_points.placement: [colinear, rooms, random]\n"
+                                    "  access_points.count: [20]\n"
+                                    "  access_points.line_to_m: [\"[20, 0]\"]\n"
+                                    "  seed: [1, 2, 3]\n");
+  const StudyFile study = load_study_file(file);
+  double far[3] = {0, 0, 0}, clusters[3] = {0, 0, 0};
+  for (const StudyCase& c : study.cases) {
+    const ResultRow row = run_case(study, c, dir, 1).front();
+    const int placement = c.values[0] == "colinear" ? 0 : c.values[0] == "rooms" ? 1 : 2;
+    for (const ResultColumn& m : row.metrics) {
+      if (m.name == "far_similar_share") far[placement] += std::get<double>(m.value) / 3;
+      if (m.name == "clusters") clusters[placement] += std::get<std::int64_t>(m.value) / 3.0;
+    }
+  }
+  for (int scattered : {1, 2}) {
+    EXPECT_GT(far[0], 2.0 * far[scattered]) << "co-linear " << far[0] << ", scattered " << far[scattered];
+    EXPECT_LT(clusters[0], clusters[scattered]);
+  }
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wifislam::study
