@@ -109,7 +109,8 @@ bool PropagationModel::walls_only_attenuate() const {
     // make a link's shadowing a gain bigger than that margin: bounds hold only without it.
     return options_.shadowing_sigma_db.has_value();
   }
-  // The linear parts are checked at the band edges; a passive slab's loss is never negative.
+  // Every law is monotonic over the bands (linear, or a measured loss plus an absorption that grows
+  // with the conductivity), so its values at the band edges bound it.
   for (const WallLossLaw& law : options_.wall_losses.laws)
     if (law.at(2400.0) < 0.0 || law.at(5900.0) < 0.0) return false;
   return true;

@@ -25,10 +25,20 @@ double p2040_slab_loss_db(const P2040Material& m, double thickness_m, double fre
   return -20.0 * std::log10(std::abs(t));
 }
 
+double p2040_absorption_db(const P2040Material& m, double thickness_m, double frequency_mhz) {
+  const double f_ghz = frequency_mhz * 1e-3;
+  const std::complex<double> eta(m.a * std::pow(f_ghz, m.b),
+                                 -17.98 * m.c * std::pow(f_ghz, m.d) / f_ghz);
+  const double k0 = 2.0 * std::numbers::pi * frequency_mhz * 1e6 / kSpeedOfLightMps;
+  return 20.0 * std::log10(std::exp(1.0)) * k0 * std::abs(std::sqrt(eta).imag()) * thickness_m;
+}
+
 double WallLossLaw::at(double frequency_mhz) const {
-  double loss = a_db + b_db_per_ghz * frequency_mhz * 1e-3;
-  if (layers > 0) loss += layers * p2040_slab_loss_db(slab, slab_thickness_m, frequency_mhz);
-  return loss;
+  if (anchored) {
+    return anchor_db + p2040_absorption_db(material, thickness_m, frequency_mhz) -
+           p2040_absorption_db(material, thickness_m, anchor_mhz);
+  }
+  return a_db + b_db_per_ghz * frequency_mhz * 1e-3;
 }
 
 WallLossLaw WallLossLaw::linear(double a_db, double b_db_per_ghz) {
@@ -38,11 +48,15 @@ WallLossLaw WallLossLaw::linear(double a_db, double b_db_per_ghz) {
   return law;
 }
 
-WallLossLaw WallLossLaw::slabs(const P2040Material& material, double thickness_m, int layers) {
+WallLossLaw WallLossLaw::measured_with_absorption(double anchor_db, double anchor_mhz,
+                                                  const P2040Material& material,
+                                                  double thickness_m) {
   WallLossLaw law;
-  law.slab = material;
-  law.slab_thickness_m = thickness_m;
-  law.layers = layers;
+  law.anchored = true;
+  law.anchor_db = anchor_db;
+  law.anchor_mhz = anchor_mhz;
+  law.material = material;
+  law.thickness_m = thickness_m;
   return law;
 }
 
@@ -51,10 +65,12 @@ WallLossTable::WallLossTable(double wall_thickness_m) {
   laws[material_index(WallMaterial::kConcrete)] = WallLossLaw::linear(5.0, 4.0);
   laws[material_index(WallMaterial::kGlass)] = WallLossLaw::linear(2.0, 0.2);
   laws[material_index(WallMaterial::kWoodDoor)] = WallLossLaw::linear(4.85, 0.12);
-  // P.2040-3 slabs: masonry of the wall's thickness; a stud partition of two boards.
-  laws[material_index(WallMaterial::kBrick)] = WallLossLaw::slabs(kP2040Brick, wall_thickness_m, 1);
-  laws[material_index(WallMaterial::kPlasterboard)] =
-      WallLossLaw::slabs(kP2040Plasterboard, kPlasterboardSheetM, 2);
+  // COST 231 at 1800 MHz, with the frequency dependence of the material's absorption (P.2040-3):
+  // masonry of the wall's thickness (heavy wall); a stud partition of two boards (light wall).
+  laws[material_index(WallMaterial::kBrick)] =
+      WallLossLaw::measured_with_absorption(6.9, 1800.0, kP2040Brick, wall_thickness_m);
+  laws[material_index(WallMaterial::kPlasterboard)] = WallLossLaw::measured_with_absorption(
+      3.4, 1800.0, kP2040Plasterboard, 2.0 * kPlasterboardSheetM);
 }
 
 }  // namespace wifislam

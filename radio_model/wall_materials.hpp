@@ -12,21 +12,25 @@
 //    2.4 GHz, 25.4 against 25.8 at 5.2 GHz, 27.5 against 28.2 at 5.8 GHz; tested within 1 dB),
 //    so it is kept for concrete.
 //
-// 2. ITU-R P.2040-3 (2023), Table 3 material parameters, eta' = a f^b, sigma = c f^d S/m
-//    (f in GHz), through the single-layer slab at normal incidence (P.2040-3 section 3):
-//      eta = eta' - j 17.98 sigma / f,  n = sqrt(eta),  R = (1 - n) / (1 + n),
-//      q = 2 pi f d n / c,  T = (1 - R^2) e^{-jq} / (1 - R^2 e^{-2jq}),  L = -20 log10 |T|.
-//    Used for the two materials TR 38.901 does not have:
-//      brick          a 3.91, sigma 0.0238 f^0.16: a solid masonry wall of the building's
-//                     wall thickness (building.wall_thickness_m) -> 0.15 m: 4.2 dB at 2.4 GHz,
-//                     5.0 dB at 5.2 GHz; 0.2 m: 5.8 and 6.2 dB
-//      plasterboard   a 2.73, sigma 0.0085 f^0.9395: a stud partition of two 12.5 mm boards,
-//                     the cavity lossless and the two boards' losses added (their mutual
-//                     reflections are ignored) -> 2.2 dB at 2.4 and at 5.2 GHz (mostly
-//                     reflection at the four surfaces; the boards absorb little)
-//    COST 231's multi-wall figures (light wall 3.4 dB, heavy wall 6.9 dB at 1.8 GHz) are
-//    higher: they were fitted to whole buildings, studs, ducts and furniture included, which our
-//    explicit geometry does not have; P.2040 describes the material itself.
+// 2. For the two materials TR 38.901 does not have, a measured wall loss and a material's
+//    frequency dependence:
+//      L(f) = L_COST231 + A(f) - A(1.8 GHz),
+//    L_COST231 the COST 231 multi-wall model's loss of a real wall at 1800 MHz (COST Action 231
+//    final report, 1999, section 4.7.2: light wall 3.4 dB, heavy wall 6.9 dB; fitted to whole
+//    walls of real buildings, studs, ducts and plaster included), and A(f) the absorption of
+//    the wall's material, from ITU-R P.2040-3 (2023) Table 3 (eta' = a f^b, sigma = c f^d S/m,
+//    f in GHz) through the slab formula of P.2040-3 section 3:
+//      eta = eta' - j 17.98 sigma / f,  n = sqrt(eta),  A = 20 log10(e) (2 pi f / c) |Im n| d.
+//      brick          a 3.91, sigma 0.0238 f^0.16, d the building's wall thickness
+//                     (building.wall_thickness_m): 0.15 m -> 6.9 dB at 1.8 GHz, 7.0 at 2.4,
+//                     7.5 at 5.2 (heavy wall)
+//      plasterboard   a 2.73, sigma 0.0085 f^0.9395, two 12.5 mm boards of a stud partition
+//                     -> 3.4 dB at 1.8 GHz, 3.5 at 2.4, 4.0 at 5.2 (light wall)
+//    The slab's full transmission (p2040_slab_loss_db, reflections included) is not used for
+//    these two: for an ideal homogeneous slab it gives 4.2 dB for 0.15 m of brick and 2.2 dB
+//    for two boards at 2.4 GHz, below what walls of real buildings are measured to take, and
+//    it oscillates with frequency (interference inside a perfectly flat slab) where real walls
+//    do not. Its absorption term is the part that carries over.
 
 #include <array>
 
@@ -45,20 +49,27 @@ inline constexpr P2040Material kP2040Brick{3.91, 0.0, 0.0238, 0.16};
 inline constexpr P2040Material kP2040Plasterboard{2.73, 0.0, 0.0085, 0.9395};
 inline constexpr P2040Material kP2040Concrete{5.24, 0.0, 0.0462, 0.7822};
 
-/// Loss in dB of a slab of `thickness_m` at normal incidence (the formula above).
+/// Transmission loss in dB of a homogeneous slab of `thickness_m` at normal incidence (P.2040-3
+/// section 3: interfaces, internal echoes and absorption):
+///   R = (1 - n) / (1 + n), q = 2 pi f d n / c, T = (1 - R^2) e^{-jq} / (1 - R^2 e^{-2jq}).
 double p2040_slab_loss_db(const P2040Material& material, double thickness_m, double frequency_mhz);
+/// Its absorption alone: 20 log10(e) (2 pi f / c) |Im n| d.
+double p2040_absorption_db(const P2040Material& material, double thickness_m,
+                           double frequency_mhz);
 
-/// One material's loss: a + b f_GHz, plus `layers` P.2040 slabs of `slab_thickness_m` when
-/// `layers` > 0.
+/// One material's loss: a + b f_GHz (linear), or anchor_db at anchor_mhz plus the absorption
+/// of `material` over `thickness_m` relative to its absorption at anchor_mhz (anchored).
 struct WallLossLaw {
   double a_db = 0.0;          // loss at 0 GHz (intercept)
   double b_db_per_ghz = 0.0;  // slope
-  P2040Material slab;
-  double slab_thickness_m = 0.0;
-  int layers = 0;
+  bool anchored = false;
+  double anchor_db = 0.0, anchor_mhz = 0.0;
+  P2040Material material;
+  double thickness_m = 0.0;
   double at(double frequency_mhz) const;
   static WallLossLaw linear(double a_db, double b_db_per_ghz);
-  static WallLossLaw slabs(const P2040Material& material, double thickness_m, int layers);
+  static WallLossLaw measured_with_absorption(double anchor_db, double anchor_mhz,
+                                              const P2040Material& material, double thickness_m);
 };
 
 /// Loss laws for every material, indexed by material_index(). Defaults as documented above;

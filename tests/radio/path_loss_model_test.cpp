@@ -61,11 +61,15 @@ TEST(PathLossModels, ItuWallsIsTheDistanceLawWithNTwentyTwoPlusTheWall) {
   const double d = 12.0;
   EXPECT_NEAR(open.rssi_24_dbm, 20 - (20 * std::log10(open.f_24_mhz) + 22 * std::log10(d) - 28),
               1e-9);
-  // Brick: a P.2040 slab of the default wall thickness, 0.15 m (wall_materials.hpp).
-  EXPECT_NEAR(open.rssi_24_dbm - walled.rssi_24_dbm,
-              p2040_slab_loss_db(kP2040Brick, 0.15, open.f_24_mhz), 1e-9);
-  EXPECT_NEAR(open.rssi_5_dbm - walled.rssi_5_dbm,
-              p2040_slab_loss_db(kP2040Brick, 0.15, open.f_5_mhz), 1e-9);
+  // Brick: COST 231's 6.9 dB at 1.8 GHz plus the absorption of 0.15 m of P.2040 brick, the
+  // default wall thickness (wall_materials.hpp).
+  for (double f_mhz : {open.f_24_mhz, open.f_5_mhz}) {
+    const double expected = 6.9 + p2040_absorption_db(kP2040Brick, 0.15, f_mhz) -
+                            p2040_absorption_db(kP2040Brick, 0.15, 1800.0);
+    const double measured = f_mhz == open.f_24_mhz ? open.rssi_24_dbm - walled.rssi_24_dbm
+                                                   : open.rssi_5_dbm - walled.rssi_5_dbm;
+    EXPECT_NEAR(measured, expected, 1e-9) << f_mhz;
+  }
 }
 
 TEST(PathLossModels, ItuSiteGeneralTakesNFromTheTablePerBandAndIgnoresWalls) {
