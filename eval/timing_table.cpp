@@ -85,9 +85,11 @@ TimingTable read_timing_json(const std::filesystem::path& path) {
   }
   if (j.contains(key::kRoles)) {
     if (!j[key::kRoles].is_object()) throw ParseError(file, key::kRoles, "expected an object");
-    for (const auto& [name, r] : j[key::kRoles].items()) {
+    for (const auto& [name, role] : j[key::kRoles].items()) {
       const std::string where = std::string(key::kRoles) + "." + name;
-      if (!r.is_object()) throw ParseError(file, where, "expected an object");
+      if (!role.is_object()) throw ParseError(file, where, "expected an object");
+      // Clang before 16 cannot capture a structured binding in a lambda (the fuzz preset's).
+      const auto& r = role;
       auto field = [&](const char* k) {
         if (!r.contains(k)) throw ParseError(file, where + "." + k, "missing");
         return number(r[k], where + "." + k);

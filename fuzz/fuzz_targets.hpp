@@ -47,4 +47,17 @@ void run_dataset(const std::uint8_t* data, std::size_t size);
 /// and streamed, which must agree pose for pose and fail on the same inputs.
 void run_trajectory(const std::uint8_t* data, std::size_t size);
 
+/// A study file's text (eval/study/study_file.hpp), written as study.yaml into a scratch folder
+/// beside scene.yaml, a copy of fuzz/seed_dataset_scene.yaml, so `scene: scene.yaml` resolves.
+/// Loaded as `wifislam study` loads it; when it loads, the cases must be the axes' product (or a
+/// listed subset of it) with unique ids in study order that do not depend on the file's path,
+/// and shards must partition them. Studies of at most kStudyCheckedCases cases whose scene is the
+/// scratch copy (or a missing file) then have every case's scene and options checked
+/// (check_cases).
+void run_study(const std::uint8_t* data, std::size_t size);
+
+/// The study target runs check_cases, which loads one scene per case, only up to this many cases:
+/// one input stays well under a second under the sanitizers.
+inline constexpr std::size_t kStudyCheckedCases = 12;
+
 }  // namespace wifislam::fuzz

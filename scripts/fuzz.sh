@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
 # Fuzzes one of wifislam's input parsers with libFuzzer (fuzz/fuzz_targets.hpp).
 #
-#   scripts/fuzz.sh TARGET SECONDS   fuzz TARGET (scene, dataset, trajectory) for SECONDS, then
-#                                    merge what it found into fuzz/corpus/TARGET (minimised)
-#   scripts/fuzz.sh seeds            (re)write the seed inputs fuzz/corpus/*/seed-* from the
-#                                    shipped scenes and a dataset generated from
-#                                    fuzz/seed_dataset_scene.yaml (needs the release build)
+#   scripts/fuzz.sh TARGET SECONDS   fuzz TARGET (scene, dataset, trajectory, study) for
+#                                    SECONDS, then merge what it found into fuzz/corpus/TARGET
+#                                    (minimised)
+#   scripts/fuzz.sh seeds [study]    (re)write the seed inputs fuzz/corpus/*/seed-* from the
+#                                    shipped scenes, a dataset generated from
+#                                    fuzz/seed_dataset_scene.yaml (needs the release build), and
+#                                    the study files of fuzz/seed_studies/ and studies/; `seeds
+#                                    study` only the study seeds (no build needed)
 #
 # Builds the `fuzz` preset (clang, ASan + UBSan) on first use; installs clang when it is missing.
 # A crash, sanitizer report, hang (-timeout) or memory blow-up (-rss_limit_mb) is written to
@@ -14,17 +17,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-usage() { sed -n '2,14p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
+usage() { sed -n '2,17p' "$0" | sed 's/^# \{0,1\}//'; exit 2; }
 [ $# -ge 1 ] || usage
 
 # Largest input per target (libFuzzer -max_len): a scene file is a few kB; a dataset bundle holds
-# a few 32x24 PNGs and the text files of a short route.
+# a few 32x24 PNGs and the text files of a short route; a study file is a screenful.
 max_len_of() {
   case "$1" in
     scene) echo 16384 ;;
     dataset) echo 65536 ;;
     trajectory) echo 8192 ;;
-    *) echo "fuzz.sh: unknown target '$1' (scene, dataset, trajectory)" >&2; exit 2 ;;
+    study) echo 8192 ;;
+    *) echo "fuzz.sh: unknown target '$1' (scene, dataset, trajectory, study)" >&2; exit 2 ;;
   esac
 }
 
@@ -40,6 +44,22 @@ pack_bundle() {
   done < <(cd "$folder" && find . -type f -printf '%P\n' | LC_ALL=C sort)
 }
 
+# Study seeds: the hand-written ones as they are, and the project's studies with their base scene
+# replaced by the study target's scratch copy of fuzz/seed_dataset_scene.yaml
+# (fuzz/fuzz_targets.hpp).
+write_study_seeds() {
+  mkdir -p fuzz/corpus/study
+  rm -f fuzz/corpus/study/seed-*
+  local study
+  for study in fuzz/seed_studies/*.yaml; do
+    cp "$study" "fuzz/corpus/study/seed-$(basename "$study" .yaml)"
+  done
+  for study in studies/*.yaml; do
+    [ -f "$study" ] || continue
+    sed -E 's|^scene:.*$|scene: scene.yaml|' "$study" >"fuzz/corpus/study/seed-study-$(basename "$study" .yaml)"
+  done
+}
+
 write_seeds() {
   local wifislam=build/release/apps/wifislam
   [ -x "$wifislam" ] || { echo "fuzz.sh: build the release preset first (scripts/build.sh)" >&2; exit 2; }
@@ -47,7 +67,7 @@ write_seeds() {
   seed_scratch="$(mktemp -d)"
   trap 'rm -rf -- "$seed_scratch"' EXIT
   mkdir -p fuzz/corpus/scene fuzz/corpus/dataset fuzz/corpus/trajectory
-  rm -f fuzz/corpus/*/seed-*
+  rm -f fuzz/corpus/scene/seed-* fuzz/corpus/dataset/seed-* fuzz/corpus/trajectory/seed-*
   for scene in scenes/*.yaml fuzz/seed_dataset_scene.yaml; do
     cp "$scene" "fuzz/corpus/scene/seed-$(basename "$scene" .yaml)"
   done
@@ -66,11 +86,16 @@ write_seeds() {
   head -c 6000 "$seed_scratch/ours/odometry.txt" | sed '$d' >fuzz/corpus/trajectory/seed-odometry
   printf '# timestamp tx ty tz qx qy qz qw\n1305031102.175304 1.3405 0.6266 1.6575 0.6574 0.6126 -0.2949 -0.3248\n' \
     >fuzz/corpus/trajectory/seed-tum
+  write_study_seeds
   ls fuzz/corpus/*/seed-* | wc -l | xargs echo "fuzz.sh: seed inputs written:"
 }
 
 if [ "$1" = seeds ]; then
-  write_seeds
+  case "${2-}" in
+    "") write_seeds ;;
+    study) write_study_seeds; ls fuzz/corpus/study/seed-* | wc -l | xargs echo "fuzz.sh: study seeds written:" ;;
+    *) usage ;;
+  esac
   exit 0
 fi
 

@@ -1,6 +1,8 @@
 #include "sim/scene/scene_keys.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <limits>
 #include <regex>
 
 #include <fmt/format.h>
@@ -78,7 +80,15 @@ std::vector<Step> steps_of(const std::string& path) {
       const std::string inside = part.substr(open + 1, part.size() - open - 2);
       step.indexed = true;
       step.every = inside == "*";
-      if (!step.every) step.index = static_cast<std::size_t>(std::stoull(inside));
+      // An index too large for size_t is past the end of any list: set_at says how long the
+      // list is (std::stoull threw std::out_of_range, which no caller expects).
+      if (!step.every) {
+        const auto [end, error] =
+            std::from_chars(inside.data(), inside.data() + inside.size(), step.index);
+        if (error != std::errc() || end != inside.data() + inside.size()) {
+          step.index = std::numeric_limits<std::size_t>::max();
+        }
+      }
       part = part.substr(0, open);
     }
     step.key = part;
