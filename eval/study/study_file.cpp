@@ -23,9 +23,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string> kTopLevelKeys = {"version", "name",  "description", "scene",
-                                                "level",   "axes",  "cases",       "slam"};
+const std::vector<std::string> kTopLevelKeys = {"version", "name", "description", "scene", "level",
+                                                "set",     "axes", "cases",       "slam"};
 const std::vector<std::string> kSlamKeys = {"frontend", "fps", "max_frames", "settings"};
+
+// Ids number cases in five digits, so they sort in study order only below 100 000; and the
+// product is held in memory, which a few dozen two-valued axes (2^40 cases) would exhaust.
+constexpr std::size_t kMaxStudyCases = 100000;
 
 class Reader {
  public:
@@ -161,6 +165,23 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
     }
   }
 
+  if (const YAML::Node set = root["set"]) {
+    if (!set.IsMap()) r.fail(set, "set", "expected a mapping of scene keys to values");
+    for (const auto& kv : set) {
+      const std::string key = kv.first.Scalar();
+      if (!is_scene_key_path(key)) {
+        r.fail(kv.first, "set." + key,
+               "not a scene key" + did_you_mean(generic_key_path(key), scene_key_paths()));
+      }
+      if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
+        r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");
+      }
+      YAML::Emitter out;
+      out << YAML::Flow << kv.second;
+      study.scene_set.emplace_back(key, out.c_str());
+    }
+  }
+
   const YAML::Node axes = root["axes"];
   if (!axes.IsMap() || axes.size() == 0) {
     r.fail(axes, "axes", "expected a mapping of axis keys to lists of values");
@@ -201,6 +222,16 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
     }
   }
 
+  std::size_t product_size = 1;
+  for (const StudyAxis& axis : study.axes) {
+    product_size *= axis.values.size();  // at most kMaxStudyCases times a list's length
+    if (product_size > kMaxStudyCases) {
+      r.fail(axes, "axes",
+             fmt::format("the axes up to '{}' make more than {} cases (case ids number them "
+                         "in five digits); split the study",
+                         axis.key, kMaxStudyCases));
+    }
+  }
   // The full product in axis order (the last axis varies fastest).
   std::vector<std::vector<std::string>> product = {{}};
   for (const StudyAxis& axis : study.axes) {
@@ -223,24 +254,26 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
       const YAML::Node c = listed[i];
       const std::string key_path = fmt::format("cases[{}]", i);
       if (!c.IsMap()) r.fail(c, key_path, "expected a mapping of every axis to a value");
-      std::vector<std::string> values;
       std::vector<std::string> axis_keys;
       for (const StudyAxis& axis : study.axes) axis_keys.push_back(axis.key);
       r.only_keys(c, axis_keys, key_path + ".");
+      // The case's index in the product, from its values' places (searching the product for
+      // each listed case took listed x product comparisons).
+      std::size_t index = 0;
       for (const StudyAxis& axis : study.axes) {
         if (!c[axis.key]) r.fail(c, key_path, "missing axis '" + axis.key + "'");
         const std::string v = r.scalar(c[axis.key], key_path + "." + axis.key);
-        if (std::find(axis.values.begin(), axis.values.end(), v) == axis.values.end()) {
+        const auto at = std::find(axis.values.begin(), axis.values.end(), v);
+        if (at == axis.values.end()) {
           r.fail(c[axis.key], key_path + "." + axis.key,
                  fmt::format("'{}' is not one of the axis's values", v));
         }
-        values.push_back(v);
+        index = index * axis.values.size() + static_cast<std::size_t>(at - axis.values.begin());
       }
-      const std::size_t index = static_cast<std::size_t>(
-          std::find(product.begin(), product.end(), values) - product.begin());
       if (!chosen.insert(index).second) r.fail(c, key_path, "this case is listed twice");
     }
-    for (std::size_t index : chosen) study.cases.push_back(make_case(study.axes, product[index], index));
+    for (std::size_t index : chosen)
+      study.cases.push_back(make_case(study.axes, product[index], index));
   } else {
     for (std::size_t i = 0; i < product.size(); ++i)
       study.cases.push_back(make_case(study.axes, product[i], i));

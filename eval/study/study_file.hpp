@@ -7,6 +7,8 @@
 //   description: ...                   # optional
 //   scene: ../scenes/c_hall.yaml       # the base scene, relative to the study file
 //   level: radio                       # radio (no rendering) or slam (vanilla and Wi-Fi runs)
+//   set:                               # optional: scene keys for every case, before the axes
+//     access_points.line_from_m: [2, 2]
 //   axes:                              # in order; each key takes each of its values
 //     access_points.count: [10, 20, 40, 70]
 //     access_points.placement: [grid, random, rooms, colinear]
@@ -26,6 +28,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wifislam::study {
@@ -36,7 +39,7 @@ const char* to_string(StudyLevel level);
 enum class AxisKind { kSceneKey, kSlamOption, kFrontend };
 
 struct StudyAxis {
-  std::string key;                  // as written in the file
+  std::string key;  // as written in the file
   AxisKind kind = AxisKind::kSceneKey;
   std::vector<std::string> values;  // scalar texts, in file order
   std::string where;                // file:line:column of the key
@@ -66,6 +69,8 @@ struct StudyFile {
   StudyLevel level = StudyLevel::kRadio;
   std::vector<StudyAxis> axes;
   std::vector<StudyCase> cases;  // the product, or the listed subset, in order
+  /// Scene keys set for every case (key path, value as flow YAML), applied before the axes.
+  std::vector<std::pair<std::string, std::string>> scene_set;
   StudySlamSettings slam;
   /// SHA-256 of the file's bytes: shards and merges refuse databases of another study file.
   std::string file_hash;

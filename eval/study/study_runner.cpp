@@ -59,6 +59,7 @@ Scene case_scene(const StudyFile& study, const StudyCase& c) {
   const std::string source = fmt::format("{} as case {} of {} ({})", study.scene_path.string(),
                                          c.id, study.path.string(), case_label(study, c));
   try {
+    for (const auto& [key, value] : study.scene_set) set_scene_key(root, key, YAML::Load(value));
     for (std::size_t a = 0; a < study.axes.size(); ++a) {
       if (study.axes[a].kind != AxisKind::kSceneKey) continue;
       set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));

@@ -74,7 +74,8 @@ TEST(StudyFile, ShardsPartitionTheCases) {
 
 TEST(StudyFile, MalformedFilesAreLocatedErrors) {
   // Unknown axis key: located on its line, with the closest scene key offered.
-  auto e = parse_error(study_yaml("  access_points.count: [1]\n  access_point.placement: [grid]\n"));
+  auto e =
+      parse_error(study_yaml("  access_points.count: [1]\n  access_point.placement: [grid]\n"));
   EXPECT_NE(e.where().find("s.yaml:7:3"), std::string::npos) << e.what();
   EXPECT_NE(std::string(e.what()).find("did you mean 'access_points.placement'"), std::string::npos)
       << e.what();
@@ -94,8 +95,8 @@ TEST(StudyFile, MalformedFilesAreLocatedErrors) {
   e = parse_error(study_yaml("  frontend: [rgbdslam, orbslam9]\n"));
   EXPECT_NE(std::string(e.what()).find("orbslam9"), std::string::npos);
   // A listed case that misses an axis or names a value the axis does not have.
-  e = parse_error(study_yaml("  seed: [1, 2]\n  access_points.count: [5]\n",
-                             "cases:\n  - {seed: 1}\n"));
+  e = parse_error(
+      study_yaml("  seed: [1, 2]\n  access_points.count: [5]\n", "cases:\n  - {seed: 1}\n"));
   EXPECT_EQ(e.key_path(), "cases[0]");
   e = parse_error(study_yaml("  seed: [1, 2]\n", "cases:\n  - {seed: 3}\n"));
   EXPECT_EQ(e.key_path(), "cases[0].seed");
@@ -121,9 +122,32 @@ TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
       load_study_yaml(study_yaml("  corridors[*].material: [concrete]\n"), "s.yaml");
   const Scene scene = case_scene(materials, materials.cases[0]);
   for (const Corridor& c : scene.corridors) EXPECT_EQ(c.material, WallMaterial::kConcrete);
-  const StudyFile bad_option =
-      load_study_yaml(study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
+  const StudyFile bad_option = load_study_yaml(study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
   EXPECT_THROW(check_cases(bad_option), ParseError);
+}
+
+TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
+  const std::string axes = "  access_points.placement: [colinear]\n  access_points.count: [4, 8]\n";
+  const StudyFile s = load_study_yaml(
+      "version: 1\nname: test\nscene: " + kScene +
+          "\nset:\n  access_points.line_from_m: [2, 0]\n  access_points.line_to_m: [18, 0]\n"
+          "  access_points.count: 99\naxes:\n" +
+          axes,
+      "s.yaml");
+  ASSERT_EQ(s.cases.size(), 2u);
+  const Scene scene = case_scene(s, s.cases[1]);
+  EXPECT_EQ(scene.access_points.line_from_m, Eigen::Vector2d(2, 0));
+  EXPECT_EQ(scene.access_points.line_to_m, Eigen::Vector2d(18, 0));
+  EXPECT_EQ(scene.access_points.count, 8);  // the axis wins over `set`
+  // An unknown key is located, with the closest scene key offered; a mapping value is refused.
+  auto e = parse_error("version: 1\nname: t\nscene: " + kScene +
+                       "\nset:\n  access_points.line_too_m: [1, 1]\naxes:\n" + axes);
+  EXPECT_NE(e.where().find("s.yaml:5:3"), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("did you mean 'access_points.line_to_m'"), std::string::npos)
+      << e.what();
+  e = parse_error("version: 1\nname: t\nscene: " + kScene +
+                  "\nset:\n  access_points.line_to_m: {x: 1}\naxes:\n" + axes);
+  EXPECT_EQ(e.key_path(), "set.access_points.line_to_m");
 }
 
 }  // namespace
