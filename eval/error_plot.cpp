@@ -3,22 +3,11 @@
 
 #include <fmt/format.h>
 
+#include "eval/line_chart.hpp"
 #include "eval/plot_canvas.hpp"
 #include "eval/plots.hpp"
 
 namespace wifislam::eval {
-
-namespace {
-/// A "nice" tick step (1, 2 or 5 x 10^k) giving about `target` ticks over `range`.
-double tick_step(double range, int target) {
-  const double raw = range / std::max(1, target);
-  const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-  for (double m : {1.0, 2.0, 5.0, 10.0}) {
-    if (raw <= m * magnitude) return m * magnitude;
-  }
-  return 10 * magnitude;
-}
-}  // namespace
 
 void plot_error_along_path(const std::filesystem::path& path, const RunEvaluation& ev) {
   constexpr int kWidth = 1000, kHeight = 420;

@@ -5,16 +5,23 @@
 #include <memory>
 
 #include "sim/generate/generation_pipeline.hpp"
+#include "sim/site/site.hpp"
 #include "slam/wifi/pause_signature_tracker.hpp"
 #include "slam/wifi/signature_similarity.hpp"
 #include "slam/wifi/wifi_cluster_map.hpp"
 
 namespace wifislam::study {
 
-std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOptions& wifi) {
+std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOptions& wifi,
+                                         std::vector<slam::AccessPointKey>* ap_keys) {
   GenerateOptions options;
   options.images = false;
   GenerationPipeline pipeline(scene, options);
+  if (ap_keys) {
+    ap_keys->clear();
+    for (const AccessPoint& ap : pipeline.site().access_points())
+      ap_keys->push_back(ap.base_mac().value);
+  }
   slam::PauseSignatureTracker tracker(wifi);
   std::vector<PauseSample> out;
   int pause = 0;
@@ -61,24 +68,24 @@ RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
   r.far_similar_share = far ? static_cast<double>(far_similar) / far : 0.0;
   r.aps_heard_per_pause = pauses.empty() ? 0.0 : static_cast<double>(heard) / pauses.size();
 
-  std::optional<std::pair<double, double>> above;  // (bin centre, median) last at/above threshold
+  // Medians of the bins with enough pairs, nearest first.
+  std::vector<std::pair<double, double>> medians;  // (bin centre, median)
   for (auto& [bin, values] : bins) {
     if (static_cast<int>(values.size()) < kMinPairsPerBin) continue;
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
-    const double median = n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-    const double centre_m = bin + 0.5;
-    if (median >= wifi.similarity) {
-      above = {centre_m, median};
-      continue;
-    }
-    if (!above) {
-      r.resolution_m = centre_m;  // already below in the first bin with data
-    } else {
-      const double t = (above->second - wifi.similarity) / (above->second - median);
-      r.resolution_m = above->first + t * (centre_m - above->first);
-    }
-    break;
+    medians.emplace_back(bin + 0.5,
+                         n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]));
+  }
+  // The crossing after the last bin at or above the threshold: beyond it places stay apart.
+  std::size_t last_above = medians.size();
+  for (std::size_t i = 0; i < medians.size(); ++i)
+    if (medians[i].second >= wifi.similarity) last_above = i;
+  if (last_above + 1 < medians.size()) {
+    const auto& [above_m, above] = medians[last_above];
+    const auto& [below_m, below] = medians[last_above + 1];
+    const double t = (above - wifi.similarity) / (above - below);
+    r.resolution_m = above_m + t * (below_m - above_m);
   }
 
   slam::WifiClusterMap clusters(wifi.similarity, wifi.floor_dbm);

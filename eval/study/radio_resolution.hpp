@@ -7,11 +7,14 @@
 // true distance.
 //
 // Metrics (the similarity threshold is the SLAM's wifi_similarity):
-//  - resolution_m: the distance at which the median similarity of pause pairs falls below the
-//    threshold. Pairs are binned by distance (1 m bins, at least kMinPairsPerBin pairs); the
-//    crossing is interpolated linearly between the centres of the last bin at or above the
-//    threshold and the first below it. Smaller is better: places that far apart are told apart.
-//    Absent (nullopt) when no bin falls below it (the route's places all look alike).
+//  - resolution_m: the distance beyond which pause pairs stay told apart: pairs are binned by
+//    distance (1 m bins, at least kMinPairsPerBin pairs), and the crossing is interpolated
+//    linearly between the centres of the last bin whose median similarity is at or above the
+//    threshold and the bin after it. Smaller is better. The last such bin, not the first below
+//    the threshold, so that far look-alikes (mirrored corridors, co-linear APs) count against a
+//    placement, and pairs that are dissimilar only because neither pause heard an AP do not
+//    count for it. Absent (nullopt) when no bin is at or above the threshold (not even the
+//    nearest places are recognised) or the farthest bin still is (places never look different).
 //  - near_similar_share: pairs closer than 4 m that count as similar (higher is better: the
 //    same place is recognised);
 //  - far_similar_share: pairs farther than 12 m that count as similar (lower is better: the
@@ -39,8 +42,10 @@ struct PauseSample {
   slam::WifiSignature signature;
 };
 
-/// The route's pauses with their signatures, simulated in memory (no images).
-std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOptions& wifi);
+/// The route's pauses with their signatures, simulated in memory (no images). `ap_keys`, when
+/// given, receives each access point's signature key in the scene's AP order (ids 0..n-1).
+std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOptions& wifi,
+                                         std::vector<slam::AccessPointKey>* ap_keys = nullptr);
 
 struct RadioResolution {
   int pauses = 0;

@@ -54,8 +54,7 @@ class Statement {
       rc = sqlite3_bind_double(stmt_, index, *d);
     } else {
       const std::string& s = std::get<std::string>(value);
-      rc = sqlite3_bind_text(stmt_, index, s.c_str(), static_cast<int>(s.size()),
-                             SQLITE_TRANSIENT);
+      rc = sqlite3_bind_text(stmt_, index, s.c_str(), static_cast<int>(s.size()), SQLITE_TRANSIENT);
     }
     if (rc != SQLITE_OK) sqlite_failure(db_, "SQLite: binding a value");
   }
@@ -83,6 +82,26 @@ class Statement {
     }
   }
   std::int64_t int64(int column) const { return sqlite3_column_int64(stmt_, column); }
+  /// The first `n` columns of the current row, typed as stored.
+  std::vector<SqlValue> values(std::size_t n) const {
+    std::vector<SqlValue> row;
+    for (int c = 0; c < static_cast<int>(n); ++c) {
+      switch (sqlite3_column_type(stmt_, c)) {
+        case SQLITE_NULL:
+          row.emplace_back(std::monostate{});
+          break;
+        case SQLITE_INTEGER:
+          row.emplace_back(std::int64_t{sqlite3_column_int64(stmt_, c)});
+          break;
+        case SQLITE_FLOAT:
+          row.emplace_back(sqlite3_column_double(stmt_, c));
+          break;
+        default:
+          row.emplace_back(text(c));
+      }
+    }
+    return row;
+  }
 
  private:
   sqlite3* db_;
@@ -136,7 +155,8 @@ std::optional<StudyIdentity> identity_from(sqlite3* db) {
     if (key == "software_version") id.software_version = value;
     if (key == "level") id.level = value;
     if (key == "axes") {
-      for (const auto& a : nlohmann::json::parse(value)) id.axis_keys.push_back(a.get<std::string>());
+      for (const auto& a : nlohmann::json::parse(value))
+        id.axis_keys.push_back(a.get<std::string>());
     }
   }
   return id;
@@ -184,13 +204,14 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
     const StudyIdentity mine = identity_of(study);
     if (const auto existing = identity_from(db_)) {
       if (!(*existing == mine)) {
-        throw InvalidInputError(fmt::format(
-            "{}: a study database of study '{}', not of {}: {}", path.string(), existing->name,
-            study.path.string(), difference(*existing, mine)));
+        throw InvalidInputError(fmt::format("{}: a study database of study '{}', not of {}: {}",
+                                            path.string(), existing->name, study.path.string(),
+                                            difference(*existing, mine)));
       }
       return;
     }
-    std::string columns = "case_id TEXT NOT NULL, case_index INTEGER NOT NULL, variant TEXT NOT NULL";
+    std::string columns =
+        "case_id TEXT NOT NULL, case_index INTEGER NOT NULL, variant TEXT NOT NULL";
     for (const StudyAxis& a : study.axes) columns += ", " + quote_identifier(column_name(a.key));
     for (const std::string& m : metric_columns) columns += ", " + quote_identifier(m);
     columns += ", software_version TEXT, scene_hash TEXT, PRIMARY KEY (case_id, variant)";
@@ -333,14 +354,17 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
       }
       std::string differs;
       for (const std::string& c : columns) {
-        differs += (differs.empty() ? "" : " OR ") + fmt::format("s.{0} IS NOT m.{0}", quote_identifier(c));
+        differs += (differs.empty() ? "" : " OR ") +
+                   fmt::format("s.{0} IS NOT m.{0}", quote_identifier(c));
       }
       Statement conflicts(db,
                           "SELECT s.case_id FROM shard.results s JOIN main.results m "
-                          "ON s.case_id = m.case_id AND s.variant = m.variant WHERE " + differs);
+                          "ON s.case_id = m.case_id AND s.variant = m.variant WHERE " +
+                              differs);
       if (conflicts.step()) {
-        throw InvalidInputError(fmt::format("{}: case {} differs from the same case in another shard",
-                                            inputs[i].string(), conflicts.text(0)));
+        throw InvalidInputError(
+            fmt::format("{}: case {} differs from the same case in another shard",
+                        inputs[i].string(), conflicts.text(0)));
       }
       exec_on(db, "BEGIN");
       exec_on(db, "INSERT OR IGNORE INTO main.results SELECT * FROM shard.results");
@@ -359,6 +383,30 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
   sqlite3_close(db);
   fs::rename(partial, out);
   return rows;
+}
+
+int ResultTable::column(const std::string& name) const {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return static_cast<int>(i);
+  return -1;
+}
+
+ResultTable read_results(const fs::path& path) {
+  const auto identity = ResultStore::read_identity(path);
+  if (!identity) throw InvalidInputError(path.string() + ": not a study database");
+  ResultTable table;
+  table.identity = *identity;
+  sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);
+  try {
+    table.columns = result_columns(db, "main", "results");
+    Statement q(db, "SELECT * FROM results ORDER BY case_index, variant");
+    while (q.step()) table.rows.push_back(q.values(table.columns.size()));
+  } catch (...) {
+    sqlite3_close(db);
+    throw;
+  }
+  sqlite3_close(db);
+  return table;
 }
 
 std::vector<std::vector<std::string>> dump_results(const fs::path& path) {

@@ -84,6 +84,17 @@ class ResultStore {
 std::int64_t merge_study_databases(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out);
 
+/// The `results` table as stored: column names and typed values, ordered by case_index, variant.
+struct ResultTable {
+  StudyIdentity identity;
+  std::vector<std::string> columns;
+  std::vector<std::vector<SqlValue>> rows;
+  /// Index of `column`, or -1.
+  int column(const std::string& name) const;
+};
+/// Reads a study database; InvalidInputError when `path` is not one.
+ResultTable read_results(const std::filesystem::path& path);
+
 /// Every row of `results` ordered by case_id, variant, as text (for tests and `study show`).
 std::vector<std::vector<std::string>> dump_results(const std::filesystem::path& path);
 
