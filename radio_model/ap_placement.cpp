@@ -246,6 +246,16 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
   return lift(chosen);
 }
 
+std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan, double spacing_m) {
+  const WallFaceGrid walls(plan, kClearanceM);
+  std::vector<Eigen::Vector2d> spots = candidate_spots(plan, walls, nullptr);
+  if (spots.empty()) spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
+  std::vector<Eigen::Vector2d> kept;
+  for (const Eigen::Vector2d& p : spots)
+    if (far_enough(kept, p, spacing_m)) kept.push_back(p);
+  return kept;
+}
+
 std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan) {
   const AccessPoints& spec = scene.access_points;
   const std::uint64_t seed = access_point_seed(scene);

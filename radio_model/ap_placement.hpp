@@ -28,6 +28,11 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
                                                           const FloorPlan& plan,
                                                           std::uint64_t seed);
 
+/// Where an access point could stand, for placement studies (`wifislam study place`): free-space
+/// spots (rooms, corridors and halls) 0.4 m off the wall faces, as the placements take them,
+/// thinned in lattice order so that no two are closer than `spacing_m`. Deterministic; (x, y) only.
+std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan, double spacing_m);
+
 /// The scene's access points with their BSSIDs; ids 0..n-1 in placement order. A placement that
 /// cannot be done is rejected at the scene's `access_points` key (Scene::reject).
 std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan);

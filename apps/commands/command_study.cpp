@@ -17,15 +17,21 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "eval/study/greedy_placement.hpp"
 #include "eval/study/result_store.hpp"
 #include "eval/study/slurm_job.hpp"
 #include "eval/study/study_file.hpp"
+#include "eval/study/study_plot.hpp"
 #include "eval/study/study_runner.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "slam/slam_options.hpp"
 
 namespace {
 
@@ -141,18 +147,115 @@ void slurm_command(const SlurmArgs& args) {
   fmt::print("wrote {0}/study.sbatch ({1} tasks) and {0}/merge.sbatch\n", folder.string(),
              args.tasks);
   if (!args.submit) {
-    fmt::print("submit: cd {} && J=$(sbatch --parsable study.sbatch) && sbatch "
-               "--dependency=afterok:$J merge.sbatch\n",
-               folder.string());
+    fmt::print(
+        "submit: cd {} && J=$(sbatch --parsable study.sbatch) && sbatch "
+        "--dependency=afterok:$J merge.sbatch\n",
+        folder.string());
     return;
   }
   const std::string array_id =
       run_capturing(fmt::format("sbatch --parsable '{}/study.sbatch' 2>&1", folder.string()));
-  const std::string merge_id = run_capturing(fmt::format(
-      "sbatch --parsable --dependency=afterok:{} '{}/merge.sbatch' 2>&1", array_id,
-      folder.string()));
+  const std::string merge_id =
+      run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} '{}/merge.sbatch' 2>&1",
+                                array_id, folder.string()));
   fmt::print("submitted array job {} and merge job {}; merged database: {}/{}\n", array_id,
              merge_id, folder.string(), files.merged_database.string());
+}
+
+struct PlotArgs {
+  std::string database, output;
+  bool force = false;
+};
+
+void plot_command(const PlotArgs& args) {
+  const study::ResultTable table = study::read_results(args.database);
+  if (table.rows.empty()) {
+    throw InvalidInputError(args.database + ": the study database has no results yet");
+  }
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.database}});
+  AtomicDirectory out(args.output, replace);
+  const study::StudyPlotSummary summary = study::plot_study(table, out.staging_path());
+  out.commit();
+  fmt::print("study {}: {} rows, x = {}{}{} -> {}/ ({} figures, curves.csv)\n", table.identity.name,
+             table.rows.size(), summary.x_axis.empty() ? "(none)" : summary.x_axis,
+             summary.line_axes.empty()
+                 ? ""
+                 : ", lines by " + fmt::format("{}", fmt::join(summary.line_axes, ", ")),
+             summary.pooled_axes.empty()
+                 ? ""
+                 : ", pooled over " + fmt::format("{}", fmt::join(summary.pooled_axes, ", ")),
+             args.output, summary.figures.size());
+}
+
+struct PlaceArgs {
+  std::string scene, output, seed;
+  int budget = 0, random_draws = 5;
+  double spacing_m = 3.0;
+  std::vector<std::string> settings;
+  bool force = false, quiet = false;
+};
+
+std::string optional_m(const std::optional<double>& v) {
+  return v ? fmt::format("{:.3f}", *v) : std::string();
+}
+
+void place_command(const PlaceArgs& args) {
+  const Scene scene = load_scene_file(args.scene);
+  slam::SlamOptions slam_options;
+  for (const std::string& s : args.settings) slam::set_option_assignment(slam_options, s);
+  slam::validate(slam_options);
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.scene}});
+  study::PlacementOptions options;
+  options.budget = args.budget;
+  options.candidate_spacing_m = args.spacing_m;
+  options.random_draws = args.random_draws;
+  options.seed = args.seed.empty() ? scene.seed : std::stoull(args.seed);
+  options.wifi = slam_options.wifi;
+  if (!args.quiet) {
+    options.on_progress = [](const std::string& line) { fmt::print(stderr, "place: {}\n", line); };
+  }
+  const study::PlacementResult result = study::greedy_placement(scene, options);
+
+  AtomicDirectory out(args.output, replace);
+  std::string csv =
+      "count,x_m,y_m,z_m,resolution_m,near_similar_share,far_similar_share,aps_heard_per_pause,"
+      "random_resolution_m,random_near_similar_share,random_far_similar_share\n";
+  std::string yaml = fmt::format(
+      "# {} access points placed greedily on {} by `wifislam study place` (candidates every {} m,\n"
+      "# wifi_similarity {}); paste into the scene in place of its access_points block.\n"
+      "access_points:\n  placement: explicit\n  list:\n",
+      result.steps.size(), args.scene, args.spacing_m, options.wifi.similarity);
+  fmt::print("{:>5}  {:>16}  {:>12}  {:>8}  {:>8}  {:>12}  {:>8}\n", "APs", "added at (x, y)",
+             "resolution", "near", "far", "random res.", "far");
+  for (const study::PlacementStep& step : result.steps) {
+    const Eigen::Vector3d& p = result.candidates[static_cast<std::size_t>(step.candidate)];
+    csv += fmt::format("{},{:.2f},{:.2f},{:.2f},{},{:.4f},{:.4f},{:.2f},{},{:.4f},{:.4f}\n",
+                       step.count, p.x(), p.y(), p.z(), optional_m(step.greedy.resolution_m),
+                       step.greedy.near_similar_share, step.greedy.far_similar_share,
+                       step.greedy.aps_heard_per_pause, optional_m(step.random_resolution_m),
+                       step.random_near_similar_share, step.random_far_similar_share);
+    yaml += fmt::format("    - {{position_m: [{:.2f}, {:.2f}, {:.2f}]}}\n", p.x(), p.y(), p.z());
+    const auto metres = [](const std::optional<double>& v) {
+      return v ? fmt::format("{:.1f} m", *v) : std::string("none");
+    };
+    fmt::print("{:>5}  {:>16}  {:>12}  {:>8.3f}  {:>8.3f}  {:>12}  {:>8.3f}\n", step.count,
+               fmt::format("({:.1f}, {:.1f})", p.x(), p.y()), metres(step.greedy.resolution_m),
+               step.greedy.near_similar_share, step.greedy.far_similar_share,
+               metres(step.random_resolution_m), step.random_far_similar_share);
+  }
+  fmt::print("the scene's own {} access points: resolution {}, far pairs similar {:.3f}\n",
+             result.scene_access_points,
+             result.scene_own.resolution_m ? fmt::format("{:.1f} m", *result.scene_own.resolution_m)
+                                           : std::string("none"),
+             result.scene_own.far_similar_share);
+  write_file_atomic(out.staging_path() / "placement.csv", csv);
+  write_file_atomic(out.staging_path() / "access_points.yaml", yaml);
+  study::plot_placement(result, scene.name, out.staging_path());
+  out.commit();
+  fmt::print(
+      "{} candidates, {} pauses -> {}/ (placement.csv, access_points.yaml, placement and "
+      "resolution figures)\n",
+      result.candidates.size(), result.pause_positions_m.size(), args.output);
 }
 
 }  // namespace
@@ -197,8 +300,9 @@ WIFISLAM_COMMAND(study, 70) {
     run->add_option("--shard", args->shard,
                     "i/N: run the cases whose index is i modulo N (0 <= i < N)")
         ->capture_default_str();
-    run->add_option("--jobs", args->jobs,
-                    "Radio cases (or a SLAM case's two runs) in parallel; results do not depend on it")
+    run->add_option(
+           "--jobs", args->jobs,
+           "Radio cases (or a SLAM case's two runs) in parallel; results do not depend on it")
         ->capture_default_str()
         ->check(CLI::PositiveNumber);
     run->add_flag("--force", args->force, "Replace a database of another study");
@@ -214,8 +318,8 @@ WIFISLAM_COMMAND(study, 70) {
     auto inputs = std::make_shared<std::vector<std::string>>();
     auto output = std::make_shared<std::string>();
     auto force = std::make_shared<bool>(false);
-    CLI::App* merge = app->add_subcommand(
-        "merge", "Union shard databases of one study into one database");
+    CLI::App* merge =
+        app->add_subcommand("merge", "Union shard databases of one study into one database");
     merge->add_option("shards", *inputs, "Shard databases")->required();
     merge->add_option("-o,--output", *output, "Merged database (a new file)")->required();
     merge->add_flag("--force", *force, "Replace an existing study database");
@@ -225,8 +329,9 @@ WIFISLAM_COMMAND(study, 70) {
       std::error_code ec;
       if (fs::exists(*output, ec)) {
         if (!study::ResultStore::read_identity(*output)) {
-          throw InvalidInputError(*output + ": exists and is not a study database; refusing to "
-                                            "replace it (even with --force)");
+          throw InvalidInputError(*output +
+                                  ": exists and is not a study database; refusing to "
+                                  "replace it (even with --force)");
         }
         if (!*force) throw InvalidInputError(*output + ": exists; give --force to replace it");
       }
@@ -249,12 +354,75 @@ WIFISLAM_COMMAND(study, 70) {
         ->check(CLI::Range(1, 1024));
     slurm->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
     slurm->add_option("--time", args->time_limit, "Time limit per task, e.g. 02:00:00");
-    slurm->add_option("-o,--output", args->output,
-                      "Job folder: study.sbatch, merge.sbatch, shards/, logs/, and the merged\n"
-                      "database once the merge job ran. On a cluster, a path every node sees")
+    slurm
+        ->add_option("-o,--output", args->output,
+                     "Job folder: study.sbatch, merge.sbatch, shards/, logs/, and the merged\n"
+                     "database once the merge job ran. On a cluster, a path every node sees")
         ->required();
     slurm->add_flag("--submit", args->submit, "Submit the array, then the merge (afterok)");
     slurm->add_flag("--force", args->force, "Replace an existing job folder of this tool");
     slurm->callback([args] { slurm_command(*args); });
+  }
+  {
+    auto args = std::make_shared<PlotArgs>();
+    CLI::App* plot = app->add_subcommand(
+        "plot", "Draw a study database's curves (PNG and SVG, one figure per metric)");
+    plot->add_option("database", args->database, "Study database (study run or merge)")
+        ->required()
+        ->check(CLI::ExistingFile);
+    plot->add_option("-o,--output", args->output, "Folder for the figures and curves.csv")
+        ->required();
+    plot->add_flag("--force", args->force, "Replace an existing output folder of this tool");
+    plot->footer(
+        "x is access_points.count or appearance.aliasing when the study sweeps one, else its "
+        "first\n"
+        "numeric axis; seeds are pooled (median, band min-max); every other swept axis and the\n"
+        "variant (vanilla dashed, Wi-Fi solid) split the lines, so placements or wall materials\n"
+        "stand side by side. curves.csv holds every point: metric, line, x, cases, median, min, "
+        "max.");
+    plot->callback([args] { plot_command(*args); });
+  }
+  {
+    auto args = std::make_shared<PlaceArgs>();
+    CLI::App* place = app->add_subcommand(
+        "place",
+        "Greedy access-point placement: add APs one at a time, each at the candidate position\n"
+        "(rooms, corridors, halls) that best resolves places along the route, next to the same\n"
+        "numbers of APs placed at random among the same candidates (radio level, no rendering)");
+    place->add_option("scene", args->scene, "Scene file (YAML): the plan, route and radio")
+        ->required();
+    place->add_option("--budget", args->budget, "Access points to place")
+        ->required()
+        ->check(CLI::Range(1, study::kMaxPlacementCandidates));
+    place
+        ->add_option("-o,--output", args->output,
+                     "Folder: placement.csv, access_points.yaml (a scene block),\n"
+                     "placement.png/.svg (positions), resolution.png/.svg (greedy vs random)")
+        ->required();
+    place->add_option("--spacing", args->spacing_m, "Candidate positions no closer than this [m]")
+        ->capture_default_str()
+        ->check(CLI::Range(0.5, 1000.0));
+    place
+        ->add_option("--random-draws", args->random_draws,
+                     "Random placements per count (their median is reported)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000));
+    place->add_option("--seed", args->seed, "Seed of the random placements (default: the scene's)")
+        ->check(cli::kSeedValidator);
+    place->add_option(
+        "--set", args->settings,
+        "SLAM option key=value for the Wi-Fi module, e.g. --set wifi_similarity=0.85");
+    place->add_flag("--force", args->force, "Replace an existing output folder of this tool");
+    place->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+    place->footer(
+        "Resolution: the distance beyond which the median similarity of the route's pause pairs\n"
+        "stays below wifi_similarity (smaller tells closer places apart; 'none': places never "
+        "look\n"
+        "different, or not even the nearest are recognised, as with one AP). Each step minimises\n"
+        "it, then the share of pairs over\n"
+        "12 m counted similar, then maximises the share under 4 m. Every candidate's scans are\n"
+        "simulated once and each placement keeps its APs' readings, so greedy and random see the\n"
+        "same draws.");
+    place->callback([args] { place_command(*args); });
   }
 }
