@@ -10,11 +10,12 @@
 // Evaluation, at radio level (radio_resolution.hpp): the scene is simulated once with an access
 // point at every candidate (placement explicit), so each candidate's readings at each pause are
 // drawn once; a placement's pause signatures are those readings restricted to its access points.
-// That is exact for this radio model, where an access point's readings do not depend on which
-// other access points exist (each radio's fading, beacons and shadowing have streams of their
-// own; nothing models channel contention), and it makes every placement see the same draws, so
-// greedy and random differ by where the access points stand, not by luck of the draws.
-//
+// In this radio model an access point's readings are independent of which other access points
+// exist (nothing models channel contention), so the restriction has the distribution of a scene
+// with only those access points; it is not that scene's draws bit for bit (the per-scan noise
+// stream and the shadowing streams are keyed by scan time and AP id, not by position). It makes
+// every placement see the same draws, so greedy and random differ by where the access points
+// stand, not by luck of the draws.
 // Objective, lexicographic: the signature resolution (smaller is better; absent counts as
 // infinitely coarse), then the share of far (> 12 m) pairs counted similar (smaller), then the
 // share of near (< 4 m) pairs counted similar (larger), then the candidate's index (the lattice
