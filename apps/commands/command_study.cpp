@@ -218,36 +218,39 @@ void place_command(const PlaceArgs& args) {
 
   AtomicDirectory out(args.output, replace);
   std::string csv =
-      "count,x_m,y_m,z_m,resolution_m,near_similar_share,far_similar_share,aps_heard_per_pause,"
-      "random_resolution_m,random_near_similar_share,random_far_similar_share\n";
+      "count,x_m,y_m,z_m,error,resolution_m,near_similar_share,far_similar_share,"
+      "aps_heard_per_pause,random_error,random_resolution_m,random_near_similar_share,"
+      "random_far_similar_share\n";
   std::string yaml = fmt::format(
-      "# {} access points placed greedily on {} by `wifislam study place` (candidates every {} m,\n"
-      "# wifi_similarity {}); paste into the scene in place of its access_points block.\n"
+      "# {} access points placed greedily on {} by `wifislam study place` (candidates every {} "
+      "m,\n# wifi_similarity {}); paste into the scene in place of its access_points block.\n"
       "access_points:\n  placement: explicit\n  list:\n",
       result.steps.size(), args.scene, args.spacing_m, options.wifi.similarity);
-  fmt::print("{:>5}  {:>16}  {:>12}  {:>8}  {:>8}  {:>12}  {:>8}\n", "APs", "added at (x, y)",
-             "resolution", "near", "far", "random res.", "far");
+  const auto metres = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.1f} m", *v) : std::string("none");
+  };
+  fmt::print("{:>5}  {:>16}  {:>7}  {:>10}  {:>6}  {:>6}  {:>12}  {:>12}\n", "APs",
+             "added at (x, y)", "error", "resolution", "near", "far", "random error",
+             "random res.");
   for (const study::PlacementStep& step : result.steps) {
     const Eigen::Vector3d& p = result.candidates[static_cast<std::size_t>(step.candidate)];
-    csv += fmt::format("{},{:.2f},{:.2f},{:.2f},{},{:.4f},{:.4f},{:.2f},{},{:.4f},{:.4f}\n",
-                       step.count, p.x(), p.y(), p.z(), optional_m(step.greedy.resolution_m),
-                       step.greedy.near_similar_share, step.greedy.far_similar_share,
-                       step.greedy.aps_heard_per_pause, optional_m(step.random_resolution_m),
-                       step.random_near_similar_share, step.random_far_similar_share);
+    csv += fmt::format(
+        "{},{:.2f},{:.2f},{:.2f},{:.4f},{},{:.4f},{:.4f},{:.2f},{:.4f},{},{:.4f},{:.4f}\n",
+        step.count, p.x(), p.y(), p.z(), step.greedy_error, optional_m(step.greedy.resolution_m),
+        step.greedy.near_similar_share, step.greedy.far_similar_share,
+        step.greedy.aps_heard_per_pause, step.random_error, optional_m(step.random_resolution_m),
+        step.random_near_similar_share, step.random_far_similar_share);
     yaml += fmt::format("    - {{position_m: [{:.2f}, {:.2f}, {:.2f}]}}\n", p.x(), p.y(), p.z());
-    const auto metres = [](const std::optional<double>& v) {
-      return v ? fmt::format("{:.1f} m", *v) : std::string("none");
-    };
-    fmt::print("{:>5}  {:>16}  {:>12}  {:>8.3f}  {:>8.3f}  {:>12}  {:>8.3f}\n", step.count,
-               fmt::format("({:.1f}, {:.1f})", p.x(), p.y()), metres(step.greedy.resolution_m),
-               step.greedy.near_similar_share, step.greedy.far_similar_share,
-               metres(step.random_resolution_m), step.random_far_similar_share);
+    fmt::print("{:>5}  {:>16}  {:>7.3f}  {:>10}  {:>6.3f}  {:>6.3f}  {:>12.3f}  {:>12}\n",
+               step.count, fmt::format("({:.1f}, {:.1f})", p.x(), p.y()), step.greedy_error,
+               metres(step.greedy.resolution_m), step.greedy.near_similar_share,
+               step.greedy.far_similar_share, step.random_error, metres(step.random_resolution_m));
   }
-  fmt::print("the scene's own {} access points: resolution {}, far pairs similar {:.3f}\n",
-             result.scene_access_points,
-             result.scene_own.resolution_m ? fmt::format("{:.1f} m", *result.scene_own.resolution_m)
-                                           : std::string("none"),
-             result.scene_own.far_similar_share);
+  fmt::print(
+      "the scene's own {} access points: error {:.3f}, resolution {}, near {:.3f}, far {:.3f}\n",
+      result.scene_access_points, study::placement_error(result.scene_own),
+      metres(result.scene_own.resolution_m), result.scene_own.near_similar_share,
+      result.scene_own.far_similar_share);
   write_file_atomic(out.staging_path() / "placement.csv", csv);
   write_file_atomic(out.staging_path() / "access_points.yaml", yaml);
   study::plot_placement(result, scene.name, out.staging_path());
@@ -387,7 +390,7 @@ WIFISLAM_COMMAND(study, 70) {
     CLI::App* place = app->add_subcommand(
         "place",
         "Greedy access-point placement: add APs one at a time, each at the candidate position\n"
-        "(rooms, corridors, halls) that best resolves places along the route, next to the same\n"
+        "(rooms, corridors, halls) that best tells places along the route apart, next to the same\n"
         "numbers of APs placed at random among the same candidates (radio level, no rendering)");
     place->add_option("scene", args->scene, "Scene file (YAML): the plan, route and radio")
         ->required();
@@ -397,7 +400,8 @@ WIFISLAM_COMMAND(study, 70) {
     place
         ->add_option("-o,--output", args->output,
                      "Folder: placement.csv, access_points.yaml (a scene block),\n"
-                     "placement.png/.svg (positions), resolution.png/.svg (greedy vs random)")
+                     "placement.png/.svg (positions), error.png/.svg and resolution.png/.svg\n"
+                     "(greedy vs random)")
         ->required();
     place->add_option("--spacing", args->spacing_m, "Candidate positions no closer than this [m]")
         ->capture_default_str()

@@ -52,10 +52,13 @@ T median_of(std::vector<T> v) {
 
 }  // namespace
 
-bool resolves_better(const RadioResolution& a, const RadioResolution& b) {
-  if (coarseness(a) != coarseness(b)) return coarseness(a) < coarseness(b);
-  if (a.far_similar_share != b.far_similar_share) return a.far_similar_share < b.far_similar_share;
-  return a.near_similar_share > b.near_similar_share;
+double placement_error(const RadioResolution& r) {
+  return (1.0 - r.near_similar_share) + r.far_similar_share;
+}
+
+bool places_better(const RadioResolution& a, const RadioResolution& b) {
+  if (placement_error(a) != placement_error(b)) return placement_error(a) < placement_error(b);
+  return coarseness(a) < coarseness(b);
 }
 
 PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& options) {
@@ -124,7 +127,7 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
       chosen[c] = true;
       const RadioResolution r = radio_resolution(restrict_to(pauses, keys, chosen), options.wifi);
       chosen[c] = false;
-      if (best < 0 || resolves_better(r, best_r)) {
+      if (best < 0 || places_better(r, best_r)) {
         best = static_cast<int>(c);
         best_r = r;
       }
@@ -134,9 +137,10 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
     step.count = k;
     step.candidate = best;
     step.greedy = best_r;
+    step.greedy_error = placement_error(best_r);
 
     // Random placements of k candidates.
-    std::vector<double> resolution, far, near;
+    std::vector<double> error, resolution, far, near;
     for (int draw = 0; draw < options.random_draws; ++draw) {
       Rng rng = Rng::stream(options.seed, fmt::format("study/place/random/{}/{}", k, draw));
       std::vector<int> order(n);
@@ -150,6 +154,7 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
       }
       const RadioResolution r =
           radio_resolution(restrict_to(pauses, keys, random_set), options.wifi);
+      error.push_back(placement_error(r));
       resolution.push_back(coarseness(r));
       far.push_back(r.far_similar_share);
       near.push_back(r.near_similar_share);
@@ -157,16 +162,19 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
     if (!resolution.empty()) {
       const double m = median_of(resolution);
       if (std::isfinite(m)) step.random_resolution_m = m;
+      step.random_error = median_of(error);
       step.random_far_similar_share = median_of(far);
       step.random_near_similar_share = median_of(near);
     }
     const auto text = [](const std::optional<double>& v) {
       return v ? fmt::format("{:.1f} m", *v) : std::string("none");
     };
-    progress(fmt::format("{:>3} APs: +({:.1f}, {:.1f}) resolution {} (random: {})", k,
-                         spots[static_cast<std::size_t>(best)].x(),
-                         spots[static_cast<std::size_t>(best)].y(), text(best_r.resolution_m),
-                         text(step.random_resolution_m)));
+    progress(
+        fmt::format("{:>3} APs: +({:.1f}, {:.1f}) error {:.3f}, resolution {} (random: {:.3f}, "
+                    "{})",
+                    k, spots[static_cast<std::size_t>(best)].x(),
+                    spots[static_cast<std::size_t>(best)].y(), step.greedy_error,
+                    text(best_r.resolution_m), step.random_error, text(step.random_resolution_m)));
     result.steps.push_back(step);
   }
   return result;

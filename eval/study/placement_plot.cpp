@@ -1,6 +1,7 @@
 // Figures of `wifislam study place` (greedy_placement.hpp): the chosen positions over the plan,
 // and the resolution after each addition, greedy against random.
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include <fmt/format.h>
@@ -70,24 +71,19 @@ void draw_positions(const fs::path& path, const PlacementResult& result,
   });
 }
 
-void draw_resolution(const fs::path& path, const PlacementResult& result,
-                     const std::string& scene_name) {
+/// One quantity after each addition, greedy (solid) against the random median (dashed).
+void draw_curve(const fs::path& path, const std::string& title, const std::string& subtitle,
+                const std::string& y_label, const PlacementResult& result,
+                const std::function<double(const PlacementStep&, bool random)>& value) {
   eval::LineChart chart;
-  chart.title = fmt::format("{}: signature resolution against access points placed", scene_name);
-  chart.subtitle = fmt::format(
-      "greedy against random placements of the same candidates (median); the scene's own {} "
-      "access points: {}",
-      result.scene_access_points,
-      result.scene_own.resolution_m ? fmt::format("{:.1f} m", *result.scene_own.resolution_m)
-                                    : std::string("none"));
+  chart.title = title;
+  chart.subtitle = subtitle;
   chart.x_label = "access points";
-  chart.y_label = "signature resolution [m] (lower is better)";
+  chart.y_label = y_label;
   eval::ChartSeries greedy{"greedy", eval::category_colour(3), false, {}};
   eval::ChartSeries random{"random (median)", eval::category_colour(0), true, {}};
-  const double none = std::numeric_limits<double>::quiet_NaN();
   for (const PlacementStep& s : result.steps) {
-    const double g = s.greedy.resolution_m.value_or(none);
-    const double r = s.random_resolution_m.value_or(none);
+    const double g = value(s, false), r = value(s, true);
     greedy.points.push_back({static_cast<double>(s.count), g, g, g});
     random.points.push_back({static_cast<double>(s.count), r, r, r});
   }
@@ -103,8 +99,28 @@ std::vector<fs::path> plot_placement(const PlacementResult& result, const std::s
   for (const char* extension : {".png", ".svg"}) {
     files.push_back(folder / (std::string("placement") + extension));
     draw_positions(files.back(), result, scene_name);
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    files.push_back(folder / (std::string("error") + extension));
+    draw_curve(
+        files.back(), fmt::format("{}: placement error against access points placed", scene_name),
+        fmt::format("(1 - pairs < 4 m similar) + pairs > 12 m similar, greedy against "
+                    "random placements of the same candidates; the scene's own {} APs: {:.3f}",
+                    result.scene_access_points, placement_error(result.scene_own)),
+        "placement error (lower is better)", result, [](const PlacementStep& s, bool random) {
+          return random ? s.random_error : s.greedy_error;
+        });
     files.push_back(folder / (std::string("resolution") + extension));
-    draw_resolution(files.back(), result, scene_name);
+    draw_curve(files.back(),
+               fmt::format("{}: signature resolution against access points placed", scene_name),
+               fmt::format("greedy against random placements of the same candidates (median); the "
+                           "scene's own {} APs: {}",
+                           result.scene_access_points,
+                           result.scene_own.resolution_m
+                               ? fmt::format("{:.1f} m", *result.scene_own.resolution_m)
+                               : std::string("none")),
+               "signature resolution [m]", result, [none](const PlacementStep& s, bool random) {
+                 return (random ? s.random_resolution_m : s.greedy.resolution_m).value_or(none);
+               });
   }
   return files;
 }
