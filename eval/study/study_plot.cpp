@@ -193,11 +193,13 @@ StudyPlotSummary plot_study(const ResultTable& table, const fs::path& folder) {
     chart.x_label = x_axis >= 0 ? axes[static_cast<std::size_t>(x_axis)].key : "";
     chart.y_label = metric.label;
     chart.x_categories = categories;
-    // Colours by the line axes' values; Wi-Fi solid, vanilla dashed in one colour.
-    std::map<std::vector<std::size_t>, std::int64_t> colour_index;
+    // Colours by the line axes' values, Wi-Fi solid and vanilla dashed in one colour; with no
+    // line axis, a colour per variant as well.
+    std::map<LineKey, std::int64_t> colour_index;
     for (const auto& [key, by_x] : points) {
+      const LineKey colour_key{key.first, line_axes.empty() ? key.second : std::string()};
       const auto [it, added] =
-          colour_index.emplace(key.first, static_cast<std::int64_t>(colour_index.size()));
+          colour_index.emplace(colour_key, static_cast<std::int64_t>(colour_index.size()));
       eval::ChartSeries series;
       series.label = line_label(key);
       series.colour = eval::category_colour(it->second);
