@@ -71,6 +71,12 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
   const std::vector<PauseSample> own = simulate_pauses(scene, options.wifi);
   result.scene_own = radio_resolution(own, options.wifi);
   for (const PauseSample& p : own) result.pause_positions_m.push_back(p.position_m);
+  if (own.size() < 2) {
+    throw InvalidInputError(fmt::format(
+        "{}: the route has {} Wi-Fi pause(s) (route.pause): a placement needs at least two pauses "
+        "to tell apart",
+        scene.name, own.size()));
+  }
   std::vector<Eigen::Vector2d> spots;
   {
     const Site site(scene);

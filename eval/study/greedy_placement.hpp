@@ -84,7 +84,8 @@ std::vector<std::filesystem::path> plot_placement(const PlacementResult& result,
                                                   const std::string& scene_name,
                                                   const std::filesystem::path& folder);
 
-/// Throws InvalidInputError when the budget exceeds the candidates or the plan has too many.
+/// Throws InvalidInputError when the route has fewer than two Wi-Fi pauses, or the budget exceeds
+/// the candidates, or the plan has too many.
 PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& options);
 
 /// (1 - near_similar_share) + far_similar_share: 0 when every pair under 4 m is similar and no
