@@ -8,46 +8,11 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "slam/match/hamming_distances.hpp"
+
 namespace wifislam::slam::rtabmap {
 
 namespace {
-
-/// Hamming distances of one 32-byte descriptor to `count` consecutive 32-byte words. The inner
-/// loop of the exhaustive search: 4 x 64-bit popcounts per word, compiled for the popcnt
-/// instruction where the CPU has it (x86-64-v2 and later; checked at run time), plain C++
-/// otherwise. Same integers either way.
-void distances_portable(const std::uint64_t* query, const std::uint64_t* words, std::size_t count,
-                        int* out) {
-  for (std::size_t w = 0; w < count; ++w) {
-    const std::uint64_t* word = words + 4 * w;
-    out[w] = std::popcount(query[0] ^ word[0]) + std::popcount(query[1] ^ word[1]) +
-             std::popcount(query[2] ^ word[2]) + std::popcount(query[3] ^ word[3]);
-  }
-}
-
-#if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target("popcnt"))) void distances_with_popcnt(const std::uint64_t* query,
-                                                             const std::uint64_t* words,
-                                                             std::size_t count, int* out) {
-  for (std::size_t w = 0; w < count; ++w) {
-    const std::uint64_t* word = words + 4 * w;
-    out[w] = std::popcount(query[0] ^ word[0]) + std::popcount(query[1] ^ word[1]) +
-             std::popcount(query[2] ^ word[2]) + std::popcount(query[3] ^ word[3]);
-  }
-}
-#endif
-
-void distances_to_words(const std::uint64_t* query, const std::uint64_t* words, std::size_t count,
-                        int* out) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  static const bool has_popcnt = __builtin_cpu_supports("popcnt");
-  if (has_popcnt) {
-    distances_with_popcnt(query, words, count, out);
-    return;
-  }
-#endif
-  distances_portable(query, words, count, out);
-}
 
 std::array<std::uint64_t, 4> packed(const cv::Mat& descriptors, int row) {
   std::array<std::uint64_t, 4> out{};
@@ -71,8 +36,7 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
     const std::array<std::uint64_t, 4> query = packed(descriptors, i);
     // Every word of the dictionary, including those this node founded a moment ago.
     distances.resize(dictionary_ids_.size());
-    distances_to_words(query.data(), dictionary_words_.data(), distances.size(),
-                       distances.data());
+    hamming_distances(query.data(), dictionary_words_.data(), distances.size(), distances.data());
     distance_computations_ += static_cast<std::int64_t>(distances.size());
     int best = std::numeric_limits<int>::max(), second = std::numeric_limits<int>::max();
     WordId best_word = -1;
