@@ -1,0 +1,165 @@
+// `wifislam vocab ...`: the ORB-SLAM family's visual vocabulary (slam/bow/vocabulary_tree.hpp).
+//
+//   vocab train INPUT... -o FILE    train on frames rendered from scene files or read from dataset
+//                                   (or plain TUM) folders
+//   vocab info FILE                 what a vocabulary file holds, and its SHA-256
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
+#include "core/atomic_file.hpp"
+#include "core/dataset_reader.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+#include "sim/generate/generator_stream.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "slam/bow/vocabulary_tree.hpp"
+#include "slam/feature/orb_feature_extractor.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace wifislam;
+
+struct TrainArgs {
+  std::vector<std::string> inputs;
+  std::string output;
+  int branching = 10, depth = 4, max_keypoints = 1000, every = 10;
+  double fps = 1.0;
+  std::int64_t max_frames = -1;
+  std::uint64_t seed = 1;
+  bool force = false, quiet = false;
+};
+
+/// A scene is rendered at --fps; a folder is read, every --every-th frame.
+std::unique_ptr<SensorStream> open_input(const TrainArgs& args, const fs::path& input, int& every) {
+  if (fs::is_directory(input)) {
+    every = args.every;
+    return std::make_unique<DatasetReader>(input);
+  }
+  if (!fs::is_regular_file(input)) {
+    throw IoError(input.string() + ": neither a scene file nor a dataset folder");
+  }
+  GenerateOptions options;
+  options.fps = args.fps;
+  every = 1;
+  return std::make_unique<GeneratorStream>(load_scene_file(input.string()), options);
+}
+
+void train(const TrainArgs& args) {
+  std::vector<fs::path> inputs(args.inputs.begin(), args.inputs.end());
+  check_output_file(args.output, inputs);
+  std::error_code ec;
+  if (fs::exists(args.output, ec) && !args.force) {
+    throw InvalidInputError(args.output + ": exists; give --force to replace it");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  slam::FeatureOptions features;
+  features.max_keypoints = args.max_keypoints;
+  std::vector<cv::Mat> images;
+  for (const fs::path& input : inputs) {
+    int every = 1;
+    std::unique_ptr<SensorStream> stream = open_input(args, input, every);
+    const slam::OrbFeatureExtractor orb(features, stream->intrinsics());
+    std::int64_t frames = 0, used = 0;
+    while (auto event = stream->next()) {
+      const auto* frame = std::get_if<RgbdFrame>(&*event);
+      if (!frame) continue;
+      if (args.max_frames >= 0 && frames >= args.max_frames) break;
+      if (frames++ % every != 0) continue;
+      images.push_back(orb.extract(*frame).descriptors);
+      ++used;
+    }
+    if (!args.quiet) {
+      fmt::print(stderr, "vocab: {}: {} frames, {} used\n", input.string(), frames, used);
+    }
+  }
+  std::size_t descriptors = 0;
+  for (const cv::Mat& m : images) descriptors += static_cast<std::size_t>(m.rows);
+  if (descriptors == 0) throw InvalidInputError("vocab train: the inputs gave no ORB features");
+  slam::bow::VocabularyOptions options;
+  options.branching = args.branching;
+  options.depth = args.depth;
+  options.seed = args.seed;
+  const slam::bow::VocabularyTree tree = slam::bow::VocabularyTree::train(images, options);
+  tree.save(args.output);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print(
+      "vocabulary: {} images, {} descriptors -> {} words ({} nodes, k {}, L {}), {} bytes, "
+      "{:.1f} s -> {}\nsha256 {}\n",
+      images.size(), descriptors, tree.word_count(), tree.node_count(), tree.branching(),
+      tree.depth(), fs::file_size(args.output), seconds, args.output, sha256_file_hex(args.output));
+}
+
+void info(const std::string& file) {
+  const auto start = std::chrono::steady_clock::now();
+  const slam::bow::VocabularyTree tree = slam::bow::VocabularyTree::load(file);
+  const double load_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print(
+      "{}: k {}, L {}, {} words, {} nodes, trained on {} images ({} descriptors); loaded "
+      "in {:.3f} s\nsha256 {}\n",
+      file, tree.branching(), tree.depth(), tree.word_count(), tree.node_count(),
+      tree.training_images(), tree.training_descriptors(), load_s, sha256_file_hex(file));
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(vocab, 75) {
+  CLI::App* app = parent.add_subcommand(
+      "vocab",
+      "Visual vocabularies for the ORB-SLAM front end (a DBoW2-style tree of ORB words with\n"
+      "tf-idf weights): train one, or say what a file holds");
+  app->require_subcommand(1);
+  {
+    auto args = std::make_shared<TrainArgs>();
+    CLI::App* train_app = app->add_subcommand(
+        "train",
+        "Train a vocabulary on ORB features of frames rendered from scene files or read from\n"
+        "dataset or plain TUM RGB-D folders. Train on scenes you will not evaluate on, so no\n"
+        "evaluation sees its own images in training; a vocabulary trained on synthetic frames is\n"
+        "not meant for real images (train one on real frames for those)");
+    train_app->add_option("inputs", args->inputs, "Scene files (YAML) and dataset / TUM folders")
+        ->required();
+    train_app->add_option("-o,--output", args->output, "Vocabulary file (binary)")->required();
+    train_app->add_option("--branching", args->branching, "k: children per node")
+        ->capture_default_str()
+        ->check(CLI::Range(2, 64));
+    train_app->add_option("--depth", args->depth, "L: levels (k^L words at most)")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 10));
+    train_app
+        ->add_option("--max-keypoints", args->max_keypoints,
+                     "ORB features per frame (ORB-SLAM2: 1000)")
+        ->capture_default_str()
+        ->check(CLI::Range(10, 100000));
+    train_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01, 120.0));
+    train_app->add_option("--every", args->every, "Every n-th frame of a folder")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+    train_app->add_option("--max-frames", args->max_frames, "Frames per input (-1: all)")
+        ->capture_default_str()
+        ->check(CLI::Range(std::int64_t{-1}, std::int64_t{100000000}));
+    train_app->add_option("--seed", args->seed, "Seed of the k-means++ seeding")
+        ->capture_default_str()
+        ->check(cli::kSeedValidator);
+    train_app->add_flag("--force", args->force, "Replace an existing file");
+    train_app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+    train_app->callback([args] { train(*args); });
+  }
+  {
+    auto file = std::make_shared<std::string>();
+    CLI::App* info_app = app->add_subcommand("info", "What a vocabulary file holds");
+    info_app->add_option("file", *file, "Vocabulary file")->required();
+    info_app->callback([file] { info(*file); });
+  }
+}
