@@ -1,0 +1,98 @@
+#include "slam/bow/keyframe_database.hpp"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace wifislam::slam::bow {
+
+void KeyframeDatabase::add(KeyframeId keyframe, const BowVector& vector) {
+  if (!vectors_.emplace(keyframe, vector).second) {
+    throw std::logic_error("KeyframeDatabase: keyframe added twice");
+  }
+  for (const auto& [word, weight] : vector) {
+    std::vector<KeyframeId>& list = inverted_[word];
+    list.insert(std::lower_bound(list.begin(), list.end(), keyframe), keyframe);
+  }
+}
+
+void KeyframeDatabase::erase(KeyframeId keyframe) {
+  const auto it = vectors_.find(keyframe);
+  if (it == vectors_.end()) return;
+  for (const auto& [word, weight] : it->second) {
+    std::vector<KeyframeId>& list = inverted_[word];
+    list.erase(std::lower_bound(list.begin(), list.end(), keyframe));
+    if (list.empty()) inverted_.erase(word);
+  }
+  vectors_.erase(it);
+}
+
+std::vector<KeyframeId> KeyframeDatabase::keyframes_with(WordId word) const {
+  const auto it = inverted_.find(word);
+  return it == inverted_.end() ? std::vector<KeyframeId>{} : it->second;
+}
+
+std::vector<LoopCandidate> KeyframeDatabase::loop_candidates(
+    const BowVector& query, const std::vector<KeyframeId>& connected, double min_score,
+    const NeighbourFunction& neighbours) const {
+  last_postings_read_ = 0;
+  const std::set<KeyframeId> excluded(connected.begin(), connected.end());
+  // 1. Keyframes sharing words with the query, and how many.
+  std::map<KeyframeId, int> shared_words;
+  for (const auto& [word, weight] : query) {
+    const auto it = inverted_.find(word);
+    if (it == inverted_.end()) continue;
+    last_postings_read_ += it->second.size();
+    for (KeyframeId k : it->second)
+      if (!excluded.count(k)) ++shared_words[k];
+  }
+  if (shared_words.empty()) return {};
+
+  // 2. Scores of those sharing more than 0.8 x the most shared words.
+  int most = 0;
+  for (const auto& [k, n] : shared_words) most = std::max(most, n);
+  const double min_common = 0.8 * most;
+  std::map<KeyframeId, double> scored;  // every keyframe over min_common (ORB-SLAM2's mLoopScore)
+  std::vector<std::pair<KeyframeId, double>> retained;
+  for (const auto& [k, n] : shared_words) {
+    if (n <= min_common) continue;
+    const double s = l1_score(query, vectors_.at(k));
+    scored[k] = s;
+    if (s >= min_score) retained.emplace_back(k, s);
+  }
+  if (retained.empty()) return {};
+
+  // 3. Groups: each retained keyframe with its scored covisible neighbours.
+  std::vector<LoopCandidate> groups;
+  double best_accumulated = 0.0;
+  for (const auto& [k, s] : retained) {
+    LoopCandidate group{k, s, s};
+    for (KeyframeId n : neighbours(k)) {
+      const auto it = scored.find(n);
+      if (it == scored.end()) continue;
+      group.accumulated_score += it->second;
+      if (it->second > group.score) {
+        group.keyframe = n;
+        group.score = it->second;
+      }
+    }
+    best_accumulated = std::max(best_accumulated, group.accumulated_score);
+    groups.push_back(group);
+  }
+
+  // 4. Groups over 0.75 x the best accumulated score, each representative once.
+  std::sort(groups.begin(), groups.end(), [](const LoopCandidate& a, const LoopCandidate& b) {
+    if (a.accumulated_score != b.accumulated_score)
+      return a.accumulated_score > b.accumulated_score;
+    return a.keyframe < b.keyframe;
+  });
+  std::vector<LoopCandidate> out;
+  std::set<KeyframeId> added;
+  for (const LoopCandidate& g : groups) {
+    if (g.accumulated_score > 0.75 * best_accumulated && added.insert(g.keyframe).second)
+      out.push_back(g);
+  }
+  return out;
+}
+
+}  // namespace wifislam::slam::bow

@@ -1,0 +1,87 @@
+// ORB-SLAM2's loop detection over BoW vectors (slam/bow): the keyframe database's inverted index
+// and DetectLoopCandidates (shared-word cut at 0.8 of the most, minimum score, covisibility groups
+// accumulating their scores, 0.75 of the best group), and the temporal consistency of candidates
+// over three consecutive keyframes, on hand-built vectors whose answers are worked out here.
+#include <gtest/gtest.h>
+
+#include "slam/bow/keyframe_database.hpp"
+#include "slam/bow/loop_consistency.hpp"
+
+namespace wifislam::slam::bow {
+namespace {
+
+BowVector normalised(BowVector v) {
+  l1_normalise(v);
+  return v;
+}
+
+TEST(KeyframeDatabase, InvertedIndexListsTheKeyframesOfEachWordAndForgetsErasedOnes) {
+  KeyframeDatabase db;
+  db.add(5, {{1, 0.5}, {2, 0.5}});
+  db.add(3, {{2, 1.0}});
+  db.add(8, {{1, 1.0}});
+  EXPECT_EQ(db.keyframes_with(1), (std::vector<KeyframeId>{5, 8}));
+  EXPECT_EQ(db.keyframes_with(2), (std::vector<KeyframeId>{3, 5}));
+  EXPECT_TRUE(db.keyframes_with(7).empty());
+  db.erase(5);
+  EXPECT_EQ(db.keyframes_with(1), (std::vector<KeyframeId>{8}));
+  EXPECT_EQ(db.keyframes_with(2), (std::vector<KeyframeId>{3}));
+  EXPECT_FALSE(db.contains(5));
+  EXPECT_THROW(db.add(3, {{4, 1.0}}), std::logic_error);
+}
+
+TEST(KeyframeDatabase, LoopCandidatesFollowDetectLoopCandidates) {
+  const BowVector query = normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}});
+  KeyframeDatabase db;
+  db.add(1, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}}));          // 4 shared, score 1
+  db.add(2, normalised({{1, 1}, {2, 1}, {3, 1}, {9, 1}}));          // 3 shared: not over 3.2
+  db.add(3, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}}));          // connected to the query
+  db.add(4, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 4}}));  // 4 shared, score 0.5
+  db.add(5, normalised({{1, 3}, {2, 3}, {3, 1}, {4, 1}, {6, 2}}));  // 4 shared, score 0.7
+  const auto neighbours = [](KeyframeId k) {
+    if (k == 1) return std::vector<KeyframeId>{5, 2};
+    if (k == 5) return std::vector<KeyframeId>{1};
+    return std::vector<KeyframeId>{};
+  };
+  EXPECT_NEAR(l1_score(query, db.vector_of(4)), 0.5, 1e-12);
+  EXPECT_NEAR(l1_score(query, db.vector_of(5)), 0.7, 1e-12);
+
+  // Scored: 1 (1.0), 4 (0.5), 5 (0.7); 2 shares too few words (2 neighbours 1 but adds nothing).
+  // Groups: 1 + 5 = 1.7 (best 1), 4 = 0.5, 5 + 1 = 1.7 (best 1). Over 0.75 x 1.7: keyframe 1 once.
+  auto candidates = db.loop_candidates(query, {3}, 0.4, neighbours);
+  ASSERT_EQ(candidates.size(), 1u);
+  EXPECT_EQ(candidates[0].keyframe, 1);
+  EXPECT_NEAR(candidates[0].score, 1.0, 1e-12);
+  EXPECT_NEAR(candidates[0].accumulated_score, 1.7, 1e-12);
+  EXPECT_EQ(db.last_postings_read(), 5u + 5u + 5u + 4u);  // words 1, 2, 3 in all five; 4 in four
+
+  // Without the covisibility groups every scored keyframe over 0.75 of the best stands alone.
+  candidates =
+      db.loop_candidates(query, {3}, 0.4, [](KeyframeId) { return std::vector<KeyframeId>{}; });
+  ASSERT_EQ(candidates.size(), 1u);  // 0.7 and 0.5 are not over 0.75
+  candidates =
+      db.loop_candidates(query, {3, 1}, 0.4, [](KeyframeId) { return std::vector<KeyframeId>{}; });
+  ASSERT_EQ(candidates.size(), 1u);  // 5 (0.7); 4 (0.5) is not over 0.525
+  EXPECT_EQ(candidates[0].keyframe, 5);
+  // A minimum score above every score (ORB-SLAM2: the query's covisible keyframes score higher)
+  // leaves nothing.
+  EXPECT_TRUE(db.loop_candidates(query, {3}, 1.01, neighbours).empty());
+  EXPECT_TRUE(db.loop_candidates(normalised({{42, 1}}), {}, 0.0, neighbours).empty());
+}
+
+TEST(LoopConsistency, ACandidateIsAcceptedAfterThreeConsecutiveConsistentQueries) {
+  LoopConsistency consistency;
+  EXPECT_TRUE(consistency.update({{10, {9, 10, 11}}}).empty());   // new group: 0
+  EXPECT_TRUE(consistency.update({{11, {10, 11, 12}}}).empty());  // 1
+  // A look-alike elsewhere starts its own count at 0 beside the consistent one.
+  EXPECT_TRUE(consistency.update({{12, {11, 12, 13}}, {50, {49, 50, 51}}}).empty());  // 2 and 0
+  EXPECT_EQ(consistency.update({{13, {12, 13, 14}}, {51, {50, 51, 52}}}),
+            (std::vector<KeyframeId>{13}));  // 3: enough; the look-alike only 1
+  // A query without candidates forgets every group: counting starts over.
+  EXPECT_TRUE(consistency.update({}).empty());
+  EXPECT_EQ(consistency.kept_groups(), 0u);
+  EXPECT_TRUE(consistency.update({{14, {13, 14, 15}}}).empty());
+}
+
+}  // namespace
+}  // namespace wifislam::slam::bow
