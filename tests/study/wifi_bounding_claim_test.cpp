@@ -3,10 +3,12 @@
 //
 // - On the c_hall twin (the paper's square loop of look-alike corridors, seed 1001, 3 fps, the
 //   whole route): vanilla RGBD-SLAM accepts wrong-place loop closures between far places (true
-//   positions more than 12 m apart) and the Wi-Fi variant far fewer, with a lower trajectory
-//   error and fewer long-term comparisons. Deterministic counters only, fixed seed.
-// - On the twin-corridor scene of `wifislam demo` (two corridors 30 m apart that look alike), two
-//   seeds: the Wi-Fi variant accepts no false loop closure; and the comparison's files.
+//   positions more than 12 m apart) and the Wi-Fi variant none, with a lower trajectory error and
+//   fewer long-term comparisons. Deterministic counters only, fixed seed.
+// - On the twin-corridor scene of `wifislam demo`, two seeds: the comparison's files, paired runs,
+//   and Wi-Fi clusters that tell the corridors apart. With RGBDSLAMv2's 4/4/4 candidates neither
+//   variant closes a loop on that scene (0 scored closures in all four runs), so a false-closure
+//   count there would assert nothing; the claim is tested on c_hall.
 
 #include <gtest/gtest.h>
 
@@ -35,7 +37,7 @@ std::string read_text(const std::filesystem::path& path) {
 
 /// One comparison run (2 seeds x {vanilla, wifi}) checked in one test: ctest runs every test in a
 /// process of its own, so splitting the checks would run the whole comparison once per check.
-TEST(WifiBoundingClaim, WifiBoundingRemovesFalseLoopClosuresAndLowersTrajectoryError) {
+TEST(WifiBoundingClaim, DemoSceneComparisonWritesPairedRunsAndTellsTheCorridorsApart) {
   const std::filesystem::path out = std::filesystem::temp_directory_path() /
                                     ("wifislam_claim_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
@@ -50,18 +52,16 @@ TEST(WifiBoundingClaim, WifiBoundingRemovesFalseLoopClosuresAndLowersTrajectoryE
   const ComparisonResult result = run_comparison({scene}, options, out);
 
   ASSERT_EQ(result.cases.size(), 4u);  // 2 seeds x {vanilla, wifi}
-  std::int64_t wifi_false = 0, wifi_detected = 0;
   for (const ComparisonCase& c : result.cases) {
     const eval::RunEvaluation& e = c.evaluation;
     SCOPED_TRACE(c.run_dir.string());
     EXPECT_GT(e.frames_associated, 700);
     if (c.wifi) {
-      wifi_false += e.false_positives;
-      wifi_detected += e.loop_closures_detected;
       EXPECT_GT(e.wifi_clusters, 2);  // the two corridors and the hall are told apart
+    } else {
+      EXPECT_EQ(e.wifi_clusters, 0);
     }
   }
-  EXPECT_EQ(wifi_false, 0) << "of " << wifi_detected << " loop closures of the Wi-Fi variant";
 
   // The comparison's files: tables, one CSV row per run, every run folder with its evaluation.
   const std::string md = read_text(out / "comparison.md");
@@ -117,9 +117,8 @@ TEST(WifiBoundingClaim, OnTheCHallTwinWifiCutsFarFalseLoopClosuresComparisonsAnd
       static_cast<long long>(long_term(*vanilla)), static_cast<long long>(long_term(*wifi)),
       vanilla->ate_rmse_m, wifi->ate_rmse_m);
   EXPECT_GE(vanilla_far, 1) << "vanilla RGBD-SLAM should fall for the look-alike sides";
-  // The paper says Wi-Fi removes them all; we measure a few left near the 12 m boundary, so the
-  // test asserts the reduction (a tenth or less), and the note reports the gap.
-  EXPECT_LE(wifi_far * 10, vanilla_far);
+  // The paper: Wi-Fi "gets rid of all false loop closures". Measured here: vanilla 98, Wi-Fi 0.
+  EXPECT_EQ(wifi_far, 0);
   EXPECT_LT(long_term(*wifi), long_term(*vanilla));
   EXPECT_LT(wifi->ate_rmse_m, vanilla->ate_rmse_m);
   std::filesystem::remove_all(out);
