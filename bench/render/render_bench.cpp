@@ -4,6 +4,8 @@
 // bare_ms, render_ms (harness render + readback + unpack), sensor_ms, frame_ms (render + sensor),
 // frame_over_bare (the target: <= 1.3) and render_over_bare.
 // bench/render/run.sh runs it with 1 and 2 llvmpipe threads and 5 repetitions.
+// BM_SensorModelOnly and BM_ColorSensorModelOnly time the depth and colour sensor models alone,
+// with their off-by-default parts off and on.
 // WIFISLAM_BENCH_LIGHTS=<n> sets RenderOptions::max_lights of the harness (shading cost per light).
 //
 // llvmpipe reads LP_NUM_THREADS once per process, so run the program once per thread count:
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "core/pose.hpp"
+#include "sim/render/color_sensor_model.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/gl_mesh.hpp"
 #include "sim/render/gl_program.hpp"
@@ -214,17 +217,40 @@ void BM_HarnessVsBare(benchmark::State& state) {
   state.counters["render_over_bare"] = median_of(render_ms) / bare_median;
 }
 
+// The depth sensor model on one rendered view: Arg 0 the defaults, Arg 1 with lateral noise on.
 void BM_SensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work = workload(0);
   RgbdRenderer renderer(k);
   renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
-  const DepthSensorModel sensor(DepthSensorSpec{}, k, work.seed);
+  DepthSensorSpec spec;
+  spec.lateral_noise = state.range(0) == 1;
+  const DepthSensorModel sensor(spec, k, work.seed);
   const RenderedView view = renderer.render(work.poses[5]);
   cv::Mat measured;
   std::int64_t frame = 0;
   for (auto _ : state) {
     sensor.measure(view.depth_m, view.incidence_cos, frame++, measured);
+    benchmark::DoNotOptimize(measured.data);
+  }
+}
+
+// The colour sensor model on one rendered view: Arg 0 both parts off (a copy, what the pipeline
+// did before), 1 noise, 2 auto-exposure, 3 both.
+void BM_ColorSensorModelOnly(benchmark::State& state) {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const Workload& work = workload(0);
+  RgbdRenderer renderer(k);
+  renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
+  ColorSensorSpec spec;
+  spec.noise = (state.range(0) & 1) != 0;
+  spec.auto_exposure = (state.range(0) & 2) != 0;
+  ColorSensorModel sensor(spec, 30.0, work.seed);
+  const RenderedView view = renderer.render(work.poses[5]);
+  cv::Mat measured;
+  std::int64_t frame = 0;
+  for (auto _ : state) {
+    sensor.measure(view.color_bgr, frame++, measured);
     benchmark::DoNotOptimize(measured.data);
   }
 }
@@ -236,7 +262,14 @@ BENCHMARK(BM_HarnessVsBare)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->MinTime(4.0);
-BENCHMARK(BM_SensorModelOnly)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SensorModelOnly)->ArgName("lateral")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ColorSensorModelOnly)
+    ->ArgName("noise1_ae2")
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace wifislam

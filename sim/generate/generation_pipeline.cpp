@@ -45,6 +45,8 @@ GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions
     renderer_->set_world(site_->world(), scene_);
     depth_model_ = std::make_unique<DepthSensorModel>(
         scene_.sensors.depth, scene_.sensors.camera.intrinsics, scene_.seed);
+    color_model_ = std::make_unique<ColorSensorModel>(scene_.sensors.color,
+                                                      scene_.sensors.camera.fps, scene_.seed);
   }
   timings_.setup_s = seconds_since(t0);
 }
@@ -90,7 +92,7 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
     renderer_->render(out.camera_to_world, view_);
     timings_.render_s += seconds_since(t0);
     t0 = Clock::now();
-    frame.rgb = view_.color_bgr.clone();
+    color_model_->measure(view_.color_bgr, k, frame.rgb);
     depth_model_->measure(view_.depth_m, view_.incidence_cos, k, frame.depth_m);
     timings_.sensor_s += seconds_since(t0);
   }

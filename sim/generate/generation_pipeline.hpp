@@ -5,6 +5,8 @@
 // events in time order (ties: odometry, then Wi-Fi, then the frame, as SensorStream promises):
 //
 //   frame k:    pose at its time (exact, from the motion profile) -> render -> depth sensor model
+//               and colour sensor model (whose auto-exposure carries state from frame k-1 to k;
+//               frames are made in order, so it is the same for both consumers)
 //   Wi-Fi scan: during pauses (or throughout with scan_while_moving), reported at the sweep's end,
 //               the receiver at the robot's position (antenna at the camera's height)
 //   odometry:   wheel odometry at its rate
@@ -26,6 +28,7 @@
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/wifi_scanner.hpp"
 #include "sim/generate/generate_options.hpp"
+#include "sim/render/color_sensor_model.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/robot/camera_mount.hpp"
@@ -90,6 +93,7 @@ class GenerationPipeline {
   CameraMount mount_;
   std::unique_ptr<RgbdRenderer> renderer_;
   std::unique_ptr<DepthSensorModel> depth_model_;
+  std::unique_ptr<ColorSensorModel> color_model_;
   std::unique_ptr<WifiScanner> scanner_;
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;

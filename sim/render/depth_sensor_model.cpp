@@ -1,62 +1,18 @@
 #include "sim/render/depth_sensor_model.hpp"
 
-#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <vector>
 
 #include <fmt/core.h>
-#include <boost/math/special_functions/erf.hpp>
 #include <opencv2/core/hal/intrin.hpp>
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "sim/render/normal_deviates.hpp"
 
 namespace wifislam {
-
-namespace {
-
-// Standard normal quantiles at 4096 evenly spaced probabilities, rescaled to unit variance: one
-// 64-bit draw gives five normal deviates through a table lookup, and the 16 KiB table stays in
-// L1 cache (a 2^16-entry table missed L2-resident lookups on every pixel). Rng::normal() costs
-// ~10x more, and a 640x480 frame needs ~300k deviates inside a ~1 ms budget. The table has no
-// values beyond +-3.7 sigma (a Kinect's depth noise has no heavy tails to lose either); the
-// rescaling makes the standard deviation exact.
-constexpr int kQuantileBits = 12;
-const std::array<float, 1 << kQuantileBits>& normal_quantiles() {
-  static const std::array<float, 1 << kQuantileBits> table = [] {
-    std::array<double, 1 << kQuantileBits> q{};
-    double sum_sq = 0.0;
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      const double p = (static_cast<double>(i) + 0.5) / static_cast<double>(q.size());
-      q[i] = -std::numbers::sqrt2 * boost::math::erfc_inv(2.0 * p);
-      sum_sq += q[i] * q[i];
-    }
-    const double scale = 1.0 / std::sqrt(sum_sq / static_cast<double>(q.size()));
-    std::array<float, 1 << kQuantileBits> t{};
-    for (std::size_t i = 0; i < q.size(); ++i) t[i] = static_cast<float>(q[i] * scale);
-    return t;
-  }();
-  return table;
-}
-
-/// Fills `out[0..count)` with standard normal deviates from `rng`.
-void fill_normals(Rng& rng, float* out, int count) {
-  const auto& table = normal_quantiles();
-  constexpr std::uint64_t kMask = (1u << kQuantileBits) - 1;
-  constexpr int kPerDraw = 64 / kQuantileBits;
-  int i = 0;
-  for (; i + kPerDraw <= count; i += kPerDraw) {
-    std::uint64_t bits = rng.next_u64();
-    for (int k = 0; k < kPerDraw; ++k, bits >>= kQuantileBits) out[i + k] = table[bits & kMask];
-  }
-  for (std::uint64_t bits = rng.next_u64(); i < count; ++i, bits >>= kQuantileBits) {
-    out[i] = table[bits & kMask];
-  }
-}
-
-}  // namespace
 
 DepthSensorModel::DepthSensorModel(const DepthSensorSpec& spec, const CameraIntrinsics& intrinsics,
                                    std::uint64_t seed)
@@ -81,6 +37,10 @@ DepthSensorModel::DepthSensorModel(const DepthSensorSpec& spec, const CameraIntr
         fmt::format("sensors.depth.axial_noise_coeff_per_m must be >= 0 (got {})",
                     spec.axial_noise_coeff_per_m));
   }
+  if (spec.lateral_noise) {
+    lateral_.emplace(spec.lateral_noise_base_px, spec.lateral_noise_angle_coeff_px,
+                     spec.grazing_dropout_deg * std::numbers::pi / 180.0, seed);
+  }
 }
 
 double DepthSensorModel::axial_noise_stddev_m(double z_m) const {
@@ -96,6 +56,19 @@ double DepthSensorModel::quantised_depth_m(double z_m) const {
 
 void DepthSensorModel::measure(const cv::Mat& ideal_depth_m, const cv::Mat& incidence_cos,
                                std::int64_t frame_index, cv::Mat& out) const {
+  if (!lateral_) {
+    sense(ideal_depth_m, incidence_cos, frame_index, out);
+    return;
+  }
+  // The shift comes first: the sensor sees the shifted scene, so the edge dropouts follow the
+  // ragged edges and the axial noise lands on the depth read.
+  cv::Mat shifted_depth_m, shifted_cos;
+  lateral_->apply(ideal_depth_m, incidence_cos, frame_index, shifted_depth_m, shifted_cos);
+  sense(shifted_depth_m, shifted_cos, frame_index, out);
+}
+
+void DepthSensorModel::sense(const cv::Mat& ideal_depth_m, const cv::Mat& incidence_cos,
+                             std::int64_t frame_index, cv::Mat& out) const {
   CV_Assert(ideal_depth_m.type() == CV_32FC1 && incidence_cos.type() == CV_32FC1 &&
             ideal_depth_m.size() == incidence_cos.size());
   const int rows = ideal_depth_m.rows, cols = ideal_depth_m.cols;

@@ -12,17 +12,24 @@
 //  - quantisation: the Kinect measures disparity d = f b / z (f = fx, b = `baseline_m`, 0.075 m)
 //    in steps of `disparity_step_px` (1/8 px); depth is recomputed from the rounded disparity, as
 //    in ICL-NUIM (Handa et al., ICRA 2014) and simkinect;
-//  - valid range: readings outside [min_range_m, max_range_m] are dropped (always on).
+//  - valid range: readings outside [min_range_m, max_range_m] are dropped (always on);
+//  - lateral noise (off by default): each pixel reads the scene at a random whole-pixel shift
+//    with sigma_L = 0.8 + 0.035 theta / (pi/2 - theta) px (Nguyen, Izadi and Lovell 2012), so
+//    depth edges are ragged; applied first (sim/render/lateral_depth_noise.hpp).
 //
 // Random draws come from Rng::stream(seed, "depth_noise/frame<N>") (one child stream per fixed
 // band of rows, so bands run in parallel; one deviate per pixel, used or not), so a frame's noise
-// depends only on the seed and the frame index, whatever the thread count or SIMD width.
+// depends only on the seed and the frame index, whatever the thread count or SIMD width. The
+// lateral shifts have their own stream, so switching them on leaves the axial deviates as they
+// were.
 
 #include <cstdint>
+#include <optional>
 
 #include <opencv2/core.hpp>
 
 #include "core/camera_intrinsics.hpp"
+#include "sim/render/lateral_depth_noise.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene.hpp"
 
@@ -46,12 +53,19 @@ class DepthSensorModel {
   double quantised_depth_m(double z_m) const;
 
   const DepthSensorSpec& spec() const { return spec_; }
+  /// The lateral noise model, when spec().lateral_noise is on.
+  const std::optional<LateralDepthNoise>& lateral_noise() const { return lateral_; }
 
  private:
+  /// Everything after the lateral shift: dropouts, axial noise, quantisation, range.
+  void sense(const cv::Mat& ideal_depth_m, const cv::Mat& incidence_cos, std::int64_t frame_index,
+             cv::Mat& out) const;
+
   DepthSensorSpec spec_;
   double focal_baseline_px_m_;  // f b
   float cos_grazing_;
   std::uint64_t seed_;
+  std::optional<LateralDepthNoise> lateral_;
 };
 
 }  // namespace wifislam

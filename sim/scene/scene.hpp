@@ -169,6 +169,28 @@ struct DepthSensorSpec {
   double disparity_step_px = 0.125;           // disparity resolution (Kinect v1: 1/8 pixel)
   double grazing_dropout_deg = 82.0;  // no reading when the ray meets the surface steeper than this
   double edge_jump_fraction = 0.05;   // a neighbour farther by this fraction of z marks an edge
+  // Lateral noise, off by default (scenes/README.md says why): each pixel reads the depth at a
+  // random whole-pixel shift with sigma_L = base + coeff theta / (pi/2 - theta) px per axis
+  // (Nguyen, Izadi and Lovell 2012: 0.8 and 0.035), theta capped at grazing_dropout_deg.
+  bool lateral_noise = false;
+  double lateral_noise_base_px = 0.8;
+  double lateral_noise_angle_coeff_px = 0.035;
+};
+
+/// The colour camera's sensor (sim/render/color_sensor_model.hpp explains each model). Both
+/// parts are off by default (scenes/README.md says why).
+struct ColorSensorSpec {
+  // Shot + read noise per channel: variance (DN^2) = conversion_gain x I + read_noise^2, I the
+  // exposed intensity in 8-bit digital numbers (the Poissonian-Gaussian model of EMVA 1288).
+  bool noise = false;
+  double conversion_gain_dn_per_e = 0.05;  // 20 electrons per DN: 255 DN ~ 5100 e- full well
+  double read_noise_dn = 0.5;              // 10 e- rms
+  // A global gain that moves the frame's mean brightness toward a target, first order in log
+  // gain with a time constant in seconds, starting at gain 1.
+  bool auto_exposure = false;
+  double exposure_target_dn = 118.0;  // 18 % grey in sRGB (0.46 x 255)
+  double exposure_time_constant_s = 0.5;
+  double exposure_min_gain = 0.25, exposure_max_gain = 4.0;  // +-2 stops
 };
 
 struct WifiScannerSpec {
@@ -188,6 +210,7 @@ struct OdometrySpec {
 struct Sensors {
   CameraSpec camera;
   DepthSensorSpec depth;
+  ColorSensorSpec color;
   WifiScannerSpec wifi;
   OdometrySpec odometry;
   /// Unix time (whole seconds) of the route's start: every time a dataset or the in-memory

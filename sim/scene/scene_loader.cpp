@@ -493,6 +493,34 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
   if (depth.max_range_m <= depth.min_range_m) {
     invalid(locate, "sensors.depth.max_range_m", "must be larger than min_range_m");
   }
+  // The reader bounds these already; a scene built in code is checked here.
+  if (depth.lateral_noise &&
+      !(depth.lateral_noise_base_px >= 0.0 && depth.lateral_noise_angle_coeff_px >= 0.0)) {
+    invalid(locate, "sensors.depth.lateral_noise_base_px",
+            "lateral noise needs lateral_noise_base_px and lateral_noise_angle_coeff_px >= 0");
+  }
+  if (depth.lateral_noise && !(depth.grazing_dropout_deg < 90.0)) {
+    invalid(locate, "sensors.depth.grazing_dropout_deg",
+            "lateral noise caps the incidence angle here, so it must be below 90");
+  }
+  const auto& color = scene.sensors.color;
+  if (color.auto_exposure &&
+      !(color.exposure_min_gain > 0.0 && color.exposure_min_gain <= color.exposure_max_gain)) {
+    invalid(locate, "sensors.color.exposure_gain_range",
+            fmt::format("must be [min, max] with 0 < min <= max, got [{}, {}]",
+                        color.exposure_min_gain, color.exposure_max_gain));
+  }
+  if (color.auto_exposure && !(color.exposure_time_constant_s > 0.0)) {
+    invalid(locate, "sensors.color.exposure_time_constant_s", "must be > 0");
+  }
+  if (color.auto_exposure &&
+      !(color.exposure_target_dn > 0.0 && color.exposure_target_dn < 255.0)) {
+    invalid(locate, "sensors.color.exposure_target_dn", "must be within (0, 255)");
+  }
+  if (color.noise && !(color.conversion_gain_dn_per_e >= 0.0 && color.read_noise_dn >= 0.0)) {
+    invalid(locate, "sensors.color.conversion_gain_dn_per_e",
+            "noise needs conversion_gain_dn_per_e and read_noise_dn >= 0");
+  }
   const auto& ap = scene.access_points;
   // Heights within the building: from the floor to the ceiling.
   const double ceiling_m = scene.building.wall_height_m;

@@ -211,6 +211,20 @@ void visit(V& v, DepthSensorSpec& d) {
   v.number("disparity_step_px", d.disparity_step_px, kPositive);
   v.number("grazing_dropout_deg", d.grazing_dropout_deg, Limits{0.0, 90.0});
   v.number("edge_jump_fraction", d.edge_jump_fraction, kPositive);
+  v.boolean("lateral_noise", d.lateral_noise);
+  v.number("lateral_noise_base_px", d.lateral_noise_base_px, Limits{0.0, 10.0});
+  v.number("lateral_noise_angle_coeff_px", d.lateral_noise_angle_coeff_px, Limits{0.0, 10.0});
+}
+
+template <class V>
+void visit(V& v, ColorSensorSpec& c) {
+  v.boolean("noise", c.noise);
+  v.number("conversion_gain_dn_per_e", c.conversion_gain_dn_per_e, Limits{0.0, 255.0});
+  v.number("read_noise_dn", c.read_noise_dn, Limits{0.0, 255.0});
+  v.boolean("auto_exposure", c.auto_exposure);
+  v.number("exposure_target_dn", c.exposure_target_dn, Limits{1.0, 254.0});
+  v.number("exposure_time_constant_s", c.exposure_time_constant_s, Limits{0.0, 3600.0, true});
+  v.interval("exposure_gain_range", c.exposure_min_gain, c.exposure_max_gain, Limits{0.01, 100.0});
 }
 
 template <class V>
@@ -233,6 +247,7 @@ template <class V>
 void visit(V& v, Sensors& s) {
   v.object("camera", s.camera);
   v.object("depth", s.depth);
+  v.object("color", s.color);
   v.object("wifi", s.wifi);
   v.object("odometry", s.odometry);
   v.uint64("time_origin_s", s.time_origin_s, dataset::kMaxTimeOriginS);

@@ -111,6 +111,41 @@ TEST(GenerateDataset, WrittenDatasetReadsBackEqualToTheInMemoryStream) {
   fs::remove_all(dir);
 }
 
+// The sensor parts that are off by default (lateral depth noise, colour noise, auto-exposure):
+// switched on, the frames still depend only on the scene and seed (auto-exposure carries state
+// from frame to frame, and the pipeline makes frames in order), and only the images move.
+TEST(GenerateDataset, SensorNoisePartsAreDeterministicAndMoveOnlyTheImages) {
+  const Scene plain = test::small_scene();
+  Scene noisy = plain;
+  noisy.sensors.depth.lateral_noise = true;
+  noisy.sensors.color.noise = true;
+  noisy.sensors.color.auto_exposure = true;
+  GeneratorStream a(noisy, short_run(1)), b(noisy, short_run(1)), off(plain, short_run(1));
+  std::size_t frames = 0;
+  double rgb_moved = 0.0, depth_moved = 0.0;
+  while (true) {
+    auto ea = a.next(), eb = b.next(), eo = off.next();
+    ASSERT_EQ(ea.has_value(), eo.has_value());
+    ASSERT_EQ(ea.has_value(), eb.has_value());
+    if (!ea) break;
+    ASSERT_EQ(event_time(*ea), event_time(*eo));
+    if (auto* fa = std::get_if<RgbdFrame>(&*ea)) {
+      const auto& fb = std::get<RgbdFrame>(*eb);
+      const auto& fo = std::get<RgbdFrame>(*eo);
+      EXPECT_EQ(cv::norm(fa->rgb, fb.rgb, cv::NORM_INF), 0.0) << "frame " << fa->index;
+      EXPECT_EQ(cv::norm(fa->depth_m, fb.depth_m, cv::NORM_INF), 0.0) << "frame " << fa->index;
+      rgb_moved = std::max(rgb_moved, cv::norm(fa->rgb, fo.rgb, cv::NORM_INF));
+      depth_moved = std::max(depth_moved, cv::norm(fa->depth_m, fo.depth_m, cv::NORM_INF));
+      ++frames;
+    } else if (auto* sa = std::get_if<WifiScan>(&*ea)) {
+      EXPECT_EQ(*sa, std::get<WifiScan>(*eo));
+    }
+  }
+  EXPECT_EQ(frames, 30u);
+  EXPECT_GT(rgb_moved, 0.0);
+  EXPECT_GT(depth_moved, 0.0);
+}
+
 TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
   const fs::path dir = test::fresh_folder("assoc");
   generate_dataset(test::small_scene(), dir, short_run(2));

@@ -1,14 +1,18 @@
 // The depth sensor model behaves like the Kinect model it cites: noise with the documented
 // spread, readings only inside the valid range, disparity steps, dropouts where a structured-light
-// sensor has none.
+// sensor has none, lateral shifts with Nguyen et al.'s spread, and the default output pinned.
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
+#include <string_view>
 
 #include <opencv2/core/utility.hpp>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/pose.hpp"
 #include "sim/render/depth_sensor_model.hpp"
@@ -184,12 +188,217 @@ TEST(DepthSensorModel, SameFrameSameNoiseOtherFrameOtherNoise) {
   EXPECT_GT(cv::norm(model.measure(view, 4), other_seed.measure(view, 4), cv::NORM_INF), 0.0);
 }
 
+// A synthetic ideal frame built from integer arithmetic only (the same floats on every machine):
+// ramps in depth, holes, steps of 0.3-1 m (depth edges) and incidence |cos| on the renderer's
+// 1/255 grid, some beyond the grazing limit.
+struct SyntheticView {
+  cv::Mat depth_m, incidence_cos;
+};
+SyntheticView synthetic_view() {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  SyntheticView s{cv::Mat(k.height_px, k.width_px, CV_32FC1),
+                  cv::Mat(k.height_px, k.width_px, CV_32FC1)};
+  for (int v = 0; v < k.height_px; ++v) {
+    for (int u = 0; u < k.width_px; ++u) {
+      const int band = (u / 80 + v / 60) % 4;
+      float z = 0.6f + 0.5f * static_cast<float>(band) +
+                static_cast<float>((u * 7 + v * 3) % 640) / 256.0f;
+      if ((u / 40) % 7 == 3 && (v / 30) % 5 == 2) z = 0.0f;  // holes (nothing rendered)
+      s.depth_m.at<float>(v, u) = z;
+      s.incidence_cos.at<float>(v, u) =
+          z > 0.0f ? static_cast<float>((u + 2 * v) % 256) / 255.0f : 0.0f;
+    }
+  }
+  return s;
+}
+
+std::string digest_of(const cv::Mat& m) {
+  CV_Assert(m.isContinuous());
+  return sha256_hex(
+      std::string_view(reinterpret_cast<const char*>(m.data), m.total() * m.elemSize()));
+}
+
+// The model's default output on a fixed input, recorded before lateral noise was added: with
+// lateral noise off (the default), every pixel of every frame must stay what it was.
+TEST(DepthSensorModel, DefaultOutputIsPinned) {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const SyntheticView view = synthetic_view();
+  const DepthSensorModel model(DepthSensorSpec{}, k, 2024);
+  cv::Mat out;
+  model.measure(view.depth_m, view.incidence_cos, 7, out);
+  EXPECT_EQ(digest_of(out), "92ed6bc2986e6ab5f5ed882a85b2c46db9ce252794bd3c513bbe413292c3e2f7")
+      << "the default depth model's output moved";
+  // Lateral noise off means off, whatever its parameters say.
+  DepthSensorSpec off;
+  off.lateral_noise_base_px = 3.0;
+  off.lateral_noise_angle_coeff_px = 1.0;
+  cv::Mat off_out;
+  DepthSensorModel(off, k, 2024).measure(view.depth_m, view.incidence_cos, 7, off_out);
+  EXPECT_EQ(cv::norm(off_out, out, cv::NORM_INF), 0.0);
+  EXPECT_EQ(digest_of(view.depth_m),
+            "73a9639305c0d4c327ad4269e8d2d5edc3bd968860632db3a90bb7de409a3e82")
+      << "the synthetic input moved";
+}
+
+// A depth image that changes along one image axis only (a plane seen with its slope along that
+// axis): z = 1 m + 4 mm per pixel, so the depth a pixel reads tells which column (or row) it came
+// from. Incidence |cos| is uniform, on the renderer's 1/255 grid.
+struct Ramp {
+  cv::Mat depth_m, incidence_cos;
+};
+constexpr float kRampStartM = 1.0f, kRampStepM = 0.004f;
+Ramp ramp(bool along_columns, int incidence_code) {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  Ramp r{cv::Mat(k.height_px, k.width_px, CV_32FC1),
+         cv::Mat(k.height_px, k.width_px, CV_32FC1,
+                 cv::Scalar(static_cast<float>(incidence_code) / 255.0f))};
+  for (int v = 0; v < k.height_px; ++v) {
+    for (int u = 0; u < k.width_px; ++u) {
+      r.depth_m.at<float>(v, u) =
+          kRampStartM + kRampStepM * static_cast<float>(along_columns ? u : v);
+    }
+  }
+  return r;
+}
+
+/// Nguyen, Izadi and Lovell 2012, written out here rather than taken from the model.
+double nguyen_sigma_l_px(double theta_rad) {
+  return 0.8 + 0.035 * theta_rad / (std::numbers::pi / 2 - theta_rad);
+}
+
+DepthSensorSpec only_lateral() {
+  DepthSensorSpec spec = only(false, false, false);
+  spec.lateral_noise = true;
+  return spec;
+}
+
+TEST(DepthSensorModel, LateralShiftSpreadMatchesNguyenAtEachAngle) {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const DepthSensorModel model(only_lateral(), k, 5);
+  // 0, 60, 75 and 80 deg (cos on the 1/255 grid); sigma_L from 0.80 to 1.08 px.
+  for (const int code : {255, 128, 66, 44}) {
+    const double theta = std::acos(code / 255.0);
+    const double expected_px = nguyen_sigma_l_px(theta);
+    for (const bool along_columns : {true, false}) {
+      const Ramp r = ramp(along_columns, code);
+      cv::Mat measured;
+      model.measure(r.depth_m, r.incidence_cos, 3, measured);
+      // Whole-pixel shift along the ramp's axis, away from the borders (where shifts are clamped).
+      double sum = 0.0, sum_sq = 0.0, off_grid = 0.0;
+      int n = 0;
+      for (int v = 8; v < measured.rows - 8; ++v) {
+        for (int u = 8; u < measured.cols - 8; ++u) {
+          const double from = (measured.at<float>(v, u) - kRampStartM) / kRampStepM;
+          const double shift = from - (along_columns ? u : v);
+          off_grid = std::max(off_grid, std::abs(shift - std::round(shift)));
+          sum += shift;
+          sum_sq += shift * shift;
+          ++n;
+        }
+      }
+      const double mean = sum / n, stddev = std::sqrt(sum_sq / n - mean * mean);
+      EXPECT_LT(off_grid, 0.01) << "shifts are whole pixels";
+      EXPECT_NEAR(mean, 0.0, 0.01) << "code " << code;
+      // ~290k shifts: the spread is known to ~0.15 %; 2 % tolerates the deviate table's finite
+      // resolution and would catch a constant 0.8 px (10 % off at 75 deg) or a wrong rounding.
+      EXPECT_NEAR(stddev, expected_px, 0.02 * expected_px)
+          << "code " << code << (along_columns ? " along u" : " along v");
+      EXPECT_NEAR(model.lateral_noise()->shift_stddev_px(code), expected_px, 2e-3);
+    }
+  }
+}
+
+TEST(DepthSensorModel, LateralShiftMakesDepthEdgesRaggedBySigmaL) {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  // Vertical stripes 16 px wide, alternately 1.5 m and 3 m away: 39 straight vertical depth
+  // edges, seen at theta = acos(200/255) = 38 deg.
+  constexpr int kStripe = 16, kCode = 200;
+  cv::Mat depth(k.height_px, k.width_px, CV_32FC1);
+  for (int u = 0; u < k.width_px; ++u) depth.col(u).setTo((u / kStripe) % 2 ? 3.0f : 1.5f);
+  const cv::Mat cos(k.height_px, k.width_px, CV_32FC1, cv::Scalar(kCode / 255.0f));
+  const DepthSensorModel model(only_lateral(), k, 9);
+  const DepthSensorModel straight(only(false, false, false), k, 9);
+  // swapped[k - 1][side]: pixels k columns left of an edge (side 0) or k - 1 right of it
+  // (side 1) that read the other side's depth.
+  std::array<std::array<double, 2>, 4> swapped{};
+  int ragged_rows = 0, rows = 0;
+  constexpr int kFrames = 10;
+  for (int frame = 0; frame < kFrames; ++frame) {
+    cv::Mat z;
+    model.measure(depth, cos, frame, z);
+    for (int v = 0; v < z.rows; ++v) {
+      bool ragged = false;
+      for (int edge = kStripe; edge < z.cols; edge += kStripe) {
+        for (int d = 1; d <= 4; ++d) {
+          const bool left = z.at<float>(v, edge - d) != depth.at<float>(v, edge - d);
+          const bool right = z.at<float>(v, edge + d - 1) != depth.at<float>(v, edge + d - 1);
+          swapped[d - 1][0] += left;
+          swapped[d - 1][1] += right;
+          ragged = ragged || left || right;
+        }
+      }
+      ragged_rows += ragged;
+      ++rows;
+    }
+  }
+  const double edges_seen = static_cast<double>(rows) * (k.width_px / kStripe - 1);
+  // Edge displacement spread: Var(dx) = sum_d (2d - 1) (P(dx >= d) + P(dx <= -d)), where a pixel
+  // d columns left of an edge reads across it iff dx >= d, and d - 1 right of it iff dx <= -d.
+  double variance = 0.0;
+  for (int d = 1; d <= 4; ++d) {
+    variance += (2.0 * d - 1.0) * (swapped[d - 1][0] + swapped[d - 1][1]) / edges_seen;
+  }
+  const double expected_px = nguyen_sigma_l_px(std::acos(kCode / 255.0));
+  // ~190k edge crossings: the spread is known to ~1 %; 3 % tolerance.
+  EXPECT_NEAR(std::sqrt(variance), expected_px, 0.03 * expected_px);
+  // Symmetric: as many pixels cross from the near side as from the far side.
+  EXPECT_NEAR(swapped[0][0] / edges_seen, swapped[0][1] / edges_seen, 0.01);
+  EXPECT_GT(ragged_rows, rows * 9 / 10) << "almost every row has a ragged edge";
+  // Without lateral noise the edges stay straight.
+  cv::Mat z;
+  straight.measure(depth, cos, 0, z);
+  EXPECT_EQ(cv::norm(z, depth, cv::NORM_INF), 0.0);
+}
+
+TEST(DepthSensorModel, LateralShiftIsItsOwnStreamAndIgnoresThreads) {
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  // On a plane facing the camera a shift changes nothing, so with lateral noise on the axial
+  // noise must be exactly what it was without it (its own random stream).
+  const cv::Mat flat(k.height_px, k.width_px, CV_32FC1, cv::Scalar(2.0f));
+  const cv::Mat facing(k.height_px, k.width_px, CV_32FC1, cv::Scalar(1.0f));
+  DepthSensorSpec with = DepthSensorSpec{};
+  with.lateral_noise = true;
+  const DepthSensorModel lateral(with, k, 21), plain(DepthSensorSpec{}, k, 21);
+  cv::Mat a, b;
+  lateral.measure(flat, facing, 4, a);
+  plain.measure(flat, facing, 4, b);
+  EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
+  // On a ramp: the same frame gives the same shifts, another frame others, whatever the threads.
+  const Ramp r = ramp(true, 255);
+  cv::Mat first, again, other;
+  lateral.measure(r.depth_m, r.incidence_cos, 4, first);
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(1);
+  lateral.measure(r.depth_m, r.incidence_cos, 4, again);
+  cv::setNumThreads(threads);
+  lateral.measure(r.depth_m, r.incidence_cos, 5, other);
+  EXPECT_EQ(cv::norm(first, again, cv::NORM_INF), 0.0);
+  EXPECT_GT(cv::norm(first, other, cv::NORM_INF), 0.0);
+}
+
 TEST(DepthSensorModel, RejectsInconsistentParameters) {
   DepthSensorSpec spec;
   spec.min_range_m = 5.0;
   EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
   spec = DepthSensorSpec{};
   spec.disparity_step_px = 0.0;
+  EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
+  spec = DepthSensorSpec{};
+  spec.lateral_noise = true;
+  spec.lateral_noise_base_px = -0.1;
+  EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
+  spec.lateral_noise_base_px = 0.8;
+  spec.grazing_dropout_deg = 90.0;  // the cap on theta: sigma_L is infinite there
   EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
 }
 

@@ -311,6 +311,39 @@ TEST(SceneErrors, AFolderIsAParseErrorNamingIt) {
   std::filesystem::remove(dir);
 }
 
+// The sensor model keys: each bad value is located at its key.
+TEST(SceneErrors, SensorModelKeysAreLocated) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"sensors: {color: {exposure_gain_range: [4, 1]}}\n", "sensors.color.exposure_gain_range"},
+      {"sensors: {color: {exposure_gain_range: [0, 1]}}\n", "sensors.color.exposure_gain_range[0]"},
+      {"sensors: {color: {exposure_target_dn: 255}}\n", "sensors.color.exposure_target_dn"},
+      {"sensors: {color: {exposure_time_constant_s: 0}}\n",
+       "sensors.color.exposure_time_constant_s"},
+      {"sensors: {color: {read_noise_dn: -1}}\n", "sensors.color.read_noise_dn"},
+      {"sensors: {color: {conversion_gain_dn_per_e: -0.1}}\n",
+       "sensors.color.conversion_gain_dn_per_e"},
+      {"sensors: {color: {auto_exposure: sometimes}}\n", "sensors.color.auto_exposure"},
+      {"sensors: {depth: {lateral_noise_base_px: -0.5}}\n", "sensors.depth.lateral_noise_base_px"},
+      // Lateral noise caps theta at the grazing angle, where sigma_L must be finite.
+      {"sensors: {depth: {lateral_noise: true, grazing_dropout_deg: 90}}\n",
+       "sensors.depth.grazing_dropout_deg"},
+  };
+  for (const auto& [yaml, key] : cases) {
+    const auto e = expect_parse_error(std::string(kValidBody) + yaml);
+    EXPECT_EQ(e.key_path(), key) << yaml;
+    EXPECT_NE(e.where().find("bad.yaml:11:"), std::string::npos) << yaml << e.where();
+  }
+  // Grazing at 90 deg is fine while lateral noise is off.
+  EXPECT_NO_THROW(load_scene_yaml(
+      std::string(kValidBody) + "sensors: {depth: {grazing_dropout_deg: 90}}\n", "ok.yaml"));
+  // A scene built in code is checked too.
+  Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
+  scene.sensors.color.auto_exposure = true;
+  scene.sensors.color.exposure_min_gain = 3.0;
+  scene.sensors.color.exposure_max_gain = 2.0;
+  EXPECT_THROW(validate_scene(scene), InvalidInputError);
+}
+
 TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
   Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
   scene.route.nodes = {"A", "C"};
@@ -353,14 +386,15 @@ TEST(SceneErrors, RadioModelKeysAreCheckedAgainstTheModel) {
   e = expect_parse_error(std::string(kValidBody) +
                          "radio: {model: itu_site_general, distance_coefficient: 30}\n");
   EXPECT_EQ(e.key_path(), "radio.distance_coefficient");
-  const Scene fit = load_scene_yaml(std::string(kValidBody) + "radio: {model: itu_site_general_fit}\n",
-                                    "fit.yaml");
+  const Scene fit = load_scene_yaml(
+      std::string(kValidBody) + "radio: {model: itu_site_general_fit}\n", "fit.yaml");
   EXPECT_EQ(fit.radio.model, PathLossModel::kItuSiteGeneralFit);
   EXPECT_FALSE(fit.radio.shadowing_sigma_db.has_value());
   // The resolved scene names the model and loads back to it.
   const std::string resolved = resolved_scene_yaml(fit);
   EXPECT_NE(resolved.find("itu_site_general_fit"), std::string::npos);
-  EXPECT_EQ(load_scene_yaml(resolved, "resolved.yaml").radio.model, PathLossModel::kItuSiteGeneralFit);
+  EXPECT_EQ(load_scene_yaml(resolved, "resolved.yaml").radio.model,
+            PathLossModel::kItuSiteGeneralFit);
 }
 
 }  // namespace
