@@ -1,10 +1,14 @@
 #pragma once
 // The scene `wifislam demo` runs when given none: two identical corridors 30 m apart, joined by a
-// hall, walked west corridor -> hall -> east corridor. Aliasing 1.0 with scope `position` makes the
-// two corridors copies of each other (walls, posters, lights; the east one walked the other way
-// round sees what the west one saw) while each is distinct along its length. A camera alone finds
-// "loop closures" between the two; their Wi-Fi signatures (concrete walls, 30 m) tell them apart.
-// At 5 frames per second the whole vanilla-vs-Wi-Fi comparison takes about two minutes on 2 cores.
+// hall, walked west corridor (north) -> hall -> east corridor (south), then, turning on the spot at
+// its end, the east corridor again northward. Aliasing 1.0 with scope `position` makes the two
+// corridors copies of each other (walls, posters, lights, laid by position along the wall) while
+// each is distinct along its length; walked northward, the east corridor shows the camera what the
+// west one showed it. A camera alone finds "loop closures" between the two; their Wi-Fi
+// signatures (concrete walls, 30 m) tell them apart. Measured at seeds 7 and 8 (min_matches 10):
+// vanilla 20 and 6 wrong-place closures between the corridors, ATE 12.7 and 11.5 m; Wi-Fi none
+// between them, ATE 0.35 and 0.21 m. At 5 frames per second the whole vanilla-vs-Wi-Fi comparison
+// takes about two and a half minutes on 2 cores.
 
 namespace wifislam::cli {
 
@@ -25,7 +29,7 @@ corridors:
 appearance: {aliasing: 1.0, aliasing_scope: position, posters_per_10m: 3.0}
 access_points: {placement: random, count: 16}
 route:
-  nodes: [A0, A1, B1, B0]
+  nodes: [A0, A1, B1, B0, B1]
   speed_mps: 0.5
   pause: {spacing_m: [3.0, 4.0], duration_s: 4.0}
 sensors:

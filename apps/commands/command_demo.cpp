@@ -57,9 +57,9 @@ void run_demo(const DemoArgs& args) {
   draw_scene_pictures(scene, out.staging_path());
 
   // rgbdslam, one seed, min_matches 10: the low end of the paper's sweep, where vanilla RGBD-SLAM
-  // is likeliest to accept false loop closures between look-alike places. Whether it does on this
-  // small scene depends on its random draws (with RGBDSLAMv2's 4/4/4 candidates it did not on seed
-  // 8); the c_hall twin (`wifislam compare --preset paper-rgbdslam`) shows the effect in full.
+  // is likeliest to accept false loop closures between look-alike places (apps/demo_scene.hpp
+  // gives what it measures); the c_hall twin (`wifislam compare --preset paper-rgbdslam`) shows
+  // the effect in full.
   study::ComparisonOptions options;
   options.settings = {"min_matches=10"};
   if (!args.quiet) {
