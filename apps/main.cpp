@@ -10,8 +10,10 @@
 #include "apps/command_registry.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
+#include "core/thread_start.hpp"
 
 int main(int argc, char** argv) {
+  wifislam::cap_default_thread_stack();
   CLI::App app{
       "wifislam: synthetic indoor worlds, off-screen RGB-D rendering, simulated Wi-Fi, and visual\n"
       "SLAM with and without Wi-Fi augmentation, scored against exact ground truth."};

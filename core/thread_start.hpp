@@ -4,7 +4,10 @@
 // started and then destroyed unjoined ends the program (std::terminate). These helpers start as
 // many as the machine allows and let the caller work with those.
 
+#include <pthread.h>
+
 #include <algorithm>
+#include <cstddef>
 #include <exception>
 #include <mutex>
 #include <system_error>
@@ -13,6 +16,25 @@
 #include <vector>
 
 namespace wifislam {
+
+/// Largest default stack for threads the process starts from now on.
+inline constexpr std::size_t kMaxDefaultThreadStackBytes = std::size_t{16} << 20;
+
+/// glibc gives every new thread a stack of RLIMIT_STACK (`ulimit -s`) unless told otherwise, so a
+/// large limit (256 MB) times a few worker threads exhausts an address-space limit (`ulimit -v`),
+/// and later allocations fail with bad_alloc at random. Our threads (PNG encoding, radio maps,
+/// study cases, llvmpipe's) need far less: cap the default at 16 MB, twice Linux's usual 8 MB.
+/// Call once at the start of main(). No-op where the default is already smaller.
+inline void cap_default_thread_stack() {
+  pthread_attr_t attr;
+  if (pthread_getattr_default_np(&attr) != 0) return;
+  std::size_t size = 0;
+  if (pthread_attr_getstacksize(&attr, &size) == 0 && size > kMaxDefaultThreadStackBytes &&
+      pthread_attr_setstacksize(&attr, kMaxDefaultThreadStackBytes) == 0) {
+    pthread_setattr_default_np(&attr);
+  }
+  pthread_attr_destroy(&attr);
+}
 
 /// Upper bound for a user's thread count: 4 per core (at least 4). More threads than that only
 /// cost memory (each has its own stack) for CPU-bound work such as PNG encoding.

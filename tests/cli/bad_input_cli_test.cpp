@@ -146,7 +146,9 @@ TEST_F(BadInput, RadioMapHeightOutsideTheBuildingIsAnError) {
 // and whatever threads will not start are done without.
 TEST_F(BadInput, HundredsOfThreadsUnderAMemoryLimitStillGiveADataset) {
   const fs::path out = scratch_ / "ds";
-  // 256 MB stacks against a 2 GB address space: only a handful of threads can ever start.
+  // 256 MB default stacks against a 2 GB address space: a handful of such threads would exhaust
+  // it and later allocations fail at random (bad_alloc, exit 70, one run in five); wifislam caps
+  // its threads' default stack (core/thread_start.hpp), so every run gives a dataset.
   const auto r = wifislam("generate " + scene_.string() + " -o " + out.string() +
                               " --fps 2 --max-frames 4 --threads 600",
                           "ulimit -s 262144 && ulimit -v 2000000 && LP_NUM_THREADS=0");
