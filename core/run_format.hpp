@@ -14,6 +14,9 @@
 //                      members are keyframe ids (lines of keyframes.txt)
 //   rtabmap_memory.csv rtabmap runs only: one row per node (memory sizes, transfers, retrievals,
 //                      hypothesis, time over budget; columns in rtabmap_memory_column below)
+//   orbslam_queries.csv orbslam runs only: one row per keyframe (its loop detection: indexes and
+//                      keyframes searched, postings read, candidates at each stage; columns in
+//                      orbslam_queries_column below)
 //   timing.json        {"modules": {name: {"total_s", "calls"}}, "counters": {name: n},
 //                       "roles": {role: {"comparisons", "ransac_runs", "verified", "accepted",
 //                       "time_s"}}, "keyframe_searches": [...], "wall_s"}
@@ -37,6 +40,7 @@ inline constexpr const char* kGraph = "graph.json";
 inline constexpr const char* kLoopClosures = "loop_closures.csv";
 inline constexpr const char* kWifiClusters = "wifi_clusters.csv";
 inline constexpr const char* kRtabmapMemory = "rtabmap_memory.csv";
+inline constexpr const char* kOrbslamQueries = "orbslam_queries.csv";
 inline constexpr const char* kTiming = "timing.json";
 inline constexpr const char* kRun = "run.json";
 
@@ -141,6 +145,17 @@ inline constexpr std::array<const char*, 25> kAll = {
     "cost_ms", "wall_ms", "cpu_ms", "over_budget_ms"};
 // clang-format on
 }  // namespace rtabmap_memory_column
+
+/// Columns of orbslam_queries.csv, in order (slam/frontend/orbslam/orbslam_front_end.hpp,
+/// OrbslamQueryRecord); query_ms is wall-clock, the rest is exact.
+namespace orbslam_queries_column {
+// clang-format off
+inline constexpr std::array<const char*, 12> kAll = {
+    "keyframe", "detection_ran", "databases_searched", "keyframes_searched", "postings_read",
+    "min_score", "candidates", "consistent", "bow_passed", "accepted_loop", "cluster",
+    "query_ms"};
+// clang-format on
+}  // namespace orbslam_queries_column
 
 /// Fields of one role's entry in timing.json's "roles".
 namespace role_key {

@@ -121,6 +121,21 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
        "rtabmap cost model: ms per visual verification"},
       {"wifi_max_retrieved", &o.rtabmap.wifi_max_retrieved,
        "rtabmap with Wi-Fi: LTM nodes of similar clusters retrieved per node (0 = all)"},
+      {"vocabulary", &o.orbslam.vocabulary,
+       "orbslam: vocabulary file (wifislam vocab train); empty = the shipped orb_k10_l4"},
+      {"local_keyframes", &o.orbslam.local_keyframes,
+       "orbslam: best covisible keyframes of the previous keyframe verified per keyframe "
+       "(LocalMapping: 10)"},
+      {"covisibility_min_weight", &o.orbslam.covisibility_min_weight,
+       "orbslam: inliers for two keyframes to be covisible (ORB-SLAM: 15)"},
+      {"covisibility_group_size", &o.orbslam.covisibility_group_size,
+       "orbslam: best covisible keyframes grouped with a loop candidate (10)"},
+      {"loop_consistency", &o.orbslam.loop_consistency,
+       "orbslam: consecutive keyframes a loop candidate group must stay consistent (3)"},
+      {"keyframes_between_loops", &o.orbslam.keyframes_between_loops,
+       "orbslam: keyframes after a loop closure before loop detection runs again (10)"},
+      {"bow_min_matches", &o.orbslam.bow_min_matches,
+       "orbslam: SearchByBoW matches a loop candidate needs before verification (20)"},
       {"optimizer_iterations", &o.graph.max_iterations, "iterations of the final optimisation"},
       {"optimizer_incremental_iterations", &o.graph.incremental_max_iterations,
        "iterations after each loop closure"},
@@ -240,6 +255,12 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
           "robust_kernel_chi2 must be a positive number");
   parse_chi2_thresholds("prune_chi2", o.rgbdslam.prune_chi2);  // throws naming the entry
+  require(o.orbslam.local_keyframes >= 0, "local_keyframes must be >= 0");
+  require(o.orbslam.covisibility_min_weight >= 1, "covisibility_min_weight must be >= 1");
+  require(o.orbslam.covisibility_group_size >= 0, "covisibility_group_size must be >= 0");
+  require(o.orbslam.loop_consistency >= 0, "loop_consistency must be >= 0");
+  require(o.orbslam.keyframes_between_loops >= 0, "keyframes_between_loops must be >= 0");
+  require(o.orbslam.bow_min_matches >= 0, "bow_min_matches must be >= 0");
   require(o.rtabmap.detection_rate_hz >= 0 && std::isfinite(o.rtabmap.detection_rate_hz),
           "detection_rate_hz must be a number >= 0");
   require(o.rtabmap.linear_update_m >= 0 && std::isfinite(o.rtabmap.linear_update_m),

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "slam/feature/orb_feature_extractor.hpp"
+#include "slam/frontend/orbslam/orbslam_options.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 #include "slam/frontend/rtabmap/rtabmap_options.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
@@ -59,6 +60,7 @@ struct SlamOptions {
   TrackingOptions tracking;
   RgbdslamOptions rgbdslam;
   RtabmapOptions rtabmap;
+  OrbslamOptions orbslam;
   PoseGraphOptions graph;
 };
 

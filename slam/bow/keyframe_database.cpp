@@ -35,17 +35,33 @@ std::vector<KeyframeId> KeyframeDatabase::keyframes_with(WordId word) const {
 std::vector<LoopCandidate> KeyframeDatabase::loop_candidates(
     const BowVector& query, const std::vector<KeyframeId>& connected, double min_score,
     const NeighbourFunction& neighbours) const {
-  last_postings_read_ = 0;
+  return bow::loop_candidates({this}, query, connected, min_score, neighbours,
+                              &last_postings_read_);
+}
+
+std::vector<LoopCandidate> loop_candidates(const std::vector<const KeyframeDatabase*>& databases,
+                                           const BowVector& query,
+                                           const std::vector<KeyframeId>& connected,
+                                           double min_score, const NeighbourFunction& neighbours,
+                                           std::size_t* postings_read) {
+  std::size_t read = 0;
   const std::set<KeyframeId> excluded(connected.begin(), connected.end());
-  // 1. Keyframes sharing words with the query, and how many.
+  // 1. Keyframes sharing words with the query, and how many (and which database holds each).
   std::map<KeyframeId, int> shared_words;
-  for (const auto& [word, weight] : query) {
-    const auto it = inverted_.find(word);
-    if (it == inverted_.end()) continue;
-    last_postings_read_ += it->second.size();
-    for (KeyframeId k : it->second)
-      if (!excluded.count(k)) ++shared_words[k];
+  std::map<KeyframeId, const KeyframeDatabase*> holder;
+  for (const KeyframeDatabase* database : databases) {
+    for (const auto& [word, weight] : query) {
+      const auto it = database->inverted_.find(word);
+      if (it == database->inverted_.end()) continue;
+      read += it->second.size();
+      for (KeyframeId k : it->second) {
+        if (excluded.count(k)) continue;
+        ++shared_words[k];
+        holder[k] = database;
+      }
+    }
   }
+  if (postings_read != nullptr) *postings_read = read;
   if (shared_words.empty()) return {};
 
   // 2. Scores of those sharing more than 0.8 x the most shared words.
@@ -56,7 +72,7 @@ std::vector<LoopCandidate> KeyframeDatabase::loop_candidates(
   std::vector<std::pair<KeyframeId, double>> retained;
   for (const auto& [k, n] : shared_words) {
     if (n <= min_common) continue;
-    const double s = l1_score(query, vectors_.at(k));
+    const double s = l1_score(query, holder.at(k)->vectors_.at(k));
     scored[k] = s;
     if (s >= min_score) retained.emplace_back(k, s);
   }

@@ -58,9 +58,23 @@ class KeyframeDatabase {
   std::size_t last_postings_read() const { return last_postings_read_; }
 
  private:
+  friend std::vector<LoopCandidate> loop_candidates(const std::vector<const KeyframeDatabase*>&,
+                                                    const BowVector&,
+                                                    const std::vector<KeyframeId>&, double,
+                                                    const NeighbourFunction&, std::size_t*);
   std::map<WordId, std::vector<KeyframeId>> inverted_;  // each list ascending
   std::map<KeyframeId, BowVector> vectors_;
   mutable std::size_t last_postings_read_ = 0;
 };
+
+/// DetectLoopCandidates over the union of several databases (which hold disjoint keyframes): the
+/// Wi-Fi variant looks up the indexes of the current keyframe's similar clusters only. The same
+/// result as one database holding all their keyframes. `postings_read` (optional) gets the
+/// posting-list entries read.
+std::vector<LoopCandidate> loop_candidates(const std::vector<const KeyframeDatabase*>& databases,
+                                           const BowVector& query,
+                                           const std::vector<KeyframeId>& connected,
+                                           double min_score, const NeighbourFunction& neighbours,
+                                           std::size_t* postings_read = nullptr);
 
 }  // namespace wifislam::slam::bow

@@ -16,6 +16,7 @@ std::string FrontEnd::label() const { return name() + (wifi_ ? "+wifi" : ""); }
 void FrontEnd::attach_wifi(std::unique_ptr<WifiModule> module) {
   if (wifi_) throw std::logic_error("FrontEnd: a Wi-Fi module is already attached");
   wifi_ = std::move(module);
+  on_wifi_attached();
 }
 
 void FrontEnd::observe_wifi_scan(const WifiScan& scan) {

@@ -106,6 +106,8 @@ class FrontEnd {
   virtual std::vector<KeyframeId> wifi_connections(const VerificationReport& report) const {
     return report.visually_connected();
   }
+  /// Called once when attach_wifi() gave the front end its module (e.g. to subscribe to it).
+  virtual void on_wifi_attached() {}
   virtual void on_odometry(const OdometryReading& /*reading*/) {}
   virtual void after_verification(const VerificationReport& /*report*/) {}
   virtual void write_own_outputs(const std::filesystem::path& /*run_dir*/) const {}

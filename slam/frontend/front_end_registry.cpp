@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "core/error.hpp"
+#include "slam/frontend/orbslam/orbslam_front_end.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 #include "slam/frontend/rtabmap/rtabmap_front_end.hpp"
 
@@ -24,6 +25,9 @@ Registry& registry() {
     reg->factories["rgbdslam"] = [](const FrontEndContext& context) {
       const SlamOptions& o = *context.options;
       return std::make_unique<RgbdslamFrontEnd>(o.rgbdslam, o.seed);
+    };
+    reg->factories["orbslam"] = [](const FrontEndContext& context) {
+      return std::make_unique<OrbslamFrontEnd>(context.options->orbslam);
     };
     reg->factories["rtabmap"] = [](const FrontEndContext& context) {
       const SlamOptions& o = *context.options;

@@ -4,6 +4,7 @@
 // over three consecutive keyframes, on hand-built vectors whose answers are worked out here.
 #include <gtest/gtest.h>
 
+#include "slam/bow/bow_feature_matcher.hpp"
 #include "slam/bow/keyframe_database.hpp"
 #include "slam/bow/loop_consistency.hpp"
 
@@ -67,6 +68,85 @@ TEST(KeyframeDatabase, LoopCandidatesFollowDetectLoopCandidates) {
   // leaves nothing.
   EXPECT_TRUE(db.loop_candidates(query, {3}, 1.01, neighbours).empty());
   EXPECT_TRUE(db.loop_candidates(normalised({{42, 1}}), {}, 0.0, neighbours).empty());
+}
+
+// The Wi-Fi variant's query over the indexes of its similar clusters is DetectLoopCandidates over
+// their union: the same candidates and scores as one index holding all of their keyframes, and
+// keyframes of an index not searched are never returned.
+TEST(KeyframeDatabase, AQueryOverSeveralIndexesIsAQueryOverTheirUnion) {
+  const BowVector query = normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}});
+  const std::vector<std::pair<KeyframeId, BowVector>> keyframes = {
+      {1, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}})},
+      {2, normalised({{1, 1}, {2, 1}, {3, 1}, {9, 1}})},
+      {4, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 4}})},
+      {5, normalised({{1, 3}, {2, 3}, {3, 1}, {4, 1}, {6, 2}})},
+      {7, normalised({{1, 2}, {2, 1}, {3, 1}, {4, 3}})}};
+  KeyframeDatabase all, odd, even;
+  for (const auto& [k, v] : keyframes) {
+    all.add(k, v);
+    (k % 2 ? odd : even).add(k, v);
+  }
+  const auto neighbours = [](KeyframeId k) {
+    if (k == 1) return std::vector<KeyframeId>{5, 7};
+    if (k == 5) return std::vector<KeyframeId>{1, 4};
+    return std::vector<KeyframeId>{4};
+  };
+  const auto expected = all.loop_candidates(query, {}, 0.3, neighbours);
+  std::size_t postings = 0;
+  const auto split = loop_candidates({&odd, &even}, query, {}, 0.3, neighbours, &postings);
+  ASSERT_FALSE(expected.empty());
+  ASSERT_EQ(split.size(), expected.size());
+  for (std::size_t i = 0; i < split.size(); ++i) {
+    EXPECT_EQ(split[i].keyframe, expected[i].keyframe);
+    EXPECT_DOUBLE_EQ(split[i].score, expected[i].score);
+    EXPECT_DOUBLE_EQ(split[i].accumulated_score, expected[i].accumulated_score);
+  }
+  EXPECT_EQ(postings, all.last_postings_read());
+  // Only the odd index: no even keyframe, and fewer postings read.
+  const auto odd_only = loop_candidates({&odd}, query, {}, 0.3, neighbours, &postings);
+  for (const LoopCandidate& c : odd_only) EXPECT_EQ(c.keyframe % 2, 1) << c.keyframe;
+  EXPECT_LT(postings, all.last_postings_read());
+}
+
+// ORB-SLAM2's SearchByBoW: features meet only under the same direct-index node, a match needs
+// distance <= 50 and under 0.75 x the second best, each feature of the other keyframe is taken
+// once, and matches outside the three fullest rotation bins are dropped.
+TEST(BowFeatureMatcher, CountsSearchByBowMatches) {
+  const auto descriptor = [](std::uint64_t bits) { return PackedDescriptor{bits, 0, 0, 0}; };
+  BowKeyframe a, b;
+  // Node 1: a0 matches b0 at distance 1 (second best b1 at 30: 1 < 22.5).
+  // Node 1: a1 is ambiguous (b2 at 2 bits, b3 at 2 bits: 2 < 1.5 fails).
+  // Node 2: a2's best is 60 bits away: over TH_LOW.
+  // Node 3: a3 would match b5, but b5 sits under node 4.
+  a.descriptors = {descriptor(0b1), descriptor(0xF0), descriptor(0), descriptor(0x5)};
+  a.angles_deg = {10, 10, 10, 10};
+  a.direct_index = {{1, {0, 1}}, {2, {2}}, {3, {3}}};
+  b.descriptors = {descriptor(0b11), descriptor((1ull << 30) - 1), descriptor(0xF3),
+                   descriptor(0xFC), descriptor((1ull << 60) - 1), descriptor(0x5)};
+  b.angles_deg = {12, 12, 12, 12, 12, 12};
+  b.direct_index = {{1, {0, 1, 2, 3}}, {2, {4}}, {4, {5}}};
+  EXPECT_EQ(count_bow_matches(a, b, {}), 1);
+  BowMatchOptions loose;
+  loose.ratio = 1.01;
+  EXPECT_EQ(count_bow_matches(a, b, loose), 2);  // a1 now takes b2 (first of the ties)
+  loose.max_distance = 64;
+  EXPECT_EQ(count_bow_matches(a, b, loose), 3);  // and a2 takes b4
+
+  // Rotation consistency: 20 matches turned by 0 degrees, 1 by 90 (a bin of its own, under a
+  // tenth of the fullest: dropped).
+  BowKeyframe c, d;
+  for (int i = 0; i < 21; ++i) {
+    c.descriptors.push_back(descriptor(1ull << i));
+    d.descriptors.push_back(descriptor(1ull << i));
+    c.angles_deg.push_back(i == 20 ? 100.0f : 10.0f);
+    d.angles_deg.push_back(10.0f);
+    c.direct_index[static_cast<NodeId>(i)] = {i};
+    d.direct_index[static_cast<NodeId>(i)] = {i};
+  }
+  EXPECT_EQ(count_bow_matches(c, d, {}), 20);
+  BowMatchOptions no_orientation;
+  no_orientation.check_orientation = false;
+  EXPECT_EQ(count_bow_matches(c, d, no_orientation), 21);
 }
 
 TEST(LoopConsistency, ACandidateIsAcceptedAfterThreeConsecutiveConsistentQueries) {

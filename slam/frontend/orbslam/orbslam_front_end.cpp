@@ -1,0 +1,225 @@
+#include "slam/frontend/orbslam/orbslam_front_end.hpp"
+
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.hpp"
+#include "core/run_format.hpp"
+#include "slam/bow/shipped_vocabulary.hpp"
+
+namespace wifislam::slam {
+
+namespace {
+
+double elapsed_ms(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since)
+      .count();
+}
+
+}  // namespace
+
+OrbslamFrontEnd::OrbslamFrontEnd(const OrbslamOptions& options)
+    : FrontEnd(std::make_unique<AcceptBestLoopHypothesis>()),
+      options_(options),
+      vocabulary_(bow::load_vocabulary(options.vocabulary)),
+      covisibility_(options.covisibility_min_weight),
+      consistency_(options.loop_consistency),
+      last_loop_(0) {
+  // ORB-SLAM's direct index sits 4 levels above the leaves of its L = 6 tree, at level 2 (100
+  // nodes of k = 10): features are matched within one of ~100 regions of descriptor space. We
+  // keep the level, not the distance from the leaves, so a shallower tree matches as coarsely.
+  direct_index_levels_up_ = std::max(1, vocabulary_->depth() - 2);
+}
+
+void OrbslamFrontEnd::on_wifi_attached() {
+  // The paper's per-cluster dictionaries: a keyframe enters the index of the cluster cluster
+  // management gives it.
+  wifi()->subscribe([this](const ClusterEvent& event) {
+    by_cluster_[event.cluster].add(event.keyframe, bow_.at(event.keyframe));
+  });
+}
+
+std::vector<const bow::KeyframeDatabase*> OrbslamFrontEnd::databases_to_search() const {
+  if (wifi() == nullptr) return {&all_};
+  std::vector<const bow::KeyframeDatabase*> out;
+  if (!wifi()->has_signature()) {
+    // No Wi-Fi information: every index, as vanilla.
+    for (const auto& [cluster, database] : by_cluster_) out.push_back(&database);
+    return out;
+  }
+  for (const SimilarCluster& similar : wifi()->similar_clusters()) {
+    const auto it = by_cluster_.find(similar.cluster);
+    if (it != by_cluster_.end()) out.push_back(&it->second);
+  }
+  // Keyframes made before the first scan are in no cluster; Wi-Fi cannot rule them out.
+  const auto unclustered = by_cluster_.find(-1);
+  if (unclustered != by_cluster_.end()) out.push_back(&unclustered->second);
+  return out;
+}
+
+std::vector<Candidate> OrbslamFrontEnd::select(const SelectionQuery& query) {
+  const auto started = std::chrono::steady_clock::now();
+  graph_ = query.graph;
+  const KeyframeId id = query.keyframe;
+  OrbslamQueryRecord record;
+  record.keyframe = id;
+
+  // 1. BoW vector and direct index.
+  const FrameFeatures& features = *query.features;
+  bow::BowKeyframe& keyframe = bow_keyframes_[id];
+  keyframe.descriptors = bow::pack_descriptors(features.descriptors);
+  keyframe.angles_deg.reserve(features.keypoints.size());
+  for (const cv::KeyPoint& k : features.keypoints) keyframe.angles_deg.push_back(k.angle);
+  bow_[id] =
+      vocabulary_->transform(features.descriptors, &keyframe.direct_index, direct_index_levels_up_);
+  double query_ms = elapsed_ms(started);
+
+  // 2. Local mapping candidates.
+  std::vector<Candidate> out;
+  std::set<KeyframeId> taken(query.already_compared.begin(), query.already_compared.end());
+  taken.insert(id);
+  std::vector<KeyframeId> local;
+  if (id >= 1) {
+    const KeyframeId previous = id - 1;
+    local.push_back(previous);
+    if (taken.insert(previous).second) out.push_back({previous, CandidateRole::kPredecessor});
+    for (KeyframeId k : covisibility_.best(previous, options_.local_keyframes)) {
+      local.push_back(k);
+      if (k < id && taken.insert(k).second) out.push_back({k, CandidateRole::kNeighbour});
+    }
+  }
+
+  // 3. Loop detection.
+  const auto detection_started = std::chrono::steady_clock::now();
+  std::vector<KeyframeId> connected = query.already_compared;
+  connected.insert(connected.end(), local.begin(), local.end());
+  std::sort(connected.begin(), connected.end());
+  connected.erase(std::unique(connected.begin(), connected.end()), connected.end());
+  for (const Candidate& c : detect_loop(query, connected, record)) {
+    if (taken.insert(c.keyframe).second) out.push_back(c);
+  }
+
+  // 4. Vanilla: into the one index after its own query. Wi-Fi: after cluster management.
+  if (wifi() == nullptr) all_.add(id, bow_.at(id));
+  query_ms += elapsed_ms(detection_started);
+  record.query_ms = query_ms;
+  records_.push_back(record);
+  return out;
+}
+
+std::vector<Candidate> OrbslamFrontEnd::detect_loop(const SelectionQuery& query,
+                                                    const std::vector<KeyframeId>& connected,
+                                                    OrbslamQueryRecord& record) {
+  const KeyframeId id = query.keyframe;
+  if (id < last_loop_ + options_.keyframes_between_loops || connected.empty()) return {};
+  record.detection_ran = true;
+  const bow::BowVector& current = bow_.at(id);
+
+  double min_score = 1.0;
+  for (KeyframeId k : connected)
+    min_score = std::min(min_score, bow::l1_score(current, bow_.at(k)));
+  record.min_score = min_score;
+
+  const std::vector<const bow::KeyframeDatabase*> databases = databases_to_search();
+  record.databases_searched = static_cast<int>(databases.size());
+  for (const bow::KeyframeDatabase* d : databases) record.keyframes_searched += d->size();
+  const bow::NeighbourFunction neighbours = [this](KeyframeId k) {
+    return covisibility_.best(k, options_.covisibility_group_size);
+  };
+  const std::vector<bow::LoopCandidate> candidates = bow::loop_candidates(
+      databases, current, connected, min_score, neighbours, &record.postings_read);
+  record.candidates = static_cast<int>(candidates.size());
+
+  // Temporal consistency: each candidate with its covisible keyframes.
+  std::vector<std::pair<KeyframeId, std::set<KeyframeId>>> groups;
+  for (const bow::LoopCandidate& c : candidates) {
+    std::set<KeyframeId> group{c.keyframe};
+    for (KeyframeId k : covisibility_.connected(c.keyframe)) group.insert(k);
+    groups.emplace_back(c.keyframe, std::move(group));
+  }
+  const std::vector<KeyframeId> consistent = consistency_.update(groups);
+  record.consistent = static_cast<int>(consistent.size());
+
+  // The SearchByBoW gate, then verification by the pipeline.
+  std::vector<Candidate> out;
+  const bow::BowKeyframe& mine = bow_keyframes_.at(id);
+  for (KeyframeId k : consistent) {
+    if (bow::count_bow_matches(mine, bow_keyframes_.at(k), {}) >= options_.bow_min_matches) {
+      out.push_back({k, CandidateRole::kLongTerm});
+    }
+  }
+  record.bow_passed = static_cast<int>(out.size());
+  return out;
+}
+
+void OrbslamFrontEnd::after_verification(const VerificationReport& report) {
+  const KeyframeId id = report.keyframe;
+  OrbslamQueryRecord& record = records_.back();
+  // Covisibility: the keyframe's accepted visual and loop edges (the tracking edge among them).
+  if (graph_ != nullptr) {
+    for (auto it = graph_->edges().rbegin(); it != graph_->edges().rend(); ++it) {
+      if (it->from != id && it->to != id) break;  // the keyframe's edges were added last
+      if (it->type == EdgeType::kVisual || it->type == EdgeType::kLoop) {
+        covisibility_.add(it->from, it->to, it->inliers);
+      }
+    }
+  }
+  for (const ComparisonOutcome& c : report.comparisons) {
+    if (c.accepted && c.edge_type == EdgeType::kLoop &&
+        c.candidate.role == CandidateRole::kLongTerm) {
+      last_loop_ = id;
+      record.accepted_loop = c.candidate.keyframe;
+    }
+  }
+  if (wifi() != nullptr) {
+    record.cluster = wifi()->cluster_of(id);
+    // Without a signature the keyframe joined no cluster: the index every query reads.
+    if (record.cluster < 0) by_cluster_[-1].add(id, bow_.at(id));
+  }
+}
+
+void OrbslamFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) const {
+  namespace col = run_folder::orbslam_queries_column;
+  std::string csv;
+  for (std::size_t i = 0; i < col::kAll.size(); ++i) {
+    csv += (i == 0 ? "" : ",");
+    csv += col::kAll[i];
+  }
+  csv += '\n';
+  for (const OrbslamQueryRecord& r : records_) {
+    csv += fmt::format("{},{},{},{},{},{:.6g},{},{},{},{},{},{:.4f}\n", r.keyframe,
+                       r.detection_ran ? 1 : 0, r.databases_searched, r.keyframes_searched,
+                       r.postings_read, r.min_score, r.candidates, r.consistent, r.bow_passed,
+                       r.accepted_loop, r.cluster, r.query_ms);
+  }
+  write_file_atomic(run_dir / run_folder::kOrbslamQueries, csv);
+}
+
+nlohmann::json OrbslamFrontEnd::own_summary() const {
+  std::size_t detections = 0, postings = 0, searched = 0, verified = 0;
+  for (const OrbslamQueryRecord& r : records_) {
+    if (!r.detection_ran) continue;
+    ++detections;
+    postings += r.postings_read;
+    searched += r.keyframes_searched;
+    verified += static_cast<std::size_t>(r.bow_passed);
+  }
+  nlohmann::json out = {
+      {"vocabulary",
+       options_.vocabulary.empty() ? bow::kShippedVocabularyName : options_.vocabulary},
+      {"vocabulary_sha256", bow::vocabulary_checksum(options_.vocabulary)},
+      {"vocabulary_words", vocabulary_->word_count()},
+      {"local_keyframes", options_.local_keyframes},
+      {"covisibility_min_weight", options_.covisibility_min_weight},
+      {"covisibility_edges", covisibility_.edge_count()},
+      {"loop_detections", detections},
+      {"loop_candidates_verified", verified},
+      {"mean_postings_read", detections ? static_cast<double>(postings) / detections : 0.0},
+      {"mean_keyframes_searched", detections ? static_cast<double>(searched) / detections : 0.0}};
+  if (wifi() != nullptr) out["keyframe_databases"] = by_cluster_.size();
+  return out;
+}
+
+}  // namespace wifislam::slam
