@@ -104,6 +104,19 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
        "rtabmap: Rtabmap/LoopThr, posterior at which the best hypothesis is verified (0.11)"},
       {"max_retrieved", &o.rtabmap.max_retrieved,
        "rtabmap: Rtabmap/MaxRetrieved, LTM neighbours of the best hypothesis retrieved (2)"},
+      {"proximity_by_space", &o.rtabmap.proximity_by_space,
+       "rtabmap: RGBD/ProximityBySpace, local loop closures with WM nodes near the position (true)"},
+      {"local_radius_m", &o.rtabmap.local_radius_m,
+       "rtabmap: RGBD/LocalRadius, proximity search radius around the estimated position (10)"},
+      {"proximity_max_graph_depth", &o.rtabmap.proximity_max_graph_depth,
+       "rtabmap: RGBD/ProximityMaxGraphDepth, proximity nodes at most this many links away (50)"},
+      {"proximity_max_paths", &o.rtabmap.proximity_max_paths,
+       "rtabmap: RGBD/ProximityMaxPaths, paths of nearby nodes verified, one node each; 0 = all "
+       "(3)"},
+      {"proximity_filtering_radius_m", &o.rtabmap.proximity_filtering_radius_m,
+       "rtabmap: RGBD/ProximityPathFilteringRadius, a path's node is verified this close (1)"},
+      {"proximity_angle_deg", &o.rtabmap.proximity_angle_deg,
+       "rtabmap: RGBD/ProximityAngle, most heading difference of a proximity node (45)"},
       {"optimize_max_error", &o.rtabmap.optimize_max_error,
        "rtabmap: RGBD/OptimizeMaxError, link error (own sigmas) that rejects a loop closure (3)"},
       {"time_threshold_ms", &o.rtabmap.time_threshold_ms,
@@ -278,6 +291,15 @@ void validate(const SlamOptions& o) {
           "loop_threshold must be in [0, 1]");
   require(o.rtabmap.max_retrieved >= 0, "max_retrieved must be >= 0");
   require(o.rtabmap.optimize_max_error > 0, "optimize_max_error must be > 0");
+  require(o.rtabmap.local_radius_m >= 0 && std::isfinite(o.rtabmap.local_radius_m),
+          "local_radius_m must be a number >= 0");
+  require(o.rtabmap.proximity_max_graph_depth >= 0, "proximity_max_graph_depth must be >= 0");
+  require(o.rtabmap.proximity_max_paths >= 0, "proximity_max_paths must be >= 0");
+  require(o.rtabmap.proximity_filtering_radius_m >= 0 &&
+              std::isfinite(o.rtabmap.proximity_filtering_radius_m),
+          "proximity_filtering_radius_m must be a number >= 0");
+  require(o.rtabmap.proximity_angle_deg > 0 && o.rtabmap.proximity_angle_deg <= 180,
+          "proximity_angle_deg must be in (0, 180]");
   require(o.rtabmap.time_threshold_ms > 0, "time_threshold_ms must be > 0 (inf = off)");
   require(o.rtabmap.time_source == "cost" || o.rtabmap.time_source == "wall",
           "time_source must be cost or wall, got '" + o.rtabmap.time_source + "'");

@@ -14,6 +14,8 @@ std::string to_string(CandidateRole role) {
       return "long_term";
     case CandidateRole::kRelocalisation:
       return "relocalisation";
+    case CandidateRole::kProximity:
+      return "proximity";
   }
   return "unknown";
 }

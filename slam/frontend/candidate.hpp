@@ -16,10 +16,11 @@ namespace wifislam::slam {
 
 /// Why a keyframe is compared with the new one. RGBD-SLAM's three groups (paper, "RGBD SLAM"):
 /// predecessors and geodesic neighbours (motion estimation), long-term candidates (RGBDSLAMv2's
-/// "sampled" keyframes, for long-term loop closure); plus the recent keyframes the pipeline tries
-/// when tracking was lost. timing.json keeps per-role counters under these names, and "tracking"
-/// for the frame-to-keyframe matches of tracking itself.
-enum class CandidateRole { kPredecessor, kNeighbour, kLongTerm, kRelocalisation };
+/// "sampled" keyframes, for long-term loop closure); the recent keyframes the pipeline tries when
+/// tracking was lost; and RTAB-Map's proximity detection by space (nodes near the estimated
+/// position, RGBD/ProximityBySpace). timing.json keeps per-role counters under these names, and
+/// "tracking" for the frame-to-keyframe matches of tracking itself.
+enum class CandidateRole { kPredecessor, kNeighbour, kLongTerm, kRelocalisation, kProximity };
 std::string to_string(CandidateRole role);
 inline constexpr const char* kTrackingRole = "tracking";
 

@@ -20,7 +20,8 @@ std::vector<std::size_t> AcceptBestLoopHypothesis::choose(
   std::vector<std::size_t> out;
   std::size_t best = hypotheses.size();
   for (std::size_t i = 0; i < hypotheses.size(); ++i) {
-    if (hypotheses[i].edge_type != EdgeType::kLoop) {
+    if (hypotheses[i].edge_type != EdgeType::kLoop ||
+        hypotheses[i].candidate.role == CandidateRole::kProximity) {
       out.push_back(i);
     } else if (best == hypotheses.size() ||
                hypotheses[i].transformation.inliers > hypotheses[best].transformation.inliers) {

@@ -3,7 +3,9 @@
 // differ most after candidate selection (DESIGN.md, "The SLAM pipeline").
 //   all               every verified hypothesis (RGBD-SLAM: the back end sorts them out later)
 //   best              every ordinary visual hypothesis, and of the loop hypotheses only the one
-//                     with most inliers (RTAB-Map and ORB-SLAM close at most one loop per node)
+//                     with most inliers (RTAB-Map and ORB-SLAM close at most one loop per node);
+//                     RTAB-Map's proximity links (role proximity) are added beside it, as
+//                     Rtabmap::process adds them, so they are kept like visual ones
 //   graph-consistent  another policy's choice, tried in a copy of the graph: after optimisation
 //                     no link's error may exceed a bound in its own standard deviations
 //                     (RTAB-Map's RGBD/OptimizeMaxError, Graph.cpp computeMaxGraphErrors);

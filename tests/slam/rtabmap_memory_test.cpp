@@ -133,6 +133,39 @@ TEST(RtabmapWifi, ImmuneNodesAreNeverTransferredAndRetrievedNodesAreSearchedInTh
   for (KeyframeId k : fe.last_transferred()) EXPECT_GE(k, 40);
 }
 
+// RGBD/ProximityBySpace: a node that comes back within RGBD/ProximityPathFilteringRadius (1 m) of
+// a WM node, looking the same way, verifies it as a proximity candidate (the path's most likely
+// node); nothing is proposed far from every node, among STM nodes, or with the switch off.
+TEST(RtabmapProximity, ANodeBackNearAWorkingMemoryNodeVerifiesItAsAProximityCandidate) {
+  const auto proximity_of = [](const std::vector<Candidate>& candidates) {
+    std::vector<KeyframeId> out;
+    for (const Candidate& c : candidates) {
+      if (c.role == CandidateRole::kProximity) out.push_back(c.keyframe);
+    }
+    return out;
+  };
+  RtabmapOptions options;
+  options.loop_threshold = 1.0;  // no global loop candidate: proximity alone
+  for (const bool on : {true, false}) {
+    SCOPED_TRACE(on ? "proximity on" : "proximity off");
+    options.proximity_by_space = on;
+    test::RtabmapDriver d(options);
+    for (int p = 0; p < 30; ++p) {  // x = 0 .. 14.5 m; nodes 20-29 are in STM
+      EXPECT_TRUE(proximity_of(d.add_node(p)).empty()) << "node " << p;
+    }
+    // Back at node 6 (x = 3 m), seeing place 6 again, 0.2 m off.
+    const std::vector<KeyframeId> near = proximity_of(d.add_node(6, 3.2));
+    if (on) {
+      EXPECT_EQ(near, (std::vector<KeyframeId>{6}));
+    } else {
+      EXPECT_TRUE(near.empty());
+    }
+    // Far from every node: nothing; next to an STM node (x = 13 m, node 26): nothing.
+    EXPECT_TRUE(proximity_of(d.add_node(50, 100.0)).empty());
+    EXPECT_TRUE(proximity_of(d.add_node(26, 13.1)).empty());
+  }
+}
+
 TEST(RtabmapBayes, PosteriorSumsToOne) {
   test::RtabmapDriver d;
   for (int p = 0; p < 40; ++p) {

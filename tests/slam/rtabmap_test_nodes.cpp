@@ -51,10 +51,14 @@ RtabmapDriver::RtabmapDriver(slam::RtabmapOptions options, bool wifi)
   }
 }
 
-std::vector<slam::Candidate> RtabmapDriver::select_only(int place) {
-  const slam::KeyframeId id =
-      graph_.add_node(Timestamp::from_ns(graph_.node_count()),
-                      static_cast<std::int64_t>(graph_.node_count()), Pose::Identity());
+std::vector<slam::Candidate> RtabmapDriver::select_only(int place, std::optional<double> x_m) {
+  // Camera looking along +x (its optical axis z is the world's x).
+  Pose pose = Pose::Identity();
+  pose.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
+  pose.translation() =
+      Eigen::Vector3d(x_m.value_or(0.5 * static_cast<double>(graph_.node_count())), 0.0, 0.0);
+  const slam::KeyframeId id = graph_.add_node(Timestamp::from_ns(graph_.node_count()),
+                                              static_cast<std::int64_t>(graph_.node_count()), pose);
   if (id > 0) graph_.add_edge({id - 1, id, slam::EdgeType::kVisual});
   rule_.add_keyframe(static_cast<double>(id));
   features_ = place_features(place);
@@ -77,8 +81,8 @@ void RtabmapDriver::finish_node() {
   front_end_->on_verified(report);
 }
 
-std::vector<slam::Candidate> RtabmapDriver::add_node(int place) {
-  std::vector<slam::Candidate> out = select_only(place);
+std::vector<slam::Candidate> RtabmapDriver::add_node(int place, std::optional<double> x_m) {
+  std::vector<slam::Candidate> out = select_only(place, x_m);
   finish_node();
   return out;
 }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,10 +26,11 @@ class RtabmapDriver {
  public:
   explicit RtabmapDriver(slam::RtabmapOptions options = {}, bool wifi = false);
 
-  /// Adds a node seeing `place`; returns its candidates.
-  std::vector<slam::Candidate> add_node(int place);
+  /// Adds a node seeing `place`; returns its candidates. Node k stands at x = 0.5 k m (a straight
+  /// corridor, looking along +x: no node comes back near an earlier one) unless `x_m` says where.
+  std::vector<slam::Candidate> add_node(int place, std::optional<double> x_m = std::nullopt);
   /// Adds a node and stops before verification (to look at the memory between the two).
-  std::vector<slam::Candidate> select_only(int place);
+  std::vector<slam::Candidate> select_only(int place, std::optional<double> x_m = std::nullopt);
   void finish_node();
 
   slam::RtabmapFrontEnd& front_end() { return *front_end_; }

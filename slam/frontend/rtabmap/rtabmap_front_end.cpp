@@ -4,6 +4,7 @@
 #include <cmath>
 #include <ctime>
 #include <deque>
+#include <limits>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -151,8 +152,10 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
                                                           words_of_, memory_.in_memory());
   pending_.likelihood_terms = raw.terms;
   std::pair<KeyframeId, double> best{-1, 0.0};
+  std::map<rtabmap::NodeId, double> likelihood;
   if (!scored.empty()) {
     const rtabmap::NormalisedLikelihood l = rtabmap::normalise_likelihood(raw.score);
+    likelihood = l.node;
     filter_.update(l.node, l.virtual_place, [this](rtabmap::NodeId id, int max_margin) {
       std::map<rtabmap::NodeId, int> out;
       for (const auto& [k, m] : neighbours_in_memory(id, max_margin, false)) {
@@ -179,6 +182,102 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
     if (!compared(best.first) && best.first != t - 1) {
       out.push_back({best.first, CandidateRole::kLongTerm});
     }
+  }
+  if (options_.proximity_by_space) {
+    for (KeyframeId k : proximity_candidates(t, likelihood)) {
+      const bool listed =
+          std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.keyframe == k; });
+      if (listed || compared(k)) continue;
+      out.push_back({k, CandidateRole::kProximity});
+      ++pending_.proximity_candidates;
+    }
+  }
+  return out;
+}
+
+std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
+    KeyframeId t, const std::map<rtabmap::NodeId, double>& likelihood) {
+  if (graph_ == nullptr || options_.local_radius_m <= 0) return {};
+  const Pose& here = graph_->node(t).pose;
+  const Eigen::Vector3d heading = here.linear().col(2);  // camera optical axis
+  const double cos_max_angle = std::cos(options_.proximity_angle_deg * M_PI / 180.0);
+  const auto distance_m = [&](KeyframeId k) {
+    return (graph_->node(k).pose.translation() - here.translation()).norm();
+  };
+  const auto looks_alike_way = [&](KeyframeId k) {
+    return graph_->node(k).pose.linear().col(2).dot(heading) >= cos_max_angle;
+  };
+
+  // WM nodes near the estimated position, within the graph depth (ascending ids).
+  std::vector<KeyframeId> nearest;
+  const auto consider = [&](KeyframeId k) {
+    if (k != t && memory_.place(k) == rtabmap::MemoryPlace::kWm &&
+        distance_m(k) <= options_.local_radius_m) {
+      nearest.push_back(k);
+    }
+  };
+  if (options_.proximity_max_graph_depth > 0) {
+    for (const auto& [k, margin] :
+         neighbours_in_memory(t, options_.proximity_max_graph_depth, false)) {
+      consider(k);
+    }
+  } else {
+    for (KeyframeId k : memory_.wm()) consider(k);
+    std::sort(nearest.begin(), nearest.end());
+  }
+  if (wifi() != nullptr) nearest = wifi()->bound(nearest);
+
+  // Paths: runs of consecutive ids, ordered by their highest likelihood, then the newer first
+  // (RTAB-Map walks its map of (likelihood, id) keys backwards).
+  struct Path {
+    std::vector<KeyframeId> nodes;
+    KeyframeId most_likely = -1;
+    double highest_likelihood = 0.0;
+  };
+  std::vector<Path> paths;
+  for (KeyframeId k : nearest) {
+    if (paths.empty() || k != paths.back().nodes.back() + 1) paths.emplace_back();
+    Path& path = paths.back();
+    path.nodes.push_back(k);
+    const auto it = likelihood.find(k);
+    const double v = it == likelihood.end() ? 0.0 : it->second;
+    if (v > path.highest_likelihood) {
+      path.highest_likelihood = v;
+      path.most_likely = k;
+    }
+  }
+  std::sort(paths.begin(), paths.end(), [](const Path& a, const Path& b) {
+    if (a.highest_likelihood != b.highest_likelihood) {
+      return a.highest_likelihood > b.highest_likelihood;
+    }
+    return a.nodes.front() > b.nodes.front();
+  });
+
+  std::vector<KeyframeId> out;
+  for (const Path& path : paths) {
+    // RGBD/ProximityMaxPaths 0: no limit, as in RTAB-Map.
+    if (options_.proximity_max_paths > 0 &&
+        static_cast<int>(out.size()) >= options_.proximity_max_paths) {
+      break;
+    }
+    KeyframeId chosen = -1;
+    if (path.most_likely >= 0 && looks_alike_way(path.most_likely)) {
+      chosen = path.most_likely;
+    } else {
+      double nearest_m = std::numeric_limits<double>::infinity();
+      for (KeyframeId k : path.nodes) {
+        if (looks_alike_way(k) && distance_m(k) < nearest_m) {
+          nearest_m = distance_m(k);
+          chosen = k;
+        }
+      }
+    }
+    if (chosen < 0 || graph_->has_edge(chosen, t)) continue;
+    if (options_.proximity_filtering_radius_m > 0 &&
+        distance_m(chosen) >= options_.proximity_filtering_radius_m) {
+      continue;
+    }
+    out.push_back(chosen);
   }
   return out;
 }
@@ -249,9 +348,9 @@ void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) co
         fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
                     r.entered_wm, r.retrieved, r.wifi_retrieved, r.transferred, r.immune,
                     r.rehearsed ? 1 : 0, r.words, r.word_comparisons, r.scored, r.likelihood_terms);
-    csv += fmt::format("{},{:.6g},{:.6g},{},{},{},{},", r.best, r.best_probability,
+    csv += fmt::format("{},{:.6g},{:.6g},{},{},{},{},{},", r.best, r.best_probability,
                        r.virtual_probability, r.loop_candidate, r.loop_verified ? 1 : 0,
-                       r.loop_accepted ? 1 : 0, r.verifications);
+                       r.loop_accepted ? 1 : 0, r.verifications, r.proximity_candidates);
     csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f}\n", r.cost_ms, r.wall_ms, r.cpu_ms,
                        r.over_budget_ms);
   }
@@ -260,7 +359,7 @@ void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) co
 
 nlohmann::json RtabmapFrontEnd::own_summary() const {
   std::int64_t transferred = 0, retrieved = 0, wifi_retrieved = 0, rehearsed = 0, over = 0,
-               candidates = 0, accepted = 0;
+               candidates = 0, accepted = 0, proximity = 0;
   std::size_t max_wm = 0;
   double wm_sum = 0.0, over_ms = 0.0, cost_ms = 0.0, wall_ms = 0.0, cpu_ms = 0.0;
   for (const RtabmapNodeRecord& r : records_) {
@@ -275,6 +374,7 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
     over_ms += r.over_budget_ms;
     candidates += r.loop_candidate >= 0 ? 1 : 0;
     accepted += r.loop_accepted ? 1 : 0;
+    proximity += r.proximity_candidates;
     max_wm = std::max(max_wm, r.wm);
     wm_sum += static_cast<double>(r.wm);
   }
@@ -298,6 +398,7 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
         {"rehearsed", rehearsed}}},
       {"vocabulary_words", vocabulary_.size()},
       {"nodes_over_budget", over},
+      {"proximity_candidates", proximity},
       // Sum over nodes of what TimeThr is compared with, under each time source.
       {"node_time_s", {{"cost", cost_ms * 1e-3}, {"wall", wall_ms * 1e-3}, {"cpu", cpu_ms * 1e-3}}},
       {"over_budget_ms", over_ms},

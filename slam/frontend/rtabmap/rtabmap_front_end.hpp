@@ -29,8 +29,18 @@
 //      pipeline verifies them (Vis/MinInliers = min_matches); acceptance keeps every ordinary
 //      visual edge and the best loop closure, then drops loop closures that tear the graph
 //      (RGBD/OptimizeMaxError; edge_acceptance.hpp).
+//   6. proximity detection by space (RGBD/ProximityBySpace; Rtabmap::process, "Proximity
+//      detections"): WM nodes within RGBD/LocalRadius of the node's estimated position and at most
+//      RGBD/ProximityMaxGraphDepth links away (with Wi-Fi: only those of similar clusters, the
+//      paper's bounding of verification), grouped into paths of consecutive ids; paths in order of
+//      their highest likelihood (ties: the newer path), for up to RGBD/ProximityMaxPaths of them:
+//      the path's most likely node when its likelihood is positive and it looks within
+//      RGBD/ProximityAngle of the node's heading, else its nearest such node; verified (role
+//      proximity) when not linked to the node yet and within RGBD/ProximityPathFilteringRadius.
+//      Accepted proximity links are added beside the one global loop closure, as RTAB-Map adds
+//      them, and face the same graph-consistency check.
 // After verification (after_verification):
-//   6. the node's processing time (cost model or wall clock) against Rtabmap/TimeThr: over it,
+//   7. the node's processing time (cost model or wall clock) against Rtabmap/TimeThr: over it,
 //      RTAB-Map's Memory::forget moves one node more than entered WM this step to LTM, lowest
 //      weight and oldest first, keeping nodes immune this step, the best hypothesis, nodes linked
 //      to an STM node (RTAB-Map: "links must not be in STM"), and with Wi-Fi every node of a
@@ -80,6 +90,7 @@ struct RtabmapNodeRecord {
   KeyframeId loop_candidate = -1;  // best hypothesis at or above Rtabmap/LoopThr
   bool loop_verified = false, loop_accepted = false;
   int verifications = 0;
+  int proximity_candidates = 0;  // RGBD/ProximityBySpace candidates verified
   /// Cost model, wall-clock, and CPU time of this thread (what wall-clock would be on an idle
   /// core: the calibration's reference on a shared machine), from selection to memory management.
   double cost_ms = 0.0, wall_ms = 0.0, cpu_ms = 0.0;
@@ -118,6 +129,9 @@ class RtabmapFrontEnd final : public FrontEnd {
   std::map<rtabmap::NodeId, int> neighbours_in_memory(KeyframeId node, int max_margin,
                                                       bool include_ltm) const;
   bool linked_to_stm(KeyframeId node) const;
+  /// Step 6: proximity candidates of node `t` given the likelihood of the WM nodes scored.
+  std::vector<KeyframeId> proximity_candidates(KeyframeId t,
+                                               const std::map<rtabmap::NodeId, double>& likelihood);
 
   RtabmapOptions options_;
   rtabmap::VisualVocabulary vocabulary_;

@@ -66,6 +66,20 @@ struct RtabmapOptions {
   double loop_threshold = 0.11;
   /// Rtabmap/MaxRetrieved: LTM neighbours of the best hypothesis brought back per node.
   int max_retrieved = 2;
+  /// RGBD/ProximityBySpace: also look for local loop closures among WM nodes near the node's
+  /// estimated position (RtabmapFrontEnd, step 6).
+  bool proximity_by_space = true;
+  /// RGBD/LocalRadius (m): WM nodes this close to the node's estimated position ...
+  double local_radius_m = 10.0;
+  /// ... and at most RGBD/ProximityMaxGraphDepth links away over STM and WM (0 = any).
+  int proximity_max_graph_depth = 50;
+  /// RGBD/ProximityMaxPaths: paths (runs of consecutive nodes) verified, one node each (0: all).
+  int proximity_max_paths = 3;
+  /// RGBD/ProximityPathFilteringRadius (m): a path's chosen node is verified only this close.
+  double proximity_filtering_radius_m = 1.0;
+  /// RGBD/ProximityAngle (deg): path nodes looking more than this away from the node's heading
+  /// are not chosen.
+  double proximity_angle_deg = 45.0;
   /// RGBD/OptimizeMaxError: a loop closure is dropped when, after a trial optimisation, some link's
   /// error exceeds this many of its own standard deviations.
   double optimize_max_error = 3.0;
