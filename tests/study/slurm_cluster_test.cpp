@@ -11,10 +11,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <pwd.h>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <pwd.h>
 #include <thread>
 
 #include "eval/study/result_store.hpp"
@@ -95,23 +95,43 @@ class Daemons {
   std::vector<pid_t> pids_;
 };
 
-std::string slurm_conf(const fs::path& d, const std::string& host, int port, const std::string& user) {
+std::string slurm_conf(const fs::path& d, const std::string& host, int port,
+                       const std::string& user) {
   const std::string dir = d.string();
   return "ClusterName=wifislamtest\n"
-         "SlurmctldHost=" + host + "\n"
-         "SlurmctldPort=" + std::to_string(port) + "\n"
-         "SlurmdPort=" + std::to_string(port + 1) + "\n"
-         "SlurmUser=" + user + "\nSlurmdUser=" + user + "\n"
+         "SlurmctldHost=" +
+         host +
+         "\n"
+         "SlurmctldPort=" +
+         std::to_string(port) +
+         "\n"
+         "SlurmdPort=" +
+         std::to_string(port + 1) +
+         "\n"
+         "SlurmUser=" +
+         user + "\nSlurmdUser=" + user +
+         "\n"
          "AuthType=auth/munge\nCredType=cred/munge\n"
-         "AuthInfo=socket=" + dir + "/munge/munge.socket\n"
-         "StateSaveLocation=" + dir + "/state\nSlurmdSpoolDir=" + dir + "/spool\n"
-         "SlurmctldPidFile=" + dir + "/slurmctld.pid\nSlurmdPidFile=" + dir + "/slurmd.pid\n"
-         "SlurmctldLogFile=" + dir + "/log/slurmctld.log\nSlurmdLogFile=" + dir + "/log/slurmd.log\n"
+         "AuthInfo=socket=" +
+         dir +
+         "/munge/munge.socket\n"
+         "StateSaveLocation=" +
+         dir + "/state\nSlurmdSpoolDir=" + dir +
+         "/spool\n"
+         "SlurmctldPidFile=" +
+         dir + "/slurmctld.pid\nSlurmdPidFile=" + dir +
+         "/slurmd.pid\n"
+         "SlurmctldLogFile=" +
+         dir + "/log/slurmctld.log\nSlurmdLogFile=" + dir +
+         "/log/slurmd.log\n"
          "ProctrackType=proctrack/linuxproc\nTaskPlugin=task/none\n"
          "SelectType=select/cons_tres\nSelectTypeParameters=CR_Core\n"
          "ReturnToService=2\nMpiDefault=none\n"
-         "NodeName=" + host + " CPUs=2 RealMemory=2000 State=UNKNOWN\n"
-         "PartitionName=debug Nodes=" + host + " Default=YES MaxTime=INFINITE State=UP\n";
+         "NodeName=" +
+         host +
+         " CPUs=2 RealMemory=2000 State=UNKNOWN\n"
+         "PartitionName=debug Nodes=" +
+         host + " Default=YES MaxTime=INFINITE State=UP\n";
 }
 
 TEST(SlurmCluster, AStudyAsAFourTaskJobArrayMergesToTheUnshardedRun) {
@@ -134,12 +154,13 @@ TEST(SlurmCluster, AStudyAsAFourTaskJobArrayMergesToTheUnshardedRun) {
   test::write_file(conf, slurm_conf(dir, short_hostname(), port, user_name()));
 
   Daemons daemons;
-  daemons.start({munged, "--foreground", "--force", "--socket=" + (dir / "munge/munge.socket").string(),
-                 "--key-file=" + (dir / "munge/munge.key").string(),
-                 "--log-file=" + (dir / "log/munged.log").string(),
-                 "--pid-file=" + (dir / "munge/munged.pid").string(),
-                 "--seed-file=" + (dir / "munge/munged.seed").string()},
-                dir / "log/munged.out", conf);
+  daemons.start(
+      {munged, "--foreground", "--force", "--socket=" + (dir / "munge/munge.socket").string(),
+       "--key-file=" + (dir / "munge/munge.key").string(),
+       "--log-file=" + (dir / "log/munged.log").string(),
+       "--pid-file=" + (dir / "munge/munged.pid").string(),
+       "--seed-file=" + (dir / "munge/munged.seed").string()},
+      dir / "log/munged.out", conf);
   for (int i = 0; i < 100 && !fs::exists(dir / "munge/munge.socket"); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
@@ -158,16 +179,17 @@ TEST(SlurmCluster, AStudyAsAFourTaskJobArrayMergesToTheUnshardedRun) {
   while (!node_idle() && Clock::now() - start < std::chrono::seconds(60)) {
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
   }
-  ASSERT_TRUE(daemons.all_running()) << test::read_file(dir / "log/slurmctld.out")
-                                     << test::read_file(dir / "log/slurmd.out");
+  ASSERT_TRUE(daemons.all_running())
+      << test::read_file(dir / "log/slurmctld.out") << test::read_file(dir / "log/slurmd.out");
   ASSERT_TRUE(node_idle()) << "the node never became idle\n"
                            << test::read_file(dir / "log/slurmctld.log")
                            << test::read_file(dir / "log/slurmd.log");
 
   const fs::path file = dir / "slurm_study.yaml";
-  test::write_file(file, "version: 1\nname: slurm_study\nscene: " + std::string(WIFISLAM_SCENES_DIR) +
-                             "/c_hall.yaml\nlevel: radio\naxes:\n  access_points.count: [10, 20]\n"
-                             "  access_points.placement: [rooms, random]\n  seed: [1, 2]\n");
+  test::write_file(file,
+                   "version: 1\nname: slurm_study\nscene: " + std::string(WIFISLAM_SCENES_DIR) +
+                       "/c_hall.yaml\nlevel: radio\naxes:\n  access_points.count: [10, 20]\n"
+                       "  access_points.placement: [rooms, random]\n  seed: [1, 2]\n");
   const auto submitted = test::run_wifislam(
       "study slurm " + file.string() + " --tasks 4 -o " + (dir / "job").string() + " --submit", dir,
       {}, env);

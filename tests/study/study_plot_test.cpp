@@ -208,10 +208,9 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
   EXPECT_FALSE(fs::exists(dir / "none"));
   // A route whose pauses are too short for a scan (the tiny loop's 1 s) has nothing to resolve.
   test::write_file(dir / "tiny.yaml", test::kTinyLoopYaml);
-  const auto no_pauses = test::run_wifislam(
-      "study place " + (dir / "tiny.yaml").string() + " --budget 1 -q -o " +
-          (dir / "none").string(),
-      dir);
+  const auto no_pauses = test::run_wifislam("study place " + (dir / "tiny.yaml").string() +
+                                                " --budget 1 -q -o " + (dir / "none").string(),
+                                            dir);
   EXPECT_EQ(no_pauses.exit_code, 2) << no_pauses.err;
   EXPECT_NE(no_pauses.err.find("route.pause"), std::string::npos) << no_pauses.err;
   EXPECT_FALSE(fs::exists(dir / "none"));

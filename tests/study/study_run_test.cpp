@@ -25,8 +25,8 @@ const std::string kScene = std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml";
 
 fs::path write_study(const fs::path& dir, const std::string& name, const std::string& axes) {
   const fs::path path = dir / (name + ".yaml");
-  test::write_file(path, "version: 1\nname: " + name + "\nscene: " + kScene +
-                             "\nlevel: radio\naxes:\n" + axes);
+  test::write_file(
+      path, "version: 1\nname: " + name + "\nscene: " + kScene + "\nlevel: radio\naxes:\n" + axes);
   return path;
 }
 
@@ -42,12 +42,13 @@ TEST(StudyRun, AKilledRunResumesToTheRowsOfAnUninterruptedRun) {
   const fs::path dir = test::scratch_folder();
   // 40 radio cases of about 0.1 s each on c_hall.
   const fs::path file =
-      write_study(dir, "resume", "  access_points.count: [8, 16, 24, 32]\n  seed: [1, 2, 3, 4, 5, "
-                                 "6, 7, 8, 9, 10]\n");
+      write_study(dir, "resume",
+                  "  access_points.count: [8, 16, 24, 32]\n  seed: [1, 2, 3, 4, 5, "
+                  "6, 7, 8, 9, 10]\n");
   const fs::path whole = dir / "whole.sqlite", killed = dir / "killed.sqlite";
-  ASSERT_EQ(test::run_wifislam("study run " + file.string() + " -q -o " + whole.string(), dir)
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      test::run_wifislam("study run " + file.string() + " -q -o " + whole.string(), dir).exit_code,
+      0);
   const std::int64_t total = rows_in(whole);
   ASSERT_EQ(total, 40);
 
@@ -148,7 +149,8 @@ TEST(StudyRun, ScatteredAccessPointsTellPlacesApartBetterThanCoLinearOnes) {
     }
   }
   for (int scattered : {1, 2}) {
-    EXPECT_GT(far[0], 2.0 * far[scattered]) << "co-linear " << far[0] << ", scattered " << far[scattered];
+    EXPECT_GT(far[0], 2.0 * far[scattered])
+        << "co-linear " << far[0] << ", scattered " << far[scattered];
     EXPECT_LT(clusters[0], clusters[scattered]);
   }
   fs::remove_all(dir);

@@ -128,8 +128,19 @@ std::vector<Candidate> OrbslamFrontEnd::detect_loop(const SelectionQuery& query,
   const bow::NeighbourFunction neighbours = [this](KeyframeId k) {
     return covisibility_.best(k, options_.covisibility_group_size);
   };
+  // Not candidates: the connected keyframes, and every keyframe too recent to be a loop closure
+  // by the pipeline's loop rule. In ORB-SLAM2 those share map points with the keyframe and are
+  // among its connected keyframes; here a robot lingering in one hall would otherwise verify
+  // keyframes a few metres back as "loop" candidates at every keyframe. Path grows with the id,
+  // so they are the keyframes from the first non-loop one on.
+  std::vector<KeyframeId> excluded = connected;
+  if (query.loop_rule != nullptr) {
+    for (KeyframeId k = id - 1; k >= 0 && !query.loop_rule->is_loop(k, id); --k) {
+      excluded.push_back(k);
+    }
+  }
   const std::vector<bow::LoopCandidate> candidates = bow::loop_candidates(
-      databases, current, connected, min_score, neighbours, &record.postings_read);
+      databases, current, excluded, min_score, neighbours, &record.postings_read);
   record.candidates = static_cast<int>(candidates.size());
 
   // Temporal consistency: each candidate with its covisible keyframes.

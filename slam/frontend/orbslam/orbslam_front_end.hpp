@@ -16,7 +16,9 @@
 //        - minScore: the lowest L1 score between the keyframe and a connected keyframe (no
 //          connected keyframe, e.g. tracking lost: no detection, as ORB-SLAM relocalises then);
 //        - DetectLoopCandidates over the inverted index (slam/bow/keyframe_database.hpp), groups
-//          of `covisibility_group_size` best covisible neighbours;
+//          of `covisibility_group_size` best covisible neighbours; neither the connected
+//          keyframes nor those too recent to be a loop closure by the pipeline's loop rule are
+//          candidates (in ORB-SLAM2 the recent ones share map points, so they are connected);
 //        - temporal consistency over `loop_consistency` keyframes (slam/bow/loop_consistency.hpp);
 //        - the SearchByBoW gate (`bow_min_matches`, slam/bow/bow_feature_matcher.hpp);
 //      what passes is verified (role long_term; `min_matches` = the Sim3 RANSAC inliers).
