@@ -25,6 +25,8 @@
 // Whether a run used the Wi-Fi module is run.json's "wifi", never guessed from which files exist.
 
 #include <array>
+#include <cstddef>
+#include <string>
 
 namespace wifislam::run_folder {
 
@@ -145,6 +147,17 @@ inline constexpr std::array<const char*, 26> kAll = {
     "cost_ms", "wall_ms", "cpu_ms", "over_budget_ms"};
 // clang-format on
 }  // namespace rtabmap_memory_column
+
+/// A CSV header line ("a,b,c\n") of one of the column lists below.
+template <std::size_t N>
+std::string csv_header(const std::array<const char*, N>& columns) {
+  std::string line;
+  for (std::size_t i = 0; i < N; ++i) {
+    if (i > 0) line += ',';
+    line += columns[i];
+  }
+  return line + '\n';
+}
 
 /// Columns of orbslam_queries.csv, in order (slam/frontend/orbslam/orbslam_front_end.hpp,
 /// OrbslamQueryRecord); query_ms is wall-clock, the rest is exact.

@@ -193,12 +193,7 @@ void OrbslamFrontEnd::after_verification(const VerificationReport& report) {
 
 void OrbslamFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) const {
   namespace col = run_folder::orbslam_queries_column;
-  std::string csv;
-  for (std::size_t i = 0; i < col::kAll.size(); ++i) {
-    csv += (i == 0 ? "" : ",");
-    csv += col::kAll[i];
-  }
-  csv += '\n';
+  std::string csv = run_folder::csv_header(col::kAll);
   for (const OrbslamQueryRecord& r : records_) {
     csv += fmt::format("{},{},{},{},{},{:.6g},{},{},{},{},{},{:.4f}\n", r.keyframe,
                        r.detection_ran ? 1 : 0, r.databases_searched, r.keyframes_searched,

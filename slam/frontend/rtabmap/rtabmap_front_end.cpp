@@ -337,12 +337,7 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
 
 void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) const {
   namespace col = run_folder::rtabmap_memory_column;
-  std::string csv;
-  for (std::size_t i = 0; i < col::kAll.size(); ++i) {
-    csv += (i == 0 ? "" : ",");
-    csv += col::kAll[i];
-  }
-  csv += '\n';
+  std::string csv = run_folder::csv_header(col::kAll);
   for (const RtabmapNodeRecord& r : records_) {
     csv +=
         fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
