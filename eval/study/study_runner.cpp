@@ -10,6 +10,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "core/thread_start.hpp"
 #include "core/yaml_document.hpp"
 #include "eval/study/comparison_study.hpp"
@@ -168,8 +169,18 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   compare.plots = false;
   compare.jobs = jobs;
   const fs::path work = scratch_dir / c.id;
-  fs::remove_all(work);  // a previous attempt at this case, killed before its rows were written
+  // A previous attempt at this case, killed before its rows were written, left its folder: remove
+  // it, but only when it carries this tool's marker (never a same-named folder of the user's).
+  if (fs::exists(work)) {
+    if (!fs::exists(work / kOutputMarkerFile) && !fs::is_empty(work)) {
+      throw InvalidInputError(fmt::format(
+          "{}: exists and was not made by wifislam (no {} in it); move it away", work.string(),
+          kOutputMarkerFile));
+    }
+    fs::remove_all(work);
+  }
   fs::create_directories(work);
+  write_file_atomic(work / kOutputMarkerFile, "study case scratch folder\n");
   const ComparisonResult result = run_comparison({scene}, compare, work);
   for (const ComparisonCase& run : result.cases) {
     const eval::RunEvaluation& e = run.evaluation;
