@@ -78,6 +78,9 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
        "rgbdslam: kernel on every edge: none, huber (RGBDSLAMv2), cauchy"},
       {"robust_kernel_chi2", &o.rgbdslam.robust_kernel_chi2,
        "rgbdslam: chi^2 where the kernel leaves the quadratic (4 x the last pruning stage)"},
+      {"optimizer_skip_step", &o.rgbdslam.optimizer_skip_step,
+       "rgbdslam: optimise the graph after every n-th keyframe too, not only after loop closures "
+       "(RGBDSLAMv2: 1; 0 = after loop closures only)"},
       {"prune_chi2", &o.rgbdslam.prune_chi2,
        "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
        "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge"},
@@ -261,6 +264,7 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.neighbor_candidates >= 0, "neighbor_candidates must be >= 0");
   require(o.rgbdslam.geodesic_depth >= 0, "geodesic_depth must be >= 0");
   require(o.rgbdslam.min_sampled_candidates >= 0, "min_sampled_candidates must be >= 0");
+  require(o.rgbdslam.optimizer_skip_step >= 0, "optimizer_skip_step must be >= 0");
   require(o.rgbdslam.wifi_long_term_candidates >= -1, "wifi_long_term_candidates must be >= -1");
   require(o.rgbdslam.robust_kernel == "none" || o.rgbdslam.robust_kernel == "huber" ||
               o.rgbdslam.robust_kernel == "cauchy",

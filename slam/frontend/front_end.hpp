@@ -84,6 +84,10 @@ class FrontEnd {
   const EdgeAcceptance& acceptance() const { return *acceptance_; }
   /// The family's robust kernel and after-run pruning (the shared optimiser applies them).
   virtual GraphRobustness graph_robustness() const { return {}; }
+  /// Incremental optimisation schedule: besides after every keyframe that brought a loop closure
+  /// (always), after every n-th keyframe (RGBDSLAMv2's `optimizer_skip_step`); 0: only after loop
+  /// closures.
+  virtual int optimise_every_keyframes() const { return 0; }
 
   /// Called once per new keyframe after its hypotheses were accepted or not. Runs Wi-Fi cluster
   /// management for it (unless the front end assigns its own places), then after_verification().

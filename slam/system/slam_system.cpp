@@ -275,7 +275,10 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
                                             detection.stop());
   }
 
-  if (loop_found && options_.graph.incremental_max_iterations > 0) {
+  const int every = front_end_->optimise_every_keyframes();
+  // Every n-th keyframe after the first (a graph of one node has nothing to optimise).
+  const bool scheduled = every > 0 && id > 0 && id % every == 0;
+  if ((loop_found || scheduled) && options_.graph.incremental_max_iterations > 0) {
     ScopedTimer timer(instrumentation_, module::kOptimisation);
     optimise(options_.graph.incremental_max_iterations);
   }

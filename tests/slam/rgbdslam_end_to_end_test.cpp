@@ -160,6 +160,31 @@ TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
   EXPECT_GT(a.system->graph().node_count(), 3u);
 }
 
+// RGBDSLAMv2's `optimizer_skip_step`: besides after loop closures, the graph is optimised after
+// every n-th keyframe. On a straight corridor (no loop to close) the only other optimisations are
+// the ones at the end of the run, so the count is exactly (keyframes - 1) / n more than without.
+TEST(RgbdslamEndToEnd, OptimizerSkipStepOptimisesAfterEveryNthKeyframe) {
+  const Scene scene = load_scene_yaml(kStraightCorridorYaml, "<straight corridor>");
+  std::map<int, std::pair<std::int64_t, std::size_t>> optimisations_and_keyframes;
+  for (int step : {0, 1, 3}) {
+    slam::SlamOptions options = test_options();
+    options.rgbdslam.optimizer_skip_step = step;
+    const RunResult run = run_on_generated(scene, 5.0, 60, options);
+    EXPECT_EQ(run.system->loop_closures().size(), 0u);
+    optimisations_and_keyframes[step] = {
+        run.system->instrumentation().counter(slam::counter::kOptimisations),
+        run.system->graph().node_count()};
+  }
+  const std::int64_t at_end = optimisations_and_keyframes.at(0).first;
+  EXPECT_GE(at_end, 1);  // the final optimisation
+  for (int step : {1, 3}) {
+    const auto [optimisations, keyframes] = optimisations_and_keyframes.at(step);
+    ASSERT_GT(keyframes, 6u);
+    // Keyframes 1 .. K-1 (a graph of one node has nothing to optimise).
+    EXPECT_EQ(optimisations, at_end + static_cast<std::int64_t>(keyframes - 1) / step) << step;
+  }
+}
+
 /// A front end unlike RGBD-SLAM, defined outside the library: the last keyframe plus every
 /// qualifying keyframe of the similar Wi-Fi clusters, only the best loop hypothesis accepted.
 class WifiOnlyFrontEnd final : public slam::FrontEnd {

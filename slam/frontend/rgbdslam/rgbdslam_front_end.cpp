@@ -176,7 +176,8 @@ GraphRobustness RgbdslamFrontEnd::graph_robustness() const {
 nlohmann::json RgbdslamFrontEnd::own_summary() const {
   nlohmann::json out = {{"predecessor_candidates", options_.predecessor_candidates},
                         {"neighbor_candidates", options_.neighbor_candidates},
-                        {"min_sampled_candidates", options_.min_sampled_candidates}};
+                        {"min_sampled_candidates", options_.min_sampled_candidates},
+                        {"optimizer_skip_step", options_.optimizer_skip_step}};
   if (wifi() != nullptr) out["wifi_long_term_candidates"] = wifi_long_term_candidates_;
   return out;
 }

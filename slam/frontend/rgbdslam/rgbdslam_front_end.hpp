@@ -66,6 +66,10 @@ struct RgbdslamOptions {
   std::string robust_kernel = "huber";           // none, huber, cauchy
   double robust_kernel_chi2 = 4 * 22.46;         // where the kernel leaves the quadratic
   std::string prune_chi2 = "449.2,89.84,22.46";  // stages, comma-separated; "none": no pruning
+
+  /// Incremental optimisation after every n-th keyframe, besides after each keyframe that brought
+  /// a loop closure (RGBDSLAMv2's `optimizer_skip_step`, default 1). 0: after loop closures only.
+  int optimizer_skip_step = 1;
 };
 
 class RgbdslamFrontEnd final : public FrontEnd {
@@ -75,6 +79,7 @@ class RgbdslamFrontEnd final : public FrontEnd {
   std::string name() const override { return "rgbdslam"; }
   std::vector<Candidate> select(const SelectionQuery& query) override;
   GraphRobustness graph_robustness() const override;
+  int optimise_every_keyframes() const override { return options_.optimizer_skip_step; }
 
   const RgbdslamOptions& options() const { return options_; }
 
