@@ -4,7 +4,7 @@
 # imprecise closures online and after pruning, false negatives, long-term comparisons, and the
 # bounded-module time as a Wi-Fi / vanilla ratio from the same run (target: <= 0.5 at 50,
 # <= 0.7 at 70). One run at a time (--jobs 1) so the ratio is not skewed by runs competing for
-# the cores; about an hour on 2 cores.
+# the cores; 26 min on 2 idle cores (measured).
 #
 #   bench/slam/paper_rgbdslam.sh [build-dir] [output-dir]   (defaults: build/release, a temp dir)
 set -euo pipefail

@@ -147,6 +147,10 @@ TEST(WifiBoundingClaim, OnTheCHallTwinWifiCutsFarFalseLoopClosuresComparisonsAnd
   }
   // RGBD-SLAM's long-term candidates are what Wi-Fi bounds (ORB-SLAM's are bounded in the index
   // lookup, before any verification: its verified candidates are the few consistent ones).
+  // "Fewer", not a ratio: the Wi-Fi budget is vanilla's (4) by design, so the saving is the
+  // keyframes whose similar clusters hold fewer than 4 keyframes that qualify as a loop closure,
+  // which is what the route gives (measured 0.53-0.55 of vanilla's on this twin at
+  // min_matches 20, 50 and 70), not a parameter to tune to a figure.
   EXPECT_LT(long_term(*wifi.at("rgbdslam")), long_term(*vanilla.at("rgbdslam")));
   std::filesystem::remove_all(out);
 }
