@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "eval/study/result_store.hpp"
 #include "eval/study/study_file.hpp"
 #include "eval/study/study_runner.hpp"
@@ -79,6 +80,38 @@ TEST(StudyRun, AKilledRunResumesToTheRowsOfAnUninterruptedRun) {
   EXPECT_NE(rerun.err.find(std::to_string(at_kill) + " of 40 cases already in"), std::string::npos)
       << rerun.err;
   EXPECT_EQ(dump_results(killed), dump_results(whole));
+  fs::remove_all(dir);
+}
+
+// A SLAM-level case runs in <database>.work/<case id>, and a rerun removes what a killed attempt
+// left there; a folder of that name that the tool did not make is refused, not deleted.
+TEST(StudyRun, AFolderOfTheUsersWhereACaseRunsIsRefusedNotDeleted) {
+  const fs::path dir = test::scratch_folder();
+  test::write_file(dir / "tiny.yaml", test::kTinyLoopYaml);
+  const fs::path file = dir / "one_case.yaml";
+  test::write_file(file,
+                   "version: 1\nname: one_case\nscene: tiny.yaml\nlevel: slam\n"
+                   "set: {route.pause.duration_s: 10}\n"
+                   "axes:\n  seed: [1]\nslam: {fps: 1}\n");
+  const std::vector<StudyCase> cases = shard_cases(load_study_file(file), 0, 1);
+  ASSERT_EQ(cases.size(), 1u);
+  const fs::path db = dir / "study.sqlite";
+  const fs::path users = fs::path(db.string() + ".work") / cases[0].id;
+  test::write_file(users / "mine.txt", "my notes");
+  const auto refused =
+      test::run_wifislam("study run " + file.string() + " -q -o " + db.string(), dir);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("not made by wifislam"), std::string::npos) << refused.err;
+  EXPECT_TRUE(fs::exists(users / "mine.txt"));
+
+  // Once the folder is the tool's (a killed attempt's, with its marker), the run replaces it.
+  fs::remove(users / "mine.txt");
+  test::write_file(users / kOutputMarkerFile, "study case scratch folder\n");
+  test::write_file(users / "partial.txt", "left by a killed attempt");
+  const auto run = test::run_wifislam("study run " + file.string() + " -q -o " + db.string(), dir);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(rows_in(db), 2);  // vanilla and Wi-Fi
+  EXPECT_FALSE(fs::exists(users));
   fs::remove_all(dir);
 }
 
