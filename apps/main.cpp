@@ -23,7 +23,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // CLI11 prints the usage message; --help and --version are its "errors" with code 0. Any
+    // other argument error is bad input, with the tool's one code for it.
+    const int code = app.exit(e);
+    return code == 0 ? 0 : wifislam::cli::kExitBadInput;
   } catch (const wifislam::ParseError& e) {
     fmt::print(stderr, "wifislam: error: {}\n", e.what());
     return wifislam::cli::kExitBadInput;

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -192,6 +193,22 @@ TEST_F(BadInput, OrbOptionsOutsideTheirRangeAreErrors) {
   const auto r = wifislam("slam " + ds.string() +
                           " --set orb_levels=6 --set orb_scale_factor=2 -o " + run.string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
+// Argument errors are bad input like any other (exit 2, CLI11's usage message), while --help and
+// --version still exit 0.
+TEST_F(BadInput, ArgumentErrorsExitTwoWithAUsageMessage) {
+  const std::vector<std::string> argument_errors = {
+      "generate " + scene_.string() + " -o x --no-such-option", "generate " + scene_.string(),
+      "generate " + scene_.string() + " -o x --fps fast", "no-such-command"};
+  for (const std::string& args : argument_errors) {
+    const auto r = wifislam(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+    EXPECT_FALSE(fs::exists(scratch_ / "x")) << args;
+  }
+  EXPECT_EQ(wifislam("generate --help").exit_code, 0);
+  EXPECT_EQ(wifislam("--version").exit_code, 0);
 }
 
 }  // namespace
