@@ -138,12 +138,14 @@ inline constexpr const char* kWifiClusterJoins = "wifi_cluster_joins";
 /// RtabmapNodeRecord). Sizes are after the node's memory management; times in ms.
 namespace rtabmap_memory_column {
 // clang-format off
-inline constexpr std::array<const char*, 26> kAll = {
+inline constexpr std::array<const char*, 32> kAll = {
     "node", "stm", "wm", "ltm",
     "entered_wm", "retrieved", "wifi_retrieved", "transferred", "immune", "rehearsed",
-    "words", "word_comparisons", "scored", "likelihood_terms",
+    "words", "word_comparisons", "scored", "likelihood_terms", "hypotheses",
     "best", "best_probability", "virtual_probability",
-    "loop_candidate", "loop_verified", "loop_accepted", "verifications", "proximity_candidates",
+    "loop_candidate", "loop_verified", "loop_accepted", "verifications", "loop_verifications",
+    "proximity_candidates",
+    "memory_update_cpu_ms", "likelihood_cpu_ms", "posterior_cpu_ms", "loop_closure_cost_ms",
     "cost_ms", "wall_ms", "cpu_ms", "over_budget_ms"};
 // clang-format on
 }  // namespace rtabmap_memory_column

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <utility>
 
@@ -46,7 +47,28 @@ struct RunIdentity {
   bool wifi = false;
   /// frontend_summary.node_time_s.cost, for a front end with a deterministic cost model.
   std::optional<double> cost_model_s;
+  /// frontend_summary.loop_closure_time_s: its cost-model share and the measured CPU time of
+  /// likelihood and posterior (rtabmap).
+  std::optional<double> loop_closure_cost_s, likelihood_posterior_cpu_s;
 };
+
+/// The number of seconds at `keys` under run.json's object `j`, when present; a clear error when
+/// it is not a number >= 0.
+std::optional<double> optional_seconds(const nlohmann::json& j,
+                                       std::initializer_list<const char*> keys,
+                                       const fs::path& run_json) {
+  const nlohmann::json* at = &j;
+  std::string path;
+  for (const char* k : keys) {
+    at = at->is_object() && at->contains(k) ? &(*at)[k] : nullptr;
+    if (at == nullptr) return std::nullopt;
+    path += (path.empty() ? "" : ".") + std::string(k);
+  }
+  if (!at->is_number() || !(at->get<double>() >= 0.0)) {
+    throw ParseError(run_json.string(), path, "expected a number of seconds >= 0");
+  }
+  return at->get<double>();
+}
 
 RunIdentity identity_of(const fs::path& run_json) {
   namespace key = run_folder::run_key;
@@ -84,18 +106,11 @@ RunIdentity identity_of(const fs::path& run_json) {
     id.frontend.resize(id.frontend.size() - 5);
     id.wifi = true;
   }
-  const nlohmann::json* cost = &j;
-  for (const char* k : {"frontend_summary", "node_time_s", "cost"}) {
-    cost = cost->is_object() && cost->contains(k) ? &(*cost)[k] : nullptr;
-    if (cost == nullptr) break;
-  }
-  if (cost != nullptr) {
-    if (!cost->is_number() || !(cost->get<double>() >= 0.0)) {
-      throw ParseError(run_json.string(), "frontend_summary.node_time_s.cost",
-                       "expected a number of seconds >= 0");
-    }
-    id.cost_model_s = cost->get<double>();
-  }
+  id.cost_model_s = optional_seconds(j, {"frontend_summary", "node_time_s", "cost"}, run_json);
+  id.loop_closure_cost_s =
+      optional_seconds(j, {"frontend_summary", "loop_closure_time_s", "cost"}, run_json);
+  id.likelihood_posterior_cpu_s = optional_seconds(
+      j, {"frontend_summary", "loop_closure_time_s", "likelihood_posterior_cpu"}, run_json);
   return id;
 }
 
@@ -216,6 +231,8 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
   ev.frontend = identity.frontend;
   ev.wifi_run = identity.wifi;
   ev.cost_model_s = identity.cost_model_s;
+  ev.loop_closure_cost_s = identity.loop_closure_cost_s;
+  ev.likelihood_posterior_cpu_s = identity.likelihood_posterior_cpu_s;
   DatasetCalibration calibration;
   if (fs::exists(dataset_dir / dataset::kCalibration)) {
     calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);

@@ -11,6 +11,8 @@ nlohmann::ordered_json RunEvaluation::flat_metrics() const {
   j["frontend"] = frontend;
   j["wifi_run"] = wifi_run;
   if (cost_model_s) j["cost_model_s"] = *cost_model_s;
+  if (loop_closure_cost_s) j["loop_closure_cost_s"] = *loop_closure_cost_s;
+  if (likelihood_posterior_cpu_s) j["likelihood_posterior_cpu_s"] = *likelihood_posterior_cpu_s;
   j["frames_estimated"] = frames_estimated;
   j["frames_ground_truth"] = frames_ground_truth;
   j["frames_associated"] = frames_associated;
@@ -67,6 +69,8 @@ nlohmann::ordered_json RunEvaluation::to_ordered_json() const {
   j["frontend"] = frontend;
   j["wifi_run"] = wifi_run;
   if (cost_model_s) j["cost_model_s"] = *cost_model_s;
+  if (loop_closure_cost_s) j["loop_closure_cost_s"] = *loop_closure_cost_s;
+  if (likelihood_posterior_cpu_s) j["likelihood_posterior_cpu_s"] = *likelihood_posterior_cpu_s;
   j["thresholds"] = options.to_json();
   j["trajectory"] = {
       {"frames_estimated", frames_estimated},

@@ -38,6 +38,11 @@ struct RunEvaluation {
   /// The front end's deterministic time (rtabmap's cost model, summed over nodes), when run.json
   /// has one: independent of machine load, unlike the wall-clock times below.
   std::optional<double> cost_model_s;
+  /// RTAB-Map's loop-closure detection time (likelihood, posterior and the loop hypothesis'
+  /// verification, as Rtabmap::process times them), when run.json has it: its cost-model share,
+  /// and the measured thread CPU of likelihood and posterior (the verification's measured time is
+  /// timing.roles["long_term"]).
+  std::optional<double> loop_closure_cost_s, likelihood_posterior_cpu_s;
   EvalOptions options;
 
   // Trajectory error (ATE after alignment, RPE per metre travelled).

@@ -108,7 +108,8 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
       {"max_retrieved", &o.rtabmap.max_retrieved,
        "rtabmap: Rtabmap/MaxRetrieved, LTM neighbours of the best hypothesis retrieved (2)"},
       {"proximity_by_space", &o.rtabmap.proximity_by_space,
-       "rtabmap: RGBD/ProximityBySpace, local loop closures with WM nodes near the position (true)"},
+       "rtabmap: RGBD/ProximityBySpace, local loop closures with WM nodes near the position "
+       "(true)"},
       {"local_radius_m", &o.rtabmap.local_radius_m,
        "rtabmap: RGBD/LocalRadius, proximity search radius around the estimated position (10)"},
       {"proximity_max_graph_depth", &o.rtabmap.proximity_max_graph_depth,
@@ -131,6 +132,8 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
        "rtabmap cost model: ms per descriptor-word distance of the vocabulary search"},
       {"cost_ms_per_likelihood_term", &o.rtabmap.cost.ms_per_likelihood_term,
        "rtabmap cost model: ms per inverted-index reference of the likelihood"},
+      {"cost_ms_per_scored_node", &o.rtabmap.cost.ms_per_scored_node,
+       "rtabmap cost model: ms per WM node the likelihood scores"},
       {"cost_ms_per_hypothesis", &o.rtabmap.cost.ms_per_hypothesis,
        "rtabmap cost model: ms per Bayes filter hypothesis"},
       {"cost_ms_per_verification", &o.rtabmap.cost.ms_per_verification,

@@ -102,9 +102,10 @@ WIFISLAM_COMMAND(compare, 65) {
       "positive %, false negative %, loop-closure time, candidate comparisons, Wi-Fi overhead.");
   // No CLI::ExistingFile: the scene loader says what is wrong with a path, alike in every command.
   app->add_option("scenes", args->scenes, "Scene files (YAML); none with --preset");
-  app->add_option("--preset", args->preset,
-                  "paper-rgbdslam: the paper's RGBD-SLAM experiment on the built-in c_hall twin\n"
-                  "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 26 min on 2 cores)");
+  app->add_option(
+      "--preset", args->preset,
+      "paper-rgbdslam: the paper's RGBD-SLAM experiment on the built-in c_hall twin\n"
+      "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 26 min on 2 cores)");
   app->add_option("--frontend", args->frontend,
                   "Front end (" + wifislam::slam::front_end_name_list() + ")")
       ->capture_default_str();

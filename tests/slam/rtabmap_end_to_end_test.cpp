@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -94,13 +95,41 @@ class RtabmapEndToEnd : public ::testing::Test {
     EXPECT_LT(early_nodes, keyframes / 2);
 
     // One CSV row per node, with the header of core/run_format.hpp.
+    // The loop-closure share of the cost model (likelihood, posterior, loop hypothesis
+    // verification) sums over the rows to run.json's figure, and is part of each node's cost.
     std::ifstream csv(run / rf::kRtabmapMemory);
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header.substr(0, 12), "node,stm,wm,");
+    EXPECT_EQ(header + "\n", rf::csv_header(rf::rtabmap_memory_column::kAll));
+    const auto column = [](const char* name) {
+      const auto& all = rf::rtabmap_memory_column::kAll;
+      return static_cast<std::size_t>(
+          std::find_if(all.begin(), all.end(),
+                       [&](const char* c) { return std::string(c) == name; }) -
+          all.begin());
+    };
     int rows = 0;
-    while (std::getline(csv, line)) ++rows;
+    double loop_closure_cost_ms = 0.0, likelihood_posterior_cpu_ms = 0.0;
+    while (std::getline(csv, line)) {
+      std::vector<std::string> cells;
+      std::stringstream row(line);
+      for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+      ASSERT_EQ(cells.size(), rf::rtabmap_memory_column::kAll.size()) << line;
+      const double lc_ms = std::stod(cells[column("loop_closure_cost_ms")]);
+      EXPECT_LE(lc_ms, std::stod(cells[column("cost_ms")]) + 1e-4) << line;
+      EXPECT_LE(std::stoi(cells[column("loop_verifications")]),
+                std::stoi(cells[column("verifications")]));
+      loop_closure_cost_ms += lc_ms;
+      likelihood_posterior_cpu_ms += std::stod(cells[column("likelihood_cpu_ms")]) +
+                                     std::stod(cells[column("posterior_cpu_ms")]);
+      ++rows;
+    }
     EXPECT_EQ(rows, keyframes);
+    const nlohmann::json& lc_time = j.at("frontend_summary").at("loop_closure_time_s");
+    EXPECT_GT(lc_time.at("cost").get<double>(), 0.0);
+    EXPECT_NEAR(lc_time.at("cost").get<double>(), loop_closure_cost_ms * 1e-3, rows * 1e-7);
+    EXPECT_NEAR(lc_time.at("likelihood_posterior_cpu").get<double>(),
+                likelihood_posterior_cpu_ms * 1e-3, rows * 1e-7);
 
     ASSERT_EQ(wifislam_cli("eval " + run.string() + " --gt " + (dir_ / "ds").string() +
                                " --set revisit_min_path_m=8",
@@ -124,6 +153,7 @@ class RtabmapEndToEnd : public ::testing::Test {
     const double cost_s = j.at("frontend_summary").at("node_time_s").at("cost").get<double>();
     EXPECT_GT(cost_s, 0.0);
     EXPECT_EQ(m.at("cost_model_s").get<double>(), cost_s);
+    EXPECT_EQ(m.at("loop_closure_cost_s").get<double>(), lc_time.at("cost").get<double>());
   }
 
   static fs::path dir_;

@@ -101,6 +101,13 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
         query.features->keypoints, query.features->descriptors, options_.max_features);
   }
   const std::int64_t comparisons_before = vocabulary_.distance_computations();
+  double phase_started_cpu_ms = started_cpu_ms_;
+  const auto phase_cpu_ms = [&phase_started_cpu_ms] {
+    const double now = thread_cpu_ms();
+    const double elapsed = now - phase_started_cpu_ms;
+    phase_started_cpu_ms = now;
+    return elapsed;
+  };
   words_of_[t] = vocabulary_.add_node(t, descriptors);
   pending_.word_comparisons = vocabulary_.distance_computations() - comparisons_before;
   if (memory_.add(t) >= 0) ++pending_.entered_wm;
@@ -113,6 +120,7 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
     memory_.merge(t - 1, t);
     pending_.rehearsed = true;
   }
+  pending_.memory_update_cpu_ms = phase_cpu_ms();
 
   // 3. Retrieval around the last node's best hypothesis: nearest first, newest first within a
   // margin (Rtabmap::process sorts each margin's ids in reverse).
@@ -145,6 +153,7 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
   }
 
   // 4. Likelihood over WM (bounded by Wi-Fi), then the Bayes filter.
+  phase_cpu_ms();  // retrieval is RTAB-Map's own timing category, in no phase here
   std::vector<KeyframeId> scored(memory_.wm().begin(), memory_.wm().end());
   if (wifi() != nullptr) scored = wifi()->bound(scored);
   pending_.scored = scored.size();
@@ -156,6 +165,7 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
   if (!scored.empty()) {
     const rtabmap::NormalisedLikelihood l = rtabmap::normalise_likelihood(raw.score);
     likelihood = l.node;
+    pending_.likelihood_cpu_ms = phase_cpu_ms();
     filter_.update(l.node, l.virtual_place, [this](rtabmap::NodeId id, int max_margin) {
       std::map<rtabmap::NodeId, int> out;
       for (const auto& [k, m] : neighbours_in_memory(id, max_margin, false)) {
@@ -165,6 +175,10 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
     });
     best = filter_.best();
     pending_.virtual_probability = filter_.virtual_probability();
+    pending_.hypotheses = filter_.posterior().size();
+    pending_.posterior_cpu_ms = phase_cpu_ms();
+  } else {
+    pending_.likelihood_cpu_ms = phase_cpu_ms();
   }
   pending_.best = best.first;
   pending_.best_probability = best.second;
@@ -297,15 +311,17 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
     if (c.candidate.keyframe == r.loop_candidate && c.candidate.role == CandidateRole::kLongTerm) {
       r.loop_verified = c.verified;
       r.loop_accepted = c.accepted;
+      ++r.loop_verifications;
     }
   }
   const RtabmapCostModel& cost = options_.cost;
-  const std::size_t hypotheses = filter_.posterior().size();
-  r.cost_ms = cost.ms_per_node +
-              cost.ms_per_word_comparison * static_cast<double>(r.word_comparisons) +
-              cost.ms_per_likelihood_term * static_cast<double>(r.likelihood_terms) +
-              cost.ms_per_hypothesis * static_cast<double>(r.scored > 0 ? hypotheses : 0) +
-              cost.ms_per_verification * r.verifications;
+  r.loop_closure_cost_ms = cost.ms_per_likelihood_term * static_cast<double>(r.likelihood_terms) +
+                           cost.ms_per_scored_node * static_cast<double>(r.scored) +
+                           cost.ms_per_hypothesis * static_cast<double>(r.hypotheses) +
+                           cost.ms_per_verification * r.loop_verifications;
+  r.cost_ms =
+      cost.ms_per_node + cost.ms_per_word_comparison * static_cast<double>(r.word_comparisons) +
+      r.loop_closure_cost_ms + cost.ms_per_verification * (r.verifications - r.loop_verifications);
 
   // 6. Memory management under Rtabmap/TimeThr (Memory::forget: one more than entered WM).
   const auto kept = [&](KeyframeId id) {
@@ -339,13 +355,16 @@ void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) co
   namespace col = run_folder::rtabmap_memory_column;
   std::string csv = run_folder::csv_header(col::kAll);
   for (const RtabmapNodeRecord& r : records_) {
-    csv +=
-        fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
-                    r.entered_wm, r.retrieved, r.wifi_retrieved, r.transferred, r.immune,
-                    r.rehearsed ? 1 : 0, r.words, r.word_comparisons, r.scored, r.likelihood_terms);
-    csv += fmt::format("{},{:.6g},{:.6g},{},{},{},{},{},", r.best, r.best_probability,
+    csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
+                       r.entered_wm, r.retrieved, r.wifi_retrieved, r.transferred, r.immune,
+                       r.rehearsed ? 1 : 0, r.words, r.word_comparisons, r.scored,
+                       r.likelihood_terms, r.hypotheses);
+    csv += fmt::format("{},{:.6g},{:.6g},{},{},{},{},{},{},", r.best, r.best_probability,
                        r.virtual_probability, r.loop_candidate, r.loop_verified ? 1 : 0,
-                       r.loop_accepted ? 1 : 0, r.verifications, r.proximity_candidates);
+                       r.loop_accepted ? 1 : 0, r.verifications, r.loop_verifications,
+                       r.proximity_candidates);
+    csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f},", r.memory_update_cpu_ms, r.likelihood_cpu_ms,
+                       r.posterior_cpu_ms, r.loop_closure_cost_ms);
     csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f}\n", r.cost_ms, r.wall_ms, r.cpu_ms,
                        r.over_budget_ms);
   }
@@ -357,7 +376,11 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
                candidates = 0, accepted = 0, proximity = 0;
   std::size_t max_wm = 0;
   double wm_sum = 0.0, over_ms = 0.0, cost_ms = 0.0, wall_ms = 0.0, cpu_ms = 0.0;
+  double loop_closure_cost_ms = 0.0, likelihood_posterior_cpu_ms = 0.0, memory_update_cpu_ms = 0.0;
   for (const RtabmapNodeRecord& r : records_) {
+    loop_closure_cost_ms += r.loop_closure_cost_ms;
+    likelihood_posterior_cpu_ms += r.likelihood_cpu_ms + r.posterior_cpu_ms;
+    memory_update_cpu_ms += r.memory_update_cpu_ms;
     cost_ms += r.cost_ms;
     wall_ms += r.wall_ms;
     cpu_ms += r.cpu_ms;
@@ -396,6 +419,13 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
       {"proximity_candidates", proximity},
       // Sum over nodes of what TimeThr is compared with, under each time source.
       {"node_time_s", {{"cost", cost_ms * 1e-3}, {"wall", wall_ms * 1e-3}, {"cpu", cpu_ms * 1e-3}}},
+      // RTAB-Map's loop-closure detection (likelihood, posterior, the loop hypothesis'
+      // verification): its cost-model share, and the measured CPU time of its first two parts
+      // (the verification's measured time is timing.json's role long_term).
+      {"loop_closure_time_s",
+       {{"cost", loop_closure_cost_ms * 1e-3},
+        {"likelihood_posterior_cpu", likelihood_posterior_cpu_ms * 1e-3}}},
+      {"memory_update_cpu_s", memory_update_cpu_ms * 1e-3},
       {"over_budget_ms", over_ms},
       {"loop_candidates", candidates},
       {"loop_closures_accepted", accepted}};

@@ -52,8 +52,10 @@
 // its old clusters stop being similar and become transferable again.
 //
 // Cost model calibration: see RtabmapCostModel (rtabmap_options.hpp). With its defaults a node
-// costs ~10 ms + ~18 ms per 10^7 word comparisons + 9 ms per verification, so at 70 ms a map
-// of a few hundred nodes (vocabulary ~60 000 words) starts transferring.
+// costs ~3.6 ms + ~19 ms per 10^7 word comparisons + 1.7 ms per verification; quantisation
+// dominates, so at 70 ms a map whose dictionary holds ~65 000 words (500 descriptors a node)
+// starts transferring. Loop-closure time in RTAB-Map's sense (likelihood, posterior, the loop
+// hypothesis' verification) is a few ms of it: that is the part Wi-Fi bounding shortens.
 
 #include <chrono>
 #include <deque>
@@ -84,13 +86,24 @@ struct RtabmapNodeRecord {
   std::int64_t word_comparisons = 0;     // descriptor-word distances of its quantisation
   std::size_t scored = 0;                // WM nodes the likelihood was computed for
   std::int64_t likelihood_terms = 0;
+  std::size_t hypotheses = 0;  // of the Bayes filter's posterior (0 when nothing was scored)
   KeyframeId best = -1;
   double best_probability = 0.0;
   double virtual_probability = 1.0;
   KeyframeId loop_candidate = -1;  // best hypothesis at or above Rtabmap/LoopThr
   bool loop_verified = false, loop_accepted = false;
   int verifications = 0;
+  int loop_verifications = 0;    // of the loop candidate (role long_term): 0 or 1
   int proximity_candidates = 0;  // RGBD/ProximityBySpace candidates verified
+  /// Thread CPU time of three of RTAB-Map's timing categories (Rtabmap::process statistics):
+  /// memory update (quantisation into the vocabulary, STM, rehearsal), likelihood computation
+  /// (tf-idf and normalisation) and posterior computation (Bayes filter). They calibrate the
+  /// cost model term by term, and the last two are half of the loop-closure time (the other half,
+  /// the loop hypothesis' verification, is the pipeline's: timing.json role long_term).
+  double memory_update_cpu_ms = 0.0, likelihood_cpu_ms = 0.0, posterior_cpu_ms = 0.0;
+  /// The cost model's share of loop-closure detection: likelihood, posterior and the loop
+  /// hypothesis' verification (what Wi-Fi bounding acts on).
+  double loop_closure_cost_ms = 0.0;
   /// Cost model, wall-clock, and CPU time of this thread (what wall-clock would be on an idle
   /// core: the calibration's reference on a shared machine), from selection to memory management.
   double cost_ms = 0.0, wall_ms = 0.0, cpu_ms = 0.0;

@@ -18,29 +18,40 @@ namespace wifislam::slam {
 /// and metrics"). The units are the front end's own work counters, so a run's transfers are
 /// exactly reproducible whatever the load.
 ///
-/// Calibration (first pass; 2 shared cores under a load average of ~20, release build): the
-/// small test loop at 3 fps, 417 frames, 142 nodes, `--frontend rtabmap`, threshold off. Per node
-/// the run folder records the thread CPU time from selection to memory management (cpu_ms; the
-/// wall-clock was 4.4 x larger under that load). A least-squares fit of cpu_ms over the 105 nodes
-/// without a verification gives 0.94 ms + 1.76e-6 ms per descriptor-word comparison (rms residual
-/// ~5 ms). The likelihood terms and hypotheses grow with the map like the vocabulary does, so that
-/// run cannot separate them; together they are under 1 ms per node at ~130 hypotheses, and the
-/// values below are estimates. Thread CPU does not see OpenCV's worker threads, so a verification
-/// is charged its mean wall-clock per long-term comparison in the same run (timing.json roles:
-/// 9.0 ms). The fixed part adds the node's feature extraction (timing.json: 8.5 ms per frame).
-/// To be redone on an idle machine; `cost_ms_*` override every value.
+/// Calibration (2026-12-02; release build, 2 cores, otherwise idle; bench/slam/
+/// rtabmap_cost_calibration.py): vanilla and Wi-Fi runs on the c_hall and b_hall twins at 3 fps,
+/// threshold off, one at a time: 1 694 nodes, maps up to 443 WM nodes and ~10^5 words. Each term
+/// is fitted against the thread CPU time of its own phase, which rtabmap_memory.csv records per
+/// node (RTAB-Map's timing categories), so the terms do not share one collinear fit:
+///   memory update  1.87e-6 ms per descriptor-word comparison (rms residual 2.7 ms; intercept
+///                  -1.6 ms, taken as 0);
+///   likelihood     1.67e-4 ms per inverted-index reference + 5.2e-4 ms per scored node (rms
+///                  0.05 ms);
+///   posterior      1.1e-2 ms per hypothesis (rms 0.25 ms);
+///   verification   1.69 ms wall-clock each (mean over the 685 verifications of the nodes' roles;
+///                  OpenCV's matching threads are invisible to thread CPU time);
+///   per node       3.64 ms: the mean feature extraction of a frame (timing.json), which RTAB-Map
+///                  does inside a node's processing.
+/// Over each run the model's total is 1.01-1.04 of the measured phases + verifications +
+/// extraction, and its loop-closure share (likelihood, posterior, loop hypothesis verification)
+/// 0.98-1.12 of the measured one. Not charged: retrieval and transfer bookkeeping, proximity
+/// selection and the graph-consistency check's trial optimisation (RGBD/OptimizeMaxError), which
+/// took 2.3-3.3 s of c_hall's 23-25 s of node wall-clock. Frame-to-frame tracking is odometry,
+/// outside Rtabmap/TimeThr as in RTAB-Map. `cost_ms_*` override every value.
 struct RtabmapCostModel {
   /// Per node: its feature extraction (RTAB-Map extracts a node's features inside its
-  /// processing) and the fixed part of memory update and Bayes bookkeeping (0.94 + 8.5).
-  double ms_per_node = 9.4;
+  /// processing); the memory update's fixed part fitted below zero.
+  double ms_per_node = 3.64;
   /// Per descriptor-word distance of the node's quantisation (exhaustive vocabulary search).
-  double ms_per_word_comparison = 1.76e-6;
-  /// Per inverted-index reference visited by the tf-idf likelihood (estimate).
-  double ms_per_likelihood_term = 1e-4;
-  /// Per hypothesis of the Bayes filter: prediction column and update (estimate).
-  double ms_per_hypothesis = 4e-3;
+  double ms_per_word_comparison = 1.87e-6;
+  /// Per inverted-index reference visited by the tf-idf likelihood.
+  double ms_per_likelihood_term = 1.67e-4;
+  /// Per node scored by the likelihood: its score, normalisation and hypothesis bookkeeping.
+  double ms_per_scored_node = 5.2e-4;
+  /// Per hypothesis of the Bayes filter: prediction column and update.
+  double ms_per_hypothesis = 1.1e-2;
   /// Per visual verification (matching + RANSAC of one candidate).
-  double ms_per_verification = 9.0;
+  double ms_per_verification = 1.69;
 };
 
 struct RtabmapOptions {
