@@ -140,6 +140,9 @@ std::vector<OptionField> option_fields(SlamOptions& o) {
        "rtabmap cost model: ms per visual verification"},
       {"wifi_max_retrieved", &o.rtabmap.wifi_max_retrieved,
        "rtabmap with Wi-Fi: LTM nodes of similar clusters retrieved per node (0 = all)"},
+      {"wifi_max_immune", &o.rtabmap.wifi_max_immune,
+       "rtabmap with Wi-Fi: WM nodes of similar clusters immune to transfer, most similar "
+       "cluster first (0 = all)"},
       {"vocabulary", &o.orbslam.vocabulary,
        "orbslam: vocabulary file (wifislam vocab train); empty = the shipped orb_k10_l4"},
       {"local_keyframes", &o.orbslam.local_keyframes,
@@ -315,6 +318,7 @@ void validate(const SlamOptions& o) {
               o.rtabmap.cost.ms_per_verification >= 0,
           "cost_ms_* must be >= 0");
   require(o.rtabmap.wifi_max_retrieved >= 0, "wifi_max_retrieved must be >= 0");
+  require(o.rtabmap.wifi_max_immune >= 0, "wifi_max_immune must be >= 0");
   require(o.graph.max_iterations >= 1 && o.graph.incremental_max_iterations >= 0,
           "optimizer iterations must be >= 1 (final) and >= 0 (incremental)");
   require(o.graph.threads >= 1, "optimizer_threads must be >= 1");

@@ -55,7 +55,7 @@ TEST(RtabmapMemory, StmNodesAreNeverLoopCandidatesAndEveryNodeIsInOneMemory) {
 
 TEST(RtabmapMemory, WorkingMemoryStaysBoundedUnderATightThreshold) {
   RtabmapOptions tight;
-  tight.time_threshold_ms = 1.0;  // every node is over budget (the fixed cost alone is 2 ms)
+  tight.time_threshold_ms = 1.0;  // every node is over budget (the fixed cost alone is 3.6 ms)
   test::RtabmapDriver bounded(tight);
   test::RtabmapDriver unbounded;
   std::size_t max_wm = 0;
@@ -131,6 +131,34 @@ TEST(RtabmapWifi, ImmuneNodesAreNeverTransferredAndRetrievedNodesAreSearchedInTh
   EXPECT_EQ(static_cast<std::size_t>(r.wifi_retrieved + r.retrieved), a_in_ltm.size());
   EXPECT_GE(r.scored, a_in_ltm.size());
   for (KeyframeId k : fe.last_transferred()) EXPECT_GE(k, 40);
+}
+
+// Where Wi-Fi cannot tell places apart (one signature everywhere, like the open a_hall twin),
+// every WM node is immune and WM grows past any threshold; wifi_max_immune caps immunity, and WM
+// with it, at the nodes of the most similar clusters.
+TEST(RtabmapWifi, ImmunityCapBoundsWorkingMemoryWhereEveryPlaceLooksAlikeOnWifi) {
+  RtabmapOptions uncapped;
+  uncapped.time_threshold_ms = 1.0;
+  RtabmapOptions capped = uncapped;
+  capped.wifi_max_immune = 15;
+  test::RtabmapDriver all_immune(uncapped, /*wifi=*/true), bounded(capped, /*wifi=*/true);
+  for (test::RtabmapDriver* d : {&all_immune, &bounded}) {
+    d->front_end().observe_wifi_scan(test::scan_at(0, kPlaceA));
+  }
+  std::size_t max_wm = 0;
+  for (int p = 0; p < 80; ++p) {
+    all_immune.add_node(p);
+    bounded.add_node(p);
+    const RtabmapNodeRecord& r = bounded.front_end().records().back();
+    EXPECT_LE(r.immune, capped.wifi_max_immune);
+    max_wm = std::max(max_wm, r.wm);
+  }
+  EXPECT_EQ(all_immune.front_end().memory().wm().size(), 70u);  // nothing could move
+  EXPECT_GT(all_immune.front_end().records().back().immune, 60);
+  EXPECT_EQ(bounded.front_end().records().back().immune, capped.wifi_max_immune);
+  // The cap plus what the threshold keeps without Wi-Fi (the bound of the test above).
+  EXPECT_LE(max_wm, static_cast<std::size_t>(capped.wifi_max_immune) + 30u);
+  EXPECT_GT(bounded.front_end().memory().ltm().size(), 20u);
 }
 
 // RGBD/ProximityBySpace: a node that comes back within RGBD/ProximityPathFilteringRadius (1 m) of

@@ -140,15 +140,15 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
       }
     }
   }
-  // Wi-Fi cluster retrieval: LTM nodes of similar clusters come back, immune while similar.
-  if (wifi() != nullptr && wifi()->has_signature()) {
-    for (KeyframeId k : wifi()->similar_cluster_keyframes()) {
-      if (options_.wifi_max_retrieved > 0 && pending_.wifi_retrieved >= options_.wifi_max_retrieved)
-        break;
-      if (memory_.place(k) == rtabmap::MemoryPlace::kLtm) {
-        retrieve(k, pending_);
-        ++pending_.wifi_retrieved;
-      }
+  // Wi-Fi immunisation and cluster retrieval: the nodes of similar clusters (up to
+  // wifi_max_immune) are immune this step; those in LTM come back (up to wifi_max_retrieved).
+  wifi_immune_ = wifi_immune_nodes();
+  for (KeyframeId k : wifi_immune_) {
+    if (options_.wifi_max_retrieved > 0 && pending_.wifi_retrieved >= options_.wifi_max_retrieved)
+      break;
+    if (memory_.place(k) == rtabmap::MemoryPlace::kLtm) {
+      retrieve(k, pending_);
+      ++pending_.wifi_retrieved;
     }
   }
 
@@ -296,6 +296,25 @@ std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
   return out;
 }
 
+std::vector<KeyframeId> RtabmapFrontEnd::wifi_immune_nodes() const {
+  std::vector<KeyframeId> out;
+  if (wifi() == nullptr) return out;
+  const auto cap = static_cast<std::size_t>(std::max(0, options_.wifi_max_immune));
+  // Most similar cluster first; within a cluster the newest nodes first, since transfers take
+  // the oldest first and a cap should keep what the unbounded rule would keep longest.
+  for (const SimilarCluster& similar : wifi()->similar_clusters()) {
+    const WifiCluster& cluster = wifi()->clusters().clusters().at(similar.cluster);
+    for (auto it = cluster.keyframes.rbegin(); it != cluster.keyframes.rend(); ++it) {
+      if (cap > 0 && out.size() >= cap) return out;
+      const rtabmap::MemoryPlace place = memory_.place(*it);
+      if (place == rtabmap::MemoryPlace::kWm || place == rtabmap::MemoryPlace::kLtm) {
+        out.push_back(*it);
+      }
+    }
+  }
+  return out;
+}
+
 double RtabmapFrontEnd::node_time_ms(const RtabmapNodeRecord& record) const {
   return options_.time_source == "wall" ? record.wall_ms : record.cost_ms;
 }
@@ -324,15 +343,15 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
       r.loop_closure_cost_ms + cost.ms_per_verification * (r.verifications - r.loop_verifications);
 
   // 6. Memory management under Rtabmap/TimeThr (Memory::forget: one more than entered WM).
+  const std::set<KeyframeId> wifi_immune(wifi_immune_.begin(), wifi_immune_.end());
+  r.immune =
+      static_cast<int>(std::count_if(wifi_immune.begin(), wifi_immune.end(), [&](KeyframeId k) {
+        return memory_.place(k) == rtabmap::MemoryPlace::kWm;
+      }));
   const auto kept = [&](KeyframeId id) {
-    if (immune_now_.contains(id) || id == r.best || linked_to_stm(id)) return true;
-    return wifi() != nullptr && wifi()->in_similar_cluster(id);
+    return immune_now_.contains(id) || id == r.best || linked_to_stm(id) ||
+           wifi_immune.contains(id);
   };
-  if (wifi() != nullptr) {
-    for (KeyframeId id : memory_.wm()) {
-      if (wifi()->in_similar_cluster(id)) ++r.immune;
-    }
-  }
   r.wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started_)
                   .count();
   r.cpu_ms = thread_cpu_ms() - started_cpu_ms_;

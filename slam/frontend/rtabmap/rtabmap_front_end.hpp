@@ -49,7 +49,11 @@
 // What bounds WM when many nodes are immune: immunity lasts one step (retrieval) or while the
 // cluster is similar to the current node (Wi-Fi). Transfers take only non-immune nodes, so WM is
 // at most the immune nodes plus what the threshold allows of the rest; when the robot moves on,
-// its old clusters stop being similar and become transferable again.
+// its old clusters stop being similar and become transferable again. Where Wi-Fi cannot tell
+// places apart (the open a_hall twin: every signature pair is similar), every WM node stays
+// immune and WM grows with the map, past the threshold, as the paper's A Hall times suggest.
+// `wifi_max_immune` N caps immunity at the N nodes of the most similar clusters (default 0, no
+// cap: the paper names none); WM is then at most N + what the threshold allows of the rest.
 //
 // Cost model calibration: see RtabmapCostModel (rtabmap_options.hpp). With its defaults a node
 // costs ~3.6 ms + ~19 ms per 10^7 word comparisons + 1.7 ms per verification; quantisation
@@ -142,6 +146,10 @@ class RtabmapFrontEnd final : public FrontEnd {
   std::map<rtabmap::NodeId, int> neighbours_in_memory(KeyframeId node, int max_margin,
                                                       bool include_ltm) const;
   bool linked_to_stm(KeyframeId node) const;
+  /// Wi-Fi immunisation: the WM and LTM nodes of the current node's similar clusters, at most
+  /// wifi_max_immune of them (0: all), from the most similar cluster down, newest first within
+  /// a cluster. The LTM ones are what cluster retrieval brings back.
+  std::vector<KeyframeId> wifi_immune_nodes() const;
   /// Step 6: proximity candidates of node `t` given the likelihood of the WM nodes scored.
   std::vector<KeyframeId> proximity_candidates(KeyframeId t,
                                                const std::map<rtabmap::NodeId, double>& likelihood);
@@ -151,9 +159,10 @@ class RtabmapFrontEnd final : public FrontEnd {
   rtabmap::NodeMemory memory_;
   rtabmap::BayesFilter filter_;
   std::map<rtabmap::NodeId, rtabmap::NodeWords> words_of_;
-  const PoseGraph* graph_ = nullptr;  // the pipeline's, seen through the selection query
-  KeyframeId last_best_ = -1;         // best hypothesis of the previous node (retrieval)
-  std::set<KeyframeId> immune_now_;   // retrieval neighbourhood of this step
+  const PoseGraph* graph_ = nullptr;     // the pipeline's, seen through the selection query
+  KeyframeId last_best_ = -1;            // best hypothesis of the previous node (retrieval)
+  std::set<KeyframeId> immune_now_;      // retrieval neighbourhood of this step
+  std::vector<KeyframeId> wifi_immune_;  // Wi-Fi immunisation of this step (wifi_immune_nodes)
   RtabmapNodeRecord pending_;
   std::chrono::steady_clock::time_point started_;
   double started_cpu_ms_ = 0.0;

@@ -103,6 +103,10 @@ struct RtabmapOptions {
   /// With a Wi-Fi module: LTM nodes of similar clusters retrieved per node (0 = all of them; they
   /// are the nodes the bounded search scores anyway, see RtabmapFrontEnd).
   int wifi_max_retrieved = 0;
+  /// With a Wi-Fi module: WM nodes immune to transfer per node, from the most similar cluster
+  /// down (0 = every node of a similar cluster, the paper's rule; a cap bounds WM where Wi-Fi
+  /// cannot separate places, see RtabmapFrontEnd).
+  int wifi_max_immune = 0;
 };
 
 }  // namespace wifislam::slam
