@@ -347,4 +347,16 @@ nlohmann::json to_json(const SlamOptions& options) {
   return out;
 }
 
+std::string option_reference() {
+  SlamOptions defaults;
+  const nlohmann::json values = to_json(defaults);
+  std::string out;
+  for (const OptionField& f : option_fields(defaults)) {
+    const nlohmann::json& v = values.at(f.key);
+    const std::string value = v.is_string() ? v.get<std::string>() : v.dump();
+    out += fmt::format("  {}={}\n      {}\n", f.key, value, f.help);
+  }
+  return out;
+}
+
 }  // namespace wifislam::slam

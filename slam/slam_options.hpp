@@ -87,4 +87,8 @@ void validate(const SlamOptions& options);
 /// All options as a flat JSON object keyed like option_fields() (for run.json).
 nlohmann::json to_json(const SlamOptions& options);
 
+/// Every `--set` key with its default and meaning, one per line, in option_fields() order
+/// (the reference `wifislam slam --help` prints).
+std::string option_reference();
+
 }  // namespace wifislam::slam

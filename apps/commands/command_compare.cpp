@@ -112,7 +112,9 @@ WIFISLAM_COMMAND(compare, 65) {
   app->add_option("--sweep", args->sweeps,
                   "Swept SLAM option key=v1,v2,... (repeatable; every combination is run), e.g.\n"
                   "--sweep min_matches=10,15,20,50 --sweep inlier_distance=2,3,5");
-  app->add_option("--set", args->settings, "SLAM option key=value for every run (repeatable)");
+  app->add_option("--set", args->settings,
+                  "SLAM option key=value for every run (repeatable); keys and defaults: "
+                  "wifislam slam --help");
   app->add_option("--eval-set", args->eval_settings,
                   "Evaluation threshold key=value (repeatable; see `wifislam eval --help`)");
   app->add_option("--seeds", args->seeds, "Seeds per scene (scene seed, +1, ...)")

@@ -20,6 +20,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/io/run_folder_writer.hpp"
+#include "slam/slam_options.hpp"
 #include "slam/system/run_slam.hpp"
 
 namespace {
@@ -134,7 +135,7 @@ WIFISLAM_COMMAND(slam, 60) {
       "scans in the scene)");
   app->add_option("--set", args->settings,
                   "SLAM option key=value (repeatable), e.g. --set min_matches=15 "
-                  "--set inlier_distance=2.0");
+                  "--set inlier_distance=2.0; every key is listed below");
   app->add_option("-o,--output", args->output, "Run folder to write")->required();
   app->add_flag("--force", args->force,
                 "Replace an existing run folder (never an input, the current directory, the\n"
@@ -148,5 +149,8 @@ WIFISLAM_COMMAND(slam, 60) {
       ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
   app->add_option("--seed", args->scene_seed, "Scene input only: replace the scene's seed")
       ->check(wifislam::cli::kSeedValidator);
+  // RTAB-Map's and ORB-SLAM2's parameters keep their defaults and are named after them here.
+  app->footer("SLAM options (--set key=value; shown with their defaults):\n" +
+              wifislam::slam::option_reference());
   app->callback([args] { run(*args); });
 }

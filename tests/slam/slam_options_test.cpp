@@ -102,5 +102,23 @@ TEST(SlamOptions, RtabmapParametersHaveRtabmapDefaultsAndTimeThresholdTakesInf) 
   EXPECT_THROW(validate(o), InvalidInputError);
 }
 
+// `wifislam slam --help` lists every --set key with its default, and each listed default reads
+// back through set_option to the same options.
+TEST(SlamOptions, TheHelpReferenceListsEveryKeyWithADefaultThatReadsBack) {
+  const std::string reference = option_reference();
+  SlamOptions defaults;
+  for (const OptionField& f : option_fields(defaults)) {
+    const std::string prefix = "  " + f.key + "=";
+    const std::size_t at = reference.find(prefix);
+    ASSERT_NE(at, std::string::npos) << f.key;
+    const std::size_t end = reference.find('\n', at);
+    SlamOptions read_back;
+    set_option(read_back, f.key, reference.substr(at + prefix.size(), end - at - prefix.size()));
+    EXPECT_EQ(to_json(read_back), to_json(SlamOptions{})) << f.key;
+  }
+  EXPECT_NE(reference.find("  time_threshold_ms=inf\n"), std::string::npos);
+  EXPECT_NE(reference.find("Rtabmap/TimeThr"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace wifislam::slam
