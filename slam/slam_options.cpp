@@ -315,7 +315,7 @@ void validate(const SlamOptions& o) {
           "time_source must be cost or wall, got '" + o.rtabmap.time_source + "'");
   require(o.rtabmap.cost.ms_per_node >= 0 && o.rtabmap.cost.ms_per_word_comparison >= 0 &&
               o.rtabmap.cost.ms_per_likelihood_term >= 0 && o.rtabmap.cost.ms_per_hypothesis >= 0 &&
-              o.rtabmap.cost.ms_per_verification >= 0,
+              o.rtabmap.cost.ms_per_verification >= 0 && o.rtabmap.cost.ms_per_scored_node >= 0,
           "cost_ms_* must be >= 0");
   require(o.rtabmap.wifi_max_retrieved >= 0, "wifi_max_retrieved must be >= 0");
   require(o.rtabmap.wifi_max_immune >= 0, "wifi_max_immune must be >= 0");

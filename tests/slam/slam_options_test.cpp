@@ -100,6 +100,14 @@ TEST(SlamOptions, RtabmapParametersHaveRtabmapDefaultsAndTimeThresholdTakesInf) 
   o.rtabmap.prediction_lc = "0.1 0.36";
   set_option_assignment(o, "time_source=sundial");
   EXPECT_THROW(validate(o), InvalidInputError);
+  o.rtabmap.time_source = "cost";
+  EXPECT_NO_THROW(validate(o));
+  for (const char* bad :
+       {"cost_ms_per_scored_node=-1", "cost_ms_per_hypothesis=-1", "wifi_max_immune=-1"}) {
+    SlamOptions b;
+    set_option_assignment(b, bad);
+    EXPECT_THROW(validate(b), InvalidInputError) << bad;
+  }
 }
 
 // `wifislam slam --help` lists every --set key with its default, and each listed default reads
