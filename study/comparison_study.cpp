@@ -1,0 +1,503 @@
+#include "study/comparison_study.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <mutex>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "core/atomic_file.hpp"
+#include "core/dataset_reader.hpp"
+#include "core/error.hpp"
+#include "core/thread_start.hpp"
+#include "eval/evaluate_run.hpp"
+#include "eval/report_writer.hpp"
+#include "eval/run_divergence.hpp"
+#include "sim/generate/dataset_writer.hpp"
+#include "slam/io/run_folder_writer.hpp"
+#include "slam/system/run_slam.hpp"
+
+namespace wifislam::study {
+
+namespace {
+
+using Setting = std::vector<std::pair<std::string, std::string>>;
+
+/// The column label: every option that differs from the defaults, --set ones first.
+std::string label_of(const std::vector<std::string>& base, const Setting& setting) {
+  std::string out;
+  for (const std::string& assignment : base) out += (out.empty() ? "" : " ") + assignment;
+  for (const auto& [key, value] : setting) out += (out.empty() ? "" : " ") + key + "=" + value;
+  return out.empty() ? "defaults" : out;
+}
+
+/// Folder-name form of a label ("min_matches=10 inlier_distance=3" -> "min_matches-10_...").
+std::string folder_of(const std::string& label) {
+  std::string out;
+  for (char c : label) out += c == '=' ? '-' : c == ' ' ? '_' : c;
+  return out;
+}
+
+std::vector<Setting> expand(const std::vector<SweepAxis>& sweeps) {
+  std::vector<Setting> out = {{}};
+  for (const SweepAxis& axis : sweeps) {
+    std::vector<Setting> next;
+    for (const Setting& partial : out) {
+      for (const std::string& value : axis.values) {
+        Setting s = partial;
+        s.emplace_back(axis.key, value);
+        next.push_back(std::move(s));
+      }
+    }
+    out = std::move(next);
+  }
+  return out;
+}
+
+slam::SlamOptions options_for(const ComparisonOptions& options, const Setting& setting, bool wifi,
+                              std::uint64_t seed) {
+  slam::SlamOptions o;
+  o.frontend = options.frontend;
+  o.seed = seed;
+  for (const std::string& s : options.settings) slam::set_option_assignment(o, s);
+  for (const auto& [key, value] : setting) slam::set_option(o, key, value);
+  o.wifi.enabled = wifi;
+  slam::validate(o);
+  return o;
+}
+
+std::string csv_field(const nlohmann::ordered_json& value) {
+  if (value.is_string()) {
+    const std::string s = value.get<std::string>();
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string quoted = "\"";
+    for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+  }
+  if (value.is_null()) return "";
+  return value.dump();
+}
+
+/// Metrics of one table cell: the cases of one scene, setting and variant (one per seed).
+struct Cell {
+  int runs = 0;
+  std::vector<double> ate_rmse_m;  // one per seed: mean and spread
+  double loop_closure_s = 0, wifi_overhead_s = 0, total_s = 0;
+  /// The paper's time figure: the module bounding acts on (candidate selection, Wi-Fi
+  /// clustering included, and the long-term candidates' verifications) plus optimisation.
+  double bounded_module_s = 0;
+  double cost_model_s = 0;  // the front end's deterministic time, when it has one
+  bool has_cost_model = false;
+  /// RTAB-Map's loop-closure detection time (likelihood + posterior + loop hypothesis
+  /// verification), measured and by the cost model, when the front end reports it.
+  double rtabmap_loop_closure_s = 0, rtabmap_loop_closure_cost_s = 0;
+  bool has_rtabmap_loop_closure = false;
+  std::int64_t episodes = 0;
+  eval::LoopClosureCounts online, pruned;  // summed over seeds (percentages not used)
+  std::int64_t comparisons = 0, long_term_comparisons = 0, keyframes = 0;
+
+  void add(const eval::RunEvaluation& e) {
+    ++runs;
+    const auto long_term = e.timing.roles.find("long_term");
+    const eval::RoleTiming lt =
+        long_term == e.timing.roles.end() ? eval::RoleTiming{} : long_term->second;
+    long_term_comparisons += lt.comparisons;
+    for (auto [sum, one] : {std::pair{&online, &e.loop_closure_score.online},
+                            std::pair{&pruned, &e.loop_closure_score.after_pruning}}) {
+      sum->scored += one->scored;
+      sum->correct += one->correct;
+      sum->right_place_imprecise += one->right_place_imprecise;
+      sum->wrong_place += one->wrong_place;
+      sum->far_wrong_place += one->far_wrong_place;
+      sum->false_negatives += one->false_negatives;
+    }
+    bounded_module_s += e.timing.candidate_selection_s + lt.time_s + e.optimisation_s;
+    if (e.cost_model_s) {
+      cost_model_s += *e.cost_model_s;
+      has_cost_model = true;
+    }
+    if (e.loop_closure_cost_s && e.likelihood_posterior_cpu_s) {
+      rtabmap_loop_closure_s += *e.likelihood_posterior_cpu_s + lt.time_s;
+      rtabmap_loop_closure_cost_s += *e.loop_closure_cost_s;
+      has_rtabmap_loop_closure = true;
+    }
+    ate_rmse_m.push_back(e.ate_rmse_m);
+    loop_closure_s += e.loop_closure_detection_s;
+    wifi_overhead_s += e.wifi_overhead_s;
+    total_s += e.total_s;
+    episodes += e.revisit_episodes;
+    comparisons += e.candidate_comparisons;
+    keyframes += e.keyframes;
+  }
+  double mean(double sum) const { return runs > 0 ? sum / runs : 0.0; }
+  /// "mean" for one run, "mean +- sd (min-max)" over seeds.
+  std::string ate_text() const {
+    if (ate_rmse_m.empty()) return "-";
+    double sum = 0, lo = ate_rmse_m.front(), hi = lo;
+    for (double x : ate_rmse_m) {
+      sum += x;
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    const double m = sum / static_cast<double>(ate_rmse_m.size());
+    if (ate_rmse_m.size() == 1) return fmt::format("{:.3f}", m);
+    double ss = 0;
+    for (double x : ate_rmse_m) ss += (x - m) * (x - m);
+    const double sd = std::sqrt(ss / static_cast<double>(ate_rmse_m.size() - 1));
+    return fmt::format("{:.2f} &plusmn; {:.2f} ({:.2f}-{:.2f})", m, sd, lo, hi);
+  }
+};
+
+std::string percent_of(std::int64_t part, std::int64_t whole) {
+  if (whole == 0) return fmt::format("- (0/0)");
+  return fmt::format("{:.1f} ({}/{})", 100.0 * static_cast<double>(part) / whole, part, whole);
+}
+
+}  // namespace
+
+SweepAxis parse_sweep(const std::string& text) {
+  const auto eq = text.find('=');
+  if (eq == std::string::npos || eq == 0 || eq + 1 == text.size()) {
+    throw ParseError("--sweep", text, "expected key=value1,value2,...");
+  }
+  SweepAxis axis{text.substr(0, eq), {}};
+  std::string rest = text.substr(eq + 1);
+  std::size_t start = 0;
+  while (start <= rest.size()) {
+    const std::size_t comma = rest.find(',', start);
+    const std::string value =
+        rest.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    if (value.empty()) throw ParseError("--sweep", text, "empty value in the list");
+    axis.values.push_back(value);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  slam::SlamOptions probe;
+  for (const std::string& value : axis.values) slam::set_option(probe, axis.key, value);
+  return axis;
+}
+
+ComparisonResult run_comparison(const std::vector<Scene>& scenes, const ComparisonOptions& options,
+                                const std::filesystem::path& out_dir) {
+  if (scenes.empty()) throw InvalidInputError("compare: no scene given");
+  if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
+  if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
+  std::map<std::string, int> names;
+  for (const Scene& scene : scenes) {
+    if (++names[scene.name] > 1) {
+      throw InvalidInputError("compare: scene name '" + scene.name + "' given twice");
+    }
+  }
+
+  ComparisonResult result;
+  result.seeds = options.seeds;
+  const std::vector<Setting> settings = expand(options.sweeps);
+  for (const Setting& s : settings) result.settings.push_back(label_of(options.settings, s));
+  // Every option combination is checked before any dataset is generated.
+  for (const Setting& s : settings) options_for(options, s, true, 1);
+
+  std::mutex progress_mutex;
+  const auto progress = [&](const std::string& line) {
+    if (!options.on_progress) return;
+    std::lock_guard lock(progress_mutex);
+    options.on_progress(line);
+  };
+
+  struct Job {
+    std::filesystem::path dataset;
+    slam::SlamOptions slam;
+    std::size_t case_index = 0;
+  };
+  std::vector<Job> jobs;
+  for (const Scene& scene : scenes) {
+    result.scenes.push_back(scene.name);
+    for (int k = 0; k < options.seeds; ++k) {
+      const std::uint64_t seed = scene.seed + static_cast<std::uint64_t>(k);
+      const std::string tag = fmt::format("{}-seed{}", scene.name, seed);
+      const std::filesystem::path dataset = std::filesystem::path("datasets") / tag;
+      GenerateOptions generate;
+      generate.seed = seed;
+      generate.fps = options.fps;
+      generate.max_frames = options.max_frames;
+      const GenerateSummary g = generate_dataset(scene, out_dir / dataset, generate);
+      progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s)", dataset.string(),
+                           g.frames, g.wifi_scans, g.total_s));
+      for (std::size_t s = 0; s < settings.size(); ++s) {
+        for (bool wifi : {false, true}) {
+          ComparisonCase c;
+          c.scene = scene.name;
+          c.seed = seed;
+          c.setting = result.settings[s];
+          c.wifi = wifi;
+          c.run_dir = std::filesystem::path("runs") / tag / folder_of(c.setting) /
+                      (wifi ? "wifi" : "vanilla");
+          jobs.push_back(
+              {dataset, options_for(options, settings[s], wifi, seed), result.cases.size()});
+          result.cases.push_back(std::move(c));
+        }
+      }
+    }
+  }
+
+  // SLAM runs and their evaluations, `jobs` at a time; each writes only its own folder.
+  std::atomic<std::size_t> next{0};
+  std::mutex error_mutex;
+  std::exception_ptr first_error;
+  const auto worker = [&] {
+    for (std::size_t i = next++; i < jobs.size(); i = next++) {
+      {
+        std::lock_guard lock(error_mutex);
+        if (first_error) return;
+      }
+      try {
+        const Job& job = jobs[i];
+        ComparisonCase& c = result.cases[job.case_index];
+        const std::filesystem::path run_dir = out_dir / c.run_dir;
+        DatasetReaderOptions reader_options;
+        reader_options.verify_checksums = false;  // written moments ago by this process
+        DatasetReader reader(out_dir / job.dataset, reader_options);
+        slam::RunSummary summary;
+        const auto system = slam::run_slam(reader, job.slam, summary);
+        slam::write_run_folder(run_dir, *system, summary, /*overwrite=*/false,
+                               {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}});
+        c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
+        eval::write_evaluation(run_dir / "eval", c.evaluation, run_dir, out_dir / job.dataset,
+                               options.plots);
+        progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
+                             c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
+                             c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
+                             c.evaluation.false_positives, summary.wall_s));
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!first_error) first_error = std::current_exception();
+      }
+    }
+  };
+  // The calling thread is one worker; the others are started as far as the machine allows (a
+  // process limit must not end the program), and the jobs queue works with however many run.
+  const int threads =
+      std::min<int>(clamp_thread_count(options.jobs), static_cast<int>(jobs.size()));
+  std::vector<std::thread> pool;
+  start_threads(pool, threads - 1, worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  if (first_error) std::rethrow_exception(first_error);
+
+  // Pairing: where each Wi-Fi run first departs from its vanilla twin.
+  for (const ComparisonCase& w : result.cases) {
+    if (!w.wifi) continue;
+    for (const ComparisonCase& v : result.cases) {
+      if (v.wifi || v.scene != w.scene || v.seed != w.seed || v.setting != w.setting) continue;
+      const std::optional<eval::RunDivergence> d =
+          eval::first_divergence(out_dir / v.run_dir, out_dir / w.run_dir);
+      result.divergences.push_back(
+          {w.scene, w.seed, w.setting, d ? d->keyframe : -1, d ? d->time_s : 0.0});
+    }
+  }
+
+  write_file_atomic(out_dir / "comparison.md", result.markdown());
+  write_file_atomic(out_dir / "comparison.csv", result.csv());
+  write_file_atomic(out_dir / "comparison.json", result.to_json().dump(1) + "\n");
+  return result;
+}
+
+std::string ComparisonResult::markdown() const {
+  // cells[scene][setting][wifi]
+  std::map<std::string, std::map<std::string, std::map<bool, Cell>>> cells;
+  for (const ComparisonCase& c : cases) cells[c.scene][c.setting][c.wifi].add(c.evaluation);
+
+  struct Metric {
+    std::string title;
+    std::function<std::string(const Cell&, bool wifi)> cell;
+  };
+  bool any_cost_model = false, any_rtabmap_loop_closure = false;
+  for (const ComparisonCase& c : cases) {
+    any_cost_model |= c.evaluation.cost_model_s.has_value();
+    any_rtabmap_loop_closure |= c.evaluation.loop_closure_cost_s.has_value();
+  }
+  std::vector<Metric> metrics = {
+      {"Trajectory error: ATE RMSE (m), after the back end's pruning",
+       [](const Cell& c, bool) { return c.ate_text(); }},
+      {"False positive loop closures (wrong place): % of scored edges, online (false/scored)",
+       [](const Cell& c, bool) { return percent_of(c.online.wrong_place, c.online.scored); }},
+      {"... after pruning (edges the back end kept)",
+       [](const Cell& c, bool) { return percent_of(c.pruned.wrong_place, c.pruned.scored); }},
+      {"Wrong-place closures between far places (true positions > 12 m apart): online / after "
+       "pruning",
+       [](const Cell& c, bool) {
+         return fmt::format("{} / {}", c.online.far_wrong_place, c.pruned.far_wrong_place);
+       }},
+      {"Right place, imprecise (within 3 m, error within 1 m / 10 deg; not false): online / after "
+       "pruning",
+       [](const Cell& c, bool) {
+         return fmt::format("{} / {}", c.online.right_place_imprecise,
+                            c.pruned.right_place_imprecise);
+       }},
+      {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes), "
+       "online",
+       [](const Cell& c, bool) { return percent_of(c.online.false_negatives, c.episodes); }},
+      {"... after pruning",
+       [](const Cell& c, bool) { return percent_of(c.pruned.false_negatives, c.episodes); }},
+      {"Loop-closure detection time (s, wall-clock)",
+       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.loop_closure_s)); }},
+      {"Candidate comparisons (visual transformations tried for loop closure)",
+       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.comparisons)); }},
+      {"Long-term comparisons (the candidates Wi-Fi bounds)",
+       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.long_term_comparisons)); }},
+      {"Bounded-module time: candidate selection + long-term verifications + optimisation (s)",
+       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.bounded_module_s)); }},
+      {"Wi-Fi overhead: clustering + cluster management (ms, % of pipeline time)",
+       [](const Cell& c, bool wifi) {
+         if (!wifi) return std::string("-");
+         return fmt::format("{:.1f} ({:.3f} %)", 1e3 * c.mean(c.wifi_overhead_s),
+                            c.total_s > 0 ? 100.0 * c.wifi_overhead_s / c.total_s : 0.0);
+       }},
+  };
+  if (any_cost_model) {
+    metrics.push_back(
+        {"Front-end time, deterministic cost model (s; what rtabmap's Rtabmap/TimeThr compares)",
+         [](const Cell& c, bool) {
+           return c.has_cost_model ? fmt::format("{:.2f}", c.mean(c.cost_model_s))
+                                   : std::string("-");
+         }});
+  }
+
+  if (any_rtabmap_loop_closure) {
+    // The paper's RTAB-Map time table: loop-closure detection as Rtabmap::process times it, not
+    // the pipeline's module (which also holds quantisation, proximity and predecessor links).
+    const auto rtabmap_cell = [](double Cell::*seconds) {
+      return [seconds](const Cell& c, bool) {
+        return c.has_rtabmap_loop_closure ? fmt::format("{:.3f}", c.mean(c.*seconds))
+                                          : std::string("-");
+      };
+    };
+    metrics.push_back(
+        {"RTAB-Map loop-closure time: likelihood + posterior + loop hypothesis "
+         "verification (s; thread CPU + verification wall-clock)",
+         rtabmap_cell(&Cell::rtabmap_loop_closure_s)});
+    metrics.push_back({"... the same, deterministic cost model (s)",
+                       rtabmap_cell(&Cell::rtabmap_loop_closure_cost_s)});
+  }
+
+  std::string out;
+  if (seeds > 1) {
+    out += fmt::format(
+        "Each cell: {} seeds; ATE as mean &plusmn; standard deviation (min-max), times and "
+        "comparisons averaged, closures summed over seeds.\n\n",
+        seeds);
+  }
+  for (const Metric& metric : metrics) {
+    out += "### " + metric.title + "\n\n| scene |";
+    std::string rule = "| --- |";
+    for (const std::string& setting : settings) {
+      out += fmt::format(" {} Vanilla | {} WiFi |", setting, setting);
+      rule += " ---: | ---: |";
+    }
+    out += "\n" + rule + "\n";
+    for (const std::string& scene : scenes) {
+      out += "| " + scene + " |";
+      for (const std::string& setting : settings) {
+        for (bool wifi : {false, true})
+          out += " " + metric.cell(cells[scene][setting][wifi], wifi) + " |";
+      }
+      out += "\n";
+    }
+    out += "\n";
+  }
+  // Time, Wi-Fi relative to vanilla: the paper's headline (loop-closure detection) and its own
+  // figure (the module bounding affects, plus optimisation).
+  const auto ratio_table = [&](const std::string& title, double Cell::*seconds) {
+    out += "### " + title + ", WiFi / Vanilla (ratio, same run)\n\n| scene |";
+    std::string rule = "| --- |";
+    for (const std::string& setting : settings) {
+      out += " " + setting + " |";
+      rule += " ---: |";
+    }
+    out += "\n" + rule + "\n";
+    for (const std::string& scene : scenes) {
+      out += "| " + scene + " |";
+      for (const std::string& setting : settings) {
+        const Cell& v = cells[scene][setting][false];
+        const Cell& w = cells[scene][setting][true];
+        out += v.*seconds > 0 ? fmt::format(" {:.2f} |", w.*seconds / v.*seconds)
+                              : std::string(" - |");
+      }
+      out += "\n";
+    }
+  };
+  ratio_table("Loop-closure detection time", &Cell::loop_closure_s);
+  out += "\n";
+  ratio_table("Bounded-module time", &Cell::bounded_module_s);
+  if (any_cost_model) {
+    out += "\n";
+    ratio_table("Front-end time (cost model)", &Cell::cost_model_s);
+  }
+  if (any_rtabmap_loop_closure) {
+    out += "\n";
+    ratio_table("RTAB-Map loop-closure time", &Cell::rtabmap_loop_closure_s);
+    out += "\n";
+    ratio_table("RTAB-Map loop-closure time (cost model)", &Cell::rtabmap_loop_closure_cost_s);
+  }
+  if (!divergences.empty()) {
+    out +=
+        "\n### First keyframe where the WiFi run differs from vanilla (same dataset and "
+        "random draws)\n\n| scene | seed | setting | keyframe | time since first keyframe (s) |\n| "
+        "--- | ---: | --- | "
+        "---: | ---: |\n";
+    for (const PairDivergence& d : divergences) {
+      out += d.keyframe < 0
+                 ? fmt::format("| {} | {} | {} | none | - |\n", d.scene, d.seed, d.setting)
+                 : fmt::format("| {} | {} | {} | {} | {:.3f} |\n", d.scene, d.seed, d.setting,
+                               d.keyframe, d.time_s);
+    }
+  }
+  return out;
+}
+
+std::string ComparisonResult::csv() const {
+  if (cases.empty()) return "scene,seed,setting,variant,run_dir\n";
+  std::vector<std::string> keys;
+  const nlohmann::ordered_json first = cases.front().evaluation.flat_metrics();
+  for (const auto& item : first.items()) keys.push_back(item.key());
+  std::string out = "scene,seed,setting,variant,run_dir";
+  for (const std::string& k : keys) out += "," + k;
+  out += "\n";
+  for (const ComparisonCase& c : cases) {
+    const nlohmann::ordered_json flat = c.evaluation.flat_metrics();
+    out += fmt::format("{},{},{},{},{}", csv_field(c.scene), c.seed, csv_field(c.setting),
+                       c.wifi ? "wifi" : "vanilla", csv_field(c.run_dir.string()));
+    for (const std::string& k : keys) out += "," + (flat.contains(k) ? csv_field(flat[k]) : "");
+    out += "\n";
+  }
+  return out;
+}
+
+nlohmann::json ComparisonResult::to_json() const {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const ComparisonCase& c : cases) {
+    runs.push_back({{"scene", c.scene},
+                    {"seed", c.seed},
+                    {"setting", c.setting},
+                    {"variant", c.wifi ? "wifi" : "vanilla"},
+                    {"run_dir", c.run_dir.string()},
+                    {"metrics", c.evaluation.flat_metrics()}});
+  }
+  nlohmann::json divergence = nlohmann::json::array();
+  for (const PairDivergence& d : divergences) {
+    divergence.push_back({{"scene", d.scene},
+                          {"seed", d.seed},
+                          {"setting", d.setting},
+                          {"first_divergent_keyframe", d.keyframe},
+                          {"time_s", d.time_s}});
+  }
+  return {{"scenes", scenes},
+          {"settings", settings},
+          {"seeds", seeds},
+          {"runs", runs},
+          {"divergence", divergence}};
+}
+
+}  // namespace wifislam::study

@@ -1,0 +1,189 @@
+#include "study/greedy_placement.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/rng.hpp"
+#include "sim/radio/ap_placement.hpp"
+#include "sim/site/site.hpp"
+#include "sim/world/world_types.hpp"
+
+namespace wifislam::study {
+
+namespace {
+
+double coarseness(const RadioResolution& r) {
+  return r.resolution_m.value_or(std::numeric_limits<double>::infinity());
+}
+
+/// Each pause's readings per candidate: (candidate index, RSSI) sorted by candidate.
+struct PauseReadings {
+  Eigen::Vector2d position_m;
+  std::vector<std::pair<int, double>> rssi_dbm;
+};
+
+/// The pauses of a placement: each pause's signature restricted to the chosen candidates.
+std::vector<PauseSample> restrict_to(const std::vector<PauseReadings>& pauses,
+                                     const std::vector<slam::AccessPointKey>& keys,
+                                     const std::vector<bool>& chosen) {
+  std::vector<PauseSample> out;
+  out.reserve(pauses.size());
+  for (const PauseReadings& p : pauses) {
+    std::vector<slam::ApStrength> strengths;
+    for (const auto& [candidate, rssi] : p.rssi_dbm)
+      if (chosen[static_cast<std::size_t>(candidate)])
+        strengths.push_back({keys[static_cast<std::size_t>(candidate)], rssi});
+    out.push_back({p.position_m, slam::WifiSignature(std::move(strengths))});
+  }
+  return out;
+}
+
+template <typename T>
+T median_of(std::vector<T> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
+}
+
+}  // namespace
+
+double placement_error(const RadioResolution& r) {
+  return (1.0 - r.near_similar_share) + r.far_similar_share;
+}
+
+bool places_better(const RadioResolution& a, const RadioResolution& b) {
+  if (placement_error(a) != placement_error(b)) return placement_error(a) < placement_error(b);
+  return coarseness(a) < coarseness(b);
+}
+
+PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& options) {
+  const auto progress = [&](const std::string& line) {
+    if (options.on_progress) options.on_progress(line);
+  };
+  PlacementResult result;
+
+  // The scene's own placement, for reference, and the plan the candidates stand in.
+  const std::vector<PauseSample> own = simulate_pauses(scene, options.wifi);
+  result.scene_own = radio_resolution(own, options.wifi);
+  for (const PauseSample& p : own) result.pause_positions_m.push_back(p.position_m);
+  if (own.size() < 2) {
+    throw InvalidInputError(fmt::format(
+        "{}: the route has {} Wi-Fi pause(s) (route.pause): a placement needs at least two pauses "
+        "to tell apart",
+        scene.name, own.size()));
+  }
+  std::vector<Eigen::Vector2d> spots;
+  {
+    const Site site(scene);
+    result.scene_access_points = static_cast<int>(site.access_points().size());
+    spots = access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
+    result.plan = site.world().plan;
+  }
+  if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
+    throw InvalidInputError(
+        fmt::format("{} candidate positions at {} m spacing (at most {}): give a larger --spacing",
+                    spots.size(), options.candidate_spacing_m, kMaxPlacementCandidates));
+  }
+  if (options.budget < 1 || options.budget > static_cast<int>(spots.size())) {
+    throw InvalidInputError(fmt::format(
+        "--budget {}: the plan has {} candidate positions at {} m spacing (give 1 to {}, or a "
+        "smaller --spacing)",
+        options.budget, spots.size(), options.candidate_spacing_m, spots.size()));
+  }
+
+  // One simulation with an access point at every candidate.
+  Scene all = scene;
+  all.access_points.placement = ApPlacement::kExplicit;
+  all.access_points.explicit_list.clear();
+  for (const Eigen::Vector2d& s : spots) {
+    AccessPointSpec spec;
+    spec.position_m = {s.x(), s.y(), scene.access_points.height_m};
+    all.access_points.explicit_list.push_back(spec);
+    result.candidates.push_back(spec.position_m);
+  }
+  all.access_points.count = static_cast<int>(spots.size());
+  progress(
+      fmt::format("simulating the route's scans with {} candidate access points", spots.size()));
+  std::vector<slam::AccessPointKey> keys;
+  const std::vector<PauseSample> every = simulate_pauses(all, options.wifi, &keys);
+  std::map<slam::AccessPointKey, int> candidate_of;
+  for (std::size_t i = 0; i < keys.size(); ++i) candidate_of[keys[i]] = static_cast<int>(i);
+  std::vector<PauseReadings> pauses;
+  for (const PauseSample& p : every) {
+    PauseReadings r{p.position_m, {}};
+    for (const slam::ApStrength& s : p.signature.strengths())
+      r.rssi_dbm.emplace_back(candidate_of.at(s.ap), s.rssi_dbm);
+    std::sort(r.rssi_dbm.begin(), r.rssi_dbm.end());
+    pauses.push_back(std::move(r));
+  }
+
+  // Greedy: add the candidate whose addition resolves best.
+  const std::size_t n = spots.size();
+  std::vector<bool> chosen(n, false);
+  for (int k = 1; k <= options.budget; ++k) {
+    int best = -1;
+    RadioResolution best_r;
+    for (std::size_t c = 0; c < n; ++c) {
+      if (chosen[c]) continue;
+      chosen[c] = true;
+      const RadioResolution r = radio_resolution(restrict_to(pauses, keys, chosen), options.wifi);
+      chosen[c] = false;
+      if (best < 0 || places_better(r, best_r)) {
+        best = static_cast<int>(c);
+        best_r = r;
+      }
+    }
+    chosen[static_cast<std::size_t>(best)] = true;
+    PlacementStep step;
+    step.count = k;
+    step.candidate = best;
+    step.greedy = best_r;
+    step.greedy_error = placement_error(best_r);
+
+    // Random placements of k candidates.
+    std::vector<double> error, resolution, far, near;
+    for (int draw = 0; draw < options.random_draws; ++draw) {
+      Rng rng = Rng::stream(options.seed, fmt::format("study/place/random/{}/{}", k, draw));
+      std::vector<int> order(n);
+      for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
+      std::vector<bool> random_set(n, false);
+      for (int i = 0; i < k; ++i) {  // partial Fisher-Yates
+        const auto j =
+            static_cast<std::size_t>(rng.uniform_int(i, static_cast<std::int64_t>(n) - 1));
+        std::swap(order[static_cast<std::size_t>(i)], order[j]);
+        random_set[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = true;
+      }
+      const RadioResolution r =
+          radio_resolution(restrict_to(pauses, keys, random_set), options.wifi);
+      error.push_back(placement_error(r));
+      resolution.push_back(coarseness(r));
+      far.push_back(r.far_similar_share);
+      near.push_back(r.near_similar_share);
+    }
+    if (!resolution.empty()) {
+      const double m = median_of(resolution);
+      if (std::isfinite(m)) step.random_resolution_m = m;
+      step.random_error = median_of(error);
+      step.random_far_similar_share = median_of(far);
+      step.random_near_similar_share = median_of(near);
+    }
+    const auto text = [](const std::optional<double>& v) {
+      return v ? fmt::format("{:.1f} m", *v) : std::string("none");
+    };
+    progress(
+        fmt::format("{:>3} APs: +({:.1f}, {:.1f}) error {:.3f}, resolution {} (random: {:.3f}, "
+                    "{})",
+                    k, spots[static_cast<std::size_t>(best)].x(),
+                    spots[static_cast<std::size_t>(best)].y(), step.greedy_error,
+                    text(best_r.resolution_m), step.random_error, text(step.random_resolution_m)));
+    result.steps.push_back(step);
+  }
+  return result;
+}
+
+}  // namespace wifislam::study

@@ -1,0 +1,101 @@
+#pragma once
+// A study's results in one SQLite database (Debian's libsqlite3):
+//
+//   study(key TEXT PRIMARY KEY, value TEXT)   name, study_file_hash, software_version, level,
+//                                             axes (JSON: key and column of each axis)
+//   results(case_id, case_index, variant,     one row per case x variant ("radio"; or
+//           <one column per axis>,            "vanilla" and "wifi"): the case's axis values,
+//           <one column per metric>,          every metric (deterministic: the same study gives
+//           software_version, scene_hash)     the same rows, whatever the machine or shard)
+//           PRIMARY KEY (case_id, variant)
+//   timing(case_id, variant, <wall-clock      machine-dependent times, kept apart so that
+//          seconds>)                          `results` compares row for row
+//
+// A case's rows are written in one transaction, so a killed run (Ctrl-C, SIGKILL) loses at most
+// the case in flight and never leaves half a case. Axis values that read as numbers are stored as
+// numbers (so SQL can order and average them), others as text.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "study/study_file.hpp"
+
+struct sqlite3;
+
+namespace wifislam::study {
+
+using SqlValue = std::variant<std::monostate, std::int64_t, double, std::string>;
+
+struct ResultColumn {
+  std::string name;
+  SqlValue value;
+};
+
+/// One row of `results` (without the axis columns, which the store adds from the case).
+struct ResultRow {
+  std::string variant;
+  std::vector<ResultColumn> metrics;
+  std::vector<ResultColumn> timing;  // wall-clock seconds
+  std::string scene_hash;
+};
+
+/// The database's identity: which study file and build wrote it.
+struct StudyIdentity {
+  std::string name, study_file_hash, software_version, level;
+  std::vector<std::string> axis_keys;
+  friend bool operator==(const StudyIdentity&, const StudyIdentity&) = default;
+};
+StudyIdentity identity_of(const StudyFile& study);
+
+class ResultStore {
+ public:
+  /// Opens `path`, creating the tables when the file is new. An existing database must be one of
+  /// this study (same identity): InvalidInputError naming what differs otherwise.
+  ResultStore(const std::filesystem::path& path, const StudyFile& study,
+              const std::vector<std::string>& metric_columns,
+              const std::vector<std::string>& timing_columns);
+  ~ResultStore();
+  ResultStore(const ResultStore&) = delete;
+  ResultStore& operator=(const ResultStore&) = delete;
+
+  /// Case ids with rows already (a rerun skips them).
+  std::set<std::string> finished_cases() const;
+  /// Writes every row of one case in one transaction.
+  void write_case(const StudyCase& c, const std::vector<ResultRow>& rows);
+
+  /// Whether `path` is a study database (has the study table), and its identity.
+  static std::optional<StudyIdentity> read_identity(const std::filesystem::path& path);
+
+ private:
+  void exec(const std::string& sql) const;
+  sqlite3* db_ = nullptr;
+  StudyFile study_;
+  std::vector<std::string> metric_columns_, timing_columns_;
+};
+
+/// Unions shard databases into `out` (a new file): every input must have the same identity,
+/// and a case present in two inputs must have identical rows. Returns the number of rows.
+std::int64_t merge_study_databases(const std::vector<std::filesystem::path>& inputs,
+                                   const std::filesystem::path& out);
+
+/// The `results` table as stored: column names and typed values, ordered by case_index, variant.
+struct ResultTable {
+  StudyIdentity identity;
+  std::vector<std::string> columns;
+  std::vector<std::vector<SqlValue>> rows;
+  /// Index of `column`, or -1.
+  int column(const std::string& name) const;
+};
+/// Reads a study database; InvalidInputError when `path` is not one.
+ResultTable read_results(const std::filesystem::path& path);
+
+/// Every row of `results` ordered by case_id, variant, as text (for tests and `study show`).
+std::vector<std::vector<std::string>> dump_results(const std::filesystem::path& path);
+
+}  // namespace wifislam::study

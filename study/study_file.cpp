@@ -1,0 +1,332 @@
+#include "study/study_file.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "core/atomic_file.hpp"
+#include "core/did_you_mean.hpp"
+#include "core/error.hpp"
+#include "core/yaml_document.hpp"
+#include "sim/scene/scene_keys.hpp"
+#include "slam/frontend/front_end_registry.hpp"
+#include "slam/slam_options.hpp"
+
+namespace wifislam::study {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string> kTopLevelKeys = {"version", "name", "description", "scene", "level",
+                                                "set",     "axes", "cases",       "slam"};
+const std::vector<std::string> kSlamKeys = {"frontend", "fps", "max_frames", "settings"};
+
+// Ids number cases in five digits, so they sort in study order only below 100 000; and the
+// product is held in memory, which a few dozen two-valued axes (2^40 cases) would exhaust.
+constexpr std::size_t kMaxStudyCases = 100000;
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  std::string where(const YAML::Node& n) const {
+    const YAML::Mark m = n.Mark();
+    return m.line < 0 ? file_ : fmt::format("{}:{}:{}", file_, m.line + 1, m.column + 1);
+  }
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& key,
+                         const std::string& message) const {
+    throw ParseError(where(n), key, message);
+  }
+  void only_keys(const YAML::Node& map, const std::vector<std::string>& known,
+                 const std::string& prefix) const {
+    for (const auto& kv : map) {
+      const std::string key = kv.first.Scalar();
+      if (std::find(known.begin(), known.end(), key) == known.end()) {
+        fail(kv.first, prefix + key, "unknown key" + did_you_mean(key, known));
+      }
+    }
+  }
+  std::string scalar(const YAML::Node& n, const std::string& key) const {
+    if (!n.IsScalar()) fail(n, key, "expected a single value");
+    return n.Scalar();
+  }
+
+ private:
+  std::string file_;
+};
+
+bool is_front_end(const std::string& name) {
+  const std::vector<std::string> names = slam::front_end_names();
+  return std::find(names.begin(), names.end(), name) != names.end();
+}
+
+std::vector<std::string> slam_option_keys() {
+  slam::SlamOptions options;
+  std::vector<std::string> keys;
+  for (const slam::OptionField& f : slam::option_fields(options)) keys.push_back("slam." + f.key);
+  return keys;
+}
+
+AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::string& key) {
+  if (key == "frontend") return AxisKind::kFrontend;
+  if (key.rfind("slam.", 0) == 0) {
+    const auto keys = slam_option_keys();
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
+      r.fail(key_node, "axes." + key, "unknown SLAM option" + did_you_mean(key, keys));
+    }
+    return AxisKind::kSlamOption;
+  }
+  if (!is_scene_key_path(key)) {
+    std::vector<std::string> known = scene_key_paths();
+    for (const std::string& k : slam_option_keys()) known.push_back(k);
+    known.push_back("frontend");
+    r.fail(key_node, "axes." + key,
+           "not a scene key, a SLAM option (slam.<option>) or 'frontend'" +
+               did_you_mean(generic_key_path(key), known));
+  }
+  return AxisKind::kSceneKey;
+}
+
+std::string case_label(const std::vector<StudyAxis>& axes, const std::vector<std::string>& values) {
+  std::string label;
+  for (std::size_t a = 0; a < axes.size(); ++a) {
+    label += (a ? ";" : "") + axes[a].key + "=" + values[a];
+  }
+  return label;
+}
+
+StudyCase make_case(const std::vector<StudyAxis>& axes, std::vector<std::string> values,
+                    std::size_t index) {
+  StudyCase c;
+  c.id = fmt::format("{:05d}-{}", index, sha256_hex(case_label(axes, values)).substr(0, 12));
+  c.values = std::move(values);
+  c.index = index;
+  return c;
+}
+
+}  // namespace
+
+const char* to_string(StudyLevel level) { return level == StudyLevel::kRadio ? "radio" : "slam"; }
+
+std::string column_name(const std::string& axis_key) {
+  std::string out;
+  for (char c : axis_key) {
+    out += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
+
+StudyFile load_study_file(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(fmt::format("{}: cannot open the study file", path.string()));
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  return load_study_yaml(buffer.str(), path);
+}
+
+StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
+  const std::string file = path.string();
+  const YAML::Node root = parse_yaml_document(text, file);
+  const Reader r(file);
+  if (!root.IsMap()) throw ParseError(file, "", "a study file is a mapping of keys (see studies/)");
+  r.only_keys(root, kTopLevelKeys, "");
+  for (const char* key : {"version", "name", "scene", "axes"}) {
+    if (!root[key]) throw ParseError(file, key, fmt::format("missing key '{}'", key));
+  }
+  if (r.scalar(root["version"], "version") != "1") {
+    r.fail(root["version"], "version", "unsupported study version; this build reads version 1");
+  }
+
+  StudyFile study;
+  study.path = path;
+  study.file_hash = sha256_hex(text);
+  study.name = r.scalar(root["name"], "name");
+  if (study.name.empty() || study.name.find_first_of("\n\r") != std::string::npos) {
+    r.fail(root["name"], "name", "expected a one-line name");
+  }
+  if (root["description"]) study.description = r.scalar(root["description"], "description");
+  const std::string scene = r.scalar(root["scene"], "scene");
+  study.scene_path = fs::path(scene).is_absolute() ? fs::path(scene) : path.parent_path() / scene;
+  if (root["level"]) {
+    const std::string level = r.scalar(root["level"], "level");
+    if (level == "radio") {
+      study.level = StudyLevel::kRadio;
+    } else if (level == "slam") {
+      study.level = StudyLevel::kSlam;
+    } else {
+      r.fail(root["level"], "level", "expected 'radio' or 'slam', got '" + level + "'");
+    }
+  }
+
+  if (const YAML::Node set = root["set"]) {
+    if (!set.IsMap()) r.fail(set, "set", "expected a mapping of scene keys to values");
+    for (const auto& kv : set) {
+      const std::string key = kv.first.Scalar();
+      if (!is_scene_key_path(key)) {
+        r.fail(kv.first, "set." + key,
+               "not a scene key" + did_you_mean(generic_key_path(key), scene_key_paths()));
+      }
+      if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
+        r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");
+      }
+      YAML::Emitter out;
+      out << YAML::Flow << kv.second;
+      study.scene_set.emplace_back(key, out.c_str());
+    }
+  }
+
+  const YAML::Node axes = root["axes"];
+  if (!axes.IsMap() || axes.size() == 0) {
+    r.fail(axes, "axes", "expected a mapping of axis keys to lists of values");
+  }
+  for (const auto& kv : axes) {
+    StudyAxis axis;
+    axis.key = kv.first.Scalar();
+    axis.where = r.where(kv.first);
+    axis.kind = axis_kind(r, kv.first, axis.key);
+    const YAML::Node values = kv.second;
+    const std::string key_path = "axes." + axis.key;
+    if (values.IsScalar()) {
+      axis.values.push_back(values.Scalar());
+    } else if (values.IsSequence() && values.size() > 0) {
+      for (const YAML::Node& v : values) axis.values.push_back(r.scalar(v, key_path));
+    } else {
+      r.fail(values, key_path, "expected a value or a non-empty list of values");
+    }
+    std::set<std::string> seen;
+    for (const std::string& v : axis.values) {
+      if (!seen.insert(v).second) r.fail(values, key_path, "value '" + v + "' is listed twice");
+    }
+    if (axis.kind == AxisKind::kFrontend) {
+      for (const std::string& v : axis.values) {
+        if (!is_front_end(v)) {
+          r.fail(values, key_path,
+                 fmt::format("unknown front end '{}' (known: {})", v, slam::front_end_name_list()));
+        }
+      }
+    }
+    study.axes.push_back(std::move(axis));
+  }
+  // Distinct column names: "a.b" and "a_b" would share one.
+  std::set<std::string> columns;
+  for (const StudyAxis& a : study.axes) {
+    if (!columns.insert(column_name(a.key)).second) {
+      throw ParseError(a.where, "axes." + a.key, "two axes share the column " + column_name(a.key));
+    }
+  }
+
+  std::size_t product_size = 1;
+  for (const StudyAxis& axis : study.axes) {
+    product_size *= axis.values.size();  // at most kMaxStudyCases times a list's length
+    if (product_size > kMaxStudyCases) {
+      r.fail(axes, "axes",
+             fmt::format("the axes up to '{}' make more than {} cases (case ids number them "
+                         "in five digits); split the study",
+                         axis.key, kMaxStudyCases));
+    }
+  }
+  // The full product in axis order (the last axis varies fastest).
+  std::vector<std::vector<std::string>> product = {{}};
+  for (const StudyAxis& axis : study.axes) {
+    std::vector<std::vector<std::string>> next;
+    for (const auto& partial : product) {
+      for (const std::string& v : axis.values) {
+        auto extended = partial;
+        extended.push_back(v);
+        next.push_back(std::move(extended));
+      }
+    }
+    product = std::move(next);
+  }
+  if (const YAML::Node listed = root["cases"]) {
+    if (!listed.IsSequence() || listed.size() == 0) {
+      r.fail(listed, "cases", "expected a list of cases, each a mapping of every axis to a value");
+    }
+    std::set<std::size_t> chosen;
+    for (std::size_t i = 0; i < listed.size(); ++i) {
+      const YAML::Node c = listed[i];
+      const std::string key_path = fmt::format("cases[{}]", i);
+      if (!c.IsMap()) r.fail(c, key_path, "expected a mapping of every axis to a value");
+      std::vector<std::string> axis_keys;
+      for (const StudyAxis& axis : study.axes) axis_keys.push_back(axis.key);
+      r.only_keys(c, axis_keys, key_path + ".");
+      // The case's index in the product, from its values' places (searching the product for
+      // each listed case took listed x product comparisons).
+      std::size_t index = 0;
+      for (const StudyAxis& axis : study.axes) {
+        if (!c[axis.key]) r.fail(c, key_path, "missing axis '" + axis.key + "'");
+        const std::string v = r.scalar(c[axis.key], key_path + "." + axis.key);
+        const auto at = std::find(axis.values.begin(), axis.values.end(), v);
+        if (at == axis.values.end()) {
+          r.fail(c[axis.key], key_path + "." + axis.key,
+                 fmt::format("'{}' is not one of the axis's values", v));
+        }
+        index = index * axis.values.size() + static_cast<std::size_t>(at - axis.values.begin());
+      }
+      if (!chosen.insert(index).second) r.fail(c, key_path, "this case is listed twice");
+    }
+    for (std::size_t index : chosen)
+      study.cases.push_back(make_case(study.axes, product[index], index));
+  } else {
+    for (std::size_t i = 0; i < product.size(); ++i)
+      study.cases.push_back(make_case(study.axes, product[i], i));
+  }
+
+  if (const YAML::Node s = root["slam"]) {
+    if (!s.IsMap()) r.fail(s, "slam", "expected a mapping (frontend, fps, max_frames, settings)");
+    r.only_keys(s, kSlamKeys, "slam.");
+    if (s["frontend"]) {
+      study.slam.frontend = r.scalar(s["frontend"], "slam.frontend");
+      if (!is_front_end(study.slam.frontend)) {
+        r.fail(s["frontend"], "slam.frontend",
+               fmt::format("unknown front end (known: {})", slam::front_end_name_list()));
+      }
+    }
+    if (s["fps"]) {
+      double fps = 0;
+      if (!YAML::convert<double>::decode(s["fps"], fps) || !(fps > 0 && fps <= 120)) {
+        r.fail(s["fps"], "slam.fps", "expected frames per second in (0, 120]");
+      }
+      study.slam.fps = fps;
+    }
+    if (s["max_frames"]) {
+      long long frames = 0;
+      if (!YAML::convert<long long>::decode(s["max_frames"], frames) || frames < -1) {
+        r.fail(s["max_frames"], "slam.max_frames", "expected a whole number >= -1 (-1: all)");
+      }
+      study.slam.max_frames = frames;
+    }
+    if (const YAML::Node settings = s["settings"]) {
+      if (!settings.IsMap()) r.fail(settings, "slam.settings", "expected a mapping of options");
+      for (const auto& kv : settings) {
+        const std::string key = kv.first.Scalar();
+        const std::string value = r.scalar(kv.second, "slam.settings." + key);
+        slam::SlamOptions probe;
+        try {
+          slam::set_option(probe, key, value);
+        } catch (const Error& e) {
+          r.fail(kv.first, "slam.settings." + key, e.what());
+        }
+        study.slam.settings.push_back(key + "=" + value);
+      }
+    }
+  }
+  return study;
+}
+
+std::vector<StudyCase> shard_cases(const StudyFile& study, int index, int count) {
+  std::vector<StudyCase> out;
+  for (const StudyCase& c : study.cases) {
+    if (static_cast<int>(c.index % static_cast<std::size_t>(count)) == index) out.push_back(c);
+  }
+  return out;
+}
+
+}  // namespace wifislam::study

@@ -1,0 +1,64 @@
+#pragma once
+// Runs a study's cases (all of them, or one shard's) into its SQLite database
+// (result_store.hpp), skipping cases the database already holds: a rerun after Ctrl-C or SIGKILL
+// continues where the first run stopped and ends with the same rows as an uninterrupted run.
+//
+// Per case: the base scene with the case's scene axes set (loaded and checked as a scene file),
+// the SLAM options with the case's slam.* and frontend axes set; then
+//  - level radio: radio_resolution.hpp, one row (variant "radio");
+//  - level slam: the comparison runner (comparison_study.hpp) on that one scene and seed, vanilla
+//    and Wi-Fi, two rows with what `compare` measures. Its dataset and run folders live in a
+//    scratch folder beside the database (<database>.work/<case id>) and are removed once the
+//    case's rows are written; the images are needed on disk while it runs, because the
+//    evaluation's true revisits (false negatives) come from depth-image view overlap.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "study/result_store.hpp"
+#include "study/study_file.hpp"
+#include "sim/scene/scene.hpp"
+#include "slam/slam_options.hpp"
+
+namespace wifislam::study {
+
+struct StudyRunOptions {
+  std::filesystem::path database;
+  int shard_index = 0, shard_count = 1;
+  /// Cases at a time (radio level) or SLAM runs at a time (slam level). Results do not depend on
+  /// it.
+  int jobs = 1;
+  std::function<void(const std::string&)> on_progress;
+};
+
+struct StudyRunSummary {
+  std::size_t cases = 0;    // in this shard
+  std::size_t skipped = 0;  // already in the database
+  std::size_t ran = 0;
+  double wall_s = 0.0;
+};
+
+/// The base scene with the case's scene axes applied. Throws ParseError naming the study file,
+/// the case and the axis when a value does not make a valid scene.
+Scene case_scene(const StudyFile& study, const StudyCase& c);
+/// The case's SLAM options: the study's slam.settings, then its slam.* and frontend axes.
+slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c);
+
+/// Checks every case's scene and options (no simulation), so a bad value fails before hours of
+/// work. Throws as case_scene.
+void check_cases(const StudyFile& study);
+
+/// Columns of the results and timing tables for a level.
+std::vector<std::string> metric_columns(StudyLevel level);
+std::vector<std::string> timing_columns(StudyLevel level);
+
+/// The rows of one case (no database involved).
+std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
+                                const std::filesystem::path& scratch_dir, int jobs);
+
+StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options);
+
+}  // namespace wifislam::study
