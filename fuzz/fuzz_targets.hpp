@@ -47,7 +47,7 @@ void run_dataset(const std::uint8_t* data, std::size_t size);
 /// and streamed, which must agree pose for pose and fail on the same inputs.
 void run_trajectory(const std::uint8_t* data, std::size_t size);
 
-/// A study file's text (eval/study/study_file.hpp), written as study.yaml into a scratch folder
+/// A study file's text (study/study_file.hpp), written as study.yaml into a scratch folder
 /// beside scene.yaml, a copy of fuzz/seed_dataset_scene.yaml, so `scene: scene.yaml` resolves.
 /// Loaded as `wifislam study` loads it; when it loads, the cases must be the axes' product (or a
 /// listed subset of it) with unique ids in study order that do not depend on the file's path,

@@ -15,7 +15,7 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "eval/eval_options.hpp"
-#include "eval/study/comparison_study.hpp"
+#include "study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 

@@ -1,4 +1,4 @@
-// `wifislam study ...`: studies over scene keys and SLAM options (eval/study/study_file.hpp),
+// `wifislam study ...`: studies over scene keys and SLAM options (study/study_file.hpp),
 // results in SQLite, resumable, sharded, and spread over a Slurm cluster.
 //
 //   study cases FILE                      list the cases (id and axis values)
@@ -24,12 +24,12 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "eval/study/greedy_placement.hpp"
-#include "eval/study/result_store.hpp"
-#include "eval/study/slurm_job.hpp"
-#include "eval/study/study_file.hpp"
-#include "eval/study/study_plot.hpp"
-#include "eval/study/study_runner.hpp"
+#include "study/greedy_placement.hpp"
+#include "study/result_store.hpp"
+#include "study/slurm_job.hpp"
+#include "study/study_file.hpp"
+#include "study/study_plot.hpp"
+#include "study/study_runner.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/slam_options.hpp"
 

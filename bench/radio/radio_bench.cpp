@@ -11,8 +11,8 @@
 #include <memory>
 
 #include "core/rng.hpp"
-#include "radio_model/propagation_model.hpp"
-#include "radio_model/radio_map.hpp"
+#include "sim/radio/propagation_model.hpp"
+#include "sim/radio/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
 #include "sim/world/world_types.hpp"

@@ -25,7 +25,7 @@
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
-#include "radio_model/radio_band.hpp"
+#include "sim/radio/radio_band.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/scene/scene_loader.hpp"

@@ -25,8 +25,8 @@
 #include <optional>
 
 #include "core/sensor_stream.hpp"
-#include "radio_model/propagation_model.hpp"
-#include "radio_model/wifi_scanner.hpp"
+#include "sim/radio/propagation_model.hpp"
+#include "sim/radio/wifi_scanner.hpp"
 #include "sim/generate/generate_options.hpp"
 #include "sim/render/color_sensor_model.hpp"
 #include "sim/render/depth_sensor_model.hpp"

@@ -1,7 +1,7 @@
 #include "sim/site/site.hpp"
 
-#include "radio_model/ap_placement.hpp"
-#include "radio_model/propagation_model.hpp"
+#include "sim/radio/ap_placement.hpp"
+#include "sim/radio/propagation_model.hpp"
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"

@@ -6,12 +6,12 @@
 //
 // Seeds, as datasets have always used them: the world, the motion and the radio model's
 // shadowing draw from `scene.seed`'s named streams; the access points from
-// `access_points.seed` when the scene sets it (radio_model/ap_placement.hpp).
+// `access_points.seed` when the scene sets it (sim/radio/ap_placement.hpp).
 
 #include <memory>
 #include <vector>
 
-#include "radio_model/access_point.hpp"
+#include "sim/radio/access_point.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace wifislam {

@@ -3,8 +3,8 @@
 #include <set>
 
 #include "core/error.hpp"
-#include "radio_model/access_point.hpp"
-#include "radio_model/ap_placement.hpp"
+#include "sim/radio/access_point.hpp"
+#include "sim/radio/ap_placement.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "tests/radio/test_plan.hpp"
 

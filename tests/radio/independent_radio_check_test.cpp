@@ -14,8 +14,8 @@
 #include <iostream>
 #include <vector>
 
-#include "radio_model/ap_placement.hpp"
-#include "radio_model/propagation_model.hpp"
+#include "sim/radio/ap_placement.hpp"
+#include "sim/radio/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 

@@ -1,4 +1,4 @@
-#include "radio_model/itu_p1238.hpp"
+#include "sim/radio/itu_p1238.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "radio_model/access_point.hpp"
-#include "radio_model/itu_p1238.hpp"
-#include "radio_model/propagation_model.hpp"
+#include "sim/radio/access_point.hpp"
+#include "sim/radio/itu_p1238.hpp"
+#include "sim/radio/propagation_model.hpp"
 #include "tests/radio/test_walls.hpp"
 
 namespace wifislam {

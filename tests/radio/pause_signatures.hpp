@@ -10,7 +10,7 @@
 #include <numeric>
 #include <vector>
 
-#include "radio_model/wifi_scanner.hpp"
+#include "sim/radio/wifi_scanner.hpp"
 #include "sim/world/world_types.hpp"
 
 namespace wifislam::test {

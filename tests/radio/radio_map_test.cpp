@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 #include "sim/world/plan_queries.hpp"
-#include "radio_model/radio_map.hpp"
+#include "sim/radio/radio_map.hpp"
 #include "tests/radio/test_plan.hpp"
 #include "tests/radio/test_walls.hpp"
 

@@ -1,4 +1,4 @@
-#include "radio_model/shadowing_field.hpp"
+#include "sim/radio/shadowing_field.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <complex>
 
-#include "radio_model/access_point.hpp"
-#include "radio_model/embree_wall_scene.hpp"
-#include "radio_model/propagation_model.hpp"
+#include "sim/radio/access_point.hpp"
+#include "sim/radio/embree_wall_scene.hpp"
+#include "sim/radio/propagation_model.hpp"
 #include "tests/radio/test_walls.hpp"
 
 namespace wifislam {

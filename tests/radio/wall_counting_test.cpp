@@ -6,9 +6,9 @@
 
 #include <vector>
 
-#include "radio_model/access_point.hpp"
-#include "radio_model/embree_wall_scene.hpp"
-#include "radio_model/propagation_model.hpp"
+#include "sim/radio/access_point.hpp"
+#include "sim/radio/embree_wall_scene.hpp"
+#include "sim/radio/propagation_model.hpp"
 #include "tests/radio/test_walls.hpp"
 
 namespace wifislam {

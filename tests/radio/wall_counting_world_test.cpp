@@ -7,7 +7,7 @@
 
 #include <set>
 
-#include "radio_model/embree_wall_scene.hpp"
+#include "sim/radio/embree_wall_scene.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 

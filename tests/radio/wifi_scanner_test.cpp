@@ -4,8 +4,8 @@
 #include <cmath>
 #include <map>
 
-#include "radio_model/propagation_model.hpp"
-#include "radio_model/wifi_scanner.hpp"
+#include "sim/radio/propagation_model.hpp"
+#include "sim/radio/wifi_scanner.hpp"
 #include "tests/radio/test_walls.hpp"
 
 namespace wifislam {

@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <iostream>
 
-#include "radio_model/ap_placement.hpp"
-#include "radio_model/propagation_model.hpp"
-#include "radio_model/radio_map.hpp"
-#include "radio_model/wifi_scanner.hpp"
+#include "sim/radio/ap_placement.hpp"
+#include "sim/radio/propagation_model.hpp"
+#include "sim/radio/radio_map.hpp"
+#include "sim/radio/wifi_scanner.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/radio/pause_signatures.hpp"

@@ -10,8 +10,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "radio_model/ap_placement.hpp"
-#include "radio_model/propagation_model.hpp"
+#include "sim/radio/ap_placement.hpp"
+#include "sim/radio/propagation_model.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_types.hpp"

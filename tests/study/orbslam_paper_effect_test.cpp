@@ -15,7 +15,7 @@
 
 #include <unistd.h>
 
-#include "eval/study/comparison_study.hpp"
+#include "study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
 
 namespace wifislam::study {

@@ -17,9 +17,9 @@
 #include <cstdlib>
 #include <thread>
 
-#include "eval/study/result_store.hpp"
-#include "eval/study/study_file.hpp"
-#include "eval/study/study_runner.hpp"
+#include "study/result_store.hpp"
+#include "study/study_file.hpp"
+#include "study/study_runner.hpp"
 #include "tests/cli/cli_run.hpp"
 
 namespace wifislam::study {

@@ -5,8 +5,8 @@
 #include <set>
 
 #include "core/error.hpp"
-#include "eval/study/study_file.hpp"
-#include "eval/study/study_runner.hpp"
+#include "study/study_file.hpp"
+#include "study/study_runner.hpp"
 
 namespace wifislam::study {
 namespace {

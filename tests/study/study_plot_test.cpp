@@ -4,7 +4,7 @@
 // writes loads as a scene's access points; the shipped study files load and every case checks.
 //
 // study place's placement error: (1 - share of pause pairs under 4 m similar) + share over 12 m
-// similar (eval/study/greedy_placement.hpp).
+// similar (study/greedy_placement.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,9 +12,9 @@
 #include <set>
 #include <sstream>
 
-#include "eval/study/result_store.hpp"
-#include "eval/study/study_file.hpp"
-#include "eval/study/study_runner.hpp"
+#include "study/result_store.hpp"
+#include "study/study_file.hpp"
+#include "study/study_runner.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "tests/cli/cli_run.hpp"
 

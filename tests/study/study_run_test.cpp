@@ -12,9 +12,9 @@
 
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "eval/study/result_store.hpp"
-#include "eval/study/study_file.hpp"
-#include "eval/study/study_runner.hpp"
+#include "study/result_store.hpp"
+#include "study/study_file.hpp"
+#include "study/study_runner.hpp"
 #include "tests/cli/cli_run.hpp"
 
 namespace wifislam::study {

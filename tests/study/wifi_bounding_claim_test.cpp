@@ -24,7 +24,7 @@
 
 #include "apps/demo_scene.hpp"
 #include "core/error.hpp"
-#include "eval/study/comparison_study.hpp"
+#include "study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
 
 namespace wifislam::study {
