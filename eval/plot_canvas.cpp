@@ -89,7 +89,7 @@ void draw_polyline(cairo_t* cr, const MetricCanvas& canvas,
 }
 
 namespace {
-void ring_path(cairo_t* cr, const MetricCanvas& canvas, const Polygon2& ring) {
+void ring_path(cairo_t* cr, const MetricCanvas& canvas, const sim::Polygon2& ring) {
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const Eigen::Vector2d q = canvas.px(ring[i]);
     i == 0 ? cairo_move_to(cr, q.x(), q.y()) : cairo_line_to(cr, q.x(), q.y());
@@ -97,20 +97,20 @@ void ring_path(cairo_t* cr, const MetricCanvas& canvas, const Polygon2& ring) {
   cairo_close_path(cr);
 }
 void fill_regions(cairo_t* cr, const MetricCanvas& canvas,
-                  const std::vector<PolygonWithHoles2>& regions, const Colour& c) {
+                  const std::vector<sim::PolygonWithHoles2>& regions, const Colour& c) {
   cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-  for (const PolygonWithHoles2& r : regions) {
+  for (const sim::PolygonWithHoles2& r : regions) {
     ring_path(cr, canvas, r.outer);
-    for (const Polygon2& h : r.holes) ring_path(cr, canvas, h);
+    for (const sim::Polygon2& h : r.holes) ring_path(cr, canvas, h);
     set_colour(cr, c);
     cairo_fill(cr);
   }
 }
 }  // namespace
 
-void draw_plan_backdrop(cairo_t* cr, const MetricCanvas& canvas, const FloorPlan& plan) {
+void draw_plan_backdrop(cairo_t* cr, const MetricCanvas& canvas, const sim::FloorPlan& plan) {
   fill_regions(cr, canvas, plan.free_space, {0.96, 0.95, 0.92});
-  for (const Room& r : plan.rooms) {
+  for (const sim::Room& r : plan.rooms) {
     ring_path(cr, canvas, r.polygon_m);
     set_colour(cr, {0.92, 0.93, 0.95});
     cairo_fill(cr);

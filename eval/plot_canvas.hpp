@@ -53,7 +53,7 @@ void draw_text(cairo_t* cr, double x, double y, const std::string& text, double 
 void draw_polyline(cairo_t* cr, const MetricCanvas& canvas,
                    const std::vector<Eigen::Vector2d>& points_m, double width_px);
 /// Free space, rooms and wall solids of the plan.
-void draw_plan_backdrop(cairo_t* cr, const MetricCanvas& canvas, const FloorPlan& plan);
+void draw_plan_backdrop(cairo_t* cr, const MetricCanvas& canvas, const sim::FloorPlan& plan);
 /// A scale bar under the plan.
 void draw_scale_bar(cairo_t* cr, const MetricCanvas& canvas);
 

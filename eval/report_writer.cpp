@@ -285,12 +285,12 @@ void write_evaluation(const fs::path& out_dir, const RunEvaluation& ev, const fs
                       const fs::path& dataset_dir, bool plots) {
   (void)run_dir;  // everything the plots need from the run is in `ev` already
   std::vector<std::string> notes;
-  std::optional<World> world;
+  std::optional<sim::World> world;
   if (plots) {
     const fs::path scene = dataset_dir / dataset::kScene;
     if (fs::exists(scene)) {
       try {
-        world = generate_world(load_scene_file(scene.string()));
+        world = sim::generate_world(sim::load_scene_file(scene.string()));
       } catch (const Error& e) {
         notes.push_back(std::string("plots drawn without floor plan: ") + e.what());
       }
@@ -301,7 +301,7 @@ void write_evaluation(const fs::path& out_dir, const RunEvaluation& ev, const fs
   AtomicDirectory out(out_dir, /*overwrite=*/true);
   const fs::path& dir = out.staging_path();
   if (plots) {
-    const World* w = world ? &*world : nullptr;
+    const sim::World* w = world ? &*world : nullptr;
     for (const char* ext : {".png", ".svg"}) {
       plot_trajectory(dir / (std::string("trajectory") + ext), ev, w);
       plot_error_along_path(dir / (std::string("ate_along_path") + ext), ev);

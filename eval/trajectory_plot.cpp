@@ -25,7 +25,7 @@ Colour verdict_colour(LoopClosureVerdict v) {
 }
 }  // namespace
 
-MetricCanvas plan_canvas(const RunEvaluation& ev, const World* world) {
+MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::World* world) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
   auto include = [&](const Eigen::Vector2d& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); };
   if (world) include(world->plan.bounds_min_m), include(world->plan.bounds_max_m);
@@ -39,7 +39,7 @@ MetricCanvas plan_canvas(const RunEvaluation& ev, const World* world) {
 }
 
 void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
-                     const World* world) {
+                     const sim::World* world) {
   const MetricCanvas canvas = plan_canvas(ev, world);
   render_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
     if (world) draw_plan_backdrop(cr, canvas, world->plan);

@@ -6,7 +6,7 @@
 namespace wifislam::eval {
 
 void plot_wifi_clusters(const std::filesystem::path& path, const RunEvaluation& ev,
-                        const World* world) {
+                        const sim::World* world) {
   const MetricCanvas canvas = plan_canvas(ev, world);
   render_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
     if (world) draw_plan_backdrop(cr, canvas, world->plan);

@@ -180,13 +180,13 @@ SweepAxis parse_sweep(const std::string& text) {
   return axis;
 }
 
-ComparisonResult run_comparison(const std::vector<Scene>& scenes, const ComparisonOptions& options,
+ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes, const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir) {
   if (scenes.empty()) throw InvalidInputError("compare: no scene given");
   if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
   if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
   std::map<std::string, int> names;
-  for (const Scene& scene : scenes) {
+  for (const sim::Scene& scene : scenes) {
     if (++names[scene.name] > 1) {
       throw InvalidInputError("compare: scene name '" + scene.name + "' given twice");
     }
@@ -212,17 +212,17 @@ ComparisonResult run_comparison(const std::vector<Scene>& scenes, const Comparis
     std::size_t case_index = 0;
   };
   std::vector<Job> jobs;
-  for (const Scene& scene : scenes) {
+  for (const sim::Scene& scene : scenes) {
     result.scenes.push_back(scene.name);
     for (int k = 0; k < options.seeds; ++k) {
       const std::uint64_t seed = scene.seed + static_cast<std::uint64_t>(k);
       const std::string tag = fmt::format("{}-seed{}", scene.name, seed);
       const std::filesystem::path dataset = std::filesystem::path("datasets") / tag;
-      GenerateOptions generate;
+      sim::GenerateOptions generate;
       generate.seed = seed;
       generate.fps = options.fps;
       generate.max_frames = options.max_frames;
-      const GenerateSummary g = generate_dataset(scene, out_dir / dataset, generate);
+      const sim::GenerateSummary g = sim::generate_dataset(scene, out_dir / dataset, generate);
       progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s)", dataset.string(),
                            g.frames, g.wifi_scans, g.total_s));
       for (std::size_t s = 0; s < settings.size(); ++s) {

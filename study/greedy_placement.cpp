@@ -61,7 +61,7 @@ bool places_better(const RadioResolution& a, const RadioResolution& b) {
   return coarseness(a) < coarseness(b);
 }
 
-PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& options) {
+PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions& options) {
   const auto progress = [&](const std::string& line) {
     if (options.on_progress) options.on_progress(line);
   };
@@ -79,9 +79,9 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
   }
   std::vector<Eigen::Vector2d> spots;
   {
-    const Site site(scene);
+    const sim::Site site(scene);
     result.scene_access_points = static_cast<int>(site.access_points().size());
-    spots = access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
+    spots = sim::radio::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
     result.plan = site.world().plan;
   }
   if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
@@ -97,11 +97,11 @@ PlacementResult greedy_placement(const Scene& scene, const PlacementOptions& opt
   }
 
   // One simulation with an access point at every candidate.
-  Scene all = scene;
-  all.access_points.placement = ApPlacement::kExplicit;
+  sim::Scene all = scene;
+  all.access_points.placement = sim::ApPlacement::kExplicit;
   all.access_points.explicit_list.clear();
   for (const Eigen::Vector2d& s : spots) {
-    AccessPointSpec spec;
+    sim::AccessPointSpec spec;
     spec.position_m = {s.x(), s.y(), scene.access_points.height_m};
     all.access_points.explicit_list.push_back(spec);
     result.candidates.push_back(spec.position_m);

@@ -12,14 +12,14 @@
 
 namespace wifislam::study {
 
-std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOptions& wifi,
+std::vector<PauseSample> simulate_pauses(const sim::Scene& scene, const slam::WifiOptions& wifi,
                                          std::vector<slam::AccessPointKey>* ap_keys) {
-  GenerateOptions options;
+  sim::GenerateOptions options;
   options.images = false;
-  GenerationPipeline pipeline(scene, options);
+  sim::GenerationPipeline pipeline(scene, options);
   if (ap_keys) {
     ap_keys->clear();
-    for (const AccessPoint& ap : pipeline.site().access_points())
+    for (const sim::radio::AccessPoint& ap : pipeline.site().access_points())
       ap_keys->push_back(ap.base_mac().value);
   }
   slam::PauseSignatureTracker tracker(wifi);
@@ -33,7 +33,7 @@ std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOpt
     const auto* scan = std::get_if<WifiScan>(&generated->event);
     if (!scan) continue;
     tracker.observe_scan(*scan);
-    const RobotState state = pipeline.motion().state_at(pipeline.route_time(scan->end_time));
+    const sim::RobotState state = pipeline.motion().state_at(pipeline.route_time(scan->end_time));
     if (tracker.pause_count() != pause) {
       pause = tracker.pause_count();
       out.push_back({state.position_m, *tracker.current()});

@@ -44,7 +44,7 @@ struct PauseSample {
 
 /// The route's pauses with their signatures, simulated in memory (no images). `ap_keys`, when
 /// given, receives each access point's signature key in the scene's AP order (ids 0..n-1).
-std::vector<PauseSample> simulate_pauses(const Scene& scene, const slam::WifiOptions& wifi,
+std::vector<PauseSample> simulate_pauses(const sim::Scene& scene, const slam::WifiOptions& wifi,
                                          std::vector<slam::AccessPointKey>* ap_keys = nullptr);
 
 struct RadioResolution {

@@ -82,13 +82,13 @@ AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::strin
     }
     return AxisKind::kSlamOption;
   }
-  if (!is_scene_key_path(key)) {
-    std::vector<std::string> known = scene_key_paths();
+  if (!sim::is_scene_key_path(key)) {
+    std::vector<std::string> known = sim::scene_key_paths();
     for (const std::string& k : slam_option_keys()) known.push_back(k);
     known.push_back("frontend");
     r.fail(key_node, "axes." + key,
            "not a scene key, a SLAM option (slam.<option>) or 'frontend'" +
-               did_you_mean(generic_key_path(key), known));
+               did_you_mean(sim::generic_key_path(key), known));
   }
   return AxisKind::kSceneKey;
 }
@@ -169,9 +169,9 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
     if (!set.IsMap()) r.fail(set, "set", "expected a mapping of scene keys to values");
     for (const auto& kv : set) {
       const std::string key = kv.first.Scalar();
-      if (!is_scene_key_path(key)) {
+      if (!sim::is_scene_key_path(key)) {
         r.fail(kv.first, "set." + key,
-               "not a scene key" + did_you_mean(generic_key_path(key), scene_key_paths()));
+               "not a scene key" + did_you_mean(sim::generic_key_path(key), sim::scene_key_paths()));
       }
       if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
         r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");

@@ -48,7 +48,7 @@ std::int64_t count(std::int64_t v) { return v; }
 
 }  // namespace
 
-Scene case_scene(const StudyFile& study, const StudyCase& c) {
+sim::Scene case_scene(const StudyFile& study, const StudyCase& c) {
   YAML::Node root;
   {
     const YAML::Node& base = base_scene_yaml(study);
@@ -60,14 +60,14 @@ Scene case_scene(const StudyFile& study, const StudyCase& c) {
   const std::string source = fmt::format("{} as case {} of {} ({})", study.scene_path.string(),
                                          c.id, study.path.string(), case_label(study, c));
   try {
-    for (const auto& [key, value] : study.scene_set) set_scene_key(root, key, YAML::Load(value));
+    for (const auto& [key, value] : study.scene_set) sim::set_scene_key(root, key, YAML::Load(value));
     for (std::size_t a = 0; a < study.axes.size(); ++a) {
       if (study.axes[a].kind != AxisKind::kSceneKey) continue;
-      set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
+      sim::set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
     }
     YAML::Emitter out;
     out << root;
-    return load_scene_yaml(out.c_str(), source);
+    return sim::load_scene_yaml(out.c_str(), source);
   } catch (const YAML::Exception& e) {
     throw ParseError(study.path.string(), "case " + c.id,
                      fmt::format("{}: {}", case_label(study, c), e.what()));
@@ -133,9 +133,9 @@ std::vector<std::string> timing_columns(StudyLevel level) {
 std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
                                 const fs::path& scratch_dir, int jobs) {
   const auto start = Clock::now();
-  const Scene scene = case_scene(study, c);
+  const sim::Scene scene = case_scene(study, c);
   const slam::SlamOptions slam_options = case_slam_options(study, c);
-  const std::string scene_hash = sha256_hex(resolved_scene_yaml(scene));
+  const std::string scene_hash = sha256_hex(sim::resolved_scene_yaml(scene));
   std::vector<ResultRow> rows;
   if (study.level == StudyLevel::kRadio) {
     const RadioResolution r =

@@ -41,13 +41,13 @@ struct CompareArgs {
 /// `--preset paper-rgbdslam`: the paper's RGBD-SLAM experiment ("RGBD SLAM performance", C Hall)
 /// on our c_hall twin: min_matches 50 and 70, 5 seeds, 3 fps (the robot's 30 fps make one run
 /// ten times longer; the route, pauses and scans are the same). Options given explicitly win.
-void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<wifislam::Scene>& scenes) {
+void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<wifislam::sim::Scene>& scenes) {
   using namespace wifislam;
   if (args.preset.empty()) return;
   if (args.preset != "paper-rgbdslam") {
     throw ParseError("--preset", args.preset, "unknown preset; known: paper-rgbdslam");
   }
-  if (scenes.empty()) scenes.push_back(load_scene_yaml(cli::kCHallSceneYaml, "<c_hall twin>"));
+  if (scenes.empty()) scenes.push_back(sim::load_scene_yaml(cli::kCHallSceneYaml, "<c_hall twin>"));
   if (args.sweeps.empty()) args.sweeps.push_back("min_matches=50,70");
   if (app.count("--seeds") == 0) args.seeds = 5;
   if (args.fps <= 0) args.fps = 3.0;
@@ -58,8 +58,8 @@ void run(CompareArgs args, const CLI::App& app) {
   OutputFolderRequest output{args.output, args.force, {}, {}};
   for (const std::string& path : args.scenes) output.inputs.emplace_back(path);
   const bool replace = check_output_folder(output);
-  std::vector<Scene> scenes;
-  for (const std::string& path : args.scenes) scenes.push_back(load_scene_file(path));
+  std::vector<sim::Scene> scenes;
+  for (const std::string& path : args.scenes) scenes.push_back(sim::load_scene_file(path));
   apply_preset(args, app, scenes);
   if (scenes.empty()) {
     throw ParseError("compare", "scenes", "give scene files, or --preset paper-rgbdslam");

@@ -29,30 +29,30 @@ struct DemoArgs {
   bool quiet = false;
 };
 
-void draw_scene_pictures(const wifislam::Scene& scene, const std::filesystem::path& dir) {
+void draw_scene_pictures(const wifislam::sim::Scene& scene, const std::filesystem::path& dir) {
   using namespace wifislam;
-  const Site site(scene);
-  PlanDrawingOptions plan_options;
+  const sim::Site site(scene);
+  sim::PlanDrawingOptions plan_options;
   plan_options.title = scene.name + " (seed " + std::to_string(scene.seed) + ")";
   for (const auto& ap : site.access_points()) plan_options.access_points_m.push_back(ap.position_m);
-  draw_floor_plan(site.world(), dir / "plan.png", plan_options);
+  sim::draw_floor_plan(site.world(), dir / "plan.png", plan_options);
   // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
   // and with the shadowing of the dataset's scans.
-  RadioMapOptions map_options;
+  sim::radio::RadioMapOptions map_options;
   map_options.receiver_height_m = site.receiver_height_m();
-  const RadioMap map = compute_radio_map(site.radio(), site.world().plan, map_options);
-  write_radio_map_png(map, site.world().plan, site.access_points(), dir / "radio_map.png",
+  const sim::radio::RadioMap map = sim::radio::compute_radio_map(site.radio(), site.world().plan, map_options);
+  sim::radio::write_radio_map_png(map, site.world().plan, site.access_points(), dir / "radio_map.png",
                       scene.sensors.wifi.sensitivity_dbm);
-  write_file_atomic(dir / "scene.yaml", resolved_scene_yaml(scene));
+  write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(scene));
 }
 
 void run_demo(const DemoArgs& args) {
   using namespace wifislam;
   const bool replace =
       check_output_folder({args.output_dir, args.force, kDefaultOutput, {args.scene_path}});
-  const Scene scene = args.scene_path.empty()
-                          ? load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
-                          : load_scene_file(args.scene_path);
+  const sim::Scene scene = args.scene_path.empty()
+                          ? sim::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
+                          : sim::load_scene_file(args.scene_path);
   AtomicDirectory out(args.output_dir, replace);
   draw_scene_pictures(scene, out.staging_path());
 

@@ -29,7 +29,7 @@ struct GenerateArgs {
 };
 
 // A one-line bar redrawn in place; only used when stderr is a terminal.
-void draw_progress(const wifislam::GenerateProgress& p) {
+void draw_progress(const wifislam::sim::GenerateProgress& p) {
   const int width = 30;
   const double f = p.frames_total > 0 ? static_cast<double>(p.frames_done) / p.frames_total : 1.0;
   const int filled = static_cast<int>(f * width);
@@ -43,8 +43,8 @@ void draw_progress(const wifislam::GenerateProgress& p) {
 void run_generate(const GenerateArgs& args) {
   using namespace wifislam;
   const bool replace = check_output_folder({args.output, args.force, {}, {args.scene_path}});
-  const Scene scene = load_scene_file(args.scene_path);
-  GenerateOptions options;
+  const sim::Scene scene = sim::load_scene_file(args.scene_path);
+  sim::GenerateOptions options;
   options.seed = args.seed;
   options.fps = args.fps;
   options.max_frames = args.max_frames;
@@ -53,7 +53,7 @@ void run_generate(const GenerateArgs& args) {
   options.overwrite = replace;
   if (cli::stderr_is_tty() && !args.quiet) {
     std::int64_t last_drawn = -1;
-    options.on_progress = [last_drawn](const GenerateProgress& p) mutable {
+    options.on_progress = [last_drawn](const sim::GenerateProgress& p) mutable {
       // Redraw at most ~200 times per run.
       const std::int64_t step = std::max<std::int64_t>(1, p.frames_total / 200);
       if (p.frames_done == p.frames_total || p.frames_done - last_drawn >= step) {
@@ -62,7 +62,7 @@ void run_generate(const GenerateArgs& args) {
       }
     };
   }
-  const GenerateSummary summary = generate_dataset(scene, args.output, options);
+  const sim::GenerateSummary summary = sim::generate_dataset(scene, args.output, options);
   if (!args.quiet) fmt::print("{}", summary.full_report());
 }
 

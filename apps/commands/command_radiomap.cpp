@@ -34,7 +34,7 @@ void run_radiomap(const RadiomapArgs& args) {
   using namespace wifislam;
   check_output_file(args.output, {args.scene_path});
   if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
-  const Scene scene = load_scene_file(args.scene_path);
+  const sim::Scene scene = sim::load_scene_file(args.scene_path);
   const double ceiling_m = scene.building.wall_height_m;
   if (args.height_m && !(*args.height_m > 0.0 && *args.height_m < ceiling_m)) {
     throw InvalidInputError(fmt::format(
@@ -42,23 +42,23 @@ void run_radiomap(const RadiomapArgs& args) {
         "building.wall_height_m)",
         *args.height_m, ceiling_m));
   }
-  const Site site(scene);
-  const PropagationModel& model = site.radio();
-  const World& world = site.world();
-  RadioMapOptions options;
+  const sim::Site site(scene);
+  const sim::radio::PropagationModel& model = site.radio();
+  const sim::World& world = site.world();
+  sim::radio::RadioMapOptions options;
   options.resolution_m = args.resolution_m;
   options.receiver_height_m = args.height_m.value_or(site.receiver_height_m());
   options.ap_id = args.strongest ? std::nullopt : args.ap_id;
-  options.band = args.band == "2.4" ? RadioMapBand::k2_4GHz
-                 : args.band == "5" ? RadioMapBand::k5GHz
-                                    : RadioMapBand::kBest;
-  const RadioMap map = compute_radio_map(model, world.plan, options);
-  const double floor_dbm = WifiScannerOptions::from_scene(scene.sensors.wifi).sensitivity_dbm;
-  write_radio_map_png(map, world.plan, model.access_points(), args.output, floor_dbm);
+  options.band = args.band == "2.4" ? sim::radio::RadioMapBand::k2_4GHz
+                 : args.band == "5" ? sim::radio::RadioMapBand::k5GHz
+                                    : sim::radio::RadioMapBand::kBest;
+  const sim::radio::RadioMap map = sim::radio::compute_radio_map(model, world.plan, options);
+  const double floor_dbm = sim::radio::WifiScannerOptions::from_scene(scene.sensors.wifi).sensitivity_dbm;
+  sim::radio::write_radio_map_png(map, world.plan, model.access_points(), args.output, floor_dbm);
   fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
              map.rows, map.resolution_m, model.access_points().size());
   if (!args.csv.empty()) {
-    write_radio_map_csv(map, args.csv);
+    sim::radio::write_radio_map_csv(map, args.csv);
     fmt::print("wrote {}\n", args.csv);
   }
 }

@@ -76,8 +76,8 @@ std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohman
   if (!std::filesystem::is_regular_file(input)) {
     throw IoError(input.string() + ": neither a dataset folder nor a scene file");
   }
-  const Scene scene = load_scene_file(input.string());
-  GenerateOptions options;
+  const sim::Scene scene = sim::load_scene_file(input.string());
+  sim::GenerateOptions options;
   if (args.scene_seed) options.seed = *args.scene_seed;
   if (args.fps > 0) options.fps = args.fps;
   options.max_frames = args.max_frames;
@@ -87,7 +87,7 @@ std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohman
                    {"scene_seed", options.seed.value_or(scene.seed)},
                    {"fps", options.fps.value_or(scene.sensors.camera.fps)},
                    {"max_frames", args.max_frames}};
-  return std::make_unique<GeneratorStream>(scene, options);
+  return std::make_unique<sim::GeneratorStream>(scene, options);
 }
 
 void run(const SlamArgs& args) {

@@ -200,7 +200,7 @@ std::string optional_m(const std::optional<double>& v) {
 }
 
 void place_command(const PlaceArgs& args) {
-  const Scene scene = load_scene_file(args.scene);
+  const sim::Scene scene = sim::load_scene_file(args.scene);
   slam::SlamOptions slam_options;
   for (const std::string& s : args.settings) slam::set_option_assignment(slam_options, s);
   slam::validate(slam_options);

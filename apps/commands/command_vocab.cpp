@@ -46,10 +46,10 @@ std::unique_ptr<SensorStream> open_input(const TrainArgs& args, const fs::path& 
   if (!fs::is_regular_file(input)) {
     throw IoError(input.string() + ": neither a scene file nor a dataset folder");
   }
-  GenerateOptions options;
+  sim::GenerateOptions options;
   options.fps = args.fps;
   every = 1;
-  return std::make_unique<GeneratorStream>(load_scene_file(input.string()), options);
+  return std::make_unique<sim::GeneratorStream>(sim::load_scene_file(input.string()), options);
 }
 
 void train(const TrainArgs& args) {

@@ -23,29 +23,29 @@ struct WorldArgs {
 void run_world(const WorldArgs& args) {
   using namespace wifislam;
   if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
-  const Scene scene = load_scene_file(args.scene_path);
+  const sim::Scene scene = sim::load_scene_file(args.scene_path);
   // The site as `generate` builds it: a route `world` accepts is one `generate` can drive, and
   // the access points are the ones the dataset's scans hear.
-  const Site site(scene);
-  const World& world = site.world();
-  const MotionProfile& motion = site.motion();
-  const std::vector<AccessPoint>& access_points = site.access_points();
+  const sim::Site site(scene);
+  const sim::World& world = site.world();
+  const sim::MotionProfile& motion = site.motion();
+  const std::vector<sim::radio::AccessPoint>& access_points = site.access_points();
   if (!args.plan_path.empty()) {
-    PlanDrawingOptions options;
+    sim::PlanDrawingOptions options;
     options.title = fmt::format("{} (seed {})", scene.name, scene.seed);
     for (const auto& ap : access_points) options.access_points_m.push_back(ap.position_m);
     std::filesystem::path png = args.plan_path;
-    draw_floor_plan(world, png, options);
+    sim::draw_floor_plan(world, png, options);
     fmt::print("wrote {}\n", png.string());
     if (args.svg && png.extension() != ".svg") {
       const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
       check_output_file(svg, {args.scene_path});
-      draw_floor_plan(world, svg, options);
+      sim::draw_floor_plan(world, svg, options);
       fmt::print("wrote {}\n", svg.string());
     }
   }
   fmt::print("scene: {}\n{}route time: {:.1f} s ({} pauses)\naccess points: {}\n", scene.name,
-             summarize_world(world).to_text(), motion.end_time().seconds(), motion.pauses().size(),
+             sim::summarize_world(world).to_text(), motion.end_time().seconds(), motion.pauses().size(),
              access_points.size());
 }
 

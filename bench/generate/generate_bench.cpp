@@ -48,22 +48,22 @@ fs::path bench_folder() {
   return fs::path(dir ? dir : fs::temp_directory_path().string()) / "wifislam_generate_bench";
 }
 
-const Scene& c_hall() {
-  static const Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+const sim::Scene& c_hall() {
+  static const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   return scene;
 }
 
 void BM_Generate(benchmark::State& state) {
   const std::int64_t frames = state.range(0);
   const bool images = state.range(1) != 0;
-  GenerateOptions options;
+  sim::GenerateOptions options;
   options.max_frames = frames;
   options.images = images;
   options.overwrite = true;
-  GenerateSummary summary;
+  sim::GenerateSummary summary;
   for (auto _ : state) {
     reset_peak_memory();
-    summary = generate_dataset(c_hall(), bench_folder(), options);
+    summary = sim::generate_dataset(c_hall(), bench_folder(), options);
     state.SetIterationTime(summary.total_s);
   }
   const double peak_mb = peak_memory_mb();
@@ -82,11 +82,11 @@ void BM_Generate(benchmark::State& state) {
   state.counters["threads"] = summary.threads;
   if (images && summary.frames > 0) {
     // Baseline: the renderer alone on the first 200 frame poses.
-    GenerateOptions bare_options = options;
+    sim::GenerateOptions bare_options = options;
     bare_options.max_frames = std::min<std::int64_t>(frames, 200);
-    GenerationPipeline pipeline(c_hall(), bare_options);
-    RgbdRenderer& renderer = *pipeline.renderer();
-    RenderedView view;
+    sim::GenerationPipeline pipeline(c_hall(), bare_options);
+    sim::RgbdRenderer& renderer = *pipeline.renderer();
+    sim::RenderedView view;
     std::int64_t n = 0;
     const auto t0 = std::chrono::steady_clock::now();
     for (std::int64_t k = 0; k < pipeline.schedule().frame_count(); ++k, ++n) {

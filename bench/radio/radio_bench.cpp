@@ -22,7 +22,7 @@ namespace {
 using namespace wifislam;
 
 struct JHall {
-  std::unique_ptr<Site> site;
+  std::unique_ptr<sim::Site> site;
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;  // 30 m each
 };
 
@@ -31,7 +31,7 @@ const JHall& j_hall() {
     auto* h = new JHall;
     // WIFISLAM_BENCH_SCENE picks another scene file (e.g. to compare halls).
     const char* other = std::getenv("WIFISLAM_BENCH_SCENE");
-    h->site = std::make_unique<Site>(load_scene_file(
+    h->site = std::make_unique<sim::Site>(sim::load_scene_file(
         other ? std::string(other) : std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml"));
     Rng rng = Rng::stream(1, "bench/segments");
     const auto& lo = h->site->world().plan.bounds_min_m;
@@ -52,8 +52,8 @@ const JHall& j_hall() {
 // Both measured in one loop so machine noise hits both alike; the ratio is the figure to keep.
 void BM_WallCrossingVsBareEmbree(benchmark::State& state) {
   const JHall& h = j_hall();
-  const EmbreeWallScene& walls = h.site->radio().wall_scene();
-  std::vector<WallCrossing> out;
+  const sim::radio::EmbreeWallScene& walls = h.site->radio().wall_scene();
+  std::vector<sim::radio::WallCrossing> out;
   double crossing_s = 0, bare_s = 0;
   std::size_t queries = 0, walls_total = 0;
   for (auto _ : state) {
@@ -81,13 +81,13 @@ BENCHMARK(BM_WallCrossingVsBareEmbree)->Unit(benchmark::kMillisecond);
 
 void BM_RadioMapJHallAllAps(benchmark::State& state) {
   const JHall& h = j_hall();
-  RadioMapOptions options;
+  sim::radio::RadioMapOptions options;
   options.resolution_m = 0.25;
   options.threads = static_cast<int>(state.range(0));
   options.prune = state.range(1) != 0;
   std::size_t cells = 0;
   for (auto _ : state) {
-    const RadioMap map = compute_radio_map(h.site->radio(), h.site->world().plan, options);
+    const sim::radio::RadioMap map = sim::radio::compute_radio_map(h.site->radio(), h.site->world().plan, options);
     cells = 0;
     for (float v : map.rssi_dbm) cells += std::isfinite(v);
     benchmark::DoNotOptimize(map.rssi_dbm.data());

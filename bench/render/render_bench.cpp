@@ -44,8 +44,8 @@ namespace {
 // The workload: a shipped scene's generated world (Arg 0) or the hand-built corridor of the
 // tests (Arg 1), seen from poses along the route.
 struct Workload {
-  Mesh mesh;
-  std::vector<CeilingLight> lights;
+  sim::Mesh mesh;
+  std::vector<sim::CeilingLight> lights;
   std::uint64_t seed = 3;
   std::vector<Pose> poses;
 };
@@ -53,8 +53,8 @@ struct Workload {
 const Workload& workload(int which) {
   static const Workload scene_workload = [] {
     Workload w;
-    const Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
-    const World world = generate_world(scene);
+    const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
+    const sim::World world = sim::generate_world(scene);
     w.mesh = world.mesh;
     w.lights = world.plan.lights;
     w.seed = scene.seed;
@@ -107,17 +107,17 @@ class BareRenderer {
  public:
   explicit BareRenderer(const Workload& work) : k_(CameraIntrinsics::kinect_v1()) {
     context_.make_current();
-    const ProceduralTextures generator(work.seed, AppearanceThemes{});
-    std::map<TextureKey, TextureImage> images;
-    for (const Triangle& t : work.mesh.triangles) {
-      if (!images.contains(texture_key_of(t)))
-        images.emplace(texture_key_of(t), generator.make(texture_key_of(t)));
+    const sim::ProceduralTextures generator(work.seed, sim::AppearanceThemes{});
+    std::map<sim::TextureKey, sim::TextureImage> images;
+    for (const sim::Triangle& t : work.mesh.triangles) {
+      if (!images.contains(sim::texture_key_of(t)))
+        images.emplace(sim::texture_key_of(t), generator.make(sim::texture_key_of(t)));
     }
     for (const auto& [key, image] : images)
-      textures_.emplace(key, std::make_unique<GlTexture>(image));
-    mesh_ = std::make_unique<GlMesh>(batch_mesh(
-        work.mesh, [&](const TextureKey& key) -> const TextureImage& { return images.at(key); }));
-    program_ = std::make_unique<GlProgram>(kBareVertex, kBareFragment);
+      textures_.emplace(key, std::make_unique<sim::GlTexture>(image));
+    mesh_ = std::make_unique<sim::GlMesh>(sim::batch_mesh(
+        work.mesh, [&](const sim::TextureKey& key) -> const sim::TextureImage& { return images.at(key); }));
+    program_ = std::make_unique<sim::GlProgram>(kBareVertex, kBareFragment);
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glGenRenderbuffers(2, targets_);
@@ -143,12 +143,12 @@ class BareRenderer {
 
   void frame(const Pose& camera_to_world) {
     context_.make_current();
-    const Eigen::Matrix4f world_to_clip = RgbdRenderer::projection_matrix(k_, 0.05, 40.0) *
+    const Eigen::Matrix4f world_to_clip = sim::RgbdRenderer::projection_matrix(k_, 0.05, 40.0) *
                                           camera_to_world.inverse().matrix().cast<float>();
     glUniformMatrix4fv(world_to_clip_location_, 1, GL_FALSE, world_to_clip.data());
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     mesh_->bind();
-    for (const MeshBatch& batch : mesh_->batches()) {
+    for (const sim::MeshBatch& batch : mesh_->batches()) {
       textures_.at(batch.key)->bind();
       mesh_->draw(batch);
     }
@@ -160,10 +160,10 @@ class BareRenderer {
 
  private:
   CameraIntrinsics k_;
-  OsmesaContext context_;
-  std::map<TextureKey, std::unique_ptr<GlTexture>> textures_;
-  std::unique_ptr<GlMesh> mesh_;
-  std::unique_ptr<GlProgram> program_;
+  sim::OsmesaContext context_;
+  std::map<sim::TextureKey, std::unique_ptr<sim::GlTexture>> textures_;
+  std::unique_ptr<sim::GlMesh> mesh_;
+  std::unique_ptr<sim::GlProgram> program_;
   unsigned framebuffer_ = 0, targets_[2] = {0, 0};
   GLint world_to_clip_location_ = -1;
   std::vector<unsigned char> color_;
@@ -181,13 +181,13 @@ void BM_HarnessVsBare(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work = workload(static_cast<int>(state.range(0)));
   BareRenderer bare(work);
-  RenderOptions options;
+  sim::RenderOptions options;
   if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
     options.max_lights = std::atoi(lights);
-  RgbdRenderer renderer(k, options);
-  renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
-  const DepthSensorModel sensor(DepthSensorSpec{}, k, work.seed);
-  RenderedView view;
+  sim::RgbdRenderer renderer(k, options);
+  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
+  const sim::DepthSensorModel sensor(sim::DepthSensorSpec{}, k, work.seed);
+  sim::RenderedView view;
   cv::Mat measured;
   std::vector<double> bare_ms, render_ms, sensor_ms, frame_ms;
   std::int64_t frame = 0;
@@ -221,12 +221,12 @@ void BM_HarnessVsBare(benchmark::State& state) {
 void BM_SensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work = workload(0);
-  RgbdRenderer renderer(k);
-  renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
-  DepthSensorSpec spec;
+  sim::RgbdRenderer renderer(k);
+  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
+  sim::DepthSensorSpec spec;
   spec.lateral_noise = state.range(0) == 1;
-  const DepthSensorModel sensor(spec, k, work.seed);
-  const RenderedView view = renderer.render(work.poses[5]);
+  const sim::DepthSensorModel sensor(spec, k, work.seed);
+  const sim::RenderedView view = renderer.render(work.poses[5]);
   cv::Mat measured;
   std::int64_t frame = 0;
   for (auto _ : state) {
@@ -240,13 +240,13 @@ void BM_SensorModelOnly(benchmark::State& state) {
 void BM_ColorSensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work = workload(0);
-  RgbdRenderer renderer(k);
-  renderer.set_world(work.mesh, work.lights, work.seed, AppearanceThemes{});
-  ColorSensorSpec spec;
+  sim::RgbdRenderer renderer(k);
+  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
+  sim::ColorSensorSpec spec;
   spec.noise = (state.range(0) & 1) != 0;
   spec.auto_exposure = (state.range(0) & 2) != 0;
-  ColorSensorModel sensor(spec, 30.0, work.seed);
-  const RenderedView view = renderer.render(work.poses[5]);
+  sim::ColorSensorModel sensor(spec, 30.0, work.seed);
+  const sim::RenderedView view = renderer.render(work.poses[5]);
   cv::Mat measured;
   std::int64_t frame = 0;
   for (auto _ : state) {

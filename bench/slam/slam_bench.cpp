@@ -40,14 +40,14 @@ void BM_RgbdslamVersusBareOrb(benchmark::State& state) {
   for (std::string item; std::getline(settings, item, ',');) {
     if (!item.empty()) slam::set_option_assignment(options, item);
   }
-  const Scene scene =
-      load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + scene_name + ".yaml");
+  const sim::Scene scene =
+      sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + scene_name + ".yaml");
 
   for (auto _ : state) {
-    GenerateOptions generate;
+    sim::GenerateOptions generate;
     generate.fps = fps;
     generate.max_frames = max_frames;
-    GeneratorStream stream(scene, generate);
+    sim::GeneratorStream stream(scene, generate);
     slam::SlamSystem system(options, {stream.intrinsics(), stream.camera_in_base(),
                                       stream.has_wifi(), stream.has_odometry()});
     const cv::Ptr<cv::ORB> orb = cv::ORB::create(

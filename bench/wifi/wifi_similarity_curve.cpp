@@ -31,11 +31,11 @@ struct PauseSample {
   WifiSignature signature;
 };
 
-std::vector<PauseSample> pause_samples(const Scene& scene, const std::filesystem::path& tmp) {
-  GenerateOptions options;
+std::vector<PauseSample> pause_samples(const sim::Scene& scene, const std::filesystem::path& tmp) {
+  sim::GenerateOptions options;
   options.images = false;
   options.overwrite = true;
-  generate_dataset(scene, tmp, options);
+  sim::generate_dataset(scene, tmp, options);
   const std::vector<WifiScan> scans = read_wifi_csv((tmp / "wifi.csv").string());
   const Trajectory truth = read_tum_trajectory((tmp / "groundtruth.txt").string());
   std::vector<PauseSample> out;
@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
   const WifiOptions defaults;
   const auto tmp = std::filesystem::temp_directory_path() / "wifislam_similarity_curve";
   for (const auto& path : scenes) {
-    const Scene scene = load_scene_file(path.string());
+    const sim::Scene scene = sim::load_scene_file(path.string());
     const std::vector<PauseSample> pauses = pause_samples(scene, tmp);
     std::map<int, std::vector<double>> bins;
     int near = 0, near_similar = 0, far = 0, far_similar = 0;

@@ -30,7 +30,7 @@
 #include "sim/render/depth_png.hpp"
 #include "sim/scene/scene_loader.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace fs = std::filesystem;
 
@@ -184,10 +184,10 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
   return c;
 }
 
-std::string access_points_csv(const PropagationModel& radio) {
+std::string access_points_csv(const radio::PropagationModel& radio) {
   std::string out = "ap_id,x_m,y_m,z_m,tx_power_dbm,bssid,ssid,band,channel,frequency_khz\n";
-  for (const AccessPoint& ap : radio.access_points()) {
-    for (const Bssid& b : ap.bssids) {
+  for (const radio::AccessPoint& ap : radio.access_points()) {
+    for (const radio::Bssid& b : ap.bssids) {
       out += fmt::format(
           "{},{},{},{},{},{},{},{},{},{}\n", ap.id, format_double_exact(ap.position_m.x()),
           format_double_exact(ap.position_m.y()), format_double_exact(ap.position_m.z()),
@@ -234,7 +234,7 @@ GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& outpu
   summary.time_origin_s = scene.sensors.time_origin_s;
   summary.images = options.images;
   summary.access_points = static_cast<std::int64_t>(pipeline.radio().access_points().size());
-  for (const AccessPoint& ap : pipeline.radio().access_points())
+  for (const radio::AccessPoint& ap : pipeline.radio().access_points())
     summary.bssids += static_cast<std::int64_t>(ap.bssids.size());
   int threads = clamp_thread_count(options.threads);
 
@@ -454,4 +454,4 @@ std::string GenerateSummary::full_report() const {
   return r;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -13,7 +13,7 @@
 #include "sim/generate/generate_options.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// Generates the dataset of `scene` (with the options' overrides) into `output`. Throws
 /// InvalidInputError when `output` exists and `options.overwrite` is false, or when it may not be
@@ -22,4 +22,4 @@ namespace wifislam {
 GenerateSummary generate_dataset(const Scene& scene, const std::filesystem::path& output,
                                  const GenerateOptions& options = {});
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

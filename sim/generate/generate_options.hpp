@@ -11,7 +11,7 @@
 #include "core/timestamp.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct GenerateProgress {
   std::int64_t frames_done = 0;
@@ -84,4 +84,4 @@ struct GenerateSummary {
   std::string full_report() const;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -2,7 +2,7 @@
 
 #include <limits>
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -27,8 +27,8 @@ GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions
   // The validated origin is before 2100, so whole seconds to nanoseconds cannot overflow.
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
-  scanner_ = std::make_unique<WifiScanner>(
-      site_->radio(), WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
+  scanner_ = std::make_unique<radio::WifiScanner>(
+      site_->radio(), radio::WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
 
   SensorScheduleOptions schedule;
   schedule.fps = scene_.sensors.camera.fps;
@@ -114,4 +114,4 @@ WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
   return scan;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -39,7 +39,7 @@
 #include "sim/site/site.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// An event and, for frames, the ground truth that goes with it (never given to SLAM).
 struct GeneratedEvent {
@@ -67,8 +67,8 @@ class GenerationPipeline {
   const MotionProfile& motion() const { return site_->motion(); }
   const SensorSchedule& schedule() const { return *schedule_; }
   const CameraMount& mount() const { return mount_; }
-  const PropagationModel& radio() const { return site_->radio(); }
-  const WifiScanner& scanner() const { return *scanner_; }
+  const radio::PropagationModel& radio() const { return site_->radio(); }
+  const radio::WifiScanner& scanner() const { return *scanner_; }
   bool images() const { return renderer_ != nullptr; }
   /// The renderer (null without images); benchmarks time it alone as a baseline.
   RgbdRenderer* renderer() { return renderer_.get(); }
@@ -94,7 +94,7 @@ class GenerationPipeline {
   std::unique_ptr<RgbdRenderer> renderer_;
   std::unique_ptr<DepthSensorModel> depth_model_;
   std::unique_ptr<ColorSensorModel> color_model_;
-  std::unique_ptr<WifiScanner> scanner_;
+  std::unique_ptr<radio::WifiScanner> scanner_;
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;
   std::int64_t next_frame_ = 0, next_odometry_ = 0;
@@ -106,4 +106,4 @@ class GenerationPipeline {
 /// The scene with the options' seed and fps overrides applied (what scene.yaml records).
 Scene resolve_scene(const Scene& scene, const GenerateOptions& options);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -5,7 +5,7 @@
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/render/depth_png.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 GeneratorStream::GeneratorStream(const Scene& scene, const GenerateOptions& options)
     : pipeline_(std::make_unique<GenerationPipeline>(resolve_scene(scene, options), options)) {}
@@ -40,4 +40,4 @@ std::string GeneratorStream::description() const {
                      pipeline_->schedule().scans().size());
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -10,7 +10,7 @@
 #include "sim/generate/generate_options.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class GenerationPipeline;
 
@@ -40,4 +40,4 @@ class GeneratorStream final : public SensorStream {
   Pose last_ground_truth_ = Pose::Identity();
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

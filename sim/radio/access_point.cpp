@@ -4,7 +4,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 const std::vector<std::string>& ssid_names() {
   static const std::vector<std::string> names = {"corp",  "corp-guest", "eduroam", "iot",
@@ -53,4 +53,4 @@ AccessPoint make_access_point(int id, const Eigen::Vector3d& position_m, double 
   return ap;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

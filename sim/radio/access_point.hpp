@@ -16,7 +16,7 @@
 #include "core/rng.hpp"
 #include "sim/radio/radio_band.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 struct Bssid {
   MacAddress mac;
@@ -64,4 +64,4 @@ AccessPoint make_access_point(int id, const Eigen::Vector3d& position_m, double 
 /// The SSID names used, in order (the same networks are offered on both bands).
 const std::vector<std::string>& ssid_names();
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -14,7 +14,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 
@@ -277,4 +277,4 @@ std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan&
   return aps;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

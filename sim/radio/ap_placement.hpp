@@ -20,7 +20,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 /// AP positions (x, y, z). Throws InvalidInputError when the plan has no room for them or the
 /// placement's parameters are unusable (e.g. colinear with line_from_m == line_to_m).
@@ -40,4 +40,4 @@ std::vector<AccessPoint> make_access_points(const Scene& scene, const FloorPlan&
 /// The seed the access points derive from: `access_points.seed`, else the scene seed.
 std::uint64_t access_point_seed(const Scene& scene);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -11,7 +11,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 
@@ -287,4 +287,4 @@ double EmbreeWallScene::first_hit_m(const Eigen::Vector3d& origin, const Eigen::
   return rayhit.ray.tfar;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -39,7 +39,7 @@
 
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 /// One continuous stretch of wall material on the segment.
 struct WallCrossing {
@@ -90,4 +90,4 @@ class EmbreeWallScene {
   std::vector<Eigen::Vector3f> normals_;  // per primitive, toward free space
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

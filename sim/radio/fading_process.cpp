@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 constexpr double kSpeedOfLightMps = 299'792'458.0;
@@ -34,4 +34,4 @@ double FadingProcess::at_db(double time_s, const Eigen::Vector2d& position_m) co
   return amplitude_db_ * sum;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

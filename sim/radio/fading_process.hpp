@@ -26,7 +26,7 @@
 
 #include "core/rng.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 class FadingProcess {
  public:
@@ -51,4 +51,4 @@ class FadingProcess {
   std::vector<PlaneWave> waves_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 ItuP1238Coefficients itu_p1238_coefficients(RadioEnvironment environment, RadioBand band) {
   // ITU-R P.1238-7, Table 2 (N) and Table 4 (shadow fading sigma, dB).
@@ -63,4 +63,4 @@ double itu_p1238_path_loss_db(double frequency_mhz, double distance_m, double di
          28.0;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -11,7 +11,7 @@
 #include "sim/radio/radio_band.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 struct ItuP1238Coefficients {
   double distance_coefficient = 30.0;  // N
@@ -57,4 +57,4 @@ double itu_p1238_fit_loss_db(const ItuSiteGeneralFit& fit, double frequency_mhz,
 /// bracket it.
 inline constexpr double kDefaultDistanceCoefficient = 22.0;
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

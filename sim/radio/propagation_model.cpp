@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 PropagationOptions PropagationOptions::from_scene(const Scene& scene) {
   const RadioSpec& radio = scene.radio;
@@ -156,4 +156,4 @@ std::optional<std::size_t> PropagationModel::index_of(int ap_id) const {
   return std::nullopt;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -35,7 +35,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 struct PropagationOptions {
   PathLossModel model = PathLossModel::kItuWalls;
@@ -129,4 +129,4 @@ class PropagationModel {
   double floor_loss_db_ = 0.0;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

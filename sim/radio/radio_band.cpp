@@ -2,7 +2,7 @@
 
 #include <array>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 constexpr std::array<int, 3> kAp24 = {1, 6, 11};
@@ -35,4 +35,4 @@ std::span<const int> scan_channels(RadioBand band) {
   return kAp5;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

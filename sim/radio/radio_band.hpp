@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 enum class RadioBand { k2_4GHz, k5GHz };
 const char* to_string(RadioBand band);
@@ -25,4 +25,4 @@ std::span<const int> ap_channels(RadioBand band);
 /// above. 20 channels; at the default 0.1 s dwell a sweep takes 2 s, the scan interval.
 std::span<const int> scan_channels(RadioBand band);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

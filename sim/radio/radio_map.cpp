@@ -16,7 +16,7 @@
 #include "core/error.hpp"
 #include "core/thread_start.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 
@@ -325,4 +325,4 @@ void write_radio_map_csv(const RadioMap& map, const std::filesystem::path& path)
   write_file_atomic(path, text);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

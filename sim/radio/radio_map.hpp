@@ -16,7 +16,7 @@
 #include "sim/radio/propagation_model.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 enum class RadioMapBand { kBest, k2_4GHz, k5GHz };
 
@@ -68,4 +68,4 @@ void write_radio_map_png(const RadioMap& map, const FloorPlan& plan,
 /// CSV "x_m,y_m,rssi_dbm,ap_id" (cell centres of the computed cells), written atomically.
 void write_radio_map_csv(const RadioMap& map, const std::filesystem::path& path);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -7,7 +7,7 @@
 
 #include <fmt/format.h>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 
@@ -76,4 +76,4 @@ std::shared_ptr<const ShadowingField> shared_shadowing_field(const Eigen::Vector
   return field;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

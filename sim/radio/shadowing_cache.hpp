@@ -16,7 +16,7 @@
 
 #include "sim/radio/shadowing_field.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 inline constexpr std::size_t kShadowingCacheBytes = std::size_t{256} << 20;
 
@@ -27,4 +27,4 @@ std::shared_ptr<const ShadowingField> shared_shadowing_field(const Eigen::Vector
                                                              double decorrelation_m,
                                                              std::uint64_t seed, int ap_id);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -5,7 +5,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 
@@ -129,4 +129,4 @@ double ShadowingField::at_db(const Eigen::Vector2d& p_m) const {
   return sigma_db_ * blend / std::sqrt(variance);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

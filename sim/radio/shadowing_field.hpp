@@ -38,7 +38,7 @@
 
 #include "core/rng.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 class ShadowingField;
 
@@ -101,4 +101,4 @@ class ShadowingField {
   std::vector<float> values_;  // row-major, unit variance (scaled by sigma in at_db)
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

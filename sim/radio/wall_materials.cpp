@@ -4,7 +4,7 @@
 #include <complex>
 #include <numbers>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 namespace {
 constexpr double kSpeedOfLightMps = 299'792'458.0;
@@ -73,4 +73,4 @@ WallLossTable::WallLossTable(double wall_thickness_m) {
       3.4, 1800.0, kP2040Plasterboard, 2.0 * kPlasterboardSheetM);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

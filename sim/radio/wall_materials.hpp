@@ -36,7 +36,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 inline constexpr int kWallMaterialCount = 5;
 inline int material_index(WallMaterial m) { return static_cast<int>(m); }
@@ -85,4 +85,4 @@ struct WallLossTable {
   }
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

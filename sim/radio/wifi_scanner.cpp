@@ -9,7 +9,7 @@
 
 #include "core/rng.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 WifiScannerOptions WifiScannerOptions::from_scene(const WifiScannerSpec& spec) {
   WifiScannerOptions o;
@@ -127,4 +127,4 @@ WifiScan WifiScanner::scan(Timestamp start,
   return out;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -45,7 +45,7 @@
 #include "sim/radio/propagation_model.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 
 struct WifiScannerOptions {
   double sensitivity_dbm = -92.0;    // typical 802.11 receiver floor for beacons at 1 Mb/s
@@ -82,4 +82,4 @@ class WifiScanner {
   std::vector<std::vector<double>> beacon_offsets_s_;  // [AP][BSSID]
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -11,7 +11,7 @@
 #include "core/rng.hpp"
 #include "sim/render/normal_deviates.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 ColorSensorModel::ColorSensorModel(const ColorSensorSpec& spec, double fps, std::uint64_t seed)
     : spec_(spec), seed_(seed) {
@@ -94,4 +94,4 @@ void ColorSensorModel::measure(const cv::Mat& rendered_bgr, std::int64_t frame_i
   }
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

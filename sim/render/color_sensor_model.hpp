@@ -32,7 +32,7 @@
 #include "sim/render/auto_exposure.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class ColorSensorModel {
  public:
@@ -58,4 +58,4 @@ class ColorSensorModel {
   std::int64_t next_frame_ = 0;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

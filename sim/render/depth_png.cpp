@@ -10,7 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 cv::Mat depth_to_png_units(const cv::Mat& depth_m) {
   CV_Assert(depth_m.type() == CV_32FC1);
@@ -93,4 +93,4 @@ void write_depth_false_color_png(const std::filesystem::path& path, const cv::Ma
   write_png(path, depth_false_color(depth_m, min_m, max_m));
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

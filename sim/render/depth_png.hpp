@@ -9,7 +9,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace wifislam {
+namespace wifislam::sim {
 
 inline constexpr double kDepthPngUnitsPerMetre = 5000.0;
 
@@ -35,4 +35,4 @@ cv::Mat depth_false_color(const cv::Mat& depth_m, double min_m, double max_m);
 void write_depth_false_color_png(const std::filesystem::path& path, const cv::Mat& depth_m,
                                  double min_m, double max_m);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -12,7 +12,7 @@
 #include "core/rng.hpp"
 #include "sim/render/normal_deviates.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 DepthSensorModel::DepthSensorModel(const DepthSensorSpec& spec, const CameraIntrinsics& intrinsics,
                                    std::uint64_t seed)
@@ -163,4 +163,4 @@ cv::Mat DepthSensorModel::measure(const RenderedView& view, std::int64_t frame_i
   return out;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -33,7 +33,7 @@
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class DepthSensorModel {
  public:
@@ -68,4 +68,4 @@ class DepthSensorModel {
   std::optional<LateralDepthNoise> lateral_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -17,7 +17,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -211,4 +211,4 @@ void GlMesh::draw(const MeshBatch& batch) const {
   glDrawArrays(GL_TRIANGLES, batch.first_vertex, batch.vertex_count);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -12,7 +12,7 @@
 #include "sim/render/procedural_textures.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct MeshVertex {
   float position_m[3];
@@ -63,4 +63,4 @@ class GlMesh {
   std::vector<MeshBatch> batches_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class GlProgram {
  public:
@@ -22,4 +22,4 @@ class GlProgram {
   unsigned id_ = 0;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -6,7 +6,7 @@
 
 #include <boost/math/special_functions/erf.hpp>
 
-namespace wifislam {
+namespace wifislam::sim {
 
 const NormalQuantileTable& normal_quantiles() {
   static const NormalQuantileTable table = [] {
@@ -40,4 +40,4 @@ void fill_normals(Rng& rng, float* out, int count) {
   }
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -12,7 +12,7 @@
 
 struct osmesa_context;
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class OsmesaContext {
  public:
@@ -36,4 +36,4 @@ class OsmesaContext {
   std::string gl_version_, gl_renderer_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

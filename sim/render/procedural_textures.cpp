@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -506,4 +506,4 @@ TextureImage ProceduralTextures::make(const TextureKey& key) const {
   }
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

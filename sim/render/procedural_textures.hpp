@@ -19,7 +19,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// Which texture a triangle uses.
 struct TextureKey {
@@ -61,4 +61,4 @@ class ProceduralTextures {
   AppearanceThemes themes_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

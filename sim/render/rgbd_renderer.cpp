@@ -17,7 +17,7 @@
 #include "sim/render/gl_texture.hpp"
 #include "sim/render/osmesa_context.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -334,4 +334,4 @@ RenderedView RgbdRenderer::render(const Pose& camera_to_world) {
   return view;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

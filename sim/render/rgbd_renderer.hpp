@@ -24,7 +24,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class OsmesaContext;
 class GlMesh;
@@ -103,4 +103,4 @@ class RgbdRenderer {
   } uniforms_{};
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

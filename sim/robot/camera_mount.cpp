@@ -2,7 +2,7 @@
 
 #include <numbers>
 
-namespace wifislam {
+namespace wifislam::sim {
 
 CameraMount::CameraMount(const CameraSpec& spec)
     : height_m_(spec.height_m), pitch_rad_(spec.pitch_deg * std::numbers::pi / 180.0) {}
@@ -16,4 +16,4 @@ Pose CameraMount::camera_to_world(const RobotState& state) const {
                                  height_m_, pitch_rad_);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

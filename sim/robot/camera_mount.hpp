@@ -6,7 +6,7 @@
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class CameraMount {
  public:
@@ -26,4 +26,4 @@ class CameraMount {
   double pitch_rad_ = 0.0;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

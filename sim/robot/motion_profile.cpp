@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -217,4 +217,4 @@ double MotionProfile::moving_time_s() const {
   return static_cast<double>(knot_ns_.back() - paused_ns) * 1e-9;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

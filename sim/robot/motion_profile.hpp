@@ -26,7 +26,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct RobotMotionOptions {
   double speed_mps = 0.5;           // cruise speed (TurtleBot 2 default driving speed)
@@ -96,4 +96,4 @@ class MotionProfile {
   std::vector<RobotPause> pauses_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

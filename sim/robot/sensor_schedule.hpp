@@ -17,7 +17,7 @@
 #include "core/timestamp.hpp"
 #include "sim/robot/motion_profile.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct SensorScheduleOptions {
   double fps = 30.0;                  // Kinect v1 rate; lower it to make shorter datasets
@@ -60,4 +60,4 @@ Timestamp tick_time(std::int64_t k, double rate_hz);
 /// Number of ticks k >= 0 with tick_time(k) <= end.
 std::int64_t tick_count(Timestamp end, double rate_hz);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

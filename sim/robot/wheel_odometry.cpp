@@ -3,7 +3,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace wifislam {
+namespace wifislam::sim {
 
 WheelOdometry::WheelOdometry(const OdometrySpec& spec, std::uint64_t seed)
     : spec_(spec), rng_(Rng::stream(seed, "odometry")) {}
@@ -33,4 +33,4 @@ OdometryReading WheelOdometry::measure(Timestamp t, const RobotState& truth) {
   return reading;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

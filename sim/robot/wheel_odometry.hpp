@@ -20,7 +20,7 @@
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 class WheelOdometry {
  public:
@@ -39,4 +39,4 @@ class WheelOdometry {
   double x_m_ = 0.0, y_m_ = 0.0, theta_rad_ = 0.0;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -2,7 +2,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 const char* to_string(WallMaterial material) {
   switch (material) {
@@ -105,4 +105,4 @@ void Scene::reject(const std::string& key_path, const std::string& message) cons
   throw ParseError(where(key_path), key_path, message);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -15,7 +15,7 @@
 #include "core/camera_intrinsics.hpp"
 #include "core/dataset_format.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// Physical wall materials. The radio model maps each to a per-band penetration loss.
 enum class WallMaterial { kPlasterboard, kBrick, kConcrete, kGlass, kWoodDoor };
@@ -272,4 +272,4 @@ struct Scene {
   const Corridor* corridor_between(const std::string& a, const std::string& b) const;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "sim/scene/scene_schema.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -163,4 +163,4 @@ void set_scene_key(YAML::Node root, const std::string& path, const YAML::Node& v
   set_at(root, steps_of(path), 0, value, path);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -17,7 +17,7 @@
 #include "core/yaml_document.hpp"
 #include "sim/scene/scene_schema.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -610,4 +610,4 @@ std::string resolved_scene_yaml(const Scene& scene) {
   return std::string(out.c_str()) + "\n";
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -10,7 +10,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// Loads a scene file. Throws IoError (cannot read) or ParseError (anything wrong inside).
 Scene load_scene_file(const std::string& path);
@@ -26,4 +26,4 @@ void validate_scene(const Scene& scene);
 /// datasets). Loading the output gives back an equal scene.
 std::string resolved_scene_yaml(const Scene& scene);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -21,7 +21,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::schema {
+namespace wifislam::sim::schema {
 
 /// Allowed range of a number; `open_low` excludes the lower bound (for "must be > 0").
 struct Limits {
@@ -295,4 +295,4 @@ void visit(V& v, Scene& s) {
   v.object("radio", s.radio);
 }
 
-}  // namespace wifislam::schema
+}  // namespace wifislam::sim::schema

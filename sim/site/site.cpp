@@ -6,15 +6,15 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 Site::Site(const Scene& scene) : scene_(scene) {
   validate_scene(scene_);
   world_ = std::make_unique<World>(generate_world(scene_));
   motion_ = std::make_unique<MotionProfile>(
       world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
-  radio_ = std::make_unique<PropagationModel>(*world_, make_access_points(scene_, world_->plan),
-                                              PropagationOptions::from_scene(scene_),
+  radio_ = std::make_unique<radio::PropagationModel>(*world_, radio::make_access_points(scene_, world_->plan),
+                                              radio::PropagationOptions::from_scene(scene_),
                                               scene_.seed);
 }
 
@@ -22,6 +22,6 @@ Site::~Site() = default;
 Site::Site(Site&&) noexcept = default;
 Site& Site::operator=(Site&&) noexcept = default;
 
-const std::vector<AccessPoint>& Site::access_points() const { return radio_->access_points(); }
+const std::vector<radio::AccessPoint>& Site::access_points() const { return radio_->access_points(); }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -14,11 +14,13 @@
 #include "sim/radio/access_point.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct World;
 class MotionProfile;
+namespace radio {
 class PropagationModel;
+}
 
 class Site {
  public:
@@ -32,8 +34,8 @@ class Site {
   const Scene& scene() const { return scene_; }
   const World& world() const { return *world_; }
   const MotionProfile& motion() const { return *motion_; }
-  const PropagationModel& radio() const { return *radio_; }
-  const std::vector<AccessPoint>& access_points() const;
+  const radio::PropagationModel& radio() const { return *radio_; }
+  const std::vector<radio::AccessPoint>& access_points() const;
   /// Height of the Wi-Fi receiver above the floor. It rides with the camera: datasets scan there,
   /// and radio maps default to it.
   double receiver_height_m() const { return scene_.sensors.camera.height_m; }
@@ -42,7 +44,7 @@ class Site {
   Scene scene_;
   std::unique_ptr<World> world_;
   std::unique_ptr<MotionProfile> motion_;
-  std::unique_ptr<PropagationModel> radio_;
+  std::unique_ptr<radio::PropagationModel> radio_;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

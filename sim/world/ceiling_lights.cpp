@@ -6,7 +6,7 @@
 #include "core/rng.hpp"
 #include "sim/world/plan_queries.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLayout& layout,
                                                const FloorPlan& plan) {
@@ -53,4 +53,4 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
   return lights;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -19,7 +19,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_faces.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -275,4 +275,4 @@ FloorPlan build_floor_plan(const Scene& scene) {
   return plan;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -4,7 +4,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// Builds the floor plan with exact polygon booleans (CGAL Polygon_set_2 over an exact kernel),
 /// converted to double at the end.
@@ -27,4 +27,4 @@ namespace wifislam {
 /// or when the scene's geometry is unusable (degenerate open-area polygon, door not fitting ...).
 FloorPlan build_floor_plan(const Scene& scene);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

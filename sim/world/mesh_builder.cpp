@@ -15,7 +15,7 @@
 
 #include "sim/world/poster_layout.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -359,4 +359,4 @@ Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
   return mesh;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -18,8 +18,8 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 Mesh build_mesh(const Scene& scene, const FloorPlan& plan);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -13,7 +13,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -319,4 +319,4 @@ void draw_floor_plan(const World& world, const std::filesystem::path& path,
   }
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -11,7 +11,7 @@
 
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct PlanDrawingOptions {
   std::string title;
@@ -26,4 +26,4 @@ struct PlanDrawingOptions {
 void draw_floor_plan(const World& world, const std::filesystem::path& path,
                      const PlanDrawingOptions& options = {});
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

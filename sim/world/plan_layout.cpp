@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 Polygon2 OrientedRect::corners() const {
   return {point(s0, l0), point(s1, l0), point(s1, l1), point(s0, l1)};
@@ -143,4 +143,4 @@ PlanLayout lay_out_scene(const Scene& scene) {
   return layout;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -11,7 +11,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// A rectangle in a corridor's own frame: points origin + s * along + l * left for s in
 /// [s0, s1] and l in [l0, l1]. `left` is `along` turned by +90 degrees.
@@ -58,4 +58,4 @@ struct PlanLayout {
 /// missing node or has zero length, or a room row whose door does not fit in its rooms.
 PlanLayout lay_out_scene(const Scene& scene);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -8,7 +8,7 @@
 #include "core/rng.hpp"
 #include "sim/world/plan_queries.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -97,4 +97,4 @@ std::vector<PosterPlacement> place_posters(const Scene& scene, const FloorPlan& 
   return posters;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

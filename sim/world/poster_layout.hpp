@@ -16,7 +16,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 struct PosterPlacement {
   int face_index = -1;                                 // into FloorPlan::wall_faces
@@ -33,4 +33,4 @@ struct PosterPlacement {
 
 std::vector<PosterPlacement> place_posters(const Scene& scene, const FloorPlan& plan);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -10,7 +10,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -151,4 +151,4 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
   return sampler.path;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

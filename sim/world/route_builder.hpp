@@ -4,7 +4,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// The route's node sequence as a polyline whose corners are rounded by circular arcs of
 /// `turn_radius_m` (smaller where the legs are too short for it; a full reversal at a dead end
@@ -19,4 +19,4 @@ namespace wifislam {
 /// face of the plan.
 RoutePath build_route(const Scene& scene, const FloorPlan& plan);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -10,7 +10,7 @@
 #include "core/rng.hpp"
 #include "sim/world/plan_queries.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 namespace {
 
@@ -303,4 +303,4 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
   plan.wall_count = next_id;
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

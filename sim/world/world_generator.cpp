@@ -9,7 +9,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/route_builder.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 World generate_world(const Scene& scene) {
   World world;
@@ -84,4 +84,4 @@ std::string WorldSummary::to_text() const {
       free_area_m2, walkable_area_m2, wall_length_m, triangles, rooms, doors, route_length_m);
 }
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

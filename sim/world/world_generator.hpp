@@ -7,7 +7,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 /// Builds the world of a validated scene. Deterministic: the same scene (seed included) gives a
 /// bit-identical world. Throws InvalidInputError for a scene that cannot be built (e.g. a route
@@ -29,4 +29,4 @@ struct WorldSummary {
 };
 WorldSummary summarize_world(const World& world);
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

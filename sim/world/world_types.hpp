@@ -11,7 +11,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 
 using Polygon2 = std::vector<Eigen::Vector2d>;  // simple polygon, counter-clockwise outer ring
 
@@ -119,4 +119,4 @@ struct World {
   std::uint64_t seed = 0;
 };
 
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -134,19 +134,19 @@ LadderRun build_ladder_run(const fs::path& root, bool depth) {
                 run.dataset_dir / "scene.yaml");
 
   if (depth) {
-    const Scene scene = load_scene_file((run.dataset_dir / "scene.yaml").string());
-    const World world = generate_world(scene);
-    RgbdRenderer renderer(calibration.intrinsics);
+    const sim::Scene scene = sim::load_scene_file((run.dataset_dir / "scene.yaml").string());
+    const sim::World world = sim::generate_world(scene);
+    sim::RgbdRenderer renderer(calibration.intrinsics);
     renderer.set_world(world, scene);
     std::ofstream list(run.dataset_dir / "depth.txt");
     list << "# depth maps of the keyframes\n";
-    RenderedView view;
+    sim::RenderedView view;
     for (std::size_t k = 0; k < run.keyframe_poses.size(); ++k) {
       renderer.render(run.keyframe_poses[k], view);
       cv::Mat depth_m = view.depth_m.clone();
       depth_m.setTo(0.0f, depth_m > kSensorMaxRangeM);
       const std::string name = "depth/" + run.keyframe_times[k].to_string(6) + ".png";
-      write_depth_png(run.dataset_dir / name, depth_m);
+      sim::write_depth_png(run.dataset_dir / name, depth_m);
       list << run.keyframe_times[k].to_string(6) << " " << name << "\n";
     }
   }

@@ -8,7 +8,7 @@
 #include "core/dataset_format.hpp"
 #include "tests/generate/test_scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
@@ -195,4 +195,4 @@ TEST_F(GenerateCli, ZeroAccessPointsGiveADatasetCheckAcceptsVanillaRunsAndWifiRe
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -9,7 +9,7 @@
 #include "sim/generate/generator_stream.hpp"
 #include "tests/generate/test_scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
@@ -67,4 +67,4 @@ TEST(GenerateConsistency, NoiseFreeDepthBackProjectsOntoTheWorldsWalls) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -18,7 +18,7 @@
 #include "sim/generate/generator_stream.hpp"
 #include "tests/generate/test_scene.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
@@ -311,4 +311,4 @@ TEST(GenerateDataset, EveryStampIsRouteTimePlusTheSceneTimeOrigin) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -36,7 +36,7 @@ route:
   pause: {spacing_m: [3.0, 4.0], duration_s: 6.0}
 )";
 
-inline Scene small_scene() { return load_scene_yaml(kSmallSceneYaml, "small_loop.yaml"); }
+inline sim::Scene small_scene() { return sim::load_scene_yaml(kSmallSceneYaml, "small_loop.yaml"); }
 
 inline std::filesystem::path fresh_folder(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -8,7 +8,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "tests/radio/test_plan.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 std::vector<AccessPoint> many_aps(std::uint64_t seed, int count, int ssids) {
@@ -129,4 +129,4 @@ TEST(ApPlacement, RandomGridColinearAndExplicit) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -19,7 +19,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 using V2 = Eigen::Vector2d;
@@ -196,4 +196,4 @@ TEST(IndependentRadioCheck, MeanRssiOnJHallAgreesWithA2DCalculationFromThePlan) 
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

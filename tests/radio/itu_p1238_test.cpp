@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 TEST(ItuP1238, PathLossMatchesHandComputedValues) {
@@ -76,4 +76,4 @@ TEST(RadioBand, ChannelFrequencies) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -9,7 +9,7 @@
 #include "sim/radio/propagation_model.hpp"
 #include "tests/radio/test_walls.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 TEST(ItuP1238Fit, OfficeRowsMatchHandComputedValues) {
@@ -134,4 +134,4 @@ TEST(PathLossModels, ShadowingSigmaIsTheModelsUnlessTheSceneSetsIt) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

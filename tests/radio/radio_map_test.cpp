@@ -14,7 +14,7 @@
 #include "tests/radio/test_plan.hpp"
 #include "tests/radio/test_walls.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 struct Fixture {
@@ -131,4 +131,4 @@ TEST(RadioMap, WritesAReadablePngAndACsvWithOneRowPerCell) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

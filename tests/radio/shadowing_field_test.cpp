@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 // Sample correlation of the field at lag `lag_m` over a grid of spots, pooled over fields drawn
@@ -109,4 +109,4 @@ TEST(ShadowingField, SitesTwentyKilometresAcrossStayWithinTheCellCap) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

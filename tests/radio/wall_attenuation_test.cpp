@@ -9,7 +9,7 @@
 #include "sim/radio/propagation_model.hpp"
 #include "tests/radio/test_walls.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 using test::add_two_face_wall_x;
@@ -185,4 +185,4 @@ TEST(Propagation, FiveGigahertzLosesMoreThanTwoPointFourAtEqualDistanceAndWalls)
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

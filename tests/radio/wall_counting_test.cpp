@@ -11,7 +11,7 @@
 #include "sim/radio/propagation_model.hpp"
 #include "tests/radio/test_walls.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 using V2 = Eigen::Vector2d;
@@ -190,4 +190,4 @@ TEST(WallCounting, ASegmentStartingInsideAWallCrossesIt) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

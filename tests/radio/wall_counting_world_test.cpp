@@ -11,7 +11,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThroughItsEdge) {
@@ -47,4 +47,4 @@ TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThrou
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -8,7 +8,7 @@
 #include "sim/radio/wifi_scanner.hpp"
 #include "tests/radio/test_walls.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 std::vector<AccessPoint> aps_along_x(int count, std::uint64_t seed) {
@@ -257,4 +257,4 @@ TEST(WifiScanner, PeopleDisturbanceLowersRssiOnAverage) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -15,7 +15,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/radio/pause_signatures.hpp"
 
-namespace wifislam {
+namespace wifislam::sim::radio {
 namespace {
 
 constexpr double kPauseSpacingM = 3.5;
@@ -81,4 +81,4 @@ TEST(WifiSimilarity, SimilarityFallsWithDistanceOnEveryShippedScene) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim::radio

@@ -14,7 +14,7 @@
 #include "sim/render/rgbd_renderer.hpp"
 #include "tests/render/test_meshes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 // RANSAC-consistent ORB matches between two images (Lowe ratio 0.8, fundamental matrix, 3 px).
@@ -63,4 +63,4 @@ TEST(AliasingKnob, SharedLookSegmentsMatchFarMoreThanUniqueOnes) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -12,7 +12,7 @@
 #include "core/error.hpp"
 #include "sim/render/color_sensor_model.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 constexpr int kWidth = 640, kHeight = 480;
@@ -162,4 +162,4 @@ TEST(ColorSensorModel, RejectsBadParameters) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

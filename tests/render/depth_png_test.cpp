@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "sim/render/depth_png.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
@@ -67,4 +67,4 @@ TEST(DepthPng, FalseColourIsBlackWithoutReadingAndDiffersNearToFar) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

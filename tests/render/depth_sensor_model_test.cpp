@@ -19,7 +19,7 @@
 #include "sim/render/rgbd_renderer.hpp"
 #include "tests/render/test_meshes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 DepthSensorSpec only(bool noise, bool quantisation, bool dropouts) {
@@ -403,4 +403,4 @@ TEST(DepthSensorModel, RejectsInconsistentParameters) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

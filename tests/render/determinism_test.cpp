@@ -12,7 +12,7 @@
 
 #include "tests/render/render_frame_tool.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
@@ -67,4 +67,4 @@ TEST(RenderDeterminism, SamePoseAndSeedGiveIdenticalPngsAcrossProcesses) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -16,7 +16,7 @@
 #include "sim/render/procedural_textures.hpp"
 #include "tests/render/test_meshes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 using TriangleCorners = std::array<float, 9>;
@@ -75,4 +75,4 @@ TEST(ChunkMesh, KeepsEveryTriangleOnceInTheChunkOfItsCentroid) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -6,7 +6,7 @@
 #include "core/error.hpp"
 #include "sim/render/procedural_textures.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 double mean_abs_difference(const cv::Mat& a, const cv::Mat& b) {
@@ -75,4 +75,4 @@ TEST(ProceduralTextures, EveryThemeBuildsAndUnknownThemesAreNamed) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -13,7 +13,7 @@
 #include "tests/render/embree_depth.hpp"
 #include "tests/render/test_meshes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 struct Agreement {
@@ -150,4 +150,4 @@ TEST(RenderGeometry, ColourShowsTexturedLitSurfaces) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -22,7 +22,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/render/embree_depth.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
@@ -126,4 +126,4 @@ TEST(SceneRender, RenderCommandRejectsAMalformedPose) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -9,7 +9,7 @@
 #include "sim/robot/camera_mount.hpp"
 #include "tests/robot/test_routes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 RobotMotionOptions default_options() {
@@ -214,4 +214,4 @@ TEST(MotionProfile, RejectsARouteWithoutLength) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

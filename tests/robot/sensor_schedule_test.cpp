@@ -4,7 +4,7 @@
 
 #include "tests/robot/test_routes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 RobotMotionOptions motion_options(bool scan_while_moving = false) {
@@ -106,4 +106,4 @@ TEST(SensorSchedule, TickCountMatchesTickTimes) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

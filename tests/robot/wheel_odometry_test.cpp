@@ -9,7 +9,7 @@
 #include "sim/robot/sensor_schedule.hpp"
 #include "tests/robot/test_routes.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 struct OdometrySample {
@@ -161,4 +161,4 @@ TEST(WheelOdometry, NoiseFreeOdometryFollowsTheTruth) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

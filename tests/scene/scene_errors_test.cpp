@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 const char* kValidBody = R"(version: 1
@@ -368,9 +368,9 @@ TEST(SceneErrors, TextOverTheSizeLimitIsRefusedWithTheLimit) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 // The path loss model's keys: an unknown model is a located error that lists the three; the fit
@@ -398,4 +398,4 @@ TEST(SceneErrors, RadioModelKeysAreCheckedAgainstTheModel) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -6,7 +6,7 @@
 
 #include "sim/scene/scene_loader.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 std::vector<std::string> shipped_scene_files() {
@@ -230,4 +230,4 @@ route: {nodes: [A, B]}
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

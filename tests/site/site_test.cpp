@@ -16,7 +16,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 // A small loop whose access points have their own placement seed, as the demo's radio map once
@@ -47,16 +47,16 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
   const GenerationPipeline pipeline(scene, options);
   ASSERT_EQ(site.access_points().size(), 5u);
   ASSERT_EQ(pipeline.radio().access_points().size(), 5u);
-  const PropagationModel seeded_by_ap_seed(site.world(), site.access_points(),
-                                           PropagationOptions::from_scene(scene),
-                                           access_point_seed(scene));
+  const radio::PropagationModel seeded_by_ap_seed(site.world(), site.access_points(),
+                                           radio::PropagationOptions::from_scene(scene),
+                                           radio::access_point_seed(scene));
   int differs_from_ap_seed = 0;
   for (std::size_t i = 0; i < site.access_points().size(); ++i) {
     EXPECT_EQ(site.access_points()[i].position_m, pipeline.radio().access_points()[i].position_m);
     for (const Eigen::Vector3d& p : {Eigen::Vector3d(1, 0.2, 0.7), Eigen::Vector3d(8.5, 3, 0.7),
                                     Eigen::Vector3d(4, 6.3, 0.7)}) {
-      const RadioLink a = site.radio().link(i, p);
-      const RadioLink b = pipeline.radio().link(i, p);
+      const radio::RadioLink a = site.radio().link(i, p);
+      const radio::RadioLink b = pipeline.radio().link(i, p);
       EXPECT_EQ(a.shadowing_normal, b.shadowing_normal);
       EXPECT_EQ(a.walls_per_material, b.walls_per_material);
       differs_from_ap_seed += a.shadowing_normal != seeded_by_ap_seed.link(i, p).shadowing_normal;
@@ -100,4 +100,4 @@ TEST(Site, RadioMapCommandDefaultsToTheCameraHeight) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -26,11 +26,11 @@
 namespace wifislam {
 namespace {
 
-std::unique_ptr<slam::SlamSystem> run_orbslam(const Scene& scene, bool wifi,
+std::unique_ptr<slam::SlamSystem> run_orbslam(const sim::Scene& scene, bool wifi,
                                               double wifi_similarity = 0.0) {
-  GenerateOptions generate;
+  sim::GenerateOptions generate;
   generate.fps = 2.0;
-  GeneratorStream stream(scene, generate);
+  sim::GeneratorStream stream(scene, generate);
   slam::SlamOptions options;
   options.frontend = "orbslam";
   options.wifi.enabled = wifi;
@@ -141,10 +141,10 @@ TEST(OrbslamRetrieval, TheBestScoringFirstLapFrameIsTheSamePlace) {
   std::string yaml = test::small_loop_scene_yaml();
   const std::string route = "nodes: [A, B, C, D, A, B]";
   yaml.replace(yaml.find(route), route.size(), "nodes: [A, B, C, D, A, B, C, D, A]");
-  const Scene scene = load_scene_yaml(yaml, "small_loop_two_laps");
-  GenerateOptions generate;
+  const sim::Scene scene = sim::load_scene_yaml(yaml, "small_loop_two_laps");
+  sim::GenerateOptions generate;
   generate.fps = 1.0;
-  GeneratorStream stream(scene, generate);
+  sim::GeneratorStream stream(scene, generate);
   slam::FeatureOptions features;
   const slam::OrbFeatureExtractor orb(features, stream.intrinsics());
   const auto vocabulary = slam::bow::load_vocabulary("");

@@ -32,7 +32,7 @@ radio: {environment: office}
 )";
 }
 
-Scene small_loop_scene() { return load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop"); }
+sim::Scene small_loop_scene() { return sim::load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop"); }
 
 std::string small_loop_with_wifi_scene_yaml() {
   std::string yaml = small_loop_scene_yaml();
@@ -41,8 +41,8 @@ std::string small_loop_with_wifi_scene_yaml() {
   return yaml;
 }
 
-Scene small_loop_with_wifi_scene() {
-  return load_scene_yaml(small_loop_with_wifi_scene_yaml(), "slam_small_loop_with_wifi");
+sim::Scene small_loop_with_wifi_scene() {
+  return sim::load_scene_yaml(small_loop_with_wifi_scene_yaml(), "slam_small_loop_with_wifi");
 }
 
 }  // namespace wifislam::test

@@ -22,9 +22,9 @@ namespace {
 class RenderedWorld : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scene_ = new Scene(test::small_loop_scene());
-    world_ = new World(generate_world(*scene_));
-    renderer_ = new RgbdRenderer(scene_->sensors.camera.intrinsics);
+    scene_ = new sim::Scene(test::small_loop_scene());
+    world_ = new sim::World(sim::generate_world(*scene_));
+    renderer_ = new sim::RgbdRenderer(scene_->sensors.camera.intrinsics);
     renderer_->set_world(*world_, *scene_);
   }
   static void TearDownTestSuite() {
@@ -35,7 +35,7 @@ class RenderedWorld : public ::testing::Test {
 
   /// Noise-free frame: the renderer's colour and ideal depth.
   static slam::FrameFeatures features_at(const Pose& camera_to_world, std::int64_t index) {
-    const RenderedView view = renderer_->render(camera_to_world);
+    const sim::RenderedView view = renderer_->render(camera_to_world);
     RgbdFrame frame;
     frame.index = index;
     frame.rgb = view.color_bgr;
@@ -50,14 +50,14 @@ class RenderedWorld : public ::testing::Test {
                                    scene_->sensors.camera.height_m);
   }
 
-  static Scene* scene_;
-  static World* world_;
-  static RgbdRenderer* renderer_;
+  static sim::Scene* scene_;
+  static sim::World* world_;
+  static sim::RgbdRenderer* renderer_;
 };
 
-Scene* RenderedWorld::scene_ = nullptr;
-World* RenderedWorld::world_ = nullptr;
-RgbdRenderer* RenderedWorld::renderer_ = nullptr;
+sim::Scene* RenderedWorld::scene_ = nullptr;
+sim::World* RenderedWorld::world_ = nullptr;
+sim::RgbdRenderer* RenderedWorld::renderer_ = nullptr;
 
 TEST_F(RenderedWorld, RecoversKnownRelativePoseToOneCentimetreAndHalfADegree) {
   // Along the south corridor, 0.3 m forward with a 6 degree turn and a small sideways step.

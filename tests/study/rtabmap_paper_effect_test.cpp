@@ -24,7 +24,7 @@ TEST(RtabmapPaperEffect, UnderTheTimeThresholdVanillaMissesTheRevisitAndWifiClos
                                     ("wifislam_rtabmap_effect_" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   std::filesystem::create_directories(out);
-  Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
+  sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   ASSERT_EQ(scene.route.nodes, (std::vector<std::string>{"E", "B", "C", "D", "A", "B", "E"}));
   scene.route.nodes.back() = "C";  // on into the east corridor again
   ComparisonOptions options;

@@ -120,8 +120,8 @@ TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
   // A wildcard over a list sets every element; a bad slam.* value is refused too.
   const StudyFile materials =
       load_study_yaml(study_yaml("  corridors[*].material: [concrete]\n"), "s.yaml");
-  const Scene scene = case_scene(materials, materials.cases[0]);
-  for (const Corridor& c : scene.corridors) EXPECT_EQ(c.material, WallMaterial::kConcrete);
+  const sim::Scene scene = case_scene(materials, materials.cases[0]);
+  for (const sim::Corridor& c : scene.corridors) EXPECT_EQ(c.material, sim::WallMaterial::kConcrete);
   const StudyFile bad_option = load_study_yaml(study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
   EXPECT_THROW(check_cases(bad_option), ParseError);
 }
@@ -135,7 +135,7 @@ TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
           axes,
       "s.yaml");
   ASSERT_EQ(s.cases.size(), 2u);
-  const Scene scene = case_scene(s, s.cases[1]);
+  const sim::Scene scene = case_scene(s, s.cases[1]);
   EXPECT_EQ(scene.access_points.line_from_m, Eigen::Vector2d(2, 0));
   EXPECT_EQ(scene.access_points.line_to_m, Eigen::Vector2d(18, 0));
   EXPECT_EQ(scene.access_points.count, 8);  // the axis wins over `set`

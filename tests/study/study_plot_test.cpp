@@ -188,7 +188,7 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
   ASSERT_NE(at, std::string::npos);
   std::string block = test::read_file(out / "access_points.yaml");
   scene.replace(at, own.size(), block);
-  const Scene loaded = load_scene_yaml(scene, "c_hall with the placed APs");
+  const sim::Scene loaded = sim::load_scene_yaml(scene, "c_hall with the placed APs");
   ASSERT_EQ(loaded.access_points.explicit_list.size(), static_cast<std::size_t>(budget));
   for (int i = 0; i < budget; ++i) {
     const auto& row = csv[static_cast<std::size_t>(i + 1)];

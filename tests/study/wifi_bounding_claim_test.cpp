@@ -49,7 +49,7 @@ TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorr
   options.seeds = 2;
   options.jobs = 2;
   options.plots = false;
-  Scene scene = load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>");
+  sim::Scene scene = sim::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>");
   scene.seed = 7;  // seeds 7 and 8 (the demo's)
   const ComparisonResult result = run_comparison({scene}, options, out);
 
@@ -109,7 +109,7 @@ TEST(WifiBoundingClaim, OnTheCHallTwinWifiCutsFarFalseLoopClosuresComparisonsAnd
   options.jobs = 2;
   options.plots = false;
   options.sweeps = {parse_sweep("frontend=rgbdslam,orbslam")};
-  Scene scene = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   scene.seed = 1001;
   const ComparisonResult result = run_comparison({scene}, options, out);
   ASSERT_EQ(result.cases.size(), 4u);

@@ -8,7 +8,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 std::vector<int> variants(const FloorPlan& plan) {
@@ -88,4 +88,4 @@ TEST(Determinism, NoAliasingGivesEverySegmentItsOwnLook) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

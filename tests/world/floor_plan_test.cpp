@@ -10,7 +10,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 const WallFace2& face_nearest(const FloorPlan& plan, const Eigen::Vector2d& p) {
@@ -182,4 +182,4 @@ TEST(FloorPlan, WallFaceGridAgreesWithTheFullScan) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

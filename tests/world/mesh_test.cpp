@@ -8,7 +8,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 double triangle_area(const Mesh& m, const Triangle& t) {
@@ -87,4 +87,4 @@ TEST(Mesh, WallTrianglesCarryTheirPhysicalWall) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

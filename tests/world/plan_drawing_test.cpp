@@ -9,7 +9,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 std::string read_all(const std::filesystem::path& p) {
@@ -45,4 +45,4 @@ TEST(PlanDrawing, UnwritablePathIsAnIoError) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

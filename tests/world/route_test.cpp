@@ -9,7 +9,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 TEST(Route, CornersAreRoundedWithTheTurnRadius) {
@@ -71,4 +71,4 @@ TEST(Route, RouteBetweenNodesWithoutCorridorIsRejected) {
 }
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim

@@ -8,7 +8,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
 
-namespace wifislam {
+namespace wifislam::sim {
 namespace {
 
 std::vector<std::string> shipped_scenes() {
@@ -40,4 +40,4 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ShippedScene, ::testing::ValuesIn(shipped_scene
                          [](const auto& info) { return info.param; });
 
 }  // namespace
-}  // namespace wifislam
+}  // namespace wifislam::sim
