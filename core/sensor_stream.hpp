@@ -19,9 +19,9 @@ namespace wifislam {
 
 struct RgbdFrame {
   Timestamp time;
-  std::int64_t index = 0;  // 0-based position in the stream's frame sequence
-  cv::Mat rgb;             // CV_8UC3, BGR channel order (OpenCV's convention)
-  cv::Mat depth_m;         // CV_32FC1, metres along the optical axis, 0 = no reading
+  std::int64_t index = 0;            // 0-based position in the stream's frame sequence
+  cv::Mat rgb;                       // CV_8UC3, BGR channel order (OpenCV's convention)
+  cv::Mat depth_m;                   // CV_32FC1, metres along the optical axis, 0 = no reading
   std::string rgb_path, depth_path;  // relative to the dataset folder; empty when streamed
 };
 

@@ -97,12 +97,12 @@ YAML::Node load_yaml_file(const std::string& path) {
   if (text.size() > kMaxYamlDocumentBytes) {
     std::error_code size_error;
     const auto bytes = std::filesystem::file_size(path, size_error);
-    throw ParseError(path, "",
-                     fmt::format("{}; a scene or calibration file is at most {} MiB (the YAML "
-                                 "reader needs about 100 times a file's size in memory)",
-                                 size_error ? std::string("larger than that")
-                                            : fmt::format("{} bytes", bytes),
-                                 kMaxYamlDocumentBytes >> 20));
+    throw ParseError(
+        path, "",
+        fmt::format("{}; a scene or calibration file is at most {} MiB (the YAML "
+                    "reader needs about 100 times a file's size in memory)",
+                    size_error ? std::string("larger than that") : fmt::format("{} bytes", bytes),
+                    kMaxYamlDocumentBytes >> 20));
   }
   return parse_yaml_document(text, path);
 }

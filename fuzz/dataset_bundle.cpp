@@ -4,7 +4,6 @@
 #include <fstream>
 #include <set>
 
-
 namespace wifislam::fuzz {
 namespace {
 
@@ -32,7 +31,8 @@ bool is_safe_name(std::string_view name) {
 
 // Positions where a marker line starts: offset 0, or just after a '\n'.
 bool marker_at(std::string_view data, std::size_t pos) {
-  return (pos == 0 || data[pos - 1] == '\n') && data.substr(pos, kBundleMarker.size()) == kBundleMarker;
+  return (pos == 0 || data[pos - 1] == '\n') &&
+         data.substr(pos, kBundleMarker.size()) == kBundleMarker;
 }
 
 }  // namespace
@@ -58,8 +58,9 @@ std::vector<BundleFile> unpack_bundle(std::string_view data) {
     // The newline before a marker separates sections; it is not part of the file.
     const std::size_t content_end = next < data.size() ? next - 1 : next;
     if (is_safe_name(name) && seen.insert(std::string(name)).second) {
-      files.push_back({std::string(name),
-                       data.substr(content_start, std::max(content_end, content_start) - content_start)});
+      files.push_back(
+          {std::string(name),
+           data.substr(content_start, std::max(content_end, content_start) - content_start)});
     }
     pos = next;
   }

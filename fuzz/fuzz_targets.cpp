@@ -14,12 +14,12 @@
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/yaml_document.hpp"
-#include "study/study_file.hpp"
-#include "study/study_runner.hpp"
 #include "fuzz/dataset_bundle.hpp"
 #include "fuzz/scratch_folder.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "study/study_file.hpp"
+#include "study/study_runner.hpp"
 
 namespace wifislam::fuzz {
 namespace {

@@ -180,7 +180,8 @@ SweepAxis parse_sweep(const std::string& text) {
   return axis;
 }
 
-ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes, const ComparisonOptions& options,
+ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
+                                const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir) {
   if (scenes.empty()) throw InvalidInputError("compare: no scene given");
   if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");

@@ -93,7 +93,8 @@ struct ComparisonResult {
 
 /// Runs the whole comparison, writing into `out_dir` (which must exist). Throws on bad input
 /// before any heavy work (unknown option key, bad value).
-ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes, const ComparisonOptions& options,
+ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
+                                const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir);
 
 }  // namespace wifislam::study

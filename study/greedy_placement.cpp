@@ -81,7 +81,8 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
   {
     const sim::Site site(scene);
     result.scene_access_points = static_cast<int>(site.access_points().size());
-    spots = sim::radio::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
+    spots =
+        sim::radio::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
     result.plan = site.world().plan;
   }
   if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {

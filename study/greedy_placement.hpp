@@ -37,10 +37,10 @@
 
 #include <Eigen/Core>
 
-#include "study/radio_resolution.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 #include "slam/wifi/wifi_options.hpp"
+#include "study/radio_resolution.hpp"
 
 namespace wifislam::study {
 
@@ -57,11 +57,11 @@ struct PlacementOptions {
 inline constexpr int kMaxPlacementCandidates = 3000;
 
 struct PlacementStep {
-  int count = 0;                              // access points after this step
-  int candidate = -1;                         // index into PlacementResult::candidates
-  RadioResolution greedy;                     // with the chosen access points
-  double greedy_error = 0.0;                  // placement_error(greedy)
-  double random_error = 0.0;                  // medians over the random draws
+  int count = 0;              // access points after this step
+  int candidate = -1;         // index into PlacementResult::candidates
+  RadioResolution greedy;     // with the chosen access points
+  double greedy_error = 0.0;  // placement_error(greedy)
+  double random_error = 0.0;  // medians over the random draws
   std::optional<double> random_resolution_m;
   double random_far_similar_share = 0.0;
   double random_near_similar_share = 0.0;

@@ -38,7 +38,8 @@ SlurmJobFiles slurm_job_files(const StudyFile& study, const SlurmJobRequest& req
   files.merged_database = column_name(study.name) + ".sqlite";
   const std::string dir = folder.string();
   std::string optional_lines;
-  if (!request.partition.empty()) optional_lines += "#SBATCH --partition=" + request.partition + "\n";
+  if (!request.partition.empty())
+    optional_lines += "#SBATCH --partition=" + request.partition + "\n";
   if (!request.time_limit.empty()) optional_lines += "#SBATCH --time=" + request.time_limit + "\n";
   files.array_script = fmt::format(
       "#!/bin/bash\n"

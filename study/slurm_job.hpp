@@ -22,9 +22,9 @@ struct SlurmJobRequest {
   std::filesystem::path wifislam_binary;  // absolute
   std::filesystem::path study_file;       // absolute
   int tasks = 1;
-  int cpus_per_task = 1;        // also the shard's --jobs
-  std::string partition;        // empty: the cluster's default
-  std::string time_limit;       // empty: the partition's default (e.g. "02:00:00")
+  int cpus_per_task = 1;   // also the shard's --jobs
+  std::string partition;   // empty: the cluster's default
+  std::string time_limit;  // empty: the partition's default (e.g. "02:00:00")
 };
 
 struct SlurmJobFiles {

@@ -170,8 +170,9 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
     for (const auto& kv : set) {
       const std::string key = kv.first.Scalar();
       if (!sim::is_scene_key_path(key)) {
-        r.fail(kv.first, "set." + key,
-               "not a scene key" + did_you_mean(sim::generic_key_path(key), sim::scene_key_paths()));
+        r.fail(
+            kv.first, "set." + key,
+            "not a scene key" + did_you_mean(sim::generic_key_path(key), sim::scene_key_paths()));
       }
       if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
         r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");

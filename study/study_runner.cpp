@@ -13,10 +13,10 @@
 #include "core/output_folder.hpp"
 #include "core/thread_start.hpp"
 #include "core/yaml_document.hpp"
-#include "study/comparison_study.hpp"
-#include "study/radio_resolution.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "study/comparison_study.hpp"
+#include "study/radio_resolution.hpp"
 
 namespace wifislam::study {
 
@@ -60,7 +60,8 @@ sim::Scene case_scene(const StudyFile& study, const StudyCase& c) {
   const std::string source = fmt::format("{} as case {} of {} ({})", study.scene_path.string(),
                                          c.id, study.path.string(), case_label(study, c));
   try {
-    for (const auto& [key, value] : study.scene_set) sim::set_scene_key(root, key, YAML::Load(value));
+    for (const auto& [key, value] : study.scene_set)
+      sim::set_scene_key(root, key, YAML::Load(value));
     for (std::size_t a = 0; a < study.axes.size(); ++a) {
       if (study.axes[a].kind != AxisKind::kSceneKey) continue;
       sim::set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
@@ -101,8 +102,13 @@ void check_cases(const StudyFile& study) {
 
 std::vector<std::string> metric_columns(StudyLevel level) {
   if (level == StudyLevel::kRadio) {
-    return {"pauses",          "pairs",    "resolution_m",       "near_similar_share",
-            "far_similar_share", "clusters", "aps_heard_per_pause"};
+    return {"pauses",
+            "pairs",
+            "resolution_m",
+            "near_similar_share",
+            "far_similar_share",
+            "clusters",
+            "aps_heard_per_pause"};
   }
   return {"ate_rmse_m",
           "keyframes",
@@ -173,9 +179,9 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   // it, but only when it carries this tool's marker (never a same-named folder of the user's).
   if (fs::exists(work)) {
     if (!fs::exists(work / kOutputMarkerFile) && !fs::is_empty(work)) {
-      throw InvalidInputError(fmt::format(
-          "{}: exists and was not made by wifislam (no {} in it); move it away", work.string(),
-          kOutputMarkerFile));
+      throw InvalidInputError(
+          fmt::format("{}: exists and was not made by wifislam (no {} in it); move it away",
+                      work.string(), kOutputMarkerFile));
     }
     fs::remove_all(work);
   }
@@ -210,12 +216,12 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
                    {"long_term_comparisons", count(long_term.comparisons)},
                    {"wifi_clusters", count(e.wifi_clusters)},
                    {"cost_model_s", e.cost_model_s ? SqlValue(*e.cost_model_s) : SqlValue()}};
-    row.timing = {{"loop_closure_detection_s", e.loop_closure_detection_s},
-                  {"bounded_module_s",
-                   e.timing.candidate_selection_s + long_term.time_s + e.optimisation_s},
-                  {"wifi_overhead_s", e.wifi_overhead_s},
-                  {"total_s", e.total_s},
-                  {"wall_s", e.wall_s}};
+    row.timing = {
+        {"loop_closure_detection_s", e.loop_closure_detection_s},
+        {"bounded_module_s", e.timing.candidate_selection_s + long_term.time_s + e.optimisation_s},
+        {"wifi_overhead_s", e.wifi_overhead_s},
+        {"total_s", e.total_s},
+        {"wall_s", e.wall_s}};
     rows.push_back(std::move(row));
   }
   fs::remove_all(work);
@@ -269,8 +275,8 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
         std::lock_guard lock(mutex);
         store.write_case(todo[i], rows);
         ++done;
-        progress(fmt::format("[{}/{}] case {} ({}): {:.1f} s", summary.skipped + done,
-                             cases.size(), todo[i].id, case_label(study, todo[i]),
+        progress(fmt::format("[{}/{}] case {} ({}): {:.1f} s", summary.skipped + done, cases.size(),
+                             todo[i].id, case_label(study, todo[i]),
                              std::chrono::duration<double>(Clock::now() - case_start).count()));
       } catch (...) {
         std::lock_guard lock(mutex);
@@ -278,8 +284,8 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
       }
     }
   };
-  const int threads = std::max(
-      1, std::min<int>(clamp_thread_count(case_threads), static_cast<int>(todo.size())));
+  const int threads =
+      std::max(1, std::min<int>(clamp_thread_count(case_threads), static_cast<int>(todo.size())));
   std::vector<std::thread> pool;
   start_threads(pool, threads - 1, worker);
   worker();

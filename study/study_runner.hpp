@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "study/result_store.hpp"
-#include "study/study_file.hpp"
 #include "sim/scene/scene.hpp"
 #include "slam/slam_options.hpp"
+#include "study/result_store.hpp"
+#include "study/study_file.hpp"
 
 namespace wifislam::study {
 

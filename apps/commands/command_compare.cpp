@@ -15,9 +15,9 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "eval/eval_options.hpp"
-#include "study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
+#include "study/comparison_study.hpp"
 
 namespace {
 
@@ -41,7 +41,8 @@ struct CompareArgs {
 /// `--preset paper-rgbdslam`: the paper's RGBD-SLAM experiment ("RGBD SLAM performance", C Hall)
 /// on our c_hall twin: min_matches 50 and 70, 5 seeds, 3 fps (the robot's 30 fps make one run
 /// ten times longer; the route, pauses and scans are the same). Options given explicitly win.
-void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<wifislam::sim::Scene>& scenes) {
+void apply_preset(CompareArgs& args, const CLI::App& app,
+                  std::vector<wifislam::sim::Scene>& scenes) {
   using namespace wifislam;
   if (args.preset.empty()) return;
   if (args.preset != "paper-rgbdslam") {

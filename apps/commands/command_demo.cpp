@@ -11,11 +11,11 @@
 #include "apps/demo_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/output_folder.hpp"
-#include "study/comparison_study.hpp"
 #include "sim/radio/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
 #include "sim/world/plan_drawing.hpp"
+#include "study/comparison_study.hpp"
 
 namespace {
 
@@ -40,9 +40,10 @@ void draw_scene_pictures(const wifislam::sim::Scene& scene, const std::filesyste
   // and with the shadowing of the dataset's scans.
   sim::radio::RadioMapOptions map_options;
   map_options.receiver_height_m = site.receiver_height_m();
-  const sim::radio::RadioMap map = sim::radio::compute_radio_map(site.radio(), site.world().plan, map_options);
-  sim::radio::write_radio_map_png(map, site.world().plan, site.access_points(), dir / "radio_map.png",
-                      scene.sensors.wifi.sensitivity_dbm);
+  const sim::radio::RadioMap map =
+      sim::radio::compute_radio_map(site.radio(), site.world().plan, map_options);
+  sim::radio::write_radio_map_png(map, site.world().plan, site.access_points(),
+                                  dir / "radio_map.png", scene.sensors.wifi.sensitivity_dbm);
   write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(scene));
 }
 
@@ -51,8 +52,8 @@ void run_demo(const DemoArgs& args) {
   const bool replace =
       check_output_folder({args.output_dir, args.force, kDefaultOutput, {args.scene_path}});
   const sim::Scene scene = args.scene_path.empty()
-                          ? sim::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
-                          : sim::load_scene_file(args.scene_path);
+                               ? sim::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
+                               : sim::load_scene_file(args.scene_path);
   AtomicDirectory out(args.output_dir, replace);
   draw_scene_pictures(scene, out.staging_path());
 

@@ -53,7 +53,8 @@ void run_radiomap(const RadiomapArgs& args) {
                  : args.band == "5" ? sim::radio::RadioMapBand::k5GHz
                                     : sim::radio::RadioMapBand::kBest;
   const sim::radio::RadioMap map = sim::radio::compute_radio_map(model, world.plan, options);
-  const double floor_dbm = sim::radio::WifiScannerOptions::from_scene(scene.sensors.wifi).sensitivity_dbm;
+  const double floor_dbm =
+      sim::radio::WifiScannerOptions::from_scene(scene.sensors.wifi).sensitivity_dbm;
   sim::radio::write_radio_map_png(map, world.plan, model.access_points(), args.output, floor_dbm);
   fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
              map.rows, map.resolution_m, model.access_points().size());

@@ -91,7 +91,8 @@ void run_render(const RenderArgs& args) {
 
   sim::write_color_png(rgb_path, view.color_bgr);
   sim::write_depth_png(depth_path, depth_m);
-  sim::write_depth_false_color_png(color_path, depth_m, depth_spec.min_range_m, depth_spec.max_range_m);
+  sim::write_depth_false_color_png(color_path, depth_m, depth_spec.min_range_m,
+                                   depth_spec.max_range_m);
 
   double lo = 0, hi = 0;
   const int readings = cv::countNonZero(depth_m > 0.0f);

@@ -24,14 +24,14 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "slam/slam_options.hpp"
 #include "study/greedy_placement.hpp"
 #include "study/result_store.hpp"
 #include "study/slurm_job.hpp"
 #include "study/study_file.hpp"
 #include "study/study_plot.hpp"
 #include "study/study_runner.hpp"
-#include "sim/scene/scene_loader.hpp"
-#include "slam/slam_options.hpp"
 
 namespace {
 

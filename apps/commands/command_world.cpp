@@ -45,8 +45,8 @@ void run_world(const WorldArgs& args) {
     }
   }
   fmt::print("scene: {}\n{}route time: {:.1f} s ({} pauses)\naccess points: {}\n", scene.name,
-             sim::summarize_world(world).to_text(), motion.end_time().seconds(), motion.pauses().size(),
-             access_points.size());
+             sim::summarize_world(world).to_text(), motion.end_time().seconds(),
+             motion.pauses().size(), access_points.size());
 }
 
 }  // namespace

@@ -49,7 +49,8 @@ fs::path bench_folder() {
 }
 
 const sim::Scene& c_hall() {
-  static const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  static const sim::Scene scene =
+      sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   return scene;
 }
 

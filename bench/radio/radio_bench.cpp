@@ -87,7 +87,8 @@ void BM_RadioMapJHallAllAps(benchmark::State& state) {
   options.prune = state.range(1) != 0;
   std::size_t cells = 0;
   for (auto _ : state) {
-    const sim::radio::RadioMap map = sim::radio::compute_radio_map(h.site->radio(), h.site->world().plan, options);
+    const sim::radio::RadioMap map =
+        sim::radio::compute_radio_map(h.site->radio(), h.site->world().plan, options);
     cells = 0;
     for (float v : map.rssi_dbm) cells += std::isfinite(v);
     benchmark::DoNotOptimize(map.rssi_dbm.data());

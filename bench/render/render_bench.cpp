@@ -53,7 +53,8 @@ struct Workload {
 const Workload& workload(int which) {
   static const Workload scene_workload = [] {
     Workload w;
-    const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
+    const sim::Scene scene =
+        sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
     const sim::World world = sim::generate_world(scene);
     w.mesh = world.mesh;
     w.lights = world.plan.lights;
@@ -116,7 +117,8 @@ class BareRenderer {
     for (const auto& [key, image] : images)
       textures_.emplace(key, std::make_unique<sim::GlTexture>(image));
     mesh_ = std::make_unique<sim::GlMesh>(sim::batch_mesh(
-        work.mesh, [&](const sim::TextureKey& key) -> const sim::TextureImage& { return images.at(key); }));
+        work.mesh,
+        [&](const sim::TextureKey& key) -> const sim::TextureImage& { return images.at(key); }));
     program_ = std::make_unique<sim::GlProgram>(kBareVertex, kBareFragment);
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);

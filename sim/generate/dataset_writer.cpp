@@ -25,8 +25,8 @@
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
-#include "sim/radio/radio_band.hpp"
 #include "sim/generate/generation_pipeline.hpp"
+#include "sim/radio/radio_band.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/scene/scene_loader.hpp"
 

@@ -25,9 +25,9 @@
 #include <optional>
 
 #include "core/sensor_stream.hpp"
+#include "sim/generate/generate_options.hpp"
 #include "sim/radio/propagation_model.hpp"
 #include "sim/radio/wifi_scanner.hpp"
-#include "sim/generate/generate_options.hpp"
 #include "sim/render/color_sensor_model.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"

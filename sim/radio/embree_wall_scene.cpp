@@ -6,8 +6,8 @@
 #include <limits>
 #include <optional>
 
-#include <Eigen/Geometry>
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 
 #include "core/error.hpp"
 
@@ -172,7 +172,8 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   for (int i = 0; i < collect.count; ++i) {
     const float along = normals_[hits[i].prim].dot(dir_f);
     if (along == 0.0f) continue;
-    faces.push_back({static_cast<double>(hits[i].t) * length, along < 0.0f ? +1 : -1, hits[i].prim});
+    faces.push_back(
+        {static_cast<double>(hits[i].t) * length, along < 0.0f ? +1 : -1, hits[i].prim});
   }
   std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
     return a.at_m != b.at_m ? a.at_m < b.at_m : a.prim < b.prim;
@@ -199,9 +200,8 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
     const double to_m = after ? after->at_m : end_m;
     if (to_m - from_m < kTouchGapM) continue;
     const bool entered = before && before->side > 0, left = after && after->side < 0;
-    const bool inside = entered == left
-                            ? entered
-                            : inside_material(from + (0.5 * (from_m + to_m)) * unit, unit);
+    const bool inside =
+        entered == left ? entered : inside_material(from + (0.5 * (from_m + to_m)) * unit, unit);
     if (!inside) {
       close();
       continue;
@@ -229,8 +229,8 @@ bool EmbreeWallScene::inside_material(const Eigen::Vector3d& point,
   forward.normalize();
   const Eigen::Vector3d side(-forward.y(), forward.x(), 0.0);
   int inside_votes = 0;
-  for (const Eigen::Vector3d& probe : {forward, Eigen::Vector3d(-forward), side,
-                                       Eigen::Vector3d(-side)}) {
+  for (const Eigen::Vector3d& probe :
+       {forward, Eigen::Vector3d(-forward), side, Eigen::Vector3d(-side)}) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rayhit;

@@ -43,8 +43,8 @@ namespace wifislam::sim::radio {
 
 /// One continuous stretch of wall material on the segment.
 struct WallCrossing {
-  int wall_id = -1;                                     // wall of the face where it starts
-  WallMaterial material = WallMaterial::kPlasterboard;  // of the face where it starts
+  int wall_id = -1;                                          // wall of the face where it starts
+  WallMaterial material = WallMaterial::kPlasterboard;       // of the face where it starts
   WallMaterial exit_material = WallMaterial::kPlasterboard;  // of the face where it ends
   double distance_m = 0.0;  // from the segment's start to where the material starts
   double length_m = 0.0;    // path length inside the material

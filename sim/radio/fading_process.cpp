@@ -20,8 +20,8 @@ FadingProcess::FadingProcess(double sigma_db, double coherence_s, double frequen
     const double omega = std::tan(std::numbers::pi * (u - 0.5)) / coherence_s;
     const double theta = rng.uniform(0.0, 2.0 * std::numbers::pi);
     const double phase = rng.uniform(0.0, 2.0 * std::numbers::pi);
-    waves_.push_back({omega, wavenumber_rad_m * Eigen::Vector2d(std::cos(theta), std::sin(theta)),
-                      phase});
+    waves_.push_back(
+        {omega, wavenumber_rad_m * Eigen::Vector2d(std::cos(theta), std::sin(theta)), phase});
   }
 }
 

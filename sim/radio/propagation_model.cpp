@@ -122,10 +122,9 @@ double PropagationModel::path_loss_db(const RadioLink& link, double frequency_mh
       break;
     case PathLossModel::kItuSiteGeneral: {
       const RadioBand band = frequency_mhz < 4000.0 ? RadioBand::k2_4GHz : RadioBand::k5GHz;
-      return itu_p1238_path_loss_db(frequency_mhz, link.distance_m,
-                                    itu_p1238_coefficients(options_.environment, band)
-                                        .distance_coefficient,
-                                    floor_loss_db_);
+      return itu_p1238_path_loss_db(
+          frequency_mhz, link.distance_m,
+          itu_p1238_coefficients(options_.environment, band).distance_coefficient, floor_loss_db_);
     }
     case PathLossModel::kItuSiteGeneralFit:
       return itu_p1238_fit_loss_db(itu_p1238_office_fit(link.wall_count() == 0.0), frequency_mhz,

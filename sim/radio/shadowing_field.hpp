@@ -68,8 +68,8 @@ class ShadowingGrid {
   double decorrelation_m_ = 1.0;
   double cell_m_ = 1.0;
   Eigen::Vector2d origin_m_ = Eigen::Vector2d::Zero();
-  int cols_ = 0, rows_ = 0;                // the site's grid
-  int torus_cols_ = 0, torus_rows_ = 0;    // its circulant embedding
+  int cols_ = 0, rows_ = 0;               // the site's grid
+  int torus_cols_ = 0, torus_rows_ = 0;   // its circulant embedding
   std::vector<double> sqrt_eigenvalues_;  // sqrt(lambda / cells), torus row-major
   double negative_mass_ = 0.0;
 };

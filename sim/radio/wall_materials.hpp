@@ -54,8 +54,7 @@ inline constexpr P2040Material kP2040Concrete{5.24, 0.0, 0.0462, 0.7822};
 ///   R = (1 - n) / (1 + n), q = 2 pi f d n / c, T = (1 - R^2) e^{-jq} / (1 - R^2 e^{-2jq}).
 double p2040_slab_loss_db(const P2040Material& material, double thickness_m, double frequency_mhz);
 /// Its absorption alone: 20 log10(e) (2 pi f / c) |Im n| d.
-double p2040_absorption_db(const P2040Material& material, double thickness_m,
-                           double frequency_mhz);
+double p2040_absorption_db(const P2040Material& material, double thickness_m, double frequency_mhz);
 
 /// One material's loss: a + b f_GHz (linear), or anchor_db at anchor_mhz plus the absorption
 /// of `material` over `thickness_m` relative to its absorption at anchor_mhz (anchored).

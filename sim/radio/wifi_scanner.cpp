@@ -30,10 +30,10 @@ WifiScanner::WifiScanner(const PropagationModel& model, WifiScannerOptions optio
                                    [&](const Bssid& b) { return b.band == band; });
       const double frequency_mhz =
           it != ap.bssids.end() ? it->frequency_mhz() : (band == RadioBand::k5GHz ? 5500 : 2437);
-      radios.emplace_back(prop.fast_fading_sigma_db, prop.fading_coherence_s, frequency_mhz,
-                          Rng::stream(seed_, fmt::format("wifi/fading/{}/{}",
-                                                         ap.base_mac().to_string(),
-                                                         to_string(band))));
+      radios.emplace_back(
+          prop.fast_fading_sigma_db, prop.fading_coherence_s, frequency_mhz,
+          Rng::stream(
+              seed_, fmt::format("wifi/fading/{}/{}", ap.base_mac().to_string(), to_string(band))));
     }
     std::vector<double>& offsets = beacon_offsets_s_.emplace_back();
     for (const Bssid& b : ap.bssids) {
@@ -103,8 +103,8 @@ WifiScan WifiScanner::scan(Timestamp start,
           if (!where) where = position_at(mid);
           if (!link) link = model_.link(a, *where);
           if (!fading_db) {
-            fading_db = fading_[a][band == RadioBand::k5GHz ? 1 : 0].at_db(mid.seconds(),
-                                                                          where->head<2>());
+            fading_db =
+                fading_[a][band == RadioBand::k5GHz ? 1 : 0].at_db(mid.seconds(), where->head<2>());
           }
           // Always draw both numbers so one BSSID's outcome never shifts another's draws.
           const double spread = rng.normal() * prop.bssid_spread_db;

@@ -48,9 +48,9 @@
 namespace wifislam::sim::radio {
 
 struct WifiScannerOptions {
-  double sensitivity_dbm = -92.0;    // typical 802.11 receiver floor for beacons at 1 Mb/s
-  double dwell_per_channel_s = 0.1;  // passive-scan dwell (one 102.4 ms beacon interval)
-  double detection_width_db = 3.0;   // how far above the floor detection becomes near-certain
+  double sensitivity_dbm = -92.0;     // typical 802.11 receiver floor for beacons at 1 Mb/s
+  double dwell_per_channel_s = 0.1;   // passive-scan dwell (one 102.4 ms beacon interval)
+  double detection_width_db = 3.0;    // how far above the floor detection becomes near-certain
   double beacon_interval_s = 0.1024;  // 802.11 default: 100 TU of 1.024 ms
   std::string sensor_id = "wifi0";
   static WifiScannerOptions from_scene(const WifiScannerSpec& spec);
@@ -78,7 +78,7 @@ class WifiScanner {
   const PropagationModel& model_;
   WifiScannerOptions options_;
   std::uint64_t seed_;
-  std::vector<std::vector<FadingProcess>> fading_;       // [AP][band]
+  std::vector<std::vector<FadingProcess>> fading_;     // [AP][band]
   std::vector<std::vector<double>> beacon_offsets_s_;  // [AP][BSSID]
 };
 

@@ -74,7 +74,8 @@ std::vector<Step> steps_of(const std::string& path) {
   std::size_t start = 0;
   while (start <= path.size()) {
     const std::size_t dot = path.find('.', start);
-    std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    std::string part =
+        path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     Step step;
     if (const std::size_t open = part.find('['); open != std::string::npos && part.back() == ']') {
       const std::string inside = part.substr(open + 1, part.size() - open - 2);
@@ -121,8 +122,8 @@ void set_at(YAML::Node node, const std::vector<Step>& steps, std::size_t k, cons
     throw InvalidInputError(fmt::format("{}: the scene has no list '{}' to set", path, step.key));
   }
   if (!step.every && step.index >= list.size()) {
-    throw InvalidInputError(fmt::format("{}: the scene's '{}' has {} elements", path, step.key,
-                                        list.size()));
+    throw InvalidInputError(
+        fmt::format("{}: the scene's '{}' has {} elements", path, step.key, list.size()));
   }
   for (std::size_t i = 0; i < list.size(); ++i) {
     if (!step.every && i != step.index) continue;

@@ -13,15 +13,17 @@ Site::Site(const Scene& scene) : scene_(scene) {
   world_ = std::make_unique<World>(generate_world(scene_));
   motion_ = std::make_unique<MotionProfile>(
       world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
-  radio_ = std::make_unique<radio::PropagationModel>(*world_, radio::make_access_points(scene_, world_->plan),
-                                              radio::PropagationOptions::from_scene(scene_),
-                                              scene_.seed);
+  radio_ = std::make_unique<radio::PropagationModel>(
+      *world_, radio::make_access_points(scene_, world_->plan),
+      radio::PropagationOptions::from_scene(scene_), scene_.seed);
 }
 
 Site::~Site() = default;
 Site::Site(Site&&) noexcept = default;
 Site& Site::operator=(Site&&) noexcept = default;
 
-const std::vector<radio::AccessPoint>& Site::access_points() const { return radio_->access_points(); }
+const std::vector<radio::AccessPoint>& Site::access_points() const {
+  return radio_->access_points();
+}
 
 }  // namespace wifislam::sim

@@ -82,14 +82,23 @@ struct FloorPlan {
 };
 
 /// What a triangle is; the renderer picks a texture from this and the appearance variant.
-enum class SurfaceKind : std::uint8_t { kWall, kFloor, kCeiling, kDoor, kDoorFrame, kPoster, kLight, kWallTop };
+enum class SurfaceKind : std::uint8_t {
+  kWall,
+  kFloor,
+  kCeiling,
+  kDoor,
+  kDoorFrame,
+  kPoster,
+  kLight,
+  kWallTop
+};
 
 struct Triangle {
   std::uint32_t v[3] = {0, 0, 0};  // indices into Mesh::positions_m (counter-clockwise seen from
                                    // the side the normal points to)
   SurfaceKind surface = SurfaceKind::kWall;
   WallMaterial material = WallMaterial::kPlasterboard;  // physical material (radio)
-  int wall_id = -1;          // physical wall (radio counts crossings per wall); -1 = none
+  int wall_id = -1;            // physical wall (radio counts crossings per wall); -1 = none
   int appearance_variant = 0;  // 0 = shared look; k > 0 unique (see Appearance::aliasing)
   int decoration = -1;         // poster/landmark design index for kPoster, else -1
 };

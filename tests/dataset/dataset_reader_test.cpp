@@ -276,10 +276,10 @@ TEST(DatasetReader, CorruptFilesAreErrorsWithFileAndLine) {
   // Found by fuzzing: calibration.yaml with a scalar where a mapping belongs escaped as a
   // yaml-cpp exception (an internal error); so did a sensor_model group that is not a mapping.
   const std::string calibration = test::read_text(dir / "calibration.yaml");
-  for (const std::string& bad : {std::string("camera: 5\n"),
-                                 calibration.substr(0, calibration.find("sensor_model:")) +
-                                     "sensor_model: [1, 2]\n",
-                                 calibration.substr(0, calibration.find("depth:")) + "depth: 3\n"}) {
+  for (const std::string& bad :
+       {std::string("camera: 5\n"),
+        calibration.substr(0, calibration.find("sensor_model:")) + "sensor_model: [1, 2]\n",
+        calibration.substr(0, calibration.find("depth:")) + "depth: 3\n"}) {
     test::write_text(dir / "calibration.yaml", bad);
     e = open_error(dir, {.verify_checksums = false});
     EXPECT_NE(e.find("calibration.yaml"), std::string::npos) << e;

@@ -80,15 +80,20 @@ WallMaterial material_at(const FloorPlan& plan, const V2& x) {
 // Absorption of a lossy slab: the attenuation constant of a plane wave in the material,
 // alpha = k0 Im(sqrt(eta)), over its thickness, in dB.
 double absorption_db(double eta_real, double sigma_spm, double thickness_m, double f_ghz) {
-  const std::complex<double> n = std::sqrt(std::complex<double>(eta_real, -17.98 * sigma_spm / f_ghz));
+  const std::complex<double> n =
+      std::sqrt(std::complex<double>(eta_real, -17.98 * sigma_spm / f_ghz));
   return 8.685889638 * (2 * M_PI * f_ghz * 1e9 / 299792458.0) * std::abs(n.imag()) * thickness_m;
 }
 
 // 3GPP TR 38.901 V16.1.0 Table 7.4.3-1 (concrete, glass, wood); COST 231 at 1.8 GHz with the
 // ITU-R P.2040-3 material's absorption added (brick of the wall's thickness, two 12.5 mm boards).
 double wall_loss_db(WallMaterial m, double f_ghz, double wall_thickness_m) {
-  auto brick = [&](double f) { return absorption_db(3.91, 0.0238 * std::pow(f, 0.16), wall_thickness_m, f); };
-  auto boards = [&](double f) { return absorption_db(2.73, 0.0085 * std::pow(f, 0.9395), 0.025, f); };
+  auto brick = [&](double f) {
+    return absorption_db(3.91, 0.0238 * std::pow(f, 0.16), wall_thickness_m, f);
+  };
+  auto boards = [&](double f) {
+    return absorption_db(2.73, 0.0085 * std::pow(f, 0.9395), 0.025, f);
+  };
   switch (m) {
     case WallMaterial::kPlasterboard:
       return 3.4 + boards(f_ghz) - boards(1.8);
@@ -181,9 +186,9 @@ TEST(IndependentRadioCheck, MeanRssiOnJHallAgreesWithA2DCalculationFromThePlan) 
   ASSERT_GT(diffs.size(), 10000u);
   EXPECT_GT(with_walls, static_cast<int>(diffs.size() / 2));  // most links cross walls
   std::sort(diffs.begin(), diffs.end());
-  const double within = static_cast<double>(std::upper_bound(diffs.begin(), diffs.end(), 0.005) -
-                                            diffs.begin()) /
-                        static_cast<double>(diffs.size());
+  const double within =
+      static_cast<double>(std::upper_bound(diffs.begin(), diffs.end(), 0.005) - diffs.begin()) /
+      static_cast<double>(diffs.size());
   std::cout << "independent check: " << diffs.size() << " links, " << 100.0 * within
             << " % within 0.005 dB, p99.9 " << diffs[diffs.size() * 999 / 1000] << " dB, max "
             << diffs.back() << " dB\n";

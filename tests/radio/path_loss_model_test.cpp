@@ -73,16 +73,15 @@ TEST(PathLossModels, ItuWallsIsTheDistanceLawWithNTwentyTwoPlusTheWall) {
 }
 
 TEST(PathLossModels, ItuSiteGeneralTakesNFromTheTablePerBandAndIgnoresWalls) {
-  for (auto [environment, n24, n5] :
-       {std::tuple{RadioEnvironment::kOffice, 30.0, 31.0},
-        std::tuple{RadioEnvironment::kResidential, 28.0, 30.0},
-        std::tuple{RadioEnvironment::kCommercial, 22.0, 22.0}}) {
+  for (auto [environment, n24, n5] : {std::tuple{RadioEnvironment::kOffice, 30.0, 31.0},
+                                      std::tuple{RadioEnvironment::kResidential, 28.0, 30.0},
+                                      std::tuple{RadioEnvironment::kCommercial, 22.0, 22.0}}) {
     auto o = without_shadowing(PathLossModel::kItuSiteGeneral);
     o.environment = environment;
     const Link open = link_behind_wall(o, false), walled = link_behind_wall(o, true);
     const double d = 12.0;
-    EXPECT_NEAR(open.rssi_24_dbm,
-                20 - (20 * std::log10(open.f_24_mhz) + n24 * std::log10(d) - 28), 1e-9)
+    EXPECT_NEAR(open.rssi_24_dbm, 20 - (20 * std::log10(open.f_24_mhz) + n24 * std::log10(d) - 28),
+                1e-9)
         << to_string(environment);
     EXPECT_NEAR(open.rssi_5_dbm, 20 - (20 * std::log10(open.f_5_mhz) + n5 * std::log10(d) - 28),
                 1e-9)

@@ -20,7 +20,8 @@ struct Pause {
   std::map<std::uint64_t, double> signature;  // AP (base MAC) -> mean RSSI
 };
 
-inline std::vector<Pause> pauses_along_route(const sim::RoutePath& route, const sim::radio::WifiScanner& scanner,
+inline std::vector<Pause> pauses_along_route(const sim::RoutePath& route,
+                                             const sim::radio::WifiScanner& scanner,
                                              double spacing_m, int scans_per_pause,
                                              double receiver_height_m) {
   std::vector<Pause> pauses;

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "sim/world/plan_queries.hpp"
 #include "sim/radio/radio_map.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "tests/radio/test_plan.hpp"
 #include "tests/radio/test_walls.hpp"
 

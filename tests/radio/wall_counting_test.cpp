@@ -38,7 +38,8 @@ struct OutlineFace {
 
 Mesh outline_solid(const std::vector<OutlineFace>& faces) {
   Mesh mesh;
-  for (const OutlineFace& f : faces) add_face(mesh, f.a, f.b, 0.0f, kHeightM, f.material, f.wall_id);
+  for (const OutlineFace& f : faces)
+    add_face(mesh, f.a, f.b, 0.0f, kHeightM, f.material, f.wall_id);
   return mesh;
 }
 

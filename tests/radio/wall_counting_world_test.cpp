@@ -26,8 +26,8 @@ TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThrou
     const double hw = 0.5 * door.width_m, ht = 0.5 * door.wall_thickness_m;
     auto at = [&](const Eigen::Vector2d& p, double z) { return Eigen::Vector3d(p.x(), p.y(), z); };
     // Square through the middle of the leaf: one wooden wall.
-    const auto leaf = walls.walls_crossed(at(door.center_m - 1.5 * n, 1.0),
-                                          at(door.center_m + 1.5 * n, 1.0));
+    const auto leaf =
+        walls.walls_crossed(at(door.center_m - 1.5 * n, 1.0), at(door.center_m + 1.5 * n, 1.0));
     ASSERT_EQ(leaf.size(), 1u) << "door at " << door.center_m.transpose();
     EXPECT_EQ(leaf[0].material, WallMaterial::kWoodDoor);
     EXPECT_EQ(leaf[0].exit_material, WallMaterial::kWoodDoor);

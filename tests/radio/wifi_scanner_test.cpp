@@ -142,7 +142,8 @@ TEST(WifiScanner, AveragingAPausesScansBeatsOneScan) {
   // rho = exp(-2 s / coherence), not by 1/5 as for independent scans.
   double correlated_share = 0.0;
   for (int i = 0; i < 5; ++i)
-    for (int j = 0; j < 5; ++j) correlated_share += std::exp(-2.0 * std::abs(i - j) / o.fading_coherence_s);
+    for (int j = 0; j < 5; ++j)
+      correlated_share += std::exp(-2.0 * std::abs(i - j) / o.fading_coherence_s);
   correlated_share /= 25.0;
   const double avg2 = std::pow(o.fast_fading_sigma_db, 2) * correlated_share +
                       std::pow(o.bssid_spread_db, 2) / 5.0 + rounding2 / 5.0;
@@ -161,8 +162,8 @@ TEST(WifiScanner, FadingIsPerRadioAndCorrelatedOverTimeAtAStillReceiver) {
   MacAllocator macs(6);
   std::vector<AccessPoint> aps;
   for (int i = 0; i < 40; ++i)  // all within 12 m of the receivers: every beacon is strong
-    aps.push_back(make_access_point(i, Eigen::Vector3d(3.0 * (i % 8), 2.0 * (i / 8), 2.5), 20.0, 3,
-                                    6, macs));
+    aps.push_back(
+        make_access_point(i, Eigen::Vector3d(3.0 * (i % 8), 2.0 * (i / 8), 2.5), 20.0, 3, 6, macs));
   PropagationModel model(Mesh{}, {-5, -5}, {30, 15}, aps, opt, 6);
   WifiScanner scanner(model, {}, 6);
   // residual[(scan, mac)] = reading - mean RSSI
@@ -171,7 +172,8 @@ TEST(WifiScanner, FadingIsPerRadioAndCorrelatedOverTimeAtAStillReceiver) {
     for (const WifiReading& reading : scanner.scan(t, p).readings) {
       for (std::size_t a = 0; a < aps.size(); ++a)
         for (const Bssid& b : model.access_points()[a].bssids)
-          if (b.mac == reading.bssid) r[b.mac.value] = reading.rssi_dbm - model.mean_rssi_dbm(a, b, p);
+          if (b.mac == reading.bssid)
+            r[b.mac.value] = reading.rssi_dbm - model.mean_rssi_dbm(a, b, p);
     }
     return r;
   };
@@ -191,7 +193,8 @@ TEST(WifiScanner, FadingIsPerRadioAndCorrelatedOverTimeAtAStillReceiver) {
     }
   }
   ASSERT_GT(within_n, 600);
-  const double within_rms = std::sqrt(within2 / within_n), across_rms = std::sqrt(across2 / within_n);
+  const double within_rms = std::sqrt(within2 / within_n),
+               across_rms = std::sqrt(across2 / within_n);
   // sqrt(2 (0.5^2 + 1/12)) = 0.82 dB within a radio; sqrt(2 (2^2 + ...)) = 2.9 dB across radios.
   EXPECT_NEAR(within_rms, std::sqrt(2 * (0.25 + 1.0 / 12.0)), 0.2);
   EXPECT_NEAR(across_rms, std::sqrt(2 * (4.0 + 0.25 + 1.0 / 12.0)), 0.35);
@@ -202,7 +205,8 @@ TEST(WifiScanner, FadingIsPerRadioAndCorrelatedOverTimeAtAStillReceiver) {
     for (int k = 0; k < 60; ++k) {
       const Eigen::Vector3d p(1.0 + 0.37 * k, 1.0 + 0.23 * k, 1.0);
       const Timestamp t = Timestamp::from_seconds(1000.0 * k);
-      const auto a = residuals(t, p), b = residuals(Timestamp::from_seconds(t.seconds() + dt_s), p + offset);
+      const auto a = residuals(t, p),
+                 b = residuals(Timestamp::from_seconds(t.seconds() + dt_s), p + offset);
       for (const auto& [mac, x] : a) {
         const auto y = b.find(mac);
         if (y == b.end()) continue;
@@ -233,7 +237,8 @@ TEST(WifiScanner, ShortDwellsMissBeaconsAtTheIntervalRatio) {
     WifiScanner scanner(model, o, 8);
     int heard = 0, possible = 0;
     for (int k = 0; k < 300; ++k) {
-      heard += static_cast<int>(scanner.scan(Timestamp::from_seconds(3.1 * k), {10, 0, 1}).readings.size());
+      heard += static_cast<int>(
+          scanner.scan(Timestamp::from_seconds(3.1 * k), {10, 0, 1}).readings.size());
       possible += 3 * 6;  // every BSSID is 10-20 m away in free space: far above the floor
     }
     EXPECT_NEAR(static_cast<double>(heard) / possible, std::min(1.0, dwell_s / 0.1024), 0.02)

@@ -39,7 +39,7 @@ inline sim::RoutePath circle_route(double radius_m, double laps, double step_m =
 
 /// A w x h rectangle (counter-clockwise from the origin) with corners rounded by `radius_m`.
 inline sim::RoutePath rounded_rectangle_route(double w_m, double h_m, double radius_m,
-                                         double step_m = 0.05) {
+                                              double step_m = 0.05) {
   sim::RoutePath path;
   const Eigen::Vector2d corners[4] = {{w_m, 0}, {w_m, h_m}, {0, h_m}, {0, 0}};
   Eigen::Vector2d at(radius_m, 0.0);

@@ -32,7 +32,9 @@ radio: {environment: office}
 )";
 }
 
-sim::Scene small_loop_scene() { return sim::load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop"); }
+sim::Scene small_loop_scene() {
+  return sim::load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop");
+}
 
 std::string small_loop_with_wifi_scene_yaml() {
   std::string yaml = small_loop_scene_yaml();

@@ -15,8 +15,8 @@
 
 #include <unistd.h>
 
-#include "study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "study/comparison_study.hpp"
 
 namespace wifislam::study {
 namespace {

@@ -121,7 +121,8 @@ TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
   const StudyFile materials =
       load_study_yaml(study_yaml("  corridors[*].material: [concrete]\n"), "s.yaml");
   const sim::Scene scene = case_scene(materials, materials.cases[0]);
-  for (const sim::Corridor& c : scene.corridors) EXPECT_EQ(c.material, sim::WallMaterial::kConcrete);
+  for (const sim::Corridor& c : scene.corridors)
+    EXPECT_EQ(c.material, sim::WallMaterial::kConcrete);
   const StudyFile bad_option = load_study_yaml(study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
   EXPECT_THROW(check_cases(bad_option), ParseError);
 }

@@ -12,10 +12,10 @@
 #include <set>
 #include <sstream>
 
+#include "sim/scene/scene_loader.hpp"
 #include "study/result_store.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
-#include "sim/scene/scene_loader.hpp"
 #include "tests/cli/cli_run.hpp"
 
 namespace wifislam::study {

@@ -24,8 +24,8 @@
 
 #include "apps/demo_scene.hpp"
 #include "core/error.hpp"
-#include "study/comparison_study.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "study/comparison_study.hpp"
 
 namespace wifislam::study {
 namespace {

@@ -95,7 +95,8 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
       for (double fy = 0.05; fy < 1; fy += 0.1) {
         const Eigen::Vector2d p = lo + (hi - lo).cwiseProduct(Eigen::Vector2d(fx, fy));
         if (!sim::ring_contains(r.polygon_m, p)) continue;
-        EXPECT_FALSE(sim::regions_contain(plan.walkable, p)) << "room " << i << " overlaps a corridor";
+        EXPECT_FALSE(sim::regions_contain(plan.walkable, p))
+            << "room " << i << " overlaps a corridor";
         for (std::size_t j = 0; j < plan.rooms.size(); ++j)
           if (j != i) {
             EXPECT_FALSE(sim::ring_contains(plan.rooms[j].polygon_m, p)) << i << " vs " << j;
@@ -143,8 +144,8 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
     if (!d.open) {
       for (double side : {-1.0, 1.0}) {
         int face = -1;
-        sim::nearest_wall_distance_m(plan, d.center_m + side * (0.5 * d.wall_thickness_m + 0.01) * n,
-                                &face);
+        sim::nearest_wall_distance_m(
+            plan, d.center_m + side * (0.5 * d.wall_thickness_m + 0.01) * n, &face);
         ASSERT_GE(face, 0);
         EXPECT_EQ(plan.wall_faces[face].material, sim::WallMaterial::kWoodDoor);
       }
@@ -198,7 +199,8 @@ void expect_mesh_invariants(const sim::World& world) {
     if (std::abs(n.norm() - 1) > 1e-5 || mesh.normals[t.v[1]] != mesh.normals[t.v[0]] ||
         mesh.normals[t.v[2]] != mesh.normals[t.v[0]] || cross.normalized().dot(n) < 0.999)
       ++bad_normal;
-    const bool solid = t.surface == sim::SurfaceKind::kWall || t.surface == sim::SurfaceKind::kDoor ||
+    const bool solid = t.surface == sim::SurfaceKind::kWall ||
+                       t.surface == sim::SurfaceKind::kDoor ||
                        t.surface == sim::SurfaceKind::kWallTop;
     if (solid) {
       const Eigen::Vector3f* p[3] = {&p0, &p1, &p2};
@@ -208,7 +210,8 @@ void expect_mesh_invariants(const sim::World& world) {
       // A point just in front of the face is out of the wall, one just behind it is in.
       const Eigen::Vector2d c = ((p0 + p1 + p2) / 3).head<2>().cast<double>();
       const Eigen::Vector2d n2 = n.head<2>();
-      if (sim::regions_contain(plan.walls, c + 0.01 * n2) || !sim::regions_contain(plan.walls, c - 0.01 * n2))
+      if (sim::regions_contain(plan.walls, c + 0.01 * n2) ||
+          !sim::regions_contain(plan.walls, c - 0.01 * n2))
         ++bad_side;
       // Texture coordinates in metres: uv distances equal 3-D distances.
       for (int i = 0; i < 3; ++i) {
