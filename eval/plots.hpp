@@ -4,14 +4,14 @@
 
 #include <filesystem>
 
-#include "eval/plot_canvas.hpp"
+#include "plot/canvas.hpp"
 #include "eval/run_evaluation.hpp"
 #include "sim/world/world_types.hpp"
 
 namespace wifislam::eval {
 
 /// The canvas of the plan plots: the plan's bounds (when given) and every point drawn.
-MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::World* world);
+plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::World* world);
 
 /// Ground truth and the aligned estimate over the floor plan, with the detected loop closures
 /// drawn between their keyframes' ground-truth positions: green correct, red false (a long red

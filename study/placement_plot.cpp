@@ -6,8 +6,9 @@
 
 #include <fmt/format.h>
 
-#include "eval/line_chart.hpp"
-#include "eval/plot_canvas.hpp"
+#include "plot/line_chart.hpp"
+#include "plot/canvas.hpp"
+#include "sim/world/plan_drawing.hpp"
 #include "study/greedy_placement.hpp"
 
 namespace wifislam::study {
@@ -23,18 +24,18 @@ void draw_positions(const fs::path& path, const PlacementResult& result,
     lo = lo.cwiseMin(c.head<2>());
     hi = hi.cwiseMax(c.head<2>());
   }
-  const eval::MetricCanvas canvas(lo, hi, 900);
-  eval::render_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
-    eval::draw_plan_backdrop(cr, canvas, result.plan);
-    const eval::Colour candidate{0.70, 0.70, 0.70}, pause{0.12, 0.47, 0.71},
+  const plot::MetricCanvas canvas(lo, hi, 900);
+  plot::write_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
+    sim::draw_plan_backdrop(cr, canvas, result.plan);
+    const plot::Colour candidate{0.70, 0.70, 0.70}, pause{0.12, 0.47, 0.71},
         chosen{0.84, 0.15, 0.16};
-    eval::set_colour(cr, candidate);
+    plot::set_colour(cr, candidate);
     for (const Eigen::Vector3d& c : result.candidates) {
       const Eigen::Vector2d p = canvas.px(c.head<2>());
       cairo_arc(cr, p.x(), p.y(), 2.0, 0, 2 * M_PI);
       cairo_fill(cr);
     }
-    eval::set_colour(cr, pause, 0.8);
+    plot::set_colour(cr, pause, 0.8);
     for (const Eigen::Vector2d& q : result.pause_positions_m) {
       const Eigen::Vector2d p = canvas.px(q);
       cairo_rectangle(cr, p.x() - 2.5, p.y() - 2.5, 5, 5);
@@ -43,30 +44,30 @@ void draw_positions(const fs::path& path, const PlacementResult& result,
     for (const PlacementStep& s : result.steps) {
       const Eigen::Vector3d& c = result.candidates[static_cast<std::size_t>(s.candidate)];
       const Eigen::Vector2d p = canvas.px(c.head<2>());
-      eval::set_colour(cr, chosen);
+      plot::set_colour(cr, chosen);
       cairo_arc(cr, p.x(), p.y(), 7.0, 0, 2 * M_PI);
       cairo_fill(cr);
-      eval::set_colour(cr, {1, 1, 1});
+      plot::set_colour(cr, {1, 1, 1});
       const std::string label = std::to_string(s.count);
-      eval::draw_text(cr, p.x() - 3.5 * static_cast<double>(label.size()), p.y() + 4, label, 10,
+      plot::draw_text(cr, p.x() - 3.5 * static_cast<double>(label.size()), p.y() + 4, label, 10,
                       true);
     }
-    eval::set_colour(cr, {0, 0, 0});
-    eval::draw_text(
-        cr, eval::MetricCanvas::kMarginPx, 22,
+    plot::set_colour(cr, {0, 0, 0});
+    plot::draw_text(
+        cr, plot::MetricCanvas::kMarginPx, 22,
         fmt::format("{}: {} access points placed greedily", scene_name, result.steps.size()), 15,
         true);
-    eval::draw_text(cr, eval::MetricCanvas::kMarginPx, 38,
+    plot::draw_text(cr, plot::MetricCanvas::kMarginPx, 38,
                     "numbered in the order chosen, each the candidate that best resolved the "
                     "route's pauses",
                     11);
-    eval::draw_scale_bar(cr, canvas);
-    double y = eval::MetricCanvas::kTitlePx + 14;
+    plot::draw_scale_bar(cr, canvas);
+    double y = plot::MetricCanvas::kTitlePx + 14;
     const double x = canvas.plan_right_px() + 20;
-    y = eval::legend_dot(cr, x, y, chosen, "chosen access point");
-    y = eval::legend_dot(cr, x, y, candidate,
+    y = plot::legend_dot(cr, x, y, chosen, "chosen access point");
+    y = plot::legend_dot(cr, x, y, candidate,
                          fmt::format("candidate ({})", result.candidates.size()));
-    y = eval::legend_dot(cr, x, y, pause,
+    y = plot::legend_dot(cr, x, y, pause,
                          fmt::format("pause (scan spot, {})", result.pause_positions_m.size()));
   });
 }
@@ -75,20 +76,20 @@ void draw_positions(const fs::path& path, const PlacementResult& result,
 void draw_curve(const fs::path& path, const std::string& title, const std::string& subtitle,
                 const std::string& y_label, const PlacementResult& result,
                 const std::function<double(const PlacementStep&, bool random)>& value) {
-  eval::LineChart chart;
+  plot::LineChart chart;
   chart.title = title;
   chart.subtitle = subtitle;
   chart.x_label = "access points";
   chart.y_label = y_label;
-  eval::ChartSeries greedy{"greedy", eval::category_colour(3), false, {}};
-  eval::ChartSeries random{"random (median)", eval::category_colour(0), true, {}};
+  plot::ChartSeries greedy{"greedy", plot::category_colour(3), false, {}};
+  plot::ChartSeries random{"random (median)", plot::category_colour(0), true, {}};
   for (const PlacementStep& s : result.steps) {
     const double g = value(s, false), r = value(s, true);
     greedy.points.push_back({static_cast<double>(s.count), g, g, g});
     random.points.push_back({static_cast<double>(s.count), r, r, r});
   }
   chart.series = {greedy, random};
-  eval::draw_line_chart(path, chart);
+  plot::draw_line_chart(path, chart);
 }
 
 }  // namespace

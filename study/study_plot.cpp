@@ -11,7 +11,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "eval/line_chart.hpp"
+#include "plot/line_chart.hpp"
 
 namespace wifislam::study {
 
@@ -187,7 +187,7 @@ StudyPlotSummary plot_study(const ResultTable& table, const fs::path& folder) {
       const auto v = number(row[static_cast<std::size_t>(col)]);
       points[line_of(row)][x_of(row)].push_back(v ? *v : std::numeric_limits<double>::infinity());
     }
-    eval::LineChart chart;
+    plot::LineChart chart;
     chart.title = fmt::format("{}: {}", table.identity.name, metric.label);
     chart.subtitle = fmt::format("{}{}{}", pooled, *metric.note ? "; " : "", metric.note);
     chart.x_label = x_axis >= 0 ? axes[static_cast<std::size_t>(x_axis)].key : "";
@@ -200,9 +200,9 @@ StudyPlotSummary plot_study(const ResultTable& table, const fs::path& folder) {
       const LineKey colour_key{key.first, line_axes.empty() ? key.second : std::string()};
       const auto [it, added] =
           colour_index.emplace(colour_key, static_cast<std::int64_t>(colour_index.size()));
-      eval::ChartSeries series;
+      plot::ChartSeries series;
       series.label = line_label(key);
-      series.colour = eval::category_colour(it->second);
+      series.colour = plot::category_colour(it->second);
       series.dashed = key.second == "vanilla";
       for (const auto& [x, values_in] : by_x) {
         std::vector<double> values = values_in;
@@ -212,7 +212,7 @@ StudyPlotSummary plot_study(const ResultTable& table, const fs::path& folder) {
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
         for (double v : values)
           if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-        eval::ChartPoint p;
+        plot::ChartPoint p;
         p.x = x;
         p.y = std::isfinite(median) ? median : std::numeric_limits<double>::quiet_NaN();
         p.y_lo = std::isfinite(median) ? lo : p.y;
@@ -228,7 +228,7 @@ StudyPlotSummary plot_study(const ResultTable& table, const fs::path& folder) {
     }
     for (const char* extension : {".png", ".svg"}) {
       const fs::path figure = folder / (std::string(metric.column) + extension);
-      eval::draw_line_chart(figure, chart);
+      plot::draw_line_chart(figure, chart);
       summary.figures.push_back(figure);
     }
   }

@@ -32,7 +32,7 @@
 #include "core/error.hpp"
 #include "core/run_format.hpp"
 #include "core/text_lines.hpp"
-#include "eval/line_chart.hpp"
+#include "plot/line_chart.hpp"
 #include "eval/wifi_clusters_csv.hpp"
 
 namespace {
@@ -164,7 +164,7 @@ std::string scaling_csv(const std::vector<RunSummary>& runs) {
 /// One figure: the median of `metric` per query against wings or map keyframes.
 void draw(const std::vector<RunSummary>& runs, bool x_is_map, bool postings,
           const fs::path& out_dir) {
-  eval::LineChart chart;
+  plot::LineChart chart;
   const std::string what = postings ? "inverted-index postings read per loop-detection query"
                                     : "keyframes searched per loop-detection query";
   chart.title = fmt::format("orbslam: {}", what);
@@ -178,14 +178,14 @@ void draw(const std::vector<RunSummary>& runs, bool x_is_map, bool postings,
     return x_is_map ? static_cast<double>(r.map_keyframes) : static_cast<double>(r.wings);
   };
   for (bool wifi : {false, true}) {
-    eval::ChartSeries series;
+    plot::ChartSeries series;
     series.label = wifi ? "Wi-Fi" : "vanilla";
-    series.colour = eval::category_colour(wifi ? 1 : 0);
+    series.colour = plot::category_colour(wifi ? 1 : 0);
     series.dashed = !wifi;
     for (const RunSummary& r : runs) {
       if (r.wifi != wifi) continue;
       const std::vector<double>& v = postings ? r.postings_read : r.keyframes_searched;
-      eval::ChartPoint p;
+      plot::ChartPoint p;
       p.x = x_of(r);
       p.y = quantile(v, 0.5);
       p.y_lo = std::isfinite(p.y) ? quantile(v, 0.1) : p.y;
@@ -193,28 +193,28 @@ void draw(const std::vector<RunSummary>& runs, bool x_is_map, bool postings,
       series.points.push_back(p);
     }
     std::sort(series.points.begin(), series.points.end(),
-              [](const eval::ChartPoint& a, const eval::ChartPoint& b) { return a.x < b.x; });
+              [](const plot::ChartPoint& a, const plot::ChartPoint& b) { return a.x < b.x; });
     if (!series.points.empty()) chart.series.push_back(std::move(series));
   }
   if (!postings) {
-    eval::ChartSeries clusters;
+    plot::ChartSeries clusters;
     clusters.label = "Wi-Fi mean cluster size";
     clusters.colour = {0.55, 0.55, 0.55};
     for (const RunSummary& r : runs) {
       if (!r.wifi) continue;
-      eval::ChartPoint p;
+      plot::ChartPoint p;
       p.x = x_of(r);
       p.y = p.y_lo = p.y_hi = r.mean_cluster_size;
       clusters.points.push_back(p);
     }
     std::sort(clusters.points.begin(), clusters.points.end(),
-              [](const eval::ChartPoint& a, const eval::ChartPoint& b) { return a.x < b.x; });
+              [](const plot::ChartPoint& a, const plot::ChartPoint& b) { return a.x < b.x; });
     if (!clusters.points.empty()) chart.series.push_back(std::move(clusters));
   }
   const std::string stem = fmt::format(
       "{}_vs_{}", postings ? "postings_read" : "keyframes_searched", x_is_map ? "map" : "wings");
   for (const char* extension : {".png", ".svg"}) {
-    eval::draw_line_chart(out_dir / (stem + extension), chart);
+    plot::draw_line_chart(out_dir / (stem + extension), chart);
   }
 }
 

@@ -22,7 +22,7 @@
 #include "core/error.hpp"
 #include "core/run_format.hpp"
 #include "core/text_lines.hpp"
-#include "eval/line_chart.hpp"
+#include "plot/line_chart.hpp"
 
 namespace {
 
@@ -113,12 +113,12 @@ int main(int argc, char** argv) {
   }
   if (figure.empty() || inputs.empty()) return usage();
   try {
-    eval::LineChart chart;
+    plot::LineChart chart;
     chart.title = title;
     chart.subtitle = "vanilla dashed, Wi-Fi solid; \"(immune)\": WM nodes Wi-Fi immunisation kept";
     chart.x_label = "node";
     chart.y_label = "nodes";
-    const eval::Colour palette[] = {{0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17},
+    const plot::Colour palette[] = {{0.12, 0.47, 0.71}, {0.84, 0.15, 0.16}, {0.17, 0.63, 0.17},
                                     {0.58, 0.40, 0.74}, {1.00, 0.50, 0.05}, {0.55, 0.34, 0.29}};
     fmt::print(
         "| run | variant | nodes | largest WM | mean WM | LTM at the end | transfers | "
@@ -126,9 +126,9 @@ int main(int argc, char** argv) {
     std::size_t k = 0;
     for (const auto& [label, folder] : inputs) {
       const MemoryRun run = read_run(label, folder);
-      const eval::Colour colour = palette[k++ % std::size(palette)];
-      eval::ChartSeries wm{run.label, colour, !run.wifi, {}};
-      eval::ChartSeries immune{run.label + " (immune)", colour, false, {}};
+      const plot::Colour colour = palette[k++ % std::size(palette)];
+      plot::ChartSeries wm{run.label, colour, !run.wifi, {}};
+      plot::ChartSeries immune{run.label + " (immune)", colour, false, {}};
       double sum = 0;
       // About 120 points a line: the chart marks every point, and dashes need room between marks.
       const std::size_t step = std::max<std::size_t>(1, run.wm.size() / 120);
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
                  run.wm.empty() ? 0.0 : sum / static_cast<double>(run.wm.size()),
                  run.ltm.empty() ? 0.0 : run.ltm.back(), run.transferred, run.retrieved);
     }
-    eval::draw_line_chart(figure, chart);
+    plot::draw_line_chart(figure, chart);
     fmt::print("wrote {}\n", figure.string());
   } catch (const std::exception& e) {
     fmt::print(stderr, "rtabmap_memory_plot: {}\n", e.what());

@@ -1,12 +1,11 @@
 #include "sim/radio/radio_map.hpp"
 
-#include <cairo.h>
-
 #include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <string>
 #include <thread>
 
@@ -15,12 +14,11 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/thread_start.hpp"
+#include "plot/canvas.hpp"
 
 namespace wifislam::sim::radio {
 
 namespace {
-
-void add_region_path(cairo_t* cr, const PolygonWithHoles2& region);
 
 double ap_rssi(const PropagationModel& model, std::size_t a, const RadioLink& link,
                RadioMapBand band) {
@@ -47,7 +45,7 @@ std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& 
   cairo_scale(cr, 1.0 / resolution_m, 1.0 / resolution_m);
   cairo_translate(cr, -origin_m.x(), -origin_m.y());
   for (const auto& region : plan.free_space) {
-    add_region_path(cr, region);
+    plot::region_path(cr, region, plot::as_is);
     cairo_fill(cr);  // region by region: overlapping regions must not cancel out
   }
   cairo_destroy(cr);
@@ -61,38 +59,6 @@ std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& 
           data[static_cast<std::size_t>(r) * stride + c] != 0;
   cairo_surface_destroy(surface);
   return mask;
-}
-
-// Viridis, sampled at five points (matplotlib's perceptually uniform map).
-std::array<double, 3> colormap(double t) {
-  static constexpr double kStops[5][3] = {{0.267, 0.005, 0.329},
-                                          {0.231, 0.322, 0.545},
-                                          {0.129, 0.569, 0.549},
-                                          {0.369, 0.788, 0.384},
-                                          {0.993, 0.906, 0.144}};
-  t = std::clamp(t, 0.0, 1.0) * 4.0;
-  const int i = std::min(static_cast<int>(t), 3);
-  const double f = t - i;
-  return {kStops[i][0] + f * (kStops[i + 1][0] - kStops[i][0]),
-          kStops[i][1] + f * (kStops[i + 1][1] - kStops[i][1]),
-          kStops[i][2] + f * (kStops[i + 1][2] - kStops[i][2])};
-}
-
-cairo_status_t append_to_string(void* closure, const unsigned char* data, unsigned int length) {
-  static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
-  return CAIRO_STATUS_SUCCESS;
-}
-
-void add_polygon_path(cairo_t* cr, const Polygon2& poly) {
-  if (poly.empty()) return;
-  cairo_move_to(cr, poly[0].x(), poly[0].y());
-  for (std::size_t i = 1; i < poly.size(); ++i) cairo_line_to(cr, poly[i].x(), poly[i].y());
-  cairo_close_path(cr);
-}
-
-void add_region_path(cairo_t* cr, const PolygonWithHoles2& region) {
-  add_polygon_path(cr, region.outer);
-  for (const auto& hole : region.holes) add_polygon_path(cr, hole);
 }
 
 }  // namespace
@@ -212,6 +178,8 @@ void write_radio_map_png(const RadioMap& map, const FloorPlan& plan,
 
   // The grid as a small image (one pixel per cell, y flipped), scaled up with nearest filtering.
   cairo_surface_t* cells = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, map.cols, map.rows);
+  std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)> cells_guard(
+      cells, &cairo_surface_destroy);
   cairo_surface_flush(cells);
   unsigned char* data = cairo_image_surface_get_data(cells);
   const int stride = cairo_image_surface_get_stride(cells);
@@ -220,95 +188,75 @@ void write_radio_map_png(const RadioMap& map, const FloorPlan& plan,
                                                             stride);
     for (int c = 0; c < map.cols; ++c) {
       const double v = map.at(c, r);
-      std::array<double, 3> rgb = {0.82, 0.82, 0.82};
-      if (std::isfinite(v) && v >= lo) rgb = colormap((v - lo) / (hi - lo));
-      row[c] = 0xFF000000u | (static_cast<std::uint32_t>(rgb[0] * 255.0 + 0.5) << 16) |
-               (static_cast<std::uint32_t>(rgb[1] * 255.0 + 0.5) << 8) |
-               static_cast<std::uint32_t>(rgb[2] * 255.0 + 0.5);
+      plot::Colour rgb{0.82, 0.82, 0.82};
+      if (std::isfinite(v) && v >= lo) rgb = plot::viridis((v - lo) / (hi - lo));
+      row[c] = 0xFF000000u | (static_cast<std::uint32_t>(rgb.r * 255.0 + 0.5) << 16) |
+               (static_cast<std::uint32_t>(rgb.g * 255.0 + 0.5) << 8) |
+               static_cast<std::uint32_t>(rgb.b * 255.0 + 0.5);
     }
   }
   cairo_surface_mark_dirty(cells);
 
-  cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height);
-  cairo_t* cr = cairo_create(surface);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
+  const auto draw = [&](cairo_t* cr) {
+    // Plan coordinates: metres, y up.
+    cairo_save(cr);
+    cairo_translate(cr, margin, height - margin);
+    cairo_scale(cr, px_per_m, -px_per_m);
+    cairo_translate(cr, -plan.bounds_min_m.x(), -plan.bounds_min_m.y());
+    cairo_matrix_t plan_matrix;
+    cairo_get_matrix(cr, &plan_matrix);
 
-  // Plan coordinates: metres, y up.
-  cairo_save(cr);
-  cairo_translate(cr, margin, height - margin);
-  cairo_scale(cr, px_per_m, -px_per_m);
-  cairo_translate(cr, -plan.bounds_min_m.x(), -plan.bounds_min_m.y());
-  cairo_matrix_t plan_matrix;
-  cairo_get_matrix(cr, &plan_matrix);
+    // Heat map clipped to free space (even-odd: holes cut out).
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
+    for (const auto& region : plan.free_space) plot::region_path(cr, region, plot::as_is);
+    if (plan.free_space.empty()) {
+      cairo_rectangle(cr, plan.bounds_min_m.x(), plan.bounds_min_m.y(), extent.x(), extent.y());
+    }
+    cairo_clip(cr);
+    cairo_save(cr);
+    cairo_translate(cr, map.origin_m.x(), map.origin_m.y() + map.rows * map.resolution_m);
+    cairo_scale(cr, map.resolution_m, -map.resolution_m);
+    cairo_set_source_surface(cr, cells, 0, 0);
+    cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
+    cairo_paint(cr);
+    cairo_restore(cr);
+    cairo_reset_clip(cr);
 
-  // Heat map clipped to free space (even-odd: holes cut out).
-  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_EVEN_ODD);
-  for (const auto& region : plan.free_space) add_region_path(cr, region);
-  if (plan.free_space.empty()) {
-    cairo_rectangle(cr, plan.bounds_min_m.x(), plan.bounds_min_m.y(), extent.x(), extent.y());
-  }
-  cairo_clip(cr);
-  cairo_save(cr);
-  cairo_translate(cr, map.origin_m.x(), map.origin_m.y() + map.rows * map.resolution_m);
-  cairo_scale(cr, map.resolution_m, -map.resolution_m);
-  cairo_set_source_surface(cr, cells, 0, 0);
-  cairo_pattern_set_filter(cairo_get_source(cr), CAIRO_FILTER_NEAREST);
-  cairo_paint(cr);
-  cairo_restore(cr);
-  cairo_reset_clip(cr);
-
-  // Walls.
-  cairo_set_source_rgb(cr, 0.15, 0.15, 0.15);
-  for (const auto& region : plan.walls) add_region_path(cr, region);
-  cairo_fill(cr);
-  cairo_restore(cr);
-
-  // Access points: white dots with their ids.
-  cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_BOLD);
-  cairo_set_font_size(cr, 11);
-  for (const AccessPoint& ap : access_points) {
-    double x = ap.position_m.x(), y = ap.position_m.y();
-    cairo_matrix_transform_point(&plan_matrix, &x, &y);
-    const bool selected = !map.ap_id || *map.ap_id == ap.id;
-    cairo_new_path(cr);  // show_text leaves a current point; do not join it to the next dot
-    cairo_arc(cr, x, y, selected ? 5 : 3.5, 0, 2 * M_PI);
-    cairo_set_source_rgb(cr, 1, 1, 1);
-    cairo_fill_preserve(cr);
-    cairo_set_source_rgb(cr, selected ? 0.8 : 0.3, 0.1, 0.1);
-    cairo_set_line_width(cr, 1.5);
-    cairo_stroke(cr);
-    cairo_move_to(cr, x + 6, y - 6);
-    cairo_show_text(cr, fmt::format("{}", ap.id).c_str());
-  }
-
-  // Colour bar with dBm labels.
-  const double bx = width - bar_w + 10, by = margin, bh = height - 2 * margin, bw = 18;
-  for (int i = 0; i < static_cast<int>(bh); ++i) {
-    const auto rgb = colormap(1.0 - i / bh);
-    cairo_set_source_rgb(cr, rgb[0], rgb[1], rgb[2]);
-    cairo_rectangle(cr, bx, by + i, bw, 1);
+    // Walls, as one path (even-odd).
+    plot::set_colour(cr, {0.15, 0.15, 0.15});
+    for (const auto& region : plan.walls) plot::region_path(cr, region, plot::as_is);
     cairo_fill(cr);
-  }
-  cairo_set_source_rgb(cr, 0, 0, 0);
-  cairo_set_font_size(cr, 10);
-  for (double v = lo; v <= hi + 1e-9; v += 10.0) {
-    const double y = by + bh * (1.0 - (v - lo) / (hi - lo));
-    cairo_move_to(cr, bx + bw + 4, y + 3);
-    cairo_show_text(cr, fmt::format("{:.0f}", v).c_str());
-  }
-  cairo_move_to(cr, bx - 4, by - 6);
-  cairo_show_text(cr, "dBm");
+    cairo_restore(cr);
 
-  std::string png;
-  const cairo_status_t status = cairo_surface_write_to_png_stream(surface, append_to_string, &png);
-  cairo_destroy(cr);
-  cairo_surface_destroy(surface);
-  cairo_surface_destroy(cells);
-  if (status != CAIRO_STATUS_SUCCESS)
-    throw IoError(fmt::format("cannot encode radio map PNG {}: {}", path.string(),
-                              cairo_status_to_string(status)));
-  write_file_atomic(path, png);
+    // Access points: white dots with their ids.
+    for (const AccessPoint& ap : access_points) {
+      double x = ap.position_m.x(), y = ap.position_m.y();
+      cairo_matrix_transform_point(&plan_matrix, &x, &y);
+      const bool selected = !map.ap_id || *map.ap_id == ap.id;
+      cairo_arc(cr, x, y, selected ? 5 : 3.5, 0, 2 * M_PI);
+      plot::set_colour(cr, {1, 1, 1});
+      cairo_fill_preserve(cr);
+      plot::set_colour(cr, {selected ? 0.8 : 0.3, 0.1, 0.1});
+      cairo_set_line_width(cr, 1.5);
+      cairo_stroke(cr);
+      plot::draw_text(cr, x + 6, y - 6, fmt::format("{}", ap.id), 11, true);
+    }
+
+    // Colour bar with dBm labels.
+    const double bx = width - bar_w + 10, by = margin, bh = height - 2 * margin, bw = 18;
+    for (int i = 0; i < static_cast<int>(bh); ++i) {
+      plot::set_colour(cr, plot::viridis(1.0 - i / bh));
+      cairo_rectangle(cr, bx, by + i, bw, 1);
+      cairo_fill(cr);
+    }
+    plot::set_colour(cr, {0, 0, 0});
+    for (double v = lo; v <= hi + 1e-9; v += 10.0) {
+      const double y = by + bh * (1.0 - (v - lo) / (hi - lo));
+      plot::draw_text(cr, bx + bw + 4, y + 3, fmt::format("{:.0f}", v), 10, true);
+    }
+    plot::draw_text(cr, bx - 4, by - 6, "dBm", 10, true);
+  };
+  plot::write_figure(path, width, height, draw, plot::PixelFormat::kRgb24);
 }
 
 void write_radio_map_csv(const RadioMap& map, const std::filesystem::path& path) {

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "eval/plot_canvas.hpp"
+#include "plot/canvas.hpp"
 
-namespace wifislam::eval {
+namespace wifislam::plot {
 
 struct ChartPoint {
   double x = 0, y = 0;
@@ -40,4 +40,4 @@ double tick_step(double range, int target);
 /// Draws `chart` into `path` (1000 x 560 px). Throws IoError when it cannot be written.
 void draw_line_chart(const std::filesystem::path& path, const LineChart& chart);
 
-}  // namespace wifislam::eval
+}  // namespace wifislam::plot

@@ -1,4 +1,4 @@
-#include "eval/line_chart.hpp"
+#include "plot/line_chart.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-namespace wifislam::eval {
+namespace wifislam::plot {
 
 double tick_step(double range, int target) {
   const double raw = range / std::max(1, target);
@@ -57,7 +57,7 @@ void draw_line_chart(const std::filesystem::path& path, const LineChart& chart) 
                            top + plot_h - (y - y_min) / (y_max - y_min) * plot_h);
   };
 
-  render_figure(path, kWidth, kHeight, [&](cairo_t* cr) {
+  write_figure(path, kWidth, kHeight, [&](cairo_t* cr) {
     cairo_set_line_width(cr, 1.0);
     // Vertical grid and x tick labels.
     std::vector<std::pair<double, std::string>> x_ticks;
@@ -184,4 +184,4 @@ void draw_line_chart(const std::filesystem::path& path, const LineChart& chart) 
   });
 }
 
-}  // namespace wifislam::eval
+}  // namespace wifislam::plot
