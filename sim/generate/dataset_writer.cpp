@@ -1,14 +1,14 @@
 #include "sim/generate/dataset_writer.hpp"
 
 #include <chrono>
-#include <condition_variable>
 #include <deque>
 #include <fstream>
 #include <future>
+#include <limits>
 #include <map>
-#include <mutex>
+#include <optional>
 #include <set>
-#include <thread>
+#include <stdexcept>
 
 #include <fmt/format.h>
 #include <Eigen/Core>
@@ -21,10 +21,10 @@
 #include "core/dataset_manifest.hpp"
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
-#include "core/thread_start.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
+#include "core/worker_pool.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/radio/radio_band.hpp"
 #include "sim/render/depth_png.hpp"
@@ -92,55 +92,6 @@ WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_pat
   out.io_s = seconds_since(t0);
   return out;
 }
-
-/// A fixed set of worker threads running jobs in submission order of start; results are
-/// collected through futures in submission order. Starts as many of the requested threads as the
-/// system allows (`size()`, possibly 0).
-class WorkerPool {
- public:
-  explicit WorkerPool(int threads) {
-    start_threads(workers_, threads, [this] { run(); });
-  }
-  int size() const { return static_cast<int>(workers_.size()); }
-  ~WorkerPool() {
-    {
-      std::lock_guard lock(mutex_);
-      stopping_ = true;
-    }
-    wake_.notify_all();
-    for (auto& w : workers_) w.join();
-  }
-  std::future<WrittenFrame> submit(std::function<WrittenFrame()> job) {
-    std::packaged_task<WrittenFrame()> task(std::move(job));
-    auto future = task.get_future();
-    {
-      std::lock_guard lock(mutex_);
-      jobs_.push_back(std::move(task));
-    }
-    wake_.notify_one();
-    return future;
-  }
-
- private:
-  void run() {
-    while (true) {
-      std::packaged_task<WrittenFrame()> job;
-      {
-        std::unique_lock lock(mutex_);
-        wake_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
-        if (jobs_.empty()) return;
-        job = std::move(jobs_.front());
-        jobs_.pop_front();
-      }
-      job();
-    }
-  }
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  std::deque<std::packaged_task<WrittenFrame()>> jobs_;
-  bool stopping_ = false;
-  std::vector<std::thread> workers_;
-};
 
 std::string bool_text(bool b) { return b ? "true" : "false"; }
 
@@ -216,211 +167,276 @@ std::string parameters_json(const Scene& scene, const GenerateOptions& options) 
   return p.dump();
 }
 
-}  // namespace
+/// Writes one dataset from a pipeline into the staging folder of `folder`, streaming: the calling
+/// thread takes the pipeline's events in time order (rendering happens there) and writes the text
+/// files; PNG encoding runs on the worker pool, and each frame's list lines are written when its
+/// images are done, oldest first, so every byte is the same whatever the thread count.
+class DatasetWriter {
+ public:
+  DatasetWriter(GenerationPipeline& pipeline, AtomicDirectory& folder,
+                const GenerateOptions& options, Clock::time_point start)
+      : pipeline_(pipeline),
+        folder_(folder),
+        dir_(folder.staging_path()),
+        options_(options),
+        start_(start),
+        groundtruth_(dir_ / dataset::kGroundTruth,
+                     fmt::format("# ground truth trajectory\n# file: '{}'\n# timestamp tx ty tz "
+                                 "qx qy qz qw (camera optical frame to world)\n",
+                                 pipeline.scene().name)),
+        odometry_(dir_ / dataset::kOdometry,
+                  "# wheel odometry: robot base in the odometry frame (calibration.yaml: "
+                  "camera_in_base)\n# timestamp tx ty tz qx qy qz qw\n"),
+        wifi_(dir_ / dataset::kWifi, wifi_csv_header() + "\n") {}
 
-GenerateSummary generate_dataset(const Scene& input_scene, const fs::path& output,
-                                 const GenerateOptions& options) {
-  const auto t_start = Clock::now();
-  AtomicDirectory folder(output, options.overwrite);
-  const fs::path dir = folder.staging_path();
-  GenerationPipeline pipeline(resolve_scene(input_scene, options), options);
-  const Scene& scene = pipeline.scene();
-
-  GenerateSummary summary;
-  summary.output = folder.final_path();
-  summary.scene_name = scene.name;
-  summary.seed = scene.seed;
-  summary.fps = scene.sensors.camera.fps;
-  summary.time_origin_s = scene.sensors.time_origin_s;
-  summary.images = options.images;
-  summary.access_points = static_cast<std::int64_t>(pipeline.radio().access_points().size());
-  for (const radio::AccessPoint& ap : pipeline.radio().access_points())
-    summary.bssids += static_cast<std::int64_t>(ap.bssids.size());
-  int threads = clamp_thread_count(options.threads);
-
-  auto t_io = Clock::now();
-  write_file_atomic(dir / dataset::kScene, resolved_scene_yaml(scene));
-  write_file_atomic(dir / dataset::kCalibration,
-                    calibration_to_yaml(make_calibration(pipeline, options)));
-  write_file_atomic(dir / dataset::kAccessPoints, access_points_csv(pipeline.radio()));
-  std::optional<TextOutput> rgb_list, depth_list, associations, image_sums;
-  if (options.images) {
-    fs::create_directories(dir / dataset::kRgbDir);
-    fs::create_directories(dir / dataset::kDepthDir);
-    const std::string name = scene.name + " (wifislam)";
-    rgb_list.emplace(dir / dataset::kRgbList,
-                     fmt::format("# color images\n# file: '{}'\n# timestamp filename\n", name));
-    depth_list.emplace(dir / dataset::kDepthList,
-                       fmt::format("# depth maps\n# file: '{}'\n# timestamp filename\n", name));
-    associations.emplace(dir / dataset::kAssociations);
-    image_sums.emplace(dir / dataset::kImageChecksums);
+  GenerateSummary write() {
+    describe_scene();
+    const auto t_io = Clock::now();
+    write_scene_files();
+    summary_.io_s += seconds_since(t_io);
+    start_encoders();
+    while (auto generated = pipeline_.next()) take(*generated);
+    while (!pending_.empty()) collect_oldest();
+    pool_.reset();
+    for (const RobotPause& p : pipeline_.motion().pauses())
+      summary_.pauses += p.start <= pipeline_.schedule().end_time();
+    finish();
+    return summary_;
   }
-  TextOutput groundtruth(
-      dir / dataset::kGroundTruth,
-      fmt::format("# ground truth trajectory\n# file: '{}'\n# timestamp tx ty tz "
-                  "qx qy qz qw (camera optical frame to world)\n",
-                  scene.name));
-  TextOutput odometry(dir / dataset::kOdometry,
-                      "# wheel odometry: robot base in the odometry frame (calibration.yaml: "
-                      "camera_in_base)\n# timestamp tx ty tz qx qy qz qw\n");
-  TextOutput wifi(dir / dataset::kWifi, wifi_csv_header() + "\n");
-  summary.io_s += seconds_since(t_io);
 
-  // Frames in flight on the workers, oldest first; bounded so memory stays flat.
+ private:
+  /// A frame whose images are being encoded, oldest first.
   struct Pending {
     FramePair pair;
     std::future<WrittenFrame> result;
   };
-  std::deque<Pending> pending;
-  std::optional<WorkerPool> pool;
-  if (options.images && threads > 1) {
-    pool.emplace(threads);
-    // A process or memory limit may allow fewer threads: encode with those, or inline.
-    threads = std::max(1, pool->size());
-    if (pool->size() == 0) pool.reset();
-  }
-  summary.threads = options.images ? threads : 1;
-  const std::size_t max_pending = static_cast<std::size_t>(2 * threads);
-  const std::int64_t frames_total = pipeline.schedule().frame_count();
-  std::int64_t frames_done = 0;
 
-  auto finish_frame = [&](const FramePair& pair, const WrittenFrame& written) {
-    summary.png_encode_s += written.encode_s;
-    summary.io_s += written.io_s;
-    summary.bytes_written += written.bytes;
-    rgb_list->write(format_tum_file_line(pair.rgb_time, pair.rgb_path));
-    depth_list->write(format_tum_file_line(pair.depth_time, pair.depth_path));
-    associations->write(format_association_line(pair));
-    image_sums->write(format_checksum_line(written.rgb_sha256, pair.rgb_path));
-    image_sums->write(format_checksum_line(written.depth_sha256, pair.depth_path));
-  };
-  auto report_progress = [&] {
-    ++frames_done;
-    if (options.on_progress)
-      options.on_progress({frames_done, frames_total, seconds_since(t_start)});
-  };
-  auto collect_oldest = [&] {
-    Pending p = std::move(pending.front());
-    pending.pop_front();
+  void describe_scene() {
+    const Scene& scene = pipeline_.scene();
+    summary_.output = folder_.final_path();
+    summary_.scene_name = scene.name;
+    summary_.seed = scene.seed;
+    summary_.fps = scene.sensors.camera.fps;
+    summary_.time_origin_s = scene.sensors.time_origin_s;
+    summary_.images = options_.images;
+    summary_.access_points = static_cast<std::int64_t>(pipeline_.radio().access_points().size());
+    for (const radio::AccessPoint& ap : pipeline_.radio().access_points())
+      summary_.bssids += static_cast<std::int64_t>(ap.bssids.size());
+  }
+
+  void write_scene_files() {
+    const Scene& scene = pipeline_.scene();
+    write_file_atomic(dir_ / dataset::kScene, resolved_scene_yaml(scene));
+    write_file_atomic(dir_ / dataset::kCalibration,
+                      calibration_to_yaml(make_calibration(pipeline_, options_)));
+    write_file_atomic(dir_ / dataset::kAccessPoints, access_points_csv(pipeline_.radio()));
+    if (!options_.images) return;
+    fs::create_directories(dir_ / dataset::kRgbDir);
+    fs::create_directories(dir_ / dataset::kDepthDir);
+    const std::string name = scene.name + " (wifislam)";
+    rgb_list_.emplace(dir_ / dataset::kRgbList,
+                      fmt::format("# color images\n# file: '{}'\n# timestamp filename\n", name));
+    depth_list_.emplace(dir_ / dataset::kDepthList,
+                        fmt::format("# depth maps\n# file: '{}'\n# timestamp filename\n", name));
+    associations_.emplace(dir_ / dataset::kAssociations);
+    image_sums_.emplace(dir_ / dataset::kImageChecksums);
+  }
+
+  void start_encoders() {
+    int threads = clamp_thread_count(options_.threads);
+    if (options_.images && threads > 1) {
+      pool_.emplace(threads);
+      // A process or memory limit may allow fewer threads: encode with those, or inline.
+      threads = std::max(1, pool_->size());
+      if (pool_->size() == 0) pool_.reset();
+    }
+    summary_.threads = options_.images ? threads : 1;
+    max_pending_ = static_cast<std::size_t>(2 * threads);
+  }
+
+  void take(GeneratedEvent& generated) {
+    const Timestamp t = event_time(generated.event);
+    if (!any_event_) summary_.first_time = t;
+    summary_.last_time = t;
+    any_event_ = true;
+    if (const auto* reading = std::get_if<OdometryReading>(&generated.event)) {
+      odometry_.write(
+          format_tum_line(StampedPose::from_pose(reading->time, reading->base_in_odom)));
+      odometry_.write("\n");
+      ++summary_.odometry_readings;
+    } else if (const auto* scan = std::get_if<WifiScan>(&generated.event)) {
+      take_scan(*scan);
+    } else {
+      take_frame(std::get<RgbdFrame>(generated.event), generated.camera_to_world);
+    }
+  }
+
+  void take_scan(const WifiScan& scan) {
+    wifi_.write(format_wifi_csv_rows(scan));
+    // wifi.csv has one row per reading, so a scan that heard nothing leaves no trace in it:
+    // the manifest counts the scans the file holds, and the silent ones apart.
+    if (scan.readings.empty()) {
+      ++summary_.wifi_scans_empty;
+    } else {
+      ++summary_.wifi_scans;
+    }
+    summary_.wifi_readings += static_cast<std::int64_t>(scan.readings.size());
+    const int pause = pipeline_.schedule().scans()[scan_index_++].pause_index;
+    if (pause >= 0) {
+      auto& heard = aps_by_pause_[pause];
+      for (const WifiReading& r : scan.readings) heard.insert(r.bssid.without_last_nibble());
+    }
+  }
+
+  void take_frame(RgbdFrame& frame, const Pose& camera_to_world) {
+    groundtruth_.write(format_tum_line(StampedPose::from_pose(frame.time, camera_to_world)));
+    groundtruth_.write("\n");
+    ++summary_.frames;
+    if (!options_.images) {
+      report_progress();
+      return;
+    }
+    const FramePair pair{frame.time, dataset::frame_image_path(dataset::kRgbDir, frame.time),
+                         frame.time, dataset::frame_image_path(dataset::kDepthDir, frame.time), 0};
+    if (!pool_) {
+      finish_frame(
+          pair, encode_and_write(dir_, pair.rgb_path, pair.depth_path, frame.rgb, frame.depth_m));
+      report_progress();
+      return;
+    }
+    while (pending_.size() >= max_pending_) collect_oldest();
+    pending_.push_back({pair, pool_->submit([dir = dir_, pair, rgb = std::move(frame.rgb),
+                                             depth = std::move(frame.depth_m)] {
+                          return encode_and_write(dir, pair.rgb_path, pair.depth_path, rgb, depth);
+                        })});
+  }
+
+  void finish_frame(const FramePair& pair, const WrittenFrame& written) {
+    summary_.png_encode_s += written.encode_s;
+    summary_.io_s += written.io_s;
+    summary_.bytes_written += written.bytes;
+    rgb_list_->write(format_tum_file_line(pair.rgb_time, pair.rgb_path));
+    depth_list_->write(format_tum_file_line(pair.depth_time, pair.depth_path));
+    associations_->write(format_association_line(pair));
+    image_sums_->write(format_checksum_line(written.rgb_sha256, pair.rgb_path));
+    image_sums_->write(format_checksum_line(written.depth_sha256, pair.depth_path));
+  }
+
+  void collect_oldest() {
+    Pending p = std::move(pending_.front());
+    pending_.pop_front();
     finish_frame(p.pair, p.result.get());
     report_progress();
-  };
+  }
 
-  std::map<int, std::set<MacAddress>> aps_by_pause;
-  std::size_t scan_index = 0;
-  const auto& scan_windows = pipeline.schedule().scans();
-  bool any_event = false;
-  while (auto generated = pipeline.next()) {
-    const Timestamp t = event_time(generated->event);
-    if (!any_event) summary.first_time = t;
-    summary.last_time = t;
-    any_event = true;
-    if (const auto* reading = std::get_if<OdometryReading>(&generated->event)) {
-      odometry.write(format_tum_line(StampedPose::from_pose(reading->time, reading->base_in_odom)));
-      odometry.write("\n");
-      ++summary.odometry_readings;
-    } else if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
-      wifi.write(format_wifi_csv_rows(*scan));
-      // wifi.csv has one row per reading, so a scan that heard nothing leaves no trace in it:
-      // the manifest counts the scans the file holds, and the silent ones apart.
-      if (scan->readings.empty()) {
-        ++summary.wifi_scans_empty;
-      } else {
-        ++summary.wifi_scans;
-      }
-      summary.wifi_readings += static_cast<std::int64_t>(scan->readings.size());
-      const int pause = scan_windows[scan_index++].pause_index;
-      if (pause >= 0) {
-        auto& heard = aps_by_pause[pause];
-        for (const WifiReading& r : scan->readings) heard.insert(r.bssid.without_last_nibble());
-      }
-    } else {
-      auto& frame = std::get<RgbdFrame>(generated->event);
-      groundtruth.write(
-          format_tum_line(StampedPose::from_pose(frame.time, generated->camera_to_world)));
-      groundtruth.write("\n");
-      ++summary.frames;
-      if (!options.images) {
-        report_progress();
-        continue;
-      }
-      const FramePair pair{frame.time, dataset::frame_image_path(dataset::kRgbDir, frame.time),
-                           frame.time, dataset::frame_image_path(dataset::kDepthDir, frame.time),
-                           0};
-      if (!pool) {
-        finish_frame(
-            pair, encode_and_write(dir, pair.rgb_path, pair.depth_path, frame.rgb, frame.depth_m));
-        report_progress();
-        continue;
-      }
-      while (pending.size() >= max_pending) collect_oldest();
-      pending.push_back({pair, pool->submit([dir, pair, rgb = std::move(frame.rgb),
-                                             depth = std::move(frame.depth_m)] {
-                           return encode_and_write(dir, pair.rgb_path, pair.depth_path, rgb, depth);
-                         })});
+  void report_progress() {
+    ++frames_done_;
+    if (options_.on_progress) {
+      options_.on_progress(
+          {frames_done_, pipeline_.schedule().frame_count(), seconds_since(start_)});
     }
   }
-  while (!pending.empty()) collect_oldest();
-  pool.reset();
-  for (const RobotPause& p : pipeline.motion().pauses())
-    summary.pauses += p.start <= pipeline.schedule().end_time();
 
-  t_io = Clock::now();
-  for (TextOutput* out : {&groundtruth, &odometry, &wifi}) out->close();
-  for (auto* out : {&rgb_list, &depth_list, &associations, &image_sums})
-    if (*out) (*out)->close();
-
-  DatasetManifest manifest;
-  manifest.images = options.images;
-  manifest.versions = {{"wifislam", WIFISLAM_VERSION},
-                       {"opencv", CV_VERSION},
-                       {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
-                                             EIGEN_MINOR_VERSION)}};
-  manifest.parameters_json = parameters_json(scene, options);
-  manifest.counts = {{"frames", options.images ? summary.frames : 0},
-                     {"groundtruth_poses", summary.frames},
-                     {"odometry_readings", summary.odometry_readings},
-                     {"wifi_scans", summary.wifi_scans},
-                     {"wifi_scans_that_heard_nothing", summary.wifi_scans_empty},
-                     {"wifi_readings", summary.wifi_readings},
-                     {"pauses", summary.pauses},
-                     {"access_points", summary.access_points},
-                     {"bssids", summary.bssids}};
-  std::vector<std::string> files;
-  if (options.images) files = {dataset::kRgbList, dataset::kDepthList, dataset::kAssociations};
-  for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
-                        dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
-    files.push_back(f);
-  if (options.images) files.push_back(dataset::kImageChecksums);
-  for (const std::string& f : files) {
-    manifest.files.push_back(describe_dataset_file(dir, f));
-    summary.bytes_written += manifest.files.back().bytes;
+  /// Closes the files, writes the manifest (last: its presence marks a finished dataset),
+  /// commits the folder and completes the summary.
+  void finish() {
+    const auto t_io = Clock::now();
+    for (TextOutput* out : {&groundtruth_, &odometry_, &wifi_}) out->close();
+    for (auto* out : {&rgb_list_, &depth_list_, &associations_, &image_sums_})
+      if (*out) (*out)->close();
+    const std::string manifest_text = manifest_to_json(make_manifest());
+    write_file_atomic(dir_ / dataset::kManifest, manifest_text);
+    summary_.bytes_written += manifest_text.size();
+    folder_.commit();
+    summary_.io_s += seconds_since(t_io);
+    summarise_pauses();
+    summary_.duration_s = pipeline_.schedule().end_time().seconds();
+    summary_.route_length_m =
+        pipeline_.motion().state_at(pipeline_.schedule().end_time()).arc_length_m;
+    summary_.world_s = pipeline_.timings().setup_s;
+    summary_.render_s = pipeline_.timings().render_s;
+    summary_.sensor_s = pipeline_.timings().sensor_s;
+    summary_.radio_s = pipeline_.timings().radio_s;
+    summary_.total_s = seconds_since(start_);
   }
-  const std::string manifest_text = manifest_to_json(manifest);
-  write_file_atomic(dir / dataset::kManifest, manifest_text);
-  summary.bytes_written += manifest_text.size();
-  folder.commit();
-  summary.io_s += seconds_since(t_io);
 
-  if (!aps_by_pause.empty()) {
+  DatasetManifest make_manifest() {
+    DatasetManifest manifest;
+    manifest.images = options_.images;
+    manifest.versions = {{"wifislam", WIFISLAM_VERSION},
+                         {"opencv", CV_VERSION},
+                         {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
+                                               EIGEN_MINOR_VERSION)}};
+    manifest.parameters_json = parameters_json(pipeline_.scene(), options_);
+    manifest.counts = {{"frames", options_.images ? summary_.frames : 0},
+                       {"groundtruth_poses", summary_.frames},
+                       {"odometry_readings", summary_.odometry_readings},
+                       {"wifi_scans", summary_.wifi_scans},
+                       {"wifi_scans_that_heard_nothing", summary_.wifi_scans_empty},
+                       {"wifi_readings", summary_.wifi_readings},
+                       {"pauses", summary_.pauses},
+                       {"access_points", summary_.access_points},
+                       {"bssids", summary_.bssids}};
+    std::vector<std::string> files;
+    if (options_.images) files = {dataset::kRgbList, dataset::kDepthList, dataset::kAssociations};
+    for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
+                          dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
+      files.push_back(f);
+    if (options_.images) files.push_back(dataset::kImageChecksums);
+    for (const std::string& f : files) {
+      manifest.files.push_back(describe_dataset_file(dir_, f));
+      summary_.bytes_written += manifest.files.back().bytes;
+    }
+    return manifest;
+  }
+
+  /// Access points heard per pause: the paper's signature size.
+  void summarise_pauses() {
+    if (aps_by_pause_.empty()) return;
     std::int64_t sum = 0;
-    summary.aps_heard_per_pause_min = std::numeric_limits<std::int64_t>::max();
-    for (const auto& [pause, heard] : aps_by_pause) {
+    summary_.aps_heard_per_pause_min = std::numeric_limits<std::int64_t>::max();
+    for (const auto& [pause, heard] : aps_by_pause_) {
       const auto n = static_cast<std::int64_t>(heard.size());
       sum += n;
-      summary.aps_heard_per_pause_min = std::min(summary.aps_heard_per_pause_min, n);
-      summary.aps_heard_per_pause_max = std::max(summary.aps_heard_per_pause_max, n);
+      summary_.aps_heard_per_pause_min = std::min(summary_.aps_heard_per_pause_min, n);
+      summary_.aps_heard_per_pause_max = std::max(summary_.aps_heard_per_pause_max, n);
     }
-    summary.aps_heard_per_pause_mean = static_cast<double>(sum) / aps_by_pause.size();
+    summary_.aps_heard_per_pause_mean = static_cast<double>(sum) / aps_by_pause_.size();
   }
-  summary.duration_s = pipeline.schedule().end_time().seconds();
-  summary.route_length_m = pipeline.motion().state_at(pipeline.schedule().end_time()).arc_length_m;
-  summary.world_s = pipeline.timings().setup_s;
-  summary.render_s = pipeline.timings().render_s;
-  summary.sensor_s = pipeline.timings().sensor_s;
-  summary.radio_s = pipeline.timings().radio_s;
-  summary.total_s = seconds_since(t_start);
-  return summary;
+
+  GenerationPipeline& pipeline_;
+  AtomicDirectory& folder_;
+  const fs::path dir_;
+  const GenerateOptions& options_;
+  const Clock::time_point start_;
+  GenerateSummary summary_;
+  TextOutput groundtruth_, odometry_, wifi_;
+  std::optional<TextOutput> rgb_list_, depth_list_, associations_, image_sums_;
+  std::optional<WorkerPool> pool_;
+  std::deque<Pending> pending_;
+  std::size_t max_pending_ = 2;
+  std::int64_t frames_done_ = 0;
+  std::map<int, std::set<MacAddress>> aps_by_pause_;
+  std::size_t scan_index_ = 0;
+  bool any_event_ = false;
+};
+
+}  // namespace
+
+GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
+                                 const GenerateOptions& options) {
+  const auto start = Clock::now();
+  AtomicDirectory folder(output, options.overwrite);
+  GenerationPipeline pipeline(resolve_scene(scene, options), options);
+  return DatasetWriter(pipeline, folder, options, start).write();
+}
+
+GenerateSummary generate_dataset(std::shared_ptr<const Site> site, const fs::path& output,
+                                 const GenerateOptions& options) {
+  const auto start = Clock::now();
+  AtomicDirectory folder(output, options.overwrite);
+  GenerationPipeline pipeline(std::move(site), options);
+  return DatasetWriter(pipeline, folder, options, start).write();
 }
 
 std::string GenerateSummary::full_report() const {

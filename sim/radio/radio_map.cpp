@@ -13,7 +13,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
-#include "core/thread_start.hpp"
+#include "core/worker_pool.hpp"
 #include "plot/canvas.hpp"
 
 namespace wifislam::sim::radio {
@@ -63,8 +63,11 @@ std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& 
 
 }  // namespace
 
-RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
-                           const RadioMapOptions& options) {
+namespace {
+
+/// An empty map over the plan at the options' resolution. Throws InvalidInputError for a
+/// resolution or height out of range, or a map over the size limits.
+RadioMap empty_map(const FloorPlan& plan, const RadioMapOptions& options) {
   if (!(options.resolution_m > 0.0))
     throw InvalidInputError(
         fmt::format("radio map resolution must be > 0 (got {})", options.resolution_m));
@@ -96,68 +99,80 @@ RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
   }
   map.cols = static_cast<int>(cols);
   map.rows = static_cast<int>(rows);
-  if (model.access_points().empty())
-    throw InvalidInputError("radio map: the scene has no access points");
+  const std::size_t cells = static_cast<std::size_t>(map.cols) * map.rows;
+  map.rssi_dbm.assign(cells, std::numeric_limits<float>::quiet_NaN());
+  map.best_ap_id.assign(cells, -1);
+  return map;
+}
+
+/// The strongest access point at one receiver position: (RSSI, index), ties to the lowest index.
+/// With `prune`, APs are tried in order of their wall-free RSSI (an upper bound) and the search
+/// stops when the bound cannot beat the best so far: the same answer, fewer ray casts.
+std::pair<double, std::size_t> strongest(const PropagationModel& model, const Eigen::Vector3d& rx,
+                                         RadioMapBand band, std::optional<std::size_t> only,
+                                         bool prune,
+                                         std::vector<std::pair<double, std::size_t>>& bounds) {
+  const std::size_t n = model.access_points().size();
+  double best = -std::numeric_limits<double>::infinity();
+  std::size_t best_index = n;
+  const auto consider = [&](std::size_t a) {
+    const double v = ap_rssi(model, a, model.link(a, rx), band);
+    if (v > best || (v == best && a < best_index)) {
+      best = v;
+      best_index = a;
+    }
+  };
+  if (only) {
+    consider(*only);
+  } else if (!prune) {
+    for (std::size_t a = 0; a < n; ++a) consider(a);
+  } else {
+    bounds.clear();
+    for (std::size_t a = 0; a < n; ++a)
+      bounds.emplace_back(ap_rssi(model, a, model.link_without_walls(a, rx), band), a);
+    std::sort(bounds.begin(), bounds.end(),
+              [](const auto& x, const auto& y) { return x.first > y.first; });
+    for (const auto& [bound, a] : bounds) {
+      if (bound < best) break;
+      consider(a);
+    }
+  }
+  return {best, best_index};
+}
+
+}  // namespace
+
+RadioMap compute_radio_map(const PropagationModel& model, const FloorPlan& plan,
+                           const RadioMapOptions& options) {
+  RadioMap map = empty_map(plan, options);
+  const auto& aps = model.access_points();
+  if (aps.empty()) throw InvalidInputError("radio map: the scene has no access points");
   std::optional<std::size_t> only;
   if (options.ap_id) {
     only = model.index_of(*options.ap_id);
     if (!only)
       throw InvalidInputError(fmt::format("radio map: no access point with id {} (ids 0..{})",
-                                          *options.ap_id, model.access_points().size() - 1));
+                                          *options.ap_id, aps.size() - 1));
   }
-  const std::size_t cells = static_cast<std::size_t>(map.cols) * map.rows;
-  map.rssi_dbm.assign(cells, std::numeric_limits<float>::quiet_NaN());
-  map.best_ap_id.assign(cells, -1);
-  std::vector<bool> compute(cells, true);
+  std::vector<bool> compute(map.rssi_dbm.size(), true);
   if (options.free_space_only && !plan.free_space.empty())
     compute = free_space_mask(plan, map.origin_m, map.resolution_m, map.cols, map.rows);
-
-  const auto& aps = model.access_points();
   const bool prune = options.prune && model.walls_only_attenuate();
-  std::atomic<int> next_row{0};
-  auto worker = [&] {
-    std::vector<std::pair<double, std::size_t>> bounds;
-    for (int r = next_row++; r < map.rows; r = next_row++) {
-      for (int c = 0; c < map.cols; ++c) {
-        if (!compute[static_cast<std::size_t>(r) * map.cols + c]) continue;
-        const Eigen::Vector2d xy = map.cell_center_m(c, r);
-        const Eigen::Vector3d rx(xy.x(), xy.y(), options.receiver_height_m);
-        double best = -std::numeric_limits<double>::infinity();
-        std::size_t best_index = aps.size();
-        // Ties go to the lowest AP index, with and without pruning.
-        auto consider = [&](std::size_t a) {
-          const double v = ap_rssi(model, a, model.link(a, rx), options.band);
-          if (v > best || (v == best && a < best_index)) {
-            best = v;
-            best_index = a;
-          }
-        };
-        if (only) {
-          consider(*only);
-        } else if (!prune) {
-          for (std::size_t a = 0; a < aps.size(); ++a) consider(a);
-        } else {
-          bounds.clear();
-          for (std::size_t a = 0; a < aps.size(); ++a)
-            bounds.emplace_back(ap_rssi(model, a, model.link_without_walls(a, rx), options.band),
-                                a);
-          std::sort(bounds.begin(), bounds.end(),
-                    [](const auto& x, const auto& y) { return x.first > y.first; });
-          for (const auto& [bound, a] : bounds) {
-            if (bound < best) break;
-            consider(a);
-          }
+  // Rows on worker threads; every cell depends only on its own position, so any thread count
+  // gives the same map.
+  parallel_for(
+      clamp_thread_count(options.threads), static_cast<std::size_t>(map.rows), [&](std::size_t r) {
+        std::vector<std::pair<double, std::size_t>> bounds;
+        for (int c = 0; c < map.cols; ++c) {
+          const std::size_t i = r * static_cast<std::size_t>(map.cols) + c;
+          if (!compute[i]) continue;
+          const Eigen::Vector2d xy = map.cell_center_m(c, static_cast<int>(r));
+          const Eigen::Vector3d rx(xy.x(), xy.y(), options.receiver_height_m);
+          const auto [best, index] = strongest(model, rx, options.band, only, prune, bounds);
+          map.rssi_dbm[i] = static_cast<float>(best);
+          map.best_ap_id[i] = index < aps.size() ? aps[index].id : -1;
         }
-        const int best_id = best_index < aps.size() ? aps[best_index].id : -1;
-        const std::size_t i = static_cast<std::size_t>(r) * map.cols + c;
-        map.rssi_dbm[i] = static_cast<float>(best);
-        map.best_ap_id[i] = best_id;
-      }
-    }
-  };
-  // The calling thread works too; helpers are as many as the system will start (rows are taken
-  // from a shared counter, so any number gives the same map).
-  run_on_threads(clamp_thread_count(options.threads), worker);
+      });
   return map;
 }
 
