@@ -68,7 +68,8 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
   PlacementResult result;
 
   // The scene's own placement, for reference, and the plan the candidates stand in.
-  const std::vector<PauseSample> own = simulate_pauses(scene, options.wifi);
+  const auto site = std::make_shared<const sim::Site>(scene);
+  const std::vector<PauseSample> own = simulate_pauses(site, options.wifi);
   result.scene_own = radio_resolution(own, options.wifi);
   for (const PauseSample& p : own) result.pause_positions_m.push_back(p.position_m);
   if (own.size() < 2) {
@@ -77,14 +78,10 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
         "to tell apart",
         scene.name, own.size()));
   }
-  std::vector<Eigen::Vector2d> spots;
-  {
-    const sim::Site site(scene);
-    result.scene_access_points = static_cast<int>(site.access_points().size());
-    spots =
-        sim::radio::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
-    result.plan = site.world().plan;
-  }
+  result.scene_access_points = static_cast<int>(site->access_points().size());
+  const std::vector<Eigen::Vector2d> spots =
+      sim::radio::access_point_candidate_spots(site->world().plan, options.candidate_spacing_m);
+  result.plan = site->world().plan;
   if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
     throw InvalidInputError(
         fmt::format("{} candidate positions at {} m spacing (at most {}): give a larger --spacing",
@@ -97,21 +94,22 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
         options.budget, spots.size(), options.candidate_spacing_m, spots.size()));
   }
 
-  // One simulation with an access point at every candidate.
-  sim::Scene all = scene;
-  all.access_points.placement = sim::ApPlacement::kExplicit;
-  all.access_points.explicit_list.clear();
+  // One simulation with an access point at every candidate, on the same building and route.
+  sim::AccessPoints all = scene.access_points;
+  all.placement = sim::ApPlacement::kExplicit;
+  all.explicit_list.clear();
   for (const Eigen::Vector2d& s : spots) {
     sim::AccessPointSpec spec;
     spec.position_m = {s.x(), s.y(), scene.access_points.height_m};
-    all.access_points.explicit_list.push_back(spec);
+    all.explicit_list.push_back(spec);
     result.candidates.push_back(spec.position_m);
   }
-  all.access_points.count = static_cast<int>(spots.size());
+  all.count = static_cast<int>(spots.size());
   progress(
       fmt::format("simulating the route's scans with {} candidate access points", spots.size()));
   std::vector<slam::AccessPointKey> keys;
-  const std::vector<PauseSample> every = simulate_pauses(all, options.wifi, &keys);
+  const std::vector<PauseSample> every = simulate_pauses(
+      std::make_shared<const sim::Site>(site->with_access_points(all)), options.wifi, &keys);
   std::map<slam::AccessPointKey, int> candidate_of;
   for (std::size_t i = 0; i < keys.size(); ++i) candidate_of[keys[i]] = static_cast<int>(i);
   std::vector<PauseReadings> pauses;

@@ -12,11 +12,12 @@
 
 namespace wifislam::study {
 
-std::vector<PauseSample> simulate_pauses(const sim::Scene& scene, const slam::WifiOptions& wifi,
+std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
+                                         const slam::WifiOptions& wifi,
                                          std::vector<slam::AccessPointKey>* ap_keys) {
   sim::GenerateOptions options;
   options.images = false;
-  sim::GenerationPipeline pipeline(scene, options);
+  sim::GenerationPipeline pipeline(std::move(site), options);
   if (ap_keys) {
     ap_keys->clear();
     for (const sim::radio::AccessPoint& ap : pipeline.site().access_points())

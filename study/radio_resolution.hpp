@@ -24,12 +24,13 @@
 //    pause, as the odometry chain gives one;
 //  - aps_heard_per_pause: mean number of access points in a pause's signature.
 
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
-#include "sim/scene/scene.hpp"
+#include "sim/site/site.hpp"
 #include "slam/wifi/wifi_options.hpp"
 #include "slam/wifi/wifi_signature.hpp"
 
@@ -42,9 +43,11 @@ struct PauseSample {
   slam::WifiSignature signature;
 };
 
-/// The route's pauses with their signatures, simulated in memory (no images). `ap_keys`, when
-/// given, receives each access point's signature key in the scene's AP order (ids 0..n-1).
-std::vector<PauseSample> simulate_pauses(const sim::Scene& scene, const slam::WifiOptions& wifi,
+/// The route's pauses with their signatures, simulated in memory on the site (no images).
+/// `ap_keys`, when given, receives each access point's signature key in the site's AP order
+/// (ids 0..n-1).
+std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
+                                         const slam::WifiOptions& wifi,
                                          std::vector<slam::AccessPointKey>* ap_keys = nullptr);
 
 struct RadioResolution {

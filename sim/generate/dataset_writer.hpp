@@ -9,9 +9,11 @@
 // same whatever the thread count.
 
 #include <filesystem>
+#include <memory>
 
 #include "sim/generate/generate_options.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/site/site.hpp"
 
 namespace wifislam::sim {
 
@@ -20,6 +22,13 @@ namespace wifislam::sim {
 /// replaced at all (AtomicDirectory, core/output_folder.hpp); IoError on write errors; the
 /// scene's and the renderer's errors pass through.
 GenerateSummary generate_dataset(const Scene& scene, const std::filesystem::path& output,
+                                 const GenerateOptions& options = {});
+
+/// The same on a site built already, which the caller keeps using (its world for plots, its
+/// radio for studies). Its scene is the dataset's: the seed and fps overrides belong in the
+/// site's scene (resolve_scene), and `options` must not set them (std::invalid_argument).
+GenerateSummary generate_dataset(std::shared_ptr<const Site> site,
+                                 const std::filesystem::path& output,
                                  const GenerateOptions& options = {});
 
 }  // namespace wifislam::sim

@@ -1,6 +1,7 @@
 #include "sim/generate/generation_pipeline.hpp"
 
 #include <limits>
+#include <stdexcept>
 
 namespace wifislam::sim {
 
@@ -9,6 +10,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+std::shared_ptr<const Site> timed_site(const Scene& scene, double& seconds) {
+  const auto t0 = Clock::now();
+  auto site = std::make_shared<const Site>(scene);  // validates the scene
+  seconds = seconds_since(t0);
+  return site;
 }
 
 }  // namespace
@@ -21,9 +29,25 @@ Scene resolve_scene(const Scene& scene, const GenerateOptions& options) {
 }
 
 GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions& options)
-    : scene_(scene), mount_(scene.sensors.camera) {
+    : site_(timed_site(scene, site_build_s_)),
+      scene_(site_->scene()),
+      mount_(scene_.sensors.camera) {
+  set_up(options);
+}
+
+GenerationPipeline::GenerationPipeline(std::shared_ptr<const Site> site,
+                                       const GenerateOptions& options)
+    : site_(std::move(site)), scene_(site_->scene()), mount_(scene_.sensors.camera) {
+  if (options.seed || options.fps) {
+    throw std::invalid_argument(
+        "a generation pipeline on a site: apply the seed and fps overrides when building the site "
+        "(resolve_scene)");
+  }
+  set_up(options);
+}
+
+void GenerationPipeline::set_up(const GenerateOptions& options) {
   const auto t0 = Clock::now();
-  site_ = std::make_unique<Site>(scene_);  // validates the scene
   // The validated origin is before 2100, so whole seconds to nanoseconds cannot overflow.
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
@@ -48,7 +72,7 @@ GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions
     color_model_ = std::make_unique<ColorSensorModel>(scene_.sensors.color,
                                                       scene_.sensors.camera.fps, scene_.seed);
   }
-  timings_.setup_s = seconds_since(t0);
+  timings_.setup_s = site_build_s_ + seconds_since(t0);
 }
 
 GenerationPipeline::~GenerationPipeline() = default;

@@ -57,6 +57,9 @@ class GenerationPipeline {
   /// `scene` is used as given (apply seed/fps overrides first: resolve_scene()). With
   /// `options.images` false there is no renderer and frames come without images.
   GenerationPipeline(const Scene& scene, const GenerateOptions& options);
+  /// On a site built already (its scene is used as given, overrides applied); several pipelines
+  /// and the caller may share one site.
+  GenerationPipeline(std::shared_ptr<const Site> site, const GenerateOptions& options);
   ~GenerationPipeline();
 
   std::optional<GeneratedEvent> next();
@@ -87,8 +90,11 @@ class GenerationPipeline {
     return Timestamp::from_ns(route_time.ns + time_origin_.ns);
   }
 
-  Scene scene_;
-  std::unique_ptr<Site> site_;
+  void set_up(const GenerateOptions& options);
+
+  double site_build_s_ = 0.0;  // building the site, when this pipeline built it (setup_s)
+  std::shared_ptr<const Site> site_;
+  const Scene& scene_;
   std::unique_ptr<SensorSchedule> schedule_;
   CameraMount mount_;
   std::unique_ptr<RgbdRenderer> renderer_;

@@ -10,6 +10,9 @@ namespace wifislam::sim {
 GeneratorStream::GeneratorStream(const Scene& scene, const GenerateOptions& options)
     : pipeline_(std::make_unique<GenerationPipeline>(resolve_scene(scene, options), options)) {}
 
+GeneratorStream::GeneratorStream(std::shared_ptr<const Site> site, const GenerateOptions& options)
+    : pipeline_(std::make_unique<GenerationPipeline>(std::move(site), options)) {}
+
 GeneratorStream::~GeneratorStream() = default;
 
 bool GeneratorStream::has_wifi() const { return !pipeline_->radio().access_points().empty(); }

@@ -9,6 +9,7 @@
 #include "core/sensor_stream.hpp"
 #include "sim/generate/generate_options.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/site/site.hpp"
 
 namespace wifislam::sim {
 
@@ -19,6 +20,8 @@ class GeneratorStream final : public SensorStream {
   /// Builds the world, renderer and radio model (seconds for big scenes). The seed and fps
   /// overrides, max_frames and images of `options` apply; threads/overwrite do not.
   GeneratorStream(const Scene& scene, const GenerateOptions& options = {});
+  /// On a site built already (its scene used as given: the overrides belong in it).
+  GeneratorStream(std::shared_ptr<const Site> site, const GenerateOptions& options = {});
   ~GeneratorStream() override;
 
   std::optional<SensorEvent> next() override;

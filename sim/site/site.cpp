@@ -8,19 +8,40 @@
 
 namespace wifislam::sim {
 
+namespace {
+
+std::unique_ptr<radio::PropagationModel> make_radio(const Scene& scene, const World& world) {
+  return std::make_unique<radio::PropagationModel>(
+      world, radio::make_access_points(scene, world.plan),
+      radio::PropagationOptions::from_scene(scene), scene.seed);
+}
+
+}  // namespace
+
 Site::Site(const Scene& scene) : scene_(scene) {
   validate_scene(scene_);
-  world_ = std::make_unique<World>(generate_world(scene_));
-  motion_ = std::make_unique<MotionProfile>(
+  world_ = std::make_shared<const World>(generate_world(scene_));
+  motion_ = std::make_shared<const MotionProfile>(
       world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
-  radio_ = std::make_unique<radio::PropagationModel>(
-      *world_, radio::make_access_points(scene_, world_->plan),
-      radio::PropagationOptions::from_scene(scene_), scene_.seed);
+  radio_ = make_radio(scene_, *world_);
+}
+
+Site::Site(const Scene& scene, std::shared_ptr<const World> world,
+           std::shared_ptr<const MotionProfile> motion)
+    : scene_(scene), world_(std::move(world)), motion_(std::move(motion)) {
+  validate_scene(scene_);
+  radio_ = make_radio(scene_, *world_);
 }
 
 Site::~Site() = default;
 Site::Site(Site&&) noexcept = default;
 Site& Site::operator=(Site&&) noexcept = default;
+
+Site Site::with_access_points(const AccessPoints& access_points) const {
+  Scene scene = scene_;
+  scene.access_points = access_points;
+  return Site(scene, world_, motion_);
+}
 
 const std::vector<radio::AccessPoint>& Site::access_points() const {
   return radio_->access_points();

@@ -1,8 +1,9 @@
 #pragma once
 // A scene's site: the world (floor plan, mesh, route), the robot's motion along the route, the
 // access points and the radio propagation model over them. Built here, in one place, for every
-// command that needs them (generate and the in-memory generator, world, radiomap, demo), so a
-// radio map and a dataset of one scene see the same access points, walls and shadowing.
+// command that needs them (generate and the in-memory generator, world, radiomap, demo, compare,
+// studies, placement), so a radio map and a dataset of one scene see the same access points,
+// walls and shadowing, and a caller that needs the site twice builds it once.
 //
 // Seeds, as datasets have always used them: the world, the motion and the radio model's
 // shadowing draw from `scene.seed`'s named streams; the access points from
@@ -31,6 +32,11 @@ class Site {
   Site(Site&&) noexcept;
   Site& operator=(Site&&) noexcept;
 
+  /// The same building and route with other access points (`access_points` replaces the scene's
+  /// block): the world and the motion are shared, not rebuilt; the radio model is built for the
+  /// new access points exactly as Site(scene with that block) would build it.
+  Site with_access_points(const AccessPoints& access_points) const;
+
   const Scene& scene() const { return scene_; }
   const World& world() const { return *world_; }
   const MotionProfile& motion() const { return *motion_; }
@@ -41,9 +47,12 @@ class Site {
   double receiver_height_m() const { return scene_.sensors.camera.height_m; }
 
  private:
+  Site(const Scene& scene, std::shared_ptr<const World> world,
+       std::shared_ptr<const MotionProfile> motion);
+
   Scene scene_;
-  std::unique_ptr<World> world_;
-  std::unique_ptr<MotionProfile> motion_;
+  std::shared_ptr<const World> world_;
+  std::shared_ptr<const MotionProfile> motion_;
   std::unique_ptr<radio::PropagationModel> radio_;
 };
 
