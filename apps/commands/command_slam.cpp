@@ -11,13 +11,8 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
-#include "core/dataset_format.hpp"
-#include "core/dataset_reader.hpp"
-#include "core/error.hpp"
-#include "core/frame_limited_stream.hpp"
 #include "core/output_folder.hpp"
-#include "sim/generate/generator_stream.hpp"
-#include "sim/scene/scene_loader.hpp"
+#include "sim/generate/sensor_input.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/slam_options.hpp"
@@ -39,57 +34,6 @@ struct SlamArgs {
   std::optional<std::uint64_t> scene_seed;
 };
 
-std::unique_ptr<wifislam::SensorStream> open_input(const SlamArgs& args, nlohmann::json& info) {
-  using namespace wifislam;
-  const std::filesystem::path input = args.input;
-  if (std::filesystem::is_directory(input)) {
-    // A dataset's frame rate and noise are fixed when it is generated: say so rather than
-    // ignore the options.
-    if (args.fps > 0) {
-      throw ParseError("--fps", fmt::format("{}", args.fps),
-                       "applies to scene input only; a dataset's frame rate is fixed (generate "
-                       "it again with `wifislam generate --fps`)");
-    }
-    if (args.scene_seed) {
-      throw ParseError("--seed", std::to_string(*args.scene_seed),
-                       "applies to scene input only; a dataset was rendered with its scene's seed "
-                       "(for SLAM's own draws use --set seed=N)");
-    }
-    // An interrupted `generate` leaves a staging folder with this tool's marker and no manifest
-    // (written last): its files are incomplete, so SLAM on it would score a truncated route.
-    if (!args.no_verify && !std::filesystem::exists(input / dataset::kManifest) &&
-        (std::filesystem::exists(input / kOutputMarkerFile) ||
-         input.filename().string().ends_with(".partial"))) {
-      throw InvalidInputError(input.string() +
-                              ": an unfinished dataset (no manifest.json: `wifislam generate` was "
-                              "interrupted?); generate it again, or pass --no-verify to read what "
-                              "is there");
-    }
-    DatasetReaderOptions options;
-    options.verify_checksums = !args.no_verify;
-    info["input"] = {
-        {"kind", "dataset"}, {"path", input.string()}, {"max_frames", args.max_frames}};
-    std::unique_ptr<SensorStream> reader = std::make_unique<DatasetReader>(input, options);
-    if (args.max_frames < 0) return reader;
-    return std::make_unique<FrameLimitedStream>(std::move(reader), args.max_frames);
-  }
-  if (!std::filesystem::is_regular_file(input)) {
-    throw IoError(input.string() + ": neither a dataset folder nor a scene file");
-  }
-  const sim::Scene scene = sim::load_scene_file(input.string());
-  sim::GenerateOptions options;
-  if (args.scene_seed) options.seed = *args.scene_seed;
-  if (args.fps > 0) options.fps = args.fps;
-  options.max_frames = args.max_frames;
-  info["input"] = {{"kind", "scene"},
-                   {"path", input.string()},
-                   {"scene", scene.name},
-                   {"scene_seed", options.seed.value_or(scene.seed)},
-                   {"fps", options.fps.value_or(scene.sensors.camera.fps)},
-                   {"max_frames", args.max_frames}};
-  return std::make_unique<sim::GeneratorStream>(scene, options);
-}
-
 void run(const SlamArgs& args) {
   using namespace wifislam;
   slam::SlamOptions options;
@@ -98,17 +42,22 @@ void run(const SlamArgs& args) {
   for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
   slam::validate(options);
   const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
-  nlohmann::json info;
-  std::unique_ptr<SensorStream> stream = open_input(args, info);
+  sim::SensorInputOptions input_options;
+  input_options.verify_checksums = !args.no_verify;
+  input_options.max_frames = args.max_frames;
+  if (args.fps > 0) input_options.fps = args.fps;
+  input_options.scene_seed = args.scene_seed;
+  sim::SensorInput input = sim::open_sensor_input(args.input, input_options);
+  SensorStream& stream = *input.stream;
   const bool tty = cli::stderr_is_tty();
   slam::RunSummary summary;
   const auto progress = [tty](std::int64_t frames) {
     if (tty && frames % 30 == 0) fmt::print(stderr, "\rslam: {} frames", frames);
   };
   const std::unique_ptr<slam::SlamSystem> system =
-      slam::run_slam(*stream, options, summary, progress);
+      slam::run_slam(stream, options, summary, progress);
   if (tty) fmt::print(stderr, "\n");
-  slam::write_run_folder(args.output, *system, summary, replace, info);
+  slam::write_run_folder(args.output, *system, summary, replace, {{"input", input.description}});
   fmt::print("{}", summary.FullReport());
   fmt::print("wrote {}\n", std::filesystem::absolute(args.output).lexically_normal().string());
 }

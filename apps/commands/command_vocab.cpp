@@ -14,11 +14,9 @@
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
 #include "core/atomic_file.hpp"
-#include "core/dataset_reader.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "sim/generate/generator_stream.hpp"
-#include "sim/scene/scene_loader.hpp"
+#include "sim/generate/sensor_input.hpp"
 #include "slam/bow/vocabulary_tree.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
 
@@ -38,18 +36,11 @@ struct TrainArgs {
 };
 
 /// A scene is rendered at --fps; a folder is read, every --every-th frame.
-std::unique_ptr<SensorStream> open_input(const TrainArgs& args, const fs::path& input, int& every) {
-  if (fs::is_directory(input)) {
-    every = args.every;
-    return std::make_unique<DatasetReader>(input);
-  }
-  if (!fs::is_regular_file(input)) {
-    throw IoError(input.string() + ": neither a scene file nor a dataset folder");
-  }
-  sim::GenerateOptions options;
+sim::SensorInput open_input(const TrainArgs& args, const fs::path& input) {
+  sim::SensorInputOptions options;
   options.fps = args.fps;
-  every = 1;
-  return std::make_unique<sim::GeneratorStream>(sim::load_scene_file(input.string()), options);
+  options.refuse_scene_options_for_datasets = false;  // --fps is the scenes' rate
+  return sim::open_sensor_input(input, options);
 }
 
 void train(const TrainArgs& args) {
@@ -64,8 +55,9 @@ void train(const TrainArgs& args) {
   features.max_keypoints = args.max_keypoints;
   std::vector<cv::Mat> images;
   for (const fs::path& input : inputs) {
-    int every = 1;
-    std::unique_ptr<SensorStream> stream = open_input(args, input, every);
+    const sim::SensorInput opened = open_input(args, input);
+    SensorStream* stream = opened.stream.get();
+    const int every = opened.is_scene ? 1 : args.every;
     const slam::OrbFeatureExtractor orb(features, stream->intrinsics());
     std::int64_t frames = 0, used = 0;
     while (auto event = stream->next()) {

@@ -1,0 +1,81 @@
+#include "sim/generate/sensor_input.hpp"
+
+#include <fmt/format.h>
+
+#include "core/dataset_format.hpp"
+#include "core/dataset_reader.hpp"
+#include "core/error.hpp"
+#include "core/frame_limited_stream.hpp"
+#include "core/output_folder.hpp"
+#include "sim/generate/generator_stream.hpp"
+#include "sim/scene/scene_loader.hpp"
+
+namespace wifislam::sim {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+SensorInput open_dataset(const fs::path& input, const SensorInputOptions& options) {
+  // A dataset's frame rate and noise are fixed when it is generated: say so rather than ignore
+  // the options.
+  if (options.refuse_scene_options_for_datasets && options.fps) {
+    throw ParseError("--fps", fmt::format("{}", *options.fps),
+                     "applies to scene input only; a dataset's frame rate is fixed (generate it "
+                     "again with `wifislam generate --fps`)");
+  }
+  if (options.refuse_scene_options_for_datasets && options.scene_seed) {
+    throw ParseError("--seed", std::to_string(*options.scene_seed),
+                     "applies to scene input only; a dataset was rendered with its scene's seed "
+                     "(for SLAM's own draws use --set seed=N)");
+  }
+  // An interrupted `generate` leaves a staging folder with this tool's marker and no manifest
+  // (written last): its files are incomplete, so SLAM on it would score a truncated route.
+  if (options.verify_checksums && !fs::exists(input / dataset::kManifest) &&
+      (fs::exists(input / kOutputMarkerFile) || input.filename().string().ends_with(".partial"))) {
+    throw InvalidInputError(input.string() +
+                            ": an unfinished dataset (no manifest.json: `wifislam generate` was "
+                            "interrupted?); generate it again, or pass --no-verify to read what "
+                            "is there");
+  }
+  DatasetReaderOptions reader_options;
+  reader_options.verify_checksums = options.verify_checksums;
+  SensorInput out;
+  out.description = {
+      {"kind", "dataset"}, {"path", input.string()}, {"max_frames", options.max_frames}};
+  out.stream = std::make_unique<DatasetReader>(input, reader_options);
+  if (options.max_frames >= 0) {
+    out.stream = std::make_unique<FrameLimitedStream>(std::move(out.stream), options.max_frames);
+  }
+  return out;
+}
+
+SensorInput open_scene(const fs::path& input, const SensorInputOptions& options) {
+  const Scene scene = load_scene_file(input.string());
+  GenerateOptions generate;
+  generate.seed = options.scene_seed;
+  generate.fps = options.fps;
+  generate.max_frames = options.max_frames;
+  SensorInput out;
+  out.is_scene = true;
+  out.description = {{"kind", "scene"},
+                     {"path", input.string()},
+                     {"scene", scene.name},
+                     {"scene_seed", generate.seed.value_or(scene.seed)},
+                     {"fps", generate.fps.value_or(scene.sensors.camera.fps)},
+                     {"max_frames", options.max_frames}};
+  out.stream = std::make_unique<GeneratorStream>(scene, generate);
+  return out;
+}
+
+}  // namespace
+
+SensorInput open_sensor_input(const fs::path& path, const SensorInputOptions& options) {
+  if (fs::is_directory(path)) return open_dataset(path, options);
+  if (!fs::is_regular_file(path)) {
+    throw IoError(path.string() + ": neither a dataset folder nor a scene file");
+  }
+  return open_scene(path, options);
+}
+
+}  // namespace wifislam::sim
