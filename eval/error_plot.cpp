@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
-#include "plot/line_chart.hpp"
-#include "plot/canvas.hpp"
 #include "eval/plots.hpp"
+#include "plot/canvas.hpp"
+#include "plot/line_chart.hpp"
 
 namespace wifislam::eval {
 
@@ -54,9 +54,9 @@ void plot_error_along_path(const std::filesystem::path& path, const RunEvaluatio
       const double at = ev.keyframe_truth[static_cast<std::size_t>(c.edge.to_keyframe)].path_m;
       const Eigen::Vector2d p = to_px(std::clamp(at, x_min, x_max), 0);
       plot::set_colour(cr, c.correct() ? plot::Colour{0.10, 0.65, 0.20}
-                     : c.verdict == LoopClosureVerdict::kRightPlaceImprecise
-                         ? plot::Colour{0.95, 0.60, 0.05}
-                         : plot::Colour{0.90, 0.10, 0.10});
+                           : c.verdict == LoopClosureVerdict::kRightPlaceImprecise
+                               ? plot::Colour{0.95, 0.60, 0.05}
+                               : plot::Colour{0.90, 0.10, 0.10});
       cairo_set_line_width(cr, 2.0);
       cairo_move_to(cr, p.x(), top);
       cairo_line_to(cr, p.x(), top + 12);
@@ -81,12 +81,12 @@ void plot_error_along_path(const std::filesystem::path& path, const RunEvaluatio
     cairo_set_dash(cr, nullptr, 0, 0);
     plot::set_colour(cr, {0, 0, 0});
     plot::draw_text(cr, left, 24,
-              fmt::format("Absolute trajectory error along the path (RMSE {:.3f} m, dashed)",
-                          ev.ate_rmse_m),
-              15, true);
-    plot::draw_text(cr, left, 42,
-              "ticks at the top: loop closures at their later keyframe (green correct, red false)",
-              11);
+                    fmt::format("Absolute trajectory error along the path (RMSE {:.3f} m, dashed)",
+                                ev.ate_rmse_m),
+                    15, true);
+    plot::draw_text(
+        cr, left, 42,
+        "ticks at the top: loop closures at their later keyframe (green correct, red false)", 11);
     plot::draw_text(cr, left + plot_w / 2 - 120, kHeight - 15, "ground-truth path length [m]", 13);
     cairo_save(cr);
     cairo_translate(cr, 16, top + plot_h / 2 + 70);

@@ -6,11 +6,8 @@
 #include <fmt/format.h>
 
 #include "core/atomic_file.hpp"
-#include "core/dataset_format.hpp"
 #include "core/error.hpp"
 #include "eval/plots.hpp"
-#include "sim/scene/scene_loader.hpp"
-#include "sim/world/world_generator.hpp"
 
 namespace wifislam::eval {
 
@@ -281,31 +278,21 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
   return md;
 }
 
-void write_evaluation(const fs::path& out_dir, const RunEvaluation& ev, const fs::path& run_dir,
-                      const fs::path& dataset_dir, bool plots) {
-  (void)run_dir;  // everything the plots need from the run is in `ev` already
+void write_evaluation(const fs::path& out_dir, const RunEvaluation& ev, bool plots,
+                      const PlanBackdrop& backdrop) {
   std::vector<std::string> notes;
-  std::optional<sim::World> world;
-  if (plots) {
-    const fs::path scene = dataset_dir / dataset::kScene;
-    if (fs::exists(scene)) {
-      try {
-        world = sim::generate_world(sim::load_scene_file(scene.string()));
-      } catch (const Error& e) {
-        notes.push_back(std::string("plots drawn without floor plan: ") + e.what());
-      }
-    } else {
-      notes.push_back("plots drawn without floor plan: the dataset has no scene.yaml");
-    }
+  if (plots && !backdrop.plan) {
+    notes.push_back("plots drawn without floor plan: " + backdrop.missing_reason);
   }
   AtomicDirectory out(out_dir, /*overwrite=*/true);
   const fs::path& dir = out.staging_path();
   if (plots) {
-    const sim::World* w = world ? &*world : nullptr;
     for (const char* ext : {".png", ".svg"}) {
-      plot_trajectory(dir / (std::string("trajectory") + ext), ev, w);
+      plot_trajectory(dir / (std::string("trajectory") + ext), ev, backdrop.plan);
       plot_error_along_path(dir / (std::string("ate_along_path") + ext), ev);
-      if (ev.wifi_run) plot_wifi_clusters(dir / (std::string("wifi_clusters") + ext), ev, w);
+      if (ev.wifi_run) {
+        plot_wifi_clusters(dir / (std::string("wifi_clusters") + ext), ev, backdrop.plan);
+      }
     }
   }
   write_file_atomic(dir / "report.md", render_report_markdown(ev, notes));

@@ -9,18 +9,26 @@
 #include <string>
 
 #include "eval/run_evaluation.hpp"
+#include "sim/world/world_types.hpp"
 
 namespace wifislam::eval {
 
 /// The timestamp association rule, as report.md and `wifislam eval --help` state it.
 extern const char* const kAssociationRule;
 
-/// Replaces an existing `out_dir`. `plots` false: text files only. The floor plan behind the plots
-/// is the dataset's scene.yaml, generated; without one the plots show the paths alone (and the
-/// report says so). Throws IoError when the folder cannot be written.
+/// What the plots draw under the paths: the floor plan of the dataset's world, when the caller has
+/// it (a comparison holds the site it generated the dataset from; `wifislam eval` builds the world
+/// from the dataset's scene.yaml: sim::dataset_world), else nothing, with the reason, which
+/// report.md notes.
+struct PlanBackdrop {
+  const sim::FloorPlan* plan = nullptr;
+  std::string missing_reason;
+};
+
+/// Replaces an existing `out_dir`. `plots` false: text files only. Throws IoError when the folder
+/// cannot be written.
 void write_evaluation(const std::filesystem::path& out_dir, const RunEvaluation& evaluation,
-                      const std::filesystem::path& run_dir,
-                      const std::filesystem::path& dataset_dir, bool plots);
+                      bool plots, const PlanBackdrop& backdrop);
 
 /// The report.md text. `notes` are added under "Notes" (plot backdrop and the like).
 std::string render_report_markdown(const RunEvaluation& evaluation,

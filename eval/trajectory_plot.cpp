@@ -1,7 +1,7 @@
 #include <fmt/format.h>
 
-#include "plot/canvas.hpp"
 #include "eval/plots.hpp"
+#include "plot/canvas.hpp"
 #include "sim/world/plan_drawing.hpp"
 
 namespace wifislam::eval {
@@ -26,10 +26,10 @@ plot::Colour verdict_colour(LoopClosureVerdict v) {
 }
 }  // namespace
 
-plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::World* world) {
+plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::FloorPlan* plan) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
   auto include = [&](const Eigen::Vector2d& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); };
-  if (world) include(world->plan.bounds_min_m), include(world->plan.bounds_max_m);
+  if (plan) include(plan->bounds_min_m), include(plan->bounds_max_m);
   for (const PathSample& s : ev.path) {
     include(s.ground_truth_m.head<2>());
     include(s.estimated_aligned_m.head<2>());
@@ -40,10 +40,10 @@ plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::World* world)
 }
 
 void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
-                     const sim::World* world) {
-  const plot::MetricCanvas canvas = plan_canvas(ev, world);
+                     const sim::FloorPlan* plan) {
+  const plot::MetricCanvas canvas = plan_canvas(ev, plan);
   plot::write_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
-    if (world) sim::draw_plan_backdrop(cr, canvas, world->plan);
+    if (plan) sim::draw_plan_backdrop(cr, canvas, *plan);
     std::vector<Eigen::Vector2d> gt, est;
     for (const PathSample& s : ev.path) {
       gt.push_back(s.ground_truth_m.head<2>());
@@ -85,25 +85,27 @@ void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
       cairo_fill(cr);
     }
     plot::set_colour(cr, {0, 0, 0});
-    plot::draw_text(cr, plot::MetricCanvas::kMarginPx, 28,
-              ev.loop_closures_available
-                  ? fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closure{} ({} wrong place)",
-                                ev.ate_rmse_m, ev.loop_closures_detected,
-                                ev.loop_closures_detected == 1 ? "" : "s", ev.false_positives)
-                  : fmt::format("Trajectory: ATE RMSE {:.3f} m (loop closures not available)",
-                                ev.ate_rmse_m),
-              18, true);
+    plot::draw_text(
+        cr, plot::MetricCanvas::kMarginPx, 28,
+        ev.loop_closures_available
+            ? fmt::format("Trajectory: ATE RMSE {:.3f} m, {} loop closure{} ({} wrong place)",
+                          ev.ate_rmse_m, ev.loop_closures_detected,
+                          ev.loop_closures_detected == 1 ? "" : "s", ev.false_positives)
+            : fmt::format("Trajectory: ATE RMSE {:.3f} m (loop closures not available)",
+                          ev.ate_rmse_m),
+        18, true);
     const double x = canvas.plan_right_px() + plot::MetricCanvas::kMarginPx;
     double y = plot::MetricCanvas::kTitlePx + 14;
     y = plot::legend_line(cr, x, y, kGroundTruth, 2.0, "ground truth");
     y = plot::legend_line(cr, x, y, kEstimate, 2.0,
-                    ev.options.align == AlignmentMode::kSim3  ? "estimate (Sim(3)-aligned)"
-                    : ev.options.align == AlignmentMode::kSe3 ? "estimate (aligned)"
-                                                              : "estimate (not aligned)");
+                          ev.options.align == AlignmentMode::kSim3  ? "estimate (Sim(3)-aligned)"
+                          : ev.options.align == AlignmentMode::kSe3 ? "estimate (aligned)"
+                                                                    : "estimate (not aligned)");
     if (ev.loop_closures_available) {
-      y = plot::legend_line(cr, x, y, kCorrect, 2.0, fmt::format("correct loop closure ({})", correct));
+      y = plot::legend_line(cr, x, y, kCorrect, 2.0,
+                            fmt::format("correct loop closure ({})", correct));
       y = plot::legend_line(cr, x, y, kImprecise, 2.5,
-                      fmt::format("right place, imprecise ({})", imprecise));
+                            fmt::format("right place, imprecise ({})", imprecise));
       y = plot::legend_line(cr, x, y, kFalse, 2.5, fmt::format("wrong place ({})", wrong));
     }
     y = plot::legend_dot(cr, x, y, kCorrect, "start");

@@ -1,16 +1,16 @@
 #include <fmt/format.h>
 
-#include "plot/canvas.hpp"
 #include "eval/plots.hpp"
+#include "plot/canvas.hpp"
 #include "sim/world/plan_drawing.hpp"
 
 namespace wifislam::eval {
 
 void plot_wifi_clusters(const std::filesystem::path& path, const RunEvaluation& ev,
-                        const sim::World* world) {
-  const plot::MetricCanvas canvas = plan_canvas(ev, world);
+                        const sim::FloorPlan* plan) {
+  const plot::MetricCanvas canvas = plan_canvas(ev, plan);
   plot::write_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
-    if (world) sim::draw_plan_backdrop(cr, canvas, world->plan);
+    if (plan) sim::draw_plan_backdrop(cr, canvas, *plan);
     std::vector<Eigen::Vector2d> gt;
     for (const PathSample& s : ev.path) gt.push_back(s.ground_truth_m.head<2>());
     plot::set_colour(cr, {0.6, 0.6, 0.6}, 0.8);
@@ -64,7 +64,7 @@ void plot_wifi_clusters(const std::filesystem::path& path, const RunEvaluation& 
         break;
       }
       y = plot::legend_dot(cr, x, y, plot::category_colour(c.id),
-                     fmt::format("cluster {} ({} keyframes)", c.id, c.keyframes.size()));
+                           fmt::format("cluster {} ({} keyframes)", c.id, c.keyframes.size()));
     }
     y = plot::legend_dot(cr, x, y, {0.5, 0.5, 0.5}, "no cluster");
     plot::set_colour(cr, {0.3, 0.3, 0.3});

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "eval/eval.hpp"
+#include "sim/world/world_generator.hpp"
 
 namespace {
 
@@ -71,7 +72,13 @@ void run(const EvalArgs& args) {
       args.output.empty() ? default_out : std::filesystem::path(args.output);
   check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}});
   const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
-  eval::write_evaluation(out, ev, args.input, args.dataset_dir, !args.no_plots);
+  eval::PlanBackdrop backdrop;
+  std::optional<sim::World> world;
+  if (!args.no_plots) {
+    world = sim::dataset_world(args.dataset_dir, backdrop.missing_reason);
+    if (world) backdrop.plan = &world->plan;
+  }
+  eval::write_evaluation(out, ev, !args.no_plots, backdrop);
   fmt::print("ATE RMSE           {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}; {} poses, {})\n",
              ev.ate_rmse_m, ev.ate_mean_m, ev.ate_median_m, ev.ate_max_m, ev.frames_associated,
              eval::to_string(options.align));

@@ -4,6 +4,9 @@
 
 #include <fmt/format.h>
 
+#include "core/dataset_format.hpp"
+#include "core/error.hpp"
+#include "sim/scene/scene_loader.hpp"
 #include "sim/world/floor_plan_builder.hpp"
 #include "sim/world/mesh_builder.hpp"
 #include "sim/world/plan_queries.hpp"
@@ -18,6 +21,20 @@ World generate_world(const Scene& scene) {
   world.route = build_route(scene, world.plan);
   world.mesh = build_mesh(scene, world.plan);
   return world;
+}
+
+std::optional<World> dataset_world(const std::filesystem::path& dataset_dir, std::string& why_not) {
+  const std::filesystem::path scene = dataset_dir / dataset::kScene;
+  if (!std::filesystem::exists(scene)) {
+    why_not = "the dataset has no scene.yaml";
+    return std::nullopt;
+  }
+  try {
+    return generate_world(load_scene_file(scene.string()));
+  } catch (const Error& e) {
+    why_not = e.what();
+    return std::nullopt;
+  }
 }
 
 namespace {

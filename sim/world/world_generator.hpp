@@ -2,6 +2,8 @@
 // Scene -> floor plan (CGAL polygon booleans) -> 3-D mesh, plus the robot's smooth route.
 
 #include <cstdint>
+#include <filesystem>
+#include <optional>
 #include <string>
 
 #include "sim/scene/scene.hpp"
@@ -13,6 +15,11 @@ namespace wifislam::sim {
 /// bit-identical world. Throws InvalidInputError for a scene that cannot be built (e.g. a route
 /// that cannot keep `min_wall_clearance_m` from the walls, disconnected free space).
 World generate_world(const Scene& scene);
+
+/// The world of a dataset, from its scene.yaml (the resolved scene, seed included), for pictures
+/// over its plan. nullopt, with the reason in `why_not`, when the dataset has no scene.yaml or it
+/// cannot be built.
+std::optional<World> dataset_world(const std::filesystem::path& dataset_dir, std::string& why_not);
 
 /// FNV-1a hash over every vertex, uv, normal and triangle attribute (determinism checks).
 std::uint64_t mesh_hash(const Mesh& mesh);
