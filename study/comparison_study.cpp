@@ -1,22 +1,22 @@
 #include "study/comparison_study.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <mutex>
-#include <thread>
 
 #include <fmt/format.h>
 
 #include "core/atomic_file.hpp"
-#include "core/dataset_reader.hpp"
 #include "core/error.hpp"
-#include "core/thread_start.hpp"
+#include "core/worker_pool.hpp"
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
 #include "eval/run_divergence.hpp"
 #include "sim/generate/dataset_writer.hpp"
+#include "sim/generate/generation_pipeline.hpp"
+#include "sim/generate/sensor_input.hpp"
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
 
@@ -59,10 +59,8 @@ std::vector<Setting> expand(const std::vector<SweepAxis>& sweeps) {
 
 slam::SlamOptions options_for(const ComparisonOptions& options, const Setting& setting, bool wifi,
                               std::uint64_t seed) {
-  slam::SlamOptions o;
-  o.frontend = options.frontend;
-  o.seed = seed;
-  for (const std::string& s : options.settings) slam::set_option_assignment(o, s);
+  slam::SlamOptions o = options.slam;
+  if (!options.slam_seed_set) o.seed = seed;
   for (const auto& [key, value] : setting) slam::set_option(o, key, value);
   o.wifi.enabled = wifi;
   slam::validate(o);
@@ -180,9 +178,32 @@ SweepAxis parse_sweep(const std::string& text) {
   return axis;
 }
 
-ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
-                                const ComparisonOptions& options,
-                                const std::filesystem::path& out_dir) {
+ComparisonOptions::ComparisonOptions(const std::string& frontend,
+                                     const std::vector<std::string>& assignments)
+    : settings(assignments) {
+  slam.frontend = frontend;
+  for (const std::string& s : assignments) slam::set_option_assignment(slam, s);
+  slam_seed_set = assigns_slam_seed(assignments);
+}
+
+bool assigns_slam_seed(const std::vector<std::string>& assignments) {
+  return std::any_of(assignments.begin(), assignments.end(),
+                     [](const std::string& s) { return s.starts_with("seed="); });
+}
+
+namespace {
+
+/// One SLAM run of the comparison: its dataset (folder relative to the output, and the site it
+/// was generated from, whose plan the plots draw) and its options.
+struct RunJob {
+  std::filesystem::path dataset;
+  std::shared_ptr<const sim::Site> site;
+  slam::SlamOptions slam;
+  std::size_t case_index = 0;
+};
+
+void check_comparison_input(const std::vector<sim::Scene>& scenes,
+                            const ComparisonOptions& options) {
   if (scenes.empty()) throw InvalidInputError("compare: no scene given");
   if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
   if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
@@ -192,38 +213,30 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
       throw InvalidInputError("compare: scene name '" + scene.name + "' given twice");
     }
   }
+}
 
-  ComparisonResult result;
-  result.seeds = options.seeds;
-  const std::vector<Setting> settings = expand(options.sweeps);
-  for (const Setting& s : settings) result.settings.push_back(label_of(options.settings, s));
-  // Every option combination is checked before any dataset is generated.
-  for (const Setting& s : settings) options_for(options, s, true, 1);
-
-  std::mutex progress_mutex;
-  const auto progress = [&](const std::string& line) {
-    if (!options.on_progress) return;
-    std::lock_guard lock(progress_mutex);
-    options.on_progress(line);
-  };
-
-  struct Job {
-    std::filesystem::path dataset;
-    slam::SlamOptions slam;
-    std::size_t case_index = 0;
-  };
-  std::vector<Job> jobs;
+/// Generates each scene's dataset per seed (its site built once and kept for the plots) and lays
+/// out the runs on it: every setting, vanilla and Wi-Fi.
+std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
+                                      const ComparisonOptions& options,
+                                      const std::vector<Setting>& settings,
+                                      const std::filesystem::path& out_dir,
+                                      const std::function<void(const std::string&)>& progress,
+                                      ComparisonResult& result) {
+  std::vector<RunJob> jobs;
   for (const sim::Scene& scene : scenes) {
     result.scenes.push_back(scene.name);
     for (int k = 0; k < options.seeds; ++k) {
       const std::uint64_t seed = scene.seed + static_cast<std::uint64_t>(k);
       const std::string tag = fmt::format("{}-seed{}", scene.name, seed);
       const std::filesystem::path dataset = std::filesystem::path("datasets") / tag;
+      sim::GenerateOptions overrides;
+      overrides.seed = seed;
+      overrides.fps = options.fps;
+      auto site = std::make_shared<const sim::Site>(sim::resolve_scene(scene, overrides));
       sim::GenerateOptions generate;
-      generate.seed = seed;
-      generate.fps = options.fps;
       generate.max_frames = options.max_frames;
-      const sim::GenerateSummary g = sim::generate_dataset(scene, out_dir / dataset, generate);
+      const sim::GenerateSummary g = sim::generate_dataset(site, out_dir / dataset, generate);
       progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s)", dataset.string(),
                            g.frames, g.wifi_scans, g.total_s));
       for (std::size_t s = 0; s < settings.size(); ++s) {
@@ -236,68 +249,78 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
           c.run_dir = std::filesystem::path("runs") / tag / folder_of(c.setting) /
                       (wifi ? "wifi" : "vanilla");
           jobs.push_back(
-              {dataset, options_for(options, settings[s], wifi, seed), result.cases.size()});
+              {dataset, site, options_for(options, settings[s], wifi, seed), result.cases.size()});
           result.cases.push_back(std::move(c));
         }
       }
     }
   }
+  return jobs;
+}
 
-  // SLAM runs and their evaluations, `jobs` at a time; each writes only its own folder.
-  std::atomic<std::size_t> next{0};
-  std::mutex error_mutex;
-  std::exception_ptr first_error;
-  const auto worker = [&] {
-    for (std::size_t i = next++; i < jobs.size(); i = next++) {
-      {
-        std::lock_guard lock(error_mutex);
-        if (first_error) return;
-      }
-      try {
-        const Job& job = jobs[i];
-        ComparisonCase& c = result.cases[job.case_index];
-        const std::filesystem::path run_dir = out_dir / c.run_dir;
-        DatasetReaderOptions reader_options;
-        reader_options.verify_checksums = false;  // written moments ago by this process
-        DatasetReader reader(out_dir / job.dataset, reader_options);
-        slam::RunSummary summary;
-        const auto system = slam::run_slam(reader, job.slam, summary);
-        slam::write_run_folder(run_dir, *system, summary, /*overwrite=*/false,
-                               {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}});
-        c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
-        eval::write_evaluation(run_dir / "eval", c.evaluation, run_dir, out_dir / job.dataset,
-                               options.plots);
-        progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
-                             c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
-                             c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
-                             c.evaluation.false_positives, summary.wall_s));
-      } catch (...) {
-        std::lock_guard lock(error_mutex);
-        if (!first_error) first_error = std::current_exception();
-      }
-    }
-  };
-  // The calling thread is one worker; the others are started as far as the machine allows (a
-  // process limit must not end the program), and the jobs queue works with however many run.
-  const int threads =
-      std::min<int>(clamp_thread_count(options.jobs), static_cast<int>(jobs.size()));
-  std::vector<std::thread> pool;
-  start_threads(pool, threads - 1, worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (first_error) std::rethrow_exception(first_error);
+/// Runs SLAM on the job's dataset, writes the run folder, evaluates it and writes its eval/.
+void run_job(const RunJob& job, const ComparisonOptions& options,
+             const std::filesystem::path& out_dir, ComparisonCase& c,
+             const std::function<void(const std::string&)>& progress) {
+  const std::filesystem::path run_dir = out_dir / c.run_dir;
+  sim::SensorInputOptions input;
+  input.verify_checksums = false;  // written moments ago by this process
+  const sim::SensorInput dataset = sim::open_sensor_input(out_dir / job.dataset, input);
+  slam::RunSummary summary;
+  const auto system = slam::run_slam(*dataset.stream, job.slam, summary);
+  slam::write_run_folder(run_dir, *system, summary, /*overwrite=*/false,
+                         {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}});
+  c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
+  eval::write_evaluation(run_dir / "eval", c.evaluation, options.plots,
+                         {&job.site->world().plan, ""});
+  progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
+                       c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
+                       c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
+                       c.evaluation.false_positives, summary.wall_s));
+}
 
-  // Pairing: where each Wi-Fi run first departs from its vanilla twin.
-  for (const ComparisonCase& w : result.cases) {
+/// Where each Wi-Fi run first departs from its vanilla twin.
+std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& cases,
+                                             const std::filesystem::path& out_dir) {
+  std::vector<PairDivergence> out;
+  for (const ComparisonCase& w : cases) {
     if (!w.wifi) continue;
-    for (const ComparisonCase& v : result.cases) {
+    for (const ComparisonCase& v : cases) {
       if (v.wifi || v.scene != w.scene || v.seed != w.seed || v.setting != w.setting) continue;
       const std::optional<eval::RunDivergence> d =
           eval::first_divergence(out_dir / v.run_dir, out_dir / w.run_dir);
-      result.divergences.push_back(
-          {w.scene, w.seed, w.setting, d ? d->keyframe : -1, d ? d->time_s : 0.0});
+      out.push_back({w.scene, w.seed, w.setting, d ? d->keyframe : -1, d ? d->time_s : 0.0});
     }
   }
+  return out;
+}
+
+}  // namespace
+
+ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
+                                const ComparisonOptions& options,
+                                const std::filesystem::path& out_dir) {
+  check_comparison_input(scenes, options);
+  ComparisonResult result;
+  result.seeds = options.seeds;
+  const std::vector<Setting> settings = expand(options.sweeps);
+  for (const Setting& s : settings) result.settings.push_back(label_of(options.settings, s));
+  // Every option combination is checked before any dataset is generated.
+  for (const Setting& s : settings) options_for(options, s, true, 1);
+
+  std::mutex progress_mutex;
+  const std::function<void(const std::string&)> progress = [&](const std::string& line) {
+    if (!options.on_progress) return;
+    std::lock_guard lock(progress_mutex);
+    options.on_progress(line);
+  };
+  const std::vector<RunJob> jobs =
+      generate_datasets(scenes, options, settings, out_dir, progress, result);
+  // SLAM runs and their evaluations, `jobs` at a time; each writes only its own folder and case.
+  parallel_for(clamp_thread_count(options.jobs), jobs.size(), [&](std::size_t i) {
+    run_job(jobs[i], options, out_dir, result.cases[jobs[i].case_index], progress);
+  });
+  result.divergences = pair_divergences(result.cases, out_dir);
 
   write_file_atomic(out_dir / "comparison.md", result.markdown());
   write_file_atomic(out_dir / "comparison.csv", result.csv());

@@ -20,6 +20,7 @@
 #include "eval/eval_options.hpp"
 #include "eval/run_evaluation.hpp"
 #include "sim/scene/scene.hpp"
+#include "slam/slam_options.hpp"
 
 namespace wifislam::study {
 
@@ -34,9 +35,17 @@ struct SweepAxis {
 SweepAxis parse_sweep(const std::string& text);
 
 struct ComparisonOptions {
-  /// Front end compared vanilla vs Wi-Fi.
-  std::string frontend = "rgbdslam";
-  /// SLAM options (key=value) applied to every run before the swept ones.
+  ComparisonOptions() = default;
+  /// The front end and the SLAM options of every run from `key=value` assignments, parsed here
+  /// once (ParseError naming a bad one); they label the columns too.
+  ComparisonOptions(const std::string& frontend, const std::vector<std::string>& assignments);
+
+  /// The options every run starts from, front end included; the swept options and the variant's
+  /// Wi-Fi switch are set on top. Its seed is each dataset's seed unless `slam_seed_set`.
+  slam::SlamOptions slam;
+  bool slam_seed_set = false;
+  /// The options that differ from the defaults as the user gave them ("min_matches=10"): the
+  /// column label and the runs' folder names; none: "defaults".
   std::vector<std::string> settings;
   /// Swept options; every combination (cartesian product) is one setting. None: one setting,
   /// the defaults.
@@ -90,6 +99,9 @@ struct ComparisonResult {
   std::string csv() const;
   nlohmann::json to_json() const;
 };
+
+/// Whether "key=value" assignments set the SLAM's seed (then every run draws from it).
+bool assigns_slam_seed(const std::vector<std::string>& assignments);
 
 /// Runs the whole comparison, writing into `out_dir` (which must exist). Throws on bad input
 /// before any heavy work (unknown option key, bad value).

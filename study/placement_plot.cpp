@@ -6,8 +6,8 @@
 
 #include <fmt/format.h>
 
-#include "plot/line_chart.hpp"
 #include "plot/canvas.hpp"
+#include "plot/line_chart.hpp"
 #include "sim/world/plan_drawing.hpp"
 #include "study/greedy_placement.hpp"
 

@@ -1,9 +1,7 @@
 #include "study/study_runner.hpp"
 
-#include <atomic>
 #include <chrono>
 #include <mutex>
-#include <thread>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -11,12 +9,13 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "core/thread_start.hpp"
+#include "core/worker_pool.hpp"
 #include "core/yaml_document.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
 #include "study/radio_resolution.hpp"
+#include "study/result_columns.hpp"
 
 namespace wifislam::study {
 
@@ -43,8 +42,6 @@ const YAML::Node& base_scene_yaml(const StudyFile& study) {
   if (it == cache.end()) it = cache.emplace(key, load_yaml_file(key)).first;
   return it->second;
 }
-
-std::int64_t count(std::int64_t v) { return v; }
 
 }  // namespace
 
@@ -101,82 +98,22 @@ void check_cases(const StudyFile& study) {
 }
 
 std::vector<std::string> metric_columns(StudyLevel level) {
-  if (level == StudyLevel::kRadio) {
-    return {"pauses",
-            "pairs",
-            "resolution_m",
-            "near_similar_share",
-            "far_similar_share",
-            "clusters",
-            "aps_heard_per_pause"};
-  }
-  return {"ate_rmse_m",
-          "keyframes",
-          "loop_closures",
-          "scored_closures",
-          "correct_closures",
-          "right_place_imprecise",
-          "wrong_place_closures",
-          "far_wrong_place_closures",
-          "false_positive_pct",
-          "revisit_episodes",
-          "false_negatives",
-          "false_negative_pct",
-          "wrong_place_after_pruning",
-          "far_wrong_place_after_pruning",
-          "false_negatives_after_pruning",
-          "candidate_comparisons",
-          "long_term_comparisons",
-          "wifi_clusters",
-          "cost_model_s"};
+  return level == StudyLevel::kRadio ? column_names(radio_metric_columns())
+                                     : column_names(slam_metric_columns());
 }
 
 std::vector<std::string> timing_columns(StudyLevel level) {
   if (level == StudyLevel::kRadio) return {"case_s"};
-  return {"loop_closure_detection_s", "bounded_module_s", "wifi_overhead_s", "total_s", "wall_s"};
+  return column_names(slam_timing_columns());
 }
 
-std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
-                                const fs::path& scratch_dir, int jobs) {
-  const auto start = Clock::now();
-  const sim::Scene scene = case_scene(study, c);
-  const slam::SlamOptions slam_options = case_slam_options(study, c);
-  const std::string scene_hash = sha256_hex(sim::resolved_scene_yaml(scene));
-  std::vector<ResultRow> rows;
-  if (study.level == StudyLevel::kRadio) {
-    const RadioResolution r =
-        radio_resolution(simulate_pauses(scene, slam_options.wifi), slam_options.wifi);
-    ResultRow row;
-    row.variant = "radio";
-    row.scene_hash = scene_hash;
-    row.metrics = {{"pauses", std::int64_t{r.pauses}},
-                   {"pairs", std::int64_t{r.pairs}},
-                   {"resolution_m", r.resolution_m ? SqlValue(*r.resolution_m) : SqlValue()},
-                   {"near_similar_share", r.near_similar_share},
-                   {"far_similar_share", r.far_similar_share},
-                   {"clusters", std::int64_t{r.clusters}},
-                   {"aps_heard_per_pause", r.aps_heard_per_pause}};
-    row.timing = {{"case_s", std::chrono::duration<double>(Clock::now() - start).count()}};
-    rows.push_back(std::move(row));
-    return rows;
-  }
+namespace {
 
-  ComparisonOptions compare;
-  compare.frontend = slam_options.frontend;
-  for (const std::string& s : study.slam.settings) compare.settings.push_back(s);
-  for (std::size_t a = 0; a < study.axes.size(); ++a) {
-    if (study.axes[a].kind == AxisKind::kSlamOption) {
-      compare.settings.push_back(study.axes[a].key.substr(5) + "=" + c.values[a]);
-    }
-  }
-  compare.seeds = 1;
-  compare.fps = study.slam.fps;
-  compare.max_frames = study.slam.max_frames;
-  compare.plots = false;
-  compare.jobs = jobs;
+/// A SLAM case's scratch folder, `scratch_dir`/<case id>, empty. A previous attempt at this case,
+/// killed before its rows were written, left its folder: it is removed, but only when it carries
+/// this tool's marker (never a same-named folder of the user's).
+fs::path fresh_case_folder(const fs::path& scratch_dir, const StudyCase& c) {
   const fs::path work = scratch_dir / c.id;
-  // A previous attempt at this case, killed before its rows were written, left its folder: remove
-  // it, but only when it carries this tool's marker (never a same-named folder of the user's).
   if (fs::exists(work)) {
     if (!fs::exists(work / kOutputMarkerFile) && !fs::is_empty(work)) {
       throw InvalidInputError(
@@ -187,41 +124,59 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   }
   fs::create_directories(work);
   write_file_atomic(work / kOutputMarkerFile, "study case scratch folder\n");
-  const ComparisonResult result = run_comparison({scene}, compare, work);
+  return work;
+}
+
+/// The comparison of one SLAM-level case: its scene and options, one seed, vanilla and Wi-Fi.
+ComparisonOptions case_comparison(const StudyFile& study, const StudyCase& c,
+                                  const slam::SlamOptions& slam_options, int jobs) {
+  ComparisonOptions compare;
+  compare.slam = slam_options;
+  // The labels of the runs' folders: the options set, as the study file gives them.
+  for (const std::string& s : study.slam.settings) compare.settings.push_back(s);
+  for (std::size_t a = 0; a < study.axes.size(); ++a) {
+    if (study.axes[a].kind == AxisKind::kSlamOption) {
+      compare.settings.push_back(study.axes[a].key.substr(5) + "=" + c.values[a]);
+    }
+  }
+  compare.slam_seed_set = assigns_slam_seed(compare.settings);
+  compare.seeds = 1;
+  compare.fps = study.slam.fps;
+  compare.max_frames = study.slam.max_frames;
+  compare.plots = false;
+  compare.jobs = jobs;
+  return compare;
+}
+
+}  // namespace
+
+std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
+                                const fs::path& scratch_dir, int jobs) {
+  const auto start = Clock::now();
+  const sim::Scene scene = case_scene(study, c);
+  const slam::SlamOptions slam_options = case_slam_options(study, c);
+  const std::string scene_hash = sha256_hex(sim::resolved_scene_yaml(scene));
+  if (study.level == StudyLevel::kRadio) {
+    const RadioResolution r = radio_resolution(
+        simulate_pauses(std::make_shared<const sim::Site>(scene), slam_options.wifi),
+        slam_options.wifi);
+    ResultRow row;
+    row.variant = "radio";
+    row.scene_hash = scene_hash;
+    row.metrics = column_values(radio_metric_columns(), r);
+    row.timing = {{"case_s", std::chrono::duration<double>(Clock::now() - start).count()}};
+    return {row};
+  }
+  const fs::path work = fresh_case_folder(scratch_dir, c);
+  const ComparisonResult result =
+      run_comparison({scene}, case_comparison(study, c, slam_options, jobs), work);
+  std::vector<ResultRow> rows;
   for (const ComparisonCase& run : result.cases) {
-    const eval::RunEvaluation& e = run.evaluation;
-    const auto lt = e.timing.roles.find("long_term");
-    const eval::RoleTiming long_term = lt == e.timing.roles.end() ? eval::RoleTiming{} : lt->second;
-    const eval::LoopClosureCounts& on = e.loop_closure_score.online;
-    const eval::LoopClosureCounts& pruned = e.loop_closure_score.after_pruning;
     ResultRow row;
     row.variant = run.wifi ? "wifi" : "vanilla";
     row.scene_hash = scene_hash;
-    row.metrics = {{"ate_rmse_m", e.ate_rmse_m},
-                   {"keyframes", count(e.keyframes)},
-                   {"loop_closures", count(e.loop_closures_detected)},
-                   {"scored_closures", count(on.scored)},
-                   {"correct_closures", count(on.correct)},
-                   {"right_place_imprecise", count(on.right_place_imprecise)},
-                   {"wrong_place_closures", count(on.wrong_place)},
-                   {"far_wrong_place_closures", count(on.far_wrong_place)},
-                   {"false_positive_pct", on.false_positive_pct},
-                   {"revisit_episodes", count(e.revisit_episodes)},
-                   {"false_negatives", count(on.false_negatives)},
-                   {"false_negative_pct", on.false_negative_pct},
-                   {"wrong_place_after_pruning", count(pruned.wrong_place)},
-                   {"far_wrong_place_after_pruning", count(pruned.far_wrong_place)},
-                   {"false_negatives_after_pruning", count(pruned.false_negatives)},
-                   {"candidate_comparisons", count(e.candidate_comparisons)},
-                   {"long_term_comparisons", count(long_term.comparisons)},
-                   {"wifi_clusters", count(e.wifi_clusters)},
-                   {"cost_model_s", e.cost_model_s ? SqlValue(*e.cost_model_s) : SqlValue()}};
-    row.timing = {
-        {"loop_closure_detection_s", e.loop_closure_detection_s},
-        {"bounded_module_s", e.timing.candidate_selection_s + long_term.time_s + e.optimisation_s},
-        {"wifi_overhead_s", e.wifi_overhead_s},
-        {"total_s", e.total_s},
-        {"wall_s", e.wall_s}};
+    row.metrics = column_values(slam_metric_columns(), run.evaluation);
+    row.timing = column_values(slam_timing_columns(), run.evaluation);
     rows.push_back(std::move(row));
   }
   fs::remove_all(work);
@@ -256,41 +211,21 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
   }
   const fs::path scratch = options.database.string() + ".work";
 
-  std::mutex mutex;  // the store, the progress line and the first error
-  std::exception_ptr first_error;
-  std::atomic<std::size_t> next{0};
+  std::mutex mutex;  // the store and the progress line
   std::size_t done = 0;
   // Radio cases run `jobs` at a time; a SLAM case runs its two variants in parallel instead.
   const int case_threads = study.level == StudyLevel::kRadio ? options.jobs : 1;
   const int slam_jobs = study.level == StudyLevel::kSlam ? options.jobs : 1;
-  const auto worker = [&] {
-    for (std::size_t i = next++; i < todo.size(); i = next++) {
-      {
-        std::lock_guard lock(mutex);
-        if (first_error) return;
-      }
-      try {
-        const auto case_start = Clock::now();
-        const std::vector<ResultRow> rows = run_case(study, todo[i], scratch, slam_jobs);
-        std::lock_guard lock(mutex);
-        store.write_case(todo[i], rows);
-        ++done;
-        progress(fmt::format("[{}/{}] case {} ({}): {:.1f} s", summary.skipped + done, cases.size(),
-                             todo[i].id, case_label(study, todo[i]),
-                             std::chrono::duration<double>(Clock::now() - case_start).count()));
-      } catch (...) {
-        std::lock_guard lock(mutex);
-        if (!first_error) first_error = std::current_exception();
-      }
-    }
-  };
-  const int threads =
-      std::max(1, std::min<int>(clamp_thread_count(case_threads), static_cast<int>(todo.size())));
-  std::vector<std::thread> pool;
-  start_threads(pool, threads - 1, worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  if (first_error) std::rethrow_exception(first_error);
+  parallel_for(clamp_thread_count(case_threads), todo.size(), [&](std::size_t i) {
+    const auto case_start = Clock::now();
+    const std::vector<ResultRow> rows = run_case(study, todo[i], scratch, slam_jobs);
+    std::lock_guard lock(mutex);
+    store.write_case(todo[i], rows);
+    ++done;
+    progress(fmt::format("[{}/{}] case {} ({}): {:.1f} s", summary.skipped + done, cases.size(),
+                         todo[i].id, case_label(study, todo[i]),
+                         std::chrono::duration<double>(Clock::now() - case_start).count()));
+  });
   std::error_code ec;
   fs::remove(scratch, ec);  // empty once every case is done (never recursive: it may be shared)
   summary.ran = done;

@@ -65,9 +65,7 @@ void run(CompareArgs args, const CLI::App& app) {
   if (scenes.empty()) {
     throw ParseError("compare", "scenes", "give scene files, or --preset paper-rgbdslam");
   }
-  study::ComparisonOptions options;
-  options.frontend = args.frontend;
-  options.settings = args.settings;
+  study::ComparisonOptions options(args.frontend, args.settings);
   for (const std::string& s : args.sweeps) options.sweeps.push_back(study::parse_sweep(s));
   for (const std::string& s : args.eval_settings) eval::set_option(options.eval, s);
   options.seeds = args.seeds;

@@ -11,10 +11,8 @@
 #include "apps/demo_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/output_folder.hpp"
-#include "sim/radio/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
-#include "sim/site/site.hpp"
-#include "sim/world/plan_drawing.hpp"
+#include "sim/site/site_pictures.hpp"
 #include "study/comparison_study.hpp"
 
 namespace {
@@ -32,18 +30,12 @@ struct DemoArgs {
 void draw_scene_pictures(const wifislam::sim::Scene& scene, const std::filesystem::path& dir) {
   using namespace wifislam;
   const sim::Site site(scene);
-  sim::PlanDrawingOptions plan_options;
-  plan_options.title = scene.name + " (seed " + std::to_string(scene.seed) + ")";
-  for (const auto& ap : site.access_points()) plan_options.access_points_m.push_back(ap.position_m);
-  sim::draw_floor_plan(site.world(), dir / "plan.png", plan_options);
+  sim::draw_site_plan(site, dir / "plan.png");
   // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
   // and with the shadowing of the dataset's scans.
   sim::radio::RadioMapOptions map_options;
   map_options.receiver_height_m = site.receiver_height_m();
-  const sim::radio::RadioMap map =
-      sim::radio::compute_radio_map(site.radio(), site.world().plan, map_options);
-  sim::radio::write_radio_map_png(map, site.world().plan, site.access_points(),
-                                  dir / "radio_map.png", scene.sensors.wifi.sensitivity_dbm);
+  sim::draw_site_radio_map(site, map_options, dir / "radio_map.png");
   write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(scene));
 }
 
@@ -61,8 +53,7 @@ void run_demo(const DemoArgs& args) {
   // is likeliest to accept false loop closures between look-alike places (apps/demo_scene.hpp
   // gives what it measures); the c_hall twin (`wifislam compare --preset paper-rgbdslam`) shows
   // the effect in full.
-  study::ComparisonOptions options;
-  options.settings = {"min_matches=10"};
+  study::ComparisonOptions options("rgbdslam", {"min_matches=10"});
   if (!args.quiet) {
     options.on_progress = [](const std::string& line) { fmt::print(stderr, "demo: {}\n", line); };
   }

@@ -10,12 +10,8 @@
 #include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "sim/radio/propagation_model.hpp"
-#include "sim/radio/radio_map.hpp"
-#include "sim/radio/wifi_scanner.hpp"
 #include "sim/scene/scene_loader.hpp"
-#include "sim/site/site.hpp"
-#include "sim/world/world_types.hpp"
+#include "sim/site/site_pictures.hpp"
 
 namespace {
 
@@ -43,8 +39,6 @@ void run_radiomap(const RadiomapArgs& args) {
         *args.height_m, ceiling_m));
   }
   const sim::Site site(scene);
-  const sim::radio::PropagationModel& model = site.radio();
-  const sim::World& world = site.world();
   sim::radio::RadioMapOptions options;
   options.resolution_m = args.resolution_m;
   options.receiver_height_m = args.height_m.value_or(site.receiver_height_m());
@@ -52,12 +46,9 @@ void run_radiomap(const RadiomapArgs& args) {
   options.band = args.band == "2.4" ? sim::radio::RadioMapBand::k2_4GHz
                  : args.band == "5" ? sim::radio::RadioMapBand::k5GHz
                                     : sim::radio::RadioMapBand::kBest;
-  const sim::radio::RadioMap map = sim::radio::compute_radio_map(model, world.plan, options);
-  const double floor_dbm =
-      sim::radio::WifiScannerOptions::from_scene(scene.sensors.wifi).sensitivity_dbm;
-  sim::radio::write_radio_map_png(map, world.plan, model.access_points(), args.output, floor_dbm);
+  const sim::radio::RadioMap map = sim::draw_site_radio_map(site, options, args.output);
   fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
-             map.rows, map.resolution_m, model.access_points().size());
+             map.rows, map.resolution_m, site.access_points().size());
   if (!args.csv.empty()) {
     sim::radio::write_radio_map_csv(map, args.csv);
     fmt::print("wrote {}\n", args.csv);

@@ -9,7 +9,7 @@
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
-#include "sim/world/plan_drawing.hpp"
+#include "sim/site/site_pictures.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace {
@@ -31,16 +31,13 @@ void run_world(const WorldArgs& args) {
   const sim::MotionProfile& motion = site.motion();
   const std::vector<sim::radio::AccessPoint>& access_points = site.access_points();
   if (!args.plan_path.empty()) {
-    sim::PlanDrawingOptions options;
-    options.title = fmt::format("{} (seed {})", scene.name, scene.seed);
-    for (const auto& ap : access_points) options.access_points_m.push_back(ap.position_m);
-    std::filesystem::path png = args.plan_path;
-    sim::draw_floor_plan(world, png, options);
+    const std::filesystem::path png = args.plan_path;
+    sim::draw_site_plan(site, png);
     fmt::print("wrote {}\n", png.string());
     if (args.svg && png.extension() != ".svg") {
       const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
       check_output_file(svg, {args.scene_path});
-      sim::draw_floor_plan(world, svg, options);
+      sim::draw_site_plan(site, svg);
       fmt::print("wrote {}\n", svg.string());
     }
   }

@@ -26,9 +26,7 @@ TEST(OrbslamPaperEffect, OnTheBHallTwinWifiAcceptsNoFarWrongPlaceClosure) {
                                     ("wifislam_orbslam_effect_" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   std::filesystem::create_directories(out);
-  ComparisonOptions options;
-  options.frontend = "orbslam";
-  options.settings = {"min_matches=10"};
+  ComparisonOptions options("orbslam", {"min_matches=10"});
   options.fps = 2.0;
   options.jobs = 2;
   options.plots = false;

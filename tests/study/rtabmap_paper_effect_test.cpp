@@ -27,8 +27,7 @@ TEST(RtabmapPaperEffect, UnderTheTimeThresholdVanillaMissesTheRevisitAndWifiClos
   sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   ASSERT_EQ(scene.route.nodes, (std::vector<std::string>{"E", "B", "C", "D", "A", "B", "E"}));
   scene.route.nodes.back() = "C";  // on into the east corridor again
-  ComparisonOptions options;
-  options.frontend = "rtabmap";
+  ComparisonOptions options("rtabmap", {});
   options.sweeps = {parse_sweep("time_threshold_ms=inf,70")};
   options.fps = 1.5;
   options.jobs = 2;

@@ -44,8 +44,7 @@ TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorr
                                     ("wifislam_claim_test_" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   std::filesystem::create_directories(out);
-  ComparisonOptions options;
-  options.settings = {"min_matches=10"};
+  ComparisonOptions options("rgbdslam", {"min_matches=10"});
   options.seeds = 2;
   options.jobs = 2;
   options.plots = false;
