@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/option_table.hpp"
 #include "eval/alignment.hpp"
 
 namespace wifislam::eval {
@@ -80,11 +81,59 @@ struct EvalOptions {
   nlohmann::ordered_json to_json() const;
 };
 
+/// The names of the alignment modes (`align`).
+options::Choices<AlignmentMode> alignment_modes();
+
+/// Every threshold of `o` (core/option_table.hpp), in the order metrics.json and report.md list
+/// them. A data table: one line per option.
+template <class V>
+void visit_options(V& v, EvalOptions& o) {
+  v.number("max_time_difference_s", o.max_time_difference_s,
+           "pair estimated and ground-truth stamps closer than this (s)");
+  v.number("time_offset_s", o.time_offset_s,
+           "added to the estimate's stamps before pairing (s, evaluate_ate.py --offset)");
+  v.choice("align", o.align, alignment_modes(),
+           "move the estimate onto ground truth: none, se3 (rigid) or sim3 (with scale)");
+  v.number("rpe_delta_m", o.rpe_delta_m, "RPE over this ground-truth path length (m)");
+  v.number("overlap_max_distance_m", o.overlap_max_distance_m,
+           "views farther apart than this never overlap (m)");
+  v.number("overlap_max_angle_deg", o.overlap_max_angle_deg,
+           "views turned more than this never overlap (deg)");
+  v.integer("overlap_sample_stride_px", o.overlap_sample_stride_px,
+            "depth samples back-projected on a grid of this step (px)");
+  v.integer("overlap_lookup_stride_px", o.overlap_lookup_stride_px,
+            "the other view's depth looked up on a grid of this step (px)");
+  v.number("overlap_depth_tolerance_m", o.overlap_depth_tolerance_m,
+           "depth agreement, absolute part (m)");
+  v.number("overlap_depth_tolerance_rel", o.overlap_depth_tolerance_rel,
+           "depth agreement, relative part (fraction of depth)");
+  v.number("overlap_min_fraction", o.overlap_min_fraction,
+           "views overlap when this fraction of samples lands in the other view");
+  v.number("revisit_min_path_m", o.revisit_min_path_m,
+           "a true revisit needs this much ground-truth travel between the keyframes (m)");
+  v.integer("episode_max_gap_keyframes", o.episode_max_gap_keyframes,
+            "keyframes without partner tolerated inside one revisit episode");
+  v.number("loop_max_translation_error_m", o.loop_max_translation_error_m,
+           "correct loop closure: relative translation error at most this (m)");
+  v.number("loop_max_rotation_error_deg", o.loop_max_rotation_error_deg,
+           "correct loop closure: relative rotation error at most this (deg)");
+  v.number("right_place_max_distance_m", o.right_place_max_distance_m,
+           "right place, imprecise: keyframes truly at most this far apart (m)");
+  v.number("right_place_max_translation_error_m", o.right_place_max_translation_error_m,
+           "right place, imprecise: relative translation error at most this (m)");
+  v.number("right_place_max_rotation_error_deg", o.right_place_max_rotation_error_deg,
+           "right place, imprecise: relative rotation error at most this (deg)");
+  v.number("far_distance_m", o.far_distance_m,
+           "far wrong-place closure: keyframes truly farther apart than this (m)");
+}
+
 /// Names of the options `set_option` accepts, each with a one-line description.
 std::vector<std::pair<std::string, std::string>> option_descriptions();
 
-/// Applies "key=value" (`align` takes none / se3 / sim3). Throws InvalidInputError naming the key
-/// (unknown key, value not a number, out of range).
+/// Applies "key=value" by the rules of core/option_table.hpp (`align` takes none / se3 / sim3).
+/// Throws ParseError naming the key (unknown key, with the closest; a value that does not read as
+/// the option's type) or InvalidInputError when the value is out of range; `options` is then
+/// unchanged.
 void set_option(EvalOptions& options, const std::string& assignment);
 
 /// Throws InvalidInputError when a value is out of its range.

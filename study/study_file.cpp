@@ -67,9 +67,9 @@ bool is_front_end(const std::string& name) {
 }
 
 std::vector<std::string> slam_option_keys() {
-  slam::SlamOptions options;
   std::vector<std::string> keys;
-  for (const slam::OptionField& f : slam::option_fields(options)) keys.push_back("slam." + f.key);
+  for (const std::string& key : options::option_keys<slam::SlamOptions>())
+    keys.push_back("slam." + key);
   return keys;
 }
 

@@ -198,11 +198,13 @@ TEST(EvalOptions, SetAndValidate) {
   EXPECT_EQ(o.align, AlignmentMode::kSim3);  // unchanged by the rejected value
   EXPECT_EQ(o.episode_max_gap_keyframes, 4);
   EXPECT_EQ(o.to_json()["revisit_min_path_m"], 12.5);
-  EXPECT_NE(error_of([&] { set_option(o, "revisit_min_pth_m=3"); }).find("unknown"),
+  EXPECT_NE(error_of([&] {
+              set_option(o, "revisit_min_pth_m=3");
+            }).find("did you mean 'revisit_min_path_m'?"),
             std::string::npos);
   EXPECT_NE(error_of([&] { set_option(o, "overlap_min_fraction=2"); }).find("overlap_min_fraction"),
             std::string::npos);
-  EXPECT_NE(error_of([&] { set_option(o, "rpe_delta_m=abc"); }).find("not a number"),
+  EXPECT_NE(error_of([&] { set_option(o, "rpe_delta_m=abc"); }).find("expected a finite number"),
             std::string::npos);
   EXPECT_NE(error_of([&] { set_option(o, "episode_max_gap_keyframes=1.5"); }).find("integer"),
             std::string::npos);

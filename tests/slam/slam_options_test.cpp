@@ -67,8 +67,11 @@ TEST(SlamOptions, BadInputNamesTheKey) {
     FAIL();
   } catch (const ParseError& e) {
     EXPECT_EQ(e.key_path(), "min_match");
-    EXPECT_NE(std::string(e.what()).find("min_matches"), std::string::npos);  // lists known keys
+    EXPECT_NE(std::string(e.what()).find("did you mean 'min_matches'?"), std::string::npos)
+        << e.what();
   }
+  // The rules every option table shares (core/option_table.hpp): whole numbers for integers.
+  EXPECT_THROW(set_option_assignment(o, "min_matches=15.0"), ParseError);
   EXPECT_THROW(set_option_assignment(o, "min_matches=lots"), ParseError);
   EXPECT_THROW(set_option_assignment(o, "min_matches"), ParseError);
   EXPECT_THROW(set_option_assignment(o, "odometry_edges=maybe"), ParseError);
@@ -114,15 +117,14 @@ TEST(SlamOptions, RtabmapParametersHaveRtabmapDefaultsAndTimeThresholdTakesInf) 
 // back through set_option to the same options.
 TEST(SlamOptions, TheHelpReferenceListsEveryKeyWithADefaultThatReadsBack) {
   const std::string reference = option_reference();
-  SlamOptions defaults;
-  for (const OptionField& f : option_fields(defaults)) {
-    const std::string prefix = "  " + f.key + "=";
+  for (const std::string& key : options::option_keys<SlamOptions>()) {
+    const std::string prefix = "  " + key + "=";
     const std::size_t at = reference.find(prefix);
-    ASSERT_NE(at, std::string::npos) << f.key;
+    ASSERT_NE(at, std::string::npos) << key;
     const std::size_t end = reference.find('\n', at);
     SlamOptions read_back;
-    set_option(read_back, f.key, reference.substr(at + prefix.size(), end - at - prefix.size()));
-    EXPECT_EQ(to_json(read_back), to_json(SlamOptions{})) << f.key;
+    set_option(read_back, key, reference.substr(at + prefix.size(), end - at - prefix.size()));
+    EXPECT_EQ(to_json(read_back), to_json(SlamOptions{})) << key;
   }
   EXPECT_NE(reference.find("  time_threshold_ms=inf\n"), std::string::npos);
   EXPECT_NE(reference.find("Rtabmap/TimeThr"), std::string::npos);
