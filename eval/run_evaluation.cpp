@@ -1,135 +1,205 @@
 #include "eval/run_evaluation.hpp"
 
 #include <utility>
+#include <vector>
 
 namespace wifislam::eval {
 
-nlohmann::ordered_json RunEvaluation::flat_metrics() const {
-  nlohmann::ordered_json j;
-  j["run_dir"] = run_dir;
-  j["dataset_dir"] = dataset_dir;
-  j["frontend"] = frontend;
-  j["wifi_run"] = wifi_run;
-  if (cost_model_s) j["cost_model_s"] = *cost_model_s;
-  if (loop_closure_cost_s) j["loop_closure_cost_s"] = *loop_closure_cost_s;
-  if (likelihood_posterior_cpu_s) j["likelihood_posterior_cpu_s"] = *likelihood_posterior_cpu_s;
-  j["frames_estimated"] = frames_estimated;
-  j["frames_ground_truth"] = frames_ground_truth;
-  j["frames_associated"] = frames_associated;
-  j["ate_rmse_m"] = ate_rmse_m;
-  j["ate_mean_m"] = ate_mean_m;
-  j["ate_median_m"] = ate_median_m;
-  j["ate_max_m"] = ate_max_m;
-  j["alignment_scale"] = alignment.scale;
-  j["rpe_pairs"] = rpe_pairs;
-  j["rpe_trans_per_m"] = rpe_trans_per_m;
-  j["rpe_rot_deg_per_m"] = rpe_rot_deg_per_m;
-  j["rpe_trans_rmse_m"] = rpe_trans_rmse_m;
-  j["rpe_rot_rmse_deg"] = rpe_rot_rmse_deg;
-  j["loop_closures_available"] = loop_closures_available;
-  if (loop_closures_available) {
-    j["loop_closure_source"] = loop_closure_source;
-    j["loop_closure_csv_rows"] = loop_closure_csv_rows;
-    const LoopClosureScore& s = loop_closure_score;
-    j["loop_edges_considered"] = s.edges_considered;
-    j["loop_edges_short_path"] = s.edges_short_path;
-    for (const auto& [prefix, counts] :
-         {std::pair{"online_", &s.online}, std::pair{"pruned_", &s.after_pruning}}) {
-      const nlohmann::ordered_json values = counts->to_json();  // outlives the loop below
-      for (const auto& [name, value] : values.items()) j[prefix + name] = value;
+namespace {
+
+using Json = nlohmann::ordered_json;
+using E = RunEvaluation;
+
+// The evaluation's metrics, listed once, with where each appears: in the flat row (metrics.csv,
+// comparison.csv: a key, or a prefix before each key of an object's items) and in the sections of
+// metrics.json (a key, or an object whose items join the section). Both forms follow the table's
+// order; where they place a value apart (the thresholds, overlap_used_depth) it has two entries.
+
+enum class Flat { kNone, kKey, kPrefixed };
+enum class Nested { kNone, kKey, kMerged };
+
+struct Metric {
+  Flat flat;
+  const char* flat_name;  // key or prefix
+  Nested nested;
+  const char* section;  // "" top level
+  const char* nested_name;
+  bool (*present)(const E&);
+  Json (*value)(const E&);
+  Json (*nested_value)(const E&) = nullptr;  // when metrics.json shows more than the flat row
+};
+
+bool always(const E&) { return true; }
+bool with_closures(const E& e) { return e.loop_closures_available; }
+bool without_closures(const E& e) { return !e.loop_closures_available; }
+bool with_timing(const E& e) { return e.timing_available; }
+bool without_timing(const E& e) { return !e.timing_available; }
+
+/// A metric in both forms under one name.
+Metric both(const char* section, const char* name, bool (*present)(const E&),
+            Json (*value)(const E&)) {
+  return {Flat::kKey, name, Nested::kKey, section, name, present, value};
+}
+
+Json alignment_json(const E& e) {
+  const Alignment& a = e.alignment;
+  return {
+      {"mode", eval::to_string(e.options.align)},
+      {"scale", a.scale},
+      {"rotation_row_major",
+       {a.rotation(0, 0), a.rotation(0, 1), a.rotation(0, 2), a.rotation(1, 0), a.rotation(1, 1),
+        a.rotation(1, 2), a.rotation(2, 0), a.rotation(2, 1), a.rotation(2, 2)}},
+      {"translation_m", {a.translation_m.x(), a.translation_m.y(), a.translation_m.z()}}};
+}
+
+Json closures_json(const E& e) {
+  Json out = Json::array();
+  for (const ScoredLoopClosure& c : e.loop_closure_score.closures)
+    out.push_back(eval::to_json(c, e.keyframe_truth));
+  return out;
+}
+
+Json episodes_json(const E& e) {
+  Json out = Json::array();
+  for (const RevisitEpisode& r : e.loop_closure_score.episodes) out.push_back(eval::to_json(r));
+  return out;
+}
+
+Json counters_json(const E& e) {
+  Json out = Json::object();
+  for (const auto& [name, value] : e.timing.counters) out[name] = value;
+  return out;
+}
+
+const std::vector<Metric>& metric_list() {
+  static const std::vector<Metric> list = {
+      both("", "run_dir", always, [](const E& e) { return Json(e.run_dir); }),
+      both("", "dataset_dir", always, [](const E& e) { return Json(e.dataset_dir); }),
+      both("", "frontend", always, [](const E& e) { return Json(e.frontend); }),
+      both("", "wifi_run", always, [](const E& e) { return Json(e.wifi_run); }),
+      both(
+          "", "cost_model_s", [](const E& e) { return e.cost_model_s.has_value(); },
+          [](const E& e) { return Json(*e.cost_model_s); }),
+      both(
+          "", "loop_closure_cost_s", [](const E& e) { return e.loop_closure_cost_s.has_value(); },
+          [](const E& e) { return Json(*e.loop_closure_cost_s); }),
+      both(
+          "", "likelihood_posterior_cpu_s",
+          [](const E& e) { return e.likelihood_posterior_cpu_s.has_value(); },
+          [](const E& e) { return Json(*e.likelihood_posterior_cpu_s); }),
+      {Flat::kNone, "", Nested::kKey, "", "thresholds", always,
+       [](const E& e) { return e.options.to_json(); }},
+      // Trajectory error.
+      both("trajectory", "frames_estimated", always,
+           [](const E& e) { return Json(e.frames_estimated); }),
+      both("trajectory", "frames_ground_truth", always,
+           [](const E& e) { return Json(e.frames_ground_truth); }),
+      both("trajectory", "frames_associated", always,
+           [](const E& e) { return Json(e.frames_associated); }),
+      both("trajectory", "ate_rmse_m", always, [](const E& e) { return Json(e.ate_rmse_m); }),
+      both("trajectory", "ate_mean_m", always, [](const E& e) { return Json(e.ate_mean_m); }),
+      both("trajectory", "ate_median_m", always, [](const E& e) { return Json(e.ate_median_m); }),
+      both("trajectory", "ate_max_m", always, [](const E& e) { return Json(e.ate_max_m); }),
+      {Flat::kKey, "alignment_scale", Nested::kKey, "trajectory", "alignment", always,
+       [](const E& e) { return Json(e.alignment.scale); }, alignment_json},
+      both("trajectory", "rpe_pairs", always, [](const E& e) { return Json(e.rpe_pairs); }),
+      both("trajectory", "rpe_trans_per_m", always,
+           [](const E& e) { return Json(e.rpe_trans_per_m); }),
+      both("trajectory", "rpe_rot_deg_per_m", always,
+           [](const E& e) { return Json(e.rpe_rot_deg_per_m); }),
+      both("trajectory", "rpe_trans_rmse_m", always,
+           [](const E& e) { return Json(e.rpe_trans_rmse_m); }),
+      both("trajectory", "rpe_rot_rmse_deg", always,
+           [](const E& e) { return Json(e.rpe_rot_rmse_deg); }),
+      // Loop closures.
+      {Flat::kKey, "loop_closures_available", Nested::kKey, "loop_closures", "available", always,
+       [](const E& e) { return Json(e.loop_closures_available); }},
+      {Flat::kNone, "", Nested::kKey, "loop_closures", "note", without_closures,
+       [](const E& e) { return Json(e.loop_closure_note); }},
+      {Flat::kKey, "loop_closure_source", Nested::kKey, "loop_closures", "source", with_closures,
+       [](const E& e) { return Json(e.loop_closure_source); }},
+      both("loop_closures", "loop_closure_csv_rows", with_closures,
+           [](const E& e) { return Json(e.loop_closure_csv_rows); }),
+      {Flat::kKey, "loop_edges_considered", Nested::kKey, "loop_closures", "edges_considered",
+       with_closures, [](const E& e) { return Json(e.loop_closure_score.edges_considered); }},
+      {Flat::kKey, "loop_edges_short_path", Nested::kKey, "loop_closures", "edges_short_path",
+       with_closures, [](const E& e) { return Json(e.loop_closure_score.edges_short_path); }},
+      {Flat::kPrefixed, "online_", Nested::kKey, "loop_closures", "online", with_closures,
+       [](const E& e) { return e.loop_closure_score.online.to_json(); }},
+      {Flat::kPrefixed, "pruned_", Nested::kKey, "loop_closures", "pruned", with_closures,
+       [](const E& e) { return e.loop_closure_score.after_pruning.to_json(); }},
+      both("loop_closures", "revisit_episodes", with_closures,
+           [](const E& e) { return Json(e.revisit_episodes); }),
+      both("loop_closures", "revisit_keyframes", with_closures,
+           [](const E& e) { return Json(e.revisit_keyframes); }),
+      {Flat::kKey, "overlap_used_depth", Nested::kNone, "", "", with_closures,
+       [](const E& e) { return Json(e.overlap_used_depth); }},
+      both("loop_closures", "overlap_method", with_closures,
+           [](const E& e) { return Json(e.overlap_method); }),
+      {Flat::kNone, "", Nested::kKey, "loop_closures", "overlap_used_depth", with_closures,
+       [](const E& e) { return Json(e.overlap_used_depth); }},
+      both("loop_closures", "overlap_pairs_tested", with_closures,
+           [](const E& e) { return Json(e.loop_closure_score.pairs_tested); }),
+      both("loop_closures", "overlap_pairs_geometric_only", with_closures,
+           [](const E& e) { return Json(e.loop_closure_score.pairs_geometric_only); }),
+      {Flat::kNone, "", Nested::kKey, "loop_closures", "closures", with_closures, closures_json},
+      {Flat::kNone, "", Nested::kKey, "loop_closures", "episodes", with_closures, episodes_json},
+      // Time and work.
+      {Flat::kKey, "timing_available", Nested::kKey, "timing", "available", always,
+       [](const E& e) { return Json(e.timing_available); }},
+      {Flat::kNone, "", Nested::kKey, "timing", "note", without_timing,
+       [](const E& e) { return Json(e.timing_note); }},
+      {Flat::kNone, "", Nested::kMerged, "timing", "", with_timing,
+       [](const E& e) { return e.timing.to_json(); }},
+      {Flat::kKey, "loop_closure_detection_s", Nested::kNone, "", "", with_timing,
+       [](const E& e) { return Json(e.loop_closure_detection_s); }},
+      {Flat::kKey, "wifi_overhead_s", Nested::kNone, "", "", with_timing,
+       [](const E& e) { return Json(e.wifi_overhead_s); }},
+      {Flat::kKey, "optimisation_s", Nested::kNone, "", "", with_timing,
+       [](const E& e) { return Json(e.optimisation_s); }},
+      {Flat::kKey, "total_s", Nested::kNone, "", "", with_timing,
+       [](const E& e) { return Json(e.total_s); }},
+      {Flat::kKey, "wall_s", Nested::kNone, "", "", with_timing,
+       [](const E& e) { return Json(e.wall_s); }},
+      both("timing", "candidate_comparisons", with_timing,
+           [](const E& e) { return Json(e.candidate_comparisons); }),
+      {Flat::kPrefixed, "counter.", Nested::kNone, "", "", with_timing, counters_json},
+      both("timing", "keyframes", always, [](const E& e) { return Json(e.keyframes); }),
+      both("", "wifi_clusters", always, [](const E& e) { return Json(e.wifi_clusters); }),
+      {Flat::kPrefixed, "threshold.", Nested::kNone, "", "", always,
+       [](const E& e) { return e.options.to_json(); }},
+  };
+  return list;
+}
+
+}  // namespace
+
+Json RunEvaluation::flat_metrics() const {
+  Json j;
+  for (const Metric& m : metric_list()) {
+    if (m.flat == Flat::kNone || !m.present(*this)) continue;
+    const Json value = m.value(*this);
+    if (m.flat == Flat::kKey) {
+      j[m.flat_name] = value;
+    } else {
+      for (const auto& [name, item] : value.items()) j[m.flat_name + name] = item;
     }
-    j["revisit_episodes"] = revisit_episodes;
-    j["revisit_keyframes"] = revisit_keyframes;
-    j["overlap_used_depth"] = overlap_used_depth;
-    j["overlap_method"] = overlap_method;
-    j["overlap_pairs_tested"] = s.pairs_tested;
-    j["overlap_pairs_geometric_only"] = s.pairs_geometric_only;
   }
-  j["timing_available"] = timing_available;
-  if (timing_available) {
-    j["loop_closure_detection_s"] = loop_closure_detection_s;
-    j["wifi_overhead_s"] = wifi_overhead_s;
-    j["optimisation_s"] = optimisation_s;
-    j["total_s"] = total_s;
-    j["wall_s"] = wall_s;
-    j["candidate_comparisons"] = candidate_comparisons;
-    for (const auto& [name, value] : timing.counters) j["counter." + name] = value;
-  }
-  j["keyframes"] = keyframes;
-  j["wifi_clusters"] = wifi_clusters;
-  const nlohmann::ordered_json thresholds = options.to_json();
-  for (const auto& [name, value] : thresholds.items()) j["threshold." + name] = value;
   return j;
 }
 
-nlohmann::ordered_json RunEvaluation::to_ordered_json() const {
-  nlohmann::ordered_json j;
-  j["run_dir"] = run_dir;
-  j["dataset_dir"] = dataset_dir;
-  j["frontend"] = frontend;
-  j["wifi_run"] = wifi_run;
-  if (cost_model_s) j["cost_model_s"] = *cost_model_s;
-  if (loop_closure_cost_s) j["loop_closure_cost_s"] = *loop_closure_cost_s;
-  if (likelihood_posterior_cpu_s) j["likelihood_posterior_cpu_s"] = *likelihood_posterior_cpu_s;
-  j["thresholds"] = options.to_json();
-  j["trajectory"] = {
-      {"frames_estimated", frames_estimated},
-      {"frames_ground_truth", frames_ground_truth},
-      {"frames_associated", frames_associated},
-      {"ate_rmse_m", ate_rmse_m},
-      {"ate_mean_m", ate_mean_m},
-      {"ate_median_m", ate_median_m},
-      {"ate_max_m", ate_max_m},
-      {"alignment",
-       {{"mode", eval::to_string(options.align)},
-        {"scale", alignment.scale},
-        {"rotation_row_major",
-         {alignment.rotation(0, 0), alignment.rotation(0, 1), alignment.rotation(0, 2),
-          alignment.rotation(1, 0), alignment.rotation(1, 1), alignment.rotation(1, 2),
-          alignment.rotation(2, 0), alignment.rotation(2, 1), alignment.rotation(2, 2)}},
-        {"translation_m",
-         {alignment.translation_m.x(), alignment.translation_m.y(), alignment.translation_m.z()}}}},
-      {"rpe_pairs", rpe_pairs},
-      {"rpe_trans_per_m", rpe_trans_per_m},
-      {"rpe_rot_deg_per_m", rpe_rot_deg_per_m},
-      {"rpe_trans_rmse_m", rpe_trans_rmse_m},
-      {"rpe_rot_rmse_deg", rpe_rot_rmse_deg}};
-  nlohmann::ordered_json lc;
-  lc["available"] = loop_closures_available;
-  if (!loop_closures_available) {
-    lc["note"] = loop_closure_note;
-  } else {
-    const LoopClosureScore& s = loop_closure_score;
-    lc["source"] = loop_closure_source;
-    lc["loop_closure_csv_rows"] = loop_closure_csv_rows;
-    lc["edges_considered"] = s.edges_considered;
-    lc["edges_short_path"] = s.edges_short_path;
-    lc["online"] = s.online.to_json();
-    lc["pruned"] = s.after_pruning.to_json();
-    lc["revisit_episodes"] = revisit_episodes;
-    lc["revisit_keyframes"] = revisit_keyframes;
-    lc["overlap_method"] = overlap_method;
-    lc["overlap_used_depth"] = overlap_used_depth;
-    lc["overlap_pairs_tested"] = s.pairs_tested;
-    lc["overlap_pairs_geometric_only"] = s.pairs_geometric_only;
-    lc["closures"] = nlohmann::ordered_json::array();
-    for (const ScoredLoopClosure& c : s.closures)
-      lc["closures"].push_back(eval::to_json(c, keyframe_truth));
-    lc["episodes"] = nlohmann::ordered_json::array();
-    for (const RevisitEpisode& e : s.episodes) lc["episodes"].push_back(eval::to_json(e));
+Json RunEvaluation::to_ordered_json() const {
+  Json j;
+  for (const Metric& m : metric_list()) {
+    if (m.nested == Nested::kNone || !m.present(*this)) continue;
+    Json& section = *m.section ? j[m.section] : j;
+    const Json value = m.nested_value ? m.nested_value(*this) : m.value(*this);
+    if (m.nested == Nested::kKey) {
+      section[m.nested_name] = value;
+    } else {
+      section.update(value);
+    }
   }
-  j["loop_closures"] = lc;
-  nlohmann::ordered_json time;
-  time["available"] = timing_available;
-  if (!timing_available) {
-    time["note"] = timing_note;
-  } else {
-    time.update(timing.to_json());
-    time["candidate_comparisons"] = candidate_comparisons;
-  }
-  time["keyframes"] = keyframes;
-  j["timing"] = time;
-  j["wifi_clusters"] = wifi_clusters;
   return j;
 }
 
