@@ -33,6 +33,8 @@ bool parse_boolean(std::string_view text, bool& out) {
 
 bool parse_integer(std::string_view text, int& out) { return parse_whole(text, out); }
 
+bool parse_int64(std::string_view text, std::int64_t& out) { return parse_whole(text, out); }
+
 bool parse_uint64(std::string_view text, std::uint64_t& out) { return parse_whole(text, out); }
 
 bool parse_number(std::string_view text, double& out, Infinity infinity) {

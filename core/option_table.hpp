@@ -43,6 +43,7 @@ using Choices = std::vector<std::pair<E, std::string_view>>;
 
 bool parse_boolean(std::string_view text, bool& out);
 bool parse_integer(std::string_view text, int& out);
+bool parse_int64(std::string_view text, std::int64_t& out);
 bool parse_uint64(std::string_view text, std::uint64_t& out);
 bool parse_number(std::string_view text, double& out, Infinity infinity);
 

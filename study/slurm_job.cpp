@@ -1,10 +1,15 @@
 #include "study/slurm_job.hpp"
 
+#include <unistd.h>
+
 #include <cctype>
+#include <cstdio>
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 
 namespace wifislam::study {
 
@@ -15,6 +20,21 @@ std::string sh(const std::string& text) {
   std::string out = "'";
   for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return out + "'";
+}
+
+/// Runs `command` and returns its standard output; throws naming it when it fails.
+std::string run_capturing(const std::string& command) {
+  FILE* pipe = ::popen(command.c_str(), "r");
+  if (!pipe) throw EnvironmentError("cannot run: " + command);
+  std::string out;
+  char buffer[4096];
+  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+  const int status = ::pclose(pipe);
+  if (status != 0) {
+    throw EnvironmentError(fmt::format("`{}` failed (status {}): {}", command, status, out));
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+  return out;
 }
 
 std::string job_name(const StudyFile& study) {
@@ -79,6 +99,32 @@ SlurmJobFiles slurm_job_files(const StudyFile& study, const SlurmJobRequest& req
       fmt::arg("bin", sh(request.wifislam_binary.string())), fmt::arg("shards", shards),
       fmt::arg("dir_q", sh(dir)));
   return files;
+}
+
+void write_slurm_job(const std::filesystem::path& folder, bool replace,
+                     const SlurmJobFiles& files) {
+  AtomicDirectory out(folder, replace);
+  write_file_atomic(out.staging_path() / "study.sbatch", files.array_script);
+  write_file_atomic(out.staging_path() / "merge.sbatch", files.merge_script);
+  std::filesystem::create_directories(out.staging_path() / "shards");
+  std::filesystem::create_directories(out.staging_path() / "logs");
+  out.commit();
+}
+
+SubmittedSlurmJob submit_slurm_job(const std::filesystem::path& folder) {
+  SubmittedSlurmJob job;
+  job.array_id = run_capturing(
+      fmt::format("sbatch --parsable {} 2>&1", sh((folder / "study.sbatch").string())));
+  job.merge_id = run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} {} 2>&1",
+                                           job.array_id, sh((folder / "merge.sbatch").string())));
+  return job;
+}
+
+std::filesystem::path own_binary() {
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (ec) throw EnvironmentError("cannot find the wifislam binary (/proc/self/exe)");
+  return self;
 }
 
 }  // namespace wifislam::study

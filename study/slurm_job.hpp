@@ -36,4 +36,19 @@ struct SlurmJobFiles {
 SlurmJobFiles slurm_job_files(const StudyFile& study, const SlurmJobRequest& request,
                               const std::filesystem::path& folder);
 
+/// Writes the job folder (the two scripts, shards/ and logs/) atomically; `replace` as
+/// core/output_folder.hpp's check_output_folder decided.
+void write_slurm_job(const std::filesystem::path& folder, bool replace, const SlurmJobFiles& files);
+
+struct SubmittedSlurmJob {
+  std::string array_id, merge_id;
+};
+
+/// Submits the folder's array job with sbatch, then its merge job to start when every task has
+/// succeeded (afterok). Throws EnvironmentError with sbatch's output when it fails.
+SubmittedSlurmJob submit_slurm_job(const std::filesystem::path& folder);
+
+/// The running wifislam binary (/proc/self/exe, absolute), for the job scripts.
+std::filesystem::path own_binary();
+
 }  // namespace wifislam::study

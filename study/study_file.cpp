@@ -12,6 +12,7 @@
 #include "core/atomic_file.hpp"
 #include "core/did_you_mean.hpp"
 #include "core/error.hpp"
+#include "core/option_table.hpp"
 #include "core/yaml_document.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "slam/frontend/front_end_registry.hpp"
@@ -131,22 +132,16 @@ StudyFile load_study_file(const fs::path& path) {
   return load_study_yaml(buffer.str(), path);
 }
 
-StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
-  const std::string file = path.string();
-  const YAML::Node root = parse_yaml_document(text, file);
-  const Reader r(file);
-  if (!root.IsMap()) throw ParseError(file, "", "a study file is a mapping of keys (see studies/)");
-  r.only_keys(root, kTopLevelKeys, "");
+namespace {
+
+/// version, name, description, scene (relative to the study file) and level.
+void read_header(const Reader& r, const YAML::Node& root, const fs::path& path, StudyFile& study) {
   for (const char* key : {"version", "name", "scene", "axes"}) {
-    if (!root[key]) throw ParseError(file, key, fmt::format("missing key '{}'", key));
+    if (!root[key]) throw ParseError(path.string(), key, fmt::format("missing key '{}'", key));
   }
   if (r.scalar(root["version"], "version") != "1") {
     r.fail(root["version"], "version", "unsupported study version; this build reads version 1");
   }
-
-  StudyFile study;
-  study.path = path;
-  study.file_hash = sha256_hex(text);
   study.name = r.scalar(root["name"], "name");
   if (study.name.empty() || study.name.find_first_of("\n\r") != std::string::npos) {
     r.fail(root["name"], "name", "expected a one-line name");
@@ -164,57 +159,61 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
       r.fail(root["level"], "level", "expected 'radio' or 'slam', got '" + level + "'");
     }
   }
+}
 
-  if (const YAML::Node set = root["set"]) {
-    if (!set.IsMap()) r.fail(set, "set", "expected a mapping of scene keys to values");
-    for (const auto& kv : set) {
-      const std::string key = kv.first.Scalar();
-      if (!sim::is_scene_key_path(key)) {
-        r.fail(
-            kv.first, "set." + key,
-            "not a scene key" + did_you_mean(sim::generic_key_path(key), sim::scene_key_paths()));
+/// `set`: scene keys for every case, kept as flow YAML to set on each case's scene.
+void read_scene_set(const Reader& r, const YAML::Node& set, StudyFile& study) {
+  if (!set.IsMap()) r.fail(set, "set", "expected a mapping of scene keys to values");
+  for (const auto& kv : set) {
+    const std::string key = kv.first.Scalar();
+    if (!sim::is_scene_key_path(key)) {
+      r.fail(kv.first, "set." + key,
+             "not a scene key" + did_you_mean(sim::generic_key_path(key), sim::scene_key_paths()));
+    }
+    if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
+      r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");
+    }
+    YAML::Emitter out;
+    out << YAML::Flow << kv.second;
+    study.scene_set.emplace_back(key, out.c_str());
+  }
+}
+
+StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Node& values) {
+  StudyAxis axis;
+  axis.key = key_node.Scalar();
+  axis.where = r.where(key_node);
+  axis.kind = axis_kind(r, key_node, axis.key);
+  const std::string key_path = "axes." + axis.key;
+  if (values.IsScalar()) {
+    axis.values.push_back(values.Scalar());
+  } else if (values.IsSequence() && values.size() > 0) {
+    for (const YAML::Node& v : values) axis.values.push_back(r.scalar(v, key_path));
+  } else {
+    r.fail(values, key_path, "expected a value or a non-empty list of values");
+  }
+  std::set<std::string> seen;
+  for (const std::string& v : axis.values) {
+    if (!seen.insert(v).second) r.fail(values, key_path, "value '" + v + "' is listed twice");
+  }
+  if (axis.kind == AxisKind::kFrontend) {
+    for (const std::string& v : axis.values) {
+      if (!is_front_end(v)) {
+        r.fail(values, key_path,
+               fmt::format("unknown front end '{}' (known: {})", v, slam::front_end_name_list()));
       }
-      if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
-        r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");
-      }
-      YAML::Emitter out;
-      out << YAML::Flow << kv.second;
-      study.scene_set.emplace_back(key, out.c_str());
     }
   }
+  return axis;
+}
 
-  const YAML::Node axes = root["axes"];
+/// `axes`, in file order; each axis is one column, so two must not share a column name, and
+/// their product must stay within the case ids' five digits.
+void read_axes(const Reader& r, const YAML::Node& axes, StudyFile& study) {
   if (!axes.IsMap() || axes.size() == 0) {
     r.fail(axes, "axes", "expected a mapping of axis keys to lists of values");
   }
-  for (const auto& kv : axes) {
-    StudyAxis axis;
-    axis.key = kv.first.Scalar();
-    axis.where = r.where(kv.first);
-    axis.kind = axis_kind(r, kv.first, axis.key);
-    const YAML::Node values = kv.second;
-    const std::string key_path = "axes." + axis.key;
-    if (values.IsScalar()) {
-      axis.values.push_back(values.Scalar());
-    } else if (values.IsSequence() && values.size() > 0) {
-      for (const YAML::Node& v : values) axis.values.push_back(r.scalar(v, key_path));
-    } else {
-      r.fail(values, key_path, "expected a value or a non-empty list of values");
-    }
-    std::set<std::string> seen;
-    for (const std::string& v : axis.values) {
-      if (!seen.insert(v).second) r.fail(values, key_path, "value '" + v + "' is listed twice");
-    }
-    if (axis.kind == AxisKind::kFrontend) {
-      for (const std::string& v : axis.values) {
-        if (!is_front_end(v)) {
-          r.fail(values, key_path,
-                 fmt::format("unknown front end '{}' (known: {})", v, slam::front_end_name_list()));
-        }
-      }
-    }
-    study.axes.push_back(std::move(axis));
-  }
+  for (const auto& kv : axes) study.axes.push_back(read_axis(r, kv.first, kv.second));
   // Distinct column names: "a.b" and "a_b" would share one.
   std::set<std::string> columns;
   for (const StudyAxis& a : study.axes) {
@@ -222,7 +221,6 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
       throw ParseError(a.where, "axes." + a.key, "two axes share the column " + column_name(a.key));
     }
   }
-
   std::size_t product_size = 1;
   for (const StudyAxis& axis : study.axes) {
     product_size *= axis.values.size();  // at most kMaxStudyCases times a list's length
@@ -233,9 +231,12 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
                          axis.key, kMaxStudyCases));
     }
   }
-  // The full product in axis order (the last axis varies fastest).
+}
+
+/// The full product of the axes' values, in axis order (the last axis varies fastest).
+std::vector<std::vector<std::string>> axis_product(const std::vector<StudyAxis>& axes) {
   std::vector<std::vector<std::string>> product = {{}};
-  for (const StudyAxis& axis : study.axes) {
+  for (const StudyAxis& axis : axes) {
     std::vector<std::vector<std::string>> next;
     for (const auto& partial : product) {
       for (const std::string& v : axis.values) {
@@ -246,79 +247,113 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
     }
     product = std::move(next);
   }
-  if (const YAML::Node listed = root["cases"]) {
-    if (!listed.IsSequence() || listed.size() == 0) {
-      r.fail(listed, "cases", "expected a list of cases, each a mapping of every axis to a value");
-    }
-    std::set<std::size_t> chosen;
-    for (std::size_t i = 0; i < listed.size(); ++i) {
-      const YAML::Node c = listed[i];
-      const std::string key_path = fmt::format("cases[{}]", i);
-      if (!c.IsMap()) r.fail(c, key_path, "expected a mapping of every axis to a value");
-      std::vector<std::string> axis_keys;
-      for (const StudyAxis& axis : study.axes) axis_keys.push_back(axis.key);
-      r.only_keys(c, axis_keys, key_path + ".");
-      // The case's index in the product, from its values' places (searching the product for
-      // each listed case took listed x product comparisons).
-      std::size_t index = 0;
-      for (const StudyAxis& axis : study.axes) {
-        if (!c[axis.key]) r.fail(c, key_path, "missing axis '" + axis.key + "'");
-        const std::string v = r.scalar(c[axis.key], key_path + "." + axis.key);
-        const auto at = std::find(axis.values.begin(), axis.values.end(), v);
-        if (at == axis.values.end()) {
-          r.fail(c[axis.key], key_path + "." + axis.key,
-                 fmt::format("'{}' is not one of the axis's values", v));
-        }
-        index = index * axis.values.size() + static_cast<std::size_t>(at - axis.values.begin());
+  return product;
+}
+
+/// The index in the product of each listed case (`cases`), in increasing order.
+std::set<std::size_t> listed_case_indexes(const Reader& r, const YAML::Node& listed,
+                                          const std::vector<StudyAxis>& axes) {
+  if (!listed.IsSequence() || listed.size() == 0) {
+    r.fail(listed, "cases", "expected a list of cases, each a mapping of every axis to a value");
+  }
+  std::vector<std::string> axis_keys;
+  for (const StudyAxis& axis : axes) axis_keys.push_back(axis.key);
+  std::set<std::size_t> chosen;
+  for (std::size_t i = 0; i < listed.size(); ++i) {
+    const YAML::Node c = listed[i];
+    const std::string key_path = fmt::format("cases[{}]", i);
+    if (!c.IsMap()) r.fail(c, key_path, "expected a mapping of every axis to a value");
+    r.only_keys(c, axis_keys, key_path + ".");
+    // The case's index in the product, from its values' places (searching the product for
+    // each listed case took listed x product comparisons).
+    std::size_t index = 0;
+    for (const StudyAxis& axis : axes) {
+      if (!c[axis.key]) r.fail(c, key_path, "missing axis '" + axis.key + "'");
+      const std::string v = r.scalar(c[axis.key], key_path + "." + axis.key);
+      const auto at = std::find(axis.values.begin(), axis.values.end(), v);
+      if (at == axis.values.end()) {
+        r.fail(c[axis.key], key_path + "." + axis.key,
+               fmt::format("'{}' is not one of the axis's values", v));
       }
-      if (!chosen.insert(index).second) r.fail(c, key_path, "this case is listed twice");
+      index = index * axis.values.size() + static_cast<std::size_t>(at - axis.values.begin());
     }
-    for (std::size_t index : chosen)
+    if (!chosen.insert(index).second) r.fail(c, key_path, "this case is listed twice");
+  }
+  return chosen;
+}
+
+/// The cases: those listed under `cases`, else the whole product.
+void make_cases(const Reader& r, const YAML::Node& listed, StudyFile& study) {
+  const std::vector<std::vector<std::string>> product = axis_product(study.axes);
+  if (listed) {
+    for (std::size_t index : listed_case_indexes(r, listed, study.axes))
       study.cases.push_back(make_case(study.axes, product[index], index));
   } else {
     for (std::size_t i = 0; i < product.size(); ++i)
       study.cases.push_back(make_case(study.axes, product[i], i));
   }
+}
 
-  if (const YAML::Node s = root["slam"]) {
-    if (!s.IsMap()) r.fail(s, "slam", "expected a mapping (frontend, fps, max_frames, settings)");
-    r.only_keys(s, kSlamKeys, "slam.");
-    if (s["frontend"]) {
-      study.slam.frontend = r.scalar(s["frontend"], "slam.frontend");
-      if (!is_front_end(study.slam.frontend)) {
-        r.fail(s["frontend"], "slam.frontend",
-               fmt::format("unknown front end (known: {})", slam::front_end_name_list()));
-      }
-    }
-    if (s["fps"]) {
-      double fps = 0;
-      if (!YAML::convert<double>::decode(s["fps"], fps) || !(fps > 0 && fps <= 120)) {
-        r.fail(s["fps"], "slam.fps", "expected frames per second in (0, 120]");
-      }
-      study.slam.fps = fps;
-    }
-    if (s["max_frames"]) {
-      long long frames = 0;
-      if (!YAML::convert<long long>::decode(s["max_frames"], frames) || frames < -1) {
-        r.fail(s["max_frames"], "slam.max_frames", "expected a whole number >= -1 (-1: all)");
-      }
-      study.slam.max_frames = frames;
-    }
-    if (const YAML::Node settings = s["settings"]) {
-      if (!settings.IsMap()) r.fail(settings, "slam.settings", "expected a mapping of options");
-      for (const auto& kv : settings) {
-        const std::string key = kv.first.Scalar();
-        const std::string value = r.scalar(kv.second, "slam.settings." + key);
-        slam::SlamOptions probe;
-        try {
-          slam::set_option(probe, key, value);
-        } catch (const Error& e) {
-          r.fail(kv.first, "slam.settings." + key, e.what());
-        }
-        study.slam.settings.push_back(key + "=" + value);
-      }
+/// `slam`: front end, frame rate, length, and SLAM options (checked now, applied per case). The
+/// numbers read by the options' text rules (core/option_table.hpp).
+void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
+  if (!s.IsMap()) r.fail(s, "slam", "expected a mapping (frontend, fps, max_frames, settings)");
+  r.only_keys(s, kSlamKeys, "slam.");
+  if (s["frontend"]) {
+    study.slam.frontend = r.scalar(s["frontend"], "slam.frontend");
+    if (!is_front_end(study.slam.frontend)) {
+      r.fail(s["frontend"], "slam.frontend",
+             fmt::format("unknown front end (known: {})", slam::front_end_name_list()));
     }
   }
+  if (s["fps"]) {
+    double fps = 0;
+    if (!options::parse_number(r.scalar(s["fps"], "slam.fps"), fps, options::Infinity::kRefused) ||
+        !(fps > 0 && fps <= 120)) {
+      r.fail(s["fps"], "slam.fps", "expected frames per second in (0, 120]");
+    }
+    study.slam.fps = fps;
+  }
+  if (s["max_frames"]) {
+    std::int64_t frames = 0;
+    if (!options::parse_int64(r.scalar(s["max_frames"], "slam.max_frames"), frames) ||
+        frames < -1) {
+      r.fail(s["max_frames"], "slam.max_frames", "expected a whole number >= -1 (-1: all)");
+    }
+    study.slam.max_frames = frames;
+  }
+  if (const YAML::Node settings = s["settings"]) {
+    if (!settings.IsMap()) r.fail(settings, "slam.settings", "expected a mapping of options");
+    for (const auto& kv : settings) {
+      const std::string key = kv.first.Scalar();
+      const std::string value = r.scalar(kv.second, "slam.settings." + key);
+      slam::SlamOptions probe;
+      try {
+        slam::set_option(probe, key, value);
+      } catch (const Error& e) {
+        r.fail(kv.first, "slam.settings." + key, e.what());
+      }
+      study.slam.settings.push_back(key + "=" + value);
+    }
+  }
+}
+
+}  // namespace
+
+StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
+  const std::string file = path.string();
+  const YAML::Node root = parse_yaml_document(text, file);
+  const Reader r(file);
+  if (!root.IsMap()) throw ParseError(file, "", "a study file is a mapping of keys (see studies/)");
+  r.only_keys(root, kTopLevelKeys, "");
+  StudyFile study;
+  study.path = path;
+  study.file_hash = sha256_hex(text);
+  read_header(r, root, path, study);
+  if (const YAML::Node set = root["set"]) read_scene_set(r, set, study);
+  read_axes(r, root["axes"], study);
+  make_cases(r, root["cases"], study);
+  if (const YAML::Node s = root["slam"]) read_slam(r, s, study);
   return study;
 }
 

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <mutex>
+#include <regex>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -181,6 +182,15 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   }
   fs::remove_all(work);
   return rows;
+}
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  static const std::regex form(R"(^([0-9]{1,6})/([0-9]{1,6})$)");
+  std::smatch m;
+  if (!std::regex_match(text, m, form)) throw ParseError("--shard", text, "expected i/N, e.g. 0/4");
+  const int i = std::stoi(m[1]), n = std::stoi(m[2]);
+  if (n < 1 || i >= n) throw ParseError("--shard", text, "expected 0 <= i < N");
+  return {i, n};
 }
 
 StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options) {

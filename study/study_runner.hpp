@@ -61,4 +61,7 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
 
 StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options);
 
+/// "i/N" (0 <= i < N, up to six digits each) as (i, N); ParseError naming --shard otherwise.
+std::pair<int, int> parse_shard(const std::string& text);
+
 }  // namespace wifislam::study

@@ -7,12 +7,8 @@
 //   study slurm FILE --tasks N -o DIR     write (and with --submit submit) a job array + merge
 //   study plot DB -o DIR                  the study's curves as PNG and SVG
 //   study place SCENE --budget K -o DIR   greedy AP placement against random placement
-#include <unistd.h>
-
-#include <cstdio>
 #include <filesystem>
 #include <memory>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -27,6 +23,8 @@
 #include "sim/scene/scene_loader.hpp"
 #include "slam/slam_options.hpp"
 #include "study/greedy_placement.hpp"
+#include "study/output_database.hpp"
+#include "study/placement_files.hpp"
 #include "study/result_store.hpp"
 #include "study/slurm_job.hpp"
 #include "study/study_file.hpp"
@@ -38,40 +36,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace wifislam;
 
-/// The rule for a study database path: a new file; the database of the same study (resumed,
-/// the one documented exception to "replace only with --force"); with --force, a study database
-/// of another study (replaced). Anything else is refused.
-void prepare_database(const fs::path& path, const study::StudyFile& file, bool force,
-                      const std::vector<fs::path>& inputs) {
-  check_output_file(path, inputs);
-  std::error_code ec;
-  if (!fs::exists(path, ec)) return;
-  const auto identity = study::ResultStore::read_identity(path);
-  if (!identity) {
-    throw InvalidInputError(fmt::format(
-        "{}: exists and is not a study database; refusing to touch it (even with --force)",
-        path.string()));
-  }
-  if (*identity == study::identity_of(file)) return;  // resume
-  if (!force) {
-    throw InvalidInputError(fmt::format(
-        "{}: a study database of study '{}' (another study file, or another build of wifislam); "
-        "give --force to replace it, or another -o",
-        path.string(), identity->name));
-  }
-  fs::remove(path);
-  fs::remove(path.string() + "-journal", ec);
-}
-
-std::pair<int, int> parse_shard(const std::string& text) {
-  static const std::regex form(R"(^([0-9]{1,6})/([0-9]{1,6})$)");
-  std::smatch m;
-  if (!std::regex_match(text, m, form)) throw ParseError("--shard", text, "expected i/N, e.g. 0/4");
-  const int i = std::stoi(m[1]), n = std::stoi(m[2]);
-  if (n < 1 || i >= n) throw ParseError("--shard", text, "expected 0 <= i < N");
-  return {i, n};
-}
-
 struct RunArgs {
   std::string file, output, shard = "0/1";
   int jobs = 1;
@@ -80,8 +44,8 @@ struct RunArgs {
 
 void run_study_command(const RunArgs& args) {
   const study::StudyFile file = study::load_study_file(args.file);
-  const auto [index, count] = parse_shard(args.shard);
-  prepare_database(args.output, file, args.force, {args.file, file.scene_path});
+  const auto [index, count] = study::parse_shard(args.shard);
+  study::prepare_run_database(args.output, file, args.force, {args.file, file.scene_path});
   study::StudyRunOptions options;
   options.database = args.output;
   options.shard_index = index;
@@ -101,34 +65,12 @@ struct SlurmArgs {
   bool submit = false, force = false;
 };
 
-fs::path own_binary() {
-  std::error_code ec;
-  const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) throw EnvironmentError("cannot find the wifislam binary (/proc/self/exe)");
-  return self;
-}
-
-/// Runs `command` and returns its standard output; throws naming it when it fails.
-std::string run_capturing(const std::string& command) {
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (!pipe) throw EnvironmentError("cannot run: " + command);
-  std::string out;
-  char buffer[4096];
-  while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  if (status != 0) {
-    throw EnvironmentError(fmt::format("`{}` failed (status {}): {}", command, status, out));
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
-  return out;
-}
-
 void slurm_command(const SlurmArgs& args) {
   const study::StudyFile file = study::load_study_file(args.file);
   study::check_cases(file);
   const bool replace = check_output_folder({args.output, args.force, {}, {args.file}});
   study::SlurmJobRequest request;
-  request.wifislam_binary = own_binary();
+  request.wifislam_binary = study::own_binary();
   request.study_file = fs::absolute(args.file).lexically_normal();
   request.tasks = args.tasks;
   request.cpus_per_task = args.cpus;
@@ -136,14 +78,7 @@ void slurm_command(const SlurmArgs& args) {
   request.time_limit = args.time_limit;
   const fs::path folder = fs::absolute(args.output).lexically_normal();
   const study::SlurmJobFiles files = study::slurm_job_files(file, request, folder);
-  {
-    AtomicDirectory out(folder, replace);
-    write_file_atomic(out.staging_path() / "study.sbatch", files.array_script);
-    write_file_atomic(out.staging_path() / "merge.sbatch", files.merge_script);
-    fs::create_directories(out.staging_path() / "shards");
-    fs::create_directories(out.staging_path() / "logs");
-    out.commit();
-  }
+  study::write_slurm_job(folder, replace, files);
   fmt::print("wrote {0}/study.sbatch ({1} tasks) and {0}/merge.sbatch\n", folder.string(),
              args.tasks);
   if (!args.submit) {
@@ -153,13 +88,9 @@ void slurm_command(const SlurmArgs& args) {
         folder.string());
     return;
   }
-  const std::string array_id =
-      run_capturing(fmt::format("sbatch --parsable '{}/study.sbatch' 2>&1", folder.string()));
-  const std::string merge_id =
-      run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} '{}/merge.sbatch' 2>&1",
-                                array_id, folder.string()));
-  fmt::print("submitted array job {} and merge job {}; merged database: {}/{}\n", array_id,
-             merge_id, folder.string(), files.merged_database.string());
+  const study::SubmittedSlurmJob job = study::submit_slurm_job(folder);
+  fmt::print("submitted array job {} and merge job {}; merged database: {}/{}\n", job.array_id,
+             job.merge_id, folder.string(), files.merged_database.string());
 }
 
 struct PlotArgs {
@@ -195,10 +126,6 @@ struct PlaceArgs {
   bool force = false, quiet = false;
 };
 
-std::string optional_m(const std::optional<double>& v) {
-  return v ? fmt::format("{:.3f}", *v) : std::string();
-}
-
 void place_command(const PlaceArgs& args) {
   const sim::Scene scene = sim::load_scene_file(args.scene);
   slam::SlamOptions slam_options;
@@ -216,49 +143,167 @@ void place_command(const PlaceArgs& args) {
   }
   const study::PlacementResult result = study::greedy_placement(scene, options);
 
+  fmt::print("{}", study::placement_table(result));
   AtomicDirectory out(args.output, replace);
-  std::string csv =
-      "count,x_m,y_m,z_m,error,resolution_m,near_similar_share,far_similar_share,"
-      "aps_heard_per_pause,random_error,random_resolution_m,random_near_similar_share,"
-      "random_far_similar_share\n";
-  std::string yaml = fmt::format(
-      "# {} access points placed greedily on {} by `wifislam study place` (candidates every {} "
-      "m,\n# wifi_similarity {}); paste into the scene in place of its access_points block.\n"
-      "access_points:\n  placement: explicit\n  list:\n",
-      result.steps.size(), args.scene, args.spacing_m, options.wifi.similarity);
-  const auto metres = [](const std::optional<double>& v) {
-    return v ? fmt::format("{:.1f} m", *v) : std::string("none");
-  };
-  fmt::print("{:>5}  {:>16}  {:>7}  {:>10}  {:>6}  {:>6}  {:>12}  {:>12}\n", "APs",
-             "added at (x, y)", "error", "resolution", "near", "far", "random error",
-             "random res.");
-  for (const study::PlacementStep& step : result.steps) {
-    const Eigen::Vector3d& p = result.candidates[static_cast<std::size_t>(step.candidate)];
-    csv += fmt::format(
-        "{},{:.2f},{:.2f},{:.2f},{:.4f},{},{:.4f},{:.4f},{:.2f},{:.4f},{},{:.4f},{:.4f}\n",
-        step.count, p.x(), p.y(), p.z(), step.greedy_error, optional_m(step.greedy.resolution_m),
-        step.greedy.near_similar_share, step.greedy.far_similar_share,
-        step.greedy.aps_heard_per_pause, step.random_error, optional_m(step.random_resolution_m),
-        step.random_near_similar_share, step.random_far_similar_share);
-    yaml += fmt::format("    - {{position_m: [{:.2f}, {:.2f}, {:.2f}]}}\n", p.x(), p.y(), p.z());
-    fmt::print("{:>5}  {:>16}  {:>7.3f}  {:>10}  {:>6.3f}  {:>6.3f}  {:>12.3f}  {:>12}\n",
-               step.count, fmt::format("({:.1f}, {:.1f})", p.x(), p.y()), step.greedy_error,
-               metres(step.greedy.resolution_m), step.greedy.near_similar_share,
-               step.greedy.far_similar_share, step.random_error, metres(step.random_resolution_m));
-  }
-  fmt::print(
-      "the scene's own {} access points: error {:.3f}, resolution {}, near {:.3f}, far {:.3f}\n",
-      result.scene_access_points, study::placement_error(result.scene_own),
-      metres(result.scene_own.resolution_m), result.scene_own.near_similar_share,
-      result.scene_own.far_similar_share);
-  write_file_atomic(out.staging_path() / "placement.csv", csv);
-  write_file_atomic(out.staging_path() / "access_points.yaml", yaml);
-  study::plot_placement(result, scene.name, out.staging_path());
+  study::write_placement_files(result, options, args.scene, scene.name, out.staging_path());
   out.commit();
   fmt::print(
       "{} candidates, {} pauses -> {}/ (placement.csv, access_points.yaml, placement and "
       "resolution figures)\n",
       result.candidates.size(), result.pause_positions_m.size(), args.output);
+}
+
+void add_cases_command(CLI::App* app) {
+  auto file = std::make_shared<std::string>();
+  CLI::App* cases = app->add_subcommand("cases", "List a study file's cases: id and axis values");
+  cases->add_option("file", *file, "Study file (YAML)")->required();
+  cases->callback([file] {
+    const study::StudyFile s = study::load_study_file(*file);
+    std::string header = "case_id";
+    for (const study::StudyAxis& a : s.axes) header += "\t" + a.key;
+    fmt::print("{}\n", header);
+    for (const study::StudyCase& c : s.cases) {
+      std::string line = c.id;
+      for (const std::string& v : c.values) line += "\t" + v;
+      fmt::print("{}\n", line);
+    }
+    study::check_cases(s);
+    fmt::print(stderr, "study {}: {} cases, level {}, every case's scene and options check\n",
+               s.name, s.cases.size(), study::to_string(s.level));
+  });
+}
+
+void add_run_command(CLI::App* app) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* run = app->add_subcommand(
+      "run", "Run a study's cases (or one shard's) into an SQLite database; a rerun resumes");
+  run->add_option("file", args->file, "Study file (YAML)")->required();
+  run->add_option("-o,--output", args->output,
+                  "Database file. An existing database of the same study is resumed (its\n"
+                  "finished cases are skipped): the one exception to replacing only with --force")
+      ->required();
+  run->add_option("--shard", args->shard,
+                  "i/N: run the cases whose index is i modulo N (0 <= i < N)")
+      ->capture_default_str();
+  run->add_option(
+         "--jobs", args->jobs,
+         "Radio cases (or a SLAM case's two runs) in parallel; results do not depend on it")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  run->add_flag("--force", args->force, "Replace a database of another study");
+  run->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+  run->footer(
+      "Tables: study (name, study file hash, version, level, axes), results (one row per case\n"
+      "x variant: case_id, case_index, variant, one column per axis, every metric,\n"
+      "software_version, scene_hash; deterministic), timing (wall-clock seconds). A killed run\n"
+      "loses at most the case in flight; run it again to finish.");
+  run->callback([args] { run_study_command(*args); });
+}
+
+void add_merge_command(CLI::App* app) {
+  auto inputs = std::make_shared<std::vector<std::string>>();
+  auto output = std::make_shared<std::string>();
+  auto force = std::make_shared<bool>(false);
+  CLI::App* merge =
+      app->add_subcommand("merge", "Union shard databases of one study into one database");
+  merge->add_option("shards", *inputs, "Shard databases")->required();
+  merge->add_option("-o,--output", *output, "Merged database (a new file)")->required();
+  merge->add_flag("--force", *force, "Replace an existing study database");
+  merge->callback([inputs, output, force] {
+    std::vector<fs::path> paths(inputs->begin(), inputs->end());
+    study::prepare_merged_database(*output, *force, paths);
+    const std::int64_t rows = study::merge_study_databases(paths, *output);
+    fmt::print("merged {} shard databases: {} rows -> {}\n", paths.size(), rows, *output);
+  });
+}
+
+void add_slurm_command(CLI::App* app) {
+  auto args = std::make_shared<SlurmArgs>();
+  CLI::App* slurm = app->add_subcommand(
+      "slurm",
+      "Write a Slurm job array (one shard per task) and a dependent merge job for a study;\n"
+      "--submit also submits both with sbatch");
+  slurm->add_option("file", args->file, "Study file (YAML)")->required();
+  slurm->add_option("--tasks", args->tasks, "Array tasks = shards")
+      ->required()
+      ->check(CLI::Range(1, 100000));
+  slurm->add_option("--cpus-per-task", args->cpus, "CPUs per task (the shard's --jobs)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  slurm->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
+  slurm->add_option("--time", args->time_limit, "Time limit per task, e.g. 02:00:00");
+  slurm
+      ->add_option("-o,--output", args->output,
+                   "Job folder: study.sbatch, merge.sbatch, shards/, logs/, and the merged\n"
+                   "database once the merge job ran. On a cluster, a path every node sees")
+      ->required();
+  slurm->add_flag("--submit", args->submit, "Submit the array, then the merge (afterok)");
+  slurm->add_flag("--force", args->force, "Replace an existing job folder of this tool");
+  slurm->callback([args] { slurm_command(*args); });
+}
+
+void add_plot_command(CLI::App* app) {
+  auto args = std::make_shared<PlotArgs>();
+  CLI::App* plot = app->add_subcommand(
+      "plot", "Draw a study database's curves (PNG and SVG, one figure per metric)");
+  plot->add_option("database", args->database, "Study database (study run or merge)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  plot->add_option("-o,--output", args->output, "Folder for the figures and curves.csv")
+      ->required();
+  plot->add_flag("--force", args->force, "Replace an existing output folder of this tool");
+  plot->footer(
+      "x is access_points.count or appearance.aliasing when the study sweeps one, else its "
+      "first\n"
+      "numeric axis; seeds are pooled (median, band min-max); every other swept axis and the\n"
+      "variant (vanilla dashed, Wi-Fi solid) split the lines, so placements or wall materials\n"
+      "stand side by side. curves.csv holds every point: metric, line, x, cases, median, min, "
+      "max.");
+  plot->callback([args] { plot_command(*args); });
+}
+
+void add_place_command(CLI::App* app) {
+  auto args = std::make_shared<PlaceArgs>();
+  CLI::App* place = app->add_subcommand(
+      "place",
+      "Greedy access-point placement: add APs one at a time, each at the candidate position\n"
+      "(rooms, corridors, halls) that best tells places along the route apart, next to the same\n"
+      "numbers of APs placed at random among the same candidates (radio level, no rendering)");
+  place->add_option("scene", args->scene, "Scene file (YAML): the plan, route and radio")
+      ->required();
+  place->add_option("--budget", args->budget, "Access points to place")
+      ->required()
+      ->check(CLI::Range(1, study::kMaxPlacementCandidates));
+  place
+      ->add_option("-o,--output", args->output,
+                   "Folder: placement.csv, access_points.yaml (a scene block),\n"
+                   "placement.png/.svg (positions), error.png/.svg and resolution.png/.svg\n"
+                   "(greedy vs random)")
+      ->required();
+  place->add_option("--spacing", args->spacing_m, "Candidate positions no closer than this [m]")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5, 1000.0));
+  place
+      ->add_option("--random-draws", args->random_draws,
+                   "Random placements per count (their median is reported)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  place->add_option("--seed", args->seed, "Seed of the random placements (default: the scene's)")
+      ->check(cli::kSeedValidator);
+  place->add_option("--set", args->settings,
+                    "SLAM option key=value for the Wi-Fi module, e.g. --set wifi_similarity=0.85");
+  place->add_flag("--force", args->force, "Replace an existing output folder of this tool");
+  place->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+  place->footer(
+      "Resolution: the distance beyond which the median similarity of the route's pause pairs\n"
+      "stays below wifi_similarity (smaller tells closer places apart; 'none': places never "
+      "look\n"
+      "different, or not even the nearest are recognised, as with one AP). Each step minimises\n"
+      "it, then the share of pairs over\n"
+      "12 m counted similar, then maximises the share under 4 m. Every candidate's scans are\n"
+      "simulated once and each placement keeps its APs' readings, so greedy and random see the\n"
+      "same draws.");
+  place->callback([args] { place_command(*args); });
 }
 
 }  // namespace
@@ -271,162 +316,10 @@ WIFISLAM_COMMAND(study, 70) {
       "rendering) or SLAM level (vanilla and Wi-Fi), into one SQLite database; resumable,\n"
       "sharded, and spread over a Slurm cluster. Study files: studies/*.yaml.");
   app->require_subcommand(1);
-
-  {
-    auto file = std::make_shared<std::string>();
-    CLI::App* cases = app->add_subcommand("cases", "List a study file's cases: id and axis values");
-    cases->add_option("file", *file, "Study file (YAML)")->required();
-    cases->callback([file] {
-      const study::StudyFile s = study::load_study_file(*file);
-      std::string header = "case_id";
-      for (const study::StudyAxis& a : s.axes) header += "\t" + a.key;
-      fmt::print("{}\n", header);
-      for (const study::StudyCase& c : s.cases) {
-        std::string line = c.id;
-        for (const std::string& v : c.values) line += "\t" + v;
-        fmt::print("{}\n", line);
-      }
-      study::check_cases(s);
-      fmt::print(stderr, "study {}: {} cases, level {}, every case's scene and options check\n",
-                 s.name, s.cases.size(), study::to_string(s.level));
-    });
-  }
-  {
-    auto args = std::make_shared<RunArgs>();
-    CLI::App* run = app->add_subcommand(
-        "run", "Run a study's cases (or one shard's) into an SQLite database; a rerun resumes");
-    run->add_option("file", args->file, "Study file (YAML)")->required();
-    run->add_option("-o,--output", args->output,
-                    "Database file. An existing database of the same study is resumed (its\n"
-                    "finished cases are skipped): the one exception to replacing only with --force")
-        ->required();
-    run->add_option("--shard", args->shard,
-                    "i/N: run the cases whose index is i modulo N (0 <= i < N)")
-        ->capture_default_str();
-    run->add_option(
-           "--jobs", args->jobs,
-           "Radio cases (or a SLAM case's two runs) in parallel; results do not depend on it")
-        ->capture_default_str()
-        ->check(CLI::PositiveNumber);
-    run->add_flag("--force", args->force, "Replace a database of another study");
-    run->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
-    run->footer(
-        "Tables: study (name, study file hash, version, level, axes), results (one row per case\n"
-        "x variant: case_id, case_index, variant, one column per axis, every metric,\n"
-        "software_version, scene_hash; deterministic), timing (wall-clock seconds). A killed run\n"
-        "loses at most the case in flight; run it again to finish.");
-    run->callback([args] { run_study_command(*args); });
-  }
-  {
-    auto inputs = std::make_shared<std::vector<std::string>>();
-    auto output = std::make_shared<std::string>();
-    auto force = std::make_shared<bool>(false);
-    CLI::App* merge =
-        app->add_subcommand("merge", "Union shard databases of one study into one database");
-    merge->add_option("shards", *inputs, "Shard databases")->required();
-    merge->add_option("-o,--output", *output, "Merged database (a new file)")->required();
-    merge->add_flag("--force", *force, "Replace an existing study database");
-    merge->callback([inputs, output, force] {
-      std::vector<fs::path> paths(inputs->begin(), inputs->end());
-      check_output_file(*output, paths);
-      std::error_code ec;
-      if (fs::exists(*output, ec)) {
-        if (!study::ResultStore::read_identity(*output)) {
-          throw InvalidInputError(*output +
-                                  ": exists and is not a study database; refusing to "
-                                  "replace it (even with --force)");
-        }
-        if (!*force) throw InvalidInputError(*output + ": exists; give --force to replace it");
-      }
-      const std::int64_t rows = study::merge_study_databases(paths, *output);
-      fmt::print("merged {} shard databases: {} rows -> {}\n", paths.size(), rows, *output);
-    });
-  }
-  {
-    auto args = std::make_shared<SlurmArgs>();
-    CLI::App* slurm = app->add_subcommand(
-        "slurm",
-        "Write a Slurm job array (one shard per task) and a dependent merge job for a study;\n"
-        "--submit also submits both with sbatch");
-    slurm->add_option("file", args->file, "Study file (YAML)")->required();
-    slurm->add_option("--tasks", args->tasks, "Array tasks = shards")
-        ->required()
-        ->check(CLI::Range(1, 100000));
-    slurm->add_option("--cpus-per-task", args->cpus, "CPUs per task (the shard's --jobs)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1024));
-    slurm->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
-    slurm->add_option("--time", args->time_limit, "Time limit per task, e.g. 02:00:00");
-    slurm
-        ->add_option("-o,--output", args->output,
-                     "Job folder: study.sbatch, merge.sbatch, shards/, logs/, and the merged\n"
-                     "database once the merge job ran. On a cluster, a path every node sees")
-        ->required();
-    slurm->add_flag("--submit", args->submit, "Submit the array, then the merge (afterok)");
-    slurm->add_flag("--force", args->force, "Replace an existing job folder of this tool");
-    slurm->callback([args] { slurm_command(*args); });
-  }
-  {
-    auto args = std::make_shared<PlotArgs>();
-    CLI::App* plot = app->add_subcommand(
-        "plot", "Draw a study database's curves (PNG and SVG, one figure per metric)");
-    plot->add_option("database", args->database, "Study database (study run or merge)")
-        ->required()
-        ->check(CLI::ExistingFile);
-    plot->add_option("-o,--output", args->output, "Folder for the figures and curves.csv")
-        ->required();
-    plot->add_flag("--force", args->force, "Replace an existing output folder of this tool");
-    plot->footer(
-        "x is access_points.count or appearance.aliasing when the study sweeps one, else its "
-        "first\n"
-        "numeric axis; seeds are pooled (median, band min-max); every other swept axis and the\n"
-        "variant (vanilla dashed, Wi-Fi solid) split the lines, so placements or wall materials\n"
-        "stand side by side. curves.csv holds every point: metric, line, x, cases, median, min, "
-        "max.");
-    plot->callback([args] { plot_command(*args); });
-  }
-  {
-    auto args = std::make_shared<PlaceArgs>();
-    CLI::App* place = app->add_subcommand(
-        "place",
-        "Greedy access-point placement: add APs one at a time, each at the candidate position\n"
-        "(rooms, corridors, halls) that best tells places along the route apart, next to the same\n"
-        "numbers of APs placed at random among the same candidates (radio level, no rendering)");
-    place->add_option("scene", args->scene, "Scene file (YAML): the plan, route and radio")
-        ->required();
-    place->add_option("--budget", args->budget, "Access points to place")
-        ->required()
-        ->check(CLI::Range(1, study::kMaxPlacementCandidates));
-    place
-        ->add_option("-o,--output", args->output,
-                     "Folder: placement.csv, access_points.yaml (a scene block),\n"
-                     "placement.png/.svg (positions), error.png/.svg and resolution.png/.svg\n"
-                     "(greedy vs random)")
-        ->required();
-    place->add_option("--spacing", args->spacing_m, "Candidate positions no closer than this [m]")
-        ->capture_default_str()
-        ->check(CLI::Range(0.5, 1000.0));
-    place
-        ->add_option("--random-draws", args->random_draws,
-                     "Random placements per count (their median is reported)")
-        ->capture_default_str()
-        ->check(CLI::Range(1, 1000));
-    place->add_option("--seed", args->seed, "Seed of the random placements (default: the scene's)")
-        ->check(cli::kSeedValidator);
-    place->add_option(
-        "--set", args->settings,
-        "SLAM option key=value for the Wi-Fi module, e.g. --set wifi_similarity=0.85");
-    place->add_flag("--force", args->force, "Replace an existing output folder of this tool");
-    place->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
-    place->footer(
-        "Resolution: the distance beyond which the median similarity of the route's pause pairs\n"
-        "stays below wifi_similarity (smaller tells closer places apart; 'none': places never "
-        "look\n"
-        "different, or not even the nearest are recognised, as with one AP). Each step minimises\n"
-        "it, then the share of pairs over\n"
-        "12 m counted similar, then maximises the share under 4 m. Every candidate's scans are\n"
-        "simulated once and each placement keeps its APs' readings, so greedy and random see the\n"
-        "same draws.");
-    place->callback([args] { place_command(*args); });
-  }
+  add_cases_command(app);
+  add_run_command(app);
+  add_merge_command(app);
+  add_slurm_command(app);
+  add_plot_command(app);
+  add_place_command(app);
 }

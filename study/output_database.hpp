@@ -1,0 +1,25 @@
+#pragma once
+// The rules for the database file a study writes (`study run -o DB`, `study merge -o DB`): the
+// one documented exception to "an existing output is replaced only with --force" is resuming a
+// database of the same study; anything that is not a study database is never touched.
+
+#include <filesystem>
+#include <vector>
+
+#include "study/study_file.hpp"
+
+namespace wifislam::study {
+
+/// For `study run`: a new file; the database of the same study (resumed); with `force`, a study
+/// database of another study or build (removed here, with its journal). Refuses, with
+/// InvalidInputError naming the file, anything else, and an input of the command
+/// (core/output_folder.hpp's check_output_file).
+void prepare_run_database(const std::filesystem::path& path, const StudyFile& study, bool force,
+                          const std::vector<std::filesystem::path>& inputs);
+
+/// For `study merge`: a new file, or with `force` an existing study database; never a shard
+/// being merged or a file that is not a study database.
+void prepare_merged_database(const std::filesystem::path& path, bool force,
+                             const std::vector<std::filesystem::path>& shards);
+
+}  // namespace wifislam::study
