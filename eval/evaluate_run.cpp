@@ -160,60 +160,62 @@ std::vector<AcceptedEdge> accepted_edges(const fs::path& graph_file,
   return edges;
 }
 
-}  // namespace
+/// Everything a run's evaluation reads, read and checked before anything is computed.
+struct RunInputs {
+  bool bare_trajectory = false;
+  fs::path run_dir;  // empty for a bare trajectory
+  Trajectory ground_truth, estimated, keyframes;
+  fs::path trajectory_file, keyframes_file, clusters_file;
+  std::vector<AcceptedEdge> edges;
+  DatasetCalibration calibration;
+  std::int64_t offset_ns = 0;  // added to the estimate's stamps (time_offset_s, exact)
+};
 
-RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
-                           const EvalOptions& options) {
-  validate(options);
-  const bool bare_trajectory = fs::is_regular_file(input);
-  if (!bare_trajectory && !fs::is_directory(input)) {
+/// Reads the inputs; only the trajectory is required: a folder or file from another system has
+/// nothing else. Records in `ev` what the inputs hold and what is not available, and why.
+RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
+                      const EvalOptions& options, RunEvaluation& ev) {
+  RunInputs in;
+  in.bare_trajectory = fs::is_regular_file(input);
+  if (!in.bare_trajectory && !fs::is_directory(input)) {
     throw IoError(input.string() + ": neither a run folder nor a trajectory file");
   }
   if (!fs::is_directory(dataset_dir)) {
     throw IoError(dataset_dir.string() + ": dataset folder not found");
   }
-  RunEvaluation ev;
-  ev.run_dir = input.string();
-  ev.dataset_dir = dataset_dir.string();
-  ev.options = options;
-  const fs::path run_dir = bare_trajectory ? fs::path() : input;
-  auto optional_file = [&](const char* name) {
-    return bare_trajectory || !fs::is_regular_file(run_dir / name) ? fs::path() : run_dir / name;
+  in.run_dir = in.bare_trajectory ? fs::path() : input;
+  const auto optional_file = [&](const char* name) {
+    return in.bare_trajectory || !fs::is_regular_file(in.run_dir / name) ? fs::path()
+                                                                         : in.run_dir / name;
   };
   // Exactly the decimal given: an offset between Unix clocks has 16 digits or more, beyond what a
   // product with 1e9 in doubles keeps.
-  const std::int64_t offset_ns = Timestamp::from_seconds_exact(options.time_offset_s).ns;
-  auto on_dataset_clock = [offset_ns](Timestamp t) { return Timestamp::from_ns(t.ns + offset_ns); };
-
-  // Inputs (everything read and checked before anything is computed or written). Only the
-  // trajectory is required: a folder or file from another system has nothing else.
+  in.offset_ns = Timestamp::from_seconds_exact(options.time_offset_s).ns;
   required_file(dataset_dir, dataset::kGroundTruth, "the dataset's ground truth");
-  const Trajectory ground_truth = read_ground_truth(dataset_dir);
-  const fs::path trajectory_file =
-      bare_trajectory
-          ? input
-          : required_file(run_dir, run_folder::kTrajectory, "the run's estimated trajectory");
-  const Trajectory estimated = read_tum_trajectory(trajectory_file.string());
-  const fs::path keyframes_file = optional_file(run_folder::kKeyframes);
+  in.ground_truth = read_ground_truth(dataset_dir);
+  in.trajectory_file = in.bare_trajectory ? input
+                                          : required_file(in.run_dir, run_folder::kTrajectory,
+                                                          "the run's estimated trajectory");
+  in.estimated = read_tum_trajectory(in.trajectory_file.string());
+  in.keyframes_file = optional_file(run_folder::kKeyframes);
   const fs::path graph_file = optional_file(run_folder::kGraph);
   const fs::path loops_file = optional_file(run_folder::kLoopClosures);
   const fs::path timing_file = optional_file(run_folder::kTiming);
-  const Trajectory keyframes =
-      keyframes_file.empty() ? Trajectory{} : read_tum_trajectory(keyframes_file.string());
+  if (!in.keyframes_file.empty()) in.keyframes = read_tum_trajectory(in.keyframes_file.string());
   const std::vector<DetectedLoopClosure> loops =
       loops_file.empty() ? std::vector<DetectedLoopClosure>{} : read_loop_closures_csv(loops_file);
-  const std::vector<AcceptedEdge> edges = accepted_edges(graph_file, loops, loops_file);
+  in.edges = accepted_edges(graph_file, loops, loops_file);
   ev.loop_closure_csv_rows = static_cast<std::int64_t>(loops.size());
   if (!timing_file.empty()) {
     ev.timing = read_timing_json(timing_file);
     ev.timing_available = true;
   } else {
-    ev.timing_note = bare_trajectory ? "not available: a bare trajectory file has no timing"
-                                     : "not available: the run folder has no timing.json";
+    ev.timing_note = in.bare_trajectory ? "not available: a bare trajectory file has no timing"
+                                        : "not available: the run folder has no timing.json";
   }
-  if (bare_trajectory) {
+  if (in.bare_trajectory) {
     ev.loop_closure_note = "not available: a bare trajectory file has no keyframes or graph";
-  } else if (keyframes_file.empty()) {
+  } else if (in.keyframes_file.empty()) {
     ev.loop_closure_note = "not available: the run folder has no keyframes.txt";
   } else if (graph_file.empty() && loops_file.empty()) {
     ev.loop_closure_note =
@@ -227,48 +229,46 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
                                  : std::string(run_folder::kGraph);
   }
   const RunIdentity identity =
-      bare_trajectory ? RunIdentity{} : identity_of(run_dir / run_folder::kRun);
+      in.bare_trajectory ? RunIdentity{} : identity_of(in.run_dir / run_folder::kRun);
   ev.frontend = identity.frontend;
   ev.wifi_run = identity.wifi;
   ev.cost_model_s = identity.cost_model_s;
   ev.loop_closure_cost_s = identity.loop_closure_cost_s;
   ev.likelihood_posterior_cpu_s = identity.likelihood_posterior_cpu_s;
-  DatasetCalibration calibration;
   if (fs::exists(dataset_dir / dataset::kCalibration)) {
-    calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);
+    in.calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);
   }
-  ev.intrinsics = calibration.intrinsics;
-  const fs::path clusters_file = run_dir / run_folder::kWifiClusters;
+  ev.intrinsics = in.calibration.intrinsics;
+  in.clusters_file = in.run_dir / run_folder::kWifiClusters;
   if (ev.wifi_run) {
-    required_file(run_dir, run_folder::kWifiClusters, "the Wi-Fi clusters run.json announces");
-    ev.wifi_cluster_list = read_wifi_clusters_csv(clusters_file);
+    required_file(in.run_dir, run_folder::kWifiClusters, "the Wi-Fi clusters run.json announces");
+    ev.wifi_cluster_list = read_wifi_clusters_csv(in.clusters_file);
     ev.wifi_clusters = static_cast<std::int64_t>(ev.wifi_cluster_list.size());
   }
+  return in;
+}
 
-  // Ground truth with its path length.
-  std::vector<Pose> gt_poses;
-  gt_poses.reserve(ground_truth.size());
-  for (const StampedPose& p : ground_truth) gt_poses.push_back(p.pose());
-  const std::vector<double> gt_path_m = cumulative_path_length_m(gt_poses);
-  const std::vector<Timestamp> gt_times = times_of(ground_truth);
-
-  // Trajectory error. Ground truth is associate.py's first list, the estimate its second (with
-  // the offset), as evaluate_ate.py calls it: ties and repeated stamps go the same way.
+/// ATE, RPE and the aligned path. Ground truth is associate.py's first list, the estimate its
+/// second (with the offset), as evaluate_ate.py calls it: ties and repeated stamps go the same way.
+void score_trajectory(const RunInputs& in, const std::vector<Pose>& gt_poses,
+                      const std::vector<double>& gt_path_m, const fs::path& dataset_dir,
+                      const EvalOptions& options, RunEvaluation& ev) {
   const std::vector<AssociatedIndices> pairs =
-      associate_by_time(gt_times, times_of(estimated), options.max_time_difference_s, offset_ns);
-  ev.frames_estimated = static_cast<std::int64_t>(estimated.size());
-  ev.frames_ground_truth = static_cast<std::int64_t>(ground_truth.size());
+      associate_by_time(times_of(in.ground_truth), times_of(in.estimated),
+                        options.max_time_difference_s, in.offset_ns);
+  ev.frames_estimated = static_cast<std::int64_t>(in.estimated.size());
+  ev.frames_ground_truth = static_cast<std::int64_t>(in.ground_truth.size());
   ev.frames_associated = static_cast<std::int64_t>(pairs.size());
   if (pairs.size() < 3) {
     throw InvalidInputError(
         fmt::format("{} and {}: only {} poses share a timestamp (within {} s, estimate shifted "
                     "by {} s); need at least 3 (is this the run of that dataset?)",
-                    trajectory_file.string(), (dataset_dir / dataset::kGroundTruth).string(),
+                    in.trajectory_file.string(), (dataset_dir / dataset::kGroundTruth).string(),
                     pairs.size(), options.max_time_difference_s, options.time_offset_s));
   }
   std::vector<Pose> est_assoc, gt_assoc;
   for (const AssociatedIndices& a : pairs) {
-    est_assoc.push_back(estimated[a.second].pose());
+    est_assoc.push_back(in.estimated[a.second].pose());
     gt_assoc.push_back(gt_poses[a.first]);
   }
   const AbsoluteTrajectoryError ate = absolute_trajectory_error(est_assoc, gt_assoc, options.align);
@@ -286,64 +286,92 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
   ev.rpe_rot_rmse_deg = rpe.rotation_rmse_deg;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     PathSample s;
-    s.time = ground_truth[pairs[i].first].time;
+    s.time = in.ground_truth[pairs[i].first].time;
     s.ground_truth_m = gt_assoc[i].translation();
     s.estimated_aligned_m = ate.alignment.apply(Eigen::Vector3d(est_assoc[i].translation()));
     s.path_m = gt_path_m[pairs[i].first];
     s.error_m = ate.errors_m[i];
     ev.path.push_back(s);
   }
+}
 
-  // Keyframes with their ground truth (times on the dataset's clock).
-  for (std::size_t k = 0; k < keyframes.size(); ++k) {
-    const Timestamp t = on_dataset_clock(keyframes[k].time);
+/// Each keyframe's ground truth (times on the dataset's clock); the Wi-Fi clusters must list
+/// keyframes that exist.
+void find_keyframe_truth(const RunInputs& in, const std::vector<Pose>& gt_poses,
+                         const std::vector<double>& gt_path_m, const EvalOptions& options,
+                         RunEvaluation& ev) {
+  const std::vector<Timestamp> gt_times = times_of(in.ground_truth);
+  for (std::size_t k = 0; k < in.keyframes.size(); ++k) {
+    const Timestamp t = Timestamp::from_ns(in.keyframes[k].time.ns + in.offset_ns);
     const std::optional<std::size_t> g = nearest_stamp(gt_times, t, options.max_time_difference_s);
     if (!g) {
-      throw ParseError(keyframes_file.string(), "",
+      throw ParseError(in.keyframes_file.string(), "",
                        fmt::format("keyframe {} at t = {} has no ground-truth pose within {} s", k,
                                    t.to_string(6), options.max_time_difference_s));
     }
     ev.keyframe_truth.push_back({t, gt_poses[*g], gt_path_m[*g]});
   }
-  ev.keyframes = static_cast<std::int64_t>(keyframes.size());
+  ev.keyframes = static_cast<std::int64_t>(in.keyframes.size());
   for (const WifiCluster& c : ev.wifi_cluster_list) {
     for (std::int64_t k : c.keyframes) {
       if (k >= ev.keyframes) {
-        throw ParseError(clusters_file.string(), "keyframes",
+        throw ParseError(in.clusters_file.string(), "keyframes",
                          fmt::format("cluster {} lists keyframe {}, keyframes.txt has {}", c.id, k,
                                      ev.keyframes));
       }
     }
   }
+}
 
-  // Loop closures.
-  if (ev.loop_closures_available) {
-    DatasetDepth depth(dataset_dir, calibration.intrinsics, calibration.depth_units_per_metre,
-                       options);
-    ev.loop_closure_score = score_loop_closures(
-        ev.keyframe_truth, edges, [&depth](Timestamp t) { return depth.view(t); },
-        calibration.intrinsics, options);
-    const LoopClosureScore& s = ev.loop_closure_score;
-    ev.loop_closures_detected = s.online.scored;
-    ev.loop_closures_correct = s.online.correct;
-    ev.false_positives = s.online.wrong_place;
-    ev.false_positive_pct = s.online.false_positive_pct;
-    ev.revisit_episodes = static_cast<std::int64_t>(s.episodes.size());
-    ev.revisit_keyframes = s.revisit_keyframes;
-    ev.false_negatives = s.online.false_negatives;
-    ev.false_negative_pct = s.online.false_negative_pct;
-    ev.overlap_used_depth = depth.available() && s.pairs_geometric_only == 0;
-    if (!depth.available()) {
-      ev.overlap_method =
-          "geometric bound only: the dataset has no depth images (generated with --no-images)";
-    } else if (s.pairs_geometric_only > 0) {
-      ev.overlap_method = fmt::format(
-          "depth test; {} of {} pairs geometric bound only (no depth image at their time)",
-          s.pairs_geometric_only, s.pairs_tested);
-    } else {
-      ev.overlap_method = "depth test (ground-truth depth reprojection)";
-    }
+/// Verdicts on the accepted edges and the true revisits they miss (loop_closure_scoring.hpp).
+void score_closures(const RunInputs& in, const fs::path& dataset_dir, const EvalOptions& options,
+                    RunEvaluation& ev) {
+  DatasetDepth depth(dataset_dir, in.calibration.intrinsics, in.calibration.depth_units_per_metre,
+                     options);
+  ev.loop_closure_score = score_loop_closures(
+      ev.keyframe_truth, in.edges, [&depth](Timestamp t) { return depth.view(t); },
+      in.calibration.intrinsics, options);
+  const LoopClosureScore& s = ev.loop_closure_score;
+  ev.loop_closures_detected = s.online.scored;
+  ev.loop_closures_correct = s.online.correct;
+  ev.false_positives = s.online.wrong_place;
+  ev.false_positive_pct = s.online.false_positive_pct;
+  ev.revisit_episodes = static_cast<std::int64_t>(s.episodes.size());
+  ev.revisit_keyframes = s.revisit_keyframes;
+  ev.false_negatives = s.online.false_negatives;
+  ev.false_negative_pct = s.online.false_negative_pct;
+  ev.overlap_used_depth = depth.available() && s.pairs_geometric_only == 0;
+  if (!depth.available()) {
+    ev.overlap_method =
+        "geometric bound only: the dataset has no depth images (generated with --no-images)";
+  } else if (s.pairs_geometric_only > 0) {
+    ev.overlap_method = fmt::format(
+        "depth test; {} of {} pairs geometric bound only (no depth image at their time)",
+        s.pairs_geometric_only, s.pairs_tested);
+  } else {
+    ev.overlap_method = "depth test (ground-truth depth reprojection)";
   }
+}
+
+}  // namespace
+
+RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
+                           const EvalOptions& options) {
+  validate(options);
+  RunEvaluation ev;
+  ev.run_dir = input.string();
+  ev.dataset_dir = dataset_dir.string();
+  ev.options = options;
+  const RunInputs in = read_inputs(input, dataset_dir, options, ev);
+
+  // Ground truth with its path length.
+  std::vector<Pose> gt_poses;
+  gt_poses.reserve(in.ground_truth.size());
+  for (const StampedPose& p : in.ground_truth) gt_poses.push_back(p.pose());
+  const std::vector<double> gt_path_m = cumulative_path_length_m(gt_poses);
+  score_trajectory(in, gt_poses, gt_path_m, dataset_dir, options, ev);
+  find_keyframe_truth(in, gt_poses, gt_path_m, options, ev);
+  if (ev.loop_closures_available) score_closures(in, dataset_dir, options, ev);
 
   // Time.
   ev.loop_closure_detection_s = ev.timing.loop_closure_detection_s;

@@ -22,88 +22,111 @@ struct Partner {
   double path_m = 0.0;
 };
 
-}  // namespace
+/// Scores one run's accepted edges against its keyframes' ground truth, in four steps: the true
+/// revisits (view overlap), their episodes, each edge's verdict, and the counts.
+class ClosureScorer {
+ public:
+  ClosureScorer(const std::vector<KeyframeTruth>& keyframes, const DepthLookup& depth,
+                const CameraIntrinsics& intrinsics, const EvalOptions& options)
+      : keyframes_(keyframes),
+        depth_(depth),
+        intrinsics_(intrinsics),
+        options_(options),
+        n_(static_cast<std::int64_t>(keyframes.size())) {}
 
-LoopClosureScore score_loop_closures(const std::vector<KeyframeTruth>& keyframes,
-                                     const std::vector<AcceptedEdge>& edges,
-                                     const DepthLookup& depth, const CameraIntrinsics& intrinsics,
-                                     const EvalOptions& options) {
-  LoopClosureScore score;
-  const auto n = static_cast<std::int64_t>(keyframes.size());
-  auto overlap_of = [&](std::int64_t a, std::int64_t b) {
-    const KeyframeTruth& ka = keyframes[static_cast<std::size_t>(a)];
-    const KeyframeTruth& kb = keyframes[static_cast<std::size_t>(b)];
+  LoopClosureScore score(const std::vector<AcceptedEdge>& edges) {
+    const std::vector<Partner> partner = find_revisits();
+    group_episodes(partner);
+    for (const AcceptedEdge& edge : edges) score_edge(edge);
+    count_false_negatives();
+    return std::move(score_);
+  }
+
+ private:
+  const KeyframeTruth& keyframe(std::int64_t k) const {
+    return keyframes_[static_cast<std::size_t>(k)];
+  }
+
+  /// Whether two keyframes' views overlap: the geometric bound, then the depth test where both
+  /// depth images exist.
+  ViewOverlap overlap_of(std::int64_t a, std::int64_t b) {
+    const KeyframeTruth& ka = keyframe(a);
+    const KeyframeTruth& kb = keyframe(b);
     ViewOverlap o =
-        view_overlap(ka.ground_truth, nullptr, kb.ground_truth, nullptr, intrinsics, options);
+        view_overlap(ka.ground_truth, nullptr, kb.ground_truth, nullptr, intrinsics_, options_);
     if (!o.within_geometric_bound) return o;
-    const DepthView* da = depth(ka.time);
-    const DepthView* db = da ? depth(kb.time) : nullptr;
-    ++score.pairs_tested;
+    const DepthView* da = depth_(ka.time);
+    const DepthView* db = da ? depth_(kb.time) : nullptr;
+    ++score_.pairs_tested;
     if (!da || !db) {
-      ++score.pairs_geometric_only;
+      ++score_.pairs_geometric_only;
       return o;
     }
-    return view_overlap(ka.ground_truth, da, kb.ground_truth, db, intrinsics, options);
-  };
+    return view_overlap(ka.ground_truth, da, kb.ground_truth, db, intrinsics_, options_);
+  }
 
-  // True revisits: for each later keyframe j, any earlier i far enough along the path whose view
-  // overlaps; the nearest candidates are tried first (most likely to overlap).
-  std::vector<Partner> partner(keyframes.size());
-  std::vector<std::pair<double, std::int64_t>> candidates;
-  for (std::int64_t j = 0; j < n; ++j) {
-    const KeyframeTruth& kj = keyframes[static_cast<std::size_t>(j)];
-    candidates.clear();
-    for (std::int64_t i = 0; i < j; ++i) {
-      const KeyframeTruth& ki = keyframes[static_cast<std::size_t>(i)];
-      if (kj.path_m - ki.path_m < options.revisit_min_path_m) continue;
-      const double d = (kj.ground_truth.translation() - ki.ground_truth.translation()).norm();
-      if (d <= options.overlap_max_distance_m) candidates.emplace_back(d, i);
-    }
-    std::sort(candidates.begin(), candidates.end());
-    for (const auto& [d, i] : candidates) {
-      if (overlap_of(i, j).overlap) {
-        partner[static_cast<std::size_t>(j)] = {
-            i, kj.path_m - keyframes[static_cast<std::size_t>(i)].path_m};
-        ++score.revisit_keyframes;
-        break;
+  /// True revisits: for each later keyframe j, any earlier i far enough along the path whose view
+  /// overlaps; the nearest candidates are tried first (most likely to overlap).
+  std::vector<Partner> find_revisits() {
+    std::vector<Partner> partner(keyframes_.size());
+    std::vector<std::pair<double, std::int64_t>> candidates;
+    for (std::int64_t j = 0; j < n_; ++j) {
+      const KeyframeTruth& kj = keyframe(j);
+      candidates.clear();
+      for (std::int64_t i = 0; i < j; ++i) {
+        const KeyframeTruth& ki = keyframe(i);
+        if (kj.path_m - ki.path_m < options_.revisit_min_path_m) continue;
+        const double d = (kj.ground_truth.translation() - ki.ground_truth.translation()).norm();
+        if (d <= options_.overlap_max_distance_m) candidates.emplace_back(d, i);
+      }
+      std::sort(candidates.begin(), candidates.end());
+      for (const auto& [d, i] : candidates) {
+        if (overlap_of(i, j).overlap) {
+          partner[static_cast<std::size_t>(j)] = {i, kj.path_m - keyframe(i).path_m};
+          ++score_.revisit_keyframes;
+          break;
+        }
       }
     }
+    return partner;
   }
 
-  // Episodes: runs of revisiting keyframes with small gaps.
-  std::int64_t last = -1;
-  for (std::int64_t j = 0; j < n; ++j) {
-    const Partner& p = partner[static_cast<std::size_t>(j)];
-    if (p.keyframe < 0) continue;
-    if (last >= 0 && j - last - 1 <= options.episode_max_gap_keyframes) {
-      score.episodes.back().last_keyframe = j;
-      ++score.episodes.back().revisiting_keyframes;
-    } else {
-      score.episodes.push_back({j, j, 1, p.keyframe, p.path_m, false, false});
+  /// Episodes: runs of revisiting keyframes with small gaps.
+  void group_episodes(const std::vector<Partner>& partner) {
+    std::int64_t last = -1;
+    for (std::int64_t j = 0; j < n_; ++j) {
+      const Partner& p = partner[static_cast<std::size_t>(j)];
+      if (p.keyframe < 0) continue;
+      if (last >= 0 && j - last - 1 <= options_.episode_max_gap_keyframes) {
+        score_.episodes.back().last_keyframe = j;
+        ++score_.episodes.back().revisiting_keyframes;
+      } else {
+        score_.episodes.push_back({j, j, 1, p.keyframe, p.path_m, false, false});
+      }
+      last = j;
     }
-    last = j;
   }
 
-  // Accepted edges: the visual and loop ones far enough apart along the path are scored.
-  for (const AcceptedEdge& edge : edges) {
+  /// An accepted edge: the visual and loop ones far enough apart along the path are scored.
+  void score_edge(const AcceptedEdge& edge) {
     for (const auto& [id, key] : {std::pair{edge.from_keyframe, &edge.from_key},
                                   std::pair{edge.to_keyframe, &edge.to_key}}) {
-      if (id < 0 || id >= n) {
+      if (id < 0 || id >= n_) {
         throw ParseError(edge.where, *key,
-                         fmt::format("keyframe {} is not in keyframes.txt ({} keyframes)", id, n));
+                         fmt::format("keyframe {} is not in keyframes.txt ({} keyframes)", id, n_));
       }
     }
     if (edge.type != run_folder::edge_type::kVisual && edge.type != run_folder::edge_type::kLoop) {
-      continue;
+      return;
     }
-    ++score.edges_considered;
-    const KeyframeTruth& from = keyframes[static_cast<std::size_t>(edge.from_keyframe)];
-    const KeyframeTruth& to = keyframes[static_cast<std::size_t>(edge.to_keyframe)];
+    ++score_.edges_considered;
+    const KeyframeTruth& from = keyframe(edge.from_keyframe);
+    const KeyframeTruth& to = keyframe(edge.to_keyframe);
     ScoredLoopClosure s;
     s.path_between_m = std::abs(to.path_m - from.path_m);
-    if (s.path_between_m < options.revisit_min_path_m) {
-      ++score.edges_short_path;  // tracking and local edges, not loop closures
-      continue;
+    if (s.path_between_m < options_.revisit_min_path_m) {
+      ++score_.edges_short_path;  // tracking and local edges, not loop closures
+      return;
     }
     s.edge = edge;
     s.true_distance_m = (to.ground_truth.translation() - from.ground_truth.translation()).norm();
@@ -113,10 +136,16 @@ LoopClosureScore score_loop_closures(const std::vector<KeyframeTruth>& keyframes
     s.translation_error_m = error.translation().norm();
     s.rotation_error_deg = rotation_deg(error.linear());
     s.verdict = classify_loop_closure(s.translation_error_m, s.rotation_error_deg,
-                                      s.true_distance_m, options);
-    s.far = is_far_wrong_place(s.verdict, s.true_distance_m, options);
-    for (LoopClosureCounts* counts : {&score.online, &score.after_pruning}) {
-      if (counts == &score.after_pruning && edge.pruned) continue;
+                                      s.true_distance_m, options_);
+    s.far = is_far_wrong_place(s.verdict, s.true_distance_m, options_);
+    count_verdict(s, edge);
+    if (s.correct()) mark_detected_episodes(s, edge);
+    score_.closures.push_back(std::move(s));
+  }
+
+  void count_verdict(const ScoredLoopClosure& s, const AcceptedEdge& edge) {
+    for (LoopClosureCounts* counts : {&score_.online, &score_.after_pruning}) {
+      if (counts == &score_.after_pruning && edge.pruned) continue;
       ++counts->scored;
       switch (s.verdict) {
         case LoopClosureVerdict::kCorrect:
@@ -131,33 +160,52 @@ LoopClosureScore score_loop_closures(const std::vector<KeyframeTruth>& keyframes
       }
       if (s.far) ++counts->far_wrong_place;
     }
-    if (s.correct()) {
-      for (std::size_t e = 0; e < score.episodes.size(); ++e) {
-        RevisitEpisode& ep = score.episodes[e];
-        const bool touches =
-            (edge.from_keyframe >= ep.first_keyframe && edge.from_keyframe <= ep.last_keyframe) ||
-            (edge.to_keyframe >= ep.first_keyframe && edge.to_keyframe <= ep.last_keyframe);
-        if (!touches) continue;
-        ep.detected_online = true;
-        if (!edge.pruned) ep.detected_after_pruning = true;
-        if (s.episode < 0) s.episode = static_cast<int>(e);
-      }
+  }
+
+  /// A correct edge detects every episode it touches (after pruning, if it survived).
+  void mark_detected_episodes(ScoredLoopClosure& s, const AcceptedEdge& edge) {
+    for (std::size_t e = 0; e < score_.episodes.size(); ++e) {
+      RevisitEpisode& ep = score_.episodes[e];
+      const bool touches =
+          (edge.from_keyframe >= ep.first_keyframe && edge.from_keyframe <= ep.last_keyframe) ||
+          (edge.to_keyframe >= ep.first_keyframe && edge.to_keyframe <= ep.last_keyframe);
+      if (!touches) continue;
+      ep.detected_online = true;
+      if (!edge.pruned) ep.detected_after_pruning = true;
+      if (s.episode < 0) s.episode = static_cast<int>(e);
     }
-    score.closures.push_back(std::move(s));
   }
-  auto percent = [](std::int64_t part, std::int64_t whole) {
-    return whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
-  };
-  const auto episodes = static_cast<std::int64_t>(score.episodes.size());
-  for (const RevisitEpisode& ep : score.episodes) {
-    score.online.false_negatives += ep.detected_online ? 0 : 1;
-    score.after_pruning.false_negatives += ep.detected_after_pruning ? 0 : 1;
+
+  void count_false_negatives() {
+    auto percent = [](std::int64_t part, std::int64_t whole) {
+      return whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+    };
+    const auto episodes = static_cast<std::int64_t>(score_.episodes.size());
+    for (const RevisitEpisode& ep : score_.episodes) {
+      score_.online.false_negatives += ep.detected_online ? 0 : 1;
+      score_.after_pruning.false_negatives += ep.detected_after_pruning ? 0 : 1;
+    }
+    for (LoopClosureCounts* counts : {&score_.online, &score_.after_pruning}) {
+      counts->false_positive_pct = percent(counts->wrong_place, counts->scored);
+      counts->false_negative_pct = percent(counts->false_negatives, episodes);
+    }
   }
-  for (LoopClosureCounts* counts : {&score.online, &score.after_pruning}) {
-    counts->false_positive_pct = percent(counts->wrong_place, counts->scored);
-    counts->false_negative_pct = percent(counts->false_negatives, episodes);
-  }
-  return score;
+
+  const std::vector<KeyframeTruth>& keyframes_;
+  const DepthLookup& depth_;
+  const CameraIntrinsics& intrinsics_;
+  const EvalOptions& options_;
+  const std::int64_t n_;
+  LoopClosureScore score_;
+};
+
+}  // namespace
+
+LoopClosureScore score_loop_closures(const std::vector<KeyframeTruth>& keyframes,
+                                     const std::vector<AcceptedEdge>& edges,
+                                     const DepthLookup& depth, const CameraIntrinsics& intrinsics,
+                                     const EvalOptions& options) {
+  return ClosureScorer(keyframes, depth, intrinsics, options).score(edges);
 }
 
 nlohmann::ordered_json LoopClosureCounts::to_json() const {

@@ -56,34 +56,20 @@ std::string value_text(const nlohmann::ordered_json& v) {
   return v.dump();
 }
 
-}  // namespace
+/// report.md, built section by section.
+class Markdown {
+ public:
+  void line(const std::string& s = "") { text_ += s + "\n"; }
+  std::string text() && { return std::move(text_); }
 
-std::string render_metrics_csv(const RunEvaluation& ev) {
-  const nlohmann::ordered_json flat = ev.flat_metrics();
-  std::string header, row;
-  bool first = true;
-  for (const auto& [key, value] : flat.items()) {
-    header += (first ? "" : ",") + key;
-    row += (first ? "" : ",") + csv_field(value);
-    first = false;
-  }
-  return header + "\n" + row + "\n";
-}
+ private:
+  std::string text_;
+};
 
-std::string render_report_markdown(const RunEvaluation& ev, const std::vector<std::string>& notes) {
-  std::string md;
-  auto line = [&md](const std::string& s = "") { md += s + "\n"; };
-  line("# SLAM run evaluation");
-  line();
-  line(fmt::format("- run: `{}`{}", ev.run_dir,
-                   ev.frontend.empty() ? ""
-                                       : fmt::format(" (front end `{}`{})", ev.frontend,
-                                                     ev.wifi_run ? ", with Wi-Fi" : "")));
-  line(fmt::format("- ground truth: `{}`", ev.dataset_dir));
-  line();
-  const LoopClosureScore& score = ev.loop_closure_score;
-  const LoopClosureCounts& online = score.online;
-  const LoopClosureCounts& pruned = score.after_pruning;
+void summary_section(Markdown& md, const RunEvaluation& ev) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
+  const LoopClosureCounts& online = ev.loop_closure_score.online;
+  const LoopClosureCounts& pruned = ev.loop_closure_score.after_pruning;
   line("## Summary");
   line();
   line("| metric | value |");
@@ -118,6 +104,10 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
   }
   if (ev.wifi_run) line(fmt::format("| Wi-Fi clusters | {} |", ev.wifi_clusters));
   line();
+}
+
+void trajectory_section(Markdown& md, const RunEvaluation& ev) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
   line("## Trajectory error");
   line();
   line(fmt::format(
@@ -143,6 +133,53 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
       ev.options.rpe_delta_m, ev.rpe_pairs, ev.rpe_trans_per_m, ev.rpe_rot_deg_per_m,
       ev.rpe_trans_rmse_m, ev.rpe_rot_rmse_deg));
   line();
+}
+
+void closures_table(Markdown& md, const LoopClosureScore& score) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
+  if (!score.closures.empty()) {
+    line();
+    line(
+        "| from kf | to kf | type | role | inliers | pruned | true distance m | path between m "
+        "| trans err m | rot err deg | overlap | verdict |");
+    line("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
+    for (const ScoredLoopClosure& c : score.closures) {
+      const AcceptedEdge& e = c.edge;
+      line(fmt::format(
+          "| {} | {} | {} | {} | {} | {} | {:.2f} | {:.1f} | {:.3f} | {:.2f} | {} | {}{} |",
+          e.from_keyframe, e.to_keyframe, e.type, e.role.empty() ? "-" : e.role, e.inliers,
+          e.pruned ? "yes" : "no", c.true_distance_m, c.path_between_m, c.translation_error_m,
+          c.rotation_error_deg,
+          c.overlap.depth_checked ? fmt::format("{:.2f}", c.overlap.fraction)
+                                  : std::string(c.overlap.overlap ? "bound" : "no"),
+          to_string(c.verdict), c.far ? " (far)" : ""));
+    }
+  }
+}
+
+void episodes_table(Markdown& md, const LoopClosureScore& score) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
+  if (!score.episodes.empty()) {
+    line();
+    line(
+        "| episode | keyframes | revisiting | partner of first | travel between m | detected "
+        "online | detected after pruning |");
+    line("| --- | --- | --- | --- | --- | --- | --- |");
+    for (std::size_t i = 0; i < score.episodes.size(); ++i) {
+      const RevisitEpisode& e = score.episodes[i];
+      line(fmt::format("| {} | {}-{} | {} | {} | {:.1f} | {} | {} |", i, e.first_keyframe,
+                       e.last_keyframe, e.revisiting_keyframes, e.first_partner,
+                       e.first_partner_path_m, e.detected_online ? "yes" : "**no (FN)**",
+                       e.detected_after_pruning ? "yes" : "**no (FN)**"));
+    }
+  }
+}
+
+void loop_closure_section(Markdown& md, const RunEvaluation& ev) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
+  const LoopClosureScore& score = ev.loop_closure_score;
+  const LoopClosureCounts& online = score.online;
+  const LoopClosureCounts& pruned = score.after_pruning;
   line("## Loop closures");
   line();
   const EvalOptions& o = ev.options;
@@ -195,40 +232,14 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
         100 * o.overlap_depth_tolerance_rel, o.overlap_lookup_stride_px, ev.overlap_method,
         o.revisit_min_path_m, o.episode_max_gap_keyframes, ev.revisit_episodes,
         ev.revisit_keyframes));
-    if (!score.closures.empty()) {
-      line();
-      line(
-          "| from kf | to kf | type | role | inliers | pruned | true distance m | path between m "
-          "| trans err m | rot err deg | overlap | verdict |");
-      line("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |");
-      for (const ScoredLoopClosure& c : score.closures) {
-        const AcceptedEdge& e = c.edge;
-        line(fmt::format(
-            "| {} | {} | {} | {} | {} | {} | {:.2f} | {:.1f} | {:.3f} | {:.2f} | {} | {}{} |",
-            e.from_keyframe, e.to_keyframe, e.type, e.role.empty() ? "-" : e.role, e.inliers,
-            e.pruned ? "yes" : "no", c.true_distance_m, c.path_between_m, c.translation_error_m,
-            c.rotation_error_deg,
-            c.overlap.depth_checked ? fmt::format("{:.2f}", c.overlap.fraction)
-                                    : std::string(c.overlap.overlap ? "bound" : "no"),
-            to_string(c.verdict), c.far ? " (far)" : ""));
-      }
-    }
-    if (!score.episodes.empty()) {
-      line();
-      line(
-          "| episode | keyframes | revisiting | partner of first | travel between m | detected "
-          "online | detected after pruning |");
-      line("| --- | --- | --- | --- | --- | --- | --- |");
-      for (std::size_t i = 0; i < score.episodes.size(); ++i) {
-        const RevisitEpisode& e = score.episodes[i];
-        line(fmt::format("| {} | {}-{} | {} | {} | {:.1f} | {} | {} |", i, e.first_keyframe,
-                         e.last_keyframe, e.revisiting_keyframes, e.first_partner,
-                         e.first_partner_path_m, e.detected_online ? "yes" : "**no (FN)**",
-                         e.detected_after_pruning ? "yes" : "**no (FN)**"));
-      }
-    }
+    closures_table(md, score);
+    episodes_table(md, score);
     line();
   }
+}
+
+void time_section(Markdown& md, const RunEvaluation& ev) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
   line("## Time");
   line();
   if (!ev.timing_available) {
@@ -261,6 +272,11 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
     }
     line();
   }
+}
+
+void thresholds_and_notes(Markdown& md, const RunEvaluation& ev,
+                          const std::vector<std::string>& notes) {
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
   line("## Thresholds");
   line();
   line("| threshold | value | meaning |");
@@ -275,7 +291,39 @@ std::string render_report_markdown(const RunEvaluation& ev, const std::vector<st
     line();
     for (const std::string& n : notes) line("- " + n);
   }
-  return md;
+}
+
+}  // namespace
+
+std::string render_report_markdown(const RunEvaluation& ev, const std::vector<std::string>& notes) {
+  Markdown md;
+  const auto line = [&md](const std::string& s = "") { md.line(s); };
+  line("# SLAM run evaluation");
+  line();
+  line(fmt::format("- run: `{}`{}", ev.run_dir,
+                   ev.frontend.empty() ? ""
+                                       : fmt::format(" (front end `{}`{})", ev.frontend,
+                                                     ev.wifi_run ? ", with Wi-Fi" : "")));
+  line(fmt::format("- ground truth: `{}`", ev.dataset_dir));
+  line();
+  summary_section(md, ev);
+  trajectory_section(md, ev);
+  loop_closure_section(md, ev);
+  time_section(md, ev);
+  thresholds_and_notes(md, ev, notes);
+  return std::move(md).text();
+}
+
+std::string render_metrics_csv(const RunEvaluation& ev) {
+  const nlohmann::ordered_json flat = ev.flat_metrics();
+  std::string header, row;
+  bool first = true;
+  for (const auto& [key, value] : flat.items()) {
+    header += (first ? "" : ",") + key;
+    row += (first ? "" : ",") + csv_field(value);
+    first = false;
+  }
+  return header + "\n" + row + "\n";
 }
 
 void write_evaluation(const fs::path& out_dir, const RunEvaluation& ev, bool plots,

@@ -154,6 +154,146 @@ std::string percent_of(std::int64_t part, std::int64_t whole) {
   return fmt::format("{:.1f} ({}/{})", 100.0 * static_cast<double>(part) / whole, part, whole);
 }
 
+/// cells[scene][setting][wifi]: the cases of one table cell, one per seed.
+using Cells = std::map<std::string, std::map<std::string, std::map<bool, Cell>>>;
+
+/// One table of the comparison: its title and what a cell shows.
+struct Metric {
+  std::string title;
+  std::function<std::string(const Cell&, bool wifi)> cell;
+};
+
+/// The tables, in the order the paper's section gives them; the front-end-specific ones when a
+/// case has their numbers.
+std::vector<Metric> comparison_metrics(const std::vector<ComparisonCase>& cases) {
+  bool any_cost_model = false, any_rtabmap_loop_closure = false;
+  for (const ComparisonCase& c : cases) {
+    any_cost_model |= c.evaluation.cost_model_s.has_value();
+    any_rtabmap_loop_closure |= c.evaluation.loop_closure_cost_s.has_value();
+  }
+  std::vector<Metric> metrics = {
+      {"Trajectory error: ATE RMSE (m), after the back end's pruning",
+       [](const Cell& c, bool) { return c.ate_text(); }},
+      {"False positive loop closures (wrong place): % of scored edges, online (false/scored)",
+       [](const Cell& c, bool) { return percent_of(c.online.wrong_place, c.online.scored); }},
+      {"... after pruning (edges the back end kept)",
+       [](const Cell& c, bool) { return percent_of(c.pruned.wrong_place, c.pruned.scored); }},
+      {"Wrong-place closures between far places (true positions > 12 m apart): online / after "
+       "pruning",
+       [](const Cell& c, bool) {
+         return fmt::format("{} / {}", c.online.far_wrong_place, c.pruned.far_wrong_place);
+       }},
+      {"Right place, imprecise (within 3 m, error within 1 m / 10 deg; not false): online / after "
+       "pruning",
+       [](const Cell& c, bool) {
+         return fmt::format("{} / {}", c.online.right_place_imprecise,
+                            c.pruned.right_place_imprecise);
+       }},
+      {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes), "
+       "online",
+       [](const Cell& c, bool) { return percent_of(c.online.false_negatives, c.episodes); }},
+      {"... after pruning",
+       [](const Cell& c, bool) { return percent_of(c.pruned.false_negatives, c.episodes); }},
+      {"Loop-closure detection time (s, wall-clock)",
+       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.loop_closure_s)); }},
+      {"Candidate comparisons (visual transformations tried for loop closure)",
+       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.comparisons)); }},
+      {"Long-term comparisons (the candidates Wi-Fi bounds)",
+       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.long_term_comparisons)); }},
+      {"Bounded-module time: candidate selection + long-term verifications + optimisation (s)",
+       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.bounded_module_s)); }},
+      {"Wi-Fi overhead: clustering + cluster management (ms, % of pipeline time)",
+       [](const Cell& c, bool wifi) {
+         if (!wifi) return std::string("-");
+         return fmt::format("{:.1f} ({:.3f} %)", 1e3 * c.mean(c.wifi_overhead_s),
+                            c.total_s > 0 ? 100.0 * c.wifi_overhead_s / c.total_s : 0.0);
+       }},
+  };
+  if (any_cost_model) {
+    metrics.push_back(
+        {"Front-end time, deterministic cost model (s; what rtabmap's Rtabmap/TimeThr compares)",
+         [](const Cell& c, bool) {
+           return c.has_cost_model ? fmt::format("{:.2f}", c.mean(c.cost_model_s))
+                                   : std::string("-");
+         }});
+  }
+
+  if (any_rtabmap_loop_closure) {
+    // The paper's RTAB-Map time table: loop-closure detection as Rtabmap::process times it, not
+    // the pipeline's module (which also holds quantisation, proximity and predecessor links).
+    const auto rtabmap_cell = [](double Cell::*seconds) {
+      return [seconds](const Cell& c, bool) {
+        return c.has_rtabmap_loop_closure ? fmt::format("{:.3f}", c.mean(c.*seconds))
+                                          : std::string("-");
+      };
+    };
+    metrics.push_back(
+        {"RTAB-Map loop-closure time: likelihood + posterior + loop hypothesis "
+         "verification (s; thread CPU + verification wall-clock)",
+         rtabmap_cell(&Cell::rtabmap_loop_closure_s)});
+    metrics.push_back({"... the same, deterministic cost model (s)",
+                       rtabmap_cell(&Cell::rtabmap_loop_closure_cost_s)});
+  }
+
+  return metrics;
+}
+
+void metric_table(std::string& out, const Metric& metric, const std::vector<std::string>& scenes,
+                  const std::vector<std::string>& settings, Cells& cells) {
+  out += "### " + metric.title + "\n\n| scene |";
+  std::string rule = "| --- |";
+  for (const std::string& setting : settings) {
+    out += fmt::format(" {} Vanilla | {} WiFi |", setting, setting);
+    rule += " ---: | ---: |";
+  }
+  out += "\n" + rule + "\n";
+  for (const std::string& scene : scenes) {
+    out += "| " + scene + " |";
+    for (const std::string& setting : settings) {
+      for (bool wifi : {false, true})
+        out += " " + metric.cell(cells[scene][setting][wifi], wifi) + " |";
+    }
+    out += "\n";
+  }
+  out += "\n";
+}
+
+/// Time, Wi-Fi relative to vanilla, per scene and setting.
+void ratio_table(std::string& out, const std::string& title, double Cell::*seconds,
+                 const std::vector<std::string>& scenes, const std::vector<std::string>& settings,
+                 Cells& cells) {
+  out += "### " + title + ", WiFi / Vanilla (ratio, same run)\n\n| scene |";
+  std::string rule = "| --- |";
+  for (const std::string& setting : settings) {
+    out += " " + setting + " |";
+    rule += " ---: |";
+  }
+  out += "\n" + rule + "\n";
+  for (const std::string& scene : scenes) {
+    out += "| " + scene + " |";
+    for (const std::string& setting : settings) {
+      const Cell& v = cells[scene][setting][false];
+      const Cell& w = cells[scene][setting][true];
+      out +=
+          v.*seconds > 0 ? fmt::format(" {:.2f} |", w.*seconds / v.*seconds) : std::string(" - |");
+    }
+    out += "\n";
+  }
+}
+
+void divergence_table(std::string& out, const std::vector<PairDivergence>& divergences) {
+  out +=
+      "\n### First keyframe where the WiFi run differs from vanilla (same dataset and "
+      "random draws)\n\n| scene | seed | setting | keyframe | time since first keyframe (s) |\n| "
+      "--- | ---: | --- | "
+      "---: | ---: |\n";
+  for (const PairDivergence& d : divergences) {
+    out += d.keyframe < 0 ? fmt::format("| {} | {} | {} | none | - |\n", d.scene, d.seed, d.setting)
+                          : fmt::format("| {} | {} | {} | {} | {:.3f} |\n", d.scene, d.seed,
+                                        d.setting, d.keyframe, d.time_s);
+  }
+}
+
 }  // namespace
 
 SweepAxis parse_sweep(const std::string& text) {
@@ -329,83 +469,13 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
 }
 
 std::string ComparisonResult::markdown() const {
-  // cells[scene][setting][wifi]
-  std::map<std::string, std::map<std::string, std::map<bool, Cell>>> cells;
+  Cells cells;
   for (const ComparisonCase& c : cases) cells[c.scene][c.setting][c.wifi].add(c.evaluation);
-
-  struct Metric {
-    std::string title;
-    std::function<std::string(const Cell&, bool wifi)> cell;
-  };
   bool any_cost_model = false, any_rtabmap_loop_closure = false;
   for (const ComparisonCase& c : cases) {
     any_cost_model |= c.evaluation.cost_model_s.has_value();
     any_rtabmap_loop_closure |= c.evaluation.loop_closure_cost_s.has_value();
   }
-  std::vector<Metric> metrics = {
-      {"Trajectory error: ATE RMSE (m), after the back end's pruning",
-       [](const Cell& c, bool) { return c.ate_text(); }},
-      {"False positive loop closures (wrong place): % of scored edges, online (false/scored)",
-       [](const Cell& c, bool) { return percent_of(c.online.wrong_place, c.online.scored); }},
-      {"... after pruning (edges the back end kept)",
-       [](const Cell& c, bool) { return percent_of(c.pruned.wrong_place, c.pruned.scored); }},
-      {"Wrong-place closures between far places (true positions > 12 m apart): online / after "
-       "pruning",
-       [](const Cell& c, bool) {
-         return fmt::format("{} / {}", c.online.far_wrong_place, c.pruned.far_wrong_place);
-       }},
-      {"Right place, imprecise (within 3 m, error within 1 m / 10 deg; not false): online / after "
-       "pruning",
-       [](const Cell& c, bool) {
-         return fmt::format("{} / {}", c.online.right_place_imprecise,
-                            c.pruned.right_place_imprecise);
-       }},
-      {"False negatives: % of revisit episodes without a correct loop closure (missed/episodes), "
-       "online",
-       [](const Cell& c, bool) { return percent_of(c.online.false_negatives, c.episodes); }},
-      {"... after pruning",
-       [](const Cell& c, bool) { return percent_of(c.pruned.false_negatives, c.episodes); }},
-      {"Loop-closure detection time (s, wall-clock)",
-       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.loop_closure_s)); }},
-      {"Candidate comparisons (visual transformations tried for loop closure)",
-       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.comparisons)); }},
-      {"Long-term comparisons (the candidates Wi-Fi bounds)",
-       [](const Cell& c, bool) { return fmt::format("{:.0f}", c.mean(c.long_term_comparisons)); }},
-      {"Bounded-module time: candidate selection + long-term verifications + optimisation (s)",
-       [](const Cell& c, bool) { return fmt::format("{:.2f}", c.mean(c.bounded_module_s)); }},
-      {"Wi-Fi overhead: clustering + cluster management (ms, % of pipeline time)",
-       [](const Cell& c, bool wifi) {
-         if (!wifi) return std::string("-");
-         return fmt::format("{:.1f} ({:.3f} %)", 1e3 * c.mean(c.wifi_overhead_s),
-                            c.total_s > 0 ? 100.0 * c.wifi_overhead_s / c.total_s : 0.0);
-       }},
-  };
-  if (any_cost_model) {
-    metrics.push_back(
-        {"Front-end time, deterministic cost model (s; what rtabmap's Rtabmap/TimeThr compares)",
-         [](const Cell& c, bool) {
-           return c.has_cost_model ? fmt::format("{:.2f}", c.mean(c.cost_model_s))
-                                   : std::string("-");
-         }});
-  }
-
-  if (any_rtabmap_loop_closure) {
-    // The paper's RTAB-Map time table: loop-closure detection as Rtabmap::process times it, not
-    // the pipeline's module (which also holds quantisation, proximity and predecessor links).
-    const auto rtabmap_cell = [](double Cell::*seconds) {
-      return [seconds](const Cell& c, bool) {
-        return c.has_rtabmap_loop_closure ? fmt::format("{:.3f}", c.mean(c.*seconds))
-                                          : std::string("-");
-      };
-    };
-    metrics.push_back(
-        {"RTAB-Map loop-closure time: likelihood + posterior + loop hypothesis "
-         "verification (s; thread CPU + verification wall-clock)",
-         rtabmap_cell(&Cell::rtabmap_loop_closure_s)});
-    metrics.push_back({"... the same, deterministic cost model (s)",
-                       rtabmap_cell(&Cell::rtabmap_loop_closure_cost_s)});
-  }
-
   std::string out;
   if (seeds > 1) {
     out += fmt::format(
@@ -413,71 +483,26 @@ std::string ComparisonResult::markdown() const {
         "comparisons averaged, closures summed over seeds.\n\n",
         seeds);
   }
-  for (const Metric& metric : metrics) {
-    out += "### " + metric.title + "\n\n| scene |";
-    std::string rule = "| --- |";
-    for (const std::string& setting : settings) {
-      out += fmt::format(" {} Vanilla | {} WiFi |", setting, setting);
-      rule += " ---: | ---: |";
-    }
-    out += "\n" + rule + "\n";
-    for (const std::string& scene : scenes) {
-      out += "| " + scene + " |";
-      for (const std::string& setting : settings) {
-        for (bool wifi : {false, true})
-          out += " " + metric.cell(cells[scene][setting][wifi], wifi) + " |";
-      }
-      out += "\n";
-    }
-    out += "\n";
-  }
+  for (const Metric& metric : comparison_metrics(cases))
+    metric_table(out, metric, scenes, settings, cells);
   // Time, Wi-Fi relative to vanilla: the paper's headline (loop-closure detection) and its own
   // figure (the module bounding affects, plus optimisation).
-  const auto ratio_table = [&](const std::string& title, double Cell::*seconds) {
-    out += "### " + title + ", WiFi / Vanilla (ratio, same run)\n\n| scene |";
-    std::string rule = "| --- |";
-    for (const std::string& setting : settings) {
-      out += " " + setting + " |";
-      rule += " ---: |";
-    }
-    out += "\n" + rule + "\n";
-    for (const std::string& scene : scenes) {
-      out += "| " + scene + " |";
-      for (const std::string& setting : settings) {
-        const Cell& v = cells[scene][setting][false];
-        const Cell& w = cells[scene][setting][true];
-        out += v.*seconds > 0 ? fmt::format(" {:.2f} |", w.*seconds / v.*seconds)
-                              : std::string(" - |");
-      }
-      out += "\n";
-    }
-  };
-  ratio_table("Loop-closure detection time", &Cell::loop_closure_s);
+  ratio_table(out, "Loop-closure detection time", &Cell::loop_closure_s, scenes, settings, cells);
   out += "\n";
-  ratio_table("Bounded-module time", &Cell::bounded_module_s);
+  ratio_table(out, "Bounded-module time", &Cell::bounded_module_s, scenes, settings, cells);
   if (any_cost_model) {
     out += "\n";
-    ratio_table("Front-end time (cost model)", &Cell::cost_model_s);
+    ratio_table(out, "Front-end time (cost model)", &Cell::cost_model_s, scenes, settings, cells);
   }
   if (any_rtabmap_loop_closure) {
     out += "\n";
-    ratio_table("RTAB-Map loop-closure time", &Cell::rtabmap_loop_closure_s);
+    ratio_table(out, "RTAB-Map loop-closure time", &Cell::rtabmap_loop_closure_s, scenes, settings,
+                cells);
     out += "\n";
-    ratio_table("RTAB-Map loop-closure time (cost model)", &Cell::rtabmap_loop_closure_cost_s);
+    ratio_table(out, "RTAB-Map loop-closure time (cost model)", &Cell::rtabmap_loop_closure_cost_s,
+                scenes, settings, cells);
   }
-  if (!divergences.empty()) {
-    out +=
-        "\n### First keyframe where the WiFi run differs from vanilla (same dataset and "
-        "random draws)\n\n| scene | seed | setting | keyframe | time since first keyframe (s) |\n| "
-        "--- | ---: | --- | "
-        "---: | ---: |\n";
-    for (const PairDivergence& d : divergences) {
-      out += d.keyframe < 0
-                 ? fmt::format("| {} | {} | {} | none | - |\n", d.scene, d.seed, d.setting)
-                 : fmt::format("| {} | {} | {} | {} | {:.3f} |\n", d.scene, d.seed, d.setting,
-                               d.keyframe, d.time_s);
-    }
-  }
+  if (!divergences.empty()) divergence_table(out, divergences);
   return out;
 }
 

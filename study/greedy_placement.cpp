@@ -61,6 +61,110 @@ bool places_better(const RadioResolution& a, const RadioResolution& b) {
   return coarseness(a) < coarseness(b);
 }
 
+namespace {
+
+/// The candidate positions of the site's plan; InvalidInputError when there are too many or
+/// fewer than the budget.
+std::vector<Eigen::Vector2d> candidate_spots(const sim::Site& site,
+                                             const PlacementOptions& options) {
+  const std::vector<Eigen::Vector2d> spots =
+      sim::radio::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
+  if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
+    throw InvalidInputError(
+        fmt::format("{} candidate positions at {} m spacing (at most {}): give a larger --spacing",
+                    spots.size(), options.candidate_spacing_m, kMaxPlacementCandidates));
+  }
+  if (options.budget < 1 || options.budget > static_cast<int>(spots.size())) {
+    throw InvalidInputError(fmt::format(
+        "--budget {}: the plan has {} candidate positions at {} m spacing (give 1 to {}, or a "
+        "smaller --spacing)",
+        options.budget, spots.size(), options.candidate_spacing_m, spots.size()));
+  }
+  return spots;
+}
+
+/// Every pause's readings of an access point at every candidate: one simulation on the same
+/// building and route (`keys` receives each candidate's signature key, in candidate order).
+std::vector<PauseReadings> simulate_candidates(const sim::Site& site, const PlacementResult& result,
+                                               const PlacementOptions& options,
+                                               std::vector<slam::AccessPointKey>& keys) {
+  sim::AccessPoints all = site.scene().access_points;
+  all.placement = sim::ApPlacement::kExplicit;
+  all.explicit_list.clear();
+  for (const Eigen::Vector3d& position_m : result.candidates) {
+    sim::AccessPointSpec spec;
+    spec.position_m = position_m;
+    all.explicit_list.push_back(spec);
+  }
+  all.count = static_cast<int>(result.candidates.size());
+  const std::vector<PauseSample> every = simulate_pauses(
+      std::make_shared<const sim::Site>(site.with_access_points(all)), options.wifi, &keys);
+  std::map<slam::AccessPointKey, int> candidate_of;
+  for (std::size_t i = 0; i < keys.size(); ++i) candidate_of[keys[i]] = static_cast<int>(i);
+  std::vector<PauseReadings> pauses;
+  for (const PauseSample& p : every) {
+    PauseReadings r{p.position_m, {}};
+    for (const slam::ApStrength& s : p.signature.strengths())
+      r.rssi_dbm.emplace_back(candidate_of.at(s.ap), s.rssi_dbm);
+    std::sort(r.rssi_dbm.begin(), r.rssi_dbm.end());
+    pauses.push_back(std::move(r));
+  }
+  return pauses;
+}
+
+/// The medians of `random_draws` placements of k candidates drawn uniformly without replacement
+/// (stream "study/place/random/<k>/<draw>"), into `step`.
+void random_baseline(const std::vector<PauseReadings>& pauses,
+                     const std::vector<slam::AccessPointKey>& keys, int k,
+                     const PlacementOptions& options, PlacementStep& step) {
+  const std::size_t n = keys.size();
+  std::vector<double> error, resolution, far, near;
+  for (int draw = 0; draw < options.random_draws; ++draw) {
+    Rng rng = Rng::stream(options.seed, fmt::format("study/place/random/{}/{}", k, draw));
+    std::vector<int> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
+    std::vector<bool> random_set(n, false);
+    for (int i = 0; i < k; ++i) {  // partial Fisher-Yates
+      const auto j = static_cast<std::size_t>(rng.uniform_int(i, static_cast<std::int64_t>(n) - 1));
+      std::swap(order[static_cast<std::size_t>(i)], order[j]);
+      random_set[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = true;
+    }
+    const RadioResolution r = radio_resolution(restrict_to(pauses, keys, random_set), options.wifi);
+    error.push_back(placement_error(r));
+    resolution.push_back(coarseness(r));
+    far.push_back(r.far_similar_share);
+    near.push_back(r.near_similar_share);
+  }
+  if (resolution.empty()) return;
+  const double m = median_of(resolution);
+  if (std::isfinite(m)) step.random_resolution_m = m;
+  step.random_error = median_of(error);
+  step.random_far_similar_share = median_of(far);
+  step.random_near_similar_share = median_of(near);
+}
+
+/// The unchosen candidate whose addition resolves best (lowest index among equals).
+std::pair<int, RadioResolution> best_addition(const std::vector<PauseReadings>& pauses,
+                                              const std::vector<slam::AccessPointKey>& keys,
+                                              std::vector<bool>& chosen,
+                                              const PlacementOptions& options) {
+  int best = -1;
+  RadioResolution best_r;
+  for (std::size_t c = 0; c < chosen.size(); ++c) {
+    if (chosen[c]) continue;
+    chosen[c] = true;
+    const RadioResolution r = radio_resolution(restrict_to(pauses, keys, chosen), options.wifi);
+    chosen[c] = false;
+    if (best < 0 || places_better(r, best_r)) {
+      best = static_cast<int>(c);
+      best_r = r;
+    }
+  }
+  return {best, best_r};
+}
+
+}  // namespace
+
 PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions& options) {
   const auto progress = [&](const std::string& line) {
     if (options.on_progress) options.on_progress(line);
@@ -79,101 +183,29 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
         scene.name, own.size()));
   }
   result.scene_access_points = static_cast<int>(site->access_points().size());
-  const std::vector<Eigen::Vector2d> spots =
-      sim::radio::access_point_candidate_spots(site->world().plan, options.candidate_spacing_m);
+  const std::vector<Eigen::Vector2d> spots = candidate_spots(*site, options);
   result.plan = site->world().plan;
-  if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
-    throw InvalidInputError(
-        fmt::format("{} candidate positions at {} m spacing (at most {}): give a larger --spacing",
-                    spots.size(), options.candidate_spacing_m, kMaxPlacementCandidates));
-  }
-  if (options.budget < 1 || options.budget > static_cast<int>(spots.size())) {
-    throw InvalidInputError(fmt::format(
-        "--budget {}: the plan has {} candidate positions at {} m spacing (give 1 to {}, or a "
-        "smaller --spacing)",
-        options.budget, spots.size(), options.candidate_spacing_m, spots.size()));
-  }
-
-  // One simulation with an access point at every candidate, on the same building and route.
-  sim::AccessPoints all = scene.access_points;
-  all.placement = sim::ApPlacement::kExplicit;
-  all.explicit_list.clear();
-  for (const Eigen::Vector2d& s : spots) {
-    sim::AccessPointSpec spec;
-    spec.position_m = {s.x(), s.y(), scene.access_points.height_m};
-    all.explicit_list.push_back(spec);
-    result.candidates.push_back(spec.position_m);
-  }
-  all.count = static_cast<int>(spots.size());
+  for (const Eigen::Vector2d& s : spots)
+    result.candidates.emplace_back(s.x(), s.y(), scene.access_points.height_m);
   progress(
       fmt::format("simulating the route's scans with {} candidate access points", spots.size()));
   std::vector<slam::AccessPointKey> keys;
-  const std::vector<PauseSample> every = simulate_pauses(
-      std::make_shared<const sim::Site>(site->with_access_points(all)), options.wifi, &keys);
-  std::map<slam::AccessPointKey, int> candidate_of;
-  for (std::size_t i = 0; i < keys.size(); ++i) candidate_of[keys[i]] = static_cast<int>(i);
-  std::vector<PauseReadings> pauses;
-  for (const PauseSample& p : every) {
-    PauseReadings r{p.position_m, {}};
-    for (const slam::ApStrength& s : p.signature.strengths())
-      r.rssi_dbm.emplace_back(candidate_of.at(s.ap), s.rssi_dbm);
-    std::sort(r.rssi_dbm.begin(), r.rssi_dbm.end());
-    pauses.push_back(std::move(r));
-  }
+  const std::vector<PauseReadings> pauses = simulate_candidates(*site, result, options, keys);
 
   // Greedy: add the candidate whose addition resolves best.
-  const std::size_t n = spots.size();
-  std::vector<bool> chosen(n, false);
+  std::vector<bool> chosen(spots.size(), false);
+  const auto text = [](const std::optional<double>& v) {
+    return v ? fmt::format("{:.1f} m", *v) : std::string("none");
+  };
   for (int k = 1; k <= options.budget; ++k) {
-    int best = -1;
-    RadioResolution best_r;
-    for (std::size_t c = 0; c < n; ++c) {
-      if (chosen[c]) continue;
-      chosen[c] = true;
-      const RadioResolution r = radio_resolution(restrict_to(pauses, keys, chosen), options.wifi);
-      chosen[c] = false;
-      if (best < 0 || places_better(r, best_r)) {
-        best = static_cast<int>(c);
-        best_r = r;
-      }
-    }
+    const auto [best, best_r] = best_addition(pauses, keys, chosen, options);
     chosen[static_cast<std::size_t>(best)] = true;
     PlacementStep step;
     step.count = k;
     step.candidate = best;
     step.greedy = best_r;
     step.greedy_error = placement_error(best_r);
-
-    // Random placements of k candidates.
-    std::vector<double> error, resolution, far, near;
-    for (int draw = 0; draw < options.random_draws; ++draw) {
-      Rng rng = Rng::stream(options.seed, fmt::format("study/place/random/{}/{}", k, draw));
-      std::vector<int> order(n);
-      for (std::size_t i = 0; i < n; ++i) order[i] = static_cast<int>(i);
-      std::vector<bool> random_set(n, false);
-      for (int i = 0; i < k; ++i) {  // partial Fisher-Yates
-        const auto j =
-            static_cast<std::size_t>(rng.uniform_int(i, static_cast<std::int64_t>(n) - 1));
-        std::swap(order[static_cast<std::size_t>(i)], order[j]);
-        random_set[static_cast<std::size_t>(order[static_cast<std::size_t>(i)])] = true;
-      }
-      const RadioResolution r =
-          radio_resolution(restrict_to(pauses, keys, random_set), options.wifi);
-      error.push_back(placement_error(r));
-      resolution.push_back(coarseness(r));
-      far.push_back(r.far_similar_share);
-      near.push_back(r.near_similar_share);
-    }
-    if (!resolution.empty()) {
-      const double m = median_of(resolution);
-      if (std::isfinite(m)) step.random_resolution_m = m;
-      step.random_error = median_of(error);
-      step.random_far_similar_share = median_of(far);
-      step.random_near_similar_share = median_of(near);
-    }
-    const auto text = [](const std::optional<double>& v) {
-      return v ? fmt::format("{:.1f} m", *v) : std::string("none");
-    };
+    random_baseline(pauses, keys, k, options, step);
     progress(
         fmt::format("{:>3} APs: +({:.1f}, {:.1f}) error {:.3f}, resolution {} (random: {:.3f}, "
                     "{})",
