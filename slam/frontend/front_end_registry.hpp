@@ -25,7 +25,8 @@ struct FrontEndContext {
 
 using FrontEndFactory = std::function<std::unique_ptr<FrontEnd>(const FrontEndContext&)>;
 
-/// Adds (or replaces) a front end. Built in: "rgbdslam", "rtabmap".
+/// Adds (or replaces) a front end under `name`. Built in (front_end_registry.cpp's table):
+/// "rgbdslam", "rtabmap" and "orbslam"; tests add their own.
 void register_front_end(const std::string& name, FrontEndFactory factory);
 
 /// The front end named `context.options->frontend`, holding a Wi-Fi module when
