@@ -8,7 +8,7 @@
 #   scripts/snapshot_outputs.sh build/release /tmp/after       # on the new one
 #   scripts/diff_outputs.py /tmp/before /tmp/after             # exit 0 when only timings differ
 #
-# About 12 minutes on 2 cores. OUT must not exist. Commands run from the repository root, with
+# About 3 minutes on 2 cores. OUT must not exist. Commands run from the repository root, with
 # relative paths, so both snapshots name the same inputs; stdout of each command is kept as
 # <name>.stdout.
 set -euo pipefail
