@@ -6,7 +6,7 @@
 // each is distinct along its length; walked northward, the east corridor shows the camera what the
 // west one showed it. A camera alone finds "loop closures" between the two; their Wi-Fi
 // signatures (concrete walls, 30 m) tell them apart. Measured at seeds 7 and 8 (min_matches 10):
-// vanilla 20 and 6 wrong-place closures between the corridors, ATE 12.7 and 11.5 m; Wi-Fi none
+// vanilla 20 and 6 wrong-place closures between the corridors, ATE 11.7 and 12.6 m; Wi-Fi none
 // between them, ATE 0.35 and 0.21 m. At 5 frames per second the whole vanilla-vs-Wi-Fi comparison
 // takes about two and a half minutes on 2 cores.
 
