@@ -116,12 +116,9 @@ Bounding bounding_of(const Eigen::Vector2d& p, const Scene& scene, const PlanLay
   return {};
 }
 
-}  // namespace
-
-void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& plan) {
-  const double t = scene.building.wall_thickness_m;
-
-  // 1. Boundary edges, wall on the right (rings have the wall on their left).
+/// Step 1: every boundary edge of every wall solid, with the wall on its right (rings have the
+/// wall on their left).
+std::vector<Piece> boundary_pieces(const FloorPlan& plan) {
   std::vector<Piece> pieces;
   for (std::size_t s = 0; s < plan.walls.size(); ++s) {
     auto add_ring = [&](const Polygon2& ring) {
@@ -131,54 +128,64 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
     add_ring(plan.walls[s].outer);
     for (const auto& h : plan.walls[s].holes) add_ring(h);
   }
+  return pieces;
+}
 
-  // 2. Closed doors: cut both faces of the wall at the door's edges.
+/// Step 2 for one closed door: cuts both faces of its wall at the door's edges and marks the
+/// pieces inside the opening as the door (index `door_index`).
+std::vector<Piece> cut_at_closed_door(const std::vector<Piece>& pieces, const Door& door,
+                                      int door_index) {
+  const Eigen::Vector2d u = door.along_wall, n(-u.y(), u.x());
+  const double hw = 0.5 * door.width_m, ht = 0.5 * door.wall_thickness_m;
+  std::vector<Piece> next;
+  for (const Piece& p : pieces) {
+    const Eigen::Vector2d fa = p.a - door.center_m, fb = p.b - door.center_m;
+    const double la = fa.dot(n), lb = fb.dot(n), sa = fa.dot(u), sb = fb.dot(u);
+    const bool on_face_line = std::abs(la - lb) < kTol && std::abs(std::abs(la) - ht) < kTol;
+    if (!on_face_line || std::min(sa, sb) >= hw - kTol || std::max(sa, sb) <= -hw + kTol) {
+      next.push_back(p);
+      continue;
+    }
+    // Distances from p.a of the door edges, then mark the piece inside the opening.
+    const double sign = sb > sa ? 1.0 : -1.0;
+    const std::size_t first = next.size();
+    split_at(p, {(-hw - sa) * sign, (hw - sa) * sign}, next);
+    for (std::size_t k = first; k < next.size(); ++k) {
+      const double s_mid = (next[k].mid() - door.center_m).dot(u);
+      if (std::abs(s_mid) < hw) next[k].door = door_index;
+    }
+  }
+  return next;
+}
+
+/// Step 2: closed doors, one after the other (a later door cuts the pieces an earlier one made).
+void cut_at_closed_doors(const FloorPlan& plan, std::vector<Piece>& pieces) {
   for (std::size_t d = 0; d < plan.doors.size(); ++d) {
-    const Door& door = plan.doors[d];
-    if (door.open) continue;
-    const Eigen::Vector2d u = door.along_wall, n(-u.y(), u.x());
-    const double hw = 0.5 * door.width_m, ht = 0.5 * door.wall_thickness_m;
-    std::vector<Piece> next;
-    for (const Piece& p : pieces) {
-      const Eigen::Vector2d fa = p.a - door.center_m, fb = p.b - door.center_m;
-      const double la = fa.dot(n), lb = fb.dot(n), sa = fa.dot(u), sb = fb.dot(u);
-      const bool on_face_line = std::abs(la - lb) < kTol && std::abs(std::abs(la) - ht) < kTol;
-      if (!on_face_line || std::min(sa, sb) >= hw - kTol || std::max(sa, sb) <= -hw + kTol) {
-        next.push_back(p);
-        continue;
-      }
-      // Distances from p.a of the door edges, then mark the piece inside the opening.
-      const double sign = sb > sa ? 1.0 : -1.0;
-      const std::size_t first = next.size();
-      split_at(p, {(-hw - sa) * sign, (hw - sa) * sign}, next);
-      for (std::size_t k = first; k < next.size(); ++k) {
-        const double s_mid = (next[k].mid() - door.center_m).dot(u);
-        if (std::abs(s_mid) < hw) next[k].door = static_cast<int>(d);
+    if (plan.doors[d].open) continue;
+    pieces = cut_at_closed_door(pieces, plan.doors[d], static_cast<int>(d));
+  }
+}
+
+/// Step 3: cuts each face at the ends of the faces opposite it across a wall, so that opposite
+/// faces end up the same length and can be paired.
+std::vector<Piece> cut_at_opposite_ends(const std::vector<Piece>& pieces, double max_gap_m) {
+  std::vector<Piece> next;
+  for (const Piece& p : pieces) {
+    std::vector<double> cuts;
+    for (const Piece& q : pieces) {
+      if (&q == &p) continue;
+      if (auto iv = opposite_interval(p, q, max_gap_m)) {
+        cuts.push_back(iv->first);
+        cuts.push_back(iv->second);
       }
     }
-    pieces = std::move(next);
+    split_at(p, cuts, next);
   }
+  return next;
+}
 
-  // 3. Cut faces at the ends of the faces opposite them across a wall.
-  const double max_gap_m = 2 * t;
-  {
-    std::vector<Piece> next;
-    for (const Piece& p : pieces) {
-      std::vector<double> cuts;
-      for (const Piece& q : pieces) {
-        if (&q == &p) continue;
-        if (auto iv = opposite_interval(p, q, max_gap_m)) {
-          cuts.push_back(iv->first);
-          cuts.push_back(iv->second);
-        }
-      }
-      split_at(p, cuts, next);
-    }
-    pieces = std::move(next);
-  }
-
-  // 4. Pair opposite faces into walls; convex blocks are one wall.
-  UnionFind walls(pieces.size());
+/// Step 4a: two faces that cover each other exactly across a wall are one wall.
+void unite_opposite_faces(const std::vector<Piece>& pieces, double max_gap_m, UnionFind& walls) {
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     for (std::size_t j = i + 1; j < pieces.size(); ++j) {
       auto iv = opposite_interval(pieces[i], pieces[j], max_gap_m);
@@ -186,29 +193,43 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
         walls.unite(static_cast<int>(i), static_cast<int>(j));
     }
   }
-  // A face with no opposite (the end of a wall at a door jamb, the outside of a building corner)
-  // belongs to the wall it continues: a collinear neighbour's wall if there is one, else any
-  // neighbour's that has two faces.
-  {
-    std::vector<int> group_size(pieces.size(), 0);
-    for (std::size_t i = 0; i < pieces.size(); ++i) ++group_size[walls.find(static_cast<int>(i))];
-    std::vector<std::pair<std::size_t, int>> merges;
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-      if (group_size[walls.find(static_cast<int>(i))] > 1 || pieces[i].door >= 0) continue;
-      int collinear = -1, other = -1;
-      for (std::size_t j = 0; j < pieces.size(); ++j) {
-        if (j == i || group_size[walls.find(static_cast<int>(j))] < 2) continue;
-        if (pieces[j].b != pieces[i].a && pieces[j].a != pieces[i].b) continue;
-        if (pieces[j].dir().dot(pieces[i].dir()) > 1 - 1e-9) {
-          if (collinear < 0) collinear = static_cast<int>(j);
-        } else if (other < 0) {
-          other = static_cast<int>(j);
-        }
-      }
-      if (collinear >= 0 || other >= 0) merges.emplace_back(i, collinear >= 0 ? collinear : other);
+}
+
+/// The face that lone face `i` continues: a collinear neighbour in a wall of two or more faces
+/// if there is one, else any such neighbour; -1 when none touches it.
+int continued_face(const std::vector<Piece>& pieces, std::size_t i,
+                   const std::vector<int>& group_size, UnionFind& walls) {
+  int collinear = -1, other = -1;
+  for (std::size_t j = 0; j < pieces.size(); ++j) {
+    if (j == i || group_size[walls.find(static_cast<int>(j))] < 2) continue;
+    if (pieces[j].b != pieces[i].a && pieces[j].a != pieces[i].b) continue;
+    if (pieces[j].dir().dot(pieces[i].dir()) > 1 - 1e-9) {
+      if (collinear < 0) collinear = static_cast<int>(j);
+    } else if (other < 0) {
+      other = static_cast<int>(j);
     }
-    for (const auto& [i, j] : merges) walls.unite(static_cast<int>(i), j);
   }
+  return collinear >= 0 ? collinear : other;
+}
+
+/// Step 4b: a face with no opposite (the end of a wall at a door jamb, the outside of a building
+/// corner) belongs to the wall it continues. Merges are collected first so that they all see the
+/// walls as step 4a left them.
+void attach_lone_faces(const std::vector<Piece>& pieces, UnionFind& walls) {
+  std::vector<int> group_size(pieces.size(), 0);
+  for (std::size_t i = 0; i < pieces.size(); ++i) ++group_size[walls.find(static_cast<int>(i))];
+  std::vector<std::pair<std::size_t, int>> merges;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    if (group_size[walls.find(static_cast<int>(i))] > 1 || pieces[i].door >= 0) continue;
+    const int continued = continued_face(pieces, i, group_size, walls);
+    if (continued >= 0) merges.emplace_back(i, continued);
+  }
+  for (const auto& [i, j] : merges) walls.unite(static_cast<int>(i), j);
+}
+
+/// Step 4c: every face of a convex wall solid (a pillar) is one wall.
+void unite_convex_blocks(const FloorPlan& plan, const std::vector<Piece>& pieces,
+                         UnionFind& walls) {
   std::vector<int> first_of_solid(plan.walls.size(), -1);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const int s = pieces[i].solid;
@@ -218,54 +239,125 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
     else
       walls.unite(first_of_solid[s], static_cast<int>(i));
   }
+}
 
-  // 5. Inside or outside, and what each wall bounds.
-  std::vector<bool> exterior(pieces.size());
-  std::vector<Bounding> group_bounding(pieces.size());
+/// Step 5's answer: which faces are outside, and for each wall (indexed by its union-find root)
+/// the highest-ranked space one of its inside faces bounds.
+struct FaceSides {
+  std::vector<bool> exterior;
+  std::vector<Bounding> wall_bounding;
+};
+
+/// Step 5: probes just off each face's free side.
+FaceSides classify_face_sides(const Scene& scene, const PlanLayout& layout, const FloorPlan& plan,
+                              const std::vector<Piece>& pieces, UnionFind& walls) {
+  FaceSides sides{std::vector<bool>(pieces.size()), std::vector<Bounding>(pieces.size())};
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Eigen::Vector2d probe = pieces[i].mid() + 1e-4 * pieces[i].left_normal();
-    exterior[i] = !regions_contain(plan.free_space, probe);
-    if (exterior[i]) continue;
+    sides.exterior[i] = !regions_contain(plan.free_space, probe);
+    if (sides.exterior[i]) continue;
     const Bounding b = bounding_of(probe, scene, layout, plan);
-    Bounding& g = group_bounding[walls.find(static_cast<int>(i))];
+    Bounding& g = sides.wall_bounding[walls.find(static_cast<int>(i))];
     if (b.rank > g.rank) g = b;
   }
+  return sides;
+}
 
-  // 6. Compact wall ids in order of first appearance; cut into appearance segments.
-  std::vector<int> wall_id(pieces.size(), -1);
-  int next_id = 0;
-  Rng rng = Rng::stream(scene.seed, "appearance/segments");
-  const double segment_m = std::max(0.1, scene.appearance.segment_length_m);
-  int next_variant = 1;
-  // kPosition: the shared look of the k-th segment_m-long stretch of a wall, counted from the
-  // wall's start in the direction of its faces (interior faces have free space on their left, so
-  // two walls that are copies of each other under a rotation count the same way).
-  const auto line_key = [&](std::size_t i) {
-    const Eigen::Vector2d d = pieces[i].dir();
-    return std::tuple<int, long, long>(walls.find(static_cast<int>(i)), std::lround(d.x() * 1e3),
-                                       std::lround(d.y() * 1e3));
-  };
-  std::map<std::tuple<int, long, long>, std::pair<double, double>> line_extent;
+/// A straight line of one wall: its root and its direction (to 1e-3).
+using LineKey = std::tuple<int, long, long>;
+
+LineKey line_key(const std::vector<Piece>& pieces, std::size_t i, UnionFind& walls) {
+  const Eigen::Vector2d d = pieces[i].dir();
+  return LineKey(walls.find(static_cast<int>(i)), std::lround(d.x() * 1e3),
+                 std::lround(d.y() * 1e3));
+}
+
+/// Extent of each inside wall line, in distances along its direction, so that kPosition can count
+/// segments from the wall's start in the direction of its faces (interior faces have free space
+/// on their left, so two walls that are copies of each other under a rotation count the same way).
+std::map<LineKey, std::pair<double, double>> interior_line_extents(
+    const std::vector<Piece>& pieces, const std::vector<bool>& exterior, UnionFind& walls) {
+  std::map<LineKey, std::pair<double, double>> line_extent;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     if (exterior[i]) continue;
     const double s = pieces[i].a.dot(pieces[i].dir());
     const double e = pieces[i].b.dot(pieces[i].dir());
-    const auto [it, inserted] = line_extent.emplace(line_key(i), std::pair(s, e));
+    const auto [it, inserted] = line_extent.emplace(line_key(pieces, i, walls), std::pair(s, e));
     it->second = {std::min(it->second.first, s), std::max(it->second.second, e)};
   }
-  // Same position on a wall of the same length (to 0.1 m): same look. Keying by length too keeps
-  // walls of different lengths (a rail and a rung) from aliasing with each other.
-  std::map<std::pair<long, int>, int> variant_at_position;
-  const auto shared_variant = [&](std::size_t piece, const Eigen::Vector2d& mid) {
-    if (scene.appearance.aliasing_scope == AliasingScope::kSegment) return 0;
-    const auto [start_m, end_m] = line_extent.at(line_key(piece));
+  return line_extent;
+}
+
+/// Hands out the look (variant) of each appearance segment, in face order: with probability
+/// `aliasing` a shared one, else a fresh one. All draws come from one stream, in segment order.
+class SegmentVariants {
+ public:
+  /// `exterior` says which faces are outside (they get no segments).
+  SegmentVariants(const Scene& scene, const std::vector<Piece>& pieces,
+                  const std::vector<bool>& exterior, UnionFind& walls, double segment_m)
+      : scene_(scene),
+        pieces_(pieces),
+        walls_(walls),
+        segment_m_(segment_m),
+        rng_(Rng::stream(scene.seed, "appearance/segments")),
+        line_extent_(interior_line_extents(pieces, exterior, walls)) {}
+
+  /// The variant of the segment of face `piece` centred at `mid`.
+  int next(std::size_t piece, const Eigen::Vector2d& mid) {
+    return rng_.bernoulli(scene_.appearance.aliasing) ? shared(piece, mid) : next_variant_++;
+  }
+
+ private:
+  /// kSegment: variant 0 everywhere. kPosition: same position on a wall of the same length (to
+  /// 0.1 m), same look; keying by length too keeps walls of different lengths (a rail and a rung)
+  /// from aliasing with each other.
+  int shared(std::size_t piece, const Eigen::Vector2d& mid) {
+    if (scene_.appearance.aliasing_scope == AliasingScope::kSegment) return 0;
+    const auto [start_m, end_m] = line_extent_.at(line_key(pieces_, piece, walls_));
     const int position =
-        static_cast<int>(std::floor((mid.dot(pieces[piece].dir()) - start_m) / segment_m));
+        static_cast<int>(std::floor((mid.dot(pieces_[piece].dir()) - start_m) / segment_m_));
     const auto [it, inserted] =
-        variant_at_position.emplace(std::pair(std::lround((end_m - start_m) * 10), position), 0);
-    if (inserted) it->second = next_variant++;
+        variant_at_position_.emplace(std::pair(std::lround((end_m - start_m) * 10), position), 0);
+    if (inserted) it->second = next_variant_++;
     return it->second;
-  };
+  }
+
+  const Scene& scene_;
+  const std::vector<Piece>& pieces_;
+  UnionFind& walls_;
+  double segment_m_;
+  Rng rng_;
+  int next_variant_ = 1;
+  std::map<LineKey, std::pair<double, double>> line_extent_;
+  std::map<std::pair<long, int>, int> variant_at_position_;
+};
+
+/// Step 6 for one inside face: cuts it into equal appearance segments of at most segment_m, each
+/// its own face. `face` holds what the segments share (wall, material, door); each gets its own
+/// ends and appearance segment.
+void add_segmented_face(const Piece& p, std::size_t piece, WallFace2& face, double segment_m,
+                        SegmentVariants& variants, FloorPlan& plan) {
+  const int count = std::max(1, static_cast<int>(std::ceil(p.length() / segment_m - 1e-9)));
+  Eigen::Vector2d start = p.a;
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector2d end = k + 1 == count ? p.b : p.a + (p.b - p.a) * (double(k + 1) / count);
+    AppearanceSegment segment;
+    segment.variant = variants.next(piece, 0.5 * (start + end));
+    face.appearance_segment = static_cast<int>(plan.appearance_segments.size());
+    plan.appearance_segments.push_back(segment);
+    face.a_m = start;
+    face.b_m = end;
+    plan.wall_faces.push_back(face);
+    start = end;
+  }
+}
+
+/// Step 6: compact wall ids in order of first appearance; inside faces cut into appearance
+/// segments, outside faces whole.
+void add_wall_faces(const std::vector<Piece>& pieces, const FaceSides& sides, double segment_m,
+                    UnionFind& walls, SegmentVariants& variants, FloorPlan& plan) {
+  std::vector<int> wall_id(pieces.size(), -1);
+  int next_id = 0;
   plan.wall_faces.clear();
   plan.appearance_segments.clear();
   for (std::size_t i = 0; i < pieces.size(); ++i) {
@@ -274,33 +366,38 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
     if (wall_id[root] < 0) wall_id[root] = next_id++;
     WallFace2 face;
     face.wall_id = wall_id[root];
-    face.exterior = exterior[i];
+    face.exterior = sides.exterior[i];
     face.door_index = p.door;
-    face.material = p.door >= 0 ? WallMaterial::kWoodDoor : group_bounding[root].material;
-    if (exterior[i]) {
+    face.material = p.door >= 0 ? WallMaterial::kWoodDoor : sides.wall_bounding[root].material;
+    if (sides.exterior[i]) {
       face.a_m = p.a;
       face.b_m = p.b;
       plan.wall_faces.push_back(face);
       continue;
     }
-    const int count = std::max(1, static_cast<int>(std::ceil(p.length() / segment_m - 1e-9)));
-    Eigen::Vector2d start = p.a;
-    for (int k = 0; k < count; ++k) {
-      const Eigen::Vector2d end =
-          k + 1 == count ? p.b : p.a + (p.b - p.a) * (double(k + 1) / count);
-      AppearanceSegment segment;
-      segment.variant = rng.bernoulli(scene.appearance.aliasing)
-                            ? shared_variant(i, 0.5 * (start + end))
-                            : next_variant++;
-      face.appearance_segment = static_cast<int>(plan.appearance_segments.size());
-      plan.appearance_segments.push_back(segment);
-      face.a_m = start;
-      face.b_m = end;
-      plan.wall_faces.push_back(face);
-      start = end;
-    }
+    add_segmented_face(p, i, face, segment_m, variants, plan);
   }
   plan.wall_count = next_id;
+}
+
+}  // namespace
+
+void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& plan) {
+  // Faces at most two wall thicknesses apart face each other across one wall.
+  const double max_gap_m = 2 * scene.building.wall_thickness_m;
+  std::vector<Piece> pieces = boundary_pieces(plan);
+  cut_at_closed_doors(plan, pieces);
+  pieces = cut_at_opposite_ends(pieces, max_gap_m);
+
+  UnionFind walls(pieces.size());
+  unite_opposite_faces(pieces, max_gap_m, walls);
+  attach_lone_faces(pieces, walls);
+  unite_convex_blocks(plan, pieces, walls);
+
+  const FaceSides sides = classify_face_sides(scene, layout, plan, pieces, walls);
+  const double segment_m = std::max(0.1, scene.appearance.segment_length_m);
+  SegmentVariants variants(scene, pieces, sides.exterior, walls, segment_m);
+  add_wall_faces(pieces, sides, segment_m, walls, variants, plan);
 }
 
 }  // namespace wifislam::sim
