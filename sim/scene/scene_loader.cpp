@@ -380,13 +380,8 @@ using Locator = std::function<std::string(const std::string& key_path)>;
   throw InvalidInputError("scene: key '" + key_path + "': " + message);
 }
 
-void validate_scene_impl(const Scene& scene, const Locator& locate) {
-  // The loader bounds it already; a scene built in code is checked here.
-  if (scene.sensors.time_origin_s > dataset::kMaxTimeOriginS) {
-    invalid(locate, "sensors.time_origin_s",
-            fmt::format("expected a whole number from 0 to {}, got {}", dataset::kMaxTimeOriginS,
-                        scene.sensors.time_origin_s));
-  }
+/// Node ids are unique and no two nodes share a spot; returns the ids.
+std::set<std::string> check_nodes(const Scene& scene, const Locator& locate) {
   std::set<std::string> node_ids;
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     if (!node_ids.insert(scene.nodes[i].id).second) {
@@ -407,61 +402,87 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
                           scene.nodes[i].id, scene.nodes[other->second].id, other->second));
     }
   }
+  return node_ids;
+}
+
+/// The room rows of a corridor `length_m` long (at key path `path`) fit along it.
+void check_room_rows(const Corridor& c, const std::string& path, double length_m,
+                     const Locator& locate) {
+  for (std::size_t r = 0; r < c.rooms.size(); ++r) {
+    const RoomRow& row = c.rooms[r];
+    const std::string rp = fmt::format("{}.rooms[{}]", path, r);
+    const double to_m = row.to_m.value_or(length_m);
+    if (to_m > length_m + 1e-9) {
+      invalid(locate, rp + ".to_m",
+              fmt::format("{} m is beyond the corridor's length {:.3f} m", to_m, length_m));
+    }
+    if (row.from_m >= to_m) {
+      invalid(locate, rp + ".from_m",
+              fmt::format("from_m {} must be smaller than to_m {}", row.from_m, to_m));
+    }
+    if (row.door_offset_m + row.door_width_m > row.room_length_m) {
+      invalid(locate, rp + ".door_offset_m",
+              fmt::format("door ({} m + {} m wide) does not fit in a {} m room", row.door_offset_m,
+                          row.door_width_m, row.room_length_m));
+    }
+  }
+}
+
+/// Corridor `i`: a fresh id, two distinct known end nodes, a usable length, room rows that fit.
+void check_corridor(const Scene& scene, std::size_t i, const std::set<std::string>& node_ids,
+                    std::set<std::string>& corridor_ids, const Locator& locate) {
+  const Corridor& c = scene.corridors[i];
+  const std::string path = fmt::format("corridors[{}]", i);
+  if (!corridor_ids.insert(c.id).second) {
+    invalid(locate, path + ".id", "duplicate corridor id '" + c.id + "'");
+  }
+  for (const auto& [key, end] : {std::pair{"from", c.from}, std::pair{"to", c.to}}) {
+    if (!node_ids.count(end)) {
+      invalid(locate, path + "." + key, "no node with id '" + end + "' (corridor '" + c.id + "')");
+    }
+  }
+  if (c.from == c.to)
+    invalid(locate, path + ".to", "corridor joins node '" + c.from + "' to itself");
+  const double length_m =
+      (scene.find_node(c.to)->position_m - scene.find_node(c.from)->position_m).norm();
+  if (length_m < 0.5)
+    invalid(locate, path, fmt::format("corridor is only {:.3f} m long", length_m));
+  check_room_rows(c, path, length_m, locate);
+}
+
+using Adjacency = std::map<std::string, std::vector<std::string>>;
+
+/// Checks every corridor; returns the corridor graph (node id to the node ids it is joined to).
+Adjacency check_corridors(const Scene& scene, const std::set<std::string>& node_ids,
+                          const Locator& locate) {
   if (scene.corridors.empty()) invalid(locate, "corridors", "a scene needs at least one corridor");
   std::set<std::string> corridor_ids;
-  std::map<std::string, std::vector<std::string>> adjacency;
+  Adjacency adjacency;
   for (std::size_t i = 0; i < scene.corridors.size(); ++i) {
+    check_corridor(scene, i, node_ids, corridor_ids, locate);
     const Corridor& c = scene.corridors[i];
-    const std::string path = fmt::format("corridors[{}]", i);
-    if (!corridor_ids.insert(c.id).second) {
-      invalid(locate, path + ".id", "duplicate corridor id '" + c.id + "'");
-    }
-    for (const auto& [key, end] : {std::pair{"from", c.from}, std::pair{"to", c.to}}) {
-      if (!node_ids.count(end)) {
-        invalid(locate, path + "." + key,
-                "no node with id '" + end + "' (corridor '" + c.id + "')");
-      }
-    }
-    if (c.from == c.to)
-      invalid(locate, path + ".to", "corridor joins node '" + c.from + "' to itself");
-    const double length_m =
-        (scene.find_node(c.to)->position_m - scene.find_node(c.from)->position_m).norm();
-    if (length_m < 0.5)
-      invalid(locate, path, fmt::format("corridor is only {:.3f} m long", length_m));
-    for (std::size_t r = 0; r < c.rooms.size(); ++r) {
-      const RoomRow& row = c.rooms[r];
-      const std::string rp = fmt::format("{}.rooms[{}]", path, r);
-      const double to_m = row.to_m.value_or(length_m);
-      if (to_m > length_m + 1e-9) {
-        invalid(locate, rp + ".to_m",
-                fmt::format("{} m is beyond the corridor's length {:.3f} m", to_m, length_m));
-      }
-      if (row.from_m >= to_m) {
-        invalid(locate, rp + ".from_m",
-                fmt::format("from_m {} must be smaller than to_m {}", row.from_m, to_m));
-      }
-      if (row.door_offset_m + row.door_width_m > row.room_length_m) {
-        invalid(locate, rp + ".door_offset_m",
-                fmt::format("door ({} m + {} m wide) does not fit in a {} m room",
-                            row.door_offset_m, row.door_width_m, row.room_length_m));
-      }
-    }
     adjacency[c.from].push_back(c.to);
     adjacency[c.to].push_back(c.from);
   }
+  return adjacency;
+}
+
+/// Every node is on a corridor, and the corridor graph is connected: the robot and the radio see
+/// one building.
+void check_graph_connected(const Scene& scene, const Adjacency& adjacency, const Locator& locate) {
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     if (!adjacency.count(scene.nodes[i].id)) {
       invalid(locate, fmt::format("nodes[{}]", i),
               "node '" + scene.nodes[i].id + "' is not joined to any corridor");
     }
   }
-  // The corridor graph must be connected: the robot and the radio see one building.
   std::set<std::string> reached{scene.nodes.front().id};
   std::vector<std::string> frontier{scene.nodes.front().id};
   while (!frontier.empty()) {
     const std::string n = frontier.back();
     frontier.pop_back();
-    for (const auto& m : adjacency[n])
+    // Every node is a key (checked above), so at() finds each one.
+    for (const auto& m : adjacency.at(n))
       if (reached.insert(m).second) frontier.push_back(m);
   }
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
@@ -471,13 +492,19 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
                   "' cannot be reached from node '" + scene.nodes.front().id + "'");
     }
   }
+}
+
+void check_open_area_ids(const Scene& scene, const Locator& locate) {
   std::set<std::string> area_ids;
   for (std::size_t i = 0; i < scene.open_areas.size(); ++i) {
     if (!area_ids.insert(scene.open_areas[i].id).second) {
       invalid(locate, fmt::format("open_areas[{}].id", i), "duplicate open area id");
     }
   }
-  // Route: known nodes, consecutive nodes joined by a corridor.
+}
+
+/// Route: known nodes, consecutive nodes joined by a corridor.
+void check_route(const Scene& scene, const std::set<std::string>& node_ids, const Locator& locate) {
   const auto& route = scene.route.nodes;
   if (route.size() < 2) invalid(locate, "route.nodes", "a route needs at least two nodes");
   for (std::size_t i = 0; i < route.size(); ++i) {
@@ -489,6 +516,9 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
               "no corridor joins '" + route[i - 1] + "' and '" + route[i] + "'");
     }
   }
+}
+
+void check_depth_sensor(const Scene& scene, const Locator& locate) {
   const auto& depth = scene.sensors.depth;
   if (depth.max_range_m <= depth.min_range_m) {
     invalid(locate, "sensors.depth.max_range_m", "must be larger than min_range_m");
@@ -503,6 +533,9 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
     invalid(locate, "sensors.depth.grazing_dropout_deg",
             "lateral noise caps the incidence angle here, so it must be below 90");
   }
+}
+
+void check_color_sensor(const Scene& scene, const Locator& locate) {
   const auto& color = scene.sensors.color;
   if (color.auto_exposure &&
       !(color.exposure_min_gain > 0.0 && color.exposure_min_gain <= color.exposure_max_gain)) {
@@ -521,6 +554,9 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
     invalid(locate, "sensors.color.conversion_gain_dn_per_e",
             "noise needs conversion_gain_dn_per_e and read_noise_dn >= 0");
   }
+}
+
+void check_access_points(const Scene& scene, const Locator& locate) {
   const auto& ap = scene.access_points;
   // Heights within the building: from the floor to the ceiling.
   const double ceiling_m = scene.building.wall_height_m;
@@ -546,6 +582,9 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
     invalid(locate, "access_points.line_to_m",
             "placement 'colinear' needs line_from_m != line_to_m");
   }
+}
+
+void check_radio(const Scene& scene, const Locator& locate) {
   const RadioSpec& radio = scene.radio;
   if (radio.model == PathLossModel::kItuSiteGeneralFit &&
       radio.environment != RadioEnvironment::kOffice) {
@@ -560,6 +599,26 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
                         "for model 'itu_walls'",
                         to_string(radio.model)));
   }
+}
+
+/// Checks what the schema's per-key limits cannot: cross-references, the graph, and relations
+/// between keys. The checks run in this order, so the first problem in it is the one reported.
+void validate_scene_impl(const Scene& scene, const Locator& locate) {
+  // The loader bounds it already; a scene built in code is checked here.
+  if (scene.sensors.time_origin_s > dataset::kMaxTimeOriginS) {
+    invalid(locate, "sensors.time_origin_s",
+            fmt::format("expected a whole number from 0 to {}, got {}", dataset::kMaxTimeOriginS,
+                        scene.sensors.time_origin_s));
+  }
+  const std::set<std::string> node_ids = check_nodes(scene, locate);
+  const Adjacency adjacency = check_corridors(scene, node_ids, locate);
+  check_graph_connected(scene, adjacency, locate);
+  check_open_area_ids(scene, locate);
+  check_route(scene, node_ids, locate);
+  check_depth_sensor(scene, locate);
+  check_color_sensor(scene, locate);
+  check_access_points(scene, locate);
+  check_radio(scene, locate);
 }
 
 Scene load_scene_node(const YAML::Node& root, const std::string& source_name) {
