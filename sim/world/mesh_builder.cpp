@@ -215,125 +215,151 @@ void add_wall_strip(MeshWriter& writer, const Eigen::Vector2d& a, const Eigen::V
   writer.add(pts, uvs, tris, Eigen::Vector3d(normal.x(), normal.y(), 0), attr);
 }
 
-}  // namespace
+using CornerHeights = std::map<std::pair<std::uint64_t, std::uint64_t>, std::set<double>>;
 
-Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
-  Mesh mesh;
-  MeshWriter writer(mesh);
-  const double height = plan.wall_height_m;
-
-  // Heights at which each wall corner's vertical edge is cut: floor, top, and door heights of the
-  // door leaves that end there.
-  std::map<std::pair<std::uint64_t, std::uint64_t>, std::set<double>> corner_heights;
+/// Heights at which each wall corner's vertical edge is cut: floor, top, and door heights of the
+/// door leaves that end there.
+CornerHeights corner_heights(const FloorPlan& plan) {
+  CornerHeights heights;
   for (const WallFace2& f : plan.wall_faces) {
     for (const auto* p : {&f.a_m, &f.b_m}) {
-      auto& hs = corner_heights[point_key(*p)];
+      auto& hs = heights[point_key(*p)];
       hs.insert(0.0);
-      hs.insert(height);
+      hs.insert(plan.wall_height_m);
       if (f.door_index >= 0) hs.insert(plan.doors[f.door_index].height_m);
     }
   }
+  return heights;
+}
 
-  // Wall faces (and closed door leaves).
-  for (const WallFace2& f : plan.wall_faces) {
-    Attributes attr;
-    attr.surface = SurfaceKind::kWall;
-    attr.material = f.material;
-    attr.wall_id = f.wall_id;
-    attr.variant =
-        f.appearance_segment >= 0 ? plan.appearance_segments[f.appearance_segment].variant : 0;
-    const auto& ha = corner_heights[point_key(f.a_m)];
-    const auto& hb = corner_heights[point_key(f.b_m)];
-    if (f.door_index < 0) {
-      add_wall_strip(writer, f.a_m, f.b_m, ha, hb, 0.0, height, attr);
-      continue;
-    }
-    const Door& door = plan.doors[f.door_index];
-    Attributes leaf = attr;
-    leaf.surface = SurfaceKind::kDoor;
-    leaf.material = WallMaterial::kWoodDoor;
-    add_wall_strip(writer, f.a_m, f.b_m, ha, hb, 0.0, door.height_m, leaf);
-    Attributes lintel = attr;
-    lintel.material = plan.rooms[door.room_index].material;
-    add_wall_strip(writer, f.a_m, f.b_m, ha, hb, door.height_m, height, lintel);
+/// One wall face, or for a closed door's face its leaf below the door height and the lintel
+/// above it.
+void add_wall_face(MeshWriter& writer, const FloorPlan& plan, const WallFace2& f,
+                   const CornerHeights& corners) {
+  const double height = plan.wall_height_m;
+  Attributes attr;
+  attr.surface = SurfaceKind::kWall;
+  attr.material = f.material;
+  attr.wall_id = f.wall_id;
+  attr.variant =
+      f.appearance_segment >= 0 ? plan.appearance_segments[f.appearance_segment].variant : 0;
+  // Every face's corners are in `corners` (corner_heights visits them all).
+  const auto& ha = corners.at(point_key(f.a_m));
+  const auto& hb = corners.at(point_key(f.b_m));
+  if (f.door_index < 0) {
+    add_wall_strip(writer, f.a_m, f.b_m, ha, hb, 0.0, height, attr);
+    return;
   }
+  const Door& door = plan.doors[f.door_index];
+  Attributes leaf = attr;
+  leaf.surface = SurfaceKind::kDoor;
+  leaf.material = WallMaterial::kWoodDoor;
+  add_wall_strip(writer, f.a_m, f.b_m, ha, hb, 0.0, door.height_m, leaf);
+  Attributes lintel = attr;
+  lintel.material = plan.rooms[door.room_index].material;
+  add_wall_strip(writer, f.a_m, f.b_m, ha, hb, door.height_m, height, lintel);
+}
 
-  // Caps on top of and underneath the wall solids.
-  {
-    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segments;
-    for (const WallFace2& f : plan.wall_faces) segments.emplace_back(f.a_m, f.b_m);
-    const auto tris = triangulate(segments);
-    Attributes cap;
-    cap.surface = SurfaceKind::kWallTop;
-    writer.add_triangles_2d(tris, height, true, cap);
-    writer.add_triangles_2d(tris, 0.0, false, cap);
+/// Caps on top of and underneath the wall solids.
+void add_wall_caps(MeshWriter& writer, const FloorPlan& plan) {
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segments;
+  for (const WallFace2& f : plan.wall_faces) segments.emplace_back(f.a_m, f.b_m);
+  const auto tris = triangulate(segments);
+  Attributes cap;
+  cap.surface = SurfaceKind::kWallTop;
+  writer.add_triangles_2d(tris, plan.wall_height_m, true, cap);
+  writer.add_triangles_2d(tris, 0.0, false, cap);
+}
+
+/// Every edge of every free-space region, outer rings and holes.
+std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> free_space_edges(const FloorPlan& plan) {
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segments;
+  auto add_ring = [&](const Polygon2& r) {
+    for (std::size_t i = 0; i < r.size(); ++i) segments.emplace_back(r[i], r[(i + 1) % r.size()]);
+  };
+  for (const auto& region : plan.free_space) {
+    add_ring(region.outer);
+    for (const auto& h : region.holes) add_ring(h);
   }
+  return segments;
+}
 
-  // Floor and ceiling over all free space.
-  {
-    std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> segments;
-    auto add_ring = [&](const Polygon2& r) {
-      for (std::size_t i = 0; i < r.size(); ++i) segments.emplace_back(r[i], r[(i + 1) % r.size()]);
+/// Floor and ceiling over all free space.
+void add_floor_and_ceiling(MeshWriter& writer, const FloorPlan& plan) {
+  const auto tris = triangulate(free_space_edges(plan));
+  Attributes floor;
+  floor.surface = SurfaceKind::kFloor;
+  floor.material = WallMaterial::kConcrete;
+  // Floor and ceiling textures tile (12 m and 9.6 m, see procedural_textures.cpp). Laid at an
+  // angle to the plan axes, a shift along a corridor (x or y) maps the tiling onto itself only
+  // after hundreds of metres, so no two places of a corridor share a floor or ceiling pattern.
+  constexpr double kFloorUvRotationRad = 23.0 * M_PI / 180.0;
+  constexpr double kCeilingUvRotationRad = 37.0 * M_PI / 180.0;
+  writer.add_triangles_2d(tris, 0.0, true, floor, kFloorUvRotationRad);
+  Attributes ceiling;
+  ceiling.surface = SurfaceKind::kCeiling;
+  writer.add_triangles_2d(tris, plan.wall_height_m, false, ceiling, kCeilingUvRotationRad);
+}
+
+/// A vertical rectangle between a and b facing `facing`: the points are swapped when needed so
+/// that a -> b has `facing` on its left.
+void add_facing_rect(MeshWriter& writer, Eigen::Vector2d a, Eigen::Vector2d b, double z0, double z1,
+                     const Eigen::Vector2d& facing, const Attributes& attr) {
+  if (Eigen::Vector2d(-(b - a).y(), (b - a).x()).dot(facing) < 0) std::swap(a, b);
+  writer.add_vertical_rect(a, b, z0, z1, facing, attr);
+}
+
+/// The frame around a door on both faces of its wall: two jambs, and a head when the wall is
+/// taller than the door.
+void add_door_frame(MeshWriter& writer, const Door& door, double wall_height_m) {
+  const Eigen::Vector2d u = door.along_wall, n(-u.y(), u.x());
+  const double hw = 0.5 * door.width_m, ht = 0.5 * door.wall_thickness_m, h = door.height_m;
+  const double top = std::min(h + kFrameWidthM, wall_height_m);
+  Attributes frame;
+  frame.surface = SurfaceKind::kDoorFrame;
+  frame.material = WallMaterial::kWoodDoor;
+  for (double side : {1.0, -1.0}) {
+    const Eigen::Vector2d facing = side * n;
+    const Eigen::Vector2d base = door.center_m + (ht + kFrameOffsetM) * facing;
+    auto strip = [&](double s0, double s1, double z0, double z1) {
+      const Eigen::Vector2d a = base + s0 * u, b = base + s1 * u;
+      add_facing_rect(writer, a, b, z0, z1, facing, frame);
     };
-    for (const auto& region : plan.free_space) {
-      add_ring(region.outer);
-      for (const auto& h : region.holes) add_ring(h);
-    }
-    const auto tris = triangulate(segments);
-    Attributes floor;
-    floor.surface = SurfaceKind::kFloor;
-    floor.material = WallMaterial::kConcrete;
-    // Floor and ceiling textures tile (12 m and 9.6 m, see procedural_textures.cpp). Laid at an
-    // angle to the plan axes, a shift along a corridor (x or y) maps the tiling onto itself only
-    // after hundreds of metres, so no two places of a corridor share a floor or ceiling pattern.
-    constexpr double kFloorUvRotationRad = 23.0 * M_PI / 180.0;
-    constexpr double kCeilingUvRotationRad = 37.0 * M_PI / 180.0;
-    writer.add_triangles_2d(tris, 0.0, true, floor, kFloorUvRotationRad);
-    Attributes ceiling;
-    ceiling.surface = SurfaceKind::kCeiling;
-    writer.add_triangles_2d(tris, height, false, ceiling, kCeilingUvRotationRad);
+    strip(-hw - kFrameWidthM, -hw, 0.0, top);
+    strip(hw, hw + kFrameWidthM, 0.0, top);
+    if (top > h) strip(-hw, hw, h, top);
   }
+}
 
-  // Door frames on both faces of every door; lintels over open doors.
+/// The wall above an open door (door `d`): both faces and the underside, as a wall of its own.
+void add_open_door_lintel(MeshWriter& writer, const FloorPlan& plan, std::size_t d) {
+  const Door& door = plan.doors[d];
+  const Eigen::Vector2d u = door.along_wall, n(-u.y(), u.x());
+  const double hw = 0.5 * door.width_m, ht = 0.5 * door.wall_thickness_m, h = door.height_m;
+  Attributes lintel;
+  lintel.surface = SurfaceKind::kDoorFrame;
+  lintel.material = plan.rooms[door.room_index].material;
+  lintel.wall_id = plan.wall_count + static_cast<int>(d);
+  for (double side : {1.0, -1.0}) {
+    const Eigen::Vector2d facing = side * n;
+    const Eigen::Vector2d a = door.center_m + ht * facing - hw * u,
+                          b = door.center_m + ht * facing + hw * u;
+    add_facing_rect(writer, a, b, h, plan.wall_height_m, facing, lintel);
+  }
+  writer.add_horizontal({door.center_m - hw * u - ht * n, door.center_m + hw * u - ht * n,
+                         door.center_m + hw * u + ht * n, door.center_m - hw * u + ht * n},
+                        h, false, lintel);
+}
+
+/// Door frames on both faces of every door; lintels over open doors.
+void add_doors(MeshWriter& writer, const FloorPlan& plan) {
   for (std::size_t d = 0; d < plan.doors.size(); ++d) {
-    const Door& door = plan.doors[d];
-    const Eigen::Vector2d u = door.along_wall, n(-u.y(), u.x());
-    const double hw = 0.5 * door.width_m, ht = 0.5 * door.wall_thickness_m, h = door.height_m;
-    const double top = std::min(h + kFrameWidthM, height);
-    Attributes frame;
-    frame.surface = SurfaceKind::kDoorFrame;
-    frame.material = WallMaterial::kWoodDoor;
-    for (double side : {1.0, -1.0}) {
-      const Eigen::Vector2d facing = side * n;
-      const Eigen::Vector2d base = door.center_m + (ht + kFrameOffsetM) * facing;
-      // Points ordered so that a -> b has `facing` on its left.
-      auto strip = [&](double s0, double s1, double z0, double z1) {
-        Eigen::Vector2d a = base + s0 * u, b = base + s1 * u;
-        if (Eigen::Vector2d(-(b - a).y(), (b - a).x()).dot(facing) < 0) std::swap(a, b);
-        writer.add_vertical_rect(a, b, z0, z1, facing, frame);
-      };
-      strip(-hw - kFrameWidthM, -hw, 0.0, top);
-      strip(hw, hw + kFrameWidthM, 0.0, top);
-      if (top > h) strip(-hw, hw, h, top);
-    }
-    if (!door.open) continue;
-    Attributes lintel;
-    lintel.surface = SurfaceKind::kDoorFrame;
-    lintel.material = plan.rooms[door.room_index].material;
-    lintel.wall_id = plan.wall_count + static_cast<int>(d);
-    for (double side : {1.0, -1.0}) {
-      const Eigen::Vector2d facing = side * n;
-      Eigen::Vector2d a = door.center_m + ht * facing - hw * u,
-                      b = door.center_m + ht * facing + hw * u;
-      if (Eigen::Vector2d(-(b - a).y(), (b - a).x()).dot(facing) < 0) std::swap(a, b);
-      writer.add_vertical_rect(a, b, h, height, facing, lintel);
-    }
-    writer.add_horizontal({door.center_m - hw * u - ht * n, door.center_m + hw * u - ht * n,
-                           door.center_m + hw * u + ht * n, door.center_m - hw * u + ht * n},
-                          h, false, lintel);
+    add_door_frame(writer, plan.doors[d], plan.wall_height_m);
+    if (plan.doors[d].open) add_open_door_lintel(writer, plan, d);
   }
+}
 
-  // Ceiling lights.
+void add_ceiling_lights(MeshWriter& writer, const FloorPlan& plan) {
   for (const CeilingLight& light : plan.lights) {
     const Eigen::Vector2d c = light.center_m.head<2>(), s = 0.5 * light.size_m;
     Attributes attr;
@@ -342,8 +368,10 @@ Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
                            c + Eigen::Vector2d(s.x(), s.y()), c + Eigen::Vector2d(-s.x(), s.y())},
                           light.center_m.z(), false, attr);
   }
+}
 
-  // Posters and landmarks.
+/// Posters and landmarks, just off the wall face they hang on.
+void add_posters(MeshWriter& writer, const Scene& scene, const FloorPlan& plan) {
   for (const PosterPlacement& p : place_posters(scene, plan)) {
     Attributes attr;
     attr.surface = SurfaceKind::kPoster;
@@ -356,6 +384,20 @@ Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
                              p.center_height_m - 0.5 * p.height_m,
                              p.center_height_m + 0.5 * p.height_m, p.normal, attr, true);
   }
+}
+
+}  // namespace
+
+Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
+  Mesh mesh;
+  MeshWriter writer(mesh);
+  const CornerHeights corners = corner_heights(plan);
+  for (const WallFace2& f : plan.wall_faces) add_wall_face(writer, plan, f, corners);
+  add_wall_caps(writer, plan);
+  add_floor_and_ceiling(writer, plan);
+  add_doors(writer, plan);
+  add_ceiling_lights(writer, plan);
+  add_posters(writer, scene, plan);
   return mesh;
 }
 
