@@ -145,95 +145,128 @@ Box box_of(const Polygon& p) {
   return {b.xmin(), b.ymin(), b.xmax(), b.ymax()};
 }
 
-}  // namespace
-
-FloorPlan build_floor_plan(const Scene& scene) {
-  const double t = scene.building.wall_thickness_m;
-  if (!(t > 0)) throw InvalidInputError("building.wall_thickness_m must be positive");
+void check_building(const Scene& scene) {
+  if (!(scene.building.wall_thickness_m > 0))
+    throw InvalidInputError("building.wall_thickness_m must be positive");
   if (!(scene.building.wall_height_m > 0))
     throw InvalidInputError("building.wall_height_m must be positive");
-  const PlanLayout layout = lay_out_scene(scene);
+}
 
-  std::vector<Polygon> corridors, open_areas, pillars, dilated;
+/// The exact polygons the plan is joined from.
+struct ExactPieces {
+  std::vector<Polygon> corridors, open_areas, pillars;
+  /// Every space grown by the wall thickness: the walls are what of it is not free space.
+  std::vector<Polygon> dilated;
+};
+
+/// Open area `i`: its outline (counter-clockwise), its dilation and its pillars. Rejects an
+/// outline that is not a simple polygon with an area.
+void add_open_area(const Scene& scene, std::size_t i, double wall_thickness_m,
+                   ExactPieces& pieces) {
+  const OpenArea& area = scene.open_areas[i];
+  Polygon p = exact_polygon(area.polygon_m);
+  if (area.polygon_m.size() < 3 || !p.is_simple() || p.area() == 0) {
+    scene.reject(fmt::format("open_areas[{}].polygon_m", i),
+                 fmt::format("open area '{}': the outline crosses or touches itself, or encloses "
+                             "no area; list the corners once around the area, in order",
+                             area.id));
+  }
+  if (p.is_clockwise_oriented()) p.reverse_orientation();
+  const PolygonWH grown =
+      CGAL::minkowski_sum_2(p, dilation_kernel(wall_thickness_m, is_axis_aligned(area.polygon_m)));
+  pieces.dilated.push_back(grown.outer_boundary());
+  pieces.open_areas.push_back(p);
+  for (const OpenArea::Pillar& pillar : area.pillars) {
+    OrientedRect r;
+    r.origin_m = pillar.center_m;
+    r.s0 = r.l0 = -0.5 * pillar.size_m;
+    r.s1 = r.l1 = 0.5 * pillar.size_m;
+    pieces.pillars.push_back(exact_rect(r));
+  }
+}
+
+/// Corridors, then open areas, in scene order.
+ExactPieces exact_pieces(const Scene& scene, const PlanLayout& layout, double wall_thickness_m) {
+  ExactPieces pieces;
   for (const CorridorLayout& c : layout.corridors) {
-    corridors.push_back(exact_rect(c.rect));
-    dilated.push_back(exact_rect(c.rect.grown(t)));
+    pieces.corridors.push_back(exact_rect(c.rect));
+    pieces.dilated.push_back(exact_rect(c.rect.grown(wall_thickness_m)));
   }
-  for (std::size_t i = 0; i < scene.open_areas.size(); ++i) {
-    const OpenArea& area = scene.open_areas[i];
-    Polygon p = exact_polygon(area.polygon_m);
-    if (area.polygon_m.size() < 3 || !p.is_simple() || p.area() == 0) {
-      scene.reject(fmt::format("open_areas[{}].polygon_m", i),
-                   fmt::format("open area '{}': the outline crosses or touches itself, or encloses "
-                               "no area; list the corners once around the area, in order",
-                               area.id));
-    }
-    if (p.is_clockwise_oriented()) p.reverse_orientation();
-    const PolygonWH grown =
-        CGAL::minkowski_sum_2(p, dilation_kernel(t, is_axis_aligned(area.polygon_m)));
-    dilated.push_back(grown.outer_boundary());
-    open_areas.push_back(p);
-    for (const OpenArea::Pillar& pillar : area.pillars) {
-      OrientedRect r;
-      r.origin_m = pillar.center_m;
-      r.s0 = r.l0 = -0.5 * pillar.size_m;
-      r.s1 = r.l1 = 0.5 * pillar.size_m;
-      pillars.push_back(exact_rect(r));
-    }
-  }
+  for (std::size_t i = 0; i < scene.open_areas.size(); ++i)
+    add_open_area(scene, i, wall_thickness_m, pieces);
+  return pieces;
+}
 
-  // Keep a room only when it and its walls overlap no free space placed before it.
-  std::vector<Polygon> occupied = corridors;
-  occupied.insert(occupied.end(), open_areas.begin(), open_areas.end());
+/// Whether `footprint` overlaps any occupied polygon; the boxes skip the far ones cheaply.
+bool overlaps_occupied(const Polygon& footprint, const std::vector<Polygon>& occupied,
+                       const std::vector<Box>& occupied_boxes) {
+  const Box fb = box_of(footprint);
+  std::vector<Polygon> near;
+  for (std::size_t k = 0; k < occupied.size(); ++k)
+    if (occupied_boxes[k].overlaps(fb)) near.push_back(occupied[k]);
+  if (near.empty()) return false;
+  PolygonSet clash = join_all(near);
+  clash.intersection(footprint);
+  return !clash.is_empty();
+}
+
+/// The room candidates that are kept, as indices into layout.rooms, with their exact rooms and
+/// the doorways of their open doors.
+struct KeptRooms {
+  std::vector<int> candidates;
+  std::vector<Polygon> rooms, open_doors;
+};
+
+/// Keeps a room only when it and its walls overlap no free space placed before it; adds the
+/// kept rooms' footprints to pieces.dilated.
+KeptRooms keep_rooms(const PlanLayout& layout, double wall_thickness_m, ExactPieces& pieces) {
+  std::vector<Polygon> occupied = pieces.corridors;
+  occupied.insert(occupied.end(), pieces.open_areas.begin(), pieces.open_areas.end());
   std::vector<Box> occupied_boxes;
   for (const auto& p : occupied) occupied_boxes.push_back(box_of(p));
-  std::vector<int> kept_rooms;
-  std::vector<Polygon> rooms, open_doors;
+  KeptRooms kept;
   for (std::size_t i = 0; i < layout.rooms.size(); ++i) {
     const RoomCandidate& cand = layout.rooms[i];
     const Polygon room = exact_rect(cand.room);
-    const Polygon footprint = exact_rect(cand.room.grown(t));
+    const Polygon footprint = exact_rect(cand.room.grown(wall_thickness_m));
     // The clash test uses a footprint a hair smaller: the grown rectangle's edge is computed in
     // double and may overlap its own corridor by a rounding error.
-    const Polygon clash_footprint = exact_rect(cand.room.grown(t - 1e-7));
-    const Box fb = box_of(clash_footprint);
-    std::vector<Polygon> near;
-    for (std::size_t k = 0; k < occupied.size(); ++k)
-      if (occupied_boxes[k].overlaps(fb)) near.push_back(occupied[k]);
-    if (!near.empty()) {
-      PolygonSet clash = join_all(near);
-      clash.intersection(clash_footprint);
-      if (!clash.is_empty()) continue;
-    }
-    kept_rooms.push_back(static_cast<int>(i));
-    rooms.push_back(room);
+    const Polygon clash_footprint = exact_rect(cand.room.grown(wall_thickness_m - 1e-7));
+    if (overlaps_occupied(clash_footprint, occupied, occupied_boxes)) continue;
+    kept.candidates.push_back(static_cast<int>(i));
+    kept.rooms.push_back(room);
     occupied.push_back(room);
     occupied_boxes.push_back(box_of(room));
-    dilated.push_back(footprint);
-    if (cand.door_open) open_doors.push_back(exact_rect(cand.door));
+    pieces.dilated.push_back(footprint);
+    if (cand.door_open) kept.open_doors.push_back(exact_rect(cand.door));
   }
+  return kept;
+}
 
-  std::vector<Polygon> walkable_parts = corridors;
-  walkable_parts.insert(walkable_parts.end(), open_areas.begin(), open_areas.end());
+/// Joins the pieces into free space (corridors, open areas, kept rooms, open doorways), walkable
+/// space (corridors and open areas) and walls, and stores them in doubles in the plan.
+void set_plan_regions(const ExactPieces& pieces, const KeptRooms& kept, FloorPlan& plan) {
+  std::vector<Polygon> walkable_parts = pieces.corridors;
+  walkable_parts.insert(walkable_parts.end(), pieces.open_areas.begin(), pieces.open_areas.end());
   PolygonSet walkable = join_all(walkable_parts);
   std::vector<Polygon> free_parts = walkable_parts;
-  free_parts.insert(free_parts.end(), rooms.begin(), rooms.end());
-  free_parts.insert(free_parts.end(), open_doors.begin(), open_doors.end());
+  free_parts.insert(free_parts.end(), kept.rooms.begin(), kept.rooms.end());
+  free_parts.insert(free_parts.end(), kept.open_doors.begin(), kept.open_doors.end());
   PolygonSet free_space = join_all(free_parts);
-  if (!pillars.empty()) {
-    const PolygonSet pillar_set = join_all(pillars);
+  if (!pieces.pillars.empty()) {
+    const PolygonSet pillar_set = join_all(pieces.pillars);
     walkable.difference(pillar_set);
     free_space.difference(pillar_set);
   }
-  PolygonSet walls = join_all(dilated);
+  PolygonSet walls = join_all(pieces.dilated);
   walls.difference(free_space);
-
-  FloorPlan plan;
-  plan.wall_height_m = scene.building.wall_height_m;
-  plan.wall_thickness_m = t;
   plan.free_space = to_double_regions(free_space);
   plan.walkable = to_double_regions(walkable);
   plan.walls = to_double_regions(walls);
+}
+
+/// The robot's space must be one piece.
+void check_walkable_connected(const FloorPlan& plan) {
   if (plan.walkable.empty()) throw InvalidInputError("the scene has no corridors or open areas");
   if (plan.walkable.size() > 1) {
     const Eigen::Vector2d p = plan.walkable[1].outer[0];
@@ -242,9 +275,13 @@ FloorPlan build_floor_plan(const Scene& scene) {
         "the robot's space must be connected",
         plan.walkable.size(), p.x(), p.y()));
   }
+}
 
+/// A room and its door for each kept candidate, in candidate order.
+void add_rooms_and_doors(const Scene& scene, const PlanLayout& layout,
+                         const std::vector<int>& kept_candidates, FloorPlan& plan) {
   const double door_height_m = std::min(2.1, scene.building.wall_height_m - 0.2);
-  for (int index : kept_rooms) {
+  for (int index : kept_candidates) {
     const RoomCandidate& cand = layout.rooms[index];
     Room room;
     room.polygon_m = cand.room.corners();
@@ -256,22 +293,42 @@ FloorPlan build_floor_plan(const Scene& scene) {
     door.along_wall = cand.door.along;
     door.width_m = cand.door.s1 - cand.door.s0;
     door.height_m = door_height_m;
-    door.wall_thickness_m = t;
+    door.wall_thickness_m = plan.wall_thickness_m;
     door.open = cand.door_open;
     door.room_index = static_cast<int>(plan.rooms.size());
     plan.rooms.push_back(std::move(room));
     plan.doors.push_back(door);
   }
+}
 
-  build_wall_faces(scene, layout, plan);
-  plan.lights = place_ceiling_lights(scene, layout, plan);
-
+/// Bounding box of the walls and the free space.
+void set_bounds(FloorPlan& plan) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
   for (const auto* regions : {&plan.walls, &plan.free_space})
     for (const auto& r : *regions)
       for (const auto& v : r.outer) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
   plan.bounds_min_m = lo;
   plan.bounds_max_m = hi;
+}
+
+}  // namespace
+
+FloorPlan build_floor_plan(const Scene& scene) {
+  check_building(scene);
+  const double t = scene.building.wall_thickness_m;
+  const PlanLayout layout = lay_out_scene(scene);
+  ExactPieces pieces = exact_pieces(scene, layout, t);
+  const KeptRooms kept = keep_rooms(layout, t, pieces);
+
+  FloorPlan plan;
+  plan.wall_height_m = scene.building.wall_height_m;
+  plan.wall_thickness_m = t;
+  set_plan_regions(pieces, kept, plan);
+  check_walkable_connected(plan);
+  add_rooms_and_doors(scene, layout, kept.candidates, plan);
+  build_wall_faces(scene, layout, plan);
+  plan.lights = place_ceiling_lights(scene, layout, plan);
+  set_bounds(plan);
   return plan;
 }
 
