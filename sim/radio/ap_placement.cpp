@@ -127,6 +127,137 @@ void take_spaced(const std::vector<Eigen::Vector2d>& pool, int want, double spac
   }
 }
 
+std::vector<Eigen::Vector3d> at_height(const std::vector<Eigen::Vector2d>& xy, double height_m) {
+  std::vector<Eigen::Vector3d> out;
+  for (const auto& p : xy) out.emplace_back(p.x(), p.y(), height_m);
+  return out;
+}
+
+/// kColinear: `count` points evenly from line_from_m to line_to_m (one point: the middle).
+std::vector<Eigen::Vector2d> colinear_spots(const AccessPoints& spec) {
+  const Eigen::Vector2d a = spec.line_from_m, b = spec.line_to_m;
+  if ((b - a).norm() < 1e-9 && spec.count > 1)
+    throw InvalidInputError("colinear placement needs line_from_m and line_to_m to differ");
+  std::vector<Eigen::Vector2d> xy;
+  for (int i = 0; i < spec.count; ++i) {
+    const double t = spec.count == 1 ? 0.5 : static_cast<double>(i) / (spec.count - 1);
+    xy.push_back(a + t * (b - a));
+  }
+  return xy;
+}
+
+/// Candidate spots of the whole plan: the usual lattice, or the narrow one when the usual has
+/// none.
+std::vector<Eigen::Vector2d> lattice_spots(const FloorPlan& plan, const WallFaceGrid& walls) {
+  std::vector<Eigen::Vector2d> spots = candidate_spots(plan, walls, nullptr);
+  if (spots.empty()) spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
+  return spots;
+}
+
+/// kGrid: a cols x rows grid over the plan bounds, shaped like them; each grid point takes the
+/// nearest free spot not taken yet.
+std::vector<Eigen::Vector2d> grid_spots(const AccessPoints& spec, const FloorPlan& plan,
+                                        const std::vector<Eigen::Vector2d>& free_spots) {
+  std::vector<Eigen::Vector2d> chosen;
+  const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
+  const double aspect = extent.y() > 0 ? extent.x() / extent.y() : 1.0;
+  const int cols = std::max(1, static_cast<int>(std::lround(std::sqrt(spec.count * aspect))));
+  const int rows = (spec.count + cols - 1) / cols;
+  std::vector<bool> used(free_spots.size(), false);
+  for (int i = 0; i < spec.count; ++i) {
+    const int r = i / cols, c = i % cols;
+    const Eigen::Vector2d ideal =
+        plan.bounds_min_m +
+        Eigen::Vector2d((c + 0.5) * extent.x() / cols, (r + 0.5) * extent.y() / rows);
+    std::size_t best = free_spots.size();
+    double best_d = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < free_spots.size(); ++k) {
+      const double d = (free_spots[k] - ideal).squaredNorm();
+      if (!used[k] && d < best_d) {
+        best_d = d;
+        best = k;
+      }
+    }
+    if (best == free_spots.size())
+      throw InvalidInputError(fmt::format(
+          "the floor plan has room for only {} grid positions of the {} asked for", i, spec.count));
+    used[best] = true;
+    chosen.push_back(free_spots[best]);
+  }
+  return chosen;
+}
+
+/// The room indices in a random order (a Fisher-Yates shuffle drawn from `rng`).
+std::vector<std::size_t> shuffled_rooms(const FloorPlan& plan, Rng& rng) {
+  std::vector<std::size_t> order(plan.rooms.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  for (std::size_t i = order.size(); i > 1; --i)
+    std::swap(
+        order[i - 1],
+        order[static_cast<std::size_t>(rng.uniform_int(0, static_cast<std::int64_t>(i) - 1))]);
+  return order;
+}
+
+/// kRooms: all but a quarter (rounded down) of the access points in rooms, at most one per room,
+/// rooms in random order; the rest (and whatever the rooms could not take) in corridors and halls.
+std::vector<Eigen::Vector2d> room_spots(const AccessPoints& spec, const FloorPlan& plan,
+                                        const WallFaceGrid& walls,
+                                        const std::vector<Eigen::Vector2d>& free_spots, Rng& rng) {
+  std::vector<Eigen::Vector2d> chosen;
+  const int in_rooms_wanted = spec.count - spec.count / 4;
+  for (std::size_t room : shuffled_rooms(plan, rng)) {
+    if (static_cast<int>(chosen.size()) >= in_rooms_wanted) break;
+    auto spots = candidate_spots(plan, walls, &plan.rooms[room].polygon_m);
+    shuffle(spots, rng);
+    for (const auto& p : spots) {
+      if (far_enough(chosen, p, spec.min_spacing_m)) {
+        chosen.push_back(p);
+        break;
+      }
+    }
+  }
+  std::vector<Eigen::Vector2d> walkable;
+  for (const auto& p : free_spots)
+    if (regions_contain(plan.walkable, p)) walkable.push_back(p);
+  if (walkable.empty()) walkable = free_spots;
+  shuffle(walkable, rng);
+  take_spaced(walkable, spec.count - static_cast<int>(chosen.size()), spec.min_spacing_m, chosen);
+  return chosen;
+}
+
+/// kGrid, kRandom and kRooms: spots picked from the plan's free lattice spots.
+std::vector<Eigen::Vector2d> spots_from_lattice(const AccessPoints& spec, const FloorPlan& plan,
+                                                std::uint64_t seed) {
+  Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
+  const WallFaceGrid walls(plan, kClearanceM);
+  std::vector<Eigen::Vector2d> free_spots = lattice_spots(plan, walls);
+  if (free_spots.empty())
+    throw InvalidInputError(fmt::format(
+        "no spot of the floor plan is {} m from the walls to hold an access point (placement "
+        "'{}'); give their positions with placement: explicit",
+        kNarrowLattice.clearance_m, to_string(spec.placement)));
+  std::vector<Eigen::Vector2d> chosen;
+  switch (spec.placement) {
+    case ApPlacement::kGrid:
+      chosen = grid_spots(spec, plan, free_spots);
+      break;
+    case ApPlacement::kRandom:
+      shuffle(free_spots, rng);
+      take_spaced(free_spots, spec.count, spec.min_spacing_m, chosen);
+      break;
+    case ApPlacement::kRooms:
+      chosen = room_spots(spec, plan, walls, free_spots, rng);
+      break;
+    case ApPlacement::kExplicit:
+    case ApPlacement::kColinear:
+      break;
+  }
+  if (static_cast<int>(chosen.size()) < spec.count)
+    throw InvalidInputError(fmt::format("only {} of {} access points fit in the floor plan",
+                                        chosen.size(), spec.count));
+  return chosen;
+}
+
 }  // namespace
 
 std::uint64_t access_point_seed(const Scene& scene) {
@@ -136,120 +267,22 @@ std::uint64_t access_point_seed(const Scene& scene) {
 std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& spec,
                                                           const FloorPlan& plan,
                                                           std::uint64_t seed) {
-  std::vector<Eigen::Vector3d> out;
   if (spec.placement == ApPlacement::kExplicit) {
+    std::vector<Eigen::Vector3d> out;
     for (const auto& e : spec.explicit_list) out.push_back(e.position_m);
     return out;
   }
   if (spec.count < 0)
     throw InvalidInputError(fmt::format("access_points.count must be >= 0 (got {})", spec.count));
-  if (spec.count == 0) return out;
-  const auto lift = [&](const std::vector<Eigen::Vector2d>& xy) {
-    for (const auto& p : xy) out.emplace_back(p.x(), p.y(), spec.height_m);
-    return out;
-  };
-
-  if (spec.placement == ApPlacement::kColinear) {
-    const Eigen::Vector2d a = spec.line_from_m, b = spec.line_to_m;
-    if ((b - a).norm() < 1e-9 && spec.count > 1)
-      throw InvalidInputError("colinear placement needs line_from_m and line_to_m to differ");
-    std::vector<Eigen::Vector2d> xy;
-    for (int i = 0; i < spec.count; ++i) {
-      const double t = spec.count == 1 ? 0.5 : static_cast<double>(i) / (spec.count - 1);
-      xy.push_back(a + t * (b - a));
-    }
-    return lift(xy);
-  }
-
-  Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
-  const WallFaceGrid walls(plan, kClearanceM);
-  std::vector<Eigen::Vector2d> free_spots = candidate_spots(plan, walls, nullptr);
-  if (free_spots.empty()) free_spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
-  if (free_spots.empty())
-    throw InvalidInputError(fmt::format(
-        "no spot of the floor plan is {} m from the walls to hold an access point (placement "
-        "'{}'); give their positions with placement: explicit",
-        kNarrowLattice.clearance_m, to_string(spec.placement)));
-  std::vector<Eigen::Vector2d> chosen;
-
-  switch (spec.placement) {
-    case ApPlacement::kGrid: {
-      const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
-      const double aspect = extent.y() > 0 ? extent.x() / extent.y() : 1.0;
-      const int cols = std::max(1, static_cast<int>(std::lround(std::sqrt(spec.count * aspect))));
-      const int rows = (spec.count + cols - 1) / cols;
-      std::vector<bool> used(free_spots.size(), false);
-      for (int i = 0; i < spec.count; ++i) {
-        const int r = i / cols, c = i % cols;
-        const Eigen::Vector2d ideal =
-            plan.bounds_min_m +
-            Eigen::Vector2d((c + 0.5) * extent.x() / cols, (r + 0.5) * extent.y() / rows);
-        std::size_t best = free_spots.size();
-        double best_d = std::numeric_limits<double>::infinity();
-        for (std::size_t k = 0; k < free_spots.size(); ++k) {
-          const double d = (free_spots[k] - ideal).squaredNorm();
-          if (!used[k] && d < best_d) {
-            best_d = d;
-            best = k;
-          }
-        }
-        if (best == free_spots.size())
-          throw InvalidInputError(
-              fmt::format("the floor plan has room for only {} grid positions of the {} asked for",
-                          i, spec.count));
-        used[best] = true;
-        chosen.push_back(free_spots[best]);
-      }
-      break;
-    }
-    case ApPlacement::kRandom: {
-      shuffle(free_spots, rng);
-      take_spaced(free_spots, spec.count, spec.min_spacing_m, chosen);
-      break;
-    }
-    case ApPlacement::kRooms: {
-      const int in_rooms_wanted = spec.count - spec.count / 4;
-      std::vector<std::size_t> order(plan.rooms.size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-      for (std::size_t i = order.size(); i > 1; --i)
-        std::swap(
-            order[i - 1],
-            order[static_cast<std::size_t>(rng.uniform_int(0, static_cast<std::int64_t>(i) - 1))]);
-      for (std::size_t room : order) {
-        if (static_cast<int>(chosen.size()) >= in_rooms_wanted) break;
-        auto spots = candidate_spots(plan, walls, &plan.rooms[room].polygon_m);
-        shuffle(spots, rng);
-        for (const auto& p : spots) {
-          if (far_enough(chosen, p, spec.min_spacing_m)) {
-            chosen.push_back(p);
-            break;
-          }
-        }
-      }
-      // The rest (and whatever the rooms could not take) in corridors and halls.
-      std::vector<Eigen::Vector2d> walkable;
-      for (const auto& p : free_spots)
-        if (regions_contain(plan.walkable, p)) walkable.push_back(p);
-      if (walkable.empty()) walkable = free_spots;
-      shuffle(walkable, rng);
-      take_spaced(walkable, spec.count - static_cast<int>(chosen.size()), spec.min_spacing_m,
-                  chosen);
-      break;
-    }
-    case ApPlacement::kExplicit:
-    case ApPlacement::kColinear:
-      break;
-  }
-  if (static_cast<int>(chosen.size()) < spec.count)
-    throw InvalidInputError(fmt::format("only {} of {} access points fit in the floor plan",
-                                        chosen.size(), spec.count));
-  return lift(chosen);
+  if (spec.count == 0) return {};
+  if (spec.placement == ApPlacement::kColinear)
+    return at_height(colinear_spots(spec), spec.height_m);
+  return at_height(spots_from_lattice(spec, plan, seed), spec.height_m);
 }
 
 std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan, double spacing_m) {
   const WallFaceGrid walls(plan, kClearanceM);
-  std::vector<Eigen::Vector2d> spots = candidate_spots(plan, walls, nullptr);
-  if (spots.empty()) spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
+  const std::vector<Eigen::Vector2d> spots = lattice_spots(plan, walls);
   std::vector<Eigen::Vector2d> kept;
   for (const Eigen::Vector2d& p : spots)
     if (far_enough(kept, p, spacing_m)) kept.push_back(p);
