@@ -133,6 +133,16 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
                               const std::optional<TrackingEdge>& tracking) {
   instrumentation_.count(counter::kKeyframes);
   const KeyframeId previous = static_cast<KeyframeId>(graph_.node_count()) - 1;
+  const KeyframeId id = insert_keyframe(std::move(features), odometry_camera, previous, tracking);
+  const bool loop_found = search_loop_closures(id, previous, odometry_camera, tracking);
+  optimise_if_due(id, loop_found);
+}
+
+KeyframeId SlamSystem::insert_keyframe(FrameFeatures features,
+                                       const std::optional<Pose>& odometry_camera,
+                                       KeyframeId previous,
+                                       const std::optional<TrackingEdge>& tracking) {
+  // Placed by the tracking edge when there is one, else where the previous keyframe is.
   Pose initial = previous >= 0 ? graph_.node(previous).pose : Pose::Identity();
   if (tracking) initial = graph_.node(tracking->from).pose * tracking->from_to;
   const KeyframeId id = graph_.add_node(features.time, features.frame_index, initial);
@@ -148,133 +158,162 @@ void SlamSystem::add_keyframe(FrameFeatures features, std::optional<Pose> odomet
     graph_.add_edge({tracking->from, id, EdgeType::kVisual, tracking->from_to,
                      tracking->information, tracking->inliers});
   }
+  return id;
+}
 
-  bool loop_found = false;
+bool SlamSystem::search_loop_closures(KeyframeId id, KeyframeId previous,
+                                      const std::optional<Pose>& odometry_camera,
+                                      const std::optional<TrackingEdge>& tracking) {
+  ScopedTimer detection(instrumentation_, module::kLoopClosureDetection);
+  const std::vector<Candidate> candidates = select_candidates(id, previous, tracking);
+  Verification verification = verify_candidates(candidates, id, tracking);
+  const std::optional<GraphEdge> odometry_edge = odometry_edge_to(id, previous, odometry_camera);
+  const std::vector<std::size_t> accepted =
+      choose_hypotheses(verification.hypotheses, id, tracking.has_value(), odometry_edge);
+  const bool loop_found = add_accepted_edges(accepted, id, tracking.has_value(), verification);
+  attach_if_unconnected(id, previous, odometry_edge);
+  front_end_->on_verified(verification.report);
+  instrumentation_.record_keyframe_search(id, static_cast<std::int64_t>(candidates.size()),
+                                          detection.stop());
+  return loop_found;
+}
+
+std::vector<Candidate> SlamSystem::select_candidates(KeyframeId id, KeyframeId previous,
+                                                     const std::optional<TrackingEdge>& tracking) {
+  SelectionQuery query;
+  query.keyframe = id;
+  query.time = keyframe_features_.back().time;
+  query.features = &keyframe_features_.back();
+  query.graph = &graph_;
+  query.loop_rule = &loop_rule_;
+  if (tracking) query.already_compared.push_back(tracking->from);
+  std::vector<Candidate> candidates;
   {
-    ScopedTimer detection(instrumentation_, module::kLoopClosureDetection);
-    const FrameFeatures& current = keyframe_features_.back();
-    SelectionQuery query;
-    query.keyframe = id;
-    query.time = current.time;
-    query.features = &current;
-    query.graph = &graph_;
-    query.loop_rule = &loop_rule_;
-    if (tracking) query.already_compared.push_back(tracking->from);
-    std::vector<Candidate> candidates;
-    {
-      ScopedTimer selection(instrumentation_, module::kCandidateSelection);
-      candidates = front_end_->candidates_for(query);
-    }
-    if (!tracking) {
-      // Lost: also try the most recent searchable keyframes (relocalisation).
-      for (KeyframeId k = previous;
-           k >= 0 && k > previous - options_.tracking.relocalisation_keyframes; --k) {
-        const bool listed = std::any_of(candidates.begin(), candidates.end(),
-                                        [&](const Candidate& c) { return c.keyframe == k; });
-        if (!listed && front_end_->searchable(k)) {
-          candidates.push_back({k, CandidateRole::kRelocalisation});
-        }
-      }
-    }
-
-    // Visual verification of every candidate; the front end classifies what passes.
-    VerificationReport report;
-    report.keyframe = id;
-    report.time = current.time;
-    report.tracked_from = tracking ? tracking->from : -1;
-    std::vector<Hypothesis> hypotheses;
-    std::vector<std::size_t> outcome_of_hypothesis;
-    for (const Candidate& candidate : candidates) {
-      if (candidate.keyframe < 0 || candidate.keyframe >= id) {
-        throw std::logic_error(fmt::format("front end {} named keyframe {} as a candidate of {}",
-                                           front_end_->name(), candidate.keyframe, id));
-      }
-      instrumentation_.count(counter::kCandidateComparisons);
-      const VisualTransformation t =
-          compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current,
-                  to_string(candidate.role));
-      ComparisonOutcome outcome{candidate, t.accepted, false, t.inliers, EdgeType::kVisual};
-      if (t.accepted) {
-        outcome.edge_type = front_end_->classify(candidate, id, loop_rule_);
-        outcome_of_hypothesis.push_back(report.comparisons.size());
-        hypotheses.push_back({candidate, t, outcome.edge_type});
-      }
-      report.comparisons.push_back(outcome);
-    }
-
-    // Wheel odometry from the previous keyframe, when the stream has it.
-    std::optional<GraphEdge> odometry_edge;
-    if (previous >= 0 && odometry_camera &&
-        keyframe_odometry_[static_cast<std::size_t>(previous)]) {
-      const Pose from_to =
-          keyframe_odometry_[static_cast<std::size_t>(previous)]->inverse() * *odometry_camera;
-      odometry_edge = GraphEdge{previous,
-                                id,
-                                EdgeType::kOdometry,
-                                from_to,
-                                diagonal_information(options_.tracking.odometry_sigma_m,
-                                                     options_.tracking.odometry_sigma_rad),
-                                0};
-    }
-
-    // The front end's acceptance policy decides which hypotheses become edges. It sees the
-    // odometry edge the keyframe may get (always with odometry_edges, else when tracking was
-    // lost), so a graph-consistency check weighs a loop closure against it.
-    std::vector<std::size_t> accepted;
-    {
-      ScopedTimer acceptance(instrumentation_, module::kEdgeAcceptance);
-      AcceptanceContext context{&graph_, id, tracking.has_value(), {}};
-      if (odometry_edge && (options_.tracking.odometry_edges || !tracking)) {
-        context.other_edges.push_back(*odometry_edge);
-      }
-      accepted = front_end_->acceptance().choose(hypotheses, context);
-    }
-    for (std::size_t k = 0; k < accepted.size(); ++k) {
-      if (accepted[k] >= hypotheses.size() || (k > 0 && accepted[k] <= accepted[k - 1])) {
-        throw std::logic_error("acceptance policy " + front_end_->acceptance().name() +
-                               " returned indices that are not ascending, unique and in range");
-      }
-    }
-    instrumentation_.count(counter::kRejectedHypotheses,
-                           static_cast<std::int64_t>(hypotheses.size() - accepted.size()));
-    bool have_pose = tracking.has_value();
-    for (std::size_t i : accepted) {
-      const Hypothesis& h = hypotheses.at(i);
-      const VisualTransformation& t = h.transformation;
-      graph_.add_edge(
-          {h.candidate.keyframe, id, h.edge_type, t.a_from_b, t.information, t.inliers});
-      report.comparisons[outcome_of_hypothesis[i]].accepted = true;
-      instrumentation_.record_role_accepted(to_string(h.candidate.role));
-      if (!have_pose) {
-        graph_.set_pose(id, graph_.node(h.candidate.keyframe).pose * t.a_from_b);
-        have_pose = true;
-      }
-      if (h.edge_type == EdgeType::kLoop) {
-        loop_closures_.push_back({h.candidate.keyframe, id, h.candidate.role, t.inliers,
-                                  t.rms_reprojection_px, t.a_from_b});
-        instrumentation_.count(counter::kLoopClosures);
-        loop_found = true;
-      }
-    }
-
-    // Attach a keyframe nothing visual connects (or add odometry edges when asked to).
-    if (previous >= 0) {
-      const bool unattached = graph_.adjacent(id).empty();
-      if (odometry_edge && (unattached || options_.tracking.odometry_edges)) {
-        graph_.add_edge(*odometry_edge);
-        if (unattached) graph_.set_pose(id, graph_.node(previous).pose * odometry_edge->from_to);
-      } else if (unattached) {
-        graph_.add_edge(
-            {previous, id, EdgeType::kWeak, Pose::Identity(),
-             diagonal_information(options_.tracking.weak_sigma_m, options_.tracking.weak_sigma_rad),
-             0});
-      }
-    }
-    front_end_->on_verified(report);
-    instrumentation_.record_keyframe_search(id, static_cast<std::int64_t>(candidates.size()),
-                                            detection.stop());
+    ScopedTimer selection(instrumentation_, module::kCandidateSelection);
+    candidates = front_end_->candidates_for(query);
   }
+  if (!tracking) {
+    // Lost: also try the most recent searchable keyframes (relocalisation).
+    for (KeyframeId k = previous;
+         k >= 0 && k > previous - options_.tracking.relocalisation_keyframes; --k) {
+      const bool listed = std::any_of(candidates.begin(), candidates.end(),
+                                      [&](const Candidate& c) { return c.keyframe == k; });
+      if (!listed && front_end_->searchable(k)) {
+        candidates.push_back({k, CandidateRole::kRelocalisation});
+      }
+    }
+  }
+  return candidates;
+}
 
+SlamSystem::Verification SlamSystem::verify_candidates(
+    const std::vector<Candidate>& candidates, KeyframeId id,
+    const std::optional<TrackingEdge>& tracking) {
+  const FrameFeatures& current = keyframe_features_.back();
+  Verification v;
+  v.report.keyframe = id;
+  v.report.time = current.time;
+  v.report.tracked_from = tracking ? tracking->from : -1;
+  for (const Candidate& candidate : candidates) {
+    if (candidate.keyframe < 0 || candidate.keyframe >= id) {
+      throw std::logic_error(fmt::format("front end {} named keyframe {} as a candidate of {}",
+                                         front_end_->name(), candidate.keyframe, id));
+    }
+    instrumentation_.count(counter::kCandidateComparisons);
+    const VisualTransformation t =
+        compare(keyframe_features_[static_cast<std::size_t>(candidate.keyframe)], current,
+                to_string(candidate.role));
+    ComparisonOutcome outcome{candidate, t.accepted, false, t.inliers, EdgeType::kVisual};
+    if (t.accepted) {
+      outcome.edge_type = front_end_->classify(candidate, id, loop_rule_);
+      v.outcome_of_hypothesis.push_back(v.report.comparisons.size());
+      v.hypotheses.push_back({candidate, t, outcome.edge_type});
+    }
+    v.report.comparisons.push_back(outcome);
+  }
+  return v;
+}
+
+std::optional<GraphEdge> SlamSystem::odometry_edge_to(
+    KeyframeId id, KeyframeId previous, const std::optional<Pose>& odometry_camera) const {
+  if (!(previous >= 0 && odometry_camera &&
+        keyframe_odometry_[static_cast<std::size_t>(previous)])) {
+    return std::nullopt;
+  }
+  const Pose from_to =
+      keyframe_odometry_[static_cast<std::size_t>(previous)]->inverse() * *odometry_camera;
+  return GraphEdge{previous,
+                   id,
+                   EdgeType::kOdometry,
+                   from_to,
+                   diagonal_information(options_.tracking.odometry_sigma_m,
+                                        options_.tracking.odometry_sigma_rad),
+                   0};
+}
+
+std::vector<std::size_t> SlamSystem::choose_hypotheses(
+    const std::vector<Hypothesis>& hypotheses, KeyframeId id, bool tracked,
+    const std::optional<GraphEdge>& odometry_edge) {
+  std::vector<std::size_t> accepted;
+  {
+    ScopedTimer acceptance(instrumentation_, module::kEdgeAcceptance);
+    AcceptanceContext context{&graph_, id, tracked, {}};
+    if (odometry_edge && (options_.tracking.odometry_edges || !tracked)) {
+      context.other_edges.push_back(*odometry_edge);
+    }
+    accepted = front_end_->acceptance().choose(hypotheses, context);
+  }
+  for (std::size_t k = 0; k < accepted.size(); ++k) {
+    if (accepted[k] >= hypotheses.size() || (k > 0 && accepted[k] <= accepted[k - 1])) {
+      throw std::logic_error("acceptance policy " + front_end_->acceptance().name() +
+                             " returned indices that are not ascending, unique and in range");
+    }
+  }
+  instrumentation_.count(counter::kRejectedHypotheses,
+                         static_cast<std::int64_t>(hypotheses.size() - accepted.size()));
+  return accepted;
+}
+
+bool SlamSystem::add_accepted_edges(const std::vector<std::size_t>& accepted, KeyframeId id,
+                                    bool tracked, Verification& verification) {
+  bool loop_found = false;
+  bool have_pose = tracked;
+  for (std::size_t i : accepted) {
+    const Hypothesis& h = verification.hypotheses.at(i);
+    const VisualTransformation& t = h.transformation;
+    graph_.add_edge({h.candidate.keyframe, id, h.edge_type, t.a_from_b, t.information, t.inliers});
+    verification.report.comparisons[verification.outcome_of_hypothesis[i]].accepted = true;
+    instrumentation_.record_role_accepted(to_string(h.candidate.role));
+    if (!have_pose) {
+      graph_.set_pose(id, graph_.node(h.candidate.keyframe).pose * t.a_from_b);
+      have_pose = true;
+    }
+    if (h.edge_type == EdgeType::kLoop) {
+      loop_closures_.push_back({h.candidate.keyframe, id, h.candidate.role, t.inliers,
+                                t.rms_reprojection_px, t.a_from_b});
+      instrumentation_.count(counter::kLoopClosures);
+      loop_found = true;
+    }
+  }
+  return loop_found;
+}
+
+void SlamSystem::attach_if_unconnected(KeyframeId id, KeyframeId previous,
+                                       const std::optional<GraphEdge>& odometry_edge) {
+  if (previous < 0) return;
+  const bool unattached = graph_.adjacent(id).empty();
+  if (odometry_edge && (unattached || options_.tracking.odometry_edges)) {
+    graph_.add_edge(*odometry_edge);
+    if (unattached) graph_.set_pose(id, graph_.node(previous).pose * odometry_edge->from_to);
+  } else if (unattached) {
+    graph_.add_edge(
+        {previous, id, EdgeType::kWeak, Pose::Identity(),
+         diagonal_information(options_.tracking.weak_sigma_m, options_.tracking.weak_sigma_rad),
+         0});
+  }
+}
+
+void SlamSystem::optimise_if_due(KeyframeId id, bool loop_found) {
   const int every = front_end_->optimise_every_keyframes();
   // Every n-th keyframe after the first (a graph of one node has nothing to optimise).
   const bool scheduled = every > 0 && id > 0 && id % every == 0;

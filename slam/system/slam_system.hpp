@@ -105,9 +105,53 @@ class SlamSystem {
   /// end's schedule when it has one, else the tracking-quality rule.
   bool needs_new_keyframe(const VisualTransformation& t, Timestamp frame_time) const;
   std::optional<Pose> current_odometry_camera() const;
+  /// What verifying a keyframe's candidates found: the report for the front end, and the
+  /// comparisons that passed as hypotheses (with the index of each one's outcome in the report).
+  struct Verification {
+    VerificationReport report;
+    std::vector<Hypothesis> hypotheses;
+    std::vector<std::size_t> outcome_of_hypothesis;
+  };
+
   /// Adds a keyframe, verifies its candidates, attaches it, optimises after loop closures.
   void add_keyframe(FrameFeatures features, std::optional<Pose> odometry_camera,
                     const std::optional<TrackingEdge>& tracking);
+  /// The keyframe's graph node, records, loop-rule path length and tracking edge; returns its id.
+  /// `previous` is the last keyframe before it (-1: none).
+  KeyframeId insert_keyframe(FrameFeatures features, const std::optional<Pose>& odometry_camera,
+                             KeyframeId previous, const std::optional<TrackingEdge>& tracking);
+  /// Candidate selection, verification and acceptance for new keyframe `id`, then its
+  /// attachment; timed as loop-closure detection. Returns whether a loop closed.
+  bool search_loop_closures(KeyframeId id, KeyframeId previous,
+                            const std::optional<Pose>& odometry_camera,
+                            const std::optional<TrackingEdge>& tracking);
+  /// The front end's candidates, plus (when tracking was lost) the most recent searchable
+  /// keyframes for relocalisation.
+  std::vector<Candidate> select_candidates(KeyframeId id, KeyframeId previous,
+                                           const std::optional<TrackingEdge>& tracking);
+  /// Compares the new keyframe with every candidate; the front end classifies what passes.
+  /// Throws std::logic_error when the front end named a keyframe that is not an earlier one.
+  Verification verify_candidates(const std::vector<Candidate>& candidates, KeyframeId id,
+                                 const std::optional<TrackingEdge>& tracking);
+  /// Wheel odometry from the previous keyframe, when the stream has it for both.
+  std::optional<GraphEdge> odometry_edge_to(KeyframeId id, KeyframeId previous,
+                                            const std::optional<Pose>& odometry_camera) const;
+  /// The front end's acceptance policy picks the hypotheses that become edges (indices into
+  /// `hypotheses`). It sees the odometry edge the keyframe may get (always with odometry_edges,
+  /// else when tracking was lost), so a graph-consistency check weighs a loop closure against it.
+  std::vector<std::size_t> choose_hypotheses(const std::vector<Hypothesis>& hypotheses,
+                                             KeyframeId id, bool tracked,
+                                             const std::optional<GraphEdge>& odometry_edge);
+  /// Adds the accepted hypotheses as edges and marks them in the report; an untracked keyframe
+  /// takes its pose from the first. Returns whether one is a loop closure.
+  bool add_accepted_edges(const std::vector<std::size_t>& accepted, KeyframeId id, bool tracked,
+                          Verification& verification);
+  /// Attaches a keyframe nothing visual connects by odometry, else by a weak edge (and adds the
+  /// odometry edge anyway when odometry_edges asks for it).
+  void attach_if_unconnected(KeyframeId id, KeyframeId previous,
+                             const std::optional<GraphEdge>& odometry_edge);
+  /// Incremental optimisation after a loop closure or on the front end's schedule.
+  void optimise_if_due(KeyframeId id, bool loop_found);
   /// Visual transformation between two frames; its work is booked under `role`.
   VisualTransformation compare(const FrameFeatures& a, const FrameFeatures& b,
                                const std::string& role);
