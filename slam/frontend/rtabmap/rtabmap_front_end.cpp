@@ -85,63 +85,78 @@ bool RtabmapFrontEnd::linked_to_stm(KeyframeId node) const {
 }
 
 std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
+  start_node(query);
+  const KeyframeId t = query.keyframe;
+  add_to_memory(query);
+  rehearse(t);
+  pending_.memory_update_cpu_ms = phase_cpu_ms();
+  retrieve_around_last_best();
+  retrieve_similar_wifi_clusters();
+  phase_cpu_ms();  // retrieval is RTAB-Map's own timing category, in no phase here
+  const HypothesisScores scores = update_hypotheses(t);
+  return candidates_of(query, scores);
+}
+
+void RtabmapFrontEnd::start_node(const SelectionQuery& query) {
   started_ = std::chrono::steady_clock::now();
   started_cpu_ms_ = thread_cpu_ms();
+  phase_started_cpu_ms_ = started_cpu_ms_;
   graph_ = query.graph;
-  const KeyframeId t = query.keyframe;
   pending_ = RtabmapNodeRecord{};
-  pending_.node = t;
+  pending_.node = query.keyframe;
   immune_now_.clear();
   last_transferred_.clear();
+}
 
-  // 1. Words, and the node enters STM.
+double RtabmapFrontEnd::phase_cpu_ms() {
+  const double now = thread_cpu_ms();
+  const double elapsed = now - phase_started_cpu_ms_;
+  phase_started_cpu_ms_ = now;
+  return elapsed;
+}
+
+void RtabmapFrontEnd::add_to_memory(const SelectionQuery& query) {
+  const KeyframeId t = query.keyframe;
   cv::Mat descriptors;
   if (query.features != nullptr) {
     descriptors = rtabmap::strongest_descriptors(
         query.features->keypoints, query.features->descriptors, options_.max_features);
   }
   const std::int64_t comparisons_before = vocabulary_.distance_computations();
-  double phase_started_cpu_ms = started_cpu_ms_;
-  const auto phase_cpu_ms = [&phase_started_cpu_ms] {
-    const double now = thread_cpu_ms();
-    const double elapsed = now - phase_started_cpu_ms;
-    phase_started_cpu_ms = now;
-    return elapsed;
-  };
   words_of_[t] = vocabulary_.add_node(t, descriptors);
   pending_.word_comparisons = vocabulary_.distance_computations() - comparisons_before;
   if (memory_.add(t) >= 0) ++pending_.entered_wm;
   pending_.words = vocabulary_.dictionary_size();
+}
 
-  // 2. Rehearsal with the previous node.
+void RtabmapFrontEnd::rehearse(KeyframeId t) {
   if (t >= 1 && memory_.place(t - 1) == rtabmap::MemoryPlace::kStm &&
       rtabmap::node_similarity(words_of_.at(t - 1), words_of_.at(t)) >=
           options_.rehearsal_similarity) {
     memory_.merge(t - 1, t);
     pending_.rehearsed = true;
   }
-  pending_.memory_update_cpu_ms = phase_cpu_ms();
+}
 
-  // 3. Retrieval around the last node's best hypothesis: nearest first, newest first within a
-  // margin (Rtabmap::process sorts each margin's ids in reverse).
-  if (last_best_ >= 0) {
-    std::map<int, std::vector<KeyframeId>> by_margin;
-    for (const auto& [id, m] : neighbours_in_memory(last_best_, filter_.max_margin(), true)) {
-      if (memory_.place(id) != rtabmap::MemoryPlace::kStm) by_margin[m].push_back(id);
-    }
-    for (auto& [m, ids] : by_margin) {
-      for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
-        immune_now_.insert(*it);
-        if (memory_.place(*it) == rtabmap::MemoryPlace::kLtm &&
-            pending_.retrieved < options_.max_retrieved) {
-          retrieve(*it, pending_);
-          ++pending_.retrieved;
-        }
+void RtabmapFrontEnd::retrieve_around_last_best() {
+  if (last_best_ < 0) return;
+  std::map<int, std::vector<KeyframeId>> by_margin;
+  for (const auto& [id, m] : neighbours_in_memory(last_best_, filter_.max_margin(), true)) {
+    if (memory_.place(id) != rtabmap::MemoryPlace::kStm) by_margin[m].push_back(id);
+  }
+  for (auto& [m, ids] : by_margin) {
+    for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
+      immune_now_.insert(*it);
+      if (memory_.place(*it) == rtabmap::MemoryPlace::kLtm &&
+          pending_.retrieved < options_.max_retrieved) {
+        retrieve(*it, pending_);
+        ++pending_.retrieved;
       }
     }
   }
-  // Wi-Fi immunisation and cluster retrieval: the nodes of similar clusters (up to
-  // wifi_max_immune) are immune this step; those in LTM come back (up to wifi_max_retrieved).
+}
+
+void RtabmapFrontEnd::retrieve_similar_wifi_clusters() {
   wifi_immune_ = wifi_immune_nodes();
   for (KeyframeId k : wifi_immune_) {
     if (options_.wifi_max_retrieved > 0 && pending_.wifi_retrieved >= options_.wifi_max_retrieved)
@@ -151,21 +166,21 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
       ++pending_.wifi_retrieved;
     }
   }
+}
 
-  // 4. Likelihood over WM (bounded by Wi-Fi), then the Bayes filter.
-  phase_cpu_ms();  // retrieval is RTAB-Map's own timing category, in no phase here
+RtabmapFrontEnd::HypothesisScores RtabmapFrontEnd::update_hypotheses(KeyframeId t) {
   std::vector<KeyframeId> scored(memory_.wm().begin(), memory_.wm().end());
   if (wifi() != nullptr) scored = wifi()->bound(scored);
   pending_.scored = scored.size();
   rtabmap::RawLikelihood raw = rtabmap::tf_idf_likelihood(words_of_.at(t), scored, vocabulary_,
                                                           words_of_, memory_.in_memory());
   pending_.likelihood_terms = raw.terms;
-  std::pair<KeyframeId, double> best{-1, 0.0};
-  std::map<rtabmap::NodeId, double> likelihood;
+  HypothesisScores scores;
   if (!scored.empty()) {
     const rtabmap::NormalisedLikelihood l = rtabmap::normalise_likelihood(raw.score);
-    likelihood = l.node;
+    scores.likelihood = l.node;
     pending_.likelihood_cpu_ms = phase_cpu_ms();
+    // The prediction's neighbourhoods: WM nodes within the margin in the graph.
     filter_.update(l.node, l.virtual_place, [this](rtabmap::NodeId id, int max_margin) {
       std::map<rtabmap::NodeId, int> out;
       for (const auto& [k, m] : neighbours_in_memory(id, max_margin, false)) {
@@ -173,18 +188,23 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
       }
       return out;
     });
-    best = filter_.best();
+    scores.best = filter_.best();
     pending_.virtual_probability = filter_.virtual_probability();
     pending_.hypotheses = filter_.posterior().size();
     pending_.posterior_cpu_ms = phase_cpu_ms();
   } else {
     pending_.likelihood_cpu_ms = phase_cpu_ms();
   }
-  pending_.best = best.first;
-  pending_.best_probability = best.second;
-  last_best_ = best.first;
+  pending_.best = scores.best.first;
+  pending_.best_probability = scores.best.second;
+  last_best_ = scores.best.first;
+  return scores;
+}
 
-  // 5. Candidates.
+std::vector<Candidate> RtabmapFrontEnd::candidates_of(const SelectionQuery& query,
+                                                      const HypothesisScores& scores) {
+  const KeyframeId t = query.keyframe;
+  const auto& best = scores.best;
   std::vector<Candidate> out;
   const auto compared = [&](KeyframeId k) {
     return std::find(query.already_compared.begin(), query.already_compared.end(), k) !=
@@ -198,7 +218,7 @@ std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
     }
   }
   if (options_.proximity_by_space) {
-    for (KeyframeId k : proximity_candidates(t, likelihood)) {
+    for (KeyframeId k : proximity_candidates(t, scores.likelihood)) {
       const bool listed =
           std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.keyframe == k; });
       if (listed || compared(k)) continue;

@@ -65,6 +65,7 @@
 #include <deque>
 #include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include "slam/frontend/front_end.hpp"
@@ -141,6 +142,32 @@ class RtabmapFrontEnd final : public FrontEnd {
   nlohmann::json own_summary() const override;
 
  private:
+  /// What step 4 found: the normalised likelihood of each scored WM node, and the Bayes filter's
+  /// best hypothesis with its posterior probability ({-1, 0}: nothing was scored).
+  struct HypothesisScores {
+    std::pair<KeyframeId, double> best{-1, 0.0};
+    std::map<rtabmap::NodeId, double> likelihood;
+  };
+
+  /// Starts node `query.keyframe`'s record and clocks, and forgets the previous step's sets.
+  void start_node(const SelectionQuery& query);
+  /// Thread CPU time since the previous phase of select ended (or since the node started).
+  double phase_cpu_ms();
+  /// Step 1: the node's words into the vocabulary, and the node into STM.
+  void add_to_memory(const SelectionQuery& query);
+  /// Step 2: merge with the previous node when it is in STM and similar enough.
+  void rehearse(KeyframeId t);
+  /// Step 3: retrieval around the last node's best hypothesis, nearest first, newest first within
+  /// a margin (Rtabmap::process sorts each margin's ids in reverse).
+  void retrieve_around_last_best();
+  /// Step 3, Wi-Fi: the nodes of similar clusters (up to wifi_max_immune) are immune this step;
+  /// those in LTM come back (up to wifi_max_retrieved).
+  void retrieve_similar_wifi_clusters();
+  /// Step 4: likelihood of node `t` over WM (bounded by Wi-Fi), then the Bayes filter.
+  HypothesisScores update_hypotheses(KeyframeId t);
+  /// Steps 5 and 6: the predecessor, the loop hypothesis and proximity candidates, leaving out
+  /// the keyframes already compared.
+  std::vector<Candidate> candidates_of(const SelectionQuery& query, const HypothesisScores& scores);
   void retrieve(KeyframeId node, RtabmapNodeRecord& record);
   /// Graph neighbours of `node` within `max_margin` links over nodes in memory, with margins.
   std::map<rtabmap::NodeId, int> neighbours_in_memory(KeyframeId node, int max_margin,
@@ -166,6 +193,7 @@ class RtabmapFrontEnd final : public FrontEnd {
   RtabmapNodeRecord pending_;
   std::chrono::steady_clock::time_point started_;
   double started_cpu_ms_ = 0.0;
+  double phase_started_cpu_ms_ = 0.0;  // start of select's current timing phase (phase_cpu_ms)
   std::vector<RtabmapNodeRecord> records_;
   std::vector<KeyframeId> last_transferred_;
 };
