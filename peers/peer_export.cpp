@@ -120,13 +120,9 @@ nlohmann::ordered_json intrinsics_json(const CameraIntrinsics& k) {
           {"fy_px", k.fy_px},       {"cx_px", k.cx_px},         {"cy_px", k.cy_px}};
 }
 
-}  // namespace
-
-PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& output,
-                                  const PeerExportOptions& options) {
-  const fs::path dataset = resolve_path(dataset_path);
-  // As `slam` refuses it: an interrupted generate leaves this tool's marker and no manifest
-  // (written last), and its lists end early.
+/// As `slam` refuses it: an interrupted generate leaves this tool's marker and no manifest
+/// (written last), and its lists end early.
+void refuse_unfinished_dataset(const fs::path& dataset, const PeerExportOptions& options) {
   std::error_code ec;
   if (options.verify_checksums && !fs::exists(dataset / dataset::kManifest, ec) &&
       (fs::exists(dataset / kOutputMarkerFile, ec) ||
@@ -136,6 +132,142 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
                             "interrupted?); generate it again, or pass --no-verify to export what "
                             "is there");
   }
+}
+
+/// The calibration the peers will see, and which TUM camera it is (in `summary`). A plain TUM
+/// folder has no calibration.yaml (the reader then assumes TUM's default 525 px), but its name
+/// says which Kinect recorded it, as the peers read it.
+DatasetCalibration peer_calibration(const fs::path& dataset, const DatasetReader& reader,
+                                    PeerExportSummary& summary) {
+  std::error_code ec;
+  DatasetCalibration calibration = reader.calibration();
+  if (fs::exists(dataset / dataset::kCalibration, ec)) {
+    summary.tum_camera = matching_tum_camera(calibration.intrinsics);
+  } else {
+    summary.tum_camera = camera_by_folder_name(dataset);
+    if (summary.tum_camera) calibration.intrinsics = summary.tum_camera->intrinsics;
+  }
+  summary.intrinsics = calibration.intrinsics;
+  return calibration;
+}
+
+/// Every link of the export and, for ORB-SLAM2, its associations list.
+struct ExportPlan {
+  std::vector<Link> links;
+  std::map<std::string, std::size_t> by_name;  // dir/name -> index in links
+  std::string associations;
+};
+
+/// rtabmap-rgbd_dataset reads times from the file names and rejects a frame at time 0 or
+/// before, and with it the sequence.
+void require_positive_time(const FramePair& p, const std::string& at) {
+  if (p.rgb_time.ns > 0) return;
+  throw InvalidInputError(fmt::format(
+      "{}: frame time {} is not a positive time; rtabmap-rgbd_dataset reads times from the "
+      "file names and rejects such a frame and with it the sequence. This dataset starts at "
+      "0 s (generated before datasets had a time origin): generate it again (scene key "
+      "sensors.time_origin_s, by default {} s)",
+      at, p.rgb_time.to_tum_string(), dataset::kDefaultTimeOriginS));
+}
+
+/// The links (and association line) of one frame pair.
+void plan_frame(const fs::path& dataset, const FramePair& p, bool rtabmap, ExportPlan& plan) {
+  const std::string at = listed_at(dataset, p);
+  if (rtabmap) {
+    require_positive_time(p, at);
+    // Both folders under the rgb stamp: the tool pairs them by position in the sorted listing.
+    add_link(plan.links, plan.by_name,
+             {kRtabmapRgbDir, image_name(p.rgb_time), p.rgb_path, p.rgb_time, at});
+    add_link(plan.links, plan.by_name,
+             {kRtabmapDepthDir, image_name(p.rgb_time), p.depth_path, p.rgb_time, at});
+    return;
+  }
+  const Link rgb{dataset::kRgbDir, image_name(p.rgb_time), p.rgb_path, p.rgb_time, at};
+  const Link depth{dataset::kDepthDir, image_name(p.depth_time), p.depth_path, p.depth_time, at};
+  plan.associations += format_association_line(
+      {p.rgb_time, rgb.dir + "/" + rgb.name, p.depth_time, depth.dir + "/" + depth.name});
+  add_link(plan.links, plan.by_name, rgb);
+  add_link(plan.links, plan.by_name, depth);
+}
+
+/// Every link and list line, checked before anything is written.
+ExportPlan plan_export(const fs::path& dataset, const std::vector<FramePair>& pairs, bool rtabmap) {
+  ExportPlan plan;
+  for (const FramePair& p : pairs) plan_frame(dataset, p, rtabmap, plan);
+  return plan;
+}
+
+/// A symbolic link at `at` to `target`, relative to where the link will live after the rename
+/// (`at_final`); the staging folder is the final folder's sibling, so it resolves from there too.
+void link_to(const fs::path& target, const fs::path& at_final, const fs::path& at) {
+  std::error_code link_error;
+  fs::create_symlink(resolve_path(target).lexically_relative(at_final.parent_path()), at,
+                     link_error);
+  if (link_error) {
+    throw IoError(fmt::format(
+        "{}: cannot create a link to {} ({}; the export needs a file system with symbolic links)",
+        at.string(), target.string(), link_error.message()));
+  }
+}
+
+/// The image folders and their links in `staging`, and a link to the ground truth when the
+/// dataset has one; returns whether it has.
+bool write_links(const fs::path& dataset, const std::vector<Link>& links, bool rtabmap,
+                 const fs::path& final_path, const fs::path& staging) {
+  fs::create_directory(staging / (rtabmap ? kRtabmapRgbDir : dataset::kRgbDir));
+  fs::create_directory(staging / (rtabmap ? kRtabmapDepthDir : dataset::kDepthDir));
+  for (const Link& l : links) {
+    link_to(dataset / l.source, final_path / l.dir / l.name, staging / l.dir / l.name);
+  }
+  std::error_code ec;
+  const bool has_ground_truth = fs::exists(dataset / dataset::kGroundTruth, ec);
+  if (has_ground_truth) {
+    link_to(dataset / dataset::kGroundTruth, final_path / dataset::kGroundTruth,
+            staging / dataset::kGroundTruth);
+  }
+  return has_ground_truth;
+}
+
+/// The peer's own files (ORB-SLAM2: associations and settings; RTAB-Map: warnings about what
+/// its reader will take from the folder) and the command that runs it.
+void write_peer_files(const ExportPlan& plan, const DatasetCalibration& calibration, bool rtabmap,
+                      const fs::path& staging, PeerExportSummary& summary) {
+  const std::string dir = summary.output.string();
+  if (rtabmap) {
+    rtabmap_warnings(summary, calibration);
+    summary.run_command = fmt::format("rtabmap-rgbd_dataset {}", dir);
+    return;
+  }
+  write_file_atomic(staging / dataset::kAssociations, plan.associations);
+  write_file_atomic(staging / kOrbslam2Settings, orbslam2_settings_yaml(calibration));
+  summary.run_command = fmt::format("Examples/RGB-D/rgbd_tum Vocabulary/ORBvoc.txt {}/{} {} {}/{}",
+                                    dir, kOrbslam2Settings, dir, dir, dataset::kAssociations);
+}
+
+nlohmann::ordered_json export_json(const PeerExportSummary& summary) {
+  nlohmann::ordered_json j;
+  j["format"] = kExportFormatName;
+  j["format_version"] = kExportFormatVersion;
+  j["peer"] = to_string(summary.peer);
+  j["dataset"] = summary.dataset.string();
+  j["links"] = "relative symbolic links to the dataset's files";
+  j["frames"] = summary.frames;
+  j["first_time"] = summary.first_time.to_tum_string();
+  j["last_time"] = summary.last_time.to_tum_string();
+  j["intrinsics"] = intrinsics_json(summary.intrinsics);
+  j["tum_camera"] = summary.tum_camera ? nlohmann::ordered_json(summary.tum_camera->name)
+                                       : nlohmann::ordered_json(nullptr);
+  j["warnings"] = summary.warnings;
+  j["run"] = summary.run_command;
+  return j;
+}
+
+}  // namespace
+
+PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& output,
+                                  const PeerExportOptions& options) {
+  const fs::path dataset = resolve_path(dataset_path);
+  refuse_unfinished_dataset(dataset, options);
   DatasetReaderOptions read;
   read.verify_checksums = options.verify_checksums;
   read.load_images = false;
@@ -154,107 +286,20 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
   summary.frames = static_cast<std::int64_t>(pairs.size());
   summary.first_time = pairs.front().rgb_time;
   summary.last_time = pairs.back().rgb_time;
-  // A plain TUM folder has no calibration.yaml (the reader then assumes TUM's default 525 px),
-  // but its name says which Kinect recorded it, as the peers read it.
-  DatasetCalibration calibration = reader.calibration();
-  if (fs::exists(dataset / dataset::kCalibration, ec)) {
-    summary.tum_camera = matching_tum_camera(calibration.intrinsics);
-  } else {
-    summary.tum_camera = camera_by_folder_name(dataset);
-    if (summary.tum_camera) calibration.intrinsics = summary.tum_camera->intrinsics;
-  }
-  summary.intrinsics = calibration.intrinsics;
-
-  // Every link and list line, checked before anything is written.
+  const DatasetCalibration calibration = peer_calibration(dataset, reader, summary);
   const bool rtabmap = options.peer == Peer::kRtabmap;
-  std::vector<Link> links;
-  std::map<std::string, std::size_t> by_name;
-  std::string associations;
-  for (const FramePair& p : pairs) {
-    const std::string at = listed_at(dataset, p);
-    if (rtabmap && p.rgb_time.ns <= 0) {
-      throw InvalidInputError(fmt::format(
-          "{}: frame time {} is not a positive time; rtabmap-rgbd_dataset reads times from the "
-          "file names and rejects such a frame and with it the sequence. This dataset starts at "
-          "0 s (generated before datasets had a time origin): generate it again (scene key "
-          "sensors.time_origin_s, by default {} s)",
-          at, p.rgb_time.to_tum_string(), dataset::kDefaultTimeOriginS));
-    }
-    if (rtabmap) {
-      // Both folders under the rgb stamp: the tool pairs them by position in the sorted listing.
-      add_link(links, by_name,
-               {kRtabmapRgbDir, image_name(p.rgb_time), p.rgb_path, p.rgb_time, at});
-      add_link(links, by_name,
-               {kRtabmapDepthDir, image_name(p.rgb_time), p.depth_path, p.rgb_time, at});
-    } else {
-      const Link rgb{dataset::kRgbDir, image_name(p.rgb_time), p.rgb_path, p.rgb_time, at};
-      const Link depth{dataset::kDepthDir, image_name(p.depth_time), p.depth_path, p.depth_time,
-                       at};
-      associations += format_association_line(
-          {p.rgb_time, rgb.dir + "/" + rgb.name, p.depth_time, depth.dir + "/" + depth.name});
-      add_link(links, by_name, rgb);
-      add_link(links, by_name, depth);
-    }
-  }
+  const ExportPlan plan = plan_export(dataset, pairs, rtabmap);
 
   AtomicDirectory folder(output, options.overwrite);
   summary.output = folder.final_path();
   const fs::path staging = folder.staging_path();
-  // Targets relative to where the links will live after the rename; the staging folder is the
-  // final folder's sibling, so they resolve from there too.
-  auto link_to = [&](const fs::path& target, const fs::path& at_final, const fs::path& at) {
-    std::error_code link_error;
-    fs::create_symlink(resolve_path(target).lexically_relative(at_final.parent_path()), at,
-                       link_error);
-    if (link_error) {
-      throw IoError(
-          fmt::format("{}: cannot create a link to {} ({}; the export needs a file "
-                      "system with symbolic links)",
-                      at.string(), target.string(), link_error.message()));
-    }
-  };
-  fs::create_directory(staging / (rtabmap ? kRtabmapRgbDir : dataset::kRgbDir));
-  fs::create_directory(staging / (rtabmap ? kRtabmapDepthDir : dataset::kDepthDir));
-  for (const Link& l : links) {
-    link_to(dataset / l.source, summary.output / l.dir / l.name, staging / l.dir / l.name);
-  }
-  const bool has_ground_truth = fs::exists(dataset / dataset::kGroundTruth, ec);
-  if (has_ground_truth) {
-    link_to(dataset / dataset::kGroundTruth, summary.output / dataset::kGroundTruth,
-            staging / dataset::kGroundTruth);
-  }
-
-  const std::string dir = summary.output.string();
-  if (rtabmap) {
-    rtabmap_warnings(summary, calibration);
-    summary.run_command = fmt::format("rtabmap-rgbd_dataset {}", dir);
-  } else {
-    write_file_atomic(staging / dataset::kAssociations, associations);
-    write_file_atomic(staging / kOrbslam2Settings, orbslam2_settings_yaml(calibration));
-    summary.run_command =
-        fmt::format("Examples/RGB-D/rgbd_tum Vocabulary/ORBvoc.txt {}/{} {} {}/{}", dir,
-                    kOrbslam2Settings, dir, dir, dataset::kAssociations);
-  }
+  const bool has_ground_truth = write_links(dataset, plan.links, rtabmap, summary.output, staging);
+  write_peer_files(plan, calibration, rtabmap, staging, summary);
   if (!has_ground_truth) {
     summary.warnings.push_back(dataset.string() +
                                " has no groundtruth.txt: the peer reports no trajectory error");
   }
-
-  nlohmann::ordered_json j;
-  j["format"] = kExportFormatName;
-  j["format_version"] = kExportFormatVersion;
-  j["peer"] = to_string(options.peer);
-  j["dataset"] = dataset.string();
-  j["links"] = "relative symbolic links to the dataset's files";
-  j["frames"] = summary.frames;
-  j["first_time"] = summary.first_time.to_tum_string();
-  j["last_time"] = summary.last_time.to_tum_string();
-  j["intrinsics"] = intrinsics_json(summary.intrinsics);
-  j["tum_camera"] = summary.tum_camera ? nlohmann::ordered_json(summary.tum_camera->name)
-                                       : nlohmann::ordered_json(nullptr);
-  j["warnings"] = summary.warnings;
-  j["run"] = summary.run_command;
-  write_file_atomic(staging / kExportJson, j.dump(2) + "\n");
+  write_file_atomic(staging / kExportJson, export_json(summary).dump(2) + "\n");
   folder.commit();
   return summary;
 }
