@@ -68,23 +68,18 @@ Pose LadderRun::true_relative(int from, int to) const {
          keyframe_poses[static_cast<std::size_t>(to)];
 }
 
-LadderRun build_ladder_run(const fs::path& root, bool depth) {
-  fs::remove_all(root);
-  LadderRun run;
-  run.dataset_dir = root / "dataset";
-  run.run_dir = root / "run";
-  fs::create_directories(run.dataset_dir / "depth");
-  fs::create_directories(run.run_dir);
+namespace {
 
+/// Dense ground truth along the ladder's legs: straight legs at kStepM, turns in place at
+/// kTurnStepRad; `segment` receives each sample's leg name.
+Trajectory ladder_ground_truth(std::vector<std::string>& sample_segment) {
   const std::vector<Leg> legs = {
       {{0, 9.5}, "A"},        {{0, 12}, "transit"},    {{10, 12}, "transit"},
       {{10, 0}, "transit"},   {{20, 0}, "transit"},    {{20, 1.5}, "transit"},
       {{20, 9.5}, "aliased"}, {{20, 12}, "transit"},   {{0, 12}, "transit"},
       {{0, 0}, "transit"},    {{0.2, 1.8}, "revisit"}, {{0.2, 9.8}, "revisit"}};
 
-  // Dense ground truth: straight legs at kStepM, turns in place at kTurnStepRad.
   Trajectory ground_truth;
-  std::vector<std::string> sample_segment;
   Eigen::Vector2d p(0, 1.5);
   double yaw = std::numbers::pi / 2;
   std::int64_t tick = 0;
@@ -112,9 +107,12 @@ LadderRun build_ladder_run(const fs::path& root, bool depth) {
       emit(leg.segment);
     }
   }
-  write_tum_trajectory((run.dataset_dir / "groundtruth.txt").string(), ground_truth);
+  return ground_truth;
+}
 
-  // Keyframes every metre of travel.
+/// Keyframes every metre of travel.
+void pick_keyframes(const Trajectory& ground_truth, const std::vector<std::string>& sample_segment,
+                    LadderRun& run) {
   double since_m = 0;
   for (std::size_t i = 0; i < ground_truth.size(); ++i) {
     if (i > 0)
@@ -126,32 +124,29 @@ LadderRun build_ladder_run(const fs::path& root, bool depth) {
       run.keyframe_segment.push_back(sample_segment[i]);
     }
   }
+}
 
-  DatasetCalibration calibration;
-  calibration.intrinsics = small_intrinsics();
-  std::ofstream(run.dataset_dir / "calibration.yaml") << calibration_to_yaml(calibration);
-  fs::copy_file(fs::path(WIFISLAM_SCENES_DIR) / "aliasing_ladder.yaml",
-                run.dataset_dir / "scene.yaml");
-
-  if (depth) {
-    const sim::Scene scene = sim::load_scene_file((run.dataset_dir / "scene.yaml").string());
-    const sim::World world = sim::generate_world(scene);
-    sim::RgbdRenderer renderer(calibration.intrinsics);
-    renderer.set_world(world, scene);
-    std::ofstream list(run.dataset_dir / "depth.txt");
-    list << "# depth maps of the keyframes\n";
-    sim::RenderedView view;
-    for (std::size_t k = 0; k < run.keyframe_poses.size(); ++k) {
-      renderer.render(run.keyframe_poses[k], view);
-      cv::Mat depth_m = view.depth_m.clone();
-      depth_m.setTo(0.0f, depth_m > kSensorMaxRangeM);
-      const std::string name = "depth/" + run.keyframe_times[k].to_string(6) + ".png";
-      sim::write_depth_png(run.dataset_dir / name, depth_m);
-      list << run.keyframe_times[k].to_string(6) << " " << name << "\n";
-    }
+/// Rendered depth of every keyframe (for view overlap), as a dataset's depth list and PNGs.
+void render_keyframe_depth(const DatasetCalibration& calibration, LadderRun& run) {
+  const sim::Scene scene = sim::load_scene_file((run.dataset_dir / "scene.yaml").string());
+  const sim::World world = sim::generate_world(scene);
+  sim::RgbdRenderer renderer(calibration.intrinsics);
+  renderer.set_world(world, scene);
+  std::ofstream list(run.dataset_dir / "depth.txt");
+  list << "# depth maps of the keyframes\n";
+  sim::RenderedView view;
+  for (std::size_t k = 0; k < run.keyframe_poses.size(); ++k) {
+    renderer.render(run.keyframe_poses[k], view);
+    cv::Mat depth_m = view.depth_m.clone();
+    depth_m.setTo(0.0f, depth_m > kSensorMaxRangeM);
+    const std::string name = "depth/" + run.keyframe_times[k].to_string(6) + ".png";
+    sim::write_depth_png(run.dataset_dir / name, depth_m);
+    list << run.keyframe_times[k].to_string(6) << " " << name << "\n";
   }
+}
 
-  // The run: a perfect estimate in its own map frame.
+/// The run: a perfect estimate in its own map frame, its keyframes, a timing.json and run.json.
+void write_perfect_run(const Trajectory& ground_truth, const LadderRun& run) {
   Trajectory estimated, keyframes;
   for (const StampedPose& g : ground_truth) {
     estimated.push_back(StampedPose::from_pose(g.time, map_from_world() * g.pose()));
@@ -173,6 +168,28 @@ LadderRun build_ladder_run(const fs::path& root, bool depth) {
 })";
   std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam"})";
   write_loop_closures(run, {});
+}
+
+}  // namespace
+
+LadderRun build_ladder_run(const fs::path& root, bool depth) {
+  fs::remove_all(root);
+  LadderRun run;
+  run.dataset_dir = root / "dataset";
+  run.run_dir = root / "run";
+  fs::create_directories(run.dataset_dir / "depth");
+  fs::create_directories(run.run_dir);
+  std::vector<std::string> sample_segment;
+  const Trajectory ground_truth = ladder_ground_truth(sample_segment);
+  write_tum_trajectory((run.dataset_dir / "groundtruth.txt").string(), ground_truth);
+  pick_keyframes(ground_truth, sample_segment, run);
+  DatasetCalibration calibration;
+  calibration.intrinsics = small_intrinsics();
+  std::ofstream(run.dataset_dir / "calibration.yaml") << calibration_to_yaml(calibration);
+  fs::copy_file(fs::path(WIFISLAM_SCENES_DIR) / "aliasing_ladder.yaml",
+                run.dataset_dir / "scene.yaml");
+  if (depth) render_keyframe_depth(calibration, run);
+  write_perfect_run(ground_truth, run);
   return run;
 }
 

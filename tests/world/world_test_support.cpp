@@ -63,14 +63,15 @@ Eigen::Vector2d left_of(const sim::WallFace2& f) {
 
 }  // namespace
 
-void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
-  const sim::FloorPlan& plan = world.plan;
-  ASSERT_EQ(plan.walkable.size(), 1u) << "walkable space must be one connected piece";
-  ASSERT_FALSE(plan.wall_faces.empty());
+namespace {
 
+/// Every free-space piece holds the robot's space or is a room behind a closed door; returns the
+/// walkable piece's index.
+void expect_free_space_reachable(const sim::World& world, int& walkable_piece) {
+  const sim::FloorPlan& plan = world.plan;
   // Every free-space piece holds the robot's space or is a room behind a closed door.
   ASSERT_FALSE(world.route.points_m.empty());
-  const int walkable_piece = sim::regions_find(plan.free_space, world.route.points_m.front());
+  walkable_piece = sim::regions_find(plan.free_space, world.route.points_m.front());
   ASSERT_GE(walkable_piece, 0);
   for (std::size_t k = 0; k < plan.free_space.size(); ++k) {
     bool closed_room = false;
@@ -85,7 +86,9 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
         << "a free-space piece near (" << plan.free_space[k].outer[0].transpose()
         << ") is unreachable";
   }
+}
 
+void expect_rooms_apart(const sim::FloorPlan& plan) {
   // Rooms: not in walkable space, not overlapping each other, each with its door.
   for (std::size_t i = 0; i < plan.rooms.size(); ++i) {
     const sim::Room& r = plan.rooms[i];
@@ -106,7 +109,9 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
     ASSERT_GE(r.door_index, 0);
     EXPECT_EQ(plan.doors[r.door_index].room_index, static_cast<int>(i));
   }
+}
 
+void expect_wall_faces(const sim::Scene& scene, const sim::FloorPlan& plan) {
   // Wall faces: free space (or the outside) on the left, wall on the right.
   for (const sim::WallFace2& f : plan.wall_faces) {
     const Eigen::Vector2d mid = 0.5 * (f.a_m + f.b_m), n = left_of(f);
@@ -122,7 +127,9 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
       EXPECT_LE((f.b_m - f.a_m).norm(), scene.appearance.segment_length_m + 1e-9);
     }
   }
+}
 
+void expect_doors(const sim::FloorPlan& plan, int walkable_piece) {
   // Doors: an open door's opening is free space joined to the corridor; a closed door's opening
   // is wall, and crossing it meets kWoodDoor faces only.
   for (const sim::Door& d : plan.doors) {
@@ -151,7 +158,10 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
       }
     }
   }
+}
 
+void expect_route(const sim::Scene& scene, const sim::World& world) {
+  const sim::FloorPlan& plan = world.plan;
   // The route: dense, inside walkable space, clear of the walls.
   const sim::RoutePath& route = world.route;
   ASSERT_GE(route.points_m.size(), 2u);
@@ -173,6 +183,24 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
   }
   EXPECT_EQ(route.points_m.front(), scene.find_node(scene.route.nodes.front())->position_m);
   EXPECT_EQ(route.points_m.back(), scene.find_node(scene.route.nodes.back())->position_m);
+}
+
+}  // namespace
+
+void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
+  const sim::FloorPlan& plan = world.plan;
+  ASSERT_EQ(plan.walkable.size(), 1u) << "walkable space must be one connected piece";
+  ASSERT_FALSE(plan.wall_faces.empty());
+  int walkable_piece = -1;
+  expect_free_space_reachable(world, walkable_piece);
+  if (::testing::Test::HasFatalFailure()) return;
+  expect_rooms_apart(plan);
+  if (::testing::Test::HasFatalFailure()) return;
+  expect_wall_faces(scene, plan);
+  if (::testing::Test::HasFatalFailure()) return;
+  expect_doors(plan, walkable_piece);
+  if (::testing::Test::HasFatalFailure()) return;
+  expect_route(scene, world);
 }
 
 void expect_mesh_invariants(const sim::World& world) {
