@@ -374,6 +374,7 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
       overrides.seed = seed;
       overrides.fps = options.fps;
       auto site = std::make_shared<const sim::Site>(sim::resolve_scene(scene, overrides));
+      result.sites.push_back(site);
       sim::GenerateOptions generate;
       generate.max_frames = options.max_frames;
       const sim::GenerateSummary g = sim::generate_dataset(site, out_dir / dataset, generate);

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -20,6 +21,7 @@
 #include "eval/eval_options.hpp"
 #include "eval/run_evaluation.hpp"
 #include "sim/scene/scene.hpp"
+#include "sim/site/site.hpp"
 #include "slam/slam_options.hpp"
 
 namespace wifislam::study {
@@ -91,6 +93,9 @@ struct ComparisonResult {
   int seeds = 1;
   std::vector<ComparisonCase> cases;
   std::vector<PairDivergence> divergences;
+  /// The site each dataset was generated from, per scene and seed in row order (scene's own seed
+  /// first): callers draw its plan or radio map without building it again.
+  std::vector<std::shared_ptr<const sim::Site>> sites;
 
   /// The paper-style tables (one per metric) in Markdown; metrics averaged over seeds, counts
   /// summed.

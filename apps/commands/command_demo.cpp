@@ -27,16 +27,16 @@ struct DemoArgs {
   bool quiet = false;
 };
 
-void draw_scene_pictures(const wifislam::sim::Scene& scene, const std::filesystem::path& dir) {
+/// The plan and radio map of the site the comparison generated its dataset from.
+void draw_scene_pictures(const wifislam::sim::Site& site, const std::filesystem::path& dir) {
   using namespace wifislam;
-  const sim::Site site(scene);
   sim::draw_site_plan(site, dir / "plan.png");
   // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
   // and with the shadowing of the dataset's scans.
   sim::radio::RadioMapOptions map_options;
   map_options.receiver_height_m = site.receiver_height_m();
   sim::draw_site_radio_map(site, map_options, dir / "radio_map.png");
-  write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(scene));
+  write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(site.scene()));
 }
 
 void run_demo(const DemoArgs& args) {
@@ -47,7 +47,6 @@ void run_demo(const DemoArgs& args) {
                                ? sim::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
                                : sim::load_scene_file(args.scene_path);
   AtomicDirectory out(args.output_dir, replace);
-  draw_scene_pictures(scene, out.staging_path());
 
   // rgbdslam, one seed, min_matches 10: the low end of the paper's sweep, where vanilla RGBD-SLAM
   // is likeliest to accept false loop closures between look-alike places (apps/demo_scene.hpp
@@ -59,6 +58,7 @@ void run_demo(const DemoArgs& args) {
   }
   const study::ComparisonResult result =
       study::run_comparison({scene}, options, out.staging_path());
+  draw_scene_pictures(*result.sites.front(), out.staging_path());
   out.commit();
 
   const std::string dir = std::filesystem::absolute(args.output_dir).lexically_normal().string();
