@@ -15,6 +15,28 @@ namespace wifislam::sim::radio {
 
 namespace {
 
+/// A ray from `origin` along `direction` (not normalised: t is in its units) over [tnear, tfar],
+/// with no hit yet.
+RTCRayHit make_ray(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction, float tnear,
+                   float tfar) {
+  RTCRayHit rayhit;
+  rayhit.ray.org_x = static_cast<float>(origin.x());
+  rayhit.ray.org_y = static_cast<float>(origin.y());
+  rayhit.ray.org_z = static_cast<float>(origin.z());
+  rayhit.ray.dir_x = static_cast<float>(direction.x());
+  rayhit.ray.dir_y = static_cast<float>(direction.y());
+  rayhit.ray.dir_z = static_cast<float>(direction.z());
+  rayhit.ray.tnear = tnear;
+  rayhit.ray.tfar = tfar;
+  rayhit.ray.time = 0.0f;
+  rayhit.ray.mask = 0xFFFFFFFFu;
+  rayhit.ray.id = 0;
+  rayhit.ray.flags = 0;
+  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+  rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  return rayhit;
+}
+
 // Fixed-capacity hit buffer living on the caller's stack; a segment through a building crosses a
 // few dozen faces at most, more than kMaxHits are ignored (never reached in our worlds: a 100 m
 // segment through 4 m rooms crosses ~50 faces).
@@ -139,24 +161,10 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   collect.hits = hits;
   collect.count = 0;
 
-  RTCRayHit rayhit;
-  rayhit.ray.org_x = static_cast<float>(from.x());
-  rayhit.ray.org_y = static_cast<float>(from.y());
-  rayhit.ray.org_z = static_cast<float>(from.z());
   // Unnormalised direction: t runs over [0, 1] along the segment. The ends are excluded by a
   // millimetre so a receiver standing exactly on a face does not count that wall.
-  rayhit.ray.dir_x = static_cast<float>(dir.x());
-  rayhit.ray.dir_y = static_cast<float>(dir.y());
-  rayhit.ray.dir_z = static_cast<float>(dir.z());
   const double eps = std::min(1e-3 / length, 1e-3);
-  rayhit.ray.tnear = static_cast<float>(eps);
-  rayhit.ray.tfar = static_cast<float>(1.0 - eps);
-  rayhit.ray.time = 0.0f;
-  rayhit.ray.mask = 0xFFFFFFFFu;
-  rayhit.ray.id = 0;
-  rayhit.ray.flags = 0;
-  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rayhit = make_ray(from, dir, static_cast<float>(eps), static_cast<float>(1.0 - eps));
   rtcIntersect1(handles_->filtered, &collect.context, &rayhit);
 
   // Faces in order along the segment: +1 where the segment enters material (runs against the
@@ -233,21 +241,7 @@ bool EmbreeWallScene::inside_material(const Eigen::Vector3d& point,
        {forward, Eigen::Vector3d(-forward), side, Eigen::Vector3d(-side)}) {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    RTCRayHit rayhit;
-    rayhit.ray.org_x = static_cast<float>(point.x());
-    rayhit.ray.org_y = static_cast<float>(point.y());
-    rayhit.ray.org_z = static_cast<float>(point.z());
-    rayhit.ray.dir_x = static_cast<float>(probe.x());
-    rayhit.ray.dir_y = static_cast<float>(probe.y());
-    rayhit.ray.dir_z = static_cast<float>(probe.z());
-    rayhit.ray.tnear = 0.0f;
-    rayhit.ray.tfar = std::numeric_limits<float>::infinity();
-    rayhit.ray.time = 0.0f;
-    rayhit.ray.mask = 0xFFFFFFFFu;
-    rayhit.ray.id = 0;
-    rayhit.ray.flags = 0;
-    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    RTCRayHit rayhit = make_ray(point, probe, 0.0f, std::numeric_limits<float>::infinity());
     rtcIntersect1(handles_->plain, &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
     inside_votes += normals_[rayhit.hit.primID].dot(probe.cast<float>()) > 0.0f;
@@ -267,21 +261,7 @@ double EmbreeWallScene::first_hit_m(const Eigen::Vector3d& origin, const Eigen::
   const Eigen::Vector3d d = direction.normalized();
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-  RTCRayHit rayhit;
-  rayhit.ray.org_x = static_cast<float>(origin.x());
-  rayhit.ray.org_y = static_cast<float>(origin.y());
-  rayhit.ray.org_z = static_cast<float>(origin.z());
-  rayhit.ray.dir_x = static_cast<float>(d.x());
-  rayhit.ray.dir_y = static_cast<float>(d.y());
-  rayhit.ray.dir_z = static_cast<float>(d.z());
-  rayhit.ray.tnear = 0.0f;
-  rayhit.ray.tfar = static_cast<float>(max_distance_m);
-  rayhit.ray.time = 0.0f;
-  rayhit.ray.mask = 0xFFFFFFFFu;
-  rayhit.ray.id = 0;
-  rayhit.ray.flags = 0;
-  rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-  rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+  RTCRayHit rayhit = make_ray(origin, d, 0.0f, static_cast<float>(max_distance_m));
   rtcIntersect1(handles_->plain, &context, &rayhit);
   if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return -1.0;
   return rayhit.ray.tfar;
