@@ -1,5 +1,6 @@
 #include "core/yaml_document.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/depthguard.h>
 
+#include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 
 namespace wifislam {
@@ -105,6 +107,30 @@ YAML::Node load_yaml_file(const std::string& path) {
                     kMaxYamlDocumentBytes >> 20));
   }
   return parse_yaml_document(text, path);
+}
+
+std::string YamlReader::where(const YAML::Node& n) const {
+  return wifislam::where(file_, n.Mark());
+}
+
+void YamlReader::fail(const YAML::Node& n, const std::string& key,
+                      const std::string& message) const {
+  throw ParseError(where(n), key, message);
+}
+
+void YamlReader::only_keys(const YAML::Node& map, const std::vector<std::string>& known,
+                           const std::string& prefix) const {
+  for (const auto& kv : map) {
+    const std::string key = kv.first.Scalar();
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      fail(kv.first, prefix + key, "unknown key" + did_you_mean(key, known));
+    }
+  }
+}
+
+std::string YamlReader::scalar(const YAML::Node& n, const std::string& key) const {
+  if (!n.IsScalar()) fail(n, key, "expected a single value");
+  return n.Scalar();
 }
 
 }  // namespace wifislam

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include <yaml-cpp/yaml.h>
 
@@ -23,5 +24,26 @@ YAML::Node parse_yaml_document(const std::string& text, const std::string& sourc
 /// Reads and parses a YAML file. Throws IoError when it cannot be read, ParseError (exit 2 on the
 /// command line) when `path` is a folder or the text is not a valid document.
 YAML::Node load_yaml_file(const std::string& path);
+
+/// Reading a parsed document's fields with located errors: each names "file:line:column" and the
+/// key path (study files, system files).
+class YamlReader {
+ public:
+  explicit YamlReader(std::string file) : file_(std::move(file)) {}
+
+  /// "file:line:column" of a node (just "file" when the node has no position).
+  std::string where(const YAML::Node& n) const;
+  /// Throws ParseError(where(n), key, message).
+  [[noreturn]] void fail(const YAML::Node& n, const std::string& key,
+                         const std::string& message) const;
+  /// Fails on the first key of `map` not in `known`, naming the closest known one.
+  void only_keys(const YAML::Node& map, const std::vector<std::string>& known,
+                 const std::string& prefix) const;
+  /// The node's text; fails when it is not a single value.
+  std::string scalar(const YAML::Node& n, const std::string& key) const;
+
+ private:
+  std::string file_;
+};
 
 }  // namespace wifislam

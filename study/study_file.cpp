@@ -17,6 +17,7 @@
 #include "sim/scene/scene_keys.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/slam_options.hpp"
+#include "study/front_end_choice.hpp"
 
 namespace wifislam::study {
 
@@ -32,40 +33,7 @@ const std::vector<std::string> kSlamKeys = {"frontend", "fps", "max_frames", "se
 // product is held in memory, which a few dozen two-valued axes (2^40 cases) would exhaust.
 constexpr std::size_t kMaxStudyCases = 100000;
 
-class Reader {
- public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  std::string where(const YAML::Node& n) const {
-    const YAML::Mark m = n.Mark();
-    return m.line < 0 ? file_ : fmt::format("{}:{}:{}", file_, m.line + 1, m.column + 1);
-  }
-  [[noreturn]] void fail(const YAML::Node& n, const std::string& key,
-                         const std::string& message) const {
-    throw ParseError(where(n), key, message);
-  }
-  void only_keys(const YAML::Node& map, const std::vector<std::string>& known,
-                 const std::string& prefix) const {
-    for (const auto& kv : map) {
-      const std::string key = kv.first.Scalar();
-      if (std::find(known.begin(), known.end(), key) == known.end()) {
-        fail(kv.first, prefix + key, "unknown key" + did_you_mean(key, known));
-      }
-    }
-  }
-  std::string scalar(const YAML::Node& n, const std::string& key) const {
-    if (!n.IsScalar()) fail(n, key, "expected a single value");
-    return n.Scalar();
-  }
-
- private:
-  std::string file_;
-};
-
-bool is_front_end(const std::string& name) {
-  const std::vector<std::string> names = slam::front_end_names();
-  return std::find(names.begin(), names.end(), name) != names.end();
-}
+using Reader = YamlReader;
 
 std::vector<std::string> slam_option_keys() {
   std::vector<std::string> keys;
@@ -76,6 +44,7 @@ std::vector<std::string> slam_option_keys() {
 
 AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::string& key) {
   if (key == "frontend") return AxisKind::kFrontend;
+  if (key == "system") return AxisKind::kSystem;
   if (key.rfind("slam.", 0) == 0) {
     const auto keys = slam_option_keys();
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
@@ -87,8 +56,9 @@ AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::strin
     std::vector<std::string> known = sim::scene_key_paths();
     for (const std::string& k : slam_option_keys()) known.push_back(k);
     known.push_back("frontend");
+    known.push_back("system");
     r.fail(key_node, "axes." + key,
-           "not a scene key, a SLAM option (slam.<option>) or 'frontend'" +
+           "not a scene key, a SLAM option (slam.<option>), 'frontend' or 'system'" +
                did_you_mean(sim::generic_key_path(key), known));
   }
   return AxisKind::kSceneKey;
@@ -196,11 +166,11 @@ StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Nod
   for (const std::string& v : axis.values) {
     if (!seen.insert(v).second) r.fail(values, key_path, "value '" + v + "' is listed twice");
   }
-  if (axis.kind == AxisKind::kFrontend) {
+  if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
     for (const std::string& v : axis.values) {
-      if (!is_front_end(v)) {
-        r.fail(values, key_path,
-               fmt::format("unknown front end '{}' (known: {})", v, slam::front_end_name_list()));
+      const std::string frontend = axis.kind == AxisKind::kSystem ? system_front_end(v) : v;
+      if (const std::optional<std::string> problem = front_end_problem(frontend)) {
+        r.fail(values, key_path, *problem);
       }
     }
   }
@@ -301,9 +271,8 @@ void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
   r.only_keys(s, kSlamKeys, "slam.");
   if (s["frontend"]) {
     study.slam.frontend = r.scalar(s["frontend"], "slam.frontend");
-    if (!is_front_end(study.slam.frontend)) {
-      r.fail(s["frontend"], "slam.frontend",
-             fmt::format("unknown front end (known: {})", slam::front_end_name_list()));
+    if (const std::optional<std::string> problem = front_end_problem(study.slam.frontend)) {
+      r.fail(s["frontend"], "slam.frontend", *problem);
     }
   }
   if (s["fps"]) {
