@@ -46,6 +46,10 @@ inline constexpr const char* kOrbslamQueries = "orbslam_queries.csv";
 inline constexpr const char* kTiming = "timing.json";
 inline constexpr const char* kRun = "run.json";
 
+/// run.json's "frontend" of a run made by an external program (peers/external_system.hpp):
+/// "external:<system name>". Such a run writes only the files its system declares.
+inline constexpr const char* kExternalFrontendPrefix = "external:";
+
 /// Keys of run.json that readers rely on.
 namespace run_key {
 inline constexpr const char* kFormat = "format";
@@ -160,6 +164,17 @@ std::string csv_header(const std::array<const char*, N>& columns) {
   }
   return line + '\n';
 }
+
+/// Columns of loop_closures.csv, in order: the keyframes (ids, frame indices, stamps), the
+/// candidate role that found the closure, its inliers and reprojection error, and the estimated
+/// pose of `to` in the camera frame of `from` (t, q).
+namespace loop_closures_column {
+// clang-format off
+inline constexpr std::array<const char*, 16> kAll = {
+    "from_keyframe", "to_keyframe", "from_frame", "to_frame", "from_time", "to_time", "role",
+    "inliers", "rms_reprojection_px", "tx", "ty", "tz", "qx", "qy", "qz", "qw"};
+// clang-format on
+}  // namespace loop_closures_column
 
 /// Columns of orbslam_queries.csv, in order (slam/frontend/orbslam/orbslam_front_end.hpp,
 /// OrbslamQueryRecord); query_ms is wall-clock, the rest is exact.

@@ -4,27 +4,13 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "core/run_format.hpp"
 #include "core/text_lines.hpp"
 
 namespace wifislam::eval {
 
 namespace {
-constexpr std::array<const char*, 16> kColumns = {"from_keyframe",
-                                                  "to_keyframe",
-                                                  "from_frame",
-                                                  "to_frame",
-                                                  "from_time",
-                                                  "to_time",
-                                                  "role",
-                                                  "inliers",
-                                                  "rms_reprojection_px",
-                                                  "tx",
-                                                  "ty",
-                                                  "tz",
-                                                  "qx",
-                                                  "qy",
-                                                  "qz",
-                                                  "qw"};
+constexpr const auto& kColumns = run_folder::loop_closures_column::kAll;
 }
 
 std::vector<DetectedLoopClosure> read_loop_closures_csv(const std::filesystem::path& path) {

@@ -46,9 +46,7 @@ nlohmann::json graph_to_json(const PoseGraph& graph) {
 }
 
 std::string loop_closures_csv(const SlamSystem& system) {
-  std::string out =
-      "from_keyframe,to_keyframe,from_frame,to_frame,from_time,to_time,role,inliers,"
-      "rms_reprojection_px,tx,ty,tz,qx,qy,qz,qw\n";
+  std::string out = run_folder::csv_header(run_folder::loop_closures_column::kAll);
   const PoseGraph& graph = system.graph();
   for (const LoopClosureRecord& l : system.loop_closures()) {
     const GraphNode& a = graph.node(l.from);
