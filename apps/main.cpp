@@ -39,6 +39,9 @@ int main(int argc, char** argv) {
   } catch (const wifislam::EnvironmentError& e) {
     fmt::print(stderr, "wifislam: error: {}\n", e.what());
     return wifislam::cli::kExitEnvironment;
+  } catch (const wifislam::ExternalSystemError& e) {
+    fmt::print(stderr, "wifislam: error: {}\n", e.what());
+    return wifislam::cli::kExitExternal;
   } catch (const std::exception& e) {
     fmt::print(stderr, "wifislam: internal error: {}\n", e.what());
     return wifislam::cli::kExitInternal;

@@ -47,4 +47,11 @@ class EnvironmentError : public Error {
   using Error::Error;
 };
 
+/// An external program the harness ran for the user (a SLAM system of a system file) failed: it
+/// did not start, exited non-zero, was killed, timed out, or wrote nothing usable.
+class ExternalSystemError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace wifislam

@@ -240,7 +240,9 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   }
   ev.intrinsics = in.calibration.intrinsics;
   in.clusters_file = in.run_dir / run_folder::kWifiClusters;
-  if (ev.wifi_run) {
+  // Our Wi-Fi runs always write their clusters; an external system's Wi-Fi variant may not.
+  const bool external = identity.frontend.rfind(run_folder::kExternalFrontendPrefix, 0) == 0;
+  if (ev.wifi_run && (!external || fs::exists(in.clusters_file))) {
     required_file(in.run_dir, run_folder::kWifiClusters, "the Wi-Fi clusters run.json announces");
     ev.wifi_cluster_list = read_wifi_clusters_csv(in.clusters_file);
     ev.wifi_clusters = static_cast<std::int64_t>(ev.wifi_cluster_list.size());

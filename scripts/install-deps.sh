@@ -20,6 +20,7 @@ packages=(
   libssl-dev                             # SHA-256 for dataset manifests
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy                          # reference port of TUM evaluate_ate.py (eval tests)
+  python3-opencv                         # systems/opencv_rgbd_odometry (cv2.rgbd), an external system
 )
 # --fuzz: also clang, whose compiler-rt has libFuzzer and the sanitizers (scripts/fuzz.sh).
 if [ "${1:-}" = "--fuzz" ]; then packages+=(clang); fi

@@ -8,10 +8,12 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
 #include "core/output_folder.hpp"
+#include "peers/external_run.hpp"
 #include "sim/generate/sensor_input.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/io/run_folder_writer.hpp"
@@ -34,6 +36,36 @@ struct SlamArgs {
   std::optional<std::uint64_t> scene_seed;
 };
 
+/// An external system (--frontend external:X) on a dataset folder, through its system file.
+void run_external(const SlamArgs& args, const wifislam::slam::SlamOptions& options, bool replace) {
+  using namespace wifislam;
+  if (!std::filesystem::is_directory(args.input)) {
+    throw InvalidInputError(args.input +
+                            ": an external system reads a dataset folder; generate "
+                            "one from the scene first (wifislam generate)");
+  }
+  if (args.max_frames >= 0 || args.fps > 0 || args.scene_seed) {
+    throw ParseError("--frontend", options.frontend,
+                     "--max-frames, --fps and --seed apply to our front ends; an external system "
+                     "reads the whole dataset (its seed is --set seed=N)");
+  }
+  peers::ExternalRunRequest request =
+      peers::external_run_request(options.frontend, options.wifi.enabled, args.input, args.output);
+  request.overwrite = replace;
+  request.seed = options.seed;
+  request.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", args.input}}}};
+  const peers::ExternalRunResult result = peers::run_external_system(request);
+  const std::string dir = std::filesystem::absolute(args.output).lexically_normal().string();
+  if (!result.ok) {
+    throw ExternalSystemError(
+        fmt::format("{} ({}): {}; its run folder {} has run.json, stdout.log "
+                    "and stderr.log",
+                    options.frontend, request.system.file.string(), result.status, dir));
+  }
+  fmt::print("{}: {}, {:.1f} s wall-clock, {:.1f} s CPU\nwrote {}\n", options.frontend,
+             result.status, result.process.wall_s, result.process.cpu_s, dir);
+}
+
 void run(const SlamArgs& args) {
   using namespace wifislam;
   slam::SlamOptions options;
@@ -42,6 +74,10 @@ void run(const SlamArgs& args) {
   for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
   slam::validate(options);
   const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
+  if (peers::is_external_frontend(options.frontend)) {
+    run_external(args, options, replace);
+    return;
+  }
   sim::SensorInputOptions input_options;
   input_options.verify_checksums = !args.no_verify;
   input_options.max_frames = args.max_frames;
@@ -75,7 +111,11 @@ WIFISLAM_COMMAND(slam, 60) {
   app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
   app->add_option("--frontend", args->frontend,
                   "SLAM front end: memory, loop-closure candidates and acceptance (" +
-                      wifislam::slam::front_end_name_list() + ")")
+                      wifislam::slam::front_end_name_list() +
+                      "), or external:NAME|FILE, another program run from its system file\n"
+                      "on a dataset folder (shipped: " +
+                      fmt::format("{}", fmt::join(wifislam::peers::shipped_system_names(), ", ")) +
+                      "; docs/external_systems.md)")
       ->capture_default_str();
   app->add_flag(
       "--wifi", args->wifi,
