@@ -14,11 +14,13 @@
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
 #include "eval/run_divergence.hpp"
+#include "peers/external_run.hpp"
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/sensor_input.hpp"
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
+#include "study/front_end_choice.hpp"
 
 namespace wifislam::study {
 
@@ -34,10 +36,11 @@ std::string label_of(const std::vector<std::string>& base, const Setting& settin
   return out.empty() ? "defaults" : out;
 }
 
-/// Folder-name form of a label ("min_matches=10 inlier_distance=3" -> "min_matches-10_...").
+/// Folder-name form of a label ("min_matches=10 inlier_distance=3" -> "min_matches-10_...";
+/// "frontend=external:sys/a.yaml" -> "frontend-external-sys-a.yaml": one folder, no separator).
 std::string folder_of(const std::string& label) {
   std::string out;
-  for (char c : label) out += c == '=' ? '-' : c == ' ' ? '_' : c;
+  for (char c : label) out += c == '=' || c == ':' || c == '/' ? '-' : c == ' ' ? '_' : c;
   return out;
 }
 
@@ -238,6 +241,8 @@ std::vector<Metric> comparison_metrics(const std::vector<ComparisonCase>& cases)
   return metrics;
 }
 
+/// A cell with no run (an external system's Wi-Fi variant when it reads no Wi-Fi, or runs that
+/// all failed) shows "-".
 void metric_table(std::string& out, const Metric& metric, const std::vector<std::string>& scenes,
                   const std::vector<std::string>& settings, Cells& cells) {
   out += "### " + metric.title + "\n\n| scene |";
@@ -250,8 +255,10 @@ void metric_table(std::string& out, const Metric& metric, const std::vector<std:
   for (const std::string& scene : scenes) {
     out += "| " + scene + " |";
     for (const std::string& setting : settings) {
-      for (bool wifi : {false, true})
-        out += " " + metric.cell(cells[scene][setting][wifi], wifi) + " |";
+      for (bool wifi : {false, true}) {
+        const Cell& cell = cells[scene][setting][wifi];
+        out += " " + (cell.runs > 0 ? metric.cell(cell, wifi) : std::string("-")) + " |";
+      }
     }
     out += "\n";
   }
@@ -274,11 +281,28 @@ void ratio_table(std::string& out, const std::string& title, double Cell::*secon
     for (const std::string& setting : settings) {
       const Cell& v = cells[scene][setting][false];
       const Cell& w = cells[scene][setting][true];
-      out +=
-          v.*seconds > 0 ? fmt::format(" {:.2f} |", w.*seconds / v.*seconds) : std::string(" - |");
+      out += v.*seconds > 0 && w.runs > 0 ? fmt::format(" {:.2f} |", w.*seconds / v.*seconds)
+                                          : std::string(" - |");
     }
     out += "\n";
   }
+}
+
+/// The runs that gave no evaluation (external systems that failed, timed out or wrote nothing
+/// usable), with why: they count in no table.
+void failed_runs_table(std::string& out, const std::vector<ComparisonCase>& cases) {
+  std::string rows;
+  for (const ComparisonCase& c : cases) {
+    if (c.status == "ok") continue;
+    rows += fmt::format("| {} | {} | {} | {} | {} | {} |\n", c.scene, c.seed, c.setting,
+                        c.wifi ? "wifi" : "vanilla", c.status, c.run_dir.string());
+  }
+  if (rows.empty()) return;
+  out +=
+      "\n### Runs that failed (in no table above; each run folder holds run.json, stdout.log and "
+      "stderr.log)\n\n| scene | seed | setting | variant | status | run folder |\n| --- | ---: "
+      "| --- | --- | --- | --- |\n" +
+      rows;
 }
 
 void divergence_table(std::string& out, const std::vector<PairDivergence>& divergences) {
@@ -342,6 +366,16 @@ struct RunJob {
   std::size_t case_index = 0;
 };
 
+/// The variants a setting runs: vanilla, and Wi-Fi unless the front end is an external system
+/// that reads no Wi-Fi (its system file says so; resolving it here also refuses a missing or
+/// malformed system file before any dataset is generated).
+std::vector<bool> variants_of(const slam::SlamOptions& o) {
+  if (peers::is_external_frontend(o.frontend) && !peers::resolve_external_system(o.frontend).wifi) {
+    return {false};
+  }
+  return {false, true};
+}
+
 void check_comparison_input(const std::vector<sim::Scene>& scenes,
                             const ComparisonOptions& options) {
   if (scenes.empty()) throw InvalidInputError("compare: no scene given");
@@ -381,7 +415,7 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
       progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s)", dataset.string(),
                            g.frames, g.wifi_scans, g.total_s));
       for (std::size_t s = 0; s < settings.size(); ++s) {
-        for (bool wifi : {false, true}) {
+        for (bool wifi : variants_of(options_for(options, settings[s], false, seed))) {
           ComparisonCase c;
           c.scene = scene.name;
           c.seed = seed;
@@ -399,10 +433,53 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
   return jobs;
 }
 
+/// Evaluates a finished run folder and writes its eval/.
+void evaluate_job(const RunJob& job, const ComparisonOptions& options,
+                  const std::filesystem::path& out_dir, ComparisonCase& c) {
+  const std::filesystem::path run_dir = out_dir / c.run_dir;
+  c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
+  eval::write_evaluation(run_dir / "eval", c.evaluation, options.plots,
+                         {&job.site->world().plan, ""});
+}
+
+/// An external system's run: its failures (exit status, timeout, outputs eval cannot score)
+/// become the case's status, never an exception that would end the comparison.
+void run_external_job(const RunJob& job, const ComparisonOptions& options,
+                      const std::filesystem::path& out_dir, ComparisonCase& c,
+                      const std::function<void(const std::string&)>& progress) {
+  peers::ExternalRunRequest request = peers::external_run_request(
+      job.slam.frontend, c.wifi, out_dir / job.dataset, out_dir / c.run_dir);
+  request.seed = job.slam.seed;
+  request.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}};
+  const peers::ExternalRunResult result = peers::run_external_system(request);
+  c.status = result.status;
+  if (result.ok) {
+    try {
+      evaluate_job(job, options, out_dir, c);
+    } catch (const ParseError& e) {  // what the system wrote cannot be scored
+      c.status = std::string("not scorable: ") + e.what();
+      c.evaluation = {};
+    } catch (const InvalidInputError& e) {
+      c.status = std::string("not scorable: ") + e.what();
+      c.evaluation = {};
+    }
+  }
+  const std::string what = c.run_dir.parent_path().string() + (c.wifi ? " wifi" : " vanilla");
+  progress(c.status == "ok"
+               ? fmt::format("{}: ATE {:.3f} m, loop closures {}, {:.1f} s", what,
+                             c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
+                             result.process.wall_s)
+               : fmt::format("{}: failed: {}", what, c.status));
+}
+
 /// Runs SLAM on the job's dataset, writes the run folder, evaluates it and writes its eval/.
 void run_job(const RunJob& job, const ComparisonOptions& options,
              const std::filesystem::path& out_dir, ComparisonCase& c,
              const std::function<void(const std::string&)>& progress) {
+  if (peers::is_external_frontend(job.slam.frontend)) {
+    run_external_job(job, options, out_dir, c, progress);
+    return;
+  }
   const std::filesystem::path run_dir = out_dir / c.run_dir;
   sim::SensorInputOptions input;
   input.verify_checksums = false;  // written moments ago by this process
@@ -411,21 +488,20 @@ void run_job(const RunJob& job, const ComparisonOptions& options,
   const auto system = slam::run_slam(*dataset.stream, job.slam, summary);
   slam::write_run_folder(run_dir, *system, summary, /*overwrite=*/false,
                          {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}});
-  c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
-  eval::write_evaluation(run_dir / "eval", c.evaluation, options.plots,
-                         {&job.site->world().plan, ""});
+  evaluate_job(job, options, out_dir, c);
   progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
                        c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
                        c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
                        c.evaluation.false_positives, summary.wall_s));
 }
 
-/// Where each Wi-Fi run first departs from its vanilla twin.
+/// Where each Wi-Fi run first departs from its vanilla twin (our front ends: an external run has
+/// no keyframe graph to compare).
 std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& cases,
                                              const std::filesystem::path& out_dir) {
   std::vector<PairDivergence> out;
   for (const ComparisonCase& w : cases) {
-    if (!w.wifi) continue;
+    if (!w.wifi || peers::is_external_frontend(w.evaluation.frontend) || w.status != "ok") continue;
     for (const ComparisonCase& v : cases) {
       if (v.wifi || v.scene != w.scene || v.seed != w.seed || v.setting != w.setting) continue;
       const std::optional<eval::RunDivergence> d =
@@ -446,8 +522,13 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
   result.seeds = options.seeds;
   const std::vector<Setting> settings = expand(options.sweeps);
   for (const Setting& s : settings) result.settings.push_back(label_of(options.settings, s));
-  // Every option combination is checked before any dataset is generated.
-  for (const Setting& s : settings) options_for(options, s, true, 1);
+  // Every option combination, front end included, is checked before any dataset is generated.
+  for (const Setting& s : settings) {
+    const slam::SlamOptions o = options_for(options, s, true, 1);
+    if (const std::optional<std::string> problem = front_end_problem(o.frontend)) {
+      throw InvalidInputError("compare: " + *problem);
+    }
+  }
 
   std::mutex progress_mutex;
   const std::function<void(const std::string&)> progress = [&](const std::string& line) {
@@ -471,7 +552,9 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
 
 std::string ComparisonResult::markdown() const {
   Cells cells;
-  for (const ComparisonCase& c : cases) cells[c.scene][c.setting][c.wifi].add(c.evaluation);
+  for (const ComparisonCase& c : cases) {
+    if (c.status == "ok") cells[c.scene][c.setting][c.wifi].add(c.evaluation);
+  }
   bool any_cost_model = false, any_rtabmap_loop_closure = false;
   for (const ComparisonCase& c : cases) {
     any_cost_model |= c.evaluation.cost_model_s.has_value();
@@ -503,23 +586,28 @@ std::string ComparisonResult::markdown() const {
     ratio_table(out, "RTAB-Map loop-closure time (cost model)", &Cell::rtabmap_loop_closure_cost_s,
                 scenes, settings, cells);
   }
+  failed_runs_table(out, cases);
   if (!divergences.empty()) divergence_table(out, divergences);
   return out;
 }
 
 std::string ComparisonResult::csv() const {
-  if (cases.empty()) return "scene,seed,setting,variant,run_dir\n";
+  if (cases.empty()) return "scene,seed,setting,variant,run_dir,status\n";
   std::vector<std::string> keys;
   const nlohmann::ordered_json first = cases.front().evaluation.flat_metrics();
   for (const auto& item : first.items()) keys.push_back(item.key());
-  std::string out = "scene,seed,setting,variant,run_dir";
+  std::string out = "scene,seed,setting,variant,run_dir,status";
   for (const std::string& k : keys) out += "," + k;
   out += "\n";
   for (const ComparisonCase& c : cases) {
     const nlohmann::ordered_json flat = c.evaluation.flat_metrics();
-    out += fmt::format("{},{},{},{},{}", csv_field(c.scene), c.seed, csv_field(c.setting),
-                       c.wifi ? "wifi" : "vanilla", csv_field(c.run_dir.string()));
-    for (const std::string& k : keys) out += "," + (flat.contains(k) ? csv_field(flat[k]) : "");
+    out += fmt::format("{},{},{},{},{},{}", csv_field(c.scene), c.seed, csv_field(c.setting),
+                       c.wifi ? "wifi" : "vanilla", csv_field(c.run_dir.string()),
+                       csv_field(c.status));
+    // A failed run's metrics are empty fields, not zeros that would read as a perfect score.
+    for (const std::string& k : keys) {
+      out += "," + (c.status == "ok" && flat.contains(k) ? csv_field(flat[k]) : "");
+    }
     out += "\n";
   }
   return out;
@@ -533,7 +621,9 @@ nlohmann::json ComparisonResult::to_json() const {
                     {"setting", c.setting},
                     {"variant", c.wifi ? "wifi" : "vanilla"},
                     {"run_dir", c.run_dir.string()},
-                    {"metrics", c.evaluation.flat_metrics()}});
+                    {"status", c.status},
+                    {"metrics", c.status == "ok" ? nlohmann::json(c.evaluation.flat_metrics())
+                                                 : nlohmann::json(nullptr)}});
   }
   nlohmann::json divergence = nlohmann::json::array();
   for (const PairDivergence& d : divergences) {

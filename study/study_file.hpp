@@ -36,7 +36,9 @@ namespace wifislam::study {
 enum class StudyLevel { kRadio, kSlam };
 const char* to_string(StudyLevel level);
 
-enum class AxisKind { kSceneKey, kSlamOption, kFrontend };
+/// kFrontend: `frontend`, our front ends or "external:X"; kSystem: `system`, the same with the
+/// "external:" optional (study/front_end_choice.hpp).
+enum class AxisKind { kSceneKey, kSlamOption, kFrontend, kSystem };
 
 struct StudyAxis {
   std::string key;  // as written in the file

@@ -12,9 +12,11 @@
 #include "core/output_folder.hpp"
 #include "core/worker_pool.hpp"
 #include "core/yaml_document.hpp"
+#include "peers/external_system.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
+#include "study/front_end_choice.hpp"
 #include "study/radio_resolution.hpp"
 #include "study/result_columns.hpp"
 
@@ -82,6 +84,7 @@ slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c) 
       const StudyAxis& axis = study.axes[a];
       if (axis.kind == AxisKind::kSlamOption) slam::set_option(o, axis.key.substr(5), c.values[a]);
       if (axis.kind == AxisKind::kFrontend) o.frontend = c.values[a];
+      if (axis.kind == AxisKind::kSystem) o.frontend = system_front_end(c.values[a]);
     }
     slam::validate(o);
   } catch (const Error& e) {
@@ -98,9 +101,26 @@ void check_cases(const StudyFile& study) {
   }
 }
 
-std::vector<std::string> metric_columns(StudyLevel level) {
-  return level == StudyLevel::kRadio ? column_names(radio_metric_columns())
-                                     : column_names(slam_metric_columns());
+bool runs_external_system(const StudyFile& study) {
+  if (peers::is_external_frontend(study.slam.frontend)) return true;
+  for (const StudyAxis& axis : study.axes) {
+    for (const std::string& v : axis.values) {
+      if ((axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) &&
+          peers::is_external_frontend(axis.kind == AxisKind::kSystem ? system_front_end(v) : v)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+std::vector<std::string> metric_columns(const StudyFile& study) {
+  if (study.level == StudyLevel::kRadio) return column_names(radio_metric_columns());
+  std::vector<std::string> columns = column_names(slam_metric_columns());
+  // A study of external systems says per row whether the run gave an evaluation; the studies of
+  // our front ends keep their schema.
+  if (runs_external_system(study)) columns.insert(columns.begin(), kStatusColumn);
+  return columns;
 }
 
 std::vector<std::string> timing_columns(StudyLevel level) {
@@ -172,12 +192,18 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   const ComparisonResult result =
       run_comparison({scene}, case_comparison(study, c, slam_options, jobs), work);
   std::vector<ResultRow> rows;
+  const bool with_status = runs_external_system(study);
   for (const ComparisonCase& run : result.cases) {
     ResultRow row;
     row.variant = run.wifi ? "wifi" : "vanilla";
     row.scene_hash = scene_hash;
     row.metrics = column_values(slam_metric_columns(), run.evaluation);
     row.timing = column_values(slam_timing_columns(), run.evaluation);
+    if (run.status != "ok") {  // a failed external run: its status, and no numbers (NULL)
+      for (auto* columns : {&row.metrics, &row.timing})
+        for (ResultColumn& column : *columns) column.value = SqlValue();
+    }
+    if (with_status) row.metrics.insert(row.metrics.begin(), {kStatusColumn, run.status});
     rows.push_back(std::move(row));
   }
   fs::remove_all(work);
@@ -201,8 +227,7 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
                                         options.shard_index, options.shard_count));
   }
   check_cases(study);  // every value, before any work
-  ResultStore store(options.database, study, metric_columns(study.level),
-                    timing_columns(study.level));
+  ResultStore store(options.database, study, metric_columns(study), timing_columns(study.level));
   const std::vector<StudyCase> cases = shard_cases(study, options.shard_index, options.shard_count);
   const std::set<std::string> finished = store.finished_cases();
   std::vector<StudyCase> todo;

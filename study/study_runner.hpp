@@ -52,7 +52,12 @@ slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c);
 void check_cases(const StudyFile& study);
 
 /// Columns of the results and timing tables for a level.
-std::vector<std::string> metric_columns(StudyLevel level);
+/// "status": in a study that runs an external system, the first metric column: "ok", or why the
+/// run gave no evaluation (its metrics are then NULL).
+inline constexpr const char* kStatusColumn = "status";
+/// Whether any case of `study` runs an external system (peers/external_system.hpp).
+bool runs_external_system(const StudyFile& study);
+std::vector<std::string> metric_columns(const StudyFile& study);
 std::vector<std::string> timing_columns(StudyLevel level);
 
 /// The rows of one case (no database involved).

@@ -1,0 +1,19 @@
+#pragma once
+// Which front ends a comparison or a study may name: ours (slam/frontend/front_end_registry.hpp)
+// and external systems ("external:NAME|FILE", peers/external_system.hpp). Checked before any
+// dataset is generated, so a typo or a broken system file costs nothing.
+
+#include <optional>
+#include <string>
+
+namespace wifislam::study {
+
+/// The front end a study's `system` axis value names: one of ours as itself, "external:X" as
+/// itself, any other value X as the external system "external:X" (a shipped name or a file).
+std::string system_front_end(const std::string& value);
+
+/// Why `frontend` cannot run (unknown name with the known ones, or the system file's own error),
+/// or nothing when it can.
+std::optional<std::string> front_end_problem(const std::string& frontend);
+
+}  // namespace wifislam::study
