@@ -105,8 +105,11 @@ WIFISLAM_COMMAND(compare, 65) {
       "--preset", args->preset,
       "paper-rgbdslam: the paper's RGBD-SLAM experiment on the built-in c_hall twin\n"
       "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 26 min on 2 cores)");
-  app->add_option("--frontend", args->frontend,
-                  "Front end (" + wifislam::slam::front_end_name_list() + ")")
+  app->add_option(
+         "--frontend", args->frontend,
+         "Front end (" + wifislam::slam::front_end_name_list() +
+             "), or external:NAME|FILE, another program (docs/external_systems.md);\n"
+             "several side by side: --sweep frontend=rgbdslam,external:opencv_rgbd_odometry")
       ->capture_default_str();
   app->add_option("--sweep", args->sweeps,
                   "Swept SLAM option key=v1,v2,... (repeatable; every combination is run), e.g.\n"
