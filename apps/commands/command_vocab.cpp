@@ -17,8 +17,10 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "sim/generate/sensor_input.hpp"
+#include "slam/bow/shipped_vocabulary.hpp"
 #include "slam/bow/vocabulary_tree.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
+#include "slam/place/fabmap_training.hpp"
 
 namespace {
 
@@ -43,14 +45,10 @@ sim::SensorInput open_input(const TrainArgs& args, const fs::path& input) {
   return sim::open_sensor_input(input, options);
 }
 
-void train(const TrainArgs& args) {
-  std::vector<fs::path> inputs(args.inputs.begin(), args.inputs.end());
-  check_output_file(args.output, inputs);
-  std::error_code ec;
-  if (fs::exists(args.output, ec) && !args.force) {
-    throw InvalidInputError(args.output + ": exists; give --force to replace it");
-  }
-  const auto start = std::chrono::steady_clock::now();
+/// ORB descriptors of every training frame of `inputs`: scenes rendered at --fps, folders read
+/// every --every-th frame (at most --max-frames frames an input).
+std::vector<cv::Mat> training_descriptors(const TrainArgs& args,
+                                          const std::vector<fs::path>& inputs) {
   slam::FeatureOptions features;
   features.max_keypoints = args.max_keypoints;
   std::vector<cv::Mat> images;
@@ -72,6 +70,23 @@ void train(const TrainArgs& args) {
       fmt::print(stderr, "vocab: {}: {} frames, {} used\n", input.string(), frames, used);
     }
   }
+  return images;
+}
+
+/// Refuses an output that is an input, or exists without --force.
+void check_output(const TrainArgs& args, const std::vector<fs::path>& inputs) {
+  check_output_file(args.output, inputs);
+  std::error_code ec;
+  if (fs::exists(args.output, ec) && !args.force) {
+    throw InvalidInputError(args.output + ": exists; give --force to replace it");
+  }
+}
+
+void train(const TrainArgs& args) {
+  std::vector<fs::path> inputs(args.inputs.begin(), args.inputs.end());
+  check_output(args, inputs);
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<cv::Mat> images = training_descriptors(args, inputs);
   std::size_t descriptors = 0;
   for (const cv::Mat& m : images) descriptors += static_cast<std::size_t>(m.rows);
   if (descriptors == 0) throw InvalidInputError("vocab train: the inputs gave no ORB features");
@@ -88,6 +103,32 @@ void train(const TrainArgs& args) {
       "{:.1f} s -> {}\nsha256 {}\n",
       images.size(), descriptors, tree.word_count(), tree.node_count(), tree.branching(),
       tree.depth(), fs::file_size(args.output), seconds, args.output, sha256_file_hex(args.output));
+}
+
+/// FAB-MAP's training: the Chow-Liu tree over the vocabulary's words, learnt from the word
+/// observations of the training frames, and those observations (slam/place/fabmap_training.hpp).
+void train_fabmap(const TrainArgs& args, const std::string& vocabulary_path) {
+  std::vector<fs::path> inputs(args.inputs.begin(), args.inputs.end());
+  check_output(args, inputs);
+  const auto start = std::chrono::steady_clock::now();
+  const auto vocabulary = slam::bow::load_vocabulary(vocabulary_path);
+  slam::place::FabMapTraining training;
+  training.vocabulary_sha256 = slam::bow::vocabulary_checksum(vocabulary_path);
+  for (const cv::Mat& descriptors : training_descriptors(args, inputs)) {
+    training.observations.push_back(slam::place::visual_words(*vocabulary, descriptors));
+  }
+  if (training.observations.empty()) throw InvalidInputError("vocab fabmap: no training frames");
+  const int words = static_cast<int>(vocabulary->word_count());
+  training.tree = slam::place::learn_chow_liu_tree(training.observations, words);
+  training.save(args.output);
+  int roots = 0;
+  for (int q = 0; q < words; ++q) roots += training.tree.parent[static_cast<std::size_t>(q)] == q;
+  fmt::print(
+      "FAB-MAP training: {} observations, {} words, {} trees (roots), {:.1f} s -> {}\n"
+      "sha256 {}\n",
+      training.observations.size(), words, roots,
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), args.output,
+      sha256_file_hex(args.output));
 }
 
 void info(const std::string& file) {
@@ -147,6 +188,34 @@ WIFISLAM_COMMAND(vocab, 75) {
     train_app->add_flag("--force", args->force, "Replace an existing file");
     train_app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
     train_app->callback([args] { train(*args); });
+  }
+  {
+    auto args = std::make_shared<TrainArgs>();
+    auto vocabulary = std::make_shared<std::string>();
+    args->fps = 2.0;
+    CLI::App* fabmap_app = app->add_subcommand(
+        "fabmap",
+        "Train FAB-MAP (wifislam localize) for a vocabulary: the Chow-Liu tree over its words "
+        "from\n"
+        "the word observations of frames of scenes you will not evaluate on, and those\n"
+        "observations for FAB-MAP's new-place term, in one text file. Deterministic");
+    fabmap_app->add_option("inputs", args->inputs, "Scene files (YAML) and dataset / TUM folders")
+        ->required();
+    fabmap_app->add_option("-o,--output", args->output, "Training file (text)")->required();
+    fabmap_app->add_option("--vocabulary", *vocabulary,
+                           "Vocabulary file (default: the shipped one)");
+    fabmap_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
+        ->capture_default_str()
+        ->check(CLI::Range(0.01, 120.0));
+    fabmap_app->add_option("--every", args->every, "Every n-th frame of a folder")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1000000));
+    fabmap_app->add_option("--max-keypoints", args->max_keypoints, "ORB features per frame")
+        ->capture_default_str()
+        ->check(CLI::Range(10, 100000));
+    fabmap_app->add_flag("--force", args->force, "Replace an existing file");
+    fabmap_app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+    fabmap_app->callback([args, vocabulary] { train_fabmap(*args, *vocabulary); });
   }
   {
     auto file = std::make_shared<std::string>();
