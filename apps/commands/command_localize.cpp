@@ -1,0 +1,157 @@
+// `wifislam localize <scene.yaml | dataset/> [--method fabmap,wifi-fabmap,wifi-clusters] -o DIR`:
+// the paper's localisation comparison ("Comparison to Wi-Fi augmented FABMAP"): visual FAB-MAP,
+// Wi-Fi FAB-MAP and our Wi-Fi clusters on the same query images, with the error CDF.
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "slam/bow/shipped_vocabulary.hpp"
+#include "study/localisation_report.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace wifislam;
+
+struct LocalizeArgs {
+  std::string input, output, methods = "fabmap,wifi-fabmap,wifi-clusters";
+  std::string vocabulary, training, wifi_words = "presence";
+  double image_interval_s = 2.0, moving_scan_interval_s = 10.0, map_share = 0.4;
+  std::optional<std::uint64_t> seed;
+  std::uint64_t fabmap_seed = 1;
+  bool naive_bayes = false, force = false, quiet = false;
+};
+
+std::vector<study::LocalisationMethod> parse_methods(const std::string& text) {
+  std::vector<study::LocalisationMethod> out;
+  std::stringstream in(text);
+  for (std::string name; std::getline(in, name, ',');) {
+    const auto m = study::parse_localisation_method(name);
+    if (!m) {
+      throw ParseError("--method", name,
+                       "unknown method; known: fabmap, wifi-fabmap, wifi-clusters");
+    }
+    if (std::find(out.begin(), out.end(), *m) == out.end()) out.push_back(*m);
+  }
+  if (out.empty()) throw ParseError("--method", text, "no method given");
+  return out;
+}
+
+study::LocalisationOptions localisation_options(const LocalizeArgs& args) {
+  study::LocalisationOptions o;
+  o.methods = parse_methods(args.methods);
+  o.map_share = args.map_share;
+  o.fabmap.naive_bayes = args.naive_bayes;
+  o.fabmap.seed = args.fabmap_seed;
+  if (args.wifi_words == "thermometer") {
+    o.wifi_words = study::WifiWordEncoding::kThermometer;
+  } else if (args.wifi_words != "presence") {
+    throw ParseError("--wifi-words", args.wifi_words, "expected presence or thermometer");
+  }
+  return o;
+}
+
+/// FAB-MAP's training for the vocabulary: the shipped pair, or the files given (which must have
+/// been made together: the training file names its vocabulary's checksum).
+slam::place::FabMapTraining load_training(const LocalizeArgs& args) {
+  if (args.vocabulary.empty() != args.training.empty()) {
+    throw ParseError("--training", args.training.empty() ? args.vocabulary : args.training,
+                     "give --vocabulary and --training together (vocab fabmap makes the latter)");
+  }
+  const fs::path file =
+      args.training.empty() ? slam::place::shipped_fabmap_training_path() : fs::path(args.training);
+  slam::place::FabMapTraining training = slam::place::FabMapTraining::load(file);
+  const std::string checksum = slam::bow::vocabulary_checksum(args.vocabulary);
+  if (training.vocabulary_sha256 != checksum) {
+    throw InvalidInputError(fmt::format("{}: made for the vocabulary with sha256 {}, not {}",
+                                        file.string(), training.vocabulary_sha256, checksum));
+  }
+  return training;
+}
+
+void run(const LocalizeArgs& args) {
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
+  const study::LocalisationOptions options = localisation_options(args);
+  const auto vocabulary = slam::bow::load_vocabulary(args.vocabulary);
+  const slam::place::FabMapTraining training = load_training(args);
+  study::LocalisationDataOptions data_options;
+  data_options.image_interval_s = args.image_interval_s;
+  data_options.moving_scan_interval_s = args.moving_scan_interval_s;
+  data_options.seed = args.seed;
+  data_options.wifi = options.wifi;
+  const auto start = std::chrono::steady_clock::now();
+  const study::LocalisationData data =
+      fs::is_directory(args.input)
+          ? study::localisation_data_from_dataset(args.input, data_options)
+          : study::localisation_data_from_scene(sim::load_scene_file(args.input), data_options);
+  if (!args.quiet) {
+    fmt::print(stderr, "localize: {}: {} images, {} pause scans, {} moving scans ({:.0f} s)\n",
+               data.description, data.images.size(), data.pause_scans.size(),
+               data.moving_scans.size(),
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  const study::LocalisationResult result =
+      study::run_localisation(data, *vocabulary, training, options);
+  AtomicDirectory out(args.output, replace);
+  study::write_localisation_report(out.staging_path(), result, data, options);
+  out.commit();
+  fmt::print("{}", study::localisation_summary(result, options).dump(1) + "\n");
+  fmt::print("wrote {}/ (summary.md, queries.csv, cdf.csv, cdf.png, pr.csv)\n",
+             fs::absolute(args.output).lexically_normal().string());
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(localize, 67) {
+  auto args = std::make_shared<LocalizeArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "localize",
+      "The paper's localisation comparison: visual FAB-MAP (as openFABMAP computes it), Wi-Fi\n"
+      "FAB-MAP (Wi-Fi words appended to the visual ones) and ours (candidates from similar Wi-Fi\n"
+      "clusters, the same FAB-MAP visual likelihood), on the same images: an image every 2 s,\n"
+      "the first 40 % of the route the map, the rest the queries. From a scene both scan\n"
+      "protocols are simulated (pauses for ours, a scan every 10 s while moving for Wi-Fi\n"
+      "FAB-MAP); a dataset's wifi.csv serves both. Writes the error CDF (cdf.png, cdf.csv), the\n"
+      "shares within 1/2/4/5 m, per-query matches and a precision-recall table");
+  app->add_option("input", args->input, "Scene file (YAML) or dataset folder")->required();
+  app->add_option("-o,--output", args->output, "Output folder")->required();
+  app->add_option("--method", args->methods, "Methods, comma-separated")->capture_default_str();
+  app->add_option("--image-interval", args->image_interval_s, "Seconds between images")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 3600.0));
+  app->add_option("--moving-scan-interval", args->moving_scan_interval_s,
+                  "Seconds between Wi-Fi FAB-MAP's scans while moving (scenes)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5, 3600.0));
+  app->add_option("--map-share", args->map_share, "Share of the route (by time) that is the map")
+      ->capture_default_str()
+      ->check(CLI::Range(0.01, 0.99));
+  app->add_option(
+         "--wifi-words", args->wifi_words,
+         "Wi-Fi FAB-MAP's words: presence (one per AP heard) or thermometer (RSSI + 110 in "
+         "5 dB bins)")
+      ->capture_default_str();
+  app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
+  app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)");
+  app->add_option("--training", args->training,
+                  "FAB-MAP training file for --vocabulary (wifislam vocab fabmap)");
+  app->add_option("--seed", args->seed, "Scenes: replaces the scene's seed")
+      ->check(cli::kSeedValidator);
+  app->add_option("--fabmap-seed", args->fabmap_seed, "Seed of FAB-MAP's new-place sample")
+      ->capture_default_str()
+      ->check(cli::kSeedValidator);
+  app->add_flag("--force", args->force, "Replace an existing output folder");
+  app->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
+  app->callback([args] { run(*args); });
+}

@@ -1,0 +1,155 @@
+#include "study/localisation_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <variant>
+
+#include <fmt/format.h>
+
+#include "core/dataset_format.hpp"
+#include "core/error.hpp"
+#include "core/tum_trajectory.hpp"
+#include "sim/generate/generation_pipeline.hpp"
+#include "sim/generate/sensor_input.hpp"
+#include "sim/site/site.hpp"
+#include "slam/feature/orb_feature_extractor.hpp"
+#include "slam/wifi/pause_signature_tracker.hpp"
+
+namespace wifislam::study {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Takes the images the protocol keeps (one every interval), extracts their features and follows
+/// the pauses, from the events of one stream in time order.
+class ImageCollector {
+ public:
+  ImageCollector(const LocalisationDataOptions& options, const CameraIntrinsics& intrinsics)
+      : interval_ns_(std::llround(options.image_interval_s * 1e9)),
+        orb_(features(options), intrinsics),
+        tracker_(options.wifi) {}
+
+  void frame(const RgbdFrame& frame, const Eigen::Vector2d& position_m, LocalisationData& out) {
+    if (last_ns_ && frame.time.ns - *last_ns_ < interval_ns_ - kSlackNs) return;
+    last_ns_ = frame.time.ns;
+    out.images.push_back(
+        {frame.time, position_m, orb_.extract(frame).descriptors, tracker_.current()});
+  }
+  void scan(const WifiScan& scan) { tracker_.observe_scan(scan); }
+  void odometry(const OdometryReading& reading) { tracker_.observe_odometry(reading); }
+
+ private:
+  static constexpr std::int64_t kSlackNs = 1'000'000;  // stamps a millisecond early still count
+  static slam::FeatureOptions features(const LocalisationDataOptions& options) {
+    slam::FeatureOptions f;
+    f.max_keypoints = options.max_keypoints;
+    return f;
+  }
+  std::int64_t interval_ns_;
+  std::optional<std::int64_t> last_ns_;
+  slam::OrbFeatureExtractor orb_;
+  slam::PauseSignatureTracker tracker_;
+};
+
+/// The moving protocol's scans: the same scene scanning every `interval_s` throughout the run,
+/// without rendering (the scanner is part of the scene, so this pipeline builds its own site).
+std::vector<PositionedScan> moving_scans(const sim::Scene& resolved, double interval_s) {
+  sim::Scene moving = resolved;
+  moving.route.pause.scan_while_moving = true;
+  moving.sensors.wifi.scan_interval_s = interval_s;
+  sim::GenerateOptions no_images;
+  no_images.images = false;
+  sim::GenerationPipeline pipeline(moving, no_images);
+  std::vector<PositionedScan> out;
+  while (auto generated = pipeline.next()) {
+    if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
+      out.push_back(
+          {*scan, pipeline.motion().state_at(pipeline.route_time(scan->time)).position_m});
+    }
+  }
+  return out;
+}
+
+/// Nearest ground-truth position of a stamp (groundtruth.txt in time order).
+Eigen::Vector2d position_at(const Trajectory& truth, Timestamp t, const fs::path& file) {
+  const auto after = std::lower_bound(truth.begin(), truth.end(), t,
+                                      [](const StampedPose& p, Timestamp x) { return p.time < x; });
+  const StampedPose* best = nullptr;
+  if (after != truth.end()) best = &*after;
+  if (after != truth.begin() &&
+      (!best || t.ns - std::prev(after)->time.ns < best->time.ns - t.ns)) {
+    best = &*std::prev(after);
+  }
+  if (!best || std::llabs(best->time.ns - t.ns) > 100'000'000) {
+    throw InvalidInputError(
+        fmt::format("{}: no pose within 0.1 s of {}", file.string(), t.to_tum_string()));
+  }
+  return best->translation_m.head<2>();
+}
+
+}  // namespace
+
+LocalisationData localisation_data_from_scene(const sim::Scene& scene,
+                                              const LocalisationDataOptions& options) {
+  sim::GenerateOptions overrides;
+  overrides.seed = options.seed;
+  overrides.fps = 1.0 / options.image_interval_s;  // render only the images the protocol takes
+  const sim::Scene resolved = sim::resolve_scene(scene, overrides);
+  LocalisationData data;
+  data.description = fmt::format(
+      "scene {} (seed {}), an image every {:g} s, pause scans and a "
+      "scan every {:g} s while moving",
+      resolved.name, resolved.seed, options.image_interval_s, options.moving_scan_interval_s);
+  sim::GenerationPipeline pipeline(std::make_shared<const sim::Site>(resolved), {});
+  ImageCollector images(options, resolved.sensors.camera.intrinsics);
+  while (auto generated = pipeline.next()) {
+    if (const auto* frame = std::get_if<RgbdFrame>(&generated->event)) {
+      images.frame(*frame, generated->camera_to_world.translation().head<2>(), data);
+    } else if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
+      images.scan(*scan);
+      data.pause_scans.push_back(
+          {*scan, pipeline.motion().state_at(pipeline.route_time(scan->time)).position_m});
+    } else if (const auto* odometry = std::get_if<OdometryReading>(&generated->event)) {
+      images.odometry(*odometry);
+    }
+  }
+  data.moving_scans = moving_scans(resolved, options.moving_scan_interval_s);
+  data.wifi_source = "scene " + resolved.name + " (its access points and scanner)";
+  return data;
+}
+
+LocalisationData localisation_data_from_dataset(const fs::path& dataset,
+                                                const LocalisationDataOptions& options) {
+  if (options.seed) {
+    throw ParseError("--seed", std::to_string(*options.seed),
+                     "a dataset's seed is fixed; --seed applies to scenes");
+  }
+  const fs::path truth_file = dataset / dataset::kGroundTruth;
+  if (!fs::exists(truth_file)) {
+    throw InvalidInputError(truth_file.string() + ": missing (localisation is scored against it)");
+  }
+  const Trajectory truth = read_tum_trajectory(truth_file.string());
+  sim::SensorInput input = sim::open_sensor_input(dataset, {});
+  LocalisationData data;
+  data.description = fmt::format(
+      "dataset {}, an image every {:g} s, its wifi.csv for both "
+      "protocols",
+      dataset.string(), options.image_interval_s);
+  ImageCollector images(options, input.stream->intrinsics());
+  while (auto event = input.stream->next()) {
+    if (const auto* frame = std::get_if<RgbdFrame>(&*event)) {
+      images.frame(*frame, position_at(truth, frame->time, truth_file), data);
+    } else if (const auto* scan = std::get_if<WifiScan>(&*event)) {
+      images.scan(*scan);
+      data.pause_scans.push_back({*scan, position_at(truth, scan->time, truth_file)});
+    } else if (const auto* odometry = std::get_if<OdometryReading>(&*event)) {
+      images.odometry(*odometry);
+    }
+  }
+  data.moving_scans = data.pause_scans;
+  data.wifi_source = (dataset / dataset::kWifi).string();
+  return data;
+}
+
+}  // namespace wifislam::study

@@ -1,0 +1,67 @@
+#pragma once
+// The inputs of the paper's localisation comparison ("Comparison to Wi-Fi augmented FABMAP"):
+// images every `image_interval_s` with their true positions and ORB descriptors, and two Wi-Fi
+// scan protocols with the true position of each scan:
+//   - pause scans (the paper's method): the robot pauses every few metres and scans; every image
+//     carries the signature of the last pause before it (slam/wifi/pause_signature_tracker.hpp,
+//     the same association the SLAM front ends make);
+//   - moving scans (Wi-Fi FAB-MAP, Nowakowski et al. 2017): a scan every `moving_scan_interval_s`
+//     while the robot moves.
+// From a scene both protocols are simulated on the same route, motion and access points (the
+// moving one without rendering). A dataset holds one protocol: both Wi-Fi methods read its
+// wifi.csv, and its groundtruth.txt gives the positions.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "core/timestamp.hpp"
+#include "core/wifi_scan.hpp"
+#include "sim/scene/scene.hpp"
+#include "slam/wifi/wifi_options.hpp"
+#include "slam/wifi/wifi_signature.hpp"
+
+namespace wifislam::study {
+
+struct LocalisationImage {
+  Timestamp time;
+  Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // true camera position on the floor
+  cv::Mat descriptors;                                   // ORB, one row each
+  /// The signature of the last pause before the image (null before the first scan).
+  std::shared_ptr<const slam::WifiSignature> pause_signature;
+};
+
+struct PositionedScan {
+  WifiScan scan;
+  Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // true receiver position
+};
+
+struct LocalisationData {
+  std::vector<LocalisationImage> images;  // in time order
+  std::vector<PositionedScan> pause_scans, moving_scans;
+  std::string description;  // what was read or simulated
+  std::string wifi_source;  // where the scans come from (a dataset's wifi.csv), for messages
+};
+
+struct LocalisationDataOptions {
+  double image_interval_s = 2.0;         // the paper's protocol: an image every 2 s
+  double moving_scan_interval_s = 10.0;  // and a Wi-Fi scan every 10 s while moving
+  int max_keypoints = 1000;
+  std::optional<std::uint64_t> seed;  // scenes only: replaces the scene's seed
+  slam::WifiOptions wifi;             // pause recognition
+};
+
+/// Both protocols simulated from `scene` (images rendered only at the image interval).
+LocalisationData localisation_data_from_scene(const sim::Scene& scene,
+                                              const LocalisationDataOptions& options);
+
+/// A dataset folder: every image at least `image_interval_s` after the last one taken, its
+/// position from groundtruth.txt (nearest stamp), and its wifi.csv as both protocols.
+LocalisationData localisation_data_from_dataset(const std::filesystem::path& dataset,
+                                                const LocalisationDataOptions& options);
+
+}  // namespace wifislam::study

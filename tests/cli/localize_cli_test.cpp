@@ -1,0 +1,77 @@
+// `wifislam localize` as a user runs it: on the aliasing ladder, Wi-Fi words appended to the
+// visual ones raise FAB-MAP's share of queries matched within 2 m (the thermometer code, whose
+// 23 words an access point outweigh the presence bit; the presence code's gain is smaller, see
+// docs/fabmap/README.md); a dataset without Wi-Fi scans is refused for the Wi-Fi methods (exit 2,
+// naming its wifi.csv, nothing written) and served for visual FAB-MAP.
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+using test::read_file;
+
+/// summary.json's share of queries within 2 m, per method.
+double share_within_2m(const nlohmann::json& summary, const std::string& method) {
+  for (const auto& m : summary.at("methods")) {
+    if (m.at("method") == method) return m.at("all").at("within_2m").get<double>();
+  }
+  ADD_FAILURE() << "no method " << method;
+  return -1.0;
+}
+
+TEST(LocalizeCli, WifiWordsRaiseFabmapsShareWithin2mOnTheAliasingLadder) {
+  const fs::path scratch = test::scratch_folder();
+  const test::CliResult r =
+      test::run_wifislam(std::string("localize ") + WIFISLAM_SCENES_DIR +
+                             "/aliasing_ladder.yaml --method "
+                             "fabmap,wifi-fabmap --wifi-words thermometer -q -o " +
+                             (scratch / "out").string(),
+                         scratch);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json summary = nlohmann::json::parse(read_file(scratch / "out" / "summary.json"));
+  EXPECT_GT(summary.at("query_images").get<int>(), 50);
+  const double visual = share_within_2m(summary, "fabmap");
+  const double wifi = share_within_2m(summary, "wifi-fabmap");
+  EXPECT_GT(wifi, visual) << "fabmap " << visual << ", wifi-fabmap " << wifi;
+  for (const char* file :
+       {"queries.csv", "cdf.csv", "cdf.png", "cdf.svg", "pr.csv", "summary.md"}) {
+    EXPECT_TRUE(fs::exists(scratch / "out" / file)) << file;
+  }
+  fs::remove_all(scratch);
+}
+
+TEST(LocalizeCli, ADatasetWithoutWifiIsRefusedForTheWifiMethods) {
+  const fs::path scratch = test::scratch_folder();
+  // The tiny loop pauses 1 s, shorter than a scan: its wifi.csv has no scan.
+  test::write_file(scratch / "tiny.yaml", test::kTinyLoopYaml);
+  const std::string generate = std::string(WIFISLAM_BINARY) + " generate " +
+                               (scratch / "tiny.yaml").string() + " --fps 2 -q -o " +
+                               (scratch / "dataset").string();
+  ASSERT_EQ(std::system(generate.c_str()), 0);
+  const std::string input = (scratch / "dataset").string();
+  for (const char* method : {"wifi-fabmap", "wifi-clusters"}) {
+    const test::CliResult r = test::run_wifislam(
+        "localize " + input + " --method " + method + " -o " + (scratch / "out").string(), scratch);
+    test::expect_located_bad_input(r, (scratch / "dataset" / "wifi.csv").string(), method);
+    EXPECT_FALSE(fs::exists(scratch / "out"));
+    EXPECT_FALSE(fs::exists(scratch / "out.partial"));
+  }
+  const test::CliResult visual = test::run_wifislam(
+      "localize " + input + " --method fabmap -q -o " + (scratch / "out").string(), scratch);
+  EXPECT_EQ(visual.exit_code, 0) << visual.err;
+  EXPECT_TRUE(fs::exists(scratch / "out" / "summary.json"));
+  fs::remove_all(scratch);
+}
+
+}  // namespace
+}  // namespace wifislam
