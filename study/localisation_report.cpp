@@ -77,23 +77,32 @@ std::string cdf_csv(const LocalisationResult& r, const LocalisationOptions& o,
 }
 
 /// Precision and recall as the match-probability threshold falls through each query's value.
-std::string pr_csv(const LocalisationResult& r, const LocalisationOptions& o) {
+std::string pr_csv(const LocalisationResult& r, const LocalisationOptions& o,
+                   plot::LineChart& chart) {
   std::string out = "method,threshold,precision,recall\n";
+  int colour = 0;
   for (LocalisationMethod m : o.methods) {
+    plot::ChartSeries series{to_string(m), plot::category_colour(colour++), false, {}};
     std::vector<const QueryResult*> queries = of_method(r, m);
     std::stable_sort(
         queries.begin(), queries.end(),
         [](const QueryResult* a, const QueryResult* b) { return a->probability > b->probability; });
     int positives = 0;
     for (const QueryResult* q : queries) positives += q->nearest_map_m <= kTrueMatchM;
+    // One point per distinct threshold: queries of equal probability are accepted together.
     int accepted = 0, correct = 0;
-    for (const QueryResult* q : queries) {
+    for (std::size_t i = 0; i < queries.size(); ++i) {
       ++accepted;
-      correct += q->error_m <= kTrueMatchM;
-      out += fmt::format("{},{:.6g},{:.4f},{:.4f}\n", to_string(m), q->probability,
-                         static_cast<double>(correct) / accepted,
-                         positives > 0 ? static_cast<double>(correct) / positives : 0.0);
+      correct += queries[i]->error_m <= kTrueMatchM;
+      if (i + 1 < queries.size() && queries[i + 1]->probability == queries[i]->probability)
+        continue;
+      const double precision = static_cast<double>(correct) / accepted;
+      const double recall = positives > 0 ? static_cast<double>(correct) / positives : 0.0;
+      out += fmt::format("{},{:.6g},{:.4f},{:.4f}\n", to_string(m), queries[i]->probability,
+                         precision, recall);
+      series.points.push_back({recall, precision, precision, precision});  // recall never falls
     }
+    chart.series.push_back(std::move(series));
   }
   return out;
 }
@@ -156,7 +165,14 @@ void write_localisation_report(const std::filesystem::path& dir, const Localisat
   write_file_atomic(dir / "cdf.csv", cdf_csv(result, options, chart));
   plot::draw_line_chart(dir / "cdf.png", chart);
   plot::draw_line_chart(dir / "cdf.svg", chart);
-  write_file_atomic(dir / "pr.csv", pr_csv(result, options));
+  plot::LineChart pr;
+  pr.title = "Precision-recall of the match probability (a match is true within 2 m)";
+  pr.subtitle = result.description;
+  pr.x_label = "recall (of the queries with a map image within 2 m)";
+  pr.y_label = "precision";
+  write_file_atomic(dir / "pr.csv", pr_csv(result, options, pr));
+  plot::draw_line_chart(dir / "pr.png", pr);
+  plot::draw_line_chart(dir / "pr.svg", pr);
   const nlohmann::ordered_json summary = localisation_summary(result, options);
   write_file_atomic(dir / "summary.json", summary.dump(1) + "\n");
   write_file_atomic(dir / "summary.md", summary_markdown(summary));

@@ -4,7 +4,7 @@
 //                  probability, the error, the distance to the nearest map image, candidates, time
 //   cdf.csv        per method, the share of queries within each error (the paper's CDF figure)
 //   cdf.png, .svg  the CDF, one curve per method
-//   pr.csv         precision and recall of each method's match probability as a threshold (a
+//   pr.csv, pr.png, .svg  precision and recall of each method's match probability as a threshold (a
 //                  match is true within 2 m; recall over the queries with a map image within 2 m),
 //                  the measure FAB-MAP papers report
 //   summary.json, summary.md  shares within 1, 2, 4 and 5 m over all queries and over those with

@@ -26,7 +26,7 @@ using namespace wifislam;
 
 struct LocalizeArgs {
   std::string input, output, methods = "fabmap,wifi-fabmap,wifi-clusters";
-  std::string vocabulary, training, wifi_words = "presence";
+  std::string vocabulary, training, wifi_words = "presence", route;
   double image_interval_s = 2.0, moving_scan_interval_s = 10.0, map_share = 0.4;
   std::optional<std::uint64_t> seed;
   std::uint64_t fabmap_seed = 1;
@@ -80,7 +80,26 @@ slam::place::FabMapTraining load_training(const LocalizeArgs& args) {
   return training;
 }
 
+/// The scene, with --route's node sequence (e.g. two laps, so the queries revisit the map).
+sim::Scene scene_with_route(const LocalizeArgs& args) {
+  sim::Scene scene = sim::load_scene_file(args.input);
+  if (args.route.empty()) return scene;
+  scene.route.nodes.clear();
+  std::stringstream in(args.route);
+  for (std::string node; std::getline(in, node, ',');) scene.route.nodes.push_back(node);
+  try {
+    sim::validate_scene(scene);
+  } catch (const Error& e) {
+    throw ParseError("--route", args.route, e.what());
+  }
+  return scene;
+}
+
 void run(const LocalizeArgs& args) {
+  if (!args.route.empty() && fs::is_directory(args.input)) {
+    throw ParseError("--route", args.route,
+                     "a dataset's route is fixed; --route applies to scenes");
+  }
   const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
   const study::LocalisationOptions options = localisation_options(args);
   const auto vocabulary = slam::bow::load_vocabulary(args.vocabulary);
@@ -94,7 +113,7 @@ void run(const LocalizeArgs& args) {
   const study::LocalisationData data =
       fs::is_directory(args.input)
           ? study::localisation_data_from_dataset(args.input, data_options)
-          : study::localisation_data_from_scene(sim::load_scene_file(args.input), data_options);
+          : study::localisation_data_from_scene(scene_with_route(args), data_options);
   if (!args.quiet) {
     fmt::print(stderr, "localize: {}: {} images, {} pause scans, {} moving scans ({:.0f} s)\n",
                data.description, data.images.size(), data.pause_scans.size(),
@@ -142,6 +161,10 @@ WIFISLAM_COMMAND(localize, 67) {
          "Wi-Fi FAB-MAP's words: presence (one per AP heard) or thermometer (RSSI + 110 in "
          "5 dB bins)")
       ->capture_default_str();
+  app->add_option(
+      "--route", args->route,
+      "Scenes: the route's nodes, comma-separated, replacing the scene's (e.g. two laps\n"
+      "A,B,C,D,A,B,C,D,A so that the queries revisit the map)");
   app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
   app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)");
   app->add_option("--training", args->training,
