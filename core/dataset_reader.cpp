@@ -8,6 +8,7 @@
 #include <iterator>
 #include <limits>
 #include <system_error>
+#include <unordered_set>
 
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
@@ -16,6 +17,7 @@
 #include "core/dataset_format.hpp"
 #include "core/error.hpp"
 #include "core/line_cursor.hpp"
+#include "core/output_folder.hpp"
 #include "core/text_lines.hpp"
 #include "core/wifi_csv.hpp"
 
@@ -101,11 +103,31 @@ struct DatasetReader::Cursors {
   std::int64_t frame_index = 0;
 };
 
+bool is_unfinished_dataset(const fs::path& folder) {
+  std::error_code ec;
+  if (fs::exists(folder / dataset::kManifest, ec)) return false;
+  fs::path name = folder.filename();
+  if (name.empty()) name = folder.parent_path().filename();  // "ds.partial/"
+  return fs::exists(folder / kOutputMarkerFile, ec) || name.string().ends_with(".partial");
+}
+
 DatasetReader::DatasetReader(const fs::path& folder, DatasetReaderOptions options)
     : folder_(folder), options_(options) {
   std::error_code ec;
-  if (!fs::is_directory(folder_, ec)) {
-    throw IoError(folder_.string() + ": not a dataset folder (does not exist or is not a folder)");
+  const fs::file_status status = fs::status(folder_, ec);
+  if (!fs::exists(status)) {
+    throw IoError(folder_.string() + ": not a dataset folder (does not exist)");
+  }
+  // It is there but cannot be one: bad input, as a folder given for a scene file is.
+  if (!fs::is_directory(status)) {
+    throw InvalidInputError(folder_.string() + ": not a dataset folder (it is a file)");
+  }
+  // Every command that reads a dataset refuses it alike (slam, check, export).
+  if (options_.verify_checksums && is_unfinished_dataset(folder_)) {
+    throw InvalidInputError(folder_.string() +
+                            ": an unfinished dataset (no manifest.json: `wifislam generate` was "
+                            "interrupted?); generate it again, or pass --no-verify to read what "
+                            "is there");
   }
   if (is_file(folder_ / dataset::kManifest)) {
     manifest_ = read_dataset_manifest(folder_ / dataset::kManifest);
@@ -124,33 +146,106 @@ DatasetReader::DatasetReader(const fs::path& folder, DatasetReaderOptions option
 
 DatasetReader::~DatasetReader() = default;
 
+namespace {
+
+/// A listed image: a relative path that stays inside the dataset folder (an absolute or `..`
+/// path would read files the dataset does not hold) and names a regular file. A missing file is
+/// an I/O error; one that is there but cannot be a PNG (a folder, a device) is bad input.
+void check_image_file(const fs::path& folder, const std::string& relative,
+                      const std::string& listed_at) {
+  const fs::path listed(relative);
+  const fs::path normal = listed.lexically_normal();
+  if (listed.is_absolute() || normal.empty() || *normal.begin() == "..") {
+    throw ParseError(listed_at, "",
+                     fmt::format("image path '{}' leaves the dataset folder; list images by "
+                                 "paths relative to it, inside it",
+                                 relative));
+  }
+  std::error_code ec;
+  const fs::file_status status = fs::status(folder / listed, ec);
+  if (!fs::exists(status)) {
+    throw IoError(
+        fmt::format("{}: image {} does not exist", listed_at, (folder / listed).string()));
+  }
+  if (!fs::is_regular_file(status)) {
+    throw ParseError(
+        listed_at, "",
+        fmt::format("image {} is {}, not a PNG image", (folder / listed).string(),
+                    fs::is_directory(status) ? "a folder" : "not a regular file (a device?)"));
+  }
+}
+
+/// Every image of rgb.txt or depth.txt (`name`) checked.
+void check_list_images(const fs::path& folder, const char* name,
+                       const std::vector<TumFileEntry>& entries) {
+  const std::string list = (folder / name).string();
+  for (const auto& e : entries)
+    check_image_file(folder, e.path, fmt::format("{}:{}", list, e.line));
+}
+
+/// rgb.txt or depth.txt, every entry's image checked.
+std::vector<TumFileEntry> read_checked_list(const fs::path& folder, const char* name) {
+  std::vector<TumFileEntry> entries = read_tum_file_list((folder / name).string());
+  check_list_images(folder, name, entries);
+  return entries;
+}
+
+}  // namespace
+
 void DatasetReader::validate() {
-  auto check_exists = [&](const std::string& relative, const std::string& listed_at) {
-    if (!is_file(folder_ / relative)) {
-      throw IoError(
-          fmt::format("{}: image {} does not exist", listed_at, (folder_ / relative).string()));
-    }
-  };
-  const bool lists = is_file(folder_ / dataset::kRgbList) && is_file(folder_ / dataset::kDepthList);
+  const bool has_rgb_list = is_file(folder_ / dataset::kRgbList);
+  const bool has_depth_list = is_file(folder_ / dataset::kDepthList);
+  const std::string assoc_file = (folder_ / dataset::kAssociations).string();
   if (has_associations_file_) {
-    AssociationsReader reader((folder_ / dataset::kAssociations).string());
+    // The lists beside associations.txt are part of the dataset too (peers read them): they
+    // must be well-formed and hold every image the associations pair. Their images are checked
+    // after the associations', so a missing image is reported at the line SLAM reads it from.
+    const auto read_list = [&](bool has_list, const char* name) {
+      return has_list ? read_tum_file_list((folder_ / name).string()) : std::vector<TumFileEntry>{};
+    };
+    const std::vector<TumFileEntry> rgb = read_list(has_rgb_list, dataset::kRgbList);
+    const std::vector<TumFileEntry> depth = read_list(has_depth_list, dataset::kDepthList);
+    std::unordered_set<std::string> rgb_listed, depth_listed;
+    for (const auto& e : rgb) rgb_listed.insert(e.path);
+    for (const auto& e : depth) depth_listed.insert(e.path);
+    const auto check_listed = [&](bool has_list, const std::unordered_set<std::string>& listed,
+                                  const std::string& path, const char* list,
+                                  const std::string& at) {
+      if (has_list && !listed.contains(path)) {
+        throw ParseError(at, "", fmt::format("image {} is not listed in {}", path, list));
+      }
+    };
+    AssociationsReader reader(assoc_file);
     while (auto pair = reader.next()) {
       const std::string at = fmt::format("{}:{}", reader.path(), pair->line);
-      check_exists(pair->rgb_path, at);
-      check_exists(pair->depth_path, at);
+      check_image_file(folder_, pair->rgb_path, at);
+      check_image_file(folder_, pair->depth_path, at);
+      check_listed(has_rgb_list, rgb_listed, pair->rgb_path, dataset::kRgbList, at);
+      check_listed(has_depth_list, depth_listed, pair->depth_path, dataset::kDepthList, at);
       ++frame_count_;
     }
+    check_list_images(folder_, dataset::kRgbList, rgb);
+    check_list_images(folder_, dataset::kDepthList, depth);
     has_frames_ = true;
-  } else if (lists) {
-    const std::string rgb_list = (folder_ / dataset::kRgbList).string();
-    const std::string depth_list = (folder_ / dataset::kDepthList).string();
-    const auto rgb = read_tum_file_list(rgb_list);
-    const auto depth = read_tum_file_list(depth_list);
-    for (const auto& e : rgb) check_exists(e.path, fmt::format("{}:{}", rgb_list, e.line));
-    for (const auto& e : depth) check_exists(e.path, fmt::format("{}:{}", depth_list, e.line));
+    if (frame_count_ == 0) {
+      throw InvalidInputError(assoc_file + ": lists no frames; a dataset needs at least one");
+    }
+  } else if (has_rgb_list && has_depth_list) {
+    const auto rgb = read_checked_list(folder_, dataset::kRgbList);
+    const auto depth = read_checked_list(folder_, dataset::kDepthList);
     associated_ = associate_tum(rgb, depth, dataset::kAssociationMaxDifferenceS);
     frame_count_ = static_cast<std::int64_t>(associated_.size());
     has_frames_ = true;
+    if (frame_count_ == 0) {
+      const std::string why =
+          rgb.empty() || depth.empty()
+              ? fmt::format("{} lists no images",
+                            rgb.empty() ? dataset::kRgbList : dataset::kDepthList)
+              : fmt::format("no stamp in {} is within {} s of one in {}", dataset::kRgbList,
+                            dataset::kAssociationMaxDifferenceS, dataset::kDepthList);
+      throw InvalidInputError(
+          fmt::format("{}: no frames ({}); a dataset needs at least one", folder_.string(), why));
+    }
   } else if (!(manifest_ && !manifest_->images)) {
     throw InvalidInputError(fmt::format("{}: not an RGB-D dataset: found neither {} nor {} + {}",
                                         folder_.string(), dataset::kAssociations, dataset::kRgbList,
@@ -220,9 +315,9 @@ DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
     }
   }
   DecodedImages out;
-  // IMREAD_COLOR alone would scale a 16-bit image (a depth map in the RGB list) down to 8 bits
-  // without a word; with IMREAD_ANYDEPTH it keeps its depth, and anything but 8 bits is refused.
-  out.rgb = decode_image(rgb_bytes, cv::IMREAD_COLOR | cv::IMREAD_ANYDEPTH, rgb_file.string());
+  // IMREAD_COLOR would scale a 16-bit image (a depth map in the RGB list) down to 8 bits and
+  // expand grey or drop alpha without a word; read as stored, anything but 8-bit colour is refused.
+  out.rgb = decode_image(rgb_bytes, cv::IMREAD_UNCHANGED, rgb_file.string());
   if (out.rgb.empty()) {
     throw ParseError(rgb_file.string(), "", "not a readable PNG image (corrupt or truncated)");
   }
@@ -231,6 +326,16 @@ DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
                      fmt::format("an RGB image must have 8 bits per channel, this one has {} "
                                  "(a depth image listed as RGB at {}?)",
                                  8 * out.rgb.elemSize1(), listed_at));
+  }
+  if (out.rgb.channels() != 3) {
+    throw ParseError(rgb_file.string(), "",
+                     fmt::format("an RGB image must have 3 colour channels, this one has {} ({}; "
+                                 "listed at {})",
+                                 out.rgb.channels(),
+                                 out.rgb.channels() == 1   ? "grey"
+                                 : out.rgb.channels() == 2 ? "grey with alpha"
+                                                           : "colour with alpha",
+                                 listed_at));
   }
   check_size(out.rgb, intrinsics, rgb_file.string());
   out.depth_m = decode_depth_png(depth_bytes, depth_units_per_metre, depth_file.string());

@@ -6,12 +6,14 @@
 // without calibration.yaml uses the TUM default Kinect v1 intrinsics and 5000 depth units per
 // metre.
 //
-// Opening checks everything but the image contents: the manifest's SHA-256 of every text file
-// (unless verification is off), each list file line by line, and that every listed PNG exists.
-// Errors name the file and line. Images are then loaded lazily, a few frames ahead of next() on
-// other threads (DatasetReaderOptions::prefetch_frames), and each PNG's hash is checked against
-// images.sha256 as it is read, so memory stays flat whatever the dataset's length and no byte is
-// read twice.
+// Opening checks everything but the image contents: that the folder is a finished dataset and
+// the manifest's SHA-256 of every text file (unless verification is off), each list file line by
+// line (rgb.txt and depth.txt too when associations.txt is there: every paired image must be
+// listed), stamps that increase from line to line, at least one frame, and that every listed
+// image is a file inside the folder. Errors name the file and line. Images are then loaded lazily,
+// a few frames ahead of next() on other threads (DatasetReaderOptions::prefetch_frames), and each
+// PNG's hash is checked against images.sha256 as it is read, so memory stays flat whatever the
+// dataset's length and no byte is read twice.
 //
 // Ground truth is not part of the stream (SLAM never sees it): read_ground_truth() reads it.
 
@@ -86,6 +88,11 @@ class DatasetReader final : public SensorStream {
   std::int64_t frame_count_ = 0, scan_count_ = 0, odometry_count_ = 0;
   std::unique_ptr<Cursors> cursors_;
 };
+
+/// What an interrupted `generate` leaves: a folder without manifest.json (written last) that
+/// carries this tool's output marker or a `.partial` name. Its lists end early, so reading it
+/// would score a truncated route; DatasetReader refuses it unless checksums are off.
+bool is_unfinished_dataset(const std::filesystem::path& folder);
 
 /// The (rgb, depth) image pairs of a dataset folder, in the order DatasetReader streams its frames:
 /// associations.txt when there is one, else rgb.txt and depth.txt associated as TUM's associate.py

@@ -134,29 +134,26 @@ bool check_output_folder(const OutputFolderRequest& request) {
   const fs::path out = resolve_path(request.path);
   std::error_code ec;
   const fs::file_status status = fs::status(out, ec);
-  if (request.never_inside_inputs) {
-    for (const fs::path& input : request.inputs) {
-      if (!input.empty() && is_within(out, resolve_path(input))) {
-        refuse(out, "lies inside an input of this command (" + input.string() +
-                        "); write it next to it instead");
-      }
+  const bool is_default =
+      !request.owned_default.empty() && resolve_path(request.owned_default) == out;
+  // Checked before existence: a new folder inside an input changes the input by being there
+  // (a run folder inside a dataset, export's links inside the dataset they link to).
+  for (const fs::path& input : request.inputs) {
+    if (input.empty()) continue;
+    const fs::path in = resolve_path(input);
+    if (in == out) refuse(out, "is an input of this command (" + input.string() + ")");
+    if (!is_default && is_within(out, in)) {
+      refuse(out, "lies inside an input of this command (" + input.string() +
+                      "); write it next to it instead");
     }
   }
   if (!fs::exists(status)) return false;
   if (!fs::is_directory(status)) {
     refuse(out, "exists and is not a folder; refusing to replace it");
   }
-  const bool is_default =
-      !request.owned_default.empty() && resolve_path(request.owned_default) == out;
   for (const fs::path& input : request.inputs) {
-    if (input.empty()) continue;
-    const fs::path in = resolve_path(input);
-    if (in == out) refuse(out, "is an input of this command (" + input.string() + ")");
-    if (is_within(in, out)) {
+    if (!input.empty() && is_within(resolve_path(input), out)) {
       refuse(out, "holds an input of this command (" + input.string() + ")");
-    }
-    if (!is_default && is_within(out, in)) {
-      refuse(out, "lies inside an input of this command (" + input.string() + ")");
     }
   }
   check_folder_replaceable(out);

@@ -6,7 +6,7 @@
 //   - `--force` was given, or the folder is the command's documented default output that the
 //     command owns (eval's <run>/eval, the demo's demo-output);
 //   - it is not an input of the same command, does not contain one and, unless it is that
-//     default, does not lie inside one;
+//     default, does not lie inside one (refused even when it does not exist yet);
 //   - it is not `/`, the current directory or the home folder, and holds none of them;
 //   - it looks like this tool's output (see `looks_like_tool_output`), or is empty.
 // Paths are compared after resolving symlinks, `..` and trailing slashes. A refusal is an
@@ -31,11 +31,10 @@ struct OutputFolderRequest {
   /// The command's documented default output (empty: none). That folder may be replaced without
   /// `--force`, and may lie inside an input (eval's <run>/eval lies inside <run>).
   std::filesystem::path owned_default;
-  /// Every file or folder the command reads (scene files, datasets, run folders ...).
+  /// Every file or folder the command reads (scene files, datasets, run folders ...). A folder
+  /// inside one is refused even when it does not exist yet: its mere presence would change the
+  /// input (a run folder inside the dataset it ran on).
   std::vector<std::filesystem::path> inputs;
-  /// Refuse a folder inside an input even when it does not exist yet, for outputs that would
-  /// change the input by their mere presence (export's links would become part of the dataset).
-  bool never_inside_inputs = false;
 };
 
 /// Applies the rule above. Returns true when the folder exists and may be replaced, false when

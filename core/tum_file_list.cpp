@@ -18,15 +18,6 @@ Timestamp parse_time(std::string_view field, const std::string& where) {
   return *t;
 }
 
-void check_order(std::optional<Timestamp>& last, Timestamp t, std::string_view field,
-                 const std::string& where) {
-  if (last && t < *last) {
-    throw ParseError(where, "",
-                     fmt::format("timestamp {} is earlier than the previous line's", field));
-  }
-  last = t;
-}
-
 }  // namespace
 
 std::optional<TumFileEntry> TumFileListReader::next() {
@@ -39,7 +30,7 @@ std::optional<TumFileEntry> TumFileListReader::next() {
                      fmt::format("expected 2 fields 'timestamp filename', got {}", fields.size()));
   }
   TumFileEntry e{parse_time(fields[0], where), std::string(fields[1]), line.number};
-  check_order(last_, e.time, fields[0], where);
+  require_later_stamp(last_, e.time, fields[0], where);
   return e;
 }
 
@@ -62,7 +53,7 @@ std::optional<FramePair> AssociationsReader::next() {
   }
   FramePair p{parse_time(fields[0], where), std::string(fields[1]), parse_time(fields[2], where),
               std::string(fields[3]), line.number};
-  check_order(last_, p.rgb_time, fields[0], where);
+  require_later_stamp(last_, p.rgb_time, fields[0], where);
   return p;
 }
 
@@ -114,24 +105,8 @@ std::optional<StampedPose> TumTrajectoryReader::next() {
   if (!cursor_.next(line)) return std::nullopt;
   const std::string where = cursor_.where(line.number);
   const auto fields = split_fields(line.text);
-  if (fields.size() != 8) {
-    throw ParseError(
-        where, "",
-        fmt::format("expected 8 fields 'timestamp tx ty tz qx qy qz qw', got {}", fields.size()));
-  }
-  StampedPose p;
-  p.time = parse_time(fields[0], where);
-  double v[7];
-  for (int i = 0; i < 7; ++i) {
-    if (!parse_double(fields[i + 1], v[i])) {
-      throw ParseError(where, "",
-                       fmt::format("field {} is not a finite number: '{}'", i + 2, fields[i + 1]));
-    }
-  }
-  p.translation_m = Eigen::Vector3d(v[0], v[1], v[2]);
-  p.rotation = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
-  if (p.rotation.norm() < 1e-6) throw ParseError(where, "", "quaternion has zero length");
-  check_order(last_, p.time, fields[0], where);
+  StampedPose p = parse_tum_pose_fields(fields, where);
+  require_later_stamp(last_, p.time, fields[0], where);
   return p;
 }
 

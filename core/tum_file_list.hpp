@@ -31,7 +31,7 @@ struct FramePair {
 };
 
 /// Streams "timestamp filename" lines. ParseError("file:line") for a line without exactly two
-/// fields, a bad timestamp, or a timestamp earlier than the previous one.
+/// fields, a bad timestamp, or a timestamp not later than the previous one.
 class TumFileListReader {
  public:
   explicit TumFileListReader(const std::string& path) : cursor_(path) {}
@@ -43,7 +43,7 @@ class TumFileListReader {
 };
 std::vector<TumFileEntry> read_tum_file_list(const std::string& path);
 
-/// Streams associations.txt lines (4 fields), checking that rgb times do not go backwards.
+/// Streams associations.txt lines (4 fields), checking that rgb times increase.
 class AssociationsReader {
  public:
   explicit AssociationsReader(const std::string& path) : cursor_(path) {}

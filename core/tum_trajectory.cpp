@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
@@ -27,37 +29,56 @@ std::string format_tum_line(const StampedPose& p) {
   return line;
 }
 
+StampedPose parse_tum_pose_fields(const std::vector<std::string_view>& fields,
+                                  const std::string& where) {
+  if (fields.size() != 8) {
+    throw ParseError(
+        where, "",
+        fmt::format("expected 8 fields 'timestamp tx ty tz qx qy qz qw', got {}", fields.size()));
+  }
+  const auto time = Timestamp::parse(fields[0]);
+  if (!time) throw ParseError(where, "", fmt::format("bad timestamp '{}'", fields[0]));
+  double v[7];
+  for (int i = 0; i < 7; ++i) {
+    if (!parse_double(fields[i + 1], v[i])) {
+      throw ParseError(where, "",
+                       fmt::format("field {} is not a finite number: '{}'", i + 2, fields[i + 1]));
+    }
+    if (i < 3 && std::abs(v[i]) > kMaxTrajectoryCoordinateM) {
+      throw ParseError(where, "",
+                       fmt::format("field {} ({} m) is beyond {:g} m from the origin: not a "
+                                   "physical position",
+                                   i + 2, fields[i + 1], kMaxTrajectoryCoordinateM));
+    }
+  }
+  StampedPose p;
+  p.time = *time;
+  p.translation_m = Eigen::Vector3d(v[0], v[1], v[2]);
+  p.rotation = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
+  if (p.rotation.norm() < 1e-6) throw ParseError(where, "", "quaternion has zero length");
+  return p;
+}
+
+void require_later_stamp(std::optional<Timestamp>& last, Timestamp time, std::string_view field,
+                         const std::string& where) {
+  if (last && !(*last < time)) {
+    throw ParseError(where, "",
+                     fmt::format("timestamp {} is not later than the previous line's ({}); "
+                                 "stamps must increase from line to line",
+                                 field, last->to_tum_string()));
+  }
+  last = time;
+}
+
 Trajectory read_tum_trajectory(const std::string& path) {
   Trajectory out;
+  std::optional<Timestamp> last;
   for (const TextLine& line : read_text_lines(path)) {
     const auto fields = split_fields(line.text);
     if (fields.empty() || fields[0].front() == '#') continue;
     const std::string where = path + ":" + std::to_string(line.number);
-    if (fields.size() != 8) {
-      throw ParseError(where, "",
-                       "expected 8 fields 'timestamp tx ty tz qx qy qz qw', got " +
-                           std::to_string(fields.size()));
-    }
-    const auto time = Timestamp::parse(fields[0]);
-    if (!time) throw ParseError(where, "", "bad timestamp '" + std::string(fields[0]) + "'");
-    double v[7];
-    for (int i = 0; i < 7; ++i) {
-      if (!parse_double(fields[i + 1], v[i])) {
-        throw ParseError(where, "",
-                         "field " + std::to_string(i + 2) + " is not a finite number: '" +
-                             std::string(fields[i + 1]) + "'");
-      }
-    }
-    StampedPose p;
-    p.time = *time;
-    p.translation_m = Eigen::Vector3d(v[0], v[1], v[2]);
-    p.rotation = Eigen::Quaterniond(v[6], v[3], v[4], v[5]);
-    if (p.rotation.norm() < 1e-6) throw ParseError(where, "", "quaternion has zero length");
-    if (!out.empty() && p.time < out.back().time) {
-      throw ParseError(
-          where, "",
-          "timestamp " + std::string(fields[0]) + " is earlier than the previous line's");
-    }
+    StampedPose p = parse_tum_pose_fields(fields, where);
+    require_later_stamp(last, p.time, fields[0], where);
     out.push_back(p);
   }
   return out;

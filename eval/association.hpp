@@ -2,7 +2,8 @@
 // Pairing two trajectories by timestamp with the rule of the TUM RGB-D tools (associate.py, used
 // by evaluate_ate.py with the ground truth as the first list and the estimate as the second):
 //   - a stamp repeated in one list counts once, with its last line (associate.py reads each file
-//     into a dict keyed by stamp);
+//     into a dict keyed by stamp); the trajectory readers refuse such a file at the repeated
+//     line (core/tum_trajectory.hpp), so only lists built in memory reach this rule;
 //   - every pair with |first - (second + offset)| < max_difference (strictly) is a candidate;
 //   - candidates are sorted by (|difference|, first stamp, second stamp) and taken greedily,
 //     each stamp used at most once, so an exact half-way tie goes to the earlier stamp of the

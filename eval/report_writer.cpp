@@ -14,8 +14,9 @@ namespace wifislam::eval {
 namespace fs = std::filesystem;
 
 const char* const kAssociationRule =
-    "Association (TUM associate.py, ground truth first, estimate second): a stamp repeated in a "
-    "file counts once, with its last line; every pair closer than max_time_difference_s "
+    "Association (TUM associate.py, ground truth first, estimate second): stamps increase "
+    "strictly in each file (a repeated stamp is refused at its line, where associate.py would "
+    "keep the last one silently); every pair closer than max_time_difference_s "
     "(strictly) is a candidate; candidates are taken greedily by smallest |difference|, exact "
     "ties going to the earlier ground-truth stamp, then the earlier estimate stamp, each stamp "
     "used once. Differences are exact in integer nanoseconds (associate.py subtracts "

@@ -120,13 +120,9 @@ nlohmann::ordered_json intrinsics_json(const CameraIntrinsics& k) {
           {"fy_px", k.fy_px},       {"cx_px", k.cx_px},         {"cy_px", k.cy_px}};
 }
 
-/// As `slam` refuses it: an interrupted generate leaves this tool's marker and no manifest
-/// (written last), and its lists end early.
+/// As the dataset reader refuses it (is_unfinished_dataset), with export's own hint.
 void refuse_unfinished_dataset(const fs::path& dataset, const PeerExportOptions& options) {
-  std::error_code ec;
-  if (options.verify_checksums && !fs::exists(dataset / dataset::kManifest, ec) &&
-      (fs::exists(dataset / kOutputMarkerFile, ec) ||
-       dataset.filename().string().ends_with(".partial"))) {
+  if (options.verify_checksums && is_unfinished_dataset(dataset)) {
     throw InvalidInputError(dataset.string() +
                             ": an unfinished dataset (no manifest.json: `wifislam generate` was "
                             "interrupted?); generate it again, or pass --no-verify to export what "

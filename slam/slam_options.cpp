@@ -15,6 +15,14 @@ void set_option(SlamOptions& options, const std::string& key, const std::string&
 
 void set_option_assignment(SlamOptions& options, const std::string& assignment) {
   const auto [key, value] = options::split_assignment("--set", assignment);
+  // --frontend chose the front end before the assignments: a `--set frontend=` naming another
+  // one would win silently over what the user asked for by its own flag.
+  if (key == "frontend" && value != options.frontend) {
+    throw ParseError("--set", assignment,
+                     fmt::format("conflicts with --frontend {}: choose the front end with "
+                                 "--frontend {} alone",
+                                 options.frontend, value));
+  }
   set_option(options, key, value);
 }
 

@@ -230,7 +230,9 @@ void visit_options(V& v, SlamOptions& o) {
 /// when it does not read as the option's type.
 void set_option(SlamOptions& options, const std::string& key, const std::string& value);
 
-/// Parses "key=value" and calls set_option.
+/// Parses "key=value" (a `--set`) and calls set_option. `frontend=` must name the front end
+/// `options` already has (--frontend's, set first): a conflict is a ParseError, not a silent
+/// override.
 void set_option_assignment(SlamOptions& options, const std::string& assignment);
 
 /// Checks ranges (min_matches >= 4, 0 < ransac_confidence < 1, ...); throws InvalidInputError.

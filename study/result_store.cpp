@@ -314,6 +314,19 @@ std::optional<StudyIdentity> ResultStore::read_identity(const fs::path& path) {
 
 std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs::path& out) {
   if (inputs.empty()) throw InvalidInputError("study merge: no shard databases given");
+  // One shard given twice (another spelling, a link) merges to a database short of the shard
+  // that was meant, without a word.
+  for (std::size_t i = 0; i < inputs.size(); ++i) {
+    for (std::size_t j = 0; j < i; ++j) {
+      std::error_code ec;
+      if (fs::equivalent(inputs[i], inputs[j], ec) && !ec) {
+        throw InvalidInputError(
+            fmt::format("{}: given twice (also as {}); each shard is merged "
+                        "once",
+                        inputs[i].string(), inputs[j].string()));
+      }
+    }
+  }
   std::optional<StudyIdentity> first;
   for (const fs::path& in : inputs) {
     const auto id = ResultStore::read_identity(in);
@@ -365,6 +378,25 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
         throw InvalidInputError(
             fmt::format("{}: case {} differs from the same case in another shard",
                         inputs[i].string(), conflicts.text(0)));
+      }
+      // A copy of a shard already merged adds nothing: the same shard twice, most likely.
+      std::int64_t held = 0, fresh = 0;
+      {
+        Statement count_held(db, "SELECT count(*) FROM shard.results");
+        count_held.step();
+        held = count_held.int64(0);
+        Statement count_fresh(db,
+                              "SELECT count(*) FROM shard.results s WHERE NOT EXISTS (SELECT 1 "
+                              "FROM main.results m WHERE m.case_id = s.case_id AND m.variant = "
+                              "s.variant)");
+        count_fresh.step();
+        fresh = count_fresh.int64(0);
+      }
+      if (held > 0 && fresh == 0) {
+        throw InvalidInputError(
+            fmt::format("{}: holds only cases the shards before it already hold (the same shard "
+                        "given twice, or a copy?); merge each shard once",
+                        inputs[i].string()));
       }
       exec_on(db, "BEGIN");
       exec_on(db, "INSERT OR IGNORE INTO main.results SELECT * FROM shard.results");

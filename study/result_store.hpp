@@ -80,7 +80,9 @@ class ResultStore {
 };
 
 /// Unions shard databases into `out` (a new file): every input must have the same identity,
-/// and a case present in two inputs must have identical rows. Returns the number of rows.
+/// and a case present in two inputs must have identical rows. One file given twice, or a shard
+/// whose cases the inputs before it all hold already (a copy), is refused (InvalidInputError):
+/// it would leave the shard that was meant out without a word. Returns the number of rows.
 std::int64_t merge_study_databases(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out);
 

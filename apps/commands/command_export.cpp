@@ -22,7 +22,7 @@ struct ExportArgs {
 
 void run_export(const ExportArgs& args) {
   using namespace wifislam;
-  const bool replace = check_output_folder({args.output, args.force, {}, {args.dataset}, true});
+  const bool replace = check_output_folder({args.output, args.force, {}, {args.dataset}});
   peers::PeerExportOptions options;
   options.peer = *peers::peer_from_string(args.peer);  // CLI11 checked the name
   options.verify_checksums = !args.no_verify;

@@ -6,7 +6,6 @@
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
 #include "core/frame_limited_stream.hpp"
-#include "core/output_folder.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
 
@@ -29,15 +28,7 @@ SensorInput open_dataset(const fs::path& input, const SensorInputOptions& option
                      "applies to scene input only; a dataset was rendered with its scene's seed "
                      "(for SLAM's own draws use --set seed=N)");
   }
-  // An interrupted `generate` leaves a staging folder with this tool's marker and no manifest
-  // (written last): its files are incomplete, so SLAM on it would score a truncated route.
-  if (options.verify_checksums && !fs::exists(input / dataset::kManifest) &&
-      (fs::exists(input / kOutputMarkerFile) || input.filename().string().ends_with(".partial"))) {
-    throw InvalidInputError(input.string() +
-                            ": an unfinished dataset (no manifest.json: `wifislam generate` was "
-                            "interrupted?); generate it again, or pass --no-verify to read what "
-                            "is there");
-  }
+  // An unfinished dataset (an interrupted `generate`) is the reader's refusal, as for `check`.
   DatasetReaderOptions reader_options;
   reader_options.verify_checksums = options.verify_checksums;
   SensorInput out;

@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 #include <fmt/format.h>
 
@@ -358,6 +359,15 @@ void VocabularyTree::save(const std::filesystem::path& path) const {
 }
 
 VocabularyTree VocabularyTree::load(const std::filesystem::path& path) {
+  // A folder opens as an empty stream on Linux and would read as a "truncated" vocabulary; a
+  // device (/dev/zero) would be read without end.
+  std::error_code ec;
+  const auto status = std::filesystem::status(path, ec);
+  if (std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) {
+    throw InvalidInputError(
+        fmt::format("{}: is {}, not a vocabulary file", path.string(),
+                    std::filesystem::is_directory(status) ? "a folder" : "not a regular file"));
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(fmt::format("{}: cannot open the vocabulary", path.string()));
   std::stringstream buffer;

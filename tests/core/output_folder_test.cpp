@@ -112,18 +112,23 @@ TEST_F(OutputFolderRule, OwnedDefaultIsReplacedWithoutForceEvenInsideItsInput) {
   EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
 }
 
-// A new folder inside an input replaces nothing, so it passes, unless the command asks: export's
-// links inside the dataset would become part of the dataset.
-TEST_F(OutputFolderRule, ANewFolderInsideAnInputIsRefusedWhenTheCommandSaysSo) {
+// Issue 34: a new folder inside an input replaced nothing, so it passed (`slam ds -o ds/run`
+// wrote the run into the dataset); only export asked for the refusal. It is the rule for every
+// command now, with or without --force; the owned default (eval's <run>/eval) is the exception.
+TEST_F(OutputFolderRule, ANewFolderInsideAnInputIsRefused) {
   const fs::path ds = tool_folder("ds");
-  EXPECT_FALSE(check_output_folder({ds / "new", false, {}, {ds}}));
-  OutputFolderRequest request{ds / "new", true, {}, {ds}, true};
-  const auto message = refusal(request);
-  ASSERT_TRUE(message);
-  EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
-  EXPECT_FALSE(fs::exists(ds / "new"));
-  request.path = root_ / "beside";
-  EXPECT_FALSE(check_output_folder(request));
+  for (const bool force : {false, true}) {
+    const auto message = refusal({ds / "run", force, {}, {ds}});
+    ASSERT_TRUE(message);
+    EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
+    EXPECT_NE(message->find(ds.string()), std::string::npos) << *message;
+  }
+  EXPECT_FALSE(fs::exists(ds / "run"));
+  // Spelt through `..` it is the same folder.
+  EXPECT_TRUE(refusal({root_ / "x" / ".." / "ds" / "deep" / "run", false, {}, {ds}}));
+  EXPECT_FALSE(check_output_folder({root_ / "beside", false, {}, {ds}}));
+  const fs::path run = tool_folder("run");
+  EXPECT_FALSE(check_output_folder({run / "eval-new", false, run / "eval-new", {run}}));
 }
 
 TEST_F(OutputFolderRule, AnInputOrAFolderHoldingOneIsNeverReplaced) {

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 
 namespace wifislam {
@@ -111,9 +112,38 @@ TEST_F(TumTrajectoryTest, RejectsMalformedLinesWithFileAndLine) {
   p = write("zeroq.txt", "1.0 0 0 0 0 0 0 0\n");
   expect_error_at(p, p + ":1", "quaternion has zero length");
   p = write("order.txt", "2.0 0 0 0 0 0 0 1\n1.0 0 0 0 0 0 0 1\n");
-  expect_error_at(p, p + ":2", "earlier than the previous line");
+  expect_error_at(p, p + ":2", "not later than the previous line");
   p = write("stamp.txt", "1.0e5 0 0 0 0 0 0 1\n");
   expect_error_at(p, p + ":1", "bad timestamp");
+}
+
+// Issue 34: a repeated pose line passed (two poses at one instant), and a position of 1e308 m
+// passed the reader and failed later in eval's plot with an I/O error and no location. Both
+// readers (whole file and streaming) refuse them at the line.
+TEST_F(TumTrajectoryTest, RepeatedStampsAndNonPhysicalPositionsAreRefusedAtTheLine) {
+  const std::string good = "1.0 0 0 0 0 0 0 1\n";
+  const auto both_refuse = [&](const std::string& path, const std::string& where,
+                               const std::string& what) {
+    expect_error_at(path, where, what);
+    try {
+      TumTrajectoryReader reader(path);
+      while (reader.next()) {
+      }
+      ADD_FAILURE() << "the streaming reader passed " << where;
+    } catch (const ParseError& e) {
+      EXPECT_EQ(e.where(), where);
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  };
+  auto p = write("repeat.txt", good + good);
+  both_refuse(p, p + ":2", "not later than the previous line");
+  p = write("huge.txt", good + "2.0 1e308 0 0 0 0 0 1\n");
+  both_refuse(p, p + ":2", "field 2 (1e308 m) is beyond");
+  p = write("far.txt", good + "2.0 0 0 -1000001 0 0 0 1\n");
+  both_refuse(p, p + ":2", "not a physical position");
+  // 1000 km is the limit, not a step inside it.
+  p = write("edge.txt", good + "2.0 1e6 -1e6 0 0 0 0 1\n");
+  EXPECT_EQ(read_tum_trajectory(p).size(), 2u);
 }
 
 TEST_F(TumTrajectoryTest, MissingFileNamesThePath) {

@@ -311,11 +311,168 @@ TEST(DatasetReader, SixteenBitImageInTheRgbSlotIsRefused) {
   EXPECT_NE(e.find("rgb.txt:5"), std::string::npos) << e;
   cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_16UC3, cv::Scalar(5000, 5000, 5000)));
   EXPECT_NE(open_error(dir).find("8 bits per channel"), std::string::npos);
-  // Grey and colour-with-alpha 8-bit images are colour images.
-  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_8UC1, cv::Scalar(7)));
+}
+
+// Issue 34: grey and colour-with-alpha images in the RGB list were expanded or stripped to
+// colour without a word. The RGB list holds 8-bit, 3-channel images (TUM's format); anything else
+// is refused naming the image and the list line.
+TEST(DatasetReader, GreyAndAlphaImagesInTheRgbListAreRefused) {
+  const auto dir = test::fresh_folder("rgb_channels");
+  write_plain_tum(dir, 3);
+  const fs::path rgb = dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(1));
+  for (const auto& [image, what] :
+       {std::pair{cv::Mat(480, 640, CV_8UC1, cv::Scalar(7)), "has 1 (grey"},
+        std::pair{cv::Mat(480, 640, CV_8UC4, cv::Scalar(1, 2, 3, 255)), "has 4 (colour with"}}) {
+    cv::imwrite(rgb.string(), image);
+    for (const bool verify : {true, false}) {
+      const std::string e = open_error(dir, {.verify_checksums = verify});
+      EXPECT_NE(e.find("rgb/0.100000.png"), std::string::npos) << e;
+      EXPECT_NE(e.find("3 colour channels"), std::string::npos) << e;
+      EXPECT_NE(e.find(what), std::string::npos) << e;
+      EXPECT_NE(e.find("rgb.txt:5"), std::string::npos) << e;
+    }
+  }
+  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_8UC3, cv::Scalar(1, 2, 3)));
   EXPECT_EQ(open_error(dir), "no error");
-  cv::imwrite(rgb.string(), cv::Mat(480, 640, CV_8UC4, cv::Scalar(1, 2, 3, 255)));
+}
+
+// The kind of error an opening or a read gives, with its message.
+template <typename E>
+std::string error_of_kind(const fs::path& dir, DatasetReaderOptions options = {}) {
+  try {
+    DatasetReader reader(dir, options);
+    while (reader.next()) {
+    }
+  } catch (const E& e) {
+    return e.what();
+  } catch (const Error& e) {
+    return std::string("another kind of error: ") + e.what();
+  }
+  return "no error";
+}
+
+// Issue 34: zero frames read as a dataset (check passed it, slam wrote an empty run). An empty
+// associations.txt, empty lists, or lists whose stamps never pair are bad input, verified or not.
+TEST(DatasetReader, ADatasetWithoutFramesIsRefused) {
+  const auto dir = test::fresh_folder("zero");
+  write_ours(dir);
+  test::write_text(dir / "associations.txt", "# t_rgb rgb t_depth depth\n");
+  std::string e = error_of_kind<InvalidInputError>(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("associations.txt: lists no frames"), std::string::npos) << e;
+  const auto plain = test::fresh_folder("zero_plain");
+  write_plain_tum(plain, 2);
+  test::write_text(plain / "rgb.txt", "# nothing\n");
+  e = error_of_kind<InvalidInputError>(plain);
+  EXPECT_NE(e.find("rgb.txt lists no images"), std::string::npos) << e;
+  test::write_text(plain / "rgb.txt",
+                   "5.000000 " + dataset::frame_image_path(dataset::kRgbDir, frame_time(0)) + "\n");
+  e = error_of_kind<InvalidInputError>(plain);
+  EXPECT_NE(e.find("no stamp in rgb.txt is within 0.02 s"), std::string::npos) << e;
+}
+
+// Issue 34: what an interrupted `generate` leaves (marker, no manifest) was read by `check`
+// while `slam` refused it. The reader refuses it for every command, unless checksums are off.
+TEST(DatasetReader, AnUnfinishedDatasetIsRefusedUnlessVerificationIsOff) {
+  const auto dir = test::fresh_folder("run.partial");
+  write_ours(dir);
+  fs::remove(dir / "manifest.json");
+  EXPECT_TRUE(is_unfinished_dataset(dir));
+  std::string e = error_of_kind<InvalidInputError>(dir);
+  EXPECT_NE(e.find("an unfinished dataset"), std::string::npos) << e;
+  EXPECT_EQ(open_error(dir, {.verify_checksums = false}), "no error");
+  // The marker alone says so too, whatever the name; a plain TUM folder has neither.
+  const auto marked = test::fresh_folder("marked");
+  write_plain_tum(marked, 2);
+  EXPECT_FALSE(is_unfinished_dataset(marked));
+  test::write_text(marked / ".wifislam-output", "");
+  EXPECT_TRUE(is_unfinished_dataset(marked));
+  EXPECT_NE(error_of_kind<InvalidInputError>(marked).find("unfinished"), std::string::npos);
+}
+
+// Issue 34: two frames stamped alike passed (and a list stamped twice alike); a stamp must be
+// later than the previous line's in every list.
+TEST(DatasetReader, EqualStampsInTheListsAreRefusedAtTheLine) {
+  const auto dir = test::fresh_folder("equal");
+  write_ours(dir);
+  std::string assoc = test::read_text(dir / "associations.txt");
+  const std::size_t second = assoc.find('\n') + 1;
+  const std::string first_line = assoc.substr(0, second);
+  test::write_text(dir / "associations.txt", first_line + assoc);
+  std::string e = error_of_kind<ParseError>(dir, {.verify_checksums = false});
+  EXPECT_NE(e.find("associations.txt:2"), std::string::npos) << e;
+  EXPECT_NE(e.find("not later than the previous line"), std::string::npos) << e;
+  const auto plain = test::fresh_folder("equal_plain");
+  write_plain_tum(plain, 3);
+  std::string depth = test::read_text(plain / "depth.txt");
+  const std::size_t last = depth.rfind('\n', depth.size() - 2) + 1;
+  test::write_text(plain / "depth.txt", depth + depth.substr(last));
+  e = error_of_kind<ParseError>(plain);
+  EXPECT_NE(e.find("depth.txt:7"), std::string::npos) << e;
+}
+
+// Issue 34: with associations.txt there, rgb.txt and depth.txt were never read: empty, shuffled
+// or escaping lists passed. They are checked as when they are the only lists, and must list
+// every image the associations pair.
+TEST(DatasetReader, TheListsBesideAssociationsAreCheckedToo) {
+  const auto dir = test::fresh_folder("lists");
+  write_ours(dir);
+  const std::string rgb = test::read_text(dir / "rgb.txt");
+  const DatasetReaderOptions unverified{.verify_checksums = false};
+  test::write_text(dir / "rgb.txt", "");
+  std::string e = error_of_kind<ParseError>(dir, unverified);
+  EXPECT_NE(e.find("associations.txt:1"), std::string::npos) << e;
+  EXPECT_NE(e.find("is not listed in rgb.txt"), std::string::npos) << e;
+  // Shuffled: the second line first.
+  const std::size_t cut = rgb.find('\n') + 1, cut2 = rgb.find('\n', cut) + 1;
+  test::write_text(dir / "rgb.txt",
+                   rgb.substr(cut, cut2 - cut) + rgb.substr(0, cut) + rgb.substr(cut2));
+  e = error_of_kind<ParseError>(dir, unverified);
+  EXPECT_NE(e.find("rgb.txt:2"), std::string::npos) << e;
+  test::write_text(dir / "rgb.txt", rgb + "9.000000 ../../etc/passwd\n");
+  e = error_of_kind<ParseError>(dir, unverified);
+  EXPECT_NE(e.find("rgb.txt:6"), std::string::npos) << e;
+  EXPECT_NE(e.find("leaves the dataset folder"), std::string::npos) << e;
+  test::write_text(dir / "rgb.txt", rgb);
   EXPECT_EQ(open_error(dir), "no error");
+}
+
+// Issue 34: an image path may not be absolute or climb out of the dataset folder.
+TEST(DatasetReader, ImagePathsOutsideTheFolderAreRefused) {
+  const auto dir = test::fresh_folder("escape");
+  write_ours(dir);
+  const std::string assoc = test::read_text(dir / "associations.txt");
+  const std::string image = dataset::frame_image_path(dataset::kRgbDir, frame_time(0));
+  for (const std::string& path :
+       std::vector<std::string>{(dir / image).string(),
+                                "../" + dir.filename().string() + "/" + image, "rgb/../../x.png"}) {
+    std::string edited = assoc;
+    edited.replace(edited.find(image), image.size(), path);
+    test::write_text(dir / "associations.txt", edited);
+    const std::string e = error_of_kind<ParseError>(dir, {.verify_checksums = false});
+    EXPECT_NE(e.find("associations.txt:1"), std::string::npos) << path << ": " << e;
+    EXPECT_NE(e.find("leaves the dataset folder"), std::string::npos) << path << ": " << e;
+  }
+}
+
+// Issue 34: an image that is a symlink to /dev/zero or a folder said "does not exist" (an I/O
+// error, exit 3). It exists and is not a PNG: bad input. A missing image stays an I/O error.
+TEST(DatasetReader, AnImageThatIsAFolderOrADeviceIsBadInputNotMissing) {
+  const auto dir = test::fresh_folder("not_png");
+  write_ours(dir);
+  const fs::path rgb = dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(2));
+  const DatasetReaderOptions unverified{.verify_checksums = false};
+  fs::remove(rgb);
+  fs::create_symlink("/dev/zero", rgb);
+  std::string e = error_of_kind<ParseError>(dir, unverified);
+  EXPECT_NE(e.find("associations.txt:3"), std::string::npos) << e;
+  EXPECT_NE(e.find("rgb/0.200000.png is not a regular file"), std::string::npos) << e;
+  fs::remove(rgb);
+  fs::create_directories(rgb);
+  e = error_of_kind<ParseError>(dir, unverified);
+  EXPECT_NE(e.find("is a folder, not a PNG image"), std::string::npos) << e;
+  fs::remove(rgb);
+  e = error_of_kind<IoError>(dir, unverified);
+  EXPECT_NE(e.find("does not exist"), std::string::npos) << e;
 }
 
 TEST(DatasetReader, TruncatedGroundTruthIsAnError) {
@@ -348,6 +505,10 @@ TEST(DatasetReader, FolderWithoutFramesIsNotADataset) {
   const std::string e = open_error(dir);
   EXPECT_NE(e.find("not an RGB-D dataset"), std::string::npos) << e;
   EXPECT_NE(open_error(dir / "nope").find("does not exist"), std::string::npos);
+  // Issue 34: a file given for a dataset folder is bad input, as a folder for a scene file is.
+  test::write_text(dir / "file.txt", "x");
+  const std::string e_file = error_of_kind<InvalidInputError>(dir / "file.txt");
+  EXPECT_NE(e_file.find("not a dataset folder (it is a file)"), std::string::npos) << e_file;
 }
 
 }  // namespace

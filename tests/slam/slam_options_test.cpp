@@ -23,6 +23,23 @@ TEST(SlamOptions, DefaultsAreRgbdslamV2s) {
   EXPECT_NO_THROW(validate(o));
 }
 
+// Issue 34: `--frontend orbslam --set frontend=rtabmap` ran RTAB-Map without a word. The
+// assignment may repeat --frontend's choice, never contradict it.
+TEST(SlamOptions, SetFrontendConflictingWithFrontendIsRefused) {
+  SlamOptions o;
+  o.frontend = "orbslam";
+  try {
+    set_option_assignment(o, "frontend=rtabmap");
+    ADD_FAILURE() << "the conflict was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("conflicts with --frontend orbslam"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(o.frontend, "orbslam");
+  EXPECT_NO_THROW(set_option_assignment(o, "frontend=orbslam"));
+  EXPECT_EQ(o.frontend, "orbslam");
+}
+
 TEST(SlamOptions, RefusesABadKernelOrPruningScheduleNamingIt) {
   for (const char* bad : {"robust_kernel=tukey", "prune_chi2=5,,1", "prune_chi2=5,-1",
                           "prune_chi2=abc", "prune_chi2=nan", "robust_kernel_chi2=0"}) {

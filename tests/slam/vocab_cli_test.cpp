@@ -51,6 +51,24 @@ TEST(VocabCli, TrainOnASceneThenInfoReadsItAndBadFilesAreRefused) {
   fs::remove_all(dir);
 }
 
+// Issue 34: `vocab info FOLDER` said the vocabulary was "truncated" (a folder opens as an empty
+// stream); a device would be read without end. Both are bad input (exit 2) saying what they
+// are; a missing file stays an I/O error (exit 3).
+TEST(VocabCli, InfoOnAFolderOrADeviceSaysItIsNoVocabularyFile) {
+  const fs::path dir = test::scratch_folder();
+  fs::create_directories(dir / "folder");
+  const auto folder = test::run_wifislam("vocab info " + (dir / "folder").string(), dir);
+  EXPECT_EQ(folder.exit_code, 2) << folder.err;
+  EXPECT_NE(folder.err.find("is a folder, not a vocabulary file"), std::string::npos) << folder.err;
+  EXPECT_EQ(folder.err.find("truncated"), std::string::npos) << folder.err;
+  const auto device = test::run_wifislam("vocab info /dev/zero", dir);
+  EXPECT_EQ(device.exit_code, 2) << device.err;
+  EXPECT_NE(device.err.find("not a regular file"), std::string::npos) << device.err;
+  const auto missing = test::run_wifislam("vocab info " + (dir / "none.bin").string(), dir);
+  EXPECT_EQ(missing.exit_code, 3) << missing.err;
+  fs::remove_all(dir);
+}
+
 TEST(ShippedVocabulary, LoadsAndIsTheFileItsReadmeDescribes) {
   const fs::path file = kAssets / "orb_k10_l4.bin";
   const VocabularyTree tree = VocabularyTree::load(file);

@@ -161,6 +161,44 @@ TEST(StudyRun, ShardsMergeToTheUnshardedRunAndForeignDatabasesAreRefused) {
   fs::remove_all(dir);
 }
 
+// Issue 34: the same shard given twice merged to half a database without a word. One file twice
+// (however spelt) and a copy of a shard already merged are refused, through the command line
+// too (exit 2), and nothing is written.
+TEST(StudyRun, TheSameShardTwiceIsRefused) {
+  const fs::path dir = test::scratch_folder();
+  const StudyFile study =
+      load_study_file(write_study(dir, "twice", "  access_points.count: [10]\n  seed: [1, 2]\n"));
+  std::vector<fs::path> shards;
+  for (int i = 0; i < 2; ++i) {  // one case each
+    StudyRunOptions o;
+    o.database = dir / ("shard-" + std::to_string(i) + ".sqlite");
+    o.shard_index = i;
+    o.shard_count = 2;
+    run_study(study, o);
+    shards.push_back(o.database);
+  }
+  fs::copy_file(shards[0], dir / "copy.sqlite");
+  const fs::path out = dir / "merged.sqlite";
+  for (const auto& inputs : {std::vector<fs::path>{shards[0], shards[0]},
+                             std::vector<fs::path>{shards[0], dir / "." / shards[0].filename()},
+                             std::vector<fs::path>{shards[0], shards[1], dir / "copy.sqlite"}}) {
+    try {
+      merge_study_databases(inputs, out);
+      ADD_FAILURE() << "merged " << inputs.back();
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find(inputs.back().string()), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(out));
+  }
+  const auto r = test::run_wifislam(
+      "study merge " + shards[0].string() + " " + shards[0].string() + " -o " + out.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("given twice"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_EQ(merge_study_databases(shards, out), 2);
+  fs::remove_all(dir);
+}
+
 // Co-linear access points (all on the south corridor's centre line) against scattered ones, on
 // one scene and three seeds: far places (> 12 m) look alike to the Wi-Fi far more often when the
 // APs lie on one line, and the route splits into fewer clusters.

@@ -1,0 +1,169 @@
+// Issue 34, through the command line on a small generated dataset: nothing is written inside an
+// input, `check` refuses what `slam` refuses (unfinished datasets, zero frames, equal stamps),
+// and every bad input is exit 2 naming the file (and line), never exit 3 or a silent pass.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+class EdgeInput : public ::testing::Test {
+ protected:
+  // One dataset for the suite (generating is most of its time); tests edit copies of it.
+  static void SetUpTestSuite() {
+    shared_ = fs::temp_directory_path() / ("wifislam_cli_edge_input_" + std::to_string(::getpid()));
+    fs::remove_all(shared_);
+    fs::create_directories(shared_);
+    test::write_file(shared_ / "tiny.yaml", test::kTinyLoopYaml);
+    generated_ = test::run_wifislam("generate " + (shared_ / "tiny.yaml").string() + " -o " +
+                                        (shared_ / "ds").string() +
+                                        " --fps 2 --max-frames 12 --threads 2 -q",
+                                    shared_);
+  }
+  static void TearDownTestSuite() { fs::remove_all(shared_); }
+  void SetUp() override {
+    ASSERT_EQ(generated_.exit_code, 0) << generated_.err;
+    scratch_ = test::scratch_folder();
+  }
+  void TearDown() override { fs::remove_all(scratch_); }
+  test::CliResult wifislam(const std::string& args) { return test::run_wifislam(args, scratch_); }
+  /// A copy of the generated dataset to edit, named `name` in the scratch folder.
+  fs::path copy(const std::string& name) {
+    const fs::path to = scratch_ / name;
+    fs::copy(shared_ / "ds", to, fs::copy_options::recursive);
+    return to;
+  }
+  /// The copy without its manifest and marker: a plain TUM RGB-D folder, read without checksums.
+  fs::path plain_copy(const std::string& name) {
+    const fs::path to = copy(name);
+    fs::remove(to / "manifest.json");
+    fs::remove(to / ".wifislam-output");
+    return to;
+  }
+  /// Exit 2 with every one of `parts` in the message, and nothing written at `run` (if given).
+  static void expect_refused(const test::CliResult& r, const std::vector<std::string>& parts) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const std::string& part : parts) {
+      EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' in: " << r.err;
+    }
+  }
+  static inline fs::path shared_;
+  static inline test::CliResult generated_;
+  fs::path scratch_;
+};
+
+TEST_F(EdgeInput, SlamNeverWritesItsRunInsideTheDataset) {
+  const fs::path ds = copy("ds");
+  const auto before = test::listing(ds);
+  for (const char* force : {"", " --force"}) {
+    const auto r = wifislam("slam " + ds.string() + " -o " + (ds / "run").string() + force);
+    expect_refused(r, {"inside an input", (ds / "run").string()});
+  }
+  EXPECT_EQ(test::listing(ds), before);
+}
+
+// Before: the 1e308 m positions failed in the plot (exit 3, "cannot create drawing surface", no
+// location) and the repeated line was scored.
+TEST_F(EdgeInput, EvalRefusesANonPhysicalOrRepeatedPoseAtItsLine) {
+  const fs::path trajectory = scratch_ / "traj.txt";
+  const auto pose = [](int s, const char* xy) {
+    return "170000000" + std::to_string(s) + ".000000 " + xy + " 0 0 0 0 1\n";
+  };
+  const fs::path gt = shared_ / "ds";
+  const std::string eval =
+      "eval " + trajectory.string() + " --gt " + gt.string() + " -o " + (scratch_ / "ev").string();
+  test::write_file(trajectory,
+                   pose(0, "0 0") + pose(1, "1e308 1e308") + pose(2, "0 0") + pose(3, "0 0"));
+  expect_refused(wifislam(eval), {trajectory.string() + ":2", "not a physical position"});
+  EXPECT_FALSE(fs::exists(scratch_ / "ev"));
+  test::write_file(trajectory, pose(0, "0 0") + pose(1, "0 0") + pose(1, "0 0") + pose(2, "0 0") +
+                                   pose(3, "0 0"));
+  expect_refused(wifislam(eval), {trajectory.string() + ":3", "not later than the previous line"});
+  EXPECT_FALSE(fs::exists(scratch_ / "ev"));
+}
+
+TEST_F(EdgeInput, CheckRefusesAnUnfinishedDatasetAsSlamDoes) {
+  // What a generate killed at once leaves: the staging folder with its marker, nothing else.
+  const fs::path partial = scratch_ / "sk.partial";
+  fs::create_directories(partial);
+  test::write_file(partial / ".wifislam-output", "");
+  const auto check = wifislam("check " + partial.string());
+  expect_refused(check, {"unfinished dataset"});
+  const auto slam = wifislam("slam " + partial.string() + " -o " + (scratch_ / "run").string());
+  expect_refused(slam, {"unfinished dataset"});
+  // With --no-verify it is read, and holds no frames: still bad input.
+  EXPECT_EQ(wifislam("check --no-verify " + partial.string()).exit_code, 2);
+  // Killed later: lists without a manifest.
+  const fs::path late = copy("late.partial");
+  fs::remove(late / "manifest.json");
+  expect_refused(wifislam("check " + late.string()), {"unfinished dataset"});
+  EXPECT_EQ(wifislam("check --no-verify " + late.string()).exit_code, 0);
+}
+
+TEST_F(EdgeInput, ZeroFramesAreBadInputForCheckAndSlam) {
+  const fs::path empty_assoc = plain_copy("empty_assoc");
+  test::write_file(empty_assoc / "associations.txt", "");
+  const fs::path empty_rgb = plain_copy("empty_rgb");
+  fs::remove(empty_rgb / "associations.txt");
+  test::write_file(empty_rgb / "rgb.txt", "# timestamp filename\n");
+  for (const fs::path& ds : {empty_assoc, empty_rgb}) {
+    for (const char* verify : {"", "--no-verify "}) {
+      expect_refused(wifislam(std::string("check ") + verify + ds.string()), {"no"});
+    }
+    const fs::path run = scratch_ / "run";
+    expect_refused(wifislam("slam " + ds.string() + " -o " + run.string()), {ds.string()});
+    EXPECT_FALSE(fs::exists(run));
+  }
+  expect_refused(wifislam("check " + empty_assoc.string()), {"lists no frames"});
+  expect_refused(wifislam("check " + empty_rgb.string()), {"rgb.txt lists no images"});
+}
+
+TEST_F(EdgeInput, TwoFramesStampedAlikeAreRefusedByCheckAndSlam) {
+  const fs::path ds = copy("twins");
+  const std::string assoc = test::read_file(ds / "associations.txt");
+  std::string::size_type start = 0;
+  while (assoc[start] == '#') start = assoc.find('\n', start) + 1;
+  const std::string first = assoc.substr(start, assoc.find('\n', start) + 1 - start);
+  test::write_file(ds / "associations.txt", assoc.substr(0, start) + first + assoc.substr(start));
+  const std::string line = ds.string() + "/associations.txt:";
+  expect_refused(wifislam("check --no-verify " + ds.string()), {line, "not later"});
+  expect_refused(wifislam("slam --no-verify " + ds.string() + " -o " + (scratch_ / "run").string()),
+                 {line, "not later"});
+  EXPECT_FALSE(fs::exists(scratch_ / "run"));
+}
+
+TEST_F(EdgeInput, AnImageThatIsADeviceOrAFolderIsBadInputAndSoIsAFileForADataset) {
+  const fs::path ds = plain_copy("devices");
+  std::string rgb_image;
+  for (const auto& e : fs::directory_iterator(ds / "rgb")) {
+    rgb_image = e.path().string();
+    break;
+  }
+  ASSERT_FALSE(rgb_image.empty());
+  fs::remove(rgb_image);
+  fs::create_symlink("/dev/zero", rgb_image);
+  expect_refused(wifislam("check " + ds.string()), {rgb_image, "not a regular file"});
+  fs::remove(rgb_image);
+  fs::create_directories(rgb_image);
+  expect_refused(wifislam("check " + ds.string()), {rgb_image, "is a folder, not a PNG image"});
+  // `check FILE`: there, and not a dataset folder.
+  expect_refused(wifislam("check " + (shared_ / "tiny.yaml").string()),
+                 {"not a dataset folder (it is a file)"});
+  EXPECT_EQ(wifislam("check " + (scratch_ / "none").string()).exit_code, 3);
+}
+
+TEST_F(EdgeInput, SetFrontendCannotOverrideFrontend) {
+  const fs::path run = scratch_ / "run";
+  const auto r = wifislam("slam " + (shared_ / "ds").string() +
+                          " --frontend orbslam --set frontend=rtabmap -o " + run.string());
+  expect_refused(r, {"--set", "conflicts with --frontend orbslam"});
+  EXPECT_FALSE(fs::exists(run));
+}
+
+}  // namespace
+}  // namespace wifislam
