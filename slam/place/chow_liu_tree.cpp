@@ -4,14 +4,12 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <fstream>
 #include <sstream>
 
 #include <fmt/format.h>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/kruskal_min_spanning_tree.hpp>
 
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace wifislam::slam::place {
@@ -226,18 +224,6 @@ ChowLiuTree ChowLiuTree::deserialise(const std::string& text, const std::string&
     tree.p_present_parent_absent.push_back(p0);
   }
   return tree;
-}
-
-void ChowLiuTree::save(const std::filesystem::path& path) const {
-  write_file_atomic(path, serialise());
-}
-
-ChowLiuTree ChowLiuTree::load(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path.string() + ": cannot read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return deserialise(text.str(), path.string());
 }
 
 }  // namespace wifislam::slam::place

@@ -16,7 +16,6 @@
 // Roots are the lowest word of their part, children found breadth first: the tree is a function
 // of the data alone.
 
-#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -38,8 +37,7 @@ struct ChowLiuTree {
   /// file reads back to the same doubles and retraining gives the same bytes).
   std::string serialise() const;
   static ChowLiuTree deserialise(const std::string& text, const std::string& source);
-  void save(const std::filesystem::path& path) const;  // atomic
-  static ChowLiuTree load(const std::filesystem::path& path);
+  // Stored inside FAB-MAP's training file (fabmap_training.hpp), not on its own.
 };
 
 inline constexpr double kLowerInfoBound = 0.0005;
