@@ -1,5 +1,6 @@
 #include "slam/place/chow_liu_tree.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
