@@ -48,7 +48,8 @@ std::optional<std::size_t> keyframe_at(const Trajectory& keyframes, Timestamp t)
 }
 
 /// The system's loop closures in our loop_closures.csv columns (see the header).
-std::string convert_loop_closures(const fs::path& file, const Trajectory& keyframes) {
+std::string convert_loop_closures(const fs::path& file, const Trajectory& keyframes,
+                                  const Trajectory& trajectory) {
   const std::vector<TextLine> lines = read_text_lines(file.string());
   std::map<std::string, std::size_t> column;
   std::string out = run_folder::csv_header(run_folder::loop_closures_column::kAll);
@@ -58,7 +59,11 @@ std::string convert_loop_closures(const fs::path& file, const Trajectory& keyfra
     const std::vector<std::string_view> fields = split_fields(line.text, ',');
     const std::string where = fmt::format("{}:{}", file.string(), line.number);
     if (header) {
-      for (std::size_t i = 0; i < fields.size(); ++i) column[std::string(fields[i])] = i;
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (!column.emplace(std::string(fields[i]), i).second) {
+          throw ParseError(where, std::string(fields[i]), "column named twice in the header");
+        }
+      }
       for (const char* needed : {"from_time", "to_time"}) {
         if (!column.count(needed)) throw ParseError(where, needed, "missing column");
       }
@@ -73,7 +78,7 @@ std::string convert_loop_closures(const fs::path& file, const Trajectory& keyfra
       const auto c = column.find(name);
       return c == column.end() ? std::nullopt : std::optional(fields[c->second]);
     };
-    std::size_t index[2] = {0, 0};
+    std::size_t index[2] = {0, 0}, frame[2] = {0, 0};
     for (int end = 0; end < 2; ++end) {
       const char* name = end == 0 ? "from_time" : "to_time";
       const std::optional<Timestamp> t = Timestamp::parse(*field(name));
@@ -85,6 +90,8 @@ std::string convert_loop_closures(const fs::path& file, const Trajectory& keyfra
                                      t->to_tum_string()));
       }
       index[end] = *k;
+      // The frame index counts trajectory poses (keyframes may be a subset of them).
+      frame[end] = keyframe_at(trajectory, *t).value_or(*k);
     }
     const StampedPose& from = keyframes[index[0]];
     const StampedPose& to = keyframes[index[1]];
@@ -110,7 +117,7 @@ std::string convert_loop_closures(const fs::path& file, const Trajectory& keyfra
     const Eigen::Quaterniond q(from_to.linear());
     const Eigen::Vector3d& t = from_to.translation();
     out += fmt::format("{},{},{},{},{},{},{},{},0,{},{},{},{},{},{},{}\n", index[0], index[1],
-                       index[0], index[1], from.time.to_tum_string(), to.time.to_tum_string(), role,
+                       frame[0], frame[1], from.time.to_tum_string(), to.time.to_tum_string(), role,
                        inliers, t.x(), t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
   }
   return out;
@@ -169,7 +176,7 @@ ImportedOutputs import_external_outputs(const ExternalSystem& system, const fs::
   }
   if (!system.loop_closures.empty()) {
     const std::string csv = convert_loop_closures(
-        required_output(system_out, system.loop_closures, "loop closures"), keyframes);
+        required_output(system_out, system.loop_closures, "loop closures"), keyframes, trajectory);
     imported.loop_closures = std::count(csv.begin(), csv.end(), '\n') - 1;
     write_file_atomic(run_dir / run_folder::kLoopClosures, csv);
   }

@@ -105,8 +105,9 @@ ExternalRunResult run_external_system(const ExternalRunRequest& request) {
       result.status = "ok";
     } catch (const Error& e) {
       result.status = std::string("unusable output: ") + e.what();
-      for (const char* f : {run_folder::kTrajectory, run_folder::kKeyframes,
-                            run_folder::kLoopClosures, run_folder::kGraph, run_folder::kTiming}) {
+      for (const char* f :
+           {run_folder::kTrajectory, run_folder::kKeyframes, run_folder::kLoopClosures,
+            run_folder::kGraph, run_folder::kTiming, run_folder::kWifiClusters}) {
         fs::remove(staging / f);  // nothing half-imported looks like a finished run
       }
     }

@@ -112,6 +112,10 @@ void read_outputs(const YamlReader& r, const YAML::Node& outputs, ExternalSystem
         std::pair{"wifi_clusters", &system.wifi_clusters}}) {
     if (outputs[key]) *field = output_path(r, outputs[key], std::string("outputs.") + key);
   }
+  if (!system.graph.empty() && system.keyframes.empty()) {
+    r.fail(outputs["graph"], "outputs.graph",
+           "needs outputs.keyframes too: graph.json numbers the keyframes of keyframes.txt");
+  }
 }
 
 void read_command(const YamlReader& r, const YAML::Node& command, ExternalSystem& system) {

@@ -5,20 +5,18 @@
 //
 //   version: 1
 //   name: opencv_rgbd_odometry
-//   description: ...                                    # optional
+//   description: ...          # optional
 //   command: [/usr/bin/python3, "{system_dir}/opencv_rgbd_odometry.py", "{dataset}", "{out}"]
-//   timeout_s: 3600                                     # optional, default 3600
-//   wifi: false                                         # reads wifi.csv: its Wi-Fi variant runs
-//   export: orbslam2                                    # needed by {rgbd_export}: rtabmap,
-//   orbslam2 outputs:                                            # files it writes, relative to
-//   {out}
-//     trajectory: trajectory.txt                        # TUM, camera-to-map (required)
-//     keyframes: keyframes.txt                          # TUM (optional)
-//     loop_closures: loop_closures.csv                  # accepted closures (optional)
-//     graph: graph.json                                 # our graph.json format (optional)
-//     time_log: time.json                               # {"loop_closure_detection_s": ...}
-//     (optional) wifi_clusters: wifi_clusters.csv                  # our format, Wi-Fi variant only
-//     (optional)
+//   timeout_s: 3600           # optional, default 3600
+//   wifi: false               # reads wifi.csv: its Wi-Fi variant runs
+//   export: orbslam2          # needed by {rgbd_export}: rtabmap or orbslam2
+//   outputs:                  # files it writes, relative to {out}
+//     trajectory: trajectory.txt         # TUM, camera-to-map (required)
+//     keyframes: keyframes.txt           # TUM (optional; required with graph)
+//     loop_closures: loop_closures.csv   # accepted closures (optional)
+//     graph: graph.json                  # our graph.json format (optional)
+//     time_log: time.json                # {"loop_closure_detection_s": ...} (optional)
+//     wifi_clusters: wifi_clusters.csv   # our format, Wi-Fi variant only (optional)
 //
 // The command is a list of arguments, run without a shell (a single string is split at spaces,
 // with '...' or "..." keeping spaces inside one argument). Placeholders, replaced inside every

@@ -32,12 +32,16 @@ double cpu_seconds(const rusage& usage) {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
-/// Waits for `pid` until `deadline`; true when it ended (status and usage filled).
-bool wait_until(pid_t pid, Clock::time_point deadline, int& status, rusage& usage) {
+/// Waits for `pid` until `deadline`; true when it ended (status and usage filled, or `lost` set
+/// when the child cannot be waited for: its status is then unknown, never a success).
+bool wait_until(pid_t pid, Clock::time_point deadline, int& status, rusage& usage, bool& lost) {
   while (true) {
     const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
     if (done == pid) return true;
-    if (done < 0 && errno != EINTR) return true;  // nothing left to wait for
+    if (done < 0 && errno != EINTR) {
+      lost = true;
+      return true;
+    }
     if (Clock::now() >= deadline) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
@@ -55,6 +59,8 @@ std::string ProcessResult::describe(double timeout_s) const {
       return fmt::format("timed out after {:g} s", timeout_s);
     case Status::kNotStarted:
       return "not started: " + error;
+    case Status::kLost:
+      return "exit status lost: " + error;
   }
   return "";
 }
@@ -99,11 +105,11 @@ ProcessResult run_process(const ProcessRequest& request) {
   rusage usage{};
   const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
                                     std::chrono::duration<double>(request.timeout_s));
-  bool timed_out = false;
-  if (!wait_until(pid, deadline, status, usage)) {
+  bool timed_out = false, lost = false;
+  if (!wait_until(pid, deadline, status, usage, lost)) {
     timed_out = true;
     ::kill(-pid, SIGTERM);
-    if (!wait_until(pid, Clock::now() + std::chrono::seconds(2), status, usage)) {
+    if (!wait_until(pid, Clock::now() + std::chrono::seconds(2), status, usage, lost)) {
       ::kill(-pid, SIGKILL);
       ::wait4(pid, &status, 0, &usage);
     }
@@ -113,6 +119,9 @@ ProcessResult run_process(const ProcessRequest& request) {
   result.cpu_s = cpu_seconds(usage);
   if (timed_out) {
     result.status = ProcessResult::Status::kTimedOut;
+  } else if (lost) {
+    result.status = ProcessResult::Status::kLost;
+    result.error = std::string("wait4: ") + std::strerror(errno);
   } else if (WIFEXITED(status)) {
     result.status = ProcessResult::Status::kExited;
     result.exit_code = WEXITSTATUS(status);

@@ -25,6 +25,7 @@ struct ProcessResult {
     kSignalled,   // killed by `signal` (not by us)
     kTimedOut,    // we stopped it after timeout_s
     kNotStarted,  // it could not be started (`error` says why: no such program, not executable)
+    kLost,        // it ran but could not be waited for (`error` says why): never a success
   };
   Status status = Status::kNotStarted;
   int exit_code = -1;

@@ -456,10 +456,10 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
   if (result.ok) {
     try {
       evaluate_job(job, options, out_dir, c);
-    } catch (const ParseError& e) {  // what the system wrote cannot be scored
+    } catch (const Error& e) {  // what the system wrote cannot be scored
       c.status = std::string("not scorable: ") + e.what();
       c.evaluation = {};
-    } catch (const InvalidInputError& e) {
+    } catch (const std::filesystem::filesystem_error& e) {
       c.status = std::string("not scorable: ") + e.what();
       c.evaluation = {};
     }
@@ -522,7 +522,18 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
   result.seeds = options.seeds;
   const std::vector<Setting> settings = expand(options.sweeps);
   for (const Setting& s : settings) result.settings.push_back(label_of(options.settings, s));
-  // Every option combination, front end included, is checked before any dataset is generated.
+  // Every option combination, front end included, is checked before any dataset is generated;
+  // two settings must not share a run folder.
+  std::map<std::string, std::string> label_of_folder;
+  for (const std::string& label : result.settings) {
+    const auto [at, added] = label_of_folder.emplace(folder_of(label), label);
+    if (!added) {
+      throw InvalidInputError(
+          fmt::format("compare: settings '{}' and '{}' would share the run "
+                      "folder '{}'; name one differently",
+                      at->second, label, at->first));
+    }
+  }
   for (const Setting& s : settings) {
     const slam::SlamOptions o = options_for(options, s, true, 1);
     if (const std::optional<std::string> problem = front_end_problem(o.frontend)) {

@@ -30,11 +30,13 @@ class ImageCollector {
         orb_(features(options), intrinsics),
         tracker_(options.wifi) {}
 
-  void frame(const RgbdFrame& frame, const Eigen::Vector2d& position_m, LocalisationData& out) {
+  /// Keeps the frame when the interval has passed; `position_m` is asked only then.
+  template <class PositionOf>
+  void frame(const RgbdFrame& frame, PositionOf position_m, LocalisationData& out) {
     if (last_ns_ && frame.time.ns - *last_ns_ < interval_ns_ - kSlackNs) return;
     last_ns_ = frame.time.ns;
     out.images.push_back(
-        {frame.time, position_m, orb_.extract(frame).descriptors, tracker_.current()});
+        {frame.time, position_m(), orb_.extract(frame).descriptors, tracker_.current()});
   }
   void scan(const WifiScan& scan) { tracker_.observe_scan(scan); }
   void odometry(const OdometryReading& reading) { tracker_.observe_odometry(reading); }
@@ -105,7 +107,9 @@ LocalisationData localisation_data_from_scene(const sim::Scene& scene,
   ImageCollector images(options, resolved.sensors.camera.intrinsics);
   while (auto generated = pipeline.next()) {
     if (const auto* frame = std::get_if<RgbdFrame>(&generated->event)) {
-      images.frame(*frame, generated->camera_to_world.translation().head<2>(), data);
+      const Eigen::Vector2d at = generated->camera_to_world.translation().head<2>();
+      images.frame(
+          *frame, [&] { return at; }, data);
     } else if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
       images.scan(*scan);
       data.pause_scans.push_back(
@@ -139,7 +143,8 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
   ImageCollector images(options, input.stream->intrinsics());
   while (auto event = input.stream->next()) {
     if (const auto* frame = std::get_if<RgbdFrame>(&*event)) {
-      images.frame(*frame, position_at(truth, frame->time, truth_file), data);
+      images.frame(
+          *frame, [&] { return position_at(truth, frame->time, truth_file); }, data);
     } else if (const auto* scan = std::get_if<WifiScan>(&*event)) {
       images.scan(*scan);
       data.pause_scans.push_back({*scan, position_at(truth, scan->time, truth_file)});

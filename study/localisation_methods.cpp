@@ -146,7 +146,11 @@ void run_visual(const Context& c, const FabMap& fabmap, LocalisationResult& out)
 
 void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
   const std::vector<PositionedScan>& scans = c.data.moving_scans;
-  const WifiWords words(scans, c.options.wifi_words);
+  std::vector<PositionedScan> map_scans;  // the words are the access points the map heard
+  for (const PositionedScan& s : scans) {
+    if (s.scan.time < c.split.split_time) map_scans.push_back(s);
+  }
+  const WifiWords words(map_scans, c.options.wifi_words);
   const int visual_words = c.training.tree.word_count();
   std::vector<BinaryObservation> map_wifi;
   for (int m : c.split.map) {

@@ -45,6 +45,9 @@ std::vector<std::string> slam_option_keys() {
 AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::string& key) {
   if (key == "frontend") return AxisKind::kFrontend;
   if (key == "system") return AxisKind::kSystem;
+  if (key == "slam.frontend") {  // one way to sweep front ends, checked as front ends
+    r.fail(key_node, "axes." + key, "sweep front ends with the 'frontend' or 'system' axis");
+  }
   if (key.rfind("slam.", 0) == 0) {
     const auto keys = slam_option_keys();
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) {

@@ -26,6 +26,7 @@ BinaryObservation concatenate(const BinaryObservation& observation, const Binary
   BinaryObservation out = observation;
   for (int word : extra.present) out.present.push_back(offset + word);
   std::sort(out.present.begin(), out.present.end());
+  out.present.erase(std::unique(out.present.begin(), out.present.end()), out.present.end());
   return out;
 }
 

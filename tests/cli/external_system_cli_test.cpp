@@ -197,6 +197,8 @@ TEST_F(ExternalSystemCli, SystemFileMistakesAreLocatedBadInput) {
       {head + "command: [/bin/true]\noutputs: {keyframes: k.txt}\n", "outputs.trajectory"},
       {head + "command: []\noutputs: {trajectory: t.txt}\n", "command"},
       {head + "command: [/bin/true, \"{rgbd_export}\"]\noutputs: {trajectory: t.txt}\n", "export"},
+      {head + "command: [/bin/true]\noutputs: {trajectory: t.txt, graph: g.json}\n",
+       "outputs.graph"},
   };
   for (const Case& c : cases) {
     const test::CliResult r = slam_with_system(c.yaml);
