@@ -20,6 +20,18 @@ const char* to_string(WallMaterial material) {
   return "unknown";
 }
 
+const char* to_string(SpaceKind kind) {
+  switch (kind) {
+    case SpaceKind::kCorridor:
+      return "corridor";
+    case SpaceKind::kArea:
+      return "area";
+    case SpaceKind::kRoom:
+      return "room";
+  }
+  return "unknown";
+}
+
 std::optional<WallMaterial> wall_material_from_string(const std::string& name) {
   for (WallMaterial m : {WallMaterial::kPlasterboard, WallMaterial::kBrick, WallMaterial::kConcrete,
                          WallMaterial::kGlass, WallMaterial::kWoodDoor}) {

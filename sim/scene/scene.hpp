@@ -66,6 +66,38 @@ struct OpenArea {
   std::vector<Pillar> pillars;
 };
 
+/// What a space given as a polygon is (spaces: floor plans imported from real buildings).
+enum class SpaceKind {
+  kCorridor,  // walkable, its walls take its material unless a room is on their other side
+  kArea,      // walkable open space (a hall, a lobby), lowest rank for wall materials
+  kRoom,      // free space the robot does not enter; rooms' walls take the room's material
+};
+const char* to_string(SpaceKind kind);
+
+/// A piece of free space given directly as a simple polygon, as `wifislam import` writes from a
+/// real floor plan. Walls of `building.wall_thickness_m` grow around it as around corridors, so
+/// two spaces meant to share a wall must lie exactly one wall thickness apart.
+struct Space {
+  std::string id;
+  SpaceKind kind = SpaceKind::kRoom;
+  std::vector<Eigen::Vector2d> polygon_m;
+  WallMaterial material = WallMaterial::kBrick;
+  std::string name;  // the plan's own name for it, if any (for people; not used)
+};
+
+/// A doorway through the wall between two spaces, from one jamb to the other along the wall's
+/// centre line. Its opening is one wall thickness deep; a closed door is a wooden leaf in it.
+struct SpaceDoor {
+  Eigen::Vector2d from_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d to_m = Eigen::Vector2d::Zero();
+  bool open = false;
+};
+
+/// A solid block inside free space (a column, a shaft, a stair core), as a simple polygon.
+struct Obstacle {
+  std::vector<Eigen::Vector2d> polygon_m;
+};
+
 struct Building {
   double wall_height_m = 2.8;
   double wall_thickness_m = 0.15;
@@ -143,6 +175,9 @@ struct PauseSpec {
 
 struct Route {
   std::vector<std::string> nodes;  // consecutive nodes must share a corridor
+  /// Instead of nodes: the route as points in walkable space (scenes of imported plans, whose
+  /// spaces have no corridor graph). Legs are straight; corners are rounded as for nodes.
+  std::vector<Eigen::Vector2d> waypoints_m;
   double speed_mps = 0.5;
   double max_yaw_rate_radps = 0.6;
   double turn_radius_m = 0.6;  // corners are rounded with this radius
@@ -247,6 +282,9 @@ struct Scene {
   std::vector<SceneNode> nodes;
   std::vector<Corridor> corridors;
   std::vector<OpenArea> open_areas;
+  std::vector<Space> spaces;
+  std::vector<SpaceDoor> doors;
+  std::vector<Obstacle> obstacles;
   Appearance appearance;
   AccessPoints access_points;
   Route route;

@@ -39,6 +39,7 @@ class KeyCollector {
   void vec2(const char* key, Eigen::Vector2d&, Limits) { add(key); }
   void vec3(const char* key, Eigen::Vector3d&, Limits, Limits) { add(key); }
   void polygon(const char* key, std::vector<Eigen::Vector2d>&, Limits) { add(key); }
+  void points_if_any(const char* key, std::vector<Eigen::Vector2d>&, Limits) { add(key); }
   void text_list(const char* key, std::vector<std::string>&) { add(key); }
   void interval(const char* key, double&, double&, Limits) { add(key); }
   template <class T>
@@ -52,6 +53,10 @@ class KeyCollector {
     T element{};
     KeyCollector inner(out_, path(key) + "[*].");
     schema::visit(inner, element);
+  }
+  template <class T>
+  void list_if_any(const char* key, std::vector<T>& items) {
+    list(key, items);
   }
 
  private:

@@ -165,6 +165,17 @@ class YamlReader {
       }
     }
   }
+  void points_if_any(const char* key, std::vector<Eigen::Vector2d>& out, Limits limits) {
+    if (auto n = fetch(key)) {
+      if (!n->IsSequence() || n->size() < 2) {
+        fail(*n, key, "expected a list of at least 2 [x, y] points, got " + describe(*n));
+      }
+      out.clear();
+      for (std::size_t i = 0; i < n->size(); ++i) {
+        out.push_back(to_vector<2>((*n)[i], fmt::format("{}[{}]", key, i), {limits, limits}));
+      }
+    }
+  }
   void text_list(const char* key, std::vector<std::string>& out) {
     if (auto n = fetch(key)) {
       if (!n->IsSequence()) fail(*n, key, "expected a list of names, got " + describe(*n));
@@ -213,6 +224,10 @@ class YamlReader {
         out.push_back(std::move(item));
       }
     }
+  }
+  template <class T>
+  void list_if_any(const char* key, std::vector<T>& out) {
+    list(key, out);
   }
 
   /// Every key present must have been read by the schema.
@@ -342,6 +357,9 @@ class YamlWriter {
     for (const auto& p : points) write_vector(p);
     out_ << YAML::EndSeq;
   }
+  void points_if_any(const char* key, const std::vector<Eigen::Vector2d>& points, Limits l) {
+    if (!points.empty()) polygon(key, points, l);
+  }
   void text_list(const char* key, const std::vector<std::string>& items) {
     out_ << YAML::Key << key << YAML::Value << YAML::Flow << items;
   }
@@ -364,6 +382,10 @@ class YamlWriter {
       out_ << YAML::EndMap;
     }
     out_ << YAML::EndSeq;
+  }
+  template <class T>
+  void list_if_any(const char* key, std::vector<T>& items) {
+    if (!items.empty()) list(key, items);
   }
 
  private:
@@ -455,7 +477,8 @@ using Adjacency = std::map<std::string, std::vector<std::string>>;
 /// Checks every corridor; returns the corridor graph (node id to the node ids it is joined to).
 Adjacency check_corridors(const Scene& scene, const std::set<std::string>& node_ids,
                           const Locator& locate) {
-  if (scene.corridors.empty()) invalid(locate, "corridors", "a scene needs at least one corridor");
+  if (scene.corridors.empty() && scene.spaces.empty())
+    invalid(locate, "corridors", "a scene needs at least one corridor (or spaces)");
   std::set<std::string> corridor_ids;
   Adjacency adjacency;
   for (std::size_t i = 0; i < scene.corridors.size(); ++i) {
@@ -470,6 +493,7 @@ Adjacency check_corridors(const Scene& scene, const std::set<std::string>& node_
 /// Every node is on a corridor, and the corridor graph is connected: the robot and the radio see
 /// one building.
 void check_graph_connected(const Scene& scene, const Adjacency& adjacency, const Locator& locate) {
+  if (scene.nodes.empty()) return;  // a scene of spaces only
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     if (!adjacency.count(scene.nodes[i].id)) {
       invalid(locate, fmt::format("nodes[{}]", i),
@@ -503,10 +527,32 @@ void check_open_area_ids(const Scene& scene, const Locator& locate) {
   }
 }
 
-/// Route: known nodes, consecutive nodes joined by a corridor.
+/// Spaces have unique ids, doors have a width.
+void check_spaces(const Scene& scene, const Locator& locate) {
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < scene.spaces.size(); ++i) {
+    if (!ids.insert(scene.spaces[i].id).second)
+      invalid(locate, fmt::format("spaces[{}].id", i), "duplicate space id");
+  }
+  for (std::size_t i = 0; i < scene.doors.size(); ++i) {
+    const double width_m = (scene.doors[i].to_m - scene.doors[i].from_m).norm();
+    if (!(width_m >= 0.3 && width_m <= 10.0))
+      invalid(locate, fmt::format("doors[{}].to_m", i),
+              fmt::format("a door is 0.3 to 10 m wide, this one {:.3f} m", width_m));
+  }
+}
+
+/// Route: nodes or waypoints (not both); known nodes, consecutive nodes joined by a corridor.
 void check_route(const Scene& scene, const std::set<std::string>& node_ids, const Locator& locate) {
   const auto& route = scene.route.nodes;
-  if (route.size() < 2) invalid(locate, "route.nodes", "a route needs at least two nodes");
+  if (!scene.route.waypoints_m.empty()) {
+    if (!route.empty())
+      invalid(locate, "route.waypoints_m", "give route.nodes or route.waypoints_m, not both");
+    return;  // the route builder checks that every leg stays in walkable space
+  }
+  if (route.size() < 2)
+    invalid(locate, "route.nodes",
+            "a route needs at least two nodes (or at least two route.waypoints_m)");
   for (std::size_t i = 0; i < route.size(); ++i) {
     if (!node_ids.count(route[i])) {
       invalid(locate, fmt::format("route.nodes[{}]", i), "no node with id '" + route[i] + "'");
@@ -614,6 +660,7 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
   const Adjacency adjacency = check_corridors(scene, node_ids, locate);
   check_graph_connected(scene, adjacency, locate);
   check_open_area_ids(scene, locate);
+  check_spaces(scene, locate);
   check_route(scene, node_ids, locate);
   check_depth_sensor(scene, locate);
   check_color_sensor(scene, locate);

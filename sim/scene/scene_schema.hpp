@@ -10,7 +10,10 @@
 //   vec2(key, Eigen::Vector2d&, Limits), vec3(key, Eigen::Vector3d&, Limits xy, Limits z),
 //   polygon(key, vector<Vector2d>&, Limits),
 //   text_list(key, vector<string>&), interval(key, double& lo, double& hi, Limits),
-//   object(key, T&), list(key, vector<T>&), and `required(key)` to mark the next key mandatory.
+//   object(key, T&), list(key, vector<T>&), and `required(key)` to mark the next key mandatory;
+//   list_if_any(key, vector<T>&) and points_if_any(key, vector<Vector2d>&, Limits) are a list and
+//   a list of at least two points that the writer leaves out when empty (keys added after
+//   scenes were first written, so resolved scenes without them stay byte for byte as they were).
 
 #include <array>
 #include <cstdint>
@@ -112,6 +115,35 @@ void visit(V& v, OpenArea& a) {
 }
 
 template <class V>
+void visit(V& v, Space& s) {
+  v.required();
+  v.text("id", s.id);
+  v.choice("kind", s.kind,
+           Names<SpaceKind>{{SpaceKind::kCorridor, "corridor"},
+                            {SpaceKind::kArea, "area"},
+                            {SpaceKind::kRoom, "room"}});
+  v.required();
+  v.polygon("polygon_m", s.polygon_m, kCoordinateM);
+  v.choice("material", s.material, material_names());
+  v.text("name", s.name);
+}
+
+template <class V>
+void visit(V& v, SpaceDoor& d) {
+  v.required();
+  v.vec2("from_m", d.from_m, kCoordinateM);
+  v.required();
+  v.vec2("to_m", d.to_m, kCoordinateM);
+  v.boolean("open", d.open);
+}
+
+template <class V>
+void visit(V& v, Obstacle& o) {
+  v.required();
+  v.polygon("polygon_m", o.polygon_m, kCoordinateM);
+}
+
+template <class V>
 void visit(V& v, AppearanceThemes& t) {
   v.text("wall", t.wall);
   v.text("door", t.door);
@@ -177,8 +209,8 @@ void visit(V& v, PauseSpec& p) {
 
 template <class V>
 void visit(V& v, Route& r) {
-  v.required();
   v.text_list("nodes", r.nodes);
+  v.points_if_any("waypoints_m", r.waypoints_m, kCoordinateM);
   v.number("speed_mps", r.speed_mps, Limits{0.05, 5.0});
   v.number("max_yaw_rate_radps", r.max_yaw_rate_radps, Limits{0.05, 10.0});
   v.number("turn_radius_m", r.turn_radius_m, Limits{0.0, 20.0});
@@ -282,11 +314,13 @@ void visit(V& v, Scene& s) {
   v.text("description", s.description);
   v.uint64("seed", s.seed);
   v.object("building", s.building);
-  v.required();
+  // A scene has corridors (on nodes) or spaces, or both (validate_scene checks).
   v.list("nodes", s.nodes);
-  v.required();
   v.list("corridors", s.corridors);
   v.list("open_areas", s.open_areas);
+  v.list_if_any("spaces", s.spaces);
+  v.list_if_any("doors", s.doors);
+  v.list_if_any("obstacles", s.obstacles);
   v.object("appearance", s.appearance);
   v.object("access_points", s.access_points);
   v.required();

@@ -45,6 +45,22 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
       for (double x = lo.x() + 0.5 * spacing; x < hi.x(); x += spacing)
         if (ring_contains(area.polygon_m, {x, y})) try_add({x, y}, 0.5 * spacing);
   }
+  // Walkable spaces of imported plans: candidates on a grid of a third of the spacing, centred
+  // on the space's box, kept a spacing apart (a narrow corridor of any shape still gets a row).
+  for (const Space& space : scene.spaces) {
+    if (space.kind == SpaceKind::kRoom) continue;
+    Eigen::Vector2d lo = space.polygon_m[0], hi = space.polygon_m[0];
+    for (const auto& v : space.polygon_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    const Eigen::Vector2d mid = 0.5 * (lo + hi);
+    const double step = spacing / 3;
+    const int nx = static_cast<int>(std::ceil(0.5 * (hi.x() - lo.x()) / step));
+    const int ny = static_cast<int>(std::ceil(0.5 * (hi.y() - lo.y()) / step));
+    for (int j = -ny; j <= ny; ++j)
+      for (int i = -nx; i <= nx; ++i) {
+        const Eigen::Vector2d p = mid + step * Eigen::Vector2d(i, j);
+        if (ring_contains(space.polygon_m, p)) try_add(p, spacing);
+      }
+  }
   for (const Room& room : plan.rooms) {
     Eigen::Vector2d c = Eigen::Vector2d::Zero();
     for (const auto& v : room.polygon_m) c += v;

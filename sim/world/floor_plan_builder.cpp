@@ -155,6 +155,9 @@ void check_building(const Scene& scene) {
 /// The exact polygons the plan is joined from.
 struct ExactPieces {
   std::vector<Polygon> corridors, open_areas, pillars;
+  /// Spaces of kind room (free, not walkable) and the doorways of open space doors, split by
+  /// whether both sides are walkable (then the doorway is walkable too).
+  std::vector<Polygon> space_rooms, room_doorways, walkable_doorways;
   /// Every space grown by the wall thickness: the walls are what of it is not free space.
   std::vector<Polygon> dilated;
 };
@@ -185,7 +188,55 @@ void add_open_area(const Scene& scene, std::size_t i, double wall_thickness_m,
   }
 }
 
-/// Corridors, then open areas, in scene order.
+/// A simple polygon with an area, counter-clockwise, else rejected at `key`.
+Polygon checked_polygon(const Scene& scene, const Polygon2& ring, const std::string& key,
+                        const std::string& what) {
+  Polygon p = exact_polygon(ring);
+  if (ring.size() < 3 || !p.is_simple() || p.area() == 0) {
+    scene.reject(key, fmt::format("{}: the outline crosses or touches itself, or encloses no "
+                                  "area; list the corners once around it, in order",
+                                  what));
+  }
+  if (p.is_clockwise_oriented()) p.reverse_orientation();
+  return p;
+}
+
+/// Whether p lies in a walkable space (corridor or area kind).
+bool in_walkable_space(const Scene& scene, const Eigen::Vector2d& p) {
+  for (const Space& s : scene.spaces)
+    if (s.kind != SpaceKind::kRoom && ring_contains(s.polygon_m, p)) return true;
+  return false;
+}
+
+/// Spaces (walls grown around each like around an open area), obstacles (like pillars) and the
+/// doorways of open doors (one wall thickness to either side of the door's centre line, so they
+/// overlap the spaces on both sides).
+void add_spaces(const Scene& scene, double wall_thickness_m, ExactPieces& pieces) {
+  for (std::size_t i = 0; i < scene.spaces.size(); ++i) {
+    const Space& space = scene.spaces[i];
+    const Polygon p =
+        checked_polygon(scene, space.polygon_m, fmt::format("spaces[{}].polygon_m", i),
+                        fmt::format("space '{}'", space.id));
+    const PolygonWH grown = CGAL::minkowski_sum_2(
+        p, dilation_kernel(wall_thickness_m, is_axis_aligned(space.polygon_m)));
+    pieces.dilated.push_back(grown.outer_boundary());
+    (space.kind == SpaceKind::kRoom ? pieces.space_rooms : pieces.open_areas).push_back(p);
+  }
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
+    pieces.pillars.push_back(checked_polygon(scene, scene.obstacles[i].polygon_m,
+                                             fmt::format("obstacles[{}].polygon_m", i),
+                                             fmt::format("obstacle {}", i)));
+  for (const SpaceDoor& door : scene.doors) {
+    if (!door.open) continue;
+    const OrientedRect r = space_door_rect(door, wall_thickness_m);
+    const Eigen::Vector2d n = r.left() * (0.5 * wall_thickness_m + 0.05);
+    const Eigen::Vector2d c = r.center();
+    const bool walkable = in_walkable_space(scene, c + n) && in_walkable_space(scene, c - n);
+    (walkable ? pieces.walkable_doorways : pieces.room_doorways).push_back(exact_rect(r));
+  }
+}
+
+/// Corridors, then open areas, then spaces, in scene order.
 ExactPieces exact_pieces(const Scene& scene, const PlanLayout& layout, double wall_thickness_m) {
   ExactPieces pieces;
   for (const CorridorLayout& c : layout.corridors) {
@@ -194,6 +245,7 @@ ExactPieces exact_pieces(const Scene& scene, const PlanLayout& layout, double wa
   }
   for (std::size_t i = 0; i < scene.open_areas.size(); ++i)
     add_open_area(scene, i, wall_thickness_m, pieces);
+  add_spaces(scene, wall_thickness_m, pieces);
   return pieces;
 }
 
@@ -247,11 +299,13 @@ KeptRooms keep_rooms(const PlanLayout& layout, double wall_thickness_m, ExactPie
 /// space (corridors and open areas) and walls, and stores them in doubles in the plan.
 void set_plan_regions(const ExactPieces& pieces, const KeptRooms& kept, FloorPlan& plan) {
   std::vector<Polygon> walkable_parts = pieces.corridors;
-  walkable_parts.insert(walkable_parts.end(), pieces.open_areas.begin(), pieces.open_areas.end());
+  for (const auto* part : {&pieces.open_areas, &pieces.walkable_doorways})
+    walkable_parts.insert(walkable_parts.end(), part->begin(), part->end());
   PolygonSet walkable = join_all(walkable_parts);
   std::vector<Polygon> free_parts = walkable_parts;
-  free_parts.insert(free_parts.end(), kept.rooms.begin(), kept.rooms.end());
-  free_parts.insert(free_parts.end(), kept.open_doors.begin(), kept.open_doors.end());
+  for (const auto* part :
+       {&kept.rooms, &kept.open_doors, &pieces.space_rooms, &pieces.room_doorways})
+    free_parts.insert(free_parts.end(), part->begin(), part->end());
   PolygonSet free_space = join_all(free_parts);
   if (!pieces.pillars.empty()) {
     const PolygonSet pillar_set = join_all(pieces.pillars);
@@ -267,13 +321,15 @@ void set_plan_regions(const ExactPieces& pieces, const KeptRooms& kept, FloorPla
 
 /// The robot's space must be one piece.
 void check_walkable_connected(const FloorPlan& plan) {
-  if (plan.walkable.empty()) throw InvalidInputError("the scene has no corridors or open areas");
+  if (plan.walkable.empty())
+    throw InvalidInputError("the scene has no corridors, open areas or walkable spaces");
   if (plan.walkable.size() > 1) {
     const Eigen::Vector2d p = plan.walkable[1].outer[0];
-    throw InvalidInputError(fmt::format(
-        "the corridors and open areas form {} separate pieces (one starts near ({:.2f}, {:.2f})); "
-        "the robot's space must be connected",
-        plan.walkable.size(), p.x(), p.y()));
+    throw InvalidInputError(
+        fmt::format("the corridors, open areas and walkable spaces form {} separate pieces (one "
+                    "starts near ({:.2f}, {:.2f})); "
+                    "the robot's space must be connected",
+                    plan.walkable.size(), p.x(), p.y()));
   }
 }
 
@@ -297,6 +353,54 @@ void add_rooms_and_doors(const Scene& scene, const PlanLayout& layout,
     door.open = cand.door_open;
     door.room_index = static_cast<int>(plan.rooms.size());
     plan.rooms.push_back(std::move(room));
+    plan.doors.push_back(door);
+  }
+}
+
+/// The nearest room space within one wall thickness of p (a door's centre), or -1.
+int room_space_near(const Scene& scene, const Eigen::Vector2d& p, double wall_thickness_m) {
+  int best = -1, room = 0;
+  double best_d = wall_thickness_m + 1e-6;
+  for (const Space& s : scene.spaces) {
+    if (s.kind != SpaceKind::kRoom) continue;
+    double d = ring_contains(s.polygon_m, p) ? 0.0 : 1e300;
+    for (std::size_t k = 0, n = s.polygon_m.size(); k < n; ++k)
+      d = std::min(d, segment_distance_m(p, s.polygon_m[k], s.polygon_m[(k + 1) % n]));
+    if (d < best_d) best_d = d, best = room;
+    ++room;
+  }
+  return best;
+}
+
+/// Rooms of the spaces of kind room, then the space doors, after the corridors' rooms: a door
+/// belongs to the room space it opens into (if any), a room to its first door.
+void add_space_rooms_and_doors(const Scene& scene, FloorPlan& plan) {
+  const int first_room = static_cast<int>(plan.rooms.size());
+  for (const Space& s : scene.spaces) {
+    if (s.kind != SpaceKind::kRoom) continue;
+    Room room;
+    room.polygon_m = s.polygon_m;
+    if (ring_signed_area_m2(room.polygon_m) < 0)
+      std::reverse(room.polygon_m.begin(), room.polygon_m.end());
+    room.material = s.material;
+    plan.rooms.push_back(std::move(room));
+  }
+  const double door_height_m = std::min(2.1, scene.building.wall_height_m - 0.2);
+  for (const SpaceDoor& d : scene.doors) {
+    const OrientedRect r = space_door_rect(d, plan.wall_thickness_m);
+    Door door;
+    door.center_m = r.center();
+    door.along_wall = r.along;
+    door.width_m = r.s1 - r.s0;
+    door.height_m = door_height_m;
+    door.wall_thickness_m = plan.wall_thickness_m;
+    door.open = d.open;
+    const int room = room_space_near(scene, door.center_m, plan.wall_thickness_m);
+    if (room >= 0) {
+      door.room_index = first_room + room;
+      Room& owner = plan.rooms[door.room_index];
+      if (owner.door_index < 0) owner.door_index = static_cast<int>(plan.doors.size());
+    }
     plan.doors.push_back(door);
   }
 }
@@ -326,6 +430,7 @@ FloorPlan build_floor_plan(const Scene& scene) {
   set_plan_regions(pieces, kept, plan);
   check_walkable_connected(plan);
   add_rooms_and_doors(scene, layout, kept.candidates, plan);
+  add_space_rooms_and_doors(scene, plan);
   build_wall_faces(scene, layout, plan);
   plan.lights = place_ceiling_lights(scene, layout, plan);
   set_bounds(plan);

@@ -143,4 +143,16 @@ PlanLayout lay_out_scene(const Scene& scene) {
   return layout;
 }
 
+OrientedRect space_door_rect(const SpaceDoor& door, double wall_thickness_m) {
+  OrientedRect r;
+  r.origin_m = door.from_m;
+  const Eigen::Vector2d d = door.to_m - door.from_m;
+  r.along = d.normalized();
+  r.s0 = 0.0;
+  r.s1 = d.norm();
+  r.l0 = -wall_thickness_m;
+  r.l1 = wall_thickness_m;
+  return r;
+}
+
 }  // namespace wifislam::sim

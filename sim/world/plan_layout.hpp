@@ -54,6 +54,10 @@ struct PlanLayout {
   std::vector<RoomCandidate> rooms;
 };
 
+/// A space door's opening: along the door from its `from_m` jamb, `wall_thickness_m` to either
+/// side of its centre line (deeper than the wall, so it overlaps the spaces on both sides).
+OrientedRect space_door_rect(const SpaceDoor& door, double wall_thickness_m);
+
 /// Lays out corridors and candidate rooms. Throws InvalidInputError for a corridor that names a
 /// missing node or has zero length, or a room row whose door does not fit in its rooms.
 PlanLayout lay_out_scene(const Scene& scene);

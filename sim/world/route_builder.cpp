@@ -65,10 +65,18 @@ struct Sampler {
 
 double wrap_angle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
-}  // namespace
-
-RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
+/// The route's corner points: its nodes' positions, or its waypoints.
+std::vector<Eigen::Vector2d> route_points(const Scene& scene) {
   const Route& route = scene.route;
+  if (!route.waypoints_m.empty()) {
+    if (route.waypoints_m.size() < 2)
+      throw InvalidInputError("route.waypoints_m: a route needs at least two waypoints");
+    for (std::size_t i = 1; i < route.waypoints_m.size(); ++i)
+      if ((route.waypoints_m[i] - route.waypoints_m[i - 1]).norm() < 1e-6)
+        scene.reject(fmt::format("route.waypoints_m[{}]", i),
+                     "the same point as the waypoint before it");
+    return route.waypoints_m;
+  }
   if (route.nodes.size() < 2)
     throw InvalidInputError("route.nodes: a route needs at least two nodes");
   std::vector<Eigen::Vector2d> pts;
@@ -83,6 +91,15 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
           fmt::format("no corridor joins nodes '{}' and '{}'", route.nodes[i - 1], route.nodes[i]));
     pts.push_back(node->position_m);
   }
+  return pts;
+}
+
+}  // namespace
+
+RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
+  const Route& route = scene.route;
+  const std::vector<Eigen::Vector2d> pts = route_points(scene);
+  const bool by_waypoints = !route.waypoints_m.empty();
 
   // Corner geometry: tangent points and arcs, shrunk so two corners never share a leg's length.
   const std::size_t n = pts.size();
@@ -133,13 +150,19 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
     const Eigen::Vector2d& p = sampler.path.points_m[k];
     const int leg = sampler.leg[k];
     const auto where = [&] {  // formatted only for an error: routes have ~20 samples a metre
+      if (by_waypoints)
+        return fmt::format("route leg {} (from waypoint {} to {}), point {} at ({:.2f}, {:.2f}) m",
+                           leg, leg, leg + 1, k, p.x(), p.y());
       return fmt::format("route leg {} (from node '{}' to '{}'), point {} at ({:.2f}, {:.2f}) m",
                          leg, route.nodes[leg], route.nodes[leg + 1], k, p.x(), p.y());
     };
-    // Located at the node the leg leads to.
-    const auto key = [&] { return fmt::format("route.nodes[{}]", leg + 1); };
+    // Located at the node (waypoint) the leg leads to.
+    const auto key = [&] {
+      return by_waypoints ? fmt::format("route.waypoints_m[{}]", leg + 1)
+                          : fmt::format("route.nodes[{}]", leg + 1);
+    };
     if (!regions_contain(plan.walkable, p))
-      scene.reject(key(), where() + ": outside the corridors and open areas");
+      scene.reject(key(), where() + ": outside the corridors, open areas and walkable spaces");
     if (!walls) continue;
     const double d = walls->nearest_within_m(p, clearance);
     if (d < clearance - 1e-9)

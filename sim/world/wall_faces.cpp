@@ -103,7 +103,7 @@ Bounding bounding_of(const Eigen::Vector2d& p, const Scene& scene, const PlanLay
     if (!d.open) continue;
     const Eigen::Vector2d f = p - d.center_m;
     const Eigen::Vector2d n(-d.along_wall.y(), d.along_wall.x());
-    if (std::abs(f.dot(d.along_wall)) <= 0.5 * d.width_m + kTol &&
+    if (d.room_index >= 0 && std::abs(f.dot(d.along_wall)) <= 0.5 * d.width_m + kTol &&
         std::abs(f.dot(n)) <= 0.5 * d.wall_thickness_m + kTol)
       return {3, plan.rooms[d.room_index].material};
   }
@@ -111,8 +111,12 @@ Bounding bounding_of(const Eigen::Vector2d& p, const Scene& scene, const PlanLay
     if (ring_contains(r.polygon_m, p)) return {3, r.material};
   for (const CorridorLayout& c : layout.corridors)
     if (c.rect.contains(p)) return {2, scene.corridors[c.corridor_index].material};
+  for (const Space& s : scene.spaces)
+    if (s.kind == SpaceKind::kCorridor && ring_contains(s.polygon_m, p)) return {2, s.material};
   for (const OpenArea& a : scene.open_areas)
     if (ring_contains(a.polygon_m, p)) return {1, a.material};
+  for (const Space& s : scene.spaces)
+    if (s.kind == SpaceKind::kArea && ring_contains(s.polygon_m, p)) return {1, s.material};
   return {};
 }
 
