@@ -11,6 +11,7 @@ packages=(
   libopencv-dev                          # images, ORB features, RANSAC, PNG
   libeigen3-dev                          # linear algebra, poses
   libcgal-dev libgmp-dev libmpfr-dev     # floor-plan polygon booleans
+  libgdal-dev libproj-dev libgeos-dev    # floor-plan import: GeoJSON/OSM reading, projection, buffers
   libceres-dev                           # pose-graph optimisation
   libyaml-cpp-dev nlohmann-json3-dev     # scene files, results
   libcli11-dev libspdlog-dev libfmt-dev  # command line, logging

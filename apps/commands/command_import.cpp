@@ -1,0 +1,138 @@
+// `wifislam import PLAN -o scene.yaml [--level L] [--format osm-sit|wrld] [--route ...]`: a real
+// floor plan (OSM Simple Indoor Tagging, WRLD indoor maps) -> a scene file of one level.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/core.h>
+#include <fmt/ranges.h>
+
+#include "apps/command_registry.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+#include "floorplan/imported_scene.hpp"
+#include "floorplan/plan_import.hpp"
+#include "sim/scene/scene_loader.hpp"
+
+namespace {
+
+struct ImportArgs {
+  std::string plan_path, output_path, level, format, route, name, attribution;
+  int laps = 2;
+  int access_points = 0;
+  double wall_thickness_m = 0.15;
+};
+
+/// "x,y;x,y;..." in the scene's metres.
+std::vector<Eigen::Vector2d> parse_route(const std::string& text) {
+  std::vector<Eigen::Vector2d> out;
+  std::stringstream points(text);
+  for (std::string point; std::getline(points, point, ';');) {
+    double x = 0, y = 0;
+    char comma = 0, extra = 0;
+    std::stringstream in(point);
+    if (!(in >> x >> comma >> y) || comma != ',' || (in >> extra))
+      throw wifislam::ParseError("--route", "--route",
+                                 fmt::format("expected x,y;x,y;... in metres, got '{}'", point));
+    out.emplace_back(x, y);
+  }
+  if (out.size() < 2)
+    throw wifislam::ParseError("--route", "--route", "a route needs at least two waypoints");
+  return out;
+}
+
+/// The attribution beside the plan (ATTRIBUTION.md), unless given: it must travel with the scene.
+std::vector<std::string> attribution_lines(const ImportArgs& args) {
+  std::vector<std::string> lines;
+  std::string text = args.attribution;
+  if (text.empty()) {
+    const auto file = std::filesystem::path(args.plan_path).parent_path() / "ATTRIBUTION.md";
+    std::ifstream in(file);
+    std::stringstream all;
+    all << in.rdbuf();
+    text = all.str();
+  }
+  std::stringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  while (!lines.empty() && lines.back().empty()) lines.pop_back();
+  return lines;
+}
+
+void run_import(const ImportArgs& args) {
+  using namespace wifislam;
+  check_output_file(args.output_path, {args.plan_path});
+  floorplan::ImportOptions options;
+  if (args.format == "osm-sit") options.format = floorplan::PlanFormat::kOsmSit;
+  if (args.format == "wrld") options.format = floorplan::PlanFormat::kWrld;
+  if (!args.level.empty()) options.level = args.level;
+  options.wall_thickness_m = args.wall_thickness_m;
+  const floorplan::ImportedPlan plan = floorplan::import_plan(args.plan_path, options);
+
+  floorplan::SceneOptions scene_options;
+  scene_options.name = args.name;
+  scene_options.laps = args.laps;
+  if (args.access_points > 0) scene_options.access_points = args.access_points;
+  if (!args.route.empty()) scene_options.route_m = parse_route(args.route);
+  const sim::Scene scene = floorplan::imported_scene(plan, scene_options);
+  const std::string text = floorplan::imported_scene_yaml(plan, scene, attribution_lines(args));
+  sim::load_scene_yaml(text, args.output_path);  // what we write, our loader reads
+  write_file_atomic(args.output_path, text);
+
+  const auto& c = plan.counts;
+  fmt::print("level {} of {} ({}; levels: {})\n", plan.level, plan.source,
+             floorplan::to_string(plan.format), fmt::join(plan.levels, ", "));
+  if (plan.format == floorplan::PlanFormat::kOsmSit)
+    fmt::print("read: {} rooms, {} corridors, {} areas ({} other features skipped)\n", c.rooms,
+               c.corridors, c.areas, c.skipped);
+  else
+    fmt::print(
+        "read: {} walls, {} doors, {} windows ({} other features skipped); {} spaces "
+        "between them\n",
+        c.walls, c.doors, c.windows, c.skipped, c.rooms + c.areas);
+  fmt::print(
+      "scene: {} spaces, {} doors, {} obstacles, walls {:.2f} m; route of {} waypoints "
+      "({} laps); {} access points\n",
+      c.spaces, c.space_doors, c.obstacles, plan.wall_thickness_m, scene.route.waypoints_m.size(),
+      args.laps, scene.access_points.count);
+  for (const std::string& note : plan.notes) fmt::print("note: {}\n", note);
+  fmt::print("wrote {}\n", args.output_path);
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(import, 15) {
+  auto args = std::make_shared<ImportArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "import",
+      "Import one level of a real floor plan into a scene file.\n"
+      "Reads OpenStreetMap Simple Indoor Tagging (GeoJSON or .osm XML: indoor=room|corridor|area\n"
+      "polygons with level=*) or the WRLD indoor map format (a level's GeoJSON, with main.json\n"
+      "beside it for --level), projects lon/lat to metres (transverse Mercator at the plan's\n"
+      "centre), gives every wall one thickness, infers doors where the plan has none, and plans\n"
+      "a route that loops through the corridors twice. docs/real_buildings/README.md has details.");
+  app->add_option("plan", args->plan_path, "Plan file (GeoJSON or .osm; WRLD: a level's GeoJSON)")
+      ->required();
+  app->add_option("-o,--output", args->output_path, "Scene file to write (YAML)")->required();
+  app->add_option("--level", args->level,
+                  "Level to import (OSM level=* value; WRLD level name from main.json). "
+                  "Default: the lowest level with corridors (OSM), the given file (WRLD)");
+  app->add_option("--format", args->format, "Plan format (default: from the file's contents)")
+      ->check(CLI::IsMember({"osm-sit", "wrld"}));
+  app->add_option("--route", args->route,
+                  "Waypoints x,y;x,y;... in the scene's metres, visited in order (default: a "
+                  "planned tour of the corridors, or of the plan's navigation paths)");
+  app->add_option("--laps", args->laps, "Times the route goes round its loop")
+      ->check(CLI::Range(1, 10));
+  app->add_option("--access-points", args->access_points,
+                  "Access points (placed in rooms); default one per 100 m^2 of floor, at least 4")
+      ->check(CLI::Range(1, 1000));
+  app->add_option("--wall-thickness", args->wall_thickness_m,
+                  "Wall thickness in metres for OSM plans (WRLD measures its own)")
+      ->check(CLI::Range(0.05, 0.5));
+  app->add_option("--name", args->name, "Scene name (default: from the file name and level)");
+  app->add_option(
+      "--attribution", args->attribution,
+      "Attribution text for the scene header (default: ATTRIBUTION.md beside the plan)");
+  app->callback([args] { run_import(*args); });
+}

@@ -1,0 +1,82 @@
+#include "floorplan/imported_scene.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "floorplan/route_planner.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/world/floor_plan_builder.hpp"
+#include "sim/world/plan_queries.hpp"
+#include "sim/world/route_builder.hpp"
+
+namespace wifislam::floorplan {
+
+namespace {
+
+std::string default_name(const ImportedPlan& plan) {
+  std::string stem = std::filesystem::path(plan.source).stem().string();
+  std::string name;
+  for (char c : stem + "_level_" + plan.level)
+    name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
+  return name;
+}
+
+}  // namespace
+
+sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options) {
+  sim::Scene scene;
+  scene.name = options.name.empty() ? default_name(plan) : options.name;
+  scene.description =
+      fmt::format("Level {} of {} ({} plan), imported by wifislam import.", plan.level,
+                  std::filesystem::path(plan.source).filename().string(), to_string(plan.format));
+  scene.seed = options.seed;
+  scene.building.wall_height_m = options.wall_height_m;
+  scene.building.wall_thickness_m = plan.wall_thickness_m;
+  scene.spaces = plan.spaces;
+  scene.doors = plan.doors;
+  scene.obstacles = plan.obstacles;
+  // Corners rounded tighter than in our corridor scenes: real corridors meet doors and jogs.
+  scene.route.turn_radius_m = 0.3;
+  scene.route.min_wall_clearance_m = 0.3;
+
+  const sim::FloorPlan floor_plan = sim::build_floor_plan(scene);
+  const double free_m2 = sim::regions_area_m2(floor_plan.free_space);
+  scene.access_points.placement = sim::ApPlacement::kRooms;
+  scene.access_points.count =
+      options.access_points.value_or(std::max(4, static_cast<int>(std::lround(free_m2 / 100.0))));
+
+  TourOptions tour;
+  tour.laps = options.laps;
+  std::vector<Eigen::Vector2d> visit = options.route_m;
+  const bool keep_order = !visit.empty();
+  if (!keep_order)
+    for (const Ring& path : plan.paths_m) visit.insert(visit.end(), path.begin(), path.end());
+  scene.route.waypoints_m = plan_tour(floor_plan, visit, tour, keep_order);
+  sim::build_route(scene, floor_plan);  // the same check generate makes
+  return scene;
+}
+
+std::string imported_scene_yaml(const ImportedPlan& plan, const sim::Scene& scene,
+                                const std::vector<std::string>& attribution_lines) {
+  std::ostringstream out;
+  out << fmt::format("# {}: level {} of {}\n", scene.name, plan.level, plan.source);
+  out << fmt::format(
+      "# Imported by `wifislam import` ({} format; docs/real_buildings/README.md says "
+      "what is inferred).\n",
+      to_string(plan.format));
+  out << fmt::format(
+      "# Local frame: {} (lon {:.7f}, lat {:.7f} is the origin; x east, y north, "
+      "metres).\n",
+      plan.projection, plan.centre_lon_lat_deg.x(), plan.centre_lon_lat_deg.y());
+  for (const std::string& note : plan.notes) out << "# Note: " << note << ".\n";
+  if (!attribution_lines.empty()) {
+    out << "#\n# Source data attribution (keep it with this file and anything derived from it):\n";
+    for (const std::string& line : attribution_lines) out << "#   " << line << "\n";
+  }
+  out << sim::resolved_scene_yaml(scene);
+  return out.str();
+}
+
+}  // namespace wifislam::floorplan

@@ -1,0 +1,104 @@
+#include "floorplan/plan_features.hpp"
+
+#include <gdal.h>
+#include <ogrsf_frmts.h>
+
+#include <memory>
+#include <regex>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+
+namespace wifislam::floorplan {
+
+namespace {
+
+Ring read_line(const OGRSimpleCurve& curve) {
+  Ring out;
+  for (int i = 0; i < curve.getNumPoints(); ++i) out.emplace_back(curve.getX(i), curve.getY(i));
+  if (out.size() > 1 && out.front() == out.back() && curve.get_IsClosed()) out.pop_back();
+  return out;
+}
+
+void collect(const OGRGeometry* g, PlanFeature& feature) {
+  if (g == nullptr) return;
+  switch (wkbFlatten(g->getGeometryType())) {
+    case wkbPolygon: {
+      const auto* poly = g->toPolygon();
+      if (poly->getExteriorRing() == nullptr) return;
+      PolygonRings rings;
+      rings.outer = read_line(*poly->getExteriorRing());
+      for (int i = 0; i < poly->getNumInteriorRings(); ++i)
+        rings.holes.push_back(read_line(*poly->getInteriorRing(i)));
+      feature.polygons_lon_lat.push_back(std::move(rings));
+      return;
+    }
+    case wkbLineString:
+      feature.lines_lon_lat.push_back(read_line(*g->toLineString()));
+      return;
+    case wkbMultiPolygon:
+    case wkbMultiLineString:
+    case wkbGeometryCollection:
+      for (const OGRGeometry* part : *g->toGeometryCollection()) collect(part, feature);
+      return;
+    default:
+      return;  // points (door nodes without geometry of their own) carry nothing we use
+  }
+}
+
+/// GDAL's OSM driver keeps the tags it has no column for in one hstore text, `"k"=>"v","k2"=>"v2"`.
+void add_other_tags(const std::string& hstore, std::map<std::string, std::string>& tags) {
+  static const std::regex pair(R"re("((?:[^"\\]|\\.)*)"=>"((?:[^"\\]|\\.)*)")re");
+  for (auto it = std::sregex_iterator(hstore.begin(), hstore.end(), pair);
+       it != std::sregex_iterator(); ++it)
+    tags.emplace((*it)[1].str(), (*it)[2].str());
+}
+
+struct DatasetCloser {
+  void operator()(GDALDataset* d) const { GDALClose(d); }
+};
+
+}  // namespace
+
+std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    throw IoError(fmt::format("{}: no such plan file", file.string()));
+  GDALAllRegister();
+  CPLErrorReset();
+  std::unique_ptr<GDALDataset, DatasetCloser> dataset(
+      GDALDataset::Open(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR,
+                        nullptr, nullptr, nullptr));
+  if (!dataset) {
+    const std::string why = CPLGetLastErrorMsg();
+    throw ParseError(file.string(), "",
+                     "GDAL cannot read it as a vector floor plan (GeoJSON or OSM XML)" +
+                         (why.empty() ? std::string() : ": " + why));
+  }
+  std::vector<PlanFeature> features;
+  for (OGRLayer* layer : dataset->GetLayers()) {
+    int index = 0;
+    for (const auto& f : *layer) {
+      PlanFeature feature;
+      for (const auto& field : *f) {
+        if (field.IsNull() || field.IsUnset()) continue;
+        feature.tags[field.GetName()] = field.GetAsString();
+      }
+      if (auto other = feature.tags.find("other_tags"); other != feature.tags.end())
+        add_other_tags(other->second, feature.tags);
+      if (auto osm_id = feature.tags.find("osm_id"); osm_id != feature.tags.end())
+        feature.tags.emplace("@id", osm_id->second);
+      const std::string id = feature.tag("@id").empty() ? feature.tag("id") : feature.tag("@id");
+      feature.where = fmt::format("{}: feature {}{}", file.string(), index,
+                                  id.empty() ? std::string() : " (" + id + ")");
+      collect(f->GetGeometryRef(), feature);
+      features.push_back(std::move(feature));
+      ++index;
+    }
+  }
+  return features;
+}
+
+}  // namespace wifislam::floorplan

@@ -1,0 +1,234 @@
+// The WRLD indoor map format (github.com/wrld3d/wrld-indoor-maps-api, FORMAT.md): a main.json
+// listing the levels, one GeoJSON per level whose features have a `type`: building_outline,
+// wall, window, door (all polygons with their real thickness), room, stairs, ... and optional
+// `<level>-paths.geojson` navigation paths. Rooms are mostly implicit (the space between walls).
+//
+// Here: free space = the level's outline minus walls, windows and doors; each piece of it is a
+// space (an area if at least 4 m^2, else a room: closets and shafts). Space partition gives every
+// wall one thickness, the median of the file's walls (2 x area / perimeter of each wall polygon).
+// Each door polygon becomes an open door on the shared wall nearest its centre and parallel to
+// its long axis (the plan's paths go through doors). Windows are wall here: the scene's walls
+// take their space's material, so a glass pane is not told apart (noted in the docs).
+
+#include <algorithm>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+#include <nlohmann/json.hpp>
+
+#include "core/error.hpp"
+#include "floorplan/local_projection.hpp"
+#include "floorplan/plan_import.hpp"
+
+namespace wifislam::floorplan {
+
+namespace {
+
+struct LevelFile {
+  std::string name;
+  std::filesystem::path file;
+};
+
+/// The levels of main.json, in z order.
+std::vector<LevelFile> read_main_json(const std::filesystem::path& main_json) {
+  std::ifstream in(main_json);
+  if (!in) throw IoError(main_json.string() + ": cannot read");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw ParseError(main_json.string(), "", std::string("not JSON: ") + e.what());
+  }
+  if (!j.contains("levels") || !j["levels"].is_array())
+    throw ParseError(main_json.string(), "levels", "a WRLD main.json lists its levels");
+  std::vector<std::pair<double, LevelFile>> levels;
+  for (const auto& l : j["levels"]) {
+    if (!l.contains("filename") || !l.contains("name"))
+      throw ParseError(main_json.string(), "levels", "each level needs name and filename");
+    levels.push_back({l.value("z_order", 0.0),
+                      {l["name"].get<std::string>(),
+                       main_json.parent_path() / l["filename"].get<std::string>()}});
+  }
+  std::stable_sort(levels.begin(), levels.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<LevelFile> out;
+  for (auto& [z, l] : levels) out.push_back(std::move(l));
+  return out;
+}
+
+double median_wall_thickness_m(const GeosContext& geos, const std::vector<PolygonRings>& walls) {
+  std::vector<double> t;
+  for (const PolygonRings& w : walls) {
+    const Geometry g = geos.polygon(w);
+    const double perimeter = g.boundary().length_m();
+    if (perimeter > 0) t.push_back(2 * g.area_m2() / perimeter);
+  }
+  if (t.empty()) return 0.15;
+  std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
+  return std::clamp(std::round(t[t.size() / 2] * 100) / 100, 0.08, 0.4);
+}
+
+/// Centre, unit long axis and length of a door polygon (principal axis of its corners).
+struct DoorShape {
+  Eigen::Vector2d centre, axis;
+  double length_m;
+};
+
+DoorShape door_shape(const Ring& ring) {
+  Eigen::Vector2d c = Eigen::Vector2d::Zero();
+  for (const auto& p : ring) c += p;
+  c /= static_cast<double>(ring.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const auto& p : ring) cov += (p - c) * (p - c).transpose();
+  const Eigen::Vector2d axis(std::cos(0.5 * std::atan2(2 * cov(0, 1), cov(0, 0) - cov(1, 1))),
+                             std::sin(0.5 * std::atan2(2 * cov(0, 1), cov(0, 0) - cov(1, 1))));
+  double lo = 1e300, hi = -1e300;
+  for (const auto& p : ring)
+    lo = std::min(lo, (p - c).dot(axis)), hi = std::max(hi, (p - c).dot(axis));
+  return {c + 0.5 * (lo + hi) * axis, axis, hi - lo};
+}
+
+/// An open door on the shared wall nearest the door polygon's centre (within 0.6 m) and
+/// parallel to its long axis.
+std::optional<PlacedDoor> place_door(const Ring& door_ring, const Partition& partition) {
+  const DoorShape shape = door_shape(door_ring);
+  const SharedWall* best = nullptr;
+  double best_d = 0.6;
+  for (const SharedWall& w : partition.shared_walls) {
+    const Eigen::Vector2d d = (w.to_m - w.from_m).normalized();
+    if (std::abs(d.dot(shape.axis)) < 0.9) continue;
+    const double s = std::clamp((shape.centre - w.from_m).dot(d), 0.0, w.length_m());
+    const double dist = (w.from_m + s * d - shape.centre).norm();
+    if (dist < best_d) best_d = dist, best = &w;
+  }
+  if (best == nullptr || best->length_m() < 0.6) return std::nullopt;
+  const Eigen::Vector2d d = (best->to_m - best->from_m).normalized();
+  const double width = std::clamp(shape.length_m, 0.6, std::min(3.0, best->length_m()));
+  const double s =
+      std::clamp((shape.centre - best->from_m).dot(d), 0.5 * width, best->length_m() - 0.5 * width);
+  PlacedDoor door;
+  door.a = best->a;
+  door.b = best->b;
+  door.door.from_m = best->from_m + (s - 0.5 * width) * d;
+  door.door.to_m = best->from_m + (s + 0.5 * width) * d;
+  door.door.open = true;
+  return door;
+}
+
+}  // namespace
+
+ImportedPlan import_wrld(const std::filesystem::path& plan_file,
+                         const std::vector<PlanFeature>& given_features,
+                         const ImportOptions& options) {
+  ImportedPlan plan;
+  plan.format = PlanFormat::kWrld;
+  plan.source = plan_file.string();
+  // The level file: the one given, or (main.json beside it) the level asked for.
+  std::filesystem::path level_file = plan_file;
+  std::vector<PlanFeature> features = given_features;
+  const std::filesystem::path main_json = plan_file.parent_path() / "main.json";
+  std::vector<LevelFile> levels;
+  if (std::filesystem::exists(main_json)) levels = read_main_json(main_json);
+  for (const LevelFile& l : levels) plan.levels.push_back(l.name);
+  const auto this_level = std::find_if(levels.begin(), levels.end(), [&](const LevelFile& l) {
+    return std::filesystem::equivalent(l.file, plan_file);
+  });
+  plan.level = this_level != levels.end() ? this_level->name : plan_file.stem().string();
+  if (options.level && *options.level != plan.level) {
+    const auto wanted = std::find_if(levels.begin(), levels.end(),
+                                     [&](const LevelFile& l) { return l.name == *options.level; });
+    if (wanted == levels.end())
+      throw ParseError(plan.source, "--level",
+                       fmt::format("no level '{}' {}", *options.level,
+                                   levels.empty() ? std::string("(no main.json beside the plan)")
+                                                  : fmt::format("in main.json; its levels: {}",
+                                                                fmt::join(plan.levels, ", "))));
+    level_file = wanted->file;
+    features = read_plan_features(level_file);
+    plan.level = wanted->name;
+  }
+
+  plan.centre_lon_lat_deg = plan_centre_lon_lat(features);
+  const LocalProjection projection(plan.centre_lon_lat_deg.x(), plan.centre_lon_lat_deg.y());
+  plan.projection = projection.proj_definition();
+  const GeosContext geos;
+
+  std::vector<PolygonRings> outlines, walls, solids, doors;
+  for (const PlanFeature& f : features) {
+    const std::string type = f.tag("type");
+    if (type != "building_outline" && type != "wall" && type != "window" && type != "door") {
+      ++plan.counts.skipped;
+      continue;
+    }
+    std::vector<PolygonRings> polygons = projected_polygons(geos, f, projection);
+    if (type == "building_outline")
+      outlines.insert(outlines.end(), polygons.begin(), polygons.end());
+    if (type == "wall")
+      ++plan.counts.walls, walls.insert(walls.end(), polygons.begin(), polygons.end());
+    if (type == "window") ++plan.counts.windows;
+    if (type == "door")
+      ++plan.counts.doors, doors.insert(doors.end(), polygons.begin(), polygons.end());
+    if (type != "building_outline") solids.insert(solids.end(), polygons.begin(), polygons.end());
+  }
+  if (outlines.empty())
+    throw ParseError(level_file.string(), "", "no building_outline polygon on this level");
+  plan.wall_thickness_m = median_wall_thickness_m(geos, walls);
+
+  std::vector<Geometry> parts;
+  std::vector<const Geometry*> outline_ptrs, solid_ptrs;
+  for (const PolygonRings& p : outlines) parts.push_back(geos.polygon(p));
+  for (const Geometry& g : parts) outline_ptrs.push_back(&g);
+  std::vector<Geometry> solid_parts;
+  for (const PolygonRings& p : solids) solid_parts.push_back(geos.polygon(p));
+  for (const Geometry& g : solid_parts) solid_ptrs.push_back(&g);
+  const Geometry free = geos.union_all(outline_ptrs).minus(geos.union_all(solid_ptrs));
+
+  std::vector<SpaceInput> inputs;
+  for (PolygonRings& p : free.polygons()) {
+    // Pillars and wall islands inside a space stay solid blocks.
+    for (Ring& hole : p.holes) plan.obstacles.push_back({std::move(hole)});
+    p.holes.clear();
+    SpaceInput in;
+    const double area = geos.polygon(p).area_m2();
+    if (area < 0.5) continue;
+    in.kind = area >= 4.0 ? sim::SpaceKind::kArea : sim::SpaceKind::kRoom;
+    in.id = fmt::format("space-{}", inputs.size());
+    in.material = sim::WallMaterial::kBrick;
+    in.polygon_m = std::move(p);
+    inputs.push_back(std::move(in));
+  }
+  PartitionOptions partition_options;
+  partition_options.wall_thickness_m = plan.wall_thickness_m;
+  const Partition partition = partition_spaces(geos, inputs, partition_options);
+  std::vector<PlacedDoor> placed;
+  for (const PolygonRings& d : doors) {
+    if (auto door = place_door(d.outer, partition))
+      placed.push_back(*door);
+    else
+      ++plan.counts.doors_not_placed;
+  }
+  plan.counts.areas = static_cast<int>(std::count_if(
+      inputs.begin(), inputs.end(), [](const auto& i) { return i.kind == sim::SpaceKind::kArea; }));
+  plan.counts.rooms = static_cast<int>(inputs.size()) - plan.counts.areas;
+  plan.notes.push_back(fmt::format(
+      "walls {:.2f} m thick (the median of the level's {} wall polygons); {} of {} door polygons "
+      "placed as open doors on a shared wall",
+      plan.wall_thickness_m, plan.counts.walls, placed.size(), plan.counts.doors));
+
+  // Navigation paths of this level, if the plan has them.
+  const std::filesystem::path paths_file =
+      level_file.parent_path() / (level_file.stem().string() + "-paths.geojson");
+  if (std::filesystem::exists(paths_file)) {
+    for (const PlanFeature& f : read_plan_features(paths_file))
+      for (const Ring& line : f.lines_lon_lat) {
+        Ring m;
+        for (const auto& p : line) m.push_back(projection.to_local_m(p));
+        plan.paths_m.push_back(std::move(m));
+      }
+  }
+  finish_plan(inputs, partition, placed, plan);
+  return plan;
+}
+
+}  // namespace wifislam::floorplan
