@@ -1,0 +1,95 @@
+// `wifislam import` refuses bad plans with a located message, exit 2 and nothing written: a ring
+// that crosses itself, a level the plan does not have, a file GDAL cannot read, a plan with no
+// usable polygon.
+#include <gtest/gtest.h>
+
+#include "tests/cli/cli_run.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+const fs::path kPlans = fs::path(WIFISLAM_SCENES_DIR).parent_path() / "assets" / "floorplans";
+
+std::string feature(const std::string& indoor, const std::string& ring) {
+  return R"({"type":"Feature","properties":{"@id":"way/7","indoor":")" + indoor +
+         R"(","level":"1"},"geometry":{"type":"Polygon","coordinates":[)" + ring + "]}}";
+}
+
+std::string collection(const std::vector<std::string>& features) {
+  std::string out = R"({"type":"FeatureCollection","features":[)";
+  for (std::size_t i = 0; i < features.size(); ++i) out += (i ? "," : "") + features[i];
+  return out + "]}";
+}
+
+class ImportCli : public ::testing::Test {
+ protected:
+  void SetUp() override { scratch_ = test::scratch_folder(); }
+  void TearDown() override { fs::remove_all(scratch_); }
+  void expect_refused(const std::string& args, const std::vector<std::string>& parts) {
+    const test::CliResult r =
+        test::run_wifislam(args + " -o " + (scratch_ / "out.yaml").string(), scratch_);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    for (const std::string& part : parts) EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(scratch_ / "out.yaml"));
+  }
+  fs::path scratch_;
+};
+
+TEST_F(ImportCli, SelfIntersectingRingIsRefusedAtItsFeature) {
+  // A bow tie: the ring crosses itself.
+  const std::string bow_tie =
+      "[[-96.9272,19.5413],[-96.9270,19.5415],[-96.9270,19.5413],[-96.9272,19.5415],"
+      "[-96.9272,19.5413]]";
+  test::write_file(scratch_ / "bad.geojson", collection({feature("corridor", bow_tie)}));
+  expect_refused("import " + (scratch_ / "bad.geojson").string(),
+                 {"bad.geojson: feature 0 (way/7)", "not a valid polygon", "Self-intersection"});
+}
+
+TEST_F(ImportCli, MissingLevelNamesTheLevelsThereAre) {
+  expect_refused("import " +
+                     (kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
+                     " --level 7",
+                 {"no level '7'", "its levels: 1, 2"});
+  expect_refused("import " +
+                     (kPlans / "westport_house_wrld" / "westport-house-floor-2.geojson").string() +
+                     " --level 9",
+                 {"no level '9'", "G, 1, 2, 3, 4, 5, 6"});
+}
+
+TEST_F(ImportCli, UnreadableFileIsRefusedNamingIt) {
+  test::write_file(scratch_ / "garbage.geojson", "this is not { a plan");
+  expect_refused("import " + (scratch_ / "garbage.geojson").string(),
+                 {"garbage.geojson", "GDAL cannot read it"});
+}
+
+TEST_F(ImportCli, PlanWithoutUsablePolygonIsRefused) {
+  const std::string square =
+      "[[-96.9272,19.5413],[-96.9270,19.5413],[-96.9270,19.5415],[-96.9272,19.5415],"
+      "[-96.9272,19.5413]]";
+  // Only a room: no corridor or area, so no level with walkable space.
+  test::write_file(scratch_ / "rooms.geojson", collection({feature("room", square)}));
+  expect_refused("import " + (scratch_ / "rooms.geojson").string(),
+                 {"rooms.geojson", "no indoor=corridor or indoor=area"});
+}
+
+TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
+  const fs::path scene = scratch_ / "fei.yaml";
+  const test::CliResult imported = test::run_wifislam(
+      "import " + (kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
+          " --level 2 -o " + scene.string(),
+      scratch_);
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  EXPECT_NE(test::read_file(scene).find("OpenStreetMap contributors"), std::string::npos)
+      << "the ODbL attribution travels with the scene";
+  const test::CliResult generated =
+      test::run_wifislam("generate " + scene.string() + " -o " + (scratch_ / "ds").string() +
+                             " --fps 1 --max-frames 6 --threads 2 -q",
+                         scratch_);
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  EXPECT_TRUE(fs::exists(scratch_ / "ds" / "groundtruth.txt"));
+  EXPECT_TRUE(fs::exists(scratch_ / "ds" / "wifi.csv"));
+}
+
+}  // namespace
+}  // namespace wifislam
