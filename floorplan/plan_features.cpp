@@ -67,6 +67,12 @@ std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, ec))
     throw IoError(fmt::format("{}: no such plan file", file.string()));
   GDALAllRegister();
+  // GDAL's warnings (an unclosed ring it closes itself) would go to stderr unasked; its errors
+  // still reach CPLGetLastErrorMsg and our message.
+  CPLPushErrorHandler(CPLQuietErrorHandler);
+  struct PopHandler {
+    ~PopHandler() { CPLPopErrorHandler(); }
+  } pop;
   CPLErrorReset();
   std::unique_ptr<GDALDataset, DatasetCloser> dataset(
       GDALDataset::Open(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR,

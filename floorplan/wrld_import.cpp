@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -30,8 +31,13 @@ struct LevelFile {
   std::filesystem::path file;
 };
 
-/// The levels of main.json, in z order.
-std::vector<LevelFile> read_main_json(const std::filesystem::path& main_json) {
+struct MainJson {
+  std::vector<LevelFile> levels;                // in z order
+  std::optional<Eigen::Vector2d> location_deg;  // the building's point, lon/lat
+};
+
+/// The levels of main.json, in z order, and the building's location.
+MainJson read_main_json(const std::filesystem::path& main_json) {
   std::ifstream in(main_json);
   if (!in) throw IoError(main_json.string() + ": cannot read");
   nlohmann::json j;
@@ -52,8 +58,14 @@ std::vector<LevelFile> read_main_json(const std::filesystem::path& main_json) {
   }
   std::stable_sort(levels.begin(), levels.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<LevelFile> out;
-  for (auto& [z, l] : levels) out.push_back(std::move(l));
+  MainJson out;
+  for (auto& [z, l] : levels) out.levels.push_back(std::move(l));
+  const auto& location = j.contains("location") ? j["location"] : nlohmann::json();
+  if (location.is_object() && location.contains("coordinates") &&
+      location["coordinates"].is_array() && location["coordinates"].size() == 2 &&
+      location["coordinates"][0].is_number() && location["coordinates"][1].is_number())
+    out.location_deg = Eigen::Vector2d(location["coordinates"][0].get<double>(),
+                                       location["coordinates"][1].get<double>());
   return out;
 }
 
@@ -128,8 +140,9 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
   std::filesystem::path level_file = plan_file;
   std::vector<PlanFeature> features = given_features;
   const std::filesystem::path main_json = plan_file.parent_path() / "main.json";
-  std::vector<LevelFile> levels;
-  if (std::filesystem::exists(main_json)) levels = read_main_json(main_json);
+  MainJson building;
+  if (std::filesystem::exists(main_json)) building = read_main_json(main_json);
+  const std::vector<LevelFile>& levels = building.levels;
   for (const LevelFile& l : levels) plan.levels.push_back(l.name);
   const auto this_level = std::find_if(levels.begin(), levels.end(), [&](const LevelFile& l) {
     return std::filesystem::equivalent(l.file, plan_file);
@@ -149,7 +162,8 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
     plan.level = wanted->name;
   }
 
-  plan.centre_lon_lat_deg = plan_centre_lon_lat(features);
+  // Every level of a building in one frame: centred on main.json's location when it has one.
+  plan.centre_lon_lat_deg = building.location_deg.value_or(plan_centre_lon_lat(features));
   const LocalProjection projection(plan.centre_lon_lat_deg.x(), plan.centre_lon_lat_deg.y());
   plan.projection = projection.proj_definition();
   const GeosContext geos;
