@@ -156,11 +156,7 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
     const bool path_way = !f.lines_lon_lat.empty() &&
                           (f.tag("highway") == "corridor" || f.tag("highway") == "footway");
     if (path_way) {
-      for (const Ring& line : f.lines_lon_lat) {
-        Ring m;
-        for (const auto& p : line) m.push_back(projection.to_local_m(p));
-        plan.paths_m.push_back(std::move(m));
-      }
+      add_projected_lines(f, projection, plan.paths_m);
       continue;
     }
     if (!kind || f.polygons_lon_lat.empty()) {

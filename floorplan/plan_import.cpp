@@ -63,6 +63,15 @@ std::vector<PolygonRings> projected_polygons(const GeosContext& geos, const Plan
   return out;
 }
 
+void add_projected_lines(const PlanFeature& feature, const LocalProjection& projection,
+                         std::vector<Ring>& out) {
+  for (const Ring& line : feature.lines_lon_lat) {
+    Ring m;
+    for (const auto& p : line) m.push_back(projection.to_local_m(p));
+    out.push_back(std::move(m));
+  }
+}
+
 ImportedPlan import_plan(const std::filesystem::path& plan_file, const ImportOptions& options) {
   const std::vector<PlanFeature> features = read_plan_features(plan_file);
   PlanFormat format;

@@ -26,6 +26,10 @@ ImportedPlan import_wrld(const std::filesystem::path& level_file,
 std::vector<PolygonRings> projected_polygons(const GeosContext& geos, const PlanFeature& feature,
                                              const class LocalProjection& projection);
 
+/// The feature's lines projected to metres, appended to `out` (navigation paths).
+void add_projected_lines(const PlanFeature& feature, const class LocalProjection& projection,
+                         std::vector<Ring>& out);
+
 /// The centre of the features' bounding box in lon/lat (the local frame's origin).
 Eigen::Vector2d plan_centre_lon_lat(const std::vector<PlanFeature>& features);
 

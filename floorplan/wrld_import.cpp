@@ -235,11 +235,7 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
       level_file.parent_path() / (level_file.stem().string() + "-paths.geojson");
   if (std::filesystem::exists(paths_file)) {
     for (const PlanFeature& f : read_plan_features(paths_file))
-      for (const Ring& line : f.lines_lon_lat) {
-        Ring m;
-        for (const auto& p : line) m.push_back(projection.to_local_m(p));
-        plan.paths_m.push_back(std::move(m));
-      }
+      add_projected_lines(f, projection, plan.paths_m);
   }
   finish_plan(inputs, partition, placed, plan);
   return plan;
