@@ -145,6 +145,16 @@ std::string calibration_report_markdown(const Calibration& c) {
     }
     return t + "\n";
   };
+  for (const SurveyLinks* links : {&c.train, c.test ? &*c.test : nullptr}) {
+    if (!links) continue;
+    const LineOfSightAgreement a = links->line_of_sight_agreement();
+    if (a.los_links + a.nlos_links == 0) continue;
+    md += fmt::format(
+        "Scene walls against the survey's line-of-sight flags ({}): {} of {} LOS links cross no "
+        "wall, {} of {} NLOS links cross at least one.\n\n",
+        links == &c.train ? "fitted survey" : "held-out survey", a.los_clear, a.los_links,
+        a.nlos_blocked, a.nlos_links);
+  }
   md += table(c.train, "fitted survey `" + c.survey_path + "`");
   if (c.test) md += table(*c.test, "held-out survey `" + c.test_path + "`");
   return md;
@@ -197,6 +207,15 @@ std::string calibration_report_json(const Calibration& c) {
                           {"after", residuals_json(links, f.model)},
                           {"log_distance", residuals_json(links, c.baseline)}};
   };
+  auto agreement = [](const SurveyLinks& links) {
+    const LineOfSightAgreement a = links.line_of_sight_agreement();
+    return nlohmann::json{{"los_links", a.los_links},
+                          {"los_clear", a.los_clear},
+                          {"nlos_links", a.nlos_links},
+                          {"nlos_blocked", a.nlos_blocked}};
+  };
+  j["line_of_sight"]["train"] = agreement(c.train);
+  if (c.test) j["line_of_sight"]["test"] = agreement(*c.test);
   j["residuals"]["train"] = residuals(c.train);
   if (c.test) {
     j["test_survey"] = c.test_path;

@@ -1,5 +1,6 @@
 #include "sim/calibrate/rss_survey.hpp"
 
+#include <array>
 #include <cmath>
 #include <map>
 
@@ -128,6 +129,14 @@ Survey read_royal_holloway(const std::string& path, double receiver_height_m) {
       throw ParseError(where, "", fmt::format("expected {} fields, got {}", kFields, f.size()));
     const Eigen::Vector3d p(coordinate(f[0], where, "X") * kRoyalHollowayCellM,
                             coordinate(f[1], where, "Y") * kRoyalHollowayCellM, receiver_height_m);
+    // "LOS APs": space-separated AP numbers in line of sight of this spot.
+    std::array<bool, 6> los{};
+    for (std::string_view id : split_fields(f[kFields - 1])) {
+      long long k = 0;
+      if (!parse_int64(id, k) || k < 1 || k > 5)
+        throw ParseError(where, "LOS APs", fmt::format("expected AP numbers 1-5, got '{}'", id));
+      los[k] = true;
+    }
     for (int k = 0; k < 5; ++k) {
       const double v = number(f[kFirstRss + k], where, kRssColumns[k]);
       if (v == kRoyalHollowayNotHeardDbm) continue;
@@ -135,6 +144,7 @@ Survey read_royal_holloway(const std::string& path, double receiver_height_m) {
       s.line = line.number;
       s.position_m = p;
       s.ap_id = k + 1;  // column APk
+      s.line_of_sight = los[k + 1];
       s.rss_dbm = rss(f[kFirstRss + k], where, kRssColumns[k]);
       survey.samples.push_back(s);
     }

@@ -29,6 +29,9 @@ struct SurveySample {
   int ap_id = 0;
   double rss_dbm = 0.0;
   int line = 0;  // in the survey file, for located errors
+  /// Whether the survey says the AP is in line of sight (the Royal Holloway "LOS APs" column);
+  /// unknown in our format. Used only to check a scene's walls against the survey.
+  std::optional<bool> line_of_sight;
 };
 
 struct Survey {

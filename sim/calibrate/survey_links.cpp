@@ -18,6 +18,23 @@ std::size_t SurveyLinks::sample_count() const {
   return n;
 }
 
+LineOfSightAgreement SurveyLinks::line_of_sight_agreement() const {
+  LineOfSightAgreement a;
+  for (const LinkGroup& g : groups) {
+    if (!g.line_of_sight) continue;
+    double walls = 0.0;
+    for (double w : g.walls_per_material) walls += w;
+    if (*g.line_of_sight) {
+      ++a.los_links;
+      a.los_clear += walls == 0.0;
+    } else {
+      ++a.nlos_links;
+      a.nlos_blocked += walls > 0.0;
+    }
+  }
+  return a;
+}
+
 namespace {
 
 std::string id_list(const std::vector<SurveyAccessPoint>& aps) {
@@ -85,6 +102,7 @@ SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoi
       g.position_m = s.position_m;
       g.ap_index = ap->second;
       g.first_line = s.line;
+      g.line_of_sight = s.line_of_sight;
       out.groups.push_back(g);
     }
     out.groups[it->second].rss_dbm.push_back(s.rss_dbm);

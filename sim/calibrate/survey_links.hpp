@@ -5,6 +5,7 @@
 // scene and counting rule) that computes simulated RSSI.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,12 +26,21 @@ struct LinkGroup {
   double distance_m = 0.0;
   std::array<double, radio::kWallMaterialCount> walls_per_material{};
   int first_line = 0;
+  std::optional<bool> line_of_sight;  // the survey's flag (first sample's), when it has one
+};
+
+/// How the scene's walls agree with a survey's line-of-sight flags: links the survey calls LOS
+/// that cross no wall in the scene, and links it calls NLOS that cross at least one.
+struct LineOfSightAgreement {
+  int los_links = 0, los_clear = 0;
+  int nlos_links = 0, nlos_blocked = 0;
 };
 
 struct SurveyLinks {
   std::vector<SurveyAccessPoint> aps;
   std::vector<LinkGroup> groups;  // by first appearance in the survey
   std::size_t sample_count() const;
+  LineOfSightAgreement line_of_sight_agreement() const;
 };
 
 /// Groups `survey` by position (to the millimetre) and AP and counts each link's walls in
