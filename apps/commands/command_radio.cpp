@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "sim/calibrate/calibration_report.hpp"
+#include "sim/calibrate/correlated_intervals.hpp"
 #include "sim/calibrate/rss_survey.hpp"
 #include "sim/calibrate/survey_links.hpp"
 #include "sim/radio/access_point.hpp"
@@ -87,6 +88,7 @@ void run_calibrate(const CalibrateArgs& args) {
   c.fit = cal::fit_propagation(c.train, c.before.wall_loss_db);
   c.baseline = cal::fit_log_distance(c.train);
   c.shadowing = cal::shadowing_statistics(c.train, c.fit.model, c.fit.parameters);
+  cal::widen_for_correlated_shadowing(c.fit, c.train, c.shadowing);
 
   const std::string markdown = cal::calibration_report_markdown(c);
   write_file_atomic(args.output, cal::calibration_scene_yaml(c));

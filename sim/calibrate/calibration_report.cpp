@@ -95,9 +95,13 @@ std::string calibration_report_markdown(const Calibration& c) {
   std::string md = fmt::format("# Radio calibration of {}\n\n", c.scene_name);
   md += fmt::format(
       "Survey `{}`: {} samples, {} position-AP links. Frequency {} MHz. Fitted on the per-position "
-      "means ({} rows, {} unknowns); 95 % confidence intervals from (A^T A)^-1 s^2.\n\n",
+      "means ({} rows, {} unknowns); 95 % confidence intervals {}.\n\n",
       c.survey_path, c.train.sample_count(), c.train.groups.size(), c.frequency_mhz, f.rows,
-      f.parameters);
+      f.parameters,
+      f.correlated_intervals
+          ? "allowing for shadowing shared between positions (the sandwich covariance under the "
+            "fitted exponential shadowing model, sim/calibrate/correlated_intervals.hpp)"
+          : "from (A^T A)^-1 s^2, rows taken as independent");
   md += "| constant | before (scene) | fitted | 95 % CI |\n| --- | --- | --- | --- |\n";
   md += fmt::format(
       "| N (distance coefficient; path-loss exponent x 10) | {:.2f} | {:.2f} | +-{:.2f} |\n",

@@ -158,6 +158,11 @@ PropagationFit fit_propagation(const SurveyLinks& links,
       (a.transpose() * a).ldlt().solve(Eigen::MatrixXd::Identity(a.cols(), a.cols())) * s2;
   auto ci = [&](int c) { return kZ95 * std::sqrt(std::max(covariance(c, c), 0.0)); };
 
+  fit.design = a;
+  fit.distance_column = n_column;
+  fit.intercept_column = column_of_ap;
+  for (std::size_t k = 0; k < fitted.size(); ++k)
+    fit.material_column[fitted[k]] = columns + static_cast<int>(k);
   fit.model.distance_coefficient = x(n_column);
   fit.distance_coefficient_ci95 = ci(n_column);
   const double nan = std::numeric_limits<double>::quiet_NaN();

@@ -17,8 +17,9 @@
 // independent would shrink the confidence intervals by about sqrt(60) for nothing; the
 // within-position scatter (fast fading) is measured separately (shadowing_statistics.hpp).
 // Confidence intervals: 95 %, +-1.96 sqrt(diag((A^T A)^-1) s^2), s^2 the residual variance of
-// the means. Neighbouring positions still share shadowing (it decorrelates over metres), so the
-// intervals remain somewhat optimistic; they say what the data pin down, not a guarantee.
+// the means. Neighbouring positions still share shadowing (it decorrelates over metres), which
+// makes these about four times too narrow; the command replaces them by intervals that allow
+// for it (correlated_intervals.hpp).
 //
 // Materials: a material is fitted when at least kMinLinksPerMaterial links cross it and its
 // column adds rank to the design (else it is confounded with the intercepts or N, e.g. every
@@ -30,6 +31,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+#include <Eigen/Core>
 
 #include "sim/calibrate/survey_links.hpp"
 #include "sim/radio/wall_materials.hpp"
@@ -73,6 +76,13 @@ struct PropagationFit {
   std::array<MaterialFit, radio::kWallMaterialCount> materials;
   int rows = 0, parameters = 0;
   double residual_sigma_db = 0.0;  // of the position means, dof-corrected
+  /// The final design matrix (one row per link group) and where each unknown sits in it (-1:
+  /// not an unknown), for intervals computed after the fit (correlated_intervals.hpp).
+  Eigen::MatrixXd design;
+  int distance_column = -1;
+  std::vector<int> intercept_column;
+  std::array<int, radio::kWallMaterialCount> material_column{-1, -1, -1, -1, -1};
+  bool correlated_intervals = false;  // true once correlated_intervals.hpp widened them
 };
 
 /// Fits `links` (groups of APs without data get no intercept and a NaN). Throws

@@ -4,15 +4,16 @@
 // shadowing fields), written as our survey CSV and read back.
 //
 // Every AP is heard everywhere (no sensitivity cut): censoring the weak links biases a fit of
-// means (brick 8.3 dB and N 31.9 here with a -90 dBm cut), which is a property of the data, not
-// of the estimator under test.
+// means (brick 8.3 dB instead of 8.9 on this survey with a -90 dBm cut: the far links that are
+// still heard are the lucky ones), a property of the data, not of the estimator under test.
 //
 // Tolerances, from the scene's seed and 10 others (AP placement and shadowing fields change with
-// it): N came out 29.1-31.9 (sd 0.75, while the fit's own 95 % interval is +-0.33: neighbouring
-// positions share shadowing, so the intervals are optimistic), brick 8.8-9.1 dB, sigma
+// it): N came out 29.1-31.9 (sd 0.75; its 95 % interval, allowing for shadowing shared between
+// positions, is +-1.3, and +-0.33 if the rows are taken as independent), brick 8.8-9.1 dB, sigma
 // 3.8-4.0 dB, decorrelation 2.4-2.8 m (of 3: the AP intercepts absorb some of the long-range
-// correlation), fast fading 2.00 dB. Checked: N +-2, brick +-1 dB, sigma +-0.6 dB, fast fading
-// +-0.2 dB, decorrelation 1.5-6 m, mean tx power +-1.5 dB.
+// correlation), fast fading 2.00 dB, mean tx power up to 1.6 dB off (it moves with N). Checked:
+// N +-2, brick +-1 dB, sigma +-0.6 dB, fast fading +-0.2 dB, decorrelation 1.5-6 m, mean tx
+// power +-2 dB.
 #include <unistd.h>
 
 #include <cmath>
@@ -27,6 +28,7 @@
 
 #include "core/rng.hpp"
 #include "sim/calibrate/calibration_report.hpp"
+#include "sim/calibrate/correlated_intervals.hpp"
 #include "sim/calibrate/propagation_fit.hpp"
 #include "sim/calibrate/rss_survey.hpp"
 #include "sim/calibrate/shadowing_statistics.hpp"
@@ -121,8 +123,14 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   // Fitted against the default laws (what a user's scene has), not the truth.
   const radio::WallLossTable defaults(scene.building.wall_thickness_m);
   const LinearRadioModel before = scene_model(links, defaults, std::nullopt, kTxDbm, kFrequencyMhz);
-  const PropagationFit fit = fit_propagation(links, before.wall_loss_db);
+  PropagationFit fit = fit_propagation(links, before.wall_loss_db);
   const ShadowingStatistics s = shadowing_statistics(links, fit.model, fit.parameters);
+  const double independent_ci95 = fit.distance_coefficient_ci95;
+  widen_for_correlated_shadowing(fit, links, s);
+  // Shared shadowing widens N's interval about fourfold (0.33 -> 1.3 on c_hall), in line with
+  // the spread of N between shadowing draws.
+  EXPECT_GT(fit.distance_coefficient_ci95, 2.5 * independent_ci95);
+  EXPECT_LT(fit.distance_coefficient_ci95, 3.0);
 
   const MaterialFit& brick = fit.materials[static_cast<int>(WallMaterial::kBrick)];
   ASSERT_TRUE(brick.fitted) << brick.reason;
@@ -140,7 +148,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
     tx_sum += tx_from_intercept_dbm(intercept, kFrequencyMhz);
     ++heard;
   }
-  EXPECT_NEAR(tx_sum / heard, kTxDbm, 1.5);
+  EXPECT_NEAR(tx_sum / heard, kTxDbm, 2.0);
 
   // After fits the survey better than before, and the blocks it writes load into the scene.
   const auto rb = residuals_per_ap(links, before), ra = residuals_per_ap(links, fit.model);
