@@ -27,16 +27,18 @@ void widen_for_correlated_shadowing(PropagationFit& fit, const SurveyLinks& link
   for (const auto& rows : rows_of_ap) {
     const auto n = static_cast<Eigen::Index>(rows.size());
     if (n == 0) continue;
-    Eigen::MatrixXd b(n, p), s(n, n);
+    Eigen::MatrixXd b(n, p);
+    for (Eigen::Index i = 0; i < n; ++i) b.row(i) = a.row(rows[i]);
+    // Row by row (S_i B), so memory stays linear in the AP's positions.
+    Eigen::VectorXd s_row(n);
     for (Eigen::Index i = 0; i < n; ++i) {
-      b.row(i) = a.row(rows[i]);
       const Eigen::Vector2d pi = links.groups[rows[i]].position_m.head<2>();
       for (Eigen::Index j = 0; j < n; ++j) {
         const double d = (pi - links.groups[rows[j]].position_m.head<2>()).norm();
-        s(i, j) = i == j ? total_var : shared_var * std::exp(-d / shadowing.decorrelation_m);
+        s_row(j) = i == j ? total_var : shared_var * std::exp(-d / shadowing.decorrelation_m);
       }
+      meat.noalias() += b.row(i).transpose() * (s_row.transpose() * b);
     }
-    meat.noalias() += b.transpose() * s * b;
   }
   const Eigen::MatrixXd bread = (a.transpose() * a).ldlt().solve(Eigen::MatrixXd::Identity(p, p));
   const Eigen::MatrixXd covariance = bread * meat * bread;
