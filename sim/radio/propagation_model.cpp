@@ -21,6 +21,10 @@ PropagationOptions PropagationOptions::from_scene(const Scene& scene) {
   o.fading_coherence_s = radio.fading_coherence_s;
   o.bssid_spread_db = radio.bssid_spread_db;
   o.people_disturbance_db = radio.people_disturbance_db;
+  for (int m = 0; m < kWallMaterialCount; ++m) {
+    if (const auto& loss_db = radio.wall_loss_db.by_material_db[m])
+      o.wall_losses.laws[m] = WallLossLaw::linear(*loss_db, 0.0);  // measured: flat in frequency
+  }
   return o;
 }
 

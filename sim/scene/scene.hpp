@@ -4,6 +4,7 @@
 // downstream (world generator, renderer, radio model, robot) reads only these structs.
 // Defaults live here, next to the field, with what they trade off.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -261,6 +262,13 @@ const char* to_string(RadioEnvironment environment);
 enum class PathLossModel { kItuWalls, kItuSiteGeneral, kItuSiteGeneralFit };
 const char* to_string(PathLossModel model);
 
+/// Measured per-wall losses by material (`radio calibrate` writes them), indexed like
+/// WallMaterial. A set value replaces that material's default loss law (wall_materials.hpp) by
+/// this loss at every frequency: a survey measures one band, so no frequency law is fitted.
+struct WallLossOverrides {
+  std::array<std::optional<double>, 5> by_material_db;
+};
+
 struct RadioSpec {
   PathLossModel model = PathLossModel::kItuWalls;
   RadioEnvironment environment = RadioEnvironment::kOffice;
@@ -271,6 +279,7 @@ struct RadioSpec {
   double fading_coherence_s = 3.0;     // at a still receiver
   double bssid_spread_db = 0.5;        // per BSSID and scan, on top of the radio's fading
   double people_disturbance_db = 0.0;  // optional temporal disturbance for open halls
+  WallLossOverrides wall_loss_db;      // itu_walls only; unset materials keep their laws
 };
 
 struct Scene {

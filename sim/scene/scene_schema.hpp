@@ -286,6 +286,13 @@ void visit(V& v, Sensors& s) {
 }
 
 template <class V>
+void visit(V& v, WallLossOverrides& w) {
+  for (const auto& [material, name] : material_names())
+    v.optional_number(name.data(), w.by_material_db[static_cast<int>(material)],
+                      Limits{0.0, 100.0});  // names are literals: null-terminated
+}
+
+template <class V>
 void visit(V& v, RadioSpec& r) {
   v.choice("model", r.model,
            Names<PathLossModel>{{PathLossModel::kItuWalls, "itu_walls"},
@@ -304,6 +311,7 @@ void visit(V& v, RadioSpec& r) {
   v.number("fading_coherence_s", r.fading_coherence_s, Limits{0.01, 3600.0});
   v.number("bssid_spread_db", r.bssid_spread_db, Limits{0.0, 10.0});
   v.number("people_disturbance_db", r.people_disturbance_db, Limits{0.0, 100.0});
+  v.object("wall_loss_db", r.wall_loss_db);
 }
 
 template <class V>

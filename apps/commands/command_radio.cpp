@@ -1,0 +1,142 @@
+// `wifislam radio calibrate`: fit the itu_walls model's constants (N, wall losses by material,
+// shadowing sigma and decorrelation, fast fading, each AP's tx power) to RSS measured at known
+// positions, counting walls exactly as the simulator does (sim/calibrate/).
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
+#include "core/atomic_file.hpp"
+#include "core/error.hpp"
+#include "core/output_folder.hpp"
+#include "sim/calibrate/calibration_report.hpp"
+#include "sim/calibrate/correlated_intervals.hpp"
+#include "sim/calibrate/rss_survey.hpp"
+#include "sim/calibrate/survey_links.hpp"
+#include "sim/radio/access_point.hpp"
+#include "sim/radio/propagation_model.hpp"
+#include "sim/scene/scene_loader.hpp"
+#include "sim/site/site.hpp"
+
+namespace {
+
+namespace cal = wifislam::sim::calibrate;
+
+struct CalibrateArgs {
+  std::string survey_path, scene_path, aps_path, test_path;
+  std::string format = "long";
+  double frequency_mhz = 2437.0;  // 2.4 GHz channel 6
+  std::optional<double> receiver_height_m;
+  std::string output = "fit.yaml";
+  std::string report, json;
+};
+
+std::vector<cal::SurveyAccessPoint> scene_access_points(const wifislam::sim::Site& site) {
+  std::vector<cal::SurveyAccessPoint> aps;
+  for (const auto& ap : site.access_points())
+    aps.push_back({ap.id, ap.position_m, ap.tx_power_dbm, ""});
+  return aps;
+}
+
+void run_calibrate(const CalibrateArgs& args) {
+  using namespace wifislam;
+  // Every output is checked before any work, and written only when everything succeeded.
+  std::vector<std::filesystem::path> inputs{args.survey_path, args.scene_path};
+  if (!args.aps_path.empty()) inputs.push_back(args.aps_path);
+  if (!args.test_path.empty()) inputs.push_back(args.test_path);
+  check_output_file(args.output, inputs);
+  inputs.push_back(args.output);
+  for (const std::string& extra : {args.report, args.json}) {
+    if (extra.empty()) continue;
+    check_output_file(extra, inputs);
+    inputs.push_back(extra);
+  }
+
+  const sim::Scene scene = sim::load_scene_file(args.scene_path);
+  if (scene.radio.model != sim::PathLossModel::kItuWalls) {
+    scene.reject("radio.model",
+                 fmt::format("radio calibrate fits the itu_walls model; this scene uses {} (its N "
+                             "and sigma come from the ITU tables)",
+                             to_string(scene.radio.model)));
+  }
+  const sim::Site site(scene);
+  const double height_m = args.receiver_height_m.value_or(site.receiver_height_m());
+  const auto format = args.format == "royal-holloway" ? cal::SurveyFormat::kRoyalHolloway
+                                                      : cal::SurveyFormat::kLong;
+  const std::vector<cal::SurveyAccessPoint> aps = args.aps_path.empty()
+                                                      ? scene_access_points(site)
+                                                      : cal::read_access_points_csv(args.aps_path);
+
+  cal::Calibration c;
+  c.scene_name = scene.name;
+  c.scene_path = args.scene_path;
+  c.survey_path = args.survey_path;
+  c.test_path = args.test_path;
+  c.frequency_mhz = args.frequency_mhz;
+  c.train = cal::survey_links(cal::read_survey(args.survey_path, format, height_m), aps, scene,
+                              site.world());
+  if (!args.test_path.empty()) {
+    c.test = cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps, scene,
+                               site.world());
+  }
+  const auto options = sim::radio::PropagationOptions::from_scene(scene);
+  c.before = cal::scene_model(c.train, options.wall_losses, scene.radio.distance_coefficient,
+                              scene.access_points.tx_power_dbm, args.frequency_mhz);
+  c.fit = cal::fit_propagation(c.train, c.before.wall_loss_db);
+  c.baseline = cal::fit_log_distance(c.train);
+  c.shadowing = cal::shadowing_statistics(c.train, c.fit.model, c.fit.parameters);
+  cal::widen_for_correlated_shadowing(c.fit, c.train, c.shadowing);
+
+  const std::string markdown = cal::calibration_report_markdown(c);
+  write_file_atomic(args.output, cal::calibration_scene_yaml(c));
+  if (!args.report.empty()) write_file_atomic(args.report, markdown);
+  if (!args.json.empty()) write_file_atomic(args.json, cal::calibration_report_json(c));
+  fmt::print("{}wrote {}\n", markdown, args.output);
+}
+
+void add_calibrate_command(CLI::App* parent) {
+  auto args = std::make_shared<CalibrateArgs>();
+  CLI::App* app = parent->add_subcommand(
+      "calibrate",
+      "Fit N, per-material wall losses, shadowing sigma and decorrelation, fast fading and each\n"
+      "AP's tx power to an RSS survey by least squares, counting walls as the simulator does.\n"
+      "Writes radio: and access_points: scene blocks (-o) and prints residuals per AP before and\n"
+      "after. Survey CSV: x_m,y_m[,z_m],ap_id,rss_dbm (one row per AP heard per scan).");
+  app->add_option("survey", args->survey_path, "Survey CSV")->required();
+  app->add_option("--scene", args->scene_path, "Scene file (YAML) of the surveyed building")
+      ->required();
+  app->add_option("--aps", args->aps_path,
+                  "Access points CSV id,x_m,y_m,z_m[,tx_power_dbm]; default: the scene's");
+  app->add_option("--format", args->format,
+                  "Survey format: long (ours) or royal-holloway (the dataset's CSV as shipped: "
+                  "0.6 m grid indices, column APk = AP id k, -200 = not heard)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"long", "royal-holloway"}));
+  app->add_option("--test", args->test_path,
+                  "Held-out survey (same format and APs): residuals reported, not fitted");
+  app->add_option("--frequency-mhz", args->frequency_mhz,
+                  "Frequency of the survey: sets the default wall losses compared with and the "
+                  "conversion of intercepts to tx power")
+      ->capture_default_str()
+      ->check(CLI::Range(2400.0, 7125.0));
+  app->add_option("--receiver-height", args->receiver_height_m,
+                  "Receiver height (m) for rows without z_m; default: the scene's camera height")
+      ->check(wifislam::cli::kPositiveFinite);
+  app->add_option("-o,--output", args->output, "Scene blocks to write (YAML)")
+      ->capture_default_str();
+  app->add_option("--report", args->report, "Also write the report (markdown)");
+  app->add_option("--json", args->json, "Also write the report as JSON");
+  app->callback([args] { run_calibrate(*args); });
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(radio, 45) {
+  CLI::App* app = parent.add_subcommand(
+      "radio", "Radio model tools: calibrate its constants to a measured RSS survey.");
+  app->require_subcommand(1);
+  add_calibrate_command(app);
+}
