@@ -14,6 +14,8 @@ const char* to_string(PlanFormat format) {
       return "osm-sit";
     case PlanFormat::kWrld:
       return "wrld";
+    case PlanFormat::kImdf:
+      return "imdf";
   }
   return "unknown";
 }

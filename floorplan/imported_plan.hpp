@@ -16,7 +16,7 @@
 
 namespace wifislam::floorplan {
 
-enum class PlanFormat { kOsmSit, kWrld };
+enum class PlanFormat { kOsmSit, kWrld, kImdf };
 const char* to_string(PlanFormat format);
 
 struct ImportOptions {
@@ -33,7 +33,7 @@ struct ImportCounts {
   int skipped = 0;                                 // features on the level with no use (stairs ...)
   int spaces = 0, space_doors = 0, obstacles = 0;  // written to the scene
   int rooms_without_door = 0;                      // OSM: rooms touching no corridor or area
-  int doors_not_placed = 0;                        // WRLD: door polygons on no shared wall
+  int doors_not_placed = 0;  // WRLD door polygons, IMDF openings on no shared wall
 };
 
 struct ImportedPlan {

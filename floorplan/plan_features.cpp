@@ -1,8 +1,14 @@
 #include "floorplan/plan_features.hpp"
 
+#include <cpl_conv.h>
 #include <gdal.h>
 #include <ogrsf_frmts.h>
 
+#include <unistd.h>
+
+#include <cstdint>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <regex>
 #include <system_error>
@@ -56,6 +62,45 @@ void add_other_tags(const std::string& hstore, std::map<std::string, std::string
     tags.emplace((*it)[1].str(), (*it)[2].str());
 }
 
+/// GDAL's OSM driver turns a closed way into a polygon only for the keys its osmconf.ini lists,
+/// and indoor=* is not among them (it gives such ways as broken lines). For .osm/.pbf plans: a
+/// copy of GDAL's own osmconf.ini with indoor added, in a temporary file removed after reading.
+class IndoorOsmConfig {
+ public:
+  explicit IndoorOsmConfig(const std::filesystem::path& plan) {
+    const std::string ext = plan.extension().string();
+    if (ext != ".osm" && ext != ".pbf") return;
+    const char* found = CPLFindFile("GDAL", "osmconf.ini");
+    if (found == nullptr) return;
+    std::ifstream in(found);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string key = "closed_ways_are_polygons=";
+    const std::size_t at = text.find("\n" + key);
+    if (at == std::string::npos) return;
+    text.insert(at + 1 + key.size(), "indoor,");
+    path_ = std::filesystem::temp_directory_path() /
+            fmt::format("wifislam_osmconf_{}_{}.ini", ::getpid(),
+                        reinterpret_cast<std::uintptr_t>(this));
+    std::ofstream(path_) << text;
+    option_ = "CONFIG_FILE=" + path_.string();
+  }
+  ~IndoorOsmConfig() {
+    std::error_code ec;
+    if (!path_.empty()) std::filesystem::remove(path_, ec);
+  }
+  /// Open options for GDALDataset::Open (null-terminated), or null.
+  const char* const* open_options() {
+    if (option_.empty()) return nullptr;
+    options_[0] = option_.c_str();
+    return options_;
+  }
+
+ private:
+  std::filesystem::path path_;
+  std::string option_;
+  const char* options_[2] = {nullptr, nullptr};
+};
+
 struct DatasetCloser {
   void operator()(GDALDataset* d) const { GDALClose(d); }
 };
@@ -74,9 +119,10 @@ std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
     ~PopHandler() { CPLPopErrorHandler(); }
   } pop;
   CPLErrorReset();
+  IndoorOsmConfig osm_config(file);
   std::unique_ptr<GDALDataset, DatasetCloser> dataset(
       GDALDataset::Open(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY | GDAL_OF_VERBOSE_ERROR,
-                        nullptr, nullptr, nullptr));
+                        nullptr, osm_config.open_options(), nullptr));
   if (!dataset) {
     const std::string why = CPLGetLastErrorMsg();
     throw ParseError(file.string(), "",
@@ -94,8 +140,10 @@ std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
       }
       if (auto other = feature.tags.find("other_tags"); other != feature.tags.end())
         add_other_tags(other->second, feature.tags);
-      if (auto osm_id = feature.tags.find("osm_id"); osm_id != feature.tags.end())
-        feature.tags.emplace("@id", osm_id->second);
+      // The OSM driver's ids: nodes and lines osm_id, (multi)polygons osm_id or osm_way_id.
+      for (const char* key : {"osm_id", "osm_way_id"})
+        if (auto osm_id = feature.tags.find(key); osm_id != feature.tags.end())
+          feature.tags.emplace("@id", osm_id->second);
       const std::string id = feature.tag("@id").empty() ? feature.tag("id") : feature.tag("@id");
       feature.where = fmt::format("{}: feature {}{}", file.string(), index,
                                   id.empty() ? std::string() : " (" + id + ")");

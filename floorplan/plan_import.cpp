@@ -19,6 +19,12 @@ bool looks_like_wrld(const std::vector<PlanFeature>& features) {
   return false;
 }
 
+bool looks_like_imdf(const std::vector<PlanFeature>& features) {
+  for (const PlanFeature& f : features)
+    if (!f.tag("level_id").empty() && !f.tag("category").empty()) return true;
+  return false;
+}
+
 bool looks_like_osm_sit(const std::vector<PlanFeature>& features) {
   for (const PlanFeature& f : features)
     if (!f.tag("indoor").empty()) return true;
@@ -72,22 +78,29 @@ void add_projected_lines(const PlanFeature& feature, const LocalProjection& proj
   }
 }
 
-ImportedPlan import_plan(const std::filesystem::path& plan_file, const ImportOptions& options) {
+ImportedPlan import_plan(const std::filesystem::path& given, const ImportOptions& options) {
+  // An IMDF archive unpacked: the folder stands for its unit.geojson.
+  const std::filesystem::path plan_file =
+      std::filesystem::is_directory(given) ? given / "unit.geojson" : given;
   const std::vector<PlanFeature> features = read_plan_features(plan_file);
   PlanFormat format;
   if (options.format) {
     format = *options.format;
   } else if (looks_like_wrld(features)) {
     format = PlanFormat::kWrld;
+  } else if (looks_like_imdf(features)) {
+    format = PlanFormat::kImdf;
   } else if (looks_like_osm_sit(features)) {
     format = PlanFormat::kOsmSit;
   } else {
     throw ParseError(plan_file.string(), "",
-                     "cannot tell the plan's format: no feature has an OSM indoor=* tag or a "
-                     "WRLD type (wall, door, building_outline); give --format");
+                     "cannot tell the plan's format: no feature has an OSM indoor=* tag, a "
+                     "WRLD type (wall, door, building_outline) or an IMDF category and "
+                     "level_id; give --format");
   }
-  ImportedPlan plan = format == PlanFormat::kWrld ? import_wrld(plan_file, features, options)
-                                                  : import_osm_sit(plan_file, features, options);
+  ImportedPlan plan = format == PlanFormat::kWrld   ? import_wrld(plan_file, features, options)
+                      : format == PlanFormat::kImdf ? import_imdf(plan_file, features, options)
+                                                    : import_osm_sit(plan_file, features, options);
   if (plan.spaces.empty())
     throw ParseError(plan_file.string(), "",
                      fmt::format("level '{}' has no usable polygon (no room, corridor or area, or "

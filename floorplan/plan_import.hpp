@@ -1,7 +1,8 @@
 #pragma once
-// `wifislam import`: a real floor plan (OSM Simple Indoor Tagging GeoJSON/XML, or the WRLD indoor
-// map format) -> one level in scene terms (imported_plan.hpp). docs/real_buildings/README.md
-// states every inference (doors, wall thickness, materials, walkable spaces).
+// `wifislam import`: a real floor plan (OSM Simple Indoor Tagging GeoJSON/XML, the WRLD indoor
+// map format, or Apple's IMDF) -> one level in scene terms (imported_plan.hpp).
+// docs/real_buildings/README.md states every inference (doors, wall thickness, materials, walkable
+// spaces).
 
 #include <filesystem>
 
@@ -20,6 +21,8 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
                             const std::vector<PlanFeature>& features, const ImportOptions& options);
 ImportedPlan import_wrld(const std::filesystem::path& level_file,
                          const std::vector<PlanFeature>& features, const ImportOptions& options);
+ImportedPlan import_imdf(const std::filesystem::path& unit_file,
+                         const std::vector<PlanFeature>& units, const ImportOptions& options);
 
 /// Each ring of the feature's polygons projected to metres, checked to be a valid polygon
 /// (ParseError at the feature naming GEOS's reason otherwise).

@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "floorplan/door_placement.hpp"
 #include "floorplan/local_projection.hpp"
 #include "floorplan/plan_import.hpp"
 
@@ -79,53 +80,6 @@ double median_wall_thickness_m(const GeosContext& geos, const std::vector<Polygo
   if (t.empty()) return 0.15;
   std::nth_element(t.begin(), t.begin() + t.size() / 2, t.end());
   return std::clamp(std::round(t[t.size() / 2] * 100) / 100, 0.08, 0.4);
-}
-
-/// Centre, unit long axis and length of a door polygon (principal axis of its corners).
-struct DoorShape {
-  Eigen::Vector2d centre, axis;
-  double length_m;
-};
-
-DoorShape door_shape(const Ring& ring) {
-  Eigen::Vector2d c = Eigen::Vector2d::Zero();
-  for (const auto& p : ring) c += p;
-  c /= static_cast<double>(ring.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const auto& p : ring) cov += (p - c) * (p - c).transpose();
-  const Eigen::Vector2d axis(std::cos(0.5 * std::atan2(2 * cov(0, 1), cov(0, 0) - cov(1, 1))),
-                             std::sin(0.5 * std::atan2(2 * cov(0, 1), cov(0, 0) - cov(1, 1))));
-  double lo = 1e300, hi = -1e300;
-  for (const auto& p : ring)
-    lo = std::min(lo, (p - c).dot(axis)), hi = std::max(hi, (p - c).dot(axis));
-  return {c + 0.5 * (lo + hi) * axis, axis, hi - lo};
-}
-
-/// An open door on the shared wall nearest the door polygon's centre (within 0.6 m) and
-/// parallel to its long axis.
-std::optional<PlacedDoor> place_door(const Ring& door_ring, const Partition& partition) {
-  const DoorShape shape = door_shape(door_ring);
-  const SharedWall* best = nullptr;
-  double best_d = 0.6;
-  for (const SharedWall& w : partition.shared_walls) {
-    const Eigen::Vector2d d = (w.to_m - w.from_m).normalized();
-    if (std::abs(d.dot(shape.axis)) < 0.9) continue;
-    const double s = std::clamp((shape.centre - w.from_m).dot(d), 0.0, w.length_m());
-    const double dist = (w.from_m + s * d - shape.centre).norm();
-    if (dist < best_d) best_d = dist, best = &w;
-  }
-  if (best == nullptr || best->length_m() < 0.6) return std::nullopt;
-  const Eigen::Vector2d d = (best->to_m - best->from_m).normalized();
-  const double width = std::clamp(shape.length_m, 0.6, std::min(3.0, best->length_m()));
-  const double s =
-      std::clamp((shape.centre - best->from_m).dot(d), 0.5 * width, best->length_m() - 0.5 * width);
-  PlacedDoor door;
-  door.a = best->a;
-  door.b = best->b;
-  door.door.from_m = best->from_m + (s - 0.5 * width) * d;
-  door.door.to_m = best->from_m + (s + 0.5 * width) * d;
-  door.door.open = true;
-  return door;
 }
 
 }  // namespace
@@ -217,7 +171,7 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
   const Partition partition = partition_spaces(geos, inputs, partition_options);
   std::vector<PlacedDoor> placed;
   for (const PolygonRings& d : doors) {
-    if (auto door = place_door(d.outer, partition))
+    if (auto door = door_on_shared_wall(door_shape(d.outer), partition, true))
       placed.push_back(*door);
     else
       ++plan.counts.doors_not_placed;

@@ -65,6 +65,7 @@ void run_import(const ImportArgs& args) {
   floorplan::ImportOptions options;
   if (args.format == "osm-sit") options.format = floorplan::PlanFormat::kOsmSit;
   if (args.format == "wrld") options.format = floorplan::PlanFormat::kWrld;
+  if (args.format == "imdf") options.format = floorplan::PlanFormat::kImdf;
   if (!args.level.empty()) options.level = args.level;
   options.wall_thickness_m = args.wall_thickness_m;
   const floorplan::ImportedPlan plan = floorplan::import_plan(args.plan_path, options);
@@ -82,9 +83,12 @@ void run_import(const ImportArgs& args) {
   const auto& c = plan.counts;
   fmt::print("level {} of {} ({}; levels: {})\n", plan.level, plan.source,
              floorplan::to_string(plan.format), fmt::join(plan.levels, ", "));
-  if (plan.format == floorplan::PlanFormat::kOsmSit)
-    fmt::print("read: {} rooms, {} corridors, {} areas ({} other features skipped)\n", c.rooms,
-               c.corridors, c.areas, c.skipped);
+  if (plan.format != floorplan::PlanFormat::kWrld)
+    fmt::print("read: {} rooms, {} corridors, {} areas ({} other features skipped{})\n", c.rooms,
+               c.corridors, c.areas, c.skipped,
+               plan.format == floorplan::PlanFormat::kImdf
+                   ? fmt::format("; {} wall units, {} openings", c.walls, c.doors)
+                   : std::string());
   else
     fmt::print(
         "read: {} walls, {} doors, {} windows ({} other features skipped); {} spaces "
@@ -107,18 +111,21 @@ WIFISLAM_COMMAND(import, 15) {
       "import",
       "Import one level of a real floor plan into a scene file.\n"
       "Reads OpenStreetMap Simple Indoor Tagging (GeoJSON or .osm XML: indoor=room|corridor|area\n"
-      "polygons with level=*) or the WRLD indoor map format (a level's GeoJSON, with main.json\n"
-      "beside it for --level), projects lon/lat to metres (transverse Mercator at the plan's\n"
+      "polygons with level=*), the WRLD indoor map format (a level's GeoJSON, with main.json\n"
+      "beside it for --level) or Apple's IMDF (its folder, or unit.geojson), projects lon/lat to "
+      "metres (transverse Mercator at the plan's\n"
       "centre), gives every wall one thickness, infers doors where the plan has none, and plans\n"
       "a route that loops through the corridors twice. docs/real_buildings/README.md has details.");
-  app->add_option("plan", args->plan_path, "Plan file (GeoJSON or .osm; WRLD: a level's GeoJSON)")
+  app->add_option("plan", args->plan_path,
+                  "Plan file (GeoJSON or .osm; WRLD: a level's GeoJSON; IMDF: its folder)")
       ->required();
   app->add_option("-o,--output", args->output_path, "Scene file to write (YAML)")->required();
   app->add_option("--level", args->level,
-                  "Level to import (OSM level=* value; WRLD level name from main.json). "
-                  "Default: the lowest level with corridors (OSM), the given file (WRLD)");
+                  "Level to import (OSM level=* value; WRLD level name from main.json; IMDF level "
+                  "short name, id or ordinal). Default: the lowest level with corridors (OSM, "
+                  "IMDF), the given file (WRLD)");
   app->add_option("--format", args->format, "Plan format (default: from the file's contents)")
-      ->check(CLI::IsMember({"osm-sit", "wrld"}));
+      ->check(CLI::IsMember({"osm-sit", "wrld", "imdf"}));
   app->add_option("--route", args->route,
                   "Waypoints x,y;x,y;... in the scene's metres, visited in order (default: a "
                   "planned tour of the corridors, or of the plan's navigation paths)");
@@ -128,7 +135,7 @@ WIFISLAM_COMMAND(import, 15) {
                   "Access points (placed in rooms); default one per 100 m^2 of floor, at least 4")
       ->check(CLI::Range(1, 1000));
   app->add_option("--wall-thickness", args->wall_thickness_m,
-                  "Wall thickness in metres for OSM plans (WRLD measures its own)")
+                  "Wall thickness in metres for OSM and IMDF plans (WRLD measures its own)")
       ->check(CLI::Range(0.05, 0.5));
   app->add_option("--name", args->name, "Scene name (default: from the file name and level)");
   app->add_option(

@@ -3,6 +3,10 @@
 // usable polygon.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include <fmt/format.h>
+
 #include "tests/cli/cli_run.hpp"
 
 namespace wifislam {
@@ -71,6 +75,31 @@ TEST_F(ImportCli, PlanWithoutUsablePolygonIsRefused) {
   test::write_file(scratch_ / "rooms.geojson", collection({feature("room", square)}));
   expect_refused("import " + (scratch_ / "rooms.geojson").string(),
                  {"rooms.geojson", "no indoor=corridor or indoor=area"});
+}
+
+TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
+  // A corridor (20 x 2.4 m) and a room beside it, as closed ways of an .osm file, near
+  // (lon 10, lat 45). (GDAL's OSM driver takes a node at exactly (0, 0) for a missing one.)
+  auto node = [](int id, double x_m, double y_m) {
+    return fmt::format(R"(<node id="{}" version="1" lat="{:.8f}" lon="{:.8f}"/>)", id,
+                       45.0 + y_m / 111132.0, 10.0 + x_m / (111320.0 * std::cos(M_PI / 4)));
+  };
+  auto way = [](int id, int first, const std::string& indoor) {
+    std::string w = fmt::format(R"(<way id="{}" version="1">)", id);
+    for (int k : {0, 1, 2, 3, 0}) w += fmt::format(R"(<nd ref="{}"/>)", first + k);
+    return w + fmt::format(R"(<tag k="indoor" v="{}"/><tag k="level" v="0"/></way>)", indoor);
+  };
+  std::string osm = R"(<?xml version="1.0" encoding="UTF-8"?><osm version="0.6" generator="test">)";
+  osm += node(1, 0, 0) + node(2, 20, 0) + node(3, 20, 2.4) + node(4, 0, 2.4);
+  osm += node(5, 0, 2.4) + node(6, 8, 2.4) + node(7, 8, 7) + node(8, 0, 7);
+  osm += way(100, 1, "corridor") + way(101, 5, "room") + "</osm>";
+  test::write_file(scratch_ / "plan.osm", osm);
+  const test::CliResult r = test::run_wifislam(
+      "import " + (scratch_ / "plan.osm").string() + " -o " + (scratch_ / "out.yaml").string(),
+      scratch_);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("read: 1 rooms, 1 corridors, 0 areas"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 spaces, 1 doors"), std::string::npos) << r.out;
 }
 
 TEST_F(ImportCli, ImportedSceneGeneratesADataset) {

@@ -3,7 +3,14 @@
 // known point to within 1 cm.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <cmath>
 #include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "floorplan/imported_scene.hpp"
 #include "floorplan/local_projection.hpp"
@@ -28,7 +35,7 @@ void expect_route_revisits(const sim::Scene& scene) {
   EXPECT_GE(passes, 2) << "two laps pass the start twice";
   const sim::World world =
       sim::generate_world(sim::load_scene_yaml(sim::resolved_scene_yaml(scene), "scene"));
-  EXPECT_GT(world.route.length_m(), 50.0);
+  EXPECT_GT(world.route.length_m(), 2 * (w.front() - w[w.size() / 4]).norm());
 }
 
 TEST(PlanImport, OsmSitLevelOneMatchesTheFilesCounts) {
@@ -75,6 +82,65 @@ TEST(PlanImport, ShippedScenesLoadAndBuild) {
     EXPECT_GT(world.plan.doors.size(), 10u) << name;
     EXPECT_GT(world.route.length_m(), 100.0) << name;
   }
+}
+
+/// A small IMDF folder: a 20 x 2.4 m walkway with two rooms north of it and one south, three
+/// openings on the shared walls, one level. Coordinates in metres from (lon 0, lat 51.5).
+std::filesystem::path write_imdf(const fs::path& folder) {
+  fs::create_directories(folder);
+  const double m_per_deg_lat = 111320.0, m_per_deg_lon = 111320.0 * std::cos(51.5 * M_PI / 180);
+  auto lonlat = [&](double x, double y) {
+    return fmt::format("[{:.9f},{:.9f}]", x / m_per_deg_lon, 51.5 + y / m_per_deg_lat);
+  };
+  auto box = [&](double x0, double y0, double x1, double y1) {
+    return fmt::format("[[{},{},{},{},{}]]", lonlat(x0, y0), lonlat(x1, y0), lonlat(x1, y1),
+                       lonlat(x0, y1), lonlat(x0, y0));
+  };
+  auto unit = [&](const std::string& id, const std::string& category, const std::string& rings) {
+    return fmt::format(R"({{"type":"Feature","id":"{}","feature_type":"unit","properties":)"
+                       R"({{"category":"{}","level_id":"L0","name":{{"en":"{}"}}}},)"
+                       R"("geometry":{{"type":"Polygon","coordinates":{}}}}})",
+                       id, category, id, rings);
+  };
+  auto opening = [&](double x0, double y0, double x1, double y1) {
+    return fmt::format(R"({{"type":"Feature","id":"o{}{}","feature_type":"opening","properties":)"
+                       R"({{"category":"pedestrian","level_id":"L0"}},"geometry":)"
+                       R"({{"type":"LineString","coordinates":[{},{}]}}}})",
+                       x0, y0, lonlat(x0, y0), lonlat(x1, y1));
+  };
+  auto collection = [](const std::vector<std::string>& features) {
+    return R"({"type":"FeatureCollection","features":[)" +
+           fmt::format("{}", fmt::join(features, ",")) + "]}";
+  };
+  std::ofstream(folder / "level.geojson")
+      << collection({R"({"type":"Feature","id":"L0","feature_type":"level","properties":)"
+                     R"({"category":"unspecified","ordinal":0,"name":{"en":"Ground"},)"
+                     R"("short_name":{"en":"G"}},"geometry":{"type":"Polygon","coordinates":)" +
+                     box(0, -5, 20, 7) + "}}"});
+  std::ofstream(folder / "unit.geojson") << collection(
+      {unit("hall", "walkway", box(0, 0, 20, 2.4)), unit("north-a", "office", box(0, 2.4, 10, 7)),
+       unit("north-b", "room", box(10, 2.4, 20, 7)), unit("south", "classroom", box(0, -5, 20, 0)),
+       unit("core", "stairs", box(20, 0, 22, 2.4))});
+  std::ofstream(folder / "opening.geojson")
+      << collection({opening(4, 2.4, 5, 2.4), opening(14, 2.4, 15, 2.4), opening(9, 0, 10, 0)});
+  return folder;
+}
+
+TEST(PlanImport, ImdfFolderImportsUnitsAndOpenings) {
+  const fs::path folder =
+      write_imdf(fs::temp_directory_path() / ("wifislam_imdf_" + std::to_string(::getpid())));
+  const floorplan::ImportedPlan plan = floorplan::import_plan(folder, {});
+  fs::remove_all(folder);
+  EXPECT_EQ(plan.format, floorplan::PlanFormat::kImdf);
+  EXPECT_EQ(plan.level, "G");
+  EXPECT_EQ(plan.counts.corridors, 1);
+  EXPECT_EQ(plan.counts.rooms, 3);
+  EXPECT_EQ(plan.counts.skipped, 1) << "the stairs are no free space";
+  EXPECT_EQ(plan.counts.doors, 3);
+  EXPECT_EQ(plan.counts.space_doors, 3) << "every opening lies on a wall between two units";
+  for (const sim::SpaceDoor& d : plan.doors) EXPECT_NEAR((d.to_m - d.from_m).norm(), 1.0, 0.02);
+  EXPECT_EQ(plan.spaces.size(), 4u);
+  expect_route_revisits(floorplan::imported_scene(plan, {}));
 }
 
 TEST(LocalProjection, RoundTripsAKnownPointToOneCentimetre) {
