@@ -3,6 +3,8 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -42,18 +44,21 @@ RTCRayHit make_ray(const Eigen::Vector3d& origin, const Eigen::Vector3d& directi
 // segment through 4 m rooms crosses ~50 faces).
 constexpr int kMaxHits = 256;
 
-// No member initialisers: the buffer is written before it is read, and zeroing 256 records
-// cost as much as sorting them.
-struct HitRecord {
-  unsigned prim;
-  float t;
-};
+// A hit as one integer that sorts as (t, primitive): t >= tnear > 0, and the bit patterns of
+// positive floats order as the floats do. Integer keys sort faster than records compared field
+// by field, which matters because the occlusion traversal reports hits in no particular order.
+using HitKey = std::uint64_t;
+HitKey hit_key(float t, unsigned prim) {
+  return (static_cast<HitKey>(std::bit_cast<std::uint32_t>(t)) << 32) | prim;
+}
+float hit_t(HitKey key) { return std::bit_cast<float>(static_cast<std::uint32_t>(key >> 32)); }
+unsigned hit_prim(HitKey key) { return static_cast<unsigned>(key & 0xFFFFFFFFu); }
 
 // Embree hands the filter the context pointer we passed to rtcOccluded1; extending the context
 // struct is the documented way to carry per-query data into the callback.
 struct CollectContext {
   RTCIntersectContext context;
-  HitRecord* hits;
+  HitKey* hits;
   int count;
 };
 
@@ -62,8 +67,8 @@ void collect_all_hits(const RTCFilterFunctionNArguments* args) {
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
     if (collect->count < kMaxHits) {
-      collect->hits[collect->count++] = {RTCHitN_primID(args->hit, args->N, i),
-                                         RTCRayN_tfar(args->ray, args->N, i)};
+      collect->hits[collect->count++] =
+          hit_key(RTCRayN_tfar(args->ray, args->N, i), RTCHitN_primID(args->hit, args->N, i));
     }
     args->valid[i] = 0;  // reject: traversal goes on to the next triangle
   }
@@ -160,7 +165,7 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   const double length = dir.norm();
   if (length <= 0.0 || wall_ids_.empty()) return;
 
-  HitRecord hits[kMaxHits];
+  HitKey hits[kMaxHits];
   CollectContext collect;
   rtcInitIntersectContext(&collect.context);
   collect.hits = hits;
@@ -172,11 +177,9 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   RTCRayHit rayhit = make_ray(from, dir, static_cast<float>(eps), static_cast<float>(1.0 - eps));
   rtcOccluded1(handles_->filtered, &collect.context, &rayhit.ray);
 
-  // The hits in order along the segment (the traversal reports them in its own order). Sorting
-  // by t orders them as by distance: t * length is monotonic and keeps distinct floats distinct.
-  std::sort(hits, hits + collect.count, [](const HitRecord& a, const HitRecord& b) {
-    return a.t != b.t ? a.t < b.t : a.prim < b.prim;
-  });
+  // The hits in order along the segment. Sorting by t orders them as by distance: t * length is
+  // monotonic and keeps distinct floats distinct.
+  std::sort(hits, hits + collect.count);
 
   // Faces in order along the segment: +1 where the segment enters material (runs against the
   // face's normal), -1 where it leaves; a hit in the face's plane (0) says nothing.
@@ -189,9 +192,10 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   std::size_t n = 0;
   const Eigen::Vector3f dir_f = dir.cast<float>();
   for (int i = 0; i < collect.count; ++i) {
-    const float along = normals_[hits[i].prim].dot(dir_f);
+    const unsigned prim = hit_prim(hits[i]);
+    const float along = normals_[prim].dot(dir_f);
     if (along == 0.0f) continue;
-    faces[n++] = {static_cast<double>(hits[i].t) * length, along < 0.0f ? +1 : -1, hits[i].prim};
+    faces[n++] = {static_cast<double>(hit_t(hits[i])) * length, along < 0.0f ? +1 : -1, prim};
   }
 
   // Pieces between consecutive faces (and the segment's ends). A piece after an entered face and
