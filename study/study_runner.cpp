@@ -19,6 +19,7 @@
 #include "study/front_end_choice.hpp"
 #include "study/radio_resolution.hpp"
 #include "study/result_columns.hpp"
+#include "study/site_cache.hpp"
 
 namespace wifislam::study {
 
@@ -178,9 +179,8 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   const slam::SlamOptions slam_options = case_slam_options(study, c);
   const std::string scene_hash = sha256_hex(sim::resolved_scene_yaml(scene));
   if (study.level == StudyLevel::kRadio) {
-    const RadioResolution r = radio_resolution(
-        simulate_pauses(std::make_shared<const sim::Site>(scene), slam_options.wifi),
-        slam_options.wifi);
+    const RadioResolution r =
+        radio_resolution(simulate_pauses(shared_site(scene), slam_options.wifi), slam_options.wifi);
     ResultRow row;
     row.variant = "radio";
     row.scene_hash = scene_hash;

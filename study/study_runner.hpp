@@ -5,7 +5,8 @@
 //
 // Per case: the base scene with the case's scene axes set (loaded and checked as a scene file),
 // the SLAM options with the case's slam.* and frontend axes set; then
-//  - level radio: radio_resolution.hpp, one row (variant "radio");
+//  - level radio: radio_resolution.hpp, one row (variant "radio"), on a site shared with the
+//    study's other cases of the same building, route and seed (site_cache.hpp);
 //  - level slam: the comparison runner (comparison_study.hpp) on that one scene and seed, vanilla
 //    and Wi-Fi, two rows with what `compare` measures. Its dataset and run folders live in a
 //    scratch folder beside the database (<database>.work/<case id>) and are removed once the

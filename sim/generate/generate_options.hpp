@@ -29,6 +29,9 @@ struct GenerateOptions {
   std::int64_t max_frames = -1;
   /// false: write poses, odometry and Wi-Fi only (no rendering; fast radio studies).
   bool images = true;
+  /// false (with images false): the in-memory pipeline emits no camera frames at all, only
+  /// odometry and scans, which are the same with or without frames (radio-level studies).
+  bool frames = true;
   /// Threads encoding and writing PNGs while the main thread renders (1 = encode inline;
   /// 0 = one per core). Clamped to 4 per core, and fewer when a process or memory limit will
   /// not start more (GenerateSummary::threads says how many ran). The output is byte-identical

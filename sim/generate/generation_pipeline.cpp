@@ -64,6 +64,7 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   schedule_ = std::make_unique<SensorSchedule>(site_->motion(), schedule);
   odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, scene_.seed);
 
+  frames_ = options.frames || options.images;
   if (options.images) {
     renderer_ = std::make_unique<RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
     renderer_->set_world(site_->world(), scene_);
@@ -84,8 +85,9 @@ std::optional<GeneratedEvent> GenerationPipeline::next() {
                                  ? schedule_->odometry_time(next_odometry_).ns
                                  : kNever;
   const std::int64_t t_scan = next_scan_ < scans.size() ? scans[next_scan_].end.ns : kNever;
-  const std::int64_t t_frame =
-      next_frame_ < schedule_->frame_count() ? schedule_->frame_time(next_frame_).ns : kNever;
+  const std::int64_t t_frame = frames_ && next_frame_ < schedule_->frame_count()
+                                   ? schedule_->frame_time(next_frame_).ns
+                                   : kNever;
   if (t_odo == kNever && t_scan == kNever && t_frame == kNever) return std::nullopt;
   if (t_odo <= t_scan && t_odo <= t_frame) {
     const Timestamp t = Timestamp::from_ns(t_odo);

@@ -104,6 +104,7 @@ class GenerationPipeline {
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;
   std::int64_t next_frame_ = 0, next_odometry_ = 0;
+  bool frames_ = true;  // GenerateOptions::frames
   std::size_t next_scan_ = 0;
   PipelineTimings timings_;
   Timestamp time_origin_;

