@@ -96,7 +96,7 @@ std::vector<std::string> levels_with_spaces(const std::vector<PlanFeature>& feat
 /// One door for the input `r` on its longest shared wall with an input of a kind in `with`.
 std::optional<PlacedDoor> door_on_longest_wall(int r, const std::vector<SpaceInput>& inputs,
                                                const Partition& partition,
-                                               const std::set<sim::SpaceKind>& with, double width_m,
+                                               const std::set<sim::SpaceKind>& with,
                                                double max_width_m, bool open) {
   const SharedWall* best = nullptr;
   int other = -1;
@@ -106,17 +106,16 @@ std::optional<PlacedDoor> door_on_longest_wall(int r, const std::vector<SpaceInp
     if (best == nullptr || w.length_m() > best->length_m() + 1e-9) best = &w, other = o;
   }
   if (best == nullptr) return std::nullopt;
+  // As wide as asked, but 15 cm of wall left at either jamb; no door narrower than 0.6 m.
   const double width = std::min(max_width_m, best->length_m() - 0.3);
-  if (width < std::min(width_m, 0.6)) return std::nullopt;
-  const double w = std::max(width_m, width);
-  const double used = std::min(w, best->length_m() - 0.3);
+  if (width < 0.6) return std::nullopt;
   const Eigen::Vector2d mid = 0.5 * (best->from_m + best->to_m);
   const Eigen::Vector2d along = (best->to_m - best->from_m).normalized();
   PlacedDoor door;
   door.a = r;
   door.b = other;
-  door.door.from_m = mid - 0.5 * used * along;
-  door.door.to_m = mid + 0.5 * used * along;
+  door.door.from_m = mid - 0.5 * width * along;
+  door.door.to_m = mid + 0.5 * width * along;
   door.door.open = open;
   return door;
 }
@@ -221,17 +220,17 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
     const int r = static_cast<int>(i);
     if (joined[i].kind == sim::SpaceKind::kRoom) {
       auto door = door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kCorridor},
-                                       options.door_width_m, options.door_width_m, false);
+                                       options.door_width_m, false);
       if (!door)
         door = door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kArea},
-                                    options.door_width_m, options.door_width_m, false);
+                                    options.door_width_m, false);
       if (door)
         doors.push_back(*door);
       else
         ++plan.counts.rooms_without_door;
     } else if (joined[i].kind == sim::SpaceKind::kArea) {
-      if (auto door = door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kCorridor},
-                                           options.door_width_m, 1.8, true))
+      if (auto door =
+              door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kCorridor}, 1.8, true))
         doors.push_back(*door);
     }
   }

@@ -387,6 +387,16 @@ class YamlWriter {
   void list_if_any(const char* key, std::vector<T>& items) {
     if (!items.empty()) list(key, items);
   }
+  /// radio.wall_loss_db only when it sets a loss: resolved scenes without one stay as they were.
+  void object(const char* key, WallLossOverrides& value) {
+    for (const auto& loss : value.by_material_db)
+      if (loss) {
+        out_ << YAML::Key << key << YAML::Value << YAML::BeginMap;
+        schema::visit(*this, value);
+        out_ << YAML::EndMap;
+        return;
+      }
+  }
 
  private:
   // Shortest text that reads back to the same double ("2.8", not "2.7999999999999998").
