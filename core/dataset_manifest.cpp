@@ -28,6 +28,7 @@ std::string manifest_to_json(const DatasetManifest& m) {
   doc["format"] = dataset::kFormatName;
   doc["format_version"] = m.format_version;
   doc["images"] = m.images;
+  if (!m.colour_images) doc["colour_images"] = false;
   doc["versions"] = ordered_json::object();
   for (const auto& [k, v] : m.versions) doc["versions"][k] = v;
   doc["parameters"] = ordered_json::parse(m.parameters_json);
@@ -71,6 +72,7 @@ DatasetManifest read_dataset_manifest(const fs::path& path) {
                                    m.format_version, dataset::kFormatVersion));
     }
     m.images = require("images").get<bool>();
+    if (doc.contains("colour_images")) m.colour_images = doc["colour_images"].get<bool>();
     for (const auto& [k, v] : require("versions").items()) m.versions[k] = v.get<std::string>();
     m.parameters_json = require("parameters").dump();
     for (const auto& [k, v] : require("counts").items()) m.counts[k] = v.get<std::int64_t>();

@@ -27,6 +27,9 @@ struct ManifestFile {
 struct DatasetManifest {
   int format_version = 1;
   bool images = true;  // false for --no-images datasets (poses, odometry and Wi-Fi only)
+  /// false: depth images only, no colour (a study case's dataset, read by the evaluation alone);
+  /// the key "colour_images" is written only then.
+  bool colour_images = true;
   std::map<std::string, std::string> versions;
   std::string parameters_json = "{}";  // a JSON object, as the generator recorded it
   std::map<std::string, std::int64_t> counts;

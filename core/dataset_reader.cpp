@@ -131,6 +131,12 @@ DatasetReader::DatasetReader(const fs::path& folder, DatasetReaderOptions option
   }
   if (is_file(folder_ / dataset::kManifest)) {
     manifest_ = read_dataset_manifest(folder_ / dataset::kManifest);
+    if (!manifest_->colour_images) {
+      throw InvalidInputError(folder_.string() +
+                              ": holds depth images only (a study case's dataset, kept for its "
+                              "evaluation); SLAM needs colour: generate the dataset with "
+                              "`wifislam generate`");
+    }
     if (options_.verify_checksums) verify_manifest_files(folder_, *manifest_);
   }
   if (is_file(folder_ / dataset::kCalibration)) {

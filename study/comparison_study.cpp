@@ -15,12 +15,9 @@
 #include "eval/report_writer.hpp"
 #include "eval/run_divergence.hpp"
 #include "peers/external_run.hpp"
-#include "sim/generate/dataset_writer.hpp"
 #include "sim/generate/generation_pipeline.hpp"
-#include "sim/generate/sensor_input.hpp"
-#include "slam/io/run_folder_writer.hpp"
-#include "slam/system/run_slam.hpp"
 #include "study/front_end_choice.hpp"
+#include "study/streamed_runs.hpp"
 
 namespace wifislam::study {
 
@@ -364,6 +361,10 @@ struct RunJob {
   std::shared_ptr<const sim::Site> site;
   slam::SlamOptions slam;
   std::size_t case_index = 0;
+  /// Our front ends run while the dataset is generated (study/streamed_runs.hpp); what they
+  /// report is kept here until they are evaluated. External systems run on the finished dataset.
+  bool streamed = false;
+  double slam_wall_s = 0.0;
 };
 
 /// The variants a setting runs: vanilla, and Wi-Fi unless the front end is an external system
@@ -389,8 +390,47 @@ void check_comparison_input(const std::vector<sim::Scene>& scenes,
   }
 }
 
+/// Generates the dataset of jobs[first..] (one scene and seed) and runs our front ends' jobs
+/// among them on its events as it is written.
+void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
+                         const ComparisonOptions& options, const std::filesystem::path& out_dir,
+                         const std::function<void(const std::string&)>& progress,
+                         const ComparisonResult& result) {
+  const RunJob& any = jobs[first];
+  std::vector<StreamedRun> runs;
+  std::vector<std::size_t> run_job_of;
+  bool any_external = false;
+  for (std::size_t j = first; j < jobs.size(); ++j) {
+    if (peers::is_external_frontend(jobs[j].slam.frontend)) {
+      any_external = true;
+      continue;
+    }
+    jobs[j].streamed = true;
+    StreamedRun run;
+    run.slam = jobs[j].slam;
+    run.run_dir = out_dir / result.cases[jobs[j].case_index].run_dir;
+    run.run_info = {{"input", {{"kind", "dataset"}, {"path", any.dataset.string()}}}};
+    runs.push_back(std::move(run));
+    run_job_of.push_back(j);
+  }
+  sim::GenerateOptions generate;
+  generate.max_frames = options.max_frames;
+  // An external system reads the images from disk; otherwise colour only when the caller keeps
+  // the dataset (the evaluation reads depth alone).
+  generate.colour_images = options.dataset_colour || any_external;
+  const sim::GenerateSummary g =
+      generate_with_runs(any.site, out_dir / any.dataset, generate, runs, options.jobs);
+  progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s){}", any.dataset.string(),
+                       g.frames, g.wifi_scans, g.total_s,
+                       runs.empty() ? "" : fmt::format(" with {} SLAM runs on it", runs.size())));
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    jobs[run_job_of[r]].slam_wall_s = runs[r].summary.wall_s;
+}
+
 /// Generates each scene's dataset per seed (its site built once and kept for the plots) and lays
-/// out the runs on it: every setting, vanilla and Wi-Fi.
+/// out the runs on it: every setting, vanilla and Wi-Fi. Our front ends' runs are run here, fed
+/// while the dataset is generated (`options.jobs` side by side); external systems' runs are
+/// left for run_job.
 std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
                                       const ComparisonOptions& options,
                                       const std::vector<Setting>& settings,
@@ -409,11 +449,7 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
       overrides.fps = options.fps;
       auto site = std::make_shared<const sim::Site>(sim::resolve_scene(scene, overrides));
       result.sites.push_back(site);
-      sim::GenerateOptions generate;
-      generate.max_frames = options.max_frames;
-      const sim::GenerateSummary g = sim::generate_dataset(site, out_dir / dataset, generate);
-      progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s)", dataset.string(),
-                           g.frames, g.wifi_scans, g.total_s));
+      const std::size_t first_job = jobs.size();
       for (std::size_t s = 0; s < settings.size(); ++s) {
         for (bool wifi : variants_of(options_for(options, settings[s], false, seed))) {
           ComparisonCase c;
@@ -428,6 +464,7 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
           result.cases.push_back(std::move(c));
         }
       }
+      generate_and_stream(jobs, first_job, options, out_dir, progress, result);
     }
   }
   return jobs;
@@ -472,7 +509,8 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
                : fmt::format("{}: failed: {}", what, c.status));
 }
 
-/// Runs SLAM on the job's dataset, writes the run folder, evaluates it and writes its eval/.
+/// Evaluates the job's run (ours: run while its dataset was generated; an external system's: run
+/// here on the finished dataset) and writes its eval/.
 void run_job(const RunJob& job, const ComparisonOptions& options,
              const std::filesystem::path& out_dir, ComparisonCase& c,
              const std::function<void(const std::string&)>& progress) {
@@ -480,19 +518,11 @@ void run_job(const RunJob& job, const ComparisonOptions& options,
     run_external_job(job, options, out_dir, c, progress);
     return;
   }
-  const std::filesystem::path run_dir = out_dir / c.run_dir;
-  sim::SensorInputOptions input;
-  input.verify_checksums = false;  // written moments ago by this process
-  const sim::SensorInput dataset = sim::open_sensor_input(out_dir / job.dataset, input);
-  slam::RunSummary summary;
-  const auto system = slam::run_slam(*dataset.stream, job.slam, summary);
-  slam::write_run_folder(run_dir, *system, summary, /*overwrite=*/false,
-                         {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}});
   evaluate_job(job, options, out_dir, c);
   progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
                        c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
                        c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
-                       c.evaluation.false_positives, summary.wall_s));
+                       c.evaluation.false_positives, job.slam_wall_s));
 }
 
 /// Where each Wi-Fi run first departs from its vanilla twin (our front ends: an external run has
@@ -549,7 +579,8 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
   };
   const std::vector<RunJob> jobs =
       generate_datasets(scenes, options, settings, out_dir, progress, result);
-  // SLAM runs and their evaluations, `jobs` at a time; each writes only its own folder and case.
+  // Evaluations (and external systems' runs), `jobs` at a time; each writes only its own folder
+  // and case.
   parallel_for(clamp_thread_count(options.jobs), jobs.size(), [&](std::size_t i) {
     run_job(jobs[i], options, out_dir, result.cases[jobs[i].case_index], progress);
   });

@@ -60,9 +60,14 @@ struct ComparisonOptions {
   std::int64_t max_frames = -1;
   eval::EvalOptions eval;
   bool plots = true;
-  /// SLAM runs in parallel. 1 keeps the wall-clock figures free of interference (the timing
-  /// columns compare runs); results are identical for any value.
+  /// SLAM runs in parallel, side by side on one rendering of their dataset (and evaluations).
+  /// 1 keeps the wall-clock figures free of interference (the timing columns compare runs);
+  /// results are identical for any value.
   int jobs = 1;
+  /// Write the datasets' colour images. false (a study, which deletes its datasets): depth only,
+  /// all the evaluation reads; our SLAM runs take their frames in memory either way. An external
+  /// system's dataset always has colour.
+  bool dataset_colour = true;
   /// One line per finished step (dataset generated, run evaluated), from any worker thread
   /// (calls are serialised).
   std::function<void(const std::string&)> on_progress;

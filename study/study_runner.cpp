@@ -167,6 +167,7 @@ ComparisonOptions case_comparison(const StudyFile& study, const StudyCase& c,
   compare.max_frames = study.slam.max_frames;
   compare.plots = false;
   compare.jobs = jobs;
+  compare.dataset_colour = false;  // the case's folder is deleted: depth for the evaluation only
   return compare;
 }
 

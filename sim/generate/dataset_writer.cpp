@@ -25,6 +25,7 @@
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
 #include "core/worker_pool.hpp"
+#include "sim/generate/as_stored.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/radio/radio_band.hpp"
 #include "sim/render/depth_png.hpp"
@@ -69,18 +70,23 @@ struct WrittenFrame {
   double encode_s = 0.0, io_s = 0.0;
 };
 
+/// Encodes and writes a frame's PNGs. `depth`: metres (CV_32FC1) or PNG units (CV_16UC1, when
+/// the writer converted them already); `rgb` empty: depth only (a depth-only dataset).
 WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_path,
                               const std::string& depth_path, const cv::Mat& rgb,
-                              const cv::Mat& depth_m) {
+                              const cv::Mat& depth) {
   WrittenFrame out;
   auto t0 = Clock::now();
-  const std::vector<unsigned char> rgb_png = encode_png(rgb);
-  const std::vector<unsigned char> depth_png = encode_png(depth_to_png_units(depth_m));
+  const std::vector<unsigned char> rgb_png =
+      rgb.empty() ? std::vector<unsigned char>{} : encode_png(rgb);
+  const std::vector<unsigned char> depth_png =
+      encode_png(depth.type() == CV_16UC1 ? depth : depth_to_png_units(depth));
   out.encode_s = seconds_since(t0);
   t0 = Clock::now();
   for (const auto& [relative, bytes, sha] :
        {std::tuple{&rgb_path, &rgb_png, &out.rgb_sha256},
         std::tuple{&depth_path, &depth_png, &out.depth_sha256}}) {
+    if (relative->empty()) continue;
     const std::string_view data(reinterpret_cast<const char*>(bytes->data()), bytes->size());
     std::ofstream file(folder / *relative, std::ios::binary);
     file.write(data.data(), static_cast<std::streamsize>(data.size()));
@@ -157,6 +163,7 @@ std::string parameters_json(const Scene& scene, const GenerateOptions& options) 
   p["time_origin_s"] = scene.sensors.time_origin_s;
   p["max_frames"] = options.max_frames;
   p["images"] = options.images;
+  if (!options.colour_images) p["colour_images"] = false;  // absent (true) in every other dataset
   p["render"] = {{"near_m", options.render.near_m},
                  {"far_m", options.render.far_m},
                  {"ambient", options.render.ambient},
@@ -231,14 +238,16 @@ class DatasetWriter {
                       calibration_to_yaml(make_calibration(pipeline_, options_)));
     write_file_atomic(dir_ / dataset::kAccessPoints, access_points_csv(pipeline_.radio()));
     if (!options_.images) return;
-    fs::create_directories(dir_ / dataset::kRgbDir);
-    fs::create_directories(dir_ / dataset::kDepthDir);
     const std::string name = scene.name + " (wifislam)";
-    rgb_list_.emplace(dir_ / dataset::kRgbList,
-                      fmt::format("# color images\n# file: '{}'\n# timestamp filename\n", name));
+    if (options_.colour_images) {
+      fs::create_directories(dir_ / dataset::kRgbDir);
+      rgb_list_.emplace(dir_ / dataset::kRgbList,
+                        fmt::format("# color images\n# file: '{}'\n# timestamp filename\n", name));
+      associations_.emplace(dir_ / dataset::kAssociations);
+    }
+    fs::create_directories(dir_ / dataset::kDepthDir);
     depth_list_.emplace(dir_ / dataset::kDepthList,
                         fmt::format("# depth maps\n# file: '{}'\n# timestamp filename\n", name));
-    associations_.emplace(dir_ / dataset::kAssociations);
     image_sums_.emplace(dir_ / dataset::kImageChecksums);
   }
 
@@ -264,8 +273,10 @@ class DatasetWriter {
           format_tum_line(StampedPose::from_pose(reading->time, reading->base_in_odom)));
       odometry_.write("\n");
       ++summary_.odometry_readings;
+      if (options_.on_event) options_.on_event(odometry_as_stored(*reading));
     } else if (const auto* scan = std::get_if<WifiScan>(&generated.event)) {
       take_scan(*scan);
+      if (options_.on_event) options_.on_event(generated.event);
     } else {
       take_frame(std::get<RgbdFrame>(generated.event), generated.camera_to_world);
     }
@@ -296,29 +307,42 @@ class DatasetWriter {
       report_progress();
       return;
     }
-    const FramePair pair{frame.time, dataset::frame_image_path(dataset::kRgbDir, frame.time),
-                         frame.time, dataset::frame_image_path(dataset::kDepthDir, frame.time), 0};
+    const FramePair pair{
+        frame.time,
+        options_.colour_images ? dataset::frame_image_path(dataset::kRgbDir, frame.time) : "",
+        frame.time, dataset::frame_image_path(dataset::kDepthDir, frame.time), 0};
+    // Depth goes to the encoder in metres (converted there, off this thread) unless the frame is
+    // also streamed: then its PNG units are made once, here, for both.
+    cv::Mat depth = std::move(frame.depth_m);
+    if (options_.on_event) {
+      depth = depth_to_png_units(depth);
+      // What a reader decodes: the colour image as is (PNG is lossless), depth from its units.
+      RgbdFrame as_read = frame;
+      as_read.depth_m = depth_as_stored(depth);
+      options_.on_event(std::move(as_read));
+    }
+    cv::Mat rgb = options_.colour_images ? std::move(frame.rgb) : cv::Mat();
     if (!pool_) {
-      finish_frame(
-          pair, encode_and_write(dir_, pair.rgb_path, pair.depth_path, frame.rgb, frame.depth_m));
+      finish_frame(pair, encode_and_write(dir_, pair.rgb_path, pair.depth_path, rgb, depth));
       report_progress();
       return;
     }
     while (pending_.size() >= max_pending_) collect_oldest();
-    pending_.push_back({pair, pool_->submit([dir = dir_, pair, rgb = std::move(frame.rgb),
-                                             depth = std::move(frame.depth_m)] {
-                          return encode_and_write(dir, pair.rgb_path, pair.depth_path, rgb, depth);
-                        })});
+    pending_.push_back(
+        {pair, pool_->submit([dir = dir_, pair, rgb = std::move(rgb), depth = std::move(depth)] {
+           return encode_and_write(dir, pair.rgb_path, pair.depth_path, rgb, depth);
+         })});
   }
 
   void finish_frame(const FramePair& pair, const WrittenFrame& written) {
     summary_.png_encode_s += written.encode_s;
     summary_.io_s += written.io_s;
     summary_.bytes_written += written.bytes;
-    rgb_list_->write(format_tum_file_line(pair.rgb_time, pair.rgb_path));
+    if (rgb_list_) rgb_list_->write(format_tum_file_line(pair.rgb_time, pair.rgb_path));
     depth_list_->write(format_tum_file_line(pair.depth_time, pair.depth_path));
-    associations_->write(format_association_line(pair));
-    image_sums_->write(format_checksum_line(written.rgb_sha256, pair.rgb_path));
+    if (associations_) associations_->write(format_association_line(pair));
+    if (!pair.rgb_path.empty())
+      image_sums_->write(format_checksum_line(written.rgb_sha256, pair.rgb_path));
     image_sums_->write(format_checksum_line(written.depth_sha256, pair.depth_path));
   }
 
@@ -363,6 +387,7 @@ class DatasetWriter {
   DatasetManifest make_manifest() {
     DatasetManifest manifest;
     manifest.images = options_.images;
+    manifest.colour_images = options_.colour_images;
     manifest.versions = {{"wifislam", WIFISLAM_VERSION},
                          {"opencv", CV_VERSION},
                          {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
@@ -378,7 +403,9 @@ class DatasetWriter {
                        {"access_points", summary_.access_points},
                        {"bssids", summary_.bssids}};
     std::vector<std::string> files;
-    if (options_.images) files = {dataset::kRgbList, dataset::kDepthList, dataset::kAssociations};
+    if (options_.images && options_.colour_images) files = {dataset::kRgbList};
+    if (options_.images) files.push_back(dataset::kDepthList);
+    if (options_.images && options_.colour_images) files.push_back(dataset::kAssociations);
     for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
                           dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
       files.push_back(f);
@@ -421,10 +448,18 @@ class DatasetWriter {
   bool any_event_ = false;
 };
 
+/// Options that only make sense with images.
+void check_image_options(const GenerateOptions& options) {
+  if (options.images) return;
+  if (!options.colour_images) throw std::invalid_argument("colour_images=false needs images");
+  if (options.on_event) throw std::invalid_argument("on_event needs images");
+}
+
 }  // namespace
 
 GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
                                  const GenerateOptions& options) {
+  check_image_options(options);
   const auto start = Clock::now();
   AtomicDirectory folder(output, options.overwrite);
   GenerationPipeline pipeline(resolve_scene(scene, options), options);
@@ -433,6 +468,7 @@ GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
 
 GenerateSummary generate_dataset(std::shared_ptr<const Site> site, const fs::path& output,
                                  const GenerateOptions& options) {
+  check_image_options(options);
   const auto start = Clock::now();
   AtomicDirectory folder(output, options.overwrite);
   GenerationPipeline pipeline(std::move(site), options);

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/sensor_stream.hpp"
 #include "core/timestamp.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 
@@ -32,6 +33,16 @@ struct GenerateOptions {
   /// false (with images false): the in-memory pipeline emits no camera frames at all, only
   /// odometry and scans, which are the same with or without frames (radio-level studies).
   bool frames = true;
+  /// false (with images): write the depth images only, no colour (rgb/, rgb.txt and
+  /// associations.txt absent; the manifest says so and SLAM refuses such a dataset). For a
+  /// dataset nobody reads but the evaluation, whose overlap test needs depth: a study case's,
+  /// whose SLAM runs take their frames from `on_event`.
+  bool colour_images = true;
+  /// Called from the generating thread with every event, in time order, exactly as SLAM would
+  /// read it back from the dataset being written (frames: colour as written, depth at the PNG's
+  /// resolution): lets SLAM runs consume a dataset while it is written, with no PNG round trip
+  /// (study/streamed_runs.hpp). Needs images.
+  std::function<void(SensorEvent)> on_event;
   /// Threads encoding and writing PNGs while the main thread renders (1 = encode inline;
   /// 0 = one per core). Clamped to 4 per core, and fewer when a process or memory limit will
   /// not start more (GenerateSummary::threads says how many ran). The output is byte-identical

@@ -2,8 +2,10 @@
 
 #include <fmt/format.h>
 
+#include "sim/generate/as_stored.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/render/depth_png.hpp"
+#include "sim/robot/camera_mount.hpp"
 
 namespace wifislam::sim {
 
@@ -22,9 +24,10 @@ std::optional<SensorEvent> GeneratorStream::next() {
   if (!generated) return std::nullopt;
   if (auto* frame = std::get_if<RgbdFrame>(&generated->event)) {
     last_ground_truth_ = generated->camera_to_world;
-    // The depth a dataset reader would get back from the 16-bit PNG.
     if (!frame->depth_m.empty())
-      frame->depth_m = depth_from_png_units(depth_to_png_units(frame->depth_m));
+      frame->depth_m = depth_as_stored(depth_to_png_units(frame->depth_m));
+  } else if (const auto* reading = std::get_if<OdometryReading>(&generated->event)) {
+    return odometry_as_stored(*reading);
   }
   return std::move(generated->event);
 }
@@ -41,6 +44,12 @@ std::string GeneratorStream::description() const {
                      s.seed, pipeline_->schedule().frame_count(), s.sensors.camera.fps,
                      pipeline_->images() ? "" : ", no images",
                      pipeline_->schedule().scans().size());
+}
+
+SensorStreamFacts generated_stream_facts(const Site& site, const std::string& description) {
+  const Scene& scene = site.scene();
+  return {scene.sensors.camera.intrinsics, CameraMount(scene.sensors.camera).camera_in_base(),
+          !site.radio().access_points().empty(), /*has_odometry=*/true, description};
 }
 
 }  // namespace wifislam::sim

@@ -1,12 +1,13 @@
 #pragma once
 // The in-memory SensorStream: frames, scans and odometry straight from the simulation, no disk
 // (the fast path for sweeps). It gives SLAM exactly what reading the dataset written with the
-// same scene and options would: depth is rounded to the TUM PNG resolution (1/5000 m) as the
-// writer stores it, and colour is lossless either way. Frames carry no file paths.
+// same scene and options would (sim/generate/as_stored.hpp: depth at the PNG's resolution,
+// odometry rotations rebuilt from their stored quaternions). Frames carry no file paths.
 
 #include <memory>
 
 #include "core/sensor_stream.hpp"
+#include "core/sensor_stream_fanout.hpp"
 #include "sim/generate/generate_options.hpp"
 #include "sim/scene/scene.hpp"
 #include "sim/site/site.hpp"
@@ -42,5 +43,9 @@ class GeneratorStream final : public SensorStream {
   std::unique_ptr<GenerationPipeline> pipeline_;
   Pose last_ground_truth_ = Pose::Identity();
 };
+
+/// What a stream of `site`'s events says of itself (camera, mount, Wi-Fi, odometry), as a
+/// GeneratorStream on it would; for streams fed from a dataset's generation (on_event).
+SensorStreamFacts generated_stream_facts(const Site& site, const std::string& description);
 
 }  // namespace wifislam::sim

@@ -1,0 +1,127 @@
+// The fan-out that feeds one sensor stream to several consumers on their own threads: every
+// consumer reads every event in order, with images of its own; the producer waits for the
+// slowest consumer (memory bound), not for one that left; a failed producer fails its consumers.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <future>
+#include <thread>
+
+#include "core/error.hpp"
+#include "core/sensor_stream_fanout.hpp"
+
+namespace wifislam {
+namespace {
+
+using namespace std::chrono_literals;
+
+RgbdFrame frame_at(std::int64_t k) {
+  RgbdFrame f;
+  f.time = Timestamp::from_ns(1'000'000'000 * k);
+  f.index = k;
+  f.rgb = cv::Mat(4, 6, CV_8UC3, cv::Scalar::all(static_cast<double>(k % 200)));
+  f.depth_m = cv::Mat(4, 6, CV_32FC1, cv::Scalar(0.5 * static_cast<double>(k)));
+  return f;
+}
+
+OdometryReading odometry_at(std::int64_t k) {
+  OdometryReading r;
+  r.time = Timestamp::from_ns(1'000'000'000 * k - 500'000'000);
+  r.base_in_odom.translation().x() = static_cast<double>(k);
+  return r;
+}
+
+SensorStreamFacts facts() {
+  SensorStreamFacts f;
+  f.has_wifi = true;
+  f.has_odometry = true;
+  f.description = "test stream";
+  f.camera_in_base.translation().z() = 0.7;
+  return f;
+}
+
+TEST(SensorStreamFanout, EveryConsumerReadsEveryEventInOrderWithItsOwnImages) {
+  SensorStreamFanout fanout(facts(), 3, /*window_frames=*/2);
+  std::vector<std::future<std::vector<std::pair<int, std::int64_t>>>> readers;
+  for (int i = 0; i < 3; ++i) {
+    readers.push_back(std::async(std::launch::async, [&fanout, i] {
+      SensorStream& s = fanout.consumer(i);
+      EXPECT_TRUE(s.has_wifi());
+      EXPECT_EQ(s.description(), "test stream");
+      EXPECT_DOUBLE_EQ(s.camera_in_base().translation().z(), 0.7);
+      // The first consumer scribbles over every image it gets: the others must not see it.
+      std::vector<std::pair<int, std::int64_t>> out;
+      while (std::optional<SensorEvent> e = s.next()) {
+        if (auto* f = std::get_if<RgbdFrame>(&*e)) {
+          EXPECT_EQ(f->rgb.at<cv::Vec3b>(1, 1)[0], f->index % 200);
+          EXPECT_FLOAT_EQ(f->depth_m.at<float>(2, 2), 0.5f * static_cast<float>(f->index));
+          if (i == 0) {
+            f->rgb.setTo(cv::Scalar::all(255));
+            f->depth_m.setTo(-1.0);
+          }
+        }
+        out.emplace_back(static_cast<int>(e->index()), event_time(*e).ns);
+      }
+      return out;
+    }));
+  }
+  std::vector<std::pair<int, std::int64_t>> expected;
+  for (std::int64_t k = 1; k <= 40; ++k) {
+    fanout.push(odometry_at(k));
+    fanout.push(frame_at(k));
+    expected.emplace_back(2, odometry_at(k).time.ns);
+    expected.emplace_back(0, frame_at(k).time.ns);
+  }
+  fanout.close();
+  for (auto& r : readers) EXPECT_EQ(r.get(), expected);
+}
+
+TEST(SensorStreamFanout, TheProducerWaitsForTheSlowestConsumerButNotForOneThatLeft) {
+  SensorStreamFanout fanout(facts(), 2, /*window_frames=*/3);
+  for (std::int64_t k = 0; k < 3; ++k) fanout.push(frame_at(k));  // the window is full now
+  std::atomic<bool> pushed{false};
+  std::thread producer([&] {
+    fanout.push(frame_at(3));
+    pushed = true;
+  });
+  std::this_thread::sleep_for(200ms);
+  EXPECT_FALSE(pushed) << "a fourth frame went in while no consumer had read any";
+  ASSERT_TRUE(fanout.consumer(0).next().has_value());
+  std::this_thread::sleep_for(200ms);
+  EXPECT_FALSE(pushed) << "consumer 1 still has the first frame to read";
+  ASSERT_TRUE(fanout.consumer(1).next().has_value());
+  producer.join();  // both read frame 0: room for frame 3
+  EXPECT_TRUE(pushed);
+
+  fanout.leave(1);  // consumer 1 stops: only consumer 0 holds the producer back now
+  std::thread more([&] {
+    for (std::int64_t k = 4; k < 20; ++k) fanout.push(frame_at(k));
+    fanout.close();
+  });
+  std::int64_t last = -1;
+  while (std::optional<SensorEvent> e = fanout.consumer(0).next())
+    last = std::get<RgbdFrame>(*e).index;
+  more.join();
+  EXPECT_EQ(last, 19);
+}
+
+TEST(SensorStreamFanout, AFailedProducerFailsItsConsumersAndLeftConsumersDropEvents) {
+  SensorStreamFanout fanout(facts(), 1, 2);
+  fanout.push(frame_at(0));
+  fanout.abort("disk full");
+  try {
+    (void)fanout.consumer(0).next();
+    FAIL() << "next() returned after the producer failed";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("disk full"), std::string::npos) << e.what();
+  }
+
+  SensorStreamFanout nobody(facts(), 1, 1);
+  nobody.leave(0);
+  for (std::int64_t k = 0; k < 10; ++k) nobody.push(frame_at(k));  // would block if kept
+  nobody.close();
+}
+
+}  // namespace
+}  // namespace wifislam
