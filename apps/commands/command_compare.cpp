@@ -128,7 +128,8 @@ WIFISLAM_COMMAND(compare, 65) {
   app->add_option("--max-frames", args->max_frames, "Cut each dataset after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_option("--jobs", args->jobs,
-                  "SLAM runs in parallel (results identical; 1 keeps timings comparable)")
+                  "SLAM runs in parallel, side by side on one rendering of their dataset (results\n"
+                  "identical; 1 keeps timings comparable)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app->add_option("-o,--output", args->output, "Folder to write")->required();

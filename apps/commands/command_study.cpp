@@ -114,7 +114,8 @@ void add_run_command(CLI::App* app) {
       ->capture_default_str();
   run->add_option(
          "--jobs", args->jobs,
-         "Radio cases (or a SLAM case's two runs) in parallel; results do not depend on it")
+         "Radio cases (or a SLAM case's two runs, side by side on one rendering) in parallel;\n"
+         "results do not depend on it")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   run->add_flag("--force", args->force, "Replace a database of another study");
