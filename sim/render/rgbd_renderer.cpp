@@ -214,8 +214,6 @@ RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptio
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);  // black, incidence 0 where nothing is drawn
   glReadBuffer(GL_COLOR_ATTACHMENT0);
-  color_bgra_.create(h, w, CV_8UC4);
-  window_depth_.create(h, w, CV_32FC1);
 }
 
 RgbdRenderer::~RgbdRenderer() {
@@ -321,16 +319,21 @@ void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
     }
   }
 
-  glReadPixels(0, 0, w, h, GL_BGRA, GL_UNSIGNED_BYTE, color_bgra_.data);
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, window_depth_.data);
+  // Read back straight into the output images and unpack in place: BGRA into the incidence
+  // image (four bytes a pixel, as its floats), the z-buffer into the depth image. Separate
+  // read-back buffers cost one more trip of 2.4 MB a 640x480 frame through the cache.
+  out.depth_m.create(h, w, CV_32FC1);
+  out.incidence_cos.create(h, w, CV_32FC1);
+  out.color_bgr.create(h, w, CV_8UC3);
+  glPixelStorei(GL_PACK_ROW_LENGTH, static_cast<GLint>(out.incidence_cos.step1()));
+  glReadPixels(0, 0, w, h, GL_BGRA, GL_UNSIGNED_BYTE, out.incidence_cos.data);
+  glPixelStorei(GL_PACK_ROW_LENGTH, static_cast<GLint>(out.depth_m.step1()));
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, out.depth_m.data);
   unpack(out);
 }
 
 void RgbdRenderer::unpack(RenderedView& out) const {
   const int w = intrinsics_.width_px, h = intrinsics_.height_px;
-  out.depth_m.create(h, w, CV_32FC1);
-  out.incidence_cos.create(h, w, CV_32FC1);
-  out.color_bgr.create(h, w, CV_8UC3);
   // Window depth w in [0, 1] of a point at optical depth d is (f/(f-n)) - (f n/(f-n)) / d for
   // the projection above, so d = (f n/(f-n)) / (f/(f-n) - w); w = 1 is the cleared background.
   // With a 32-bit float z-buffer this recovers d to ~2e-5 m at 4 m and ~2 mm at 40 m.
@@ -338,15 +341,16 @@ void RgbdRenderer::unpack(RenderedView& out) const {
   const float numerator = static_cast<float>(f * n / (f - n));
   const float offset = static_cast<float>(f / (f - n));
   // In sequence: a thread pool's wake-up and spinning workers cost more than this pass saves.
-  // The vector loops and the scalar tail do the same float operations.
+  // The vector loops and the scalar tail do the same float operations. In place: every loop
+  // reads a pixel's window depth and BGRA before it writes that pixel's depth and incidence.
 #if defined(__x86_64__) && defined(__GNUC__)
   static const bool has_avx2 = __builtin_cpu_supports("avx2");
 #endif
   for (int y = 0; y < h; ++y) {
-    const float* window = window_depth_.ptr<float>(y);
-    const std::uint8_t* bgra = color_bgra_.ptr<std::uint8_t>(y);
     float* depth_m = out.depth_m.ptr<float>(y);
+    const float* window = depth_m;
     float* incidence = out.incidence_cos.ptr<float>(y);
+    const std::uint8_t* bgra = out.incidence_cos.ptr<std::uint8_t>(y);
     std::uint8_t* bgr = out.color_bgr.ptr<std::uint8_t>(y);
     int x = 0;
 #if defined(__x86_64__) && defined(__GNUC__)
