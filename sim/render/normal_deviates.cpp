@@ -30,10 +30,14 @@ void fill_normals(Rng& rng, float* out, int count) {
   constexpr std::uint64_t kMask = (1u << kNormalQuantileBits) - 1;
   constexpr int kPerDraw = 64 / kNormalQuantileBits;
   int i = 0;
+  // Unrolled, each index shifted out of the draw directly: a loop over a running shift made
+  // every lookup wait for the previous one, and fill_normals was ~40 % of the depth sensor
+  // model's time.
   for (; i + kPerDraw <= count; i += kPerDraw) {
-    std::uint64_t bits = rng.next_u64();
-    for (int k = 0; k < kPerDraw; ++k, bits >>= kNormalQuantileBits)
-      out[i + k] = table[bits & kMask];
+    const std::uint64_t bits = rng.next_u64();
+#pragma GCC unroll 8
+    for (int k = 0; k < kPerDraw; ++k)
+      out[i + k] = table[(bits >> (k * kNormalQuantileBits)) & kMask];
   }
   for (std::uint64_t bits = rng.next_u64(); i < count; ++i, bits >>= kNormalQuantileBits) {
     out[i] = table[bits & kMask];

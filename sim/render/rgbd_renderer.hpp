@@ -84,7 +84,8 @@ class RgbdRenderer {
 
  private:
   void upload_lights(const Eigen::Vector3d& camera_position_m);
-  /// Read-back buffers -> colour, metric depth and incidence images.
+  /// Read-back values -> colour, metric depth and incidence images, in place: out.depth_m holds
+  /// the z-buffer in [0, 1], out.incidence_cos the BGRA bytes (alpha = incidence |cos| x 255).
   void unpack(RenderedView& out) const;
 
   CameraIntrinsics intrinsics_;
@@ -95,8 +96,6 @@ class RgbdRenderer {
   std::map<TextureKey, std::unique_ptr<GlTexture>> textures_;
   std::vector<CeilingLight> lights_;
   unsigned framebuffer_ = 0, color_target_ = 0, z_buffer_ = 0;
-  cv::Mat color_bgra_;    // CV_8UC4 read back: lit colour, alpha = incidence |cos| x 255
-  cv::Mat window_depth_;  // CV_32FC1 read back: z-buffer in [0, 1]
   int last_draw_count_ = 0;
   struct Uniforms {
     int world_to_clip, camera_position, emissive, ambient, light_weights, light_positions, albedo;
