@@ -361,9 +361,8 @@ struct RunJob {
   std::shared_ptr<const sim::Site> site;
   slam::SlamOptions slam;
   std::size_t case_index = 0;
-  /// Our front ends run while the dataset is generated (study/streamed_runs.hpp); what they
-  /// report is kept here until they are evaluated. External systems run on the finished dataset.
-  bool streamed = false;
+  /// Our front ends run while the dataset is generated (study/streamed_runs.hpp): their wall
+  /// time, kept for the progress line after evaluation. External systems run on the dataset.
   double slam_wall_s = 0.0;
 };
 
@@ -405,7 +404,6 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
       any_external = true;
       continue;
     }
-    jobs[j].streamed = true;
     StreamedRun run;
     run.slam = jobs[j].slam;
     run.run_dir = out_dir / result.cases[jobs[j].case_index].run_dir;
