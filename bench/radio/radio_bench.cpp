@@ -1,6 +1,7 @@
 // Radio model benchmarks on j_hall (DESIGN.md, "Performance stance"):
 //  - wall-crossing segment queries (AP -> receiver, 30 m, every wall counted) per second, next
 //    to bare Embree rtcIntersect1 rays on the same walls and segments in the same run (ratio);
+//    on random segments and on the radio map's rows (an AP to every cell);
 //  - a full 0.25 m radio map of j_hall over all access points (strongest AP per cell), on 1 and
 //    2 threads, with every AP ray-cast at every cell and with exact pruning.
 #include <benchmark/benchmark.h>
@@ -15,6 +16,7 @@
 #include "sim/radio/propagation_model.hpp"
 #include "sim/radio/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "sim/site/site.hpp"
 #include "sim/world/world_types.hpp"
 
@@ -88,6 +90,49 @@ void BM_WallCrossingVsBareEmbree(benchmark::State& state) {
   state.counters["wall_triangles"] = static_cast<double>(walls.triangle_count());
 }
 BENCHMARK(BM_WallCrossingVsBareEmbree)->Unit(benchmark::kMillisecond);
+
+// The radio map's pattern, next to the random segments above: every AP to every free-space
+// 0.25 m cell of its row within 30 m, receivers at 1 m; wall-crossing queries and bare rays on the
+// same segments in one loop. Segments from one AP to neighbouring cells are shorter on average
+// and cross fewer walls than the random 30 m ones.
+void BM_WallCrossingRowsVsBareEmbree(benchmark::State& state) {
+  const JHall& h = j_hall();
+  const sim::radio::EmbreeWallScene& walls = h.site->radio().wall_scene();
+  const auto& plan = h.site->world().plan;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;
+  for (const auto& ap : h.site->radio().access_points())
+    for (double y = plan.bounds_min_m.y() + 0.125; y < plan.bounds_max_m.y(); y += 0.25)
+      for (double x = plan.bounds_min_m.x() + 0.125; x < plan.bounds_max_m.x(); x += 0.25) {
+        const Eigen::Vector3d cell(x, y, 1.0);
+        if ((cell - ap.position_m).norm() <= 30.0 &&
+            sim::regions_contain(plan.free_space, cell.head<2>()))
+          segments.emplace_back(ap.position_m, cell);
+      }
+  std::vector<sim::radio::WallCrossing> out;
+  double crossing_s = 0, bare_s = 0;
+  std::size_t walls_total = 0;
+  for (auto _ : state) {
+    const double t0 = thread_cpu_s();
+    for (const auto& [a, b] : segments) {
+      walls.walls_crossed(a, b, out);
+      walls_total += out.size();
+    }
+    const double t1 = thread_cpu_s();
+    double sink = 0;
+    for (const auto& [a, b] : segments) sink += walls.first_hit_m(a, b - a, 30.0);
+    const double t2 = thread_cpu_s();
+    benchmark::DoNotOptimize(sink);
+    crossing_s += t1 - t0;
+    bare_s += t2 - t1;
+  }
+  const double queries = static_cast<double>(segments.size()) * state.iterations();
+  state.counters["segments"] = static_cast<double>(segments.size());
+  state.counters["segments_per_s"] = queries / crossing_s;
+  state.counters["bare_rays_per_s"] = queries / bare_s;
+  state.counters["ratio_to_bare"] = bare_s / crossing_s;
+  state.counters["walls_per_segment"] = static_cast<double>(walls_total) / queries;
+}
+BENCHMARK(BM_WallCrossingRowsVsBareEmbree)->Unit(benchmark::kMillisecond);
 
 void BM_RadioMapJHallAllAps(benchmark::State& state) {
   const JHall& h = j_hall();
