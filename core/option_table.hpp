@@ -10,8 +10,9 @@
 //   v.number(key, double&, help[, Infinity::kAllowed])
 //   v.boolean(key, bool&, help)          v.text(key, std::string&, help)
 //   v.choice(key, E&, Choices<E>, help)
-// and the generic visitors here set one option from text, list the keys, write the options as
-// JSON and print the reference.
+// and the generic visitors here set one option from text and list the keys and their help;
+// core/option_table_json.hpp writes the options as JSON and prints the reference (apart because
+// nlohmann/json.hpp costs a second of compile time in each of the ~50 files that include this).
 //
 // Text rules, the same for every option: a boolean is true/false, 1/0 or on/off; an integer is a
 // whole decimal number (no fraction, no exponent); a number is a finite decimal number, and "inf"
@@ -28,7 +29,6 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
 #include "core/did_you_mean.hpp"
 #include "core/error.hpp"
@@ -137,30 +137,6 @@ class KeyLister {
   }
 };
 
-/// Every option as a JSON value keyed by its name: choices by name, an infinite number as "inf"
-/// (JSON has no infinity; "inf" reads back through TextSetter).
-template <class Json>
-class JsonWriter {
- public:
-  Json out = Json::object();
-  void integer(const char* key, int& field, const char*) { out[key] = field; }
-  void uint64(const char* key, std::uint64_t& field, const char*) { out[key] = field; }
-  void number(const char* key, double& field, const char*, Infinity = Infinity::kRefused) {
-    if (std::isinf(field)) {
-      out[key] = "inf";
-    } else {
-      out[key] = field;
-    }
-  }
-  void boolean(const char* key, bool& field, const char*) { out[key] = field; }
-  void text(const char* key, std::string& field, const char*) { out[key] = field; }
-  template <class E>
-  void choice(const char* key, E& field, const Choices<E>& choices, const char*) {
-    for (const auto& [value, name] : choices)
-      if (value == field) out[key] = std::string(name);
-  }
-};
-
 /// (key, help) of every option, in visiting order.
 class HelpLister {
  public:
@@ -209,16 +185,6 @@ void set_from_text(Options& o, const std::string& source, const std::string& wha
 std::pair<std::string, std::string> split_assignment(const std::string& source,
                                                      const std::string& assignment);
 
-/// Every option of `o` as JSON (nlohmann::json or nlohmann::ordered_json, which keeps the
-/// visiting order).
-template <class Json, class Options>
-Json to_json(const Options& o) {
-  Options copy = o;  // the visitors take fields by reference
-  JsonWriter<Json> writer;
-  visit_options(writer, copy);
-  return writer.out;
-}
-
 /// (key, help) of every option, in visiting order.
 template <class Options>
 std::vector<std::pair<std::string, std::string>> option_help() {
@@ -226,20 +192,6 @@ std::vector<std::pair<std::string, std::string>> option_help() {
   HelpLister lister;
   visit_options(lister, scratch);
   return lister.entries;
-}
-
-/// The reference a --help prints: "  key=default\n      help\n" for every option.
-template <class Options>
-std::string reference() {
-  const Options defaults;
-  const nlohmann::ordered_json values = to_json<nlohmann::ordered_json>(defaults);
-  std::string out;
-  for (const auto& [key, help] : option_help<Options>()) {
-    const nlohmann::ordered_json& v = values.at(key);
-    out += fmt::format("  {}={}\n      {}\n", key, v.is_string() ? v.get<std::string>() : v.dump(),
-                       help);
-  }
-  return out;
 }
 
 }  // namespace wifislam::options

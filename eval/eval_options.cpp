@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/option_table_json.hpp"
 
 namespace wifislam::eval {
 

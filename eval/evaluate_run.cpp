@@ -7,6 +7,7 @@
 #include <utility>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "core/dataset_calibration.hpp"
 #include "core/dataset_format.hpp"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include <Eigen/Core>
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/camera_intrinsics.hpp"
 #include "core/timestamp.hpp"

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include "apps/command_registry.hpp"
 #include "core/error.hpp"

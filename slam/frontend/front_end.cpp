@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 namespace wifislam::slam {
 
 FrontEnd::FrontEnd(std::unique_ptr<EdgeAcceptance> acceptance)
@@ -51,6 +53,8 @@ void FrontEnd::write_outputs(const std::filesystem::path& run_dir) const {
   if (wifi_) wifi_->write_outputs(run_dir);
   write_own_outputs(run_dir);
 }
+
+nlohmann::json FrontEnd::own_summary() const { return nlohmann::json::object(); }
 
 nlohmann::json FrontEnd::summary() const {
   nlohmann::json out = own_summary();

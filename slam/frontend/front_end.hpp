@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/sensor_stream.hpp"
 #include "core/wifi_scan.hpp"
@@ -115,7 +115,7 @@ class FrontEnd {
   virtual void on_odometry(const OdometryReading& /*reading*/) {}
   virtual void after_verification(const VerificationReport& /*report*/) {}
   virtual void write_own_outputs(const std::filesystem::path& /*run_dir*/) const {}
-  virtual nlohmann::json own_summary() const { return nlohmann::json::object(); }
+  virtual nlohmann::json own_summary() const;
 
  private:
   std::unique_ptr<EdgeAcceptance> acceptance_;

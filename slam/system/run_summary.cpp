@@ -1,6 +1,7 @@
 #include "slam/system/run_summary.hpp"
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include "core/run_format.hpp"
 #include "slam/system/slam_system.hpp"

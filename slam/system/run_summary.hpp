@@ -5,7 +5,7 @@
 #include <map>
 #include <string>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "slam/optimize/pose_graph_optimizer.hpp"
 

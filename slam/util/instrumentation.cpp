@@ -1,5 +1,7 @@
 #include "slam/util/instrumentation.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace wifislam::slam {
 
 void Instrumentation::add_time(const std::string& module, double seconds) {

@@ -27,7 +27,7 @@
 #include <memory>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "core/sensor_stream.hpp"
 #include "core/wifi_scan.hpp"

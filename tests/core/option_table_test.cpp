@@ -1,6 +1,6 @@
 // The one set of rules for options given as text (core/option_table.hpp), on a small options
 // struct of every kind, and the same rules through the SLAM's and the evaluation's own tables.
-#include "core/option_table.hpp"
+#include "core/option_table_json.hpp"
 
 #include <gtest/gtest.h>
 

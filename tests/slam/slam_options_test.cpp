@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include <nlohmann/json.hpp>
+
 #include "core/error.hpp"
 #include "slam/slam_options.hpp"
 

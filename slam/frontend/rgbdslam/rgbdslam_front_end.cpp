@@ -4,6 +4,8 @@
 #include <map>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "slam/wifi/signature_similarity.hpp"
 
 namespace wifislam::slam {
