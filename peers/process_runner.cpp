@@ -1,4 +1,5 @@
 #include "peers/process_runner.hpp"
+#include "core/wall_clock.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -21,11 +22,7 @@ namespace wifislam::peers {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using Clock = WallClock;
 
 double cpu_seconds(const rusage& usage) {
   const auto seconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "core/wall_clock.hpp"
 #include "slam/wifi/wifi_cluster_map.hpp"
 
 namespace wifislam::study {
@@ -18,11 +19,7 @@ namespace {
 
 using slam::place::BinaryObservation;
 using slam::place::FabMap;
-using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = WallClock;
 
 /// The images of the map (before the split) and the queries.
 struct Split {

@@ -7,10 +7,6 @@
 
 namespace wifislam::sim::calibrate {
 
-namespace {
-constexpr double kZ95 = 1.959964;
-}
-
 void widen_for_correlated_shadowing(PropagationFit& fit, const SurveyLinks& links,
                                     const ShadowingStatistics& shadowing) {
   const Eigen::MatrixXd& a = fit.design;

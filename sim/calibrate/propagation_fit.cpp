@@ -14,8 +14,6 @@
 namespace wifislam::sim::calibrate {
 
 namespace {
-constexpr double kZ95 = 1.959964;  // two-sided 95 % normal quantile
-
 double log_distance(const LinkGroup& g) { return std::log10(std::max(g.distance_m, 1.0)); }
 }  // namespace
 

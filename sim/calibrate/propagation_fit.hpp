@@ -40,6 +40,8 @@
 namespace wifislam::sim::calibrate {
 
 inline constexpr int kMinLinksPerMaterial = 3;
+/// Two-sided 95 % normal quantile: the fit's confidence intervals are +- kZ95 standard errors.
+inline constexpr double kZ95 = 1.959964;
 
 /// The linear model's constants: what "before" (the scene), "after" (the fit) and the plain
 /// log-distance baseline all are.

@@ -23,6 +23,7 @@
 #include "core/text_lines.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
+#include "core/wall_clock.hpp"
 #include "core/wifi_csv.hpp"
 #include "core/worker_pool.hpp"
 #include "sim/generate/as_stored.hpp"
@@ -37,10 +38,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using Clock = WallClock;
 
 /// A text file of the dataset, written sequentially through a large buffer.
 class TextOutput {

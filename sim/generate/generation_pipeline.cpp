@@ -1,4 +1,5 @@
 #include "sim/generate/generation_pipeline.hpp"
+#include "core/wall_clock.hpp"
 
 #include <limits>
 #include <stdexcept>
@@ -7,10 +8,7 @@ namespace wifislam::sim {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using Clock = WallClock;
 
 std::shared_ptr<const Site> timed_site(const Scene& scene, double& seconds) {
   const auto t0 = Clock::now();
