@@ -4,6 +4,14 @@ function(wifislam_target_defaults target)
   target_compile_features(${target} PUBLIC cxx_std_20)
 endfunction()
 
+# Unity build (WIFISLAM_UNITY_BUILD) for a library or the wifislam program. A source that must
+# stay its own unit (CGAL's long compiles) sets SKIP_UNITY_BUILD_INCLUSION.
+function(wifislam_unity_build target)
+  if(WIFISLAM_UNITY_BUILD)
+    set_target_properties(${target} PROPERTIES UNITY_BUILD ON)
+  endif()
+endfunction()
+
 # wifislam_library(<name> SOURCES ... DEPS ...): one library per folder (DESIGN.md, "Layout").
 function(wifislam_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
@@ -11,5 +19,6 @@ function(wifislam_library name)
   target_include_directories(${name} PUBLIC ${PROJECT_SOURCE_DIR})
   target_link_libraries(${name} PUBLIC ${ARG_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
   wifislam_target_defaults(${name})
+  wifislam_unity_build(${name})
   set_property(GLOBAL APPEND PROPERTY WIFISLAM_LIBRARIES ${name})
 endfunction()
