@@ -1,5 +1,4 @@
 #include "peers/process_runner.hpp"
-#include "core/wall_clock.hpp"
 
 #include <fcntl.h>
 #include <signal.h>
@@ -16,13 +15,13 @@
 
 #include <fmt/format.h>
 
+#include "core/wall_clock.hpp"
+
 extern char** environ;
 
 namespace wifislam::peers {
 
 namespace {
-
-using Clock = WallClock;
 
 double cpu_seconds(const rusage& usage) {
   const auto seconds = [](const timeval& t) { return t.tv_sec + 1e-6 * t.tv_usec; };
@@ -31,7 +30,7 @@ double cpu_seconds(const rusage& usage) {
 
 /// Waits for `pid` until `deadline`; true when it ended (status and usage filled, or `lost` set
 /// when the child cannot be waited for: its status is then unknown, never a success).
-bool wait_until(pid_t pid, Clock::time_point deadline, int& status, rusage& usage, bool& lost) {
+bool wait_until(pid_t pid, WallClock::time_point deadline, int& status, rusage& usage, bool& lost) {
   while (true) {
     const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
     if (done == pid) return true;
@@ -39,7 +38,7 @@ bool wait_until(pid_t pid, Clock::time_point deadline, int& status, rusage& usag
       lost = true;
       return true;
     }
-    if (Clock::now() >= deadline) return false;
+    if (WallClock::now() >= deadline) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
 }
@@ -85,7 +84,7 @@ ProcessResult run_process(const ProcessRequest& request) {
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
   posix_spawnattr_setpgroup(&attributes, 0);  // its own group: a timeout stops its children too
 
-  const auto start = Clock::now();
+  const auto start = WallClock::now();
   pid_t pid = 0;
   const bool by_path = request.argv.front().find('/') == std::string::npos;
   const int spawned =
@@ -100,13 +99,13 @@ ProcessResult run_process(const ProcessRequest& request) {
 
   int status = 0;
   rusage usage{};
-  const auto deadline = start + std::chrono::duration_cast<Clock::duration>(
+  const auto deadline = start + std::chrono::duration_cast<WallClock::duration>(
                                     std::chrono::duration<double>(request.timeout_s));
   bool timed_out = false, lost = false;
   if (!wait_until(pid, deadline, status, usage, lost)) {
     timed_out = true;
     ::kill(-pid, SIGTERM);
-    if (!wait_until(pid, Clock::now() + std::chrono::seconds(2), status, usage, lost)) {
+    if (!wait_until(pid, WallClock::now() + std::chrono::seconds(2), status, usage, lost)) {
       ::kill(-pid, SIGKILL);
       ::wait4(pid, &status, 0, &usage);
     }

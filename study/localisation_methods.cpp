@@ -19,7 +19,6 @@ namespace {
 
 using slam::place::BinaryObservation;
 using slam::place::FabMap;
-using Clock = WallClock;
 
 /// The images of the map (before the split) and the queries.
 struct Split {
@@ -115,7 +114,7 @@ struct Context {
 };
 
 void record(const Context& c, LocalisationMethod method, int query, int map_place, double p,
-            int candidates, Clock::time_point start, LocalisationResult& out) {
+            int candidates, WallClock::time_point start, LocalisationResult& out) {
   QueryResult r;
   r.method = method;
   r.query = query;
@@ -135,7 +134,7 @@ void record(const Context& c, LocalisationMethod method, int query, int map_plac
 
 void run_visual(const Context& c, const FabMap& fabmap, LocalisationResult& out) {
   for (int q : c.split.queries) {
-    const auto start = Clock::now();
+    const auto start = WallClock::now();
     const auto [place, p] = best_place(fabmap.match(c.visual[static_cast<std::size_t>(q)]));
     record(c, LocalisationMethod::kFabmap, q, place, p, fabmap.place_count(), start, out);
   }
@@ -176,7 +175,7 @@ void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
                                               map_wifi[i], visual_words));
   }
   for (int q : c.split.queries) {
-    const auto start = Clock::now();
+    const auto start = WallClock::now();
     const auto& image = c.data.images[static_cast<std::size_t>(q)];
     const PositionedScan* scan = closest_scan(scans, image.position_m, c.split.split_time, false);
     const BinaryObservation query =
@@ -207,7 +206,7 @@ void run_wifi_clusters(const Context& c, const FabMap& fabmap, LocalisationResul
     cluster_of_place.push_back(id);
   }
   for (int q : c.split.queries) {
-    const auto start = Clock::now();
+    const auto start = WallClock::now();
     const auto& signature = c.data.images[static_cast<std::size_t>(q)].pause_signature;
     std::set<slam::ClusterId> similar;
     if (signature) {

@@ -38,8 +38,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-using Clock = WallClock;
-
 /// A text file of the dataset, written sequentially through a large buffer.
 class TextOutput {
  public:
@@ -74,13 +72,13 @@ WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_pat
                               const std::string& depth_path, const cv::Mat& rgb,
                               const cv::Mat& depth) {
   WrittenFrame out;
-  auto t0 = Clock::now();
+  auto t0 = WallClock::now();
   const std::vector<unsigned char> rgb_png =
       rgb.empty() ? std::vector<unsigned char>{} : encode_png(rgb);
   const std::vector<unsigned char> depth_png =
       encode_png(depth.type() == CV_16UC1 ? depth : depth_to_png_units(depth));
   out.encode_s = seconds_since(t0);
-  t0 = Clock::now();
+  t0 = WallClock::now();
   for (const auto& [relative, bytes, sha] :
        {std::tuple{&rgb_path, &rgb_png, &out.rgb_sha256},
         std::tuple{&depth_path, &depth_png, &out.depth_sha256}}) {
@@ -179,7 +177,7 @@ std::string parameters_json(const Scene& scene, const GenerateOptions& options) 
 class DatasetWriter {
  public:
   DatasetWriter(GenerationPipeline& pipeline, AtomicDirectory& folder,
-                const GenerateOptions& options, Clock::time_point start)
+                const GenerateOptions& options, WallClock::time_point start)
       : pipeline_(pipeline),
         folder_(folder),
         dir_(folder.staging_path()),
@@ -196,7 +194,7 @@ class DatasetWriter {
 
   GenerateSummary write() {
     describe_scene();
-    const auto t_io = Clock::now();
+    const auto t_io = WallClock::now();
     write_scene_files();
     summary_.io_s += seconds_since(t_io);
     start_encoders();
@@ -362,7 +360,7 @@ class DatasetWriter {
   /// Closes the files, writes the manifest (last: its presence marks a finished dataset),
   /// commits the folder and completes the summary.
   void finish() {
-    const auto t_io = Clock::now();
+    const auto t_io = WallClock::now();
     for (TextOutput* out : {&groundtruth_, &odometry_, &wifi_}) out->close();
     for (auto* out : {&rgb_list_, &depth_list_, &associations_, &image_sums_})
       if (*out) (*out)->close();
@@ -433,7 +431,7 @@ class DatasetWriter {
   AtomicDirectory& folder_;
   const fs::path dir_;
   const GenerateOptions& options_;
-  const Clock::time_point start_;
+  const WallClock::time_point start_;
   GenerateSummary summary_;
   TextOutput groundtruth_, odometry_, wifi_;
   std::optional<TextOutput> rgb_list_, depth_list_, associations_, image_sums_;
@@ -458,7 +456,7 @@ void check_image_options(const GenerateOptions& options) {
 GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
                                  const GenerateOptions& options) {
   check_image_options(options);
-  const auto start = Clock::now();
+  const auto start = WallClock::now();
   AtomicDirectory folder(output, options.overwrite);
   GenerationPipeline pipeline(resolve_scene(scene, options), options);
   return DatasetWriter(pipeline, folder, options, start).write();
@@ -467,7 +465,7 @@ GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
 GenerateSummary generate_dataset(std::shared_ptr<const Site> site, const fs::path& output,
                                  const GenerateOptions& options) {
   check_image_options(options);
-  const auto start = Clock::now();
+  const auto start = WallClock::now();
   AtomicDirectory folder(output, options.overwrite);
   GenerationPipeline pipeline(std::move(site), options);
   return DatasetWriter(pipeline, folder, options, start).write();

@@ -1,17 +1,16 @@
 #include "sim/generate/generation_pipeline.hpp"
-#include "core/wall_clock.hpp"
 
 #include <limits>
 #include <stdexcept>
+
+#include "core/wall_clock.hpp"
 
 namespace wifislam::sim {
 
 namespace {
 
-using Clock = WallClock;
-
 std::shared_ptr<const Site> timed_site(const Scene& scene, double& seconds) {
-  const auto t0 = Clock::now();
+  const auto t0 = WallClock::now();
   auto site = std::make_shared<const Site>(scene);  // validates the scene
   seconds = seconds_since(t0);
   return site;
@@ -45,7 +44,7 @@ GenerationPipeline::GenerationPipeline(std::shared_ptr<const Site> site,
 }
 
 void GenerationPipeline::set_up(const GenerateOptions& options) {
-  const auto t0 = Clock::now();
+  const auto t0 = WallClock::now();
   // The validated origin is before 2100, so whole seconds to nanoseconds cannot overflow.
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
@@ -112,10 +111,10 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
   GeneratedEvent out;
   out.camera_to_world = mount_.camera_to_world(site_->motion().state_at(frame.time));
   if (renderer_) {
-    auto t0 = Clock::now();
+    auto t0 = WallClock::now();
     renderer_->render(out.camera_to_world, view_);
     timings_.render_s += seconds_since(t0);
-    t0 = Clock::now();
+    t0 = WallClock::now();
     color_model_->measure(view_.color_bgr, k, frame.rgb);
     depth_model_->measure(view_.depth_m, view_.incidence_cos, k, frame.depth_m);
     timings_.sensor_s += seconds_since(t0);
@@ -125,7 +124,7 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
 }
 
 WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
-  const auto t0 = Clock::now();
+  const auto t0 = WallClock::now();
   const double antenna_height_m = site_->receiver_height_m();
   auto position_at = [&](Timestamp t) {
     const RobotState s = site_->motion().state_at(t);
