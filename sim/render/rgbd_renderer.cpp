@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <stdexcept>
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -289,9 +290,9 @@ void RgbdRenderer::upload_lights(const Eigen::Vector3d& camera_position_m) {
   glUniform3fv(uniforms_.light_positions, slots, positions.data());
 }
 
-void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
+void RgbdRenderer::submit(const Pose& camera_to_world) {
+  if (submitted_) throw std::logic_error("RgbdRenderer::submit: the last view was not collected");
   context_->make_current();
-  const int w = intrinsics_.width_px, h = intrinsics_.height_px;
   const Eigen::Matrix4f world_to_clip =
       projection_matrix(intrinsics_, options_.near_m, options_.far_m) *
       camera_to_world.inverse().matrix().cast<float>();
@@ -319,6 +320,18 @@ void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
     }
   }
 
+  // llvmpipe bins the draws on this thread and rasterizes on its own threads once the frame is
+  // flushed: after the flush the caller is free until collect() waits for the pixels.
+  glFlush();
+  submitted_ = true;
+}
+
+void RgbdRenderer::collect(RenderedView& out) {
+  if (!submitted_) throw std::logic_error("RgbdRenderer::collect: no view was submitted");
+  submitted_ = false;
+  context_->make_current();
+  const int w = intrinsics_.width_px, h = intrinsics_.height_px;
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
   // Read back straight into the output images and unpack in place: BGRA into the incidence
   // image (four bytes a pixel, as its floats), the z-buffer into the depth image. Separate
   // read-back buffers cost one more trip of 2.4 MB a 640x480 frame through the cache.
@@ -385,6 +398,11 @@ void RgbdRenderer::unpack(RenderedView& out) const {
       incidence[x] = static_cast<float>(bgra[4 * x + 3]) * (1.0f / 255.0f);
     }
   }
+}
+
+void RgbdRenderer::render(const Pose& camera_to_world, RenderedView& out) {
+  submit(camera_to_world);
+  collect(out);
 }
 
 RenderedView RgbdRenderer::render(const Pose& camera_to_world) {

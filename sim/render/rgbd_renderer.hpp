@@ -68,7 +68,17 @@ class RgbdRenderer {
   void set_world(const World& world, const Scene& scene);
 
   /// Renders the view of a camera-to-world pose (optical frame). Reuses `out`'s buffers.
+  /// The same as submit() then collect().
   void render(const Pose& camera_to_world, RenderedView& out);
+  /// The two halves of render(), for callers that have other work while a frame rasterizes:
+  /// submit() draws the view and hands it to the rasterizer (llvmpipe's threads) and returns;
+  /// collect() waits for it and reads it back. The pixels are the same as render()'s. One view
+  /// at a time: submit() again before collect() (or collect() without submit()) throws
+  /// std::logic_error.
+  void submit(const Pose& camera_to_world);
+  void collect(RenderedView& out);
+  /// Whether a submitted view awaits collect().
+  bool has_submitted() const { return submitted_; }
   RenderedView render(const Pose& camera_to_world);
 
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
@@ -97,6 +107,7 @@ class RgbdRenderer {
   std::vector<CeilingLight> lights_;
   unsigned framebuffer_ = 0, color_target_ = 0, z_buffer_ = 0;
   int last_draw_count_ = 0;
+  bool submitted_ = false;
   struct Uniforms {
     int world_to_clip, camera_position, emissive, ambient, light_weights, light_positions, albedo;
   } uniforms_{};
