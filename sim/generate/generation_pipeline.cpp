@@ -109,10 +109,21 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
   frame.time = schedule_->frame_time(k);
   frame.index = k;
   GeneratedEvent out;
-  out.camera_to_world = mount_.camera_to_world(site_->motion().state_at(frame.time));
+  out.camera_to_world = camera_pose(k);
   if (renderer_) {
     auto t0 = WallClock::now();
-    renderer_->render(out.camera_to_world, view_);
+    if (submitted_frame_ != k) {
+      if (renderer_->has_submitted()) renderer_->collect(view_);  // not asked for: dropped
+      renderer_->submit(out.camera_to_world);
+    }
+    renderer_->collect(view_);
+    // The next frame rasterizes on llvmpipe's threads while this one goes through the sensor
+    // models and the events up to it are made (its pose is known: the route is planned).
+    submitted_frame_ = -1;
+    if (k + 1 < schedule_->frame_count()) {
+      renderer_->submit(camera_pose(k + 1));
+      submitted_frame_ = k + 1;
+    }
     timings_.render_s += seconds_since(t0);
     t0 = WallClock::now();
     color_model_->measure(view_.color_bgr, k, frame.rgb);
@@ -121,6 +132,10 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
   }
   out.event = std::move(frame);
   return out;
+}
+
+Pose GenerationPipeline::camera_pose(std::int64_t k) const {
+  return mount_.camera_to_world(site_->motion().state_at(schedule_->frame_time(k)));
 }
 
 WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {

@@ -6,7 +6,9 @@
 //
 //   frame k:    pose at its time (exact, from the motion profile) -> render -> depth sensor model
 //               and colour sensor model (whose auto-exposure carries state from frame k-1 to k;
-//               frames are made in order, so it is the same for both consumers)
+//               frames are made in order, so it is the same for both consumers). Frame k+1 is
+//               submitted to the renderer before frame k's sensor models run, so it rasterizes
+//               meanwhile on llvmpipe's threads (same pixels as rendering it when asked)
 //   Wi-Fi scan: during pauses (or throughout with scan_while_moving), reported at the sweep's end,
 //               the receiver at the robot's position (antenna at the camera's height)
 //   odometry:   wheel odometry at its rate
@@ -85,6 +87,7 @@ class GenerationPipeline {
 
  private:
   GeneratedEvent make_frame(std::int64_t k);
+  Pose camera_pose(std::int64_t frame_index) const;
   WifiScan make_scan(const ScanWindow& window);
   Timestamp on_event_clock(Timestamp route_time) const {
     return Timestamp::from_ns(route_time.ns + time_origin_.ns);
@@ -103,6 +106,7 @@ class GenerationPipeline {
   std::unique_ptr<radio::WifiScanner> scanner_;
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;
+  std::int64_t submitted_frame_ = -1;  // the frame the renderer is working on ahead, if any
   std::int64_t next_frame_ = 0, next_odometry_ = 0;
   bool frames_ = true;  // GenerateOptions::frames
   std::size_t next_scan_ = 0;
