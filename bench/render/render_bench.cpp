@@ -219,6 +219,62 @@ void BM_HarnessVsBare(benchmark::State& state) {
   state.counters["render_over_bare"] = median_of(render_ms) / bare_median;
 }
 
+// The render path as the generator runs it: frame k+1 is submitted before frame k's sensor model
+// runs, so the model (and the unpack of the next frame's wait) overlaps llvmpipe's rasterizer
+// threads. Stretches of kStretch consecutive poses, alternately bare, harness one frame after the
+// other, and harness pipelined; each counter is a median over stretches of the time a frame.
+// pipelined_over_bare is the throughput ratio a long run sees; serial_over_bare is
+// BM_HarnessVsBare's frame_over_bare measured in stretches.
+void BM_PipelinedVsBare(benchmark::State& state) {
+  constexpr int kStretch = 8;
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const Workload& work = workload(static_cast<int>(state.range(0)));
+  BareRenderer bare(work);
+  sim::RenderOptions options;
+  if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
+    options.max_lights = std::atoi(lights);
+  sim::RgbdRenderer renderer(k, options);
+  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
+  const sim::DepthSensorModel sensor(sim::DepthSensorSpec{}, k, work.seed);
+  sim::RenderedView view;
+  cv::Mat measured;
+  std::vector<double> bare_ms, serial_ms, pipelined_ms;
+  std::int64_t first = 0;
+  const auto pose_of = [&](std::int64_t frame) -> const Pose& {
+    return work.poses[frame % static_cast<std::int64_t>(work.poses.size())];
+  };
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < kStretch; ++i) bare.frame(pose_of(first + i));
+    const auto t1 = std::chrono::steady_clock::now();
+    for (int i = 0; i < kStretch; ++i) {
+      renderer.render(pose_of(first + i), view);
+      sensor.measure(view.depth_m, view.incidence_cos, first + i, measured);
+      benchmark::DoNotOptimize(measured.data);
+    }
+    const auto t2 = std::chrono::steady_clock::now();
+    renderer.submit(pose_of(first));
+    for (int i = 0; i < kStretch; ++i) {
+      renderer.collect(view);
+      if (i + 1 < kStretch) renderer.submit(pose_of(first + i + 1));
+      sensor.measure(view.depth_m, view.incidence_cos, first + i, measured);
+      benchmark::DoNotOptimize(measured.data);
+    }
+    const auto t3 = std::chrono::steady_clock::now();
+    first += kStretch;
+    bare_ms.push_back(ms_between(t0, t1) / kStretch);
+    serial_ms.push_back(ms_between(t1, t2) / kStretch);
+    pipelined_ms.push_back(ms_between(t2, t3) / kStretch);
+    state.SetIterationTime(ms_between(t2, t3) / 1000.0);
+  }
+  const double bare_median = median_of(bare_ms);
+  state.counters["bare_ms"] = bare_median;
+  state.counters["serial_ms"] = median_of(serial_ms);
+  state.counters["pipelined_ms"] = median_of(pipelined_ms);
+  state.counters["serial_over_bare"] = median_of(serial_ms) / bare_median;
+  state.counters["pipelined_over_bare"] = median_of(pipelined_ms) / bare_median;
+}
+
 // The depth sensor model on one rendered view: Arg 0 the defaults, Arg 1 with lateral noise on.
 void BM_SensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
@@ -258,6 +314,13 @@ void BM_ColorSensorModelOnly(benchmark::State& state) {
 }
 
 BENCHMARK(BM_HarnessVsBare)
+    ->ArgName("corridor")
+    ->Arg(0)
+    ->Arg(1)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(4.0);
+BENCHMARK(BM_PipelinedVsBare)
     ->ArgName("corridor")
     ->Arg(0)
     ->Arg(1)
