@@ -3,6 +3,9 @@
 // measured in the same run (DESIGN.md, "Performance stance"). Counters, all medians over frames:
 // bare_ms, render_ms (harness render + readback + unpack), sensor_ms, frame_ms (render + sensor),
 // frame_over_bare (the target: <= 1.3) and render_over_bare.
+// BM_PipelinedVsBare: the same in stretches of consecutive frames, one frame after the other
+// (serial_over_bare) and with the next frame submitted before the sensor model runs, as the
+// generator does (pipelined_over_bare: the throughput a long run sees).
 // bench/render/run.sh runs it with 1 and 2 llvmpipe threads and 5 repetitions.
 // BM_SensorModelOnly and BM_ColorSensorModelOnly time the depth and colour sensor models alone,
 // with their off-by-default parts off and on.
