@@ -180,24 +180,46 @@ double ms_between(std::chrono::steady_clock::time_point a,
   return std::chrono::duration<double, std::milli>(b - a).count();
 }
 
+// What both harness benchmarks compare: the bare loop and the harness (renderer with the
+// options WIFISLAM_BENCH_LIGHTS asks for, default depth sensor model) on one workload.
+struct HarnessAndBare {
+  explicit HarnessAndBare(int which)
+      : work(workload(which)),
+        bare(work),
+        renderer(k, options_from_environment()),
+        sensor(sim::DepthSensorSpec{}, k, work.seed) {
+    renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
+  }
+  static sim::RenderOptions options_from_environment() {
+    sim::RenderOptions options;
+    if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
+      options.max_lights = std::atoi(lights);
+    return options;
+  }
+  const Pose& pose(std::int64_t frame) const {
+    return work.poses[frame % static_cast<std::int64_t>(work.poses.size())];
+  }
+
+  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
+  const Workload& work;
+  BareRenderer bare;
+  sim::RgbdRenderer renderer;
+  const sim::DepthSensorModel sensor;
+};
+
 // Bare frame and harness frame of the same pose, alternately, so both see the same machine
 // load (these machines are noisy); the ratio is of medians over the same stretch of time.
 void BM_HarnessVsBare(benchmark::State& state) {
-  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  const Workload& work = workload(static_cast<int>(state.range(0)));
-  BareRenderer bare(work);
-  sim::RenderOptions options;
-  if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
-    options.max_lights = std::atoi(lights);
-  sim::RgbdRenderer renderer(k, options);
-  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
-  const sim::DepthSensorModel sensor(sim::DepthSensorSpec{}, k, work.seed);
+  HarnessAndBare h(static_cast<int>(state.range(0)));
+  BareRenderer& bare = h.bare;
+  sim::RgbdRenderer& renderer = h.renderer;
+  const sim::DepthSensorModel& sensor = h.sensor;
   sim::RenderedView view;
   cv::Mat measured;
   std::vector<double> bare_ms, render_ms, sensor_ms, frame_ms;
   std::int64_t frame = 0;
   for (auto _ : state) {
-    const Pose& pose = work.poses[frame % static_cast<std::int64_t>(work.poses.size())];
+    const Pose& pose = h.pose(frame);
     const auto t0 = std::chrono::steady_clock::now();
     bare.frame(pose);
     const auto t1 = std::chrono::steady_clock::now();
@@ -230,22 +252,15 @@ void BM_HarnessVsBare(benchmark::State& state) {
 // BM_HarnessVsBare's frame_over_bare measured in stretches.
 void BM_PipelinedVsBare(benchmark::State& state) {
   constexpr int kStretch = 8;
-  const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  const Workload& work = workload(static_cast<int>(state.range(0)));
-  BareRenderer bare(work);
-  sim::RenderOptions options;
-  if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
-    options.max_lights = std::atoi(lights);
-  sim::RgbdRenderer renderer(k, options);
-  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
-  const sim::DepthSensorModel sensor(sim::DepthSensorSpec{}, k, work.seed);
+  HarnessAndBare h(static_cast<int>(state.range(0)));
+  BareRenderer& bare = h.bare;
+  sim::RgbdRenderer& renderer = h.renderer;
+  const sim::DepthSensorModel& sensor = h.sensor;
   sim::RenderedView view;
   cv::Mat measured;
   std::vector<double> bare_ms, serial_ms, pipelined_ms;
   std::int64_t first = 0;
-  const auto pose_of = [&](std::int64_t frame) -> const Pose& {
-    return work.poses[frame % static_cast<std::int64_t>(work.poses.size())];
-  };
+  const auto pose_of = [&](std::int64_t frame) -> const Pose& { return h.pose(frame); };
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
     for (int i = 0; i < kStretch; ++i) bare.frame(pose_of(first + i));
