@@ -109,19 +109,18 @@ GeneratedEvent GenerationPipeline::make_frame(std::int64_t k) {
   frame.time = schedule_->frame_time(k);
   frame.index = k;
   GeneratedEvent out;
-  out.camera_to_world = camera_pose(k);
+  // Frames are made in order, so a frame submitted ahead is this one.
+  out.camera_to_world = submitted_frame_ == k ? submitted_pose_ : camera_pose(k);
   if (renderer_) {
     auto t0 = WallClock::now();
-    if (submitted_frame_ != k) {
-      if (renderer_->has_submitted()) renderer_->collect(view_);  // not asked for: dropped
-      renderer_->submit(out.camera_to_world);
-    }
+    if (submitted_frame_ != k) renderer_->submit(out.camera_to_world);
     renderer_->collect(view_);
     // The next frame rasterizes on llvmpipe's threads while this one goes through the sensor
     // models and the events up to it are made (its pose is known: the route is planned).
     submitted_frame_ = -1;
     if (k + 1 < schedule_->frame_count()) {
-      renderer_->submit(camera_pose(k + 1));
+      submitted_pose_ = camera_pose(k + 1);
+      renderer_->submit(submitted_pose_);
       submitted_frame_ = k + 1;
     }
     timings_.render_s += seconds_since(t0);

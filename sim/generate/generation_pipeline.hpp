@@ -106,7 +106,8 @@ class GenerationPipeline {
   std::unique_ptr<radio::WifiScanner> scanner_;
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;
-  std::int64_t submitted_frame_ = -1;  // the frame the renderer is working on ahead, if any
+  std::int64_t submitted_frame_ = -1;       // the frame the renderer is working on ahead, if any
+  Pose submitted_pose_ = Pose::Identity();  // and its camera pose
   std::int64_t next_frame_ = 0, next_odometry_ = 0;
   bool frames_ = true;  // GenerateOptions::frames
   std::size_t next_scan_ = 0;

@@ -70,6 +70,7 @@ class RgbdRenderer {
   /// Renders the view of a camera-to-world pose (optical frame). Reuses `out`'s buffers.
   /// The same as submit() then collect().
   void render(const Pose& camera_to_world, RenderedView& out);
+  RenderedView render(const Pose& camera_to_world);
   /// The two halves of render(), for callers that have other work while a frame rasterizes:
   /// submit() draws the view and hands it to the rasterizer (llvmpipe's threads) and returns;
   /// collect() waits for it and reads it back. The pixels are the same as render()'s. One view
@@ -79,7 +80,6 @@ class RgbdRenderer {
   void collect(RenderedView& out);
   /// Whether a submitted view awaits collect().
   bool has_submitted() const { return submitted_; }
-  RenderedView render(const Pose& camera_to_world);
 
   const CameraIntrinsics& intrinsics() const { return intrinsics_; }
   const RenderOptions& options() const { return options_; }
