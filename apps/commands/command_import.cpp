@@ -112,10 +112,10 @@ WIFISLAM_COMMAND(import, 15) {
       "Import one level of a real floor plan into a scene file.\n"
       "Reads OpenStreetMap Simple Indoor Tagging (GeoJSON or .osm XML: indoor=room|corridor|area\n"
       "polygons with level=*), the WRLD indoor map format (a level's GeoJSON, with main.json\n"
-      "beside it for --level) or Apple's IMDF (its folder, or unit.geojson), projects lon/lat to "
-      "metres (transverse Mercator at the plan's\n"
-      "centre), gives every wall one thickness, infers doors where the plan has none, and plans\n"
-      "a route that loops through the corridors twice. docs/real_buildings/README.md has details.");
+      "beside it for --level) or Apple's IMDF (its folder, or unit.geojson), projects lon/lat\n"
+      "to metres (transverse Mercator at the plan's centre), gives every wall one thickness,\n"
+      "infers doors where the plan has none, and plans a route that loops through the corridors\n"
+      "twice. docs/real_buildings/README.md has details.");
   app->add_option("plan", args->plan_path,
                   "Plan file (GeoJSON or .osm; WRLD: a level's GeoJSON; IMDF: its folder)")
       ->required();
