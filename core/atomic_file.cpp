@@ -43,6 +43,15 @@ bool same_folder(int fd, const fs::path& path) {
 }  // namespace
 
 void write_file_atomic(const fs::path& path, std::string_view contents) {
+  // The rename below would put a regular file where a folder, device or pipe was (as root, over
+  // /dev/null): refuse any existing target that is not a regular file (or a link to one).
+  std::error_code status_error;
+  const fs::file_status target = fs::status(path, status_error);
+  if (fs::exists(target) && !fs::is_regular_file(target)) {
+    throw InvalidInputError(path.string() + ": exists and is not a regular file (" +
+                            (fs::is_directory(target) ? "a folder" : "a device, pipe or socket") +
+                            "); give the path of a file to write");
+  }
   const fs::path tmp = path.string() + ".partial";
   {
     std::ofstream out(tmp, std::ios::binary | std::ios::trunc);

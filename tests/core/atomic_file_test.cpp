@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -46,6 +48,30 @@ TEST(AtomicDirectory, CommitMovesTheFolderIntoPlace) {
   EXPECT_FALSE(fs::exists(out / "a.txt"));
   EXPECT_TRUE(fs::exists(out / "b.txt"));
   fs::remove_all(out);
+}
+
+TEST(WriteFileAtomic, ReplacesAFileButRefusesAFolderOrAPipeAndLeavesThemAsTheyWere) {
+  const fs::path root = fresh_dir("targets");
+  fs::create_directories(root);
+  write_file_atomic(root / "file.txt", "old");
+  write_file_atomic(root / "file.txt", "new");
+  EXPECT_EQ(sha256_file_hex(root / "file.txt"), sha256_hex("new"));
+
+  // Renaming over a pipe or device would replace it with a regular file (as root, /dev/null).
+  const fs::path pipe = root / "pipe";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  EXPECT_THROW(write_file_atomic(pipe, "x"), InvalidInputError);
+  EXPECT_TRUE(fs::is_fifo(pipe));
+  fs::create_symlink(pipe, root / "link_to_pipe");
+  EXPECT_THROW(write_file_atomic(root / "link_to_pipe", "x"), InvalidInputError);
+  EXPECT_TRUE(fs::is_fifo(pipe));
+
+  fs::create_directory(root / "folder");
+  EXPECT_THROW(write_file_atomic(root / "folder", "x"), InvalidInputError);
+  EXPECT_TRUE(fs::is_directory(root / "folder"));
+  EXPECT_FALSE(fs::exists(root / "folder.partial"));
+  EXPECT_FALSE(fs::exists(root / "pipe.partial"));
+  fs::remove_all(root);
 }
 
 TEST(Sha256, MatchesTheStandardTestVectors) {
