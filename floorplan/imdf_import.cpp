@@ -61,10 +61,11 @@ struct Level {
   double ordinal = 0;
 };
 
-std::vector<Level> read_levels(const std::filesystem::path& folder) {
+std::vector<Level> read_levels(const std::filesystem::path& folder, ImportedPlan& plan) {
   std::vector<Level> levels;
   const std::filesystem::path file = folder / "level.geojson";
   if (!std::filesystem::exists(file)) return levels;
+  plan.input_files.push_back(file);
   for (const PlanFeature& f : read_plan_features(file)) {
     Level l;
     l.id = f.tag("id");
@@ -89,7 +90,7 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
   plan.source = plan_file.string();
   plan.wall_thickness_m = options.wall_thickness_m;
   const std::filesystem::path folder = plan_file.parent_path();
-  const std::vector<Level> levels = read_levels(folder);
+  const std::vector<Level> levels = read_levels(folder, plan);
   for (const Level& l : levels) plan.levels.push_back(l.name);
 
   // The level: asked for by name, id or ordinal; else the lowest with a walkway.
@@ -164,6 +165,7 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
   std::vector<PlacedDoor> doors;
   const std::filesystem::path openings = folder / "opening.geojson";
   if (std::filesystem::exists(openings)) {
+    plan.input_files.push_back(openings);
     for (const PlanFeature& o : read_plan_features(openings)) {
       if (o.tag("level_id") != level_id) continue;
       for (const Ring& line : o.lines_lon_lat) {

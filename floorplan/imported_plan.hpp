@@ -50,6 +50,9 @@ struct ImportedPlan {
   std::vector<Ring> paths_m;  // navigation paths on the level, if the plan has any
   ImportCounts counts;
   std::vector<std::string> notes;  // choices made, for the scene's header and the report
+  // Every file the import read (the plan, and main.json, level, paths or opening files beside
+  // it): the scene must not be written over any of them.
+  std::vector<std::filesystem::path> input_files;
 };
 
 /// A door for the partition's inputs `a` and `b`, with what it joins.

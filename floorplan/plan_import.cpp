@@ -101,6 +101,7 @@ ImportedPlan import_plan(const std::filesystem::path& given, const ImportOptions
   ImportedPlan plan = format == PlanFormat::kWrld   ? import_wrld(plan_file, features, options)
                       : format == PlanFormat::kImdf ? import_imdf(plan_file, features, options)
                                                     : import_osm_sit(plan_file, features, options);
+  plan.input_files.insert(plan.input_files.begin(), plan_file);
   if (plan.spaces.empty())
     throw ParseError(plan_file.string(), "",
                      fmt::format("level '{}' has no usable polygon (no room, corridor or area, or "

@@ -95,7 +95,10 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
   std::vector<PlanFeature> features = given_features;
   const std::filesystem::path main_json = plan_file.parent_path() / "main.json";
   MainJson building;
-  if (std::filesystem::exists(main_json)) building = read_main_json(main_json);
+  if (std::filesystem::exists(main_json)) {
+    building = read_main_json(main_json);
+    plan.input_files.push_back(main_json);
+  }
   const std::vector<LevelFile>& levels = building.levels;
   for (const LevelFile& l : levels) plan.levels.push_back(l.name);
   const auto this_level = std::find_if(levels.begin(), levels.end(), [&](const LevelFile& l) {
@@ -113,6 +116,7 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
                                                                 fmt::join(plan.levels, ", "))));
     level_file = wanted->file;
     features = read_plan_features(level_file);
+    plan.input_files.push_back(level_file);
     plan.level = wanted->name;
   }
 
@@ -188,6 +192,7 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
   const std::filesystem::path paths_file =
       level_file.parent_path() / (level_file.stem().string() + "-paths.geojson");
   if (std::filesystem::exists(paths_file)) {
+    plan.input_files.push_back(paths_file);
     for (const PlanFeature& f : read_plan_features(paths_file))
       add_projected_lines(f, projection, plan.paths_m);
   }

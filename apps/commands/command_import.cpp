@@ -42,13 +42,17 @@ std::vector<Eigen::Vector2d> parse_route(const std::string& text) {
   return out;
 }
 
+/// The attribution file beside the plan, read unless --attribution is given.
+std::filesystem::path attribution_file(const ImportArgs& args) {
+  return std::filesystem::path(args.plan_path).parent_path() / "ATTRIBUTION.md";
+}
+
 /// The attribution beside the plan (ATTRIBUTION.md), unless given: it must travel with the scene.
 std::vector<std::string> attribution_lines(const ImportArgs& args) {
   std::vector<std::string> lines;
   std::string text = args.attribution;
   if (text.empty()) {
-    const auto file = std::filesystem::path(args.plan_path).parent_path() / "ATTRIBUTION.md";
-    std::ifstream in(file);
+    std::ifstream in(attribution_file(args));
     std::stringstream all;
     all << in.rdbuf();
     text = all.str();
@@ -78,6 +82,11 @@ void run_import(const ImportArgs& args) {
   const sim::Scene scene = floorplan::imported_scene(plan, scene_options);
   const std::string text = floorplan::imported_scene_yaml(plan, scene, attribution_lines(args));
   sim::load_scene_yaml(text, args.output_path);  // what we write, our loader reads
+  // Now that the import knows every file it read (main.json, level and paths files beside the
+  // plan, an IMDF folder's files, the attribution), none of them may be the output.
+  std::vector<std::filesystem::path> inputs = plan.input_files;
+  if (args.attribution.empty()) inputs.push_back(attribution_file(args));
+  check_output_file(args.output_path, inputs);
   write_file_atomic(args.output_path, text);
 
   const auto& c = plan.counts;

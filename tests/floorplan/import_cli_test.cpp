@@ -1,6 +1,6 @@
 // `wifislam import` refuses bad plans with a located message, exit 2 and nothing written: a ring
 // that crosses itself, a level the plan does not have, a file GDAL cannot read, a plan with no
-// usable polygon.
+// usable polygon; and it never writes the scene over a file it read.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -75,6 +75,24 @@ TEST_F(ImportCli, PlanWithoutUsablePolygonIsRefused) {
   test::write_file(scratch_ / "rooms.geojson", collection({feature("room", square)}));
   expect_refused("import " + (scratch_ / "rooms.geojson").string(),
                  {"rooms.geojson", "no indoor=corridor or indoor=area"});
+}
+
+TEST_F(ImportCli, NoFileTheImportReadsIsWrittenOver) {
+  // main.json, the level's paths file and ATTRIBUTION.md are read beside the plan, not named on
+  // the command line: the scene must not replace any of them.
+  const fs::path plan = scratch_ / "wrld";
+  fs::copy(kPlans / "westport_house_wrld", plan);
+  for (const char* side_input :
+       {"main.json", "westport-house-floor-2-paths.geojson", "ATTRIBUTION.md"}) {
+    const std::string before = test::read_file(plan / side_input);
+    const test::CliResult r =
+        test::run_wifislam("import " + (plan / "westport-house-floor-2.geojson").string() + " -o " +
+                               (plan / side_input).string(),
+                           scratch_);
+    EXPECT_EQ(r.exit_code, 2) << side_input << ": " << r.err;
+    EXPECT_NE(r.err.find("is an input of this command"), std::string::npos) << r.err;
+    EXPECT_EQ(test::read_file(plan / side_input), before) << side_input;
+  }
 }
 
 TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
