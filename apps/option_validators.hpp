@@ -3,7 +3,9 @@
 //   kSeedValidator      every `--seed`: a whole number in [0, 2^64 - 1], in plain digits. CLI11
 //                       would otherwise turn "-1" or "18446744073709551616" into 2^64 - 1
 //                       silently, while a scene file's `seed:` refuses both;
-//   kPositiveFinite     rates and sizes such as `--fps`: CLI::PositiveNumber lets "nan" through.
+//   kPositiveFinite     rates and sizes such as `--fps`: CLI::PositiveNumber lets "nan" through;
+//   finite_range(a, b)  every bounded real option: CLI::Range(a, b) lets "nan" through too (every
+//                       comparison with nan is false), and a nan then reaches the model.
 
 #include <charconv>
 #include <cmath>
@@ -37,5 +39,22 @@ inline const CLI::Validator kPositiveFinite(
       return {};
     },
     "POSITIVE");
+
+/// A real number in [lo, hi], NaN refused (CLI::Range's own test, value < lo || value > hi, is
+/// false for NaN).
+inline CLI::Validator finite_range(double lo, double hi) {
+  return CLI::Validator(
+      [lo, hi](std::string& text) -> std::string {
+        double value = 0.0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec != std::errc() || ptr != end || !(value >= lo && value <= hi)) {
+          return "expected a number in [" + CLI::detail::to_string(lo) + ", " +
+                 CLI::detail::to_string(hi) + "], got '" + text + "'";
+        }
+        return {};
+      },
+      "FLOAT in [" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]");
+}
 
 }  // namespace wifislam::cli

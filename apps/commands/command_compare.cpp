@@ -123,8 +123,7 @@ WIFISLAM_COMMAND(compare, 65) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   app->add_option("--fps", args->fps, "Dataset frame rate (default: each scene's)")
-      ->check(CLI::Range(0.1, 1000.0))
-      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
+      ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Cut each dataset after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_option("--jobs", args->jobs,

@@ -91,8 +91,7 @@ WIFISLAM_COMMAND(generate, 50) {
   app->add_option("--seed", args->seed, "Replace the scene's seed")
       ->check(wifislam::cli::kSeedValidator);
   app->add_option("--fps", args->fps, "Camera frame rate (default: the scene's, 30)")
-      ->check(CLI::Range(0.1, 1000.0))
-      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
+      ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
       ->check(CLI::NonNegativeNumber);
   app->add_flag("--no-images", args->no_images, "Write poses, odometry and Wi-Fi only");

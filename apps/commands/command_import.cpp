@@ -8,6 +8,7 @@
 #include <fmt/ranges.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
@@ -145,7 +146,7 @@ WIFISLAM_COMMAND(import, 15) {
       ->check(CLI::Range(1, 1000));
   app->add_option("--wall-thickness", args->wall_thickness_m,
                   "Wall thickness in metres for OSM and IMDF plans (WRLD measures its own)")
-      ->check(CLI::Range(0.05, 0.5));
+      ->check(wifislam::cli::finite_range(0.05, 0.5));
   app->add_option("--name", args->name, "Scene name (default: from the file name and level)");
   app->add_option(
       "--attribution", args->attribution,

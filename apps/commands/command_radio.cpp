@@ -121,7 +121,7 @@ void add_calibrate_command(CLI::App* parent) {
                   "Frequency of the survey: sets the default wall losses compared with and the "
                   "conversion of intercepts to tx power")
       ->capture_default_str()
-      ->check(CLI::Range(2400.0, 7125.0));
+      ->check(wifislam::cli::finite_range(2400.0, 7125.0));
   app->add_option("--receiver-height", args->receiver_height_m,
                   "Receiver height (m) for rows without z_m; default: the scene's camera height")
       ->check(wifislam::cli::kPositiveFinite);

@@ -72,8 +72,7 @@ WIFISLAM_COMMAND(radiomap, 40) {
   strongest->excludes(ap);
   app->add_option("--res", args->resolution_m, "Grid resolution (m), 0.01 to 10")
       ->capture_default_str()
-      ->check(CLI::Range(0.01, 10.0))
-      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
+      ->check(wifislam::cli::finite_range(0.01, 10.0));
   app->add_option("--height", args->height_m,
                   "Receiver height above the floor (m), below the scene's ceiling; default: the "
                   "camera height (sensors.camera.height_m), where datasets scan");

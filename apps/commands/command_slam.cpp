@@ -134,8 +134,7 @@ WIFISLAM_COMMAND(slam, 60) {
                   "Stop after this many frames (scene or dataset input)")
       ->check(CLI::PositiveNumber);
   app->add_option("--fps", args->fps, "Scene input only: frame rate (default: the scene's)")
-      ->check(CLI::Range(0.1, 1000.0))
-      ->check(wifislam::cli::kPositiveFinite);  // Range lets nan through
+      ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--seed", args->scene_seed, "Scene input only: replace the scene's seed")
       ->check(wifislam::cli::kSeedValidator);
   // RTAB-Map's and ORB-SLAM2's parameters keep their defaults and are named after them here.

@@ -175,7 +175,7 @@ WIFISLAM_COMMAND(vocab, 75) {
         ->check(CLI::Range(10, 100000));
     train_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
         ->capture_default_str()
-        ->check(CLI::Range(0.01, 120.0));
+        ->check(wifislam::cli::finite_range(0.01, 120.0));
     train_app->add_option("--every", args->every, "Every n-th frame of a folder")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000000));
@@ -206,7 +206,7 @@ WIFISLAM_COMMAND(vocab, 75) {
                            "Vocabulary file (default: the shipped one)");
     fabmap_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
         ->capture_default_str()
-        ->check(CLI::Range(0.01, 120.0));
+        ->check(wifislam::cli::finite_range(0.01, 120.0));
     fabmap_app->add_option("--every", args->every, "Every n-th frame of a folder")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000000));

@@ -78,7 +78,7 @@ void add_study_place_command(CLI::App* app) {
       ->required();
   place->add_option("--spacing", args->spacing_m, "Candidate positions no closer than this [m]")
       ->capture_default_str()
-      ->check(CLI::Range(0.5, 1000.0));
+      ->check(wifislam::cli::finite_range(0.5, 1000.0));
   place
       ->add_option("--random-draws", args->random_draws,
                    "Random placements per count (their median is reported)")

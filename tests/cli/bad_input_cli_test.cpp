@@ -40,6 +40,34 @@ class BadInput : public ::testing::Test {
 
 // Once a SIGFPE in the exact floor-plan arithmetic (1e308), a bad_alloc after 15 s (1e9) and a
 // route check running for minutes (1e5): coordinates are limited to 10 km.
+// CLI::Range(a, b) passes nan (both of its comparisons are false): every bounded real option
+// goes through cli::finite_range instead, and nan, inf or a value outside the bounds stop the
+// command before it reads anything.
+TEST_F(BadInput, BoundedRealOptionsRefuseNanAndInfinity) {
+  const std::string scene = scene_.string(), out = (scratch_ / "out").string();
+  const std::vector<std::string> commands = {
+      "generate " + scene + " -o " + out + " --fps",
+      "slam " + scene + " -o " + out + " --fps",
+      "radiomap " + scene + " --strongest -o " + out + ".png --res",
+      "radio calibrate survey.csv --scene " + scene + " --aps aps.csv -o " + out +
+          ".yaml --frequency-mhz",
+      "import plan.geojson -o " + out + ".yaml --wall-thickness",
+      "localize " + scene + " -o " + out + " --map-share",
+      "localize " + scene + " -o " + out + " --image-interval",
+      "study place " + scene + " -o " + out + " --spacing",
+  };
+  for (const std::string& command : commands) {
+    for (const char* value : {"nan", "inf", "-inf", "1e300"}) {
+      const test::CliResult r = wifislam(command + " " + value);
+      EXPECT_EQ(r.exit_code, 2) << command << " " << value << ": " << r.err;
+      EXPECT_NE(r.err.find("expected a number in ["), std::string::npos)
+          << command << " " << value << ": " << r.err;
+      for (const char* suffix : {"", ".png", ".yaml"})
+        EXPECT_FALSE(fs::exists(out + suffix)) << command << " " << value;
+    }
+  }
+}
+
 TEST_F(BadInput, CoordinatesBeyondTenKilometresAreLocatedErrors) {
   for (const std::string value : {"1e308", "1e9", "1e5", "-10000.5", ".nan", ".inf"}) {
     const fs::path scene =
