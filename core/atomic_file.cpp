@@ -42,8 +42,11 @@ bool same_folder(int fd, const fs::path& path) {
 
 }  // namespace
 
-void write_file_atomic(const fs::path& path, std::string_view contents) {
-  // The rename below would put a regular file where a folder, device or pipe was (as root, over
+namespace {
+
+// The refusal and the partial file of write_file_atomic, shared with write_files_atomic.
+void refuse_non_regular_target(const fs::path& path) {
+  // The rename would put a regular file where a folder, device or pipe was (as root, over
   // /dev/null): refuse any existing target that is not a regular file (or a link to one).
   std::error_code status_error;
   const fs::file_status target = fs::status(path, status_error);
@@ -52,24 +55,52 @@ void write_file_atomic(const fs::path& path, std::string_view contents) {
                             (fs::is_directory(target) ? "a folder" : "a device, pipe or socket") +
                             "); give the path of a file to write");
   }
-  const fs::path tmp = path.string() + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(path.string() + ": cannot open for writing");
-    out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-    out.flush();
-    if (!out) {
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      throw IoError(path.string() + ": write failed");
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
+}
+
+fs::path partial_of(const fs::path& path) { return path.string() + ".partial"; }
+
+void write_partial(const fs::path& path, std::string_view contents) {
+  const fs::path tmp = partial_of(path);
+  std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+  if (!out) throw IoError(path.string() + ": cannot open for writing");
+  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  out.flush();
+  if (!out) {
+    std::error_code ec;
     fs::remove(tmp, ec);
+    throw IoError(path.string() + ": write failed");
+  }
+}
+
+void rename_partial_into_place(const fs::path& path) {
+  std::error_code ec;
+  fs::rename(partial_of(path), path, ec);
+  if (ec) {
+    fs::remove(partial_of(path), ec);
     throw IoError(path.string() + ": cannot rename temporary file into place: " + ec.message());
   }
+}
+
+}  // namespace
+
+void write_file_atomic(const fs::path& path, std::string_view contents) {
+  refuse_non_regular_target(path);
+  write_partial(path, contents);
+  rename_partial_into_place(path);
+}
+
+void write_files_atomic(const std::vector<std::pair<fs::path, std::string_view>>& files) {
+  for (const auto& [path, contents] : files) refuse_non_regular_target(path);
+  std::size_t written = 0;
+  try {
+    for (; written < files.size(); ++written)
+      write_partial(files[written].first, files[written].second);
+  } catch (...) {
+    std::error_code ec;
+    for (std::size_t i = 0; i < written; ++i) fs::remove(partial_of(files[i].first), ec);
+    throw;
+  }
+  for (const auto& [path, contents] : files) rename_partial_into_place(path);
 }
 
 AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrite_(overwrite) {

@@ -5,11 +5,20 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 namespace wifislam {
 
-/// Writes `contents` to `<path>.partial` then renames it over `path`.
+/// Writes `contents` to `<path>.partial` then renames it over `path`. Refuses (InvalidInputError)
+/// an existing `path` that is not a regular file: a folder, device or pipe is never replaced.
 void write_file_atomic(const std::filesystem::path& path, std::string_view contents);
+
+/// Several files that belong together (a result and its reports): every `<path>.partial` is
+/// written before any is renamed into place, so a file that cannot be written (a missing folder,
+/// a full disk) leaves none of them behind.
+void write_files_atomic(
+    const std::vector<std::pair<std::filesystem::path, std::string_view>>& files);
 
 /// A folder under construction: everything is written into `<final>.partial/`, and `commit()`
 /// renames it to `<final>`. Destroying an uncommitted AtomicDirectory removes the partial folder.

@@ -91,9 +91,14 @@ void run_calibrate(const CalibrateArgs& args) {
   cal::widen_for_correlated_shadowing(c.fit, c.train, c.shadowing);
 
   const std::string markdown = cal::calibration_report_markdown(c);
-  write_file_atomic(args.output, cal::calibration_scene_yaml(c));
-  if (!args.report.empty()) write_file_atomic(args.report, markdown);
-  if (!args.json.empty()) write_file_atomic(args.json, cal::calibration_report_json(c));
+  const std::string scene_blocks = cal::calibration_scene_yaml(c);
+  const std::string json = args.json.empty() ? std::string() : cal::calibration_report_json(c);
+  // All or nothing: a report that cannot be written must not leave the fit behind.
+  std::vector<std::pair<std::filesystem::path, std::string_view>> files = {
+      {args.output, scene_blocks}};
+  if (!args.report.empty()) files.emplace_back(args.report, markdown);
+  if (!args.json.empty()) files.emplace_back(args.json, json);
+  write_files_atomic(files);
   fmt::print("{}wrote {}\n", markdown, args.output);
 }
 

@@ -74,6 +74,20 @@ TEST_F(CalibrateCli, GoodSurveyWritesSceneBlocksAndReport) {
   EXPECT_FALSE(fs::exists(work_ / "fit.yaml.partial"));
 }
 
+TEST_F(CalibrateCli, AReportThatCannotBeWrittenLeavesNoFitBehind) {
+  // The fit, the markdown report and the JSON report are written together or not at all.
+  for (const char* extra : {"--json missing/fit.json", "--json fit.json --report missing/r.md"}) {
+    const auto before = test::listing(work_);
+    const auto r = test::run_wifislam(
+        std::string("radio calibrate survey.csv --scene tiny.yaml --aps aps.csv -o fit.yaml ") +
+            extra,
+        scratch_, work_);
+    EXPECT_NE(r.exit_code, 0) << extra;
+    EXPECT_NE(r.err.find("missing/"), std::string::npos) << r.err;
+    EXPECT_EQ(test::listing(work_), before) << extra;
+  }
+}
+
 TEST_F(CalibrateCli, MalformedRowIsLocated) {
   std::string csv = good_survey();
   csv.insert(csv.find("\n", csv.find("x_m,y_m")) + 1, "1.0,abc,10,-50\n");
