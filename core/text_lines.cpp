@@ -2,24 +2,60 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+
+#include <fmt/format.h>
 
 #include "core/error.hpp"
 
 namespace wifislam {
 
-std::vector<TextLine> read_text_lines(const std::string& path) {
+std::ifstream open_text_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    throw ParseError(path, "", "is a folder; expected a text file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(path + ": cannot open file for reading");
+  return in;
+}
+
+bool read_line(std::istream& in, std::string& text, const std::string& path, int number) {
+  // std::getline has no limit: on /dev/zero or a large binary file it grows one line until
+  // memory runs out. Read in pieces and stop at the cap.
+  text.clear();
+  char piece[4096];
+  bool any = false;
+  while (true) {
+    in.get(piece, sizeof piece, '\n');
+    const std::streamsize n = in.gcount();
+    any = any || n > 0;
+    text.append(piece, static_cast<std::size_t>(n));
+    if (text.size() > kMaxTextLineBytes)
+      throw ParseError(path + ":" + std::to_string(number), "",
+                       fmt::format("a line longer than {} MiB: not a text file of this tool's "
+                                   "formats",
+                                   kMaxTextLineBytes >> 20));
+    if (in.bad()) throw IoError(path + ": read error");
+    if (in.eof()) break;
+    if (in.fail()) in.clear();  // get() extracted nothing: the next character is the newline
+    if (in.peek() == '\n') {
+      in.ignore();
+      any = true;
+      break;
+    }
+  }
+  if (!any) return false;
+  if (!text.empty() && text.back() == '\r') text.pop_back();
+  return true;
+}
+
+std::vector<TextLine> read_text_lines(const std::string& path) {
+  std::ifstream in = open_text_file(path);
   std::vector<TextLine> lines;
   std::string text;
   int number = 0;
-  while (std::getline(in, text)) {
-    ++number;
-    if (!text.empty() && text.back() == '\r') text.pop_back();
-    lines.push_back({number, std::move(text)});
-  }
-  if (in.bad()) throw IoError(path + ": read error");
+  while (read_line(in, text, path, number + 1)) lines.push_back({++number, std::move(text)});
   return lines;
 }
 

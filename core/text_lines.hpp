@@ -1,6 +1,8 @@
 #pragma once
 // Reading line-oriented text files (TUM lists, CSV) with positions for error messages.
 
+#include <cstddef>
+#include <fstream>
 #include <functional>
 #include <span>
 #include <string>
@@ -13,6 +15,18 @@ struct TextLine {
   int number = 0;  // 1-based
   std::string text;
 };
+
+/// No line of our text formats comes near this; a longer one means the input is not a text file
+/// of ours (a binary file, /dev/zero), and reading on would only fill memory.
+inline constexpr std::size_t kMaxTextLineBytes = std::size_t{16} << 20;
+
+/// Opens `path` for line reading: ParseError when it is a folder, IoError when it cannot be
+/// opened. Pipes and devices are allowed (`<(...)` in a shell); read_line caps what they give.
+std::ifstream open_text_file(const std::string& path);
+
+/// The next line of `in` without its "\n" or "\r\n"; false at the end. Throws ParseError at
+/// `path`:`number` for a line longer than kMaxTextLineBytes, IoError on a read error.
+bool read_line(std::istream& in, std::string& text, const std::string& path, int number);
 
 /// All lines of a file; throws IoError naming the file when it cannot be read.
 std::vector<TextLine> read_text_lines(const std::string& path);
