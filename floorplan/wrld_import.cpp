@@ -39,6 +39,9 @@ struct MainJson {
 
 /// The levels of main.json, in z order, and the building's location.
 MainJson read_main_json(const std::filesystem::path& main_json) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(main_json, ec))
+    throw ParseError(main_json.string(), "", "is not a regular file; expected WRLD's main.json");
   std::ifstream in(main_json);
   if (!in) throw IoError(main_json.string() + ": cannot read");
   nlohmann::json j;
@@ -47,12 +50,18 @@ MainJson read_main_json(const std::filesystem::path& main_json) {
   } catch (const nlohmann::json::exception& e) {
     throw ParseError(main_json.string(), "", std::string("not JSON: ") + e.what());
   }
-  if (!j.contains("levels") || !j["levels"].is_array())
+  if (!j.is_object() || !j.contains("levels") || !j["levels"].is_array())
     throw ParseError(main_json.string(), "levels", "a WRLD main.json lists its levels");
   std::vector<std::pair<double, LevelFile>> levels;
-  for (const auto& l : j["levels"]) {
-    if (!l.contains("filename") || !l.contains("name"))
-      throw ParseError(main_json.string(), "levels", "each level needs name and filename");
+  for (std::size_t i = 0; i < j["levels"].size(); ++i) {
+    const auto& l = j["levels"][i];
+    const std::string key = fmt::format("levels[{}]", i);
+    if (!l.is_object() || !l.contains("filename") || !l.contains("name"))
+      throw ParseError(main_json.string(), key, "each level needs name and filename");
+    if (!l["name"].is_string() || !l["filename"].is_string())
+      throw ParseError(main_json.string(), key, "name and filename must be strings");
+    if (l.contains("z_order") && !l["z_order"].is_number())
+      throw ParseError(main_json.string(), key + ".z_order", "must be a number");
     levels.push_back({l.value("z_order", 0.0),
                       {l["name"].get<std::string>(),
                        main_json.parent_path() / l["filename"].get<std::string>()}});

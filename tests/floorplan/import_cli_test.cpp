@@ -95,6 +95,20 @@ TEST_F(ImportCli, NoFileTheImportReadsIsWrittenOver) {
   }
 }
 
+TEST_F(ImportCli, BrokenMainJsonIsLocatedNotAnInternalError) {
+  const fs::path plan = scratch_ / "wrld";
+  fs::copy(kPlans / "westport_house_wrld", plan);
+  const std::string level = (plan / "westport-house-floor-2.geojson").string();
+  std::string main_json = test::read_file(plan / "main.json");
+  const std::size_t name = main_json.find("\"name\": \"G\"");
+  ASSERT_NE(name, std::string::npos);
+  test::write_file(plan / "main.json", main_json.replace(name, 11, "\"name\": 5"));
+  expect_refused("import " + level, {"main.json", "levels[0]", "must be strings"});
+  fs::remove(plan / "main.json");
+  fs::create_directory(plan / "main.json");
+  expect_refused("import " + level, {"main.json", "is not a regular file"});
+}
+
 TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
   // A corridor (20 x 2.4 m) and a room beside it, as closed ways of an .osm file, near
   // (lon 10, lat 45). (GDAL's OSM driver takes a node at exactly (0, 0) for a missing one.)
