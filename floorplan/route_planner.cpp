@@ -44,11 +44,18 @@ std::vector<cv::Point> to_pixels(const sim::Polygon2& ring, const Grid& g) {
   return out;
 }
 
+// The grid's cells at most: its rasters take ~13 bytes a cell (walkable, clearance, labels),
+// so ~0.5 GB. A building of 600 m x 600 m keeps the 0.1 m cells; a plan spread over kilometres
+// (a campus, or one stray feature far from the rest) gets coarser cells instead of tens of GB.
+constexpr double kMaxGridCells = 36e6;
+// Walk costs kept for every target at most (12 bytes each): see plan_tour.
+constexpr double kMaxKeptCostCells = 40e6;
+
 Grid make_grid(const sim::FloorPlan& plan, const TourOptions& options) {
   Grid g;
-  g.cell_m = options.cell_m;
   g.origin_m = plan.bounds_min_m - Eigen::Vector2d::Constant(1.0);
   const Eigen::Vector2d size = plan.bounds_max_m - g.origin_m + Eigen::Vector2d::Constant(1.0);
+  g.cell_m = std::max(options.cell_m, std::sqrt(size.x() * size.y() / kMaxGridCells));
   g.width = static_cast<int>(std::ceil(size.x() / g.cell_m));
   g.height = static_cast<int>(std::ceil(size.y() / g.cell_m));
   cv::Mat1b walkable(g.height, g.width, static_cast<unsigned char>(0));
@@ -243,11 +250,18 @@ std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
   if (!given) targets = spread_targets(g, options.target_spacing_m, targets);
   if (targets.size() < 2)
     throw InvalidInputError("the walkable space is too small for a route with a loop");
+  // Every target's walk costs over the whole grid are kept for the legs when they fit in
+  // ~0.5 GB; else (a long plan: hundreds of targets over millions of cells) each leg's are
+  // computed again, the same numbers, so the route is the same either way.
+  const bool keep_costs =
+      static_cast<double>(targets.size()) * g.width * g.height <= kMaxKeptCostCells;
   std::vector<Costs> costs;
-  for (int t : targets) costs.push_back(walk_costs(g, t));
   std::vector<std::vector<double>> d(targets.size(), std::vector<double>(targets.size()));
-  for (std::size_t a = 0; a < targets.size(); ++a)
-    for (std::size_t b = 0; b < targets.size(); ++b) d[a][b] = costs[a].cost[targets[b]];
+  for (std::size_t a = 0; a < targets.size(); ++a) {
+    Costs from_a = walk_costs(g, targets[a]);
+    for (std::size_t b = 0; b < targets.size(); ++b) d[a][b] = from_a.cost[targets[b]];
+    if (keep_costs) costs.push_back(std::move(from_a));
+  }
   std::vector<int> order(targets.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
   if (!given) order = tour_order(d);
@@ -256,8 +270,10 @@ std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
   std::vector<Eigen::Vector2d> lap;
   for (std::size_t k = 0; k + 1 < order.size(); ++k) {
     // The leg from order[k] to order[k+1]: walk back the predecessors from the latter.
+    const Costs recomputed = keep_costs ? Costs{} : walk_costs(g, targets[order[k]]);
+    const std::vector<int>& previous = keep_costs ? costs[order[k]].previous : recomputed.previous;
     std::vector<int> cells;
-    for (int c = targets[order[k + 1]]; c >= 0; c = costs[order[k]].previous[c]) cells.push_back(c);
+    for (int c = targets[order[k + 1]]; c >= 0; c = previous[c]) cells.push_back(c);
     std::reverse(cells.begin(), cells.end());
     if (cells.size() < 2) continue;
     for (const auto& p : shortcut(g, cells))
