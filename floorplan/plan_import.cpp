@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "floorplan/local_projection.hpp"
+#include "sim/scene/scene_schema.hpp"
 
 namespace wifislam::floorplan {
 
@@ -107,6 +108,19 @@ ImportedPlan import_plan(const std::filesystem::path& given, const ImportOptions
                      fmt::format("level '{}' has no usable polygon (no room, corridor or area, or "
                                  "walls enclosing no space)",
                                  plan.level));
+  // A scene keeps its coordinates within 10 km of the plan's centre (kCoordinateM). Checked
+  // here, before the scene is built: a plan spread over more (a stray feature far away, a
+  // building across the antimeridian) would otherwise take minutes and gigabytes first.
+  double farthest_m = 0.0;
+  for (const sim::Space& s : plan.spaces)
+    for (const Eigen::Vector2d& p : s.polygon_m)
+      farthest_m = std::max(farthest_m, p.cwiseAbs().maxCoeff());
+  if (!(farthest_m <= sim::schema::kCoordinateM.hi))
+    throw ParseError(plan_file.string(), "",
+                     fmt::format("level '{}' reaches {:.0f} m from the plan's centre; a scene "
+                                 "keeps within {:.0f} m (is a feature far from the rest, or does "
+                                 "the plan cross longitude 180?)",
+                                 plan.level, farthest_m, sim::schema::kCoordinateM.hi));
   return plan;
 }
 

@@ -3,6 +3,7 @@
 // usable polygon; and it never writes the scene over a file it read.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -107,6 +108,23 @@ TEST_F(ImportCli, BrokenMainJsonIsLocatedNotAnInternalError) {
   fs::remove(plan / "main.json");
   fs::create_directory(plan / "main.json");
   expect_refused("import " + level, {"main.json", "is not a regular file"});
+}
+
+TEST_F(ImportCli, AFeatureFarFromTheRestIsRefusedBeforeTheSceneIsBuilt) {
+  // A corridor and one room half a degree (~50 km) away: the scene could not hold it, and
+  // building it first took minutes and gigabytes.
+  const std::string corridor =
+      "[[-96.9272,19.5413],[-96.9262,19.5413],[-96.9262,19.54133],[-96.9272,19.54133],"
+      "[-96.9272,19.5413]]";
+  const std::string far_room =
+      "[[-96.4272,19.5413],[-96.4270,19.5413],[-96.4270,19.5415],[-96.4272,19.5415],"
+      "[-96.4272,19.5413]]";
+  test::write_file(scratch_ / "stray.geojson",
+                   collection({feature("corridor", corridor), feature("room", far_room)}));
+  const auto t0 = std::chrono::steady_clock::now();
+  expect_refused("import " + (scratch_ / "stray.geojson").string(),
+                 {"stray.geojson", "from the plan's centre", "a scene keeps within 10000 m"});
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 20.0);
 }
 
 TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
