@@ -240,8 +240,17 @@ std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
                                        const TourOptions& options, bool keep_order) {
   const Grid g = make_grid(plan, options);
   std::vector<int> targets;
-  for (const auto& p : must_visit) {
+  for (std::size_t i = 0; i < must_visit.size(); ++i) {
+    const Eigen::Vector2d& p = must_visit[i];
     const int cell = snap(g, p);
+    // The user's waypoints are the route: one that cannot be reached is an error, not a point
+    // to drop (a plan's own paths may leave the walkable space; those points are skipped).
+    if (cell < 0 && keep_order)
+      throw InvalidInputError(fmt::format(
+          "route waypoint {} ({:.2f}, {:.2f}) is not within 3 m of the walkable space (the plan "
+          "spans x {:.1f} to {:.1f} m, y {:.1f} to {:.1f} m)",
+          i + 1, p.x(), p.y(), plan.bounds_min_m.x(), plan.bounds_max_m.x(), plan.bounds_min_m.y(),
+          plan.bounds_max_m.y()));
     if (cell >= 0 && (targets.empty() || targets.back() != cell)) targets.push_back(cell);
   }
   // The user's waypoints are the route; a plan's paths are visited among points spread over the

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/error.hpp"
 #include "floorplan/imported_scene.hpp"
 #include "floorplan/local_projection.hpp"
 #include "floorplan/plan_import.hpp"
@@ -141,6 +142,29 @@ TEST(PlanImport, ImdfFolderImportsUnitsAndOpenings) {
   for (const sim::SpaceDoor& d : plan.doors) EXPECT_NEAR((d.to_m - d.from_m).norm(), 1.0, 0.02);
   EXPECT_EQ(plan.spaces.size(), 4u);
   expect_route_revisits(floorplan::imported_scene(plan, {}));
+}
+
+TEST(PlanImport, UserRouteWaypointOutsideThePlanIsAnErrorNotDropped) {
+  const fs::path folder =
+      write_imdf(fs::temp_directory_path() / ("wifislam_imdf_route_" + std::to_string(::getpid())));
+  const floorplan::ImportedPlan plan = floorplan::import_plan(folder, {});
+  fs::remove_all(folder);
+  floorplan::SceneOptions options;
+  // Both points lie in the plan's local frame; the second is kilometres outside the building.
+  Eigen::Vector2d inside = Eigen::Vector2d::Zero();  // the walkway's centre
+  for (const sim::Space& space : plan.spaces)
+    if (space.kind == sim::SpaceKind::kCorridor) {
+      for (const Eigen::Vector2d& p : space.polygon_m) inside += p;
+      inside /= static_cast<double>(space.polygon_m.size());
+    }
+  options.route_m = {inside, Eigen::Vector2d(1000.0, 1000.0)};
+  try {
+    floorplan::imported_scene(plan, options);
+    ADD_FAILURE() << "a waypoint 1 km outside the plan was accepted";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("route waypoint 2 (1000.00, 1000.00)"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(LocalProjection, RoundTripsAKnownPointToOneCentimetre) {
