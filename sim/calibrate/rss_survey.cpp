@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
+#include "sim/scene/scene_schema.hpp"
 
 namespace wifislam::sim::calibrate {
 
@@ -193,7 +194,14 @@ std::vector<SurveyAccessPoint> read_access_points_csv(const std::string& path) {
           fmt::format("access point {} is listed twice (first at {})", ap.id, it->second));
     ap.position_m = {coordinate(f[1], where, "x_m"), coordinate(f[2], where, "y_m"),
                      number(f[3], where, "z_m")};
-    if (with_tx) ap.tx_power_dbm = number(f[4], where, "tx_power_dbm");
+    if (with_tx) {
+      ap.tx_power_dbm = number(f[4], where, "tx_power_dbm");
+      const schema::Limits& limits = schema::kTxPowerDbm;  // as a scene's tx_power_dbm
+      if (*ap.tx_power_dbm < limits.lo || *ap.tx_power_dbm > limits.hi)
+        throw ParseError(where, "tx_power_dbm",
+                         fmt::format("{} dBm is not a Wi-Fi transmit power (expected {} to {})",
+                                     f[4], limits.lo, limits.hi));
+    }
     aps.push_back(ap);
   }
   if (aps.empty()) throw ParseError(path, "", "no access points listed");

@@ -42,6 +42,9 @@ inline constexpr Limits kCoordinateM{-10000.0, 10000.0, false};
 /// A height above the floor, up to the highest ceiling a scene may have (building.wall_height_m);
 /// the scene validation compares it with the scene's own ceiling.
 inline constexpr Limits kHeightM{0.0, 10.0, false};
+/// An access point's transmit power: a Wi-Fi radio's range (36 dBm is the largest EIRP any
+/// regulator allows in the 2.4 and 5 GHz bands).
+inline constexpr Limits kTxPowerDbm{-10.0, 36.0, false};
 
 template <class E>
 using Names = std::vector<std::pair<E, std::string_view>>;
@@ -177,7 +180,7 @@ template <class V>
 void visit(V& v, AccessPointSpec& s) {
   v.required();
   v.vec3("position_m", s.position_m, kCoordinateM, kHeightM);
-  v.optional_number("tx_power_dbm", s.tx_power_dbm, Limits{-10.0, 36.0});
+  v.optional_number("tx_power_dbm", s.tx_power_dbm, kTxPowerDbm);
 }
 
 template <class V>
@@ -191,7 +194,7 @@ void visit(V& v, AccessPoints& a) {
   v.integer("count", a.count, Limits{0, 10000});
   v.optional_uint64("seed", a.seed);
   v.number("height_m", a.height_m, kHeightM);
-  v.number("tx_power_dbm", a.tx_power_dbm, Limits{-10.0, 36.0});
+  v.number("tx_power_dbm", a.tx_power_dbm, kTxPowerDbm);
   v.integer("ssids_per_radio", a.ssids_per_radio, Limits{1, 16});
   // Up to the diagonal of the largest site the coordinate limits allow (2 x 10 km x sqrt 2).
   v.number("min_spacing_m", a.min_spacing_m, Limits{0.0, 30000.0});

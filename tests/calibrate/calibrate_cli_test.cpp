@@ -119,6 +119,9 @@ TEST_F(CalibrateCli, BadAccessPointFileIsLocated) {
   expect_rejected("survey.csv", "aps.csv:3", "listed twice");
   test::write_file(work_ / "aps.csv", "id,x_m,y_m,z_m\n10,3.5,2.5,1\n");
   expect_rejected("survey.csv", "aps.csv:2", "not in the free space");
+  // The limits of a scene's tx_power_dbm: 1e308 once gave inf and -inf in the report.
+  test::write_file(work_ / "aps.csv", "id,x_m,y_m,z_m,tx_power_dbm\n10,0.5,0,1,1e308\n");
+  expect_rejected("survey.csv", "aps.csv:2", "not a Wi-Fi transmit power");
 }
 
 TEST_F(CalibrateCli, OtherFormatIsRefusedAtItsHeader) {
