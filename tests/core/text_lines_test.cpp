@@ -56,13 +56,15 @@ TEST(TextLines, SameLinesAsGetline) {
   while (cursor.next(line)) numbers.push_back(line.number);
   EXPECT_EQ(numbers, (std::vector<int>{1, 4, 5}));
 
-  EXPECT_TRUE(read_text_lines(write("empty.txt", "").string()).empty());
-  EXPECT_EQ(read_text_lines(write("newline.txt", "x\n").string()).size(), 1u);
-  fs::remove(p);
+  const fs::path empty = write("empty.txt", ""), one_line = write("newline.txt", "x\n");
+  EXPECT_TRUE(read_text_lines(empty.string()).empty());
+  EXPECT_EQ(read_text_lines(one_line.string()).size(), 1u);
+  for (const fs::path& file : {p, empty, one_line}) fs::remove(file);
 }
 
 TEST(TextLines, AFolderIsRefusedByName) {
-  const fs::path folder = write("placeholder", "").string() + "_folder";
+  const fs::path folder =
+      fs::temp_directory_path() / ("wifislam_lines_" + std::to_string(::getpid()) + "_folder");
   fs::create_directories(folder);
   try {
     read_text_lines(folder.string());
