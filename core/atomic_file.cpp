@@ -123,7 +123,7 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
   if (fs::exists(fs::symlink_status(staging_, ec))) {
     // Left over from an interrupted run: ours (it carries the marker from the start) or empty.
     if (!fs::is_directory(fs::symlink_status(staging_, ec)) ||
-        !(fs::is_empty(staging_, ec) || looks_like_tool_output(staging_))) {
+        !(fs::is_empty(staging_, ec) || has_output_marker(staging_))) {
       throw InvalidInputError(staging_.string() +
                               ": exists and is not an unfinished wifislam output; remove it or "
                               "choose another output folder");
@@ -176,7 +176,7 @@ void AtomicDirectory::commit() {
     set_aside = final_.string() + ".replaced";
     if (fs::exists(fs::symlink_status(set_aside, ec))) {
       if (!fs::is_directory(fs::symlink_status(set_aside, ec)) ||
-          !(fs::is_empty(set_aside, ec) || looks_like_tool_output(set_aside))) {
+          !(fs::is_empty(set_aside, ec) || has_output_marker(set_aside))) {
         throw InvalidInputError(set_aside.string() +
                                 ": exists and is not a replaced wifislam output; remove it");
       }

@@ -4,16 +4,12 @@
 #include <unistd.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <system_error>
 #include <vector>
 
 #include <fmt/format.h>
-#include <nlohmann/json.hpp>
 
-#include "core/dataset_format.hpp"
 #include "core/error.hpp"
-#include "core/run_format.hpp"
 
 namespace wifislam {
 
@@ -33,18 +29,6 @@ bool is_within(const fs::path& inner, const fs::path& outer) {
 
 [[noreturn]] void refuse(const fs::path& path, const std::string& reason) {
   throw InvalidInputError(fmt::format("output folder {}: {}", path.string(), reason));
-}
-
-/// The "format" of a small JSON file, or "" when it is missing, unreadable or not JSON.
-std::string json_format(const fs::path& file) {
-  std::error_code ec;
-  const auto size = fs::file_size(file, ec);
-  if (ec || size > (std::uintmax_t{64} << 20)) return "";
-  std::ifstream in(file, std::ios::binary);
-  const nlohmann::json doc = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (!doc.is_object()) return "";
-  const auto it = doc.find("format");
-  return it != doc.end() && it->is_string() ? it->get<std::string>() : "";
 }
 
 bool is_empty_folder(const fs::path& folder) {
@@ -69,19 +53,7 @@ fs::path resolve_path(const fs::path& path) {
   return resolved;
 }
 
-bool looks_like_tool_output(const fs::path& folder) {
-  if (is_regular(folder / kOutputMarkerFile)) return true;
-  if (is_regular(folder / dataset::kManifest) &&
-      json_format(folder / dataset::kManifest) == dataset::kFormatName) {
-    return true;
-  }
-  if (is_regular(folder / run_folder::kRun) &&
-      json_format(folder / run_folder::kRun) == run_folder::kFormatName) {
-    return true;
-  }
-  return (is_regular(folder / "metrics.json") && is_regular(folder / "report.md")) ||
-         (is_regular(folder / "comparison.json") && is_regular(folder / "comparison.md"));
-}
+bool has_output_marker(const fs::path& folder) { return is_regular(folder / kOutputMarkerFile); }
 
 namespace {
 
@@ -120,11 +92,11 @@ void check_folder_replaceable(const fs::path& resolved) {
                                               "); refusing to replace it");
     }
   }
-  if (!is_empty_folder(resolved) && !looks_like_tool_output(resolved)) {
+  if (!is_empty_folder(resolved) && !has_output_marker(resolved)) {
     refuse(resolved,
-           fmt::format("does not look like wifislam output (no {}, manifest.json or run.json) "
-                       "and is not empty; refusing to replace it, even with --force. Choose "
-                       "another folder or remove this one yourself",
+           fmt::format("does not look like wifislam output (no {} marker) and is not empty; "
+                       "refusing to replace it, even with --force. Choose another folder or "
+                       "remove this one yourself",
                        kOutputMarkerFile));
   }
 }

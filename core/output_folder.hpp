@@ -8,7 +8,9 @@
 //   - it is not an input of the same command, does not contain one and, unless it is that
 //     default, does not lie inside one (refused even when it does not exist yet);
 //   - it is not `/`, the current directory or the home folder, and holds none of them;
-//   - it looks like this tool's output (see `looks_like_tool_output`), or is empty.
+//   - it holds this tool's marker file (see `has_output_marker`), or is empty. Nothing else makes
+//     a folder replaceable: file names that look like ours (metrics.json, manifest.json ...) are
+//     no proof, and a user's folder holding them must survive `--force`.
 // Paths are compared after resolving symlinks, `..` and trailing slashes. A refusal is an
 // InvalidInputError (exit 2) naming the path and the reason, raised before anything is written.
 
@@ -48,16 +50,15 @@ void check_output_file(const std::filesystem::path& path,
 
 /// The parts of the rule that need no knowledge of the command: `resolved` (an existing folder,
 /// see `resolve_path`) is not `/`, the current directory or the home folder, holds none of them,
-/// and looks like this tool's output or is empty. Throws InvalidInputError. AtomicDirectory
+/// and holds the marker or is empty. Throws InvalidInputError. AtomicDirectory
 /// applies this to every folder it replaces, whoever asked.
 void check_folder_replaceable(const std::filesystem::path& resolved);
 
 /// Absolute path with symlinks, `.`, `..` and trailing slashes resolved as far as the path exists.
 std::filesystem::path resolve_path(const std::filesystem::path& path);
 
-/// True when `folder` holds the marker file, a dataset manifest.json or a run.json of this tool
-/// (their "format" says so), or the report files of eval or compare as written before the
-/// marker existed (metrics.json with report.md; comparison.json with comparison.md).
-bool looks_like_tool_output(const std::filesystem::path& folder);
+/// True when `folder` holds the marker file (a regular file named kOutputMarkerFile) that
+/// AtomicDirectory writes into every folder it creates.
+bool has_output_marker(const std::filesystem::path& folder);
 
 }  // namespace wifislam

@@ -2,6 +2,7 @@
 // issue 18, run through the real binary on a real small dataset and SLAM run in a scratch folder.
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -156,6 +157,24 @@ TEST_F(OutputFolders, ForceNeverReplacesAFolderThatIsNotThisToolsOutput) {
   r = wifislam("slam " + ds.string() + " -o " + mine.string() + " --force");
   expect_refused(r, mine, "does not look like wifislam output");
   EXPECT_EQ(listing(mine), before);
+}
+
+// Issue 44, the data loss: a user's folder holding metrics.json + report.md (or comparison.json +
+// comparison.md) was taken for an old eval (compare) report and `generate --force` deleted
+// thesis.tex with it. Only the marker makes a folder replaceable now.
+TEST_F(OutputFolders, ForceKeepsAUserFolderWhoseFileNamesLookLikeOurReports) {
+  for (const auto& [report, text] : {std::pair{"metrics.json", "report.md"},
+                                     std::pair{"comparison.json", "comparison.md"}}) {
+    const fs::path mine = user_folder(std::string("reports_") + report);
+    test::write_file(mine / report, "{}\n");
+    test::write_file(mine / text, "\n");
+    const auto before = listing(mine);
+    const auto r = wifislam("generate " + scene_.string() + " -o " + mine.string() +
+                            " --force --no-images --fps 2 --max-frames 2 -q");
+    expect_refused(r, mine, "does not look like wifislam output");
+    EXPECT_EQ(listing(mine), before);
+    EXPECT_FALSE(fs::exists(mine.string() + ".partial"));
+  }
 }
 
 TEST_F(OutputFolders, AnEmptyFolderIsReplacedWithForceOnly) {

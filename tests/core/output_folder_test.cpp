@@ -10,6 +10,8 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
@@ -72,20 +74,36 @@ TEST_F(OutputFolderRule, ExistingOutputOfThisToolIsReplacedOnlyWithForce) {
   EXPECT_TRUE(check_output_folder({out, true, {}, {}}));
 }
 
-TEST_F(OutputFolderRule, DatasetManifestAndRunJsonMarkToolOutputOnlyWithTheirFormat) {
-  const fs::path ds = user_folder("ds");
-  std::ofstream(ds / "manifest.json") << R"({"format": "wifislam-dataset"})";
-  EXPECT_TRUE(looks_like_tool_output(ds));
-  const fs::path run = user_folder("run");
-  std::ofstream(run / "run.json") << R"({"format": "wifislam-run", "format_version": 2})";
-  EXPECT_TRUE(looks_like_tool_output(run));
-  // A browser extension has a manifest.json too.
-  const fs::path extension = user_folder("extension");
-  std::ofstream(extension / "manifest.json") << R"({"manifest_version": 3, "name": "x"})";
-  EXPECT_FALSE(looks_like_tool_output(extension));
-  const auto message = refusal({extension, true, {}, {}});
-  ASSERT_TRUE(message);
-  EXPECT_NE(message->find("does not look like wifislam output"), std::string::npos) << *message;
+// Issue 44: `generate -o u --force` deleted u/thesis.tex because u also held metrics.json and
+// report.md, which a fallback took for an old eval report. Only the marker makes a folder ours:
+// file names that look like ours, even with this tool's "format" inside, are no proof.
+TEST_F(OutputFolderRule, OnlyTheMarkerMakesAFolderReplaceable) {
+  const std::vector<std::vector<std::pair<std::string, std::string>>> look_alikes = {
+      {{"metrics.json", "{}"}, {"report.md", "\n"}},
+      {{"comparison.json", "{}"}, {"comparison.md", "\n"}},
+      {{"manifest.json", R"({"format": "wifislam-dataset"})"}},
+      {{"run.json", R"({"format": "wifislam-run", "format_version": 2})"}},
+  };
+  int index = 0;
+  for (const auto& files : look_alikes) {
+    const fs::path dir = user_folder("look_alike_" + std::to_string(index++));
+    for (const auto& [name, text] : files) std::ofstream(dir / name) << text;
+    EXPECT_FALSE(has_output_marker(dir)) << dir;
+    const auto message = refusal({dir, true, {}, {}});
+    ASSERT_TRUE(message) << dir;
+    EXPECT_NE(message->find("does not look like wifislam output"), std::string::npos) << *message;
+    EXPECT_NE(message->find(kOutputMarkerFile), std::string::npos) << *message;
+    EXPECT_TRUE(fs::exists(dir / "thesis.tex"));
+    // With the marker the same folder is ours.
+    std::ofstream(dir / kOutputMarkerFile) << "x";
+    EXPECT_TRUE(has_output_marker(dir));
+    EXPECT_TRUE(check_output_folder({dir, true, {}, {}}));
+  }
+  // A folder named like the marker is not the marker.
+  const fs::path odd = user_folder("odd");
+  fs::create_directories(odd / kOutputMarkerFile);
+  EXPECT_FALSE(has_output_marker(odd));
+  EXPECT_TRUE(refusal({odd, true, {}, {}}));
 }
 
 TEST_F(OutputFolderRule, UserFolderIsRefusedEvenWithForceButAnEmptyOneIsNot) {
@@ -216,7 +234,7 @@ TEST_F(OutputFolderRule, AtomicDirectoryMarksItsFolderAndKeepsUserFolders) {
     dir.commit();
   }
   EXPECT_TRUE(fs::is_regular_file(out / kOutputMarkerFile));
-  EXPECT_TRUE(looks_like_tool_output(out));
+  EXPECT_TRUE(has_output_marker(out));
   {
     AtomicDirectory dir(out, true);  // its own output: replaced
     std::ofstream(dir.staging_path() / "b.txt") << "b";
