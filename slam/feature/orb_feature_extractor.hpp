@@ -24,6 +24,8 @@ struct FeatureOptions {
   /// usable range is about 0.5-4.5 m; farther readings are noisy (sigma ~ z^2).
   double min_depth_m = 0.3;
   double max_depth_m = 6.0;
+
+  friend bool operator==(const FeatureOptions&, const FeatureOptions&) = default;
 };
 
 /// Depth (m) at a sub-pixel position: bilinear between the four nearest pixel centres when they

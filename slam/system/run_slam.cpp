@@ -5,7 +5,8 @@
 namespace wifislam::slam {
 
 std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& options,
-                                     RunSummary& summary, const FrameProgress& progress) {
+                                     RunSummary& summary, const FrameProgress& progress,
+                                     const FeatureStore* features) {
   const auto start = std::chrono::steady_clock::now();
   StreamInfo info;
   info.intrinsics = stream.intrinsics();
@@ -13,6 +14,7 @@ std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& op
   info.has_wifi = stream.has_wifi();
   info.has_odometry = stream.has_odometry();
   auto system = std::make_unique<SlamSystem>(options, info);
+  system->use_feature_store(features);
   std::int64_t frames = 0;
   while (std::optional<SensorEvent> event = stream.next()) {
     system->process(*event);

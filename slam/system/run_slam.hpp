@@ -14,8 +14,10 @@ namespace wifislam::slam {
 using FrameProgress = std::function<void(std::int64_t frames)>;
 
 /// Feeds every event of `stream` to a new SlamSystem, runs the final optimisation and returns
-/// the finished system; `summary` receives the run summary.
+/// the finished system; `summary` receives the run summary. With `features`, every frame's
+/// features come from that store (SlamSystem::use_feature_store).
 std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& options,
-                                     RunSummary& summary, const FrameProgress& progress = {});
+                                     RunSummary& summary, const FrameProgress& progress = {},
+                                     const FeatureStore* features = nullptr);
 
 }  // namespace wifislam::slam

@@ -81,10 +81,26 @@ bool SlamSystem::needs_new_keyframe(const VisualTransformation& t, Timestamp fra
              options_.tracking.keyframe_max_rotation_rad;
 }
 
+void SlamSystem::use_feature_store(const FeatureStore* store) {
+  if (store != nullptr && !(store->options() == options_.features)) {
+    throw std::invalid_argument("feature store made with other feature options than the run's");
+  }
+  feature_store_ = store;
+}
+
 void SlamSystem::process_frame(const RgbdFrame& frame) {
   instrumentation_.count(counter::kFrames);
   FrameFeatures features;
-  {
+  if (feature_store_ != nullptr) {
+    const FeatureStore::Entry* entry = feature_store_->find(frame.index);
+    if (entry == nullptr) {
+      throw std::logic_error(fmt::format("feature store has no frame {}", frame.index));
+    }
+    features = *entry->features;
+    // Charged as if extracted here (feature_store.hpp): total too, which process() times.
+    instrumentation_.add_time(module::kFeatureExtraction, entry->extraction_s);
+    instrumentation_.add_seconds(module::kTotal, entry->extraction_s);
+  } else {
     ScopedTimer timer(instrumentation_, module::kFeatureExtraction);
     features = extractor_->extract(frame);
   }

@@ -19,6 +19,7 @@
 #include "core/camera_intrinsics.hpp"
 #include "core/sensor_stream.hpp"
 #include "core/tum_trajectory.hpp"
+#include "slam/feature/feature_store.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
 #include "slam/frontend/front_end.hpp"
 #include "slam/frontend/loop_rule.hpp"
@@ -67,6 +68,11 @@ class SlamSystem {
   void process_frame(const RgbdFrame& frame);
   /// Full optimisation of the graph, then the front end's after-run pruning; call once at the end.
   void finish();
+  /// Takes every frame's features from `store` (slam/feature/feature_store.hpp) instead of
+  /// extracting them: its frames need no images then. The store must hold every frame this
+  /// system is fed, made with this system's FeatureOptions (std::invalid_argument otherwise;
+  /// std::logic_error at a frame it lacks); it must outlive the system.
+  void use_feature_store(const FeatureStore* store);
 
   const SlamOptions& options() const { return options_; }
   const PoseGraph& graph() const { return graph_; }
@@ -162,6 +168,7 @@ class SlamSystem {
   StreamInfo stream_;
   Instrumentation instrumentation_;
   std::unique_ptr<OrbFeatureExtractor> extractor_;
+  const FeatureStore* feature_store_ = nullptr;
   std::unique_ptr<FrontEnd> front_end_;
   PoseGraph graph_;
   std::vector<FrameFeatures> keyframe_features_;

@@ -10,6 +10,10 @@ void Instrumentation::add_time(const std::string& module, double seconds) {
   ++m.calls;
 }
 
+void Instrumentation::add_seconds(const std::string& module, double seconds) {
+  modules_[module].total_s += seconds;
+}
+
 void Instrumentation::count(const std::string& name, std::int64_t amount) {
   counters_[name] += amount;
 }

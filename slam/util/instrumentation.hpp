@@ -27,8 +27,11 @@ class Instrumentation {
     std::int64_t calls = 0;
   };
 
-  /// Adds `seconds` of wall-clock to `module`.
+  /// Adds `seconds` of wall-clock to `module`, as one call.
   void add_time(const std::string& module, double seconds);
+  /// Adds `seconds` to `module` within a call already counted (time spent elsewhere on its
+  /// behalf: slam/feature/feature_store.hpp).
+  void add_seconds(const std::string& module, double seconds);
   void count(const std::string& name, std::int64_t amount = 1);
 
   /// Work of one visual comparison made for `role` (a candidate role, or "tracking"): its RANSAC
