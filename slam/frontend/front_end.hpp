@@ -88,6 +88,10 @@ class FrontEnd {
   /// (always), after every n-th keyframe (RGBDSLAMv2's `optimizer_skip_step`); 0: only after loop
   /// closures.
   virtual int optimise_every_keyframes() const { return 0; }
+  /// How an incremental optimisation stops: 0, after the pipeline's fixed iteration budget
+  /// (PoseGraphOptions::incremental_max_iterations); > 0, in rounds until chi^2 improves by less
+  /// than this fraction (RGBDSLAMv2's schedule: slam/optimize/pose_graph_optimizer.hpp).
+  virtual double optimisation_convergence() const { return 0.0; }
 
   /// Called once per new keyframe after its hypotheses were accepted or not. Runs Wi-Fi cluster
   /// management for it (unless the front end assigns its own places), then after_verification().

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -47,7 +48,7 @@ ceres::LossFunction* make_loss(const RobustKernel& kernel) {
 
 OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions& options,
                                         int max_iterations, const RobustKernel& kernel,
-                                        KeyframeId fixed_node) {
+                                        KeyframeId fixed_node, double convergence) {
   OptimisationSummary summary;
   if (!(kernel.width_chi2 > 0.0) || !std::isfinite(kernel.width_chi2)) {
     throw InvalidInputError("robust kernel width must be a positive chi^2");
@@ -88,16 +89,17 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
     manifold_used = true;
   }
   if (!manifold_used) delete quaternion_manifold;
+  std::vector<ceres::ResidualBlockId> residuals;
   for (const GraphEdge& edge : graph.edges()) {
     if (edge.pruned) continue;
     State& a = states[static_cast<std::size_t>(edge.from)];
     State& b = states[static_cast<std::size_t>(edge.to)];
     ceres::LossFunction* edge_loss =
         kernel.every_edge || edge.type == EdgeType::kLoop ? loss.get() : nullptr;
-    problem.AddResidualBlock(
+    residuals.push_back(problem.AddResidualBlock(
         RelativePoseError::create(
             edge.from_to, std::sqrt(edge.weight) * information_square_root(edge.information)),
-        edge_loss, a.p.data(), a.q.coeffs().data(), b.p.data(), b.q.coeffs().data());
+        edge_loss, a.p.data(), a.q.coeffs().data(), b.p.data(), b.q.coeffs().data()));
   }
   State& fixed = states.at(static_cast<std::size_t>(fixed_node));
   if (problem.HasParameterBlock(fixed.p.data())) {
@@ -112,8 +114,39 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
   solver_options.minimizer_progress_to_stdout = false;
   solver_options.logging_type = ceres::SILENT;
   ceres::Solver::Summary ceres_summary;
-  ceres::Solve(solver_options, &problem, &ceres_summary);
-
+  int iterations = 0;
+  double initial_cost = 0.0, seconds = 0.0;
+  if (convergence <= 0.0) {
+    ceres::Solve(solver_options, &problem, &ceres_summary);
+    iterations = static_cast<int>(ceres_summary.iterations.size());
+    initial_cost = ceres_summary.initial_cost;
+    seconds = ceres_summary.total_time_in_seconds;
+  } else {
+    // chi^2 without the kernel: what g2o's OptimizableGraph::chi2() sums (Ceres' cost is half).
+    const auto raw_chi2 = [&] {
+      double chi2 = 0.0;
+      for (const ceres::ResidualBlockId id : residuals) {
+        double cost = 0.0;
+        problem.EvaluateResidualBlock(id, /*apply_loss_function=*/false, &cost, nullptr, nullptr);
+        chi2 += 2.0 * cost;
+      }
+      return chi2;
+    };
+    double chi2 = std::numeric_limits<double>::infinity(), previous = chi2;
+    bool first = true;
+    do {
+      previous = chi2;
+      solver_options.max_num_iterations =
+          std::min(kConvergenceRoundIterations, max_iterations - iterations);
+      ceres::Solve(solver_options, &problem, &ceres_summary);
+      if (first) initial_cost = ceres_summary.initial_cost;
+      first = false;
+      iterations += static_cast<int>(ceres_summary.iterations.size());
+      seconds += ceres_summary.total_time_in_seconds;
+      if (!ceres_summary.IsSolutionUsable()) break;
+      chi2 = raw_chi2();
+    } while (chi2 < (1.0 - convergence) * previous && iterations < max_iterations);
+  }
   summary.ran = true;
   summary.usable = ceres_summary.IsSolutionUsable();
   summary.termination =
@@ -135,10 +168,10 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
       graph.set_pose(node.id, pose_from_translation_quaternion(s.p, s.q));
     }
   }
-  summary.iterations = static_cast<int>(ceres_summary.iterations.size());
-  summary.initial_cost = ceres_summary.initial_cost;
+  summary.iterations = iterations;
+  summary.initial_cost = initial_cost;
   summary.final_cost = ceres_summary.final_cost;
-  summary.seconds = ceres_summary.total_time_in_seconds;
+  summary.seconds = seconds;
   summary.brief = ceres_summary.BriefReport();
   return summary;
 }

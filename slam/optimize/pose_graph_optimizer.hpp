@@ -35,8 +35,17 @@ struct OptimisationSummary {
 
 /// Optimises the poses of `graph` in place, with node `fixed_node` held constant. The robust
 /// kernel is the front end's choice (FrontEnd::graph_robustness).
+///
+/// `convergence` 0: one solve of at most `max_iterations` Levenberg-Marquardt iterations (Ceres'
+/// own tolerances may stop it sooner). `convergence` > 0: RGBDSLAMv2's schedule
+/// (GraphManager::optimizeGraphImpl with `optimizer_iterations` below 1): rounds of
+/// kConvergenceRoundIterations iterations, each a fresh solve from the last estimate as g2o's
+/// optimize(5) is, until a round lowers the graph's chi^2 (without the kernel, as g2o's chi2()) by
+/// less than that fraction; at least two rounds, and `max_iterations` in all at most.
 OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions& options,
                                         int max_iterations, const RobustKernel& kernel = {},
-                                        KeyframeId fixed_node = 0);
+                                        KeyframeId fixed_node = 0, double convergence = 0.0);
+
+inline constexpr int kConvergenceRoundIterations = 5;
 
 }  // namespace wifislam::slam

@@ -335,13 +335,17 @@ void SlamSystem::optimise_if_due(KeyframeId id, bool loop_found) {
   const bool scheduled = every > 0 && id > 0 && id % every == 0;
   if ((loop_found || scheduled) && options_.graph.incremental_max_iterations > 0) {
     ScopedTimer timer(instrumentation_, module::kOptimisation);
-    optimise(options_.graph.incremental_max_iterations);
+    const double convergence = front_end_->optimisation_convergence();
+    // Rounds until converged are capped by the final optimisation's budget instead.
+    optimise(convergence > 0.0 ? options_.graph.max_iterations
+                               : options_.graph.incremental_max_iterations,
+             convergence);
   }
 }
 
-OptimisationSummary SlamSystem::optimise(int max_iterations) {
-  OptimisationSummary summary =
-      optimise_pose_graph(graph_, options_.graph, max_iterations, robustness_.kernel);
+OptimisationSummary SlamSystem::optimise(int max_iterations, double convergence) {
+  OptimisationSummary summary = optimise_pose_graph(graph_, options_.graph, max_iterations,
+                                                    robustness_.kernel, 0, convergence);
   if (summary.ran) instrumentation_.count(counter::kOptimisations);
   if (!summary.usable) instrumentation_.count(counter::kOptimisationFailures);
   return summary;

@@ -162,7 +162,7 @@ class SlamSystem {
   VisualTransformation compare(const FrameFeatures& a, const FrameFeatures& b,
                                const std::string& role);
   /// One optimisation with the front end's kernel; counts it, and a failure.
-  OptimisationSummary optimise(int max_iterations);
+  OptimisationSummary optimise(int max_iterations, double convergence = 0.0);
 
   SlamOptions options_;
   StreamInfo stream_;

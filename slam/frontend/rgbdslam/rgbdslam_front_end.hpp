@@ -70,6 +70,13 @@ struct RgbdslamOptions {
   /// Incremental optimisation after every n-th keyframe, besides after each keyframe that brought
   /// a loop closure (RGBDSLAMv2's `optimizer_skip_step`, default 1). 0: after loop closures only.
   int optimizer_skip_step = 1;
+  /// How far each incremental optimisation goes (RGBDSLAMv2's `optimizer_iterations`, default
+  /// 0.01, which below 1 means: GraphManager::optimizeGraphImpl runs rounds of 5 iterations
+  /// until a round lowers the graph's chi^2 by less than this fraction, at least two rounds and
+  /// no cap). A graph torn between conflicting edges takes more rounds than a consistent one.
+  /// Ours caps the rounds at `optimizer_iterations` (the final optimisation's, 100) as a guard.
+  /// 0: at most `optimizer_incremental_iterations`, the pipeline's fixed budget.
+  double optimizer_convergence = 0.01;
 };
 
 class RgbdslamFrontEnd final : public FrontEnd {
@@ -80,6 +87,7 @@ class RgbdslamFrontEnd final : public FrontEnd {
   std::vector<Candidate> select(const SelectionQuery& query) override;
   GraphRobustness graph_robustness() const override;
   int optimise_every_keyframes() const override { return options_.optimizer_skip_step; }
+  double optimisation_convergence() const override { return options_.optimizer_convergence; }
 
   const RgbdslamOptions& options() const { return options_; }
 
