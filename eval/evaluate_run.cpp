@@ -51,6 +51,8 @@ struct RunIdentity {
   /// frontend_summary.loop_closure_time_s: its cost-model share and the measured CPU time of
   /// likelihood and posterior (rtabmap).
   std::optional<double> loop_closure_cost_s, likelihood_posterior_cpu_s;
+  /// frontend_summary.loop_closure_time_s.query: the loop query's measured time (orbslam).
+  std::optional<double> loop_query_s;
 };
 
 /// The number of seconds at `keys` under run.json's object `j`, when present; a clear error when
@@ -112,6 +114,8 @@ RunIdentity identity_of(const fs::path& run_json) {
       optional_seconds(j, {"frontend_summary", "loop_closure_time_s", "cost"}, run_json);
   id.likelihood_posterior_cpu_s = optional_seconds(
       j, {"frontend_summary", "loop_closure_time_s", "likelihood_posterior_cpu"}, run_json);
+  id.loop_query_s =
+      optional_seconds(j, {"frontend_summary", "loop_closure_time_s", "query"}, run_json);
   return id;
 }
 
@@ -236,6 +240,7 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   ev.cost_model_s = identity.cost_model_s;
   ev.loop_closure_cost_s = identity.loop_closure_cost_s;
   ev.likelihood_posterior_cpu_s = identity.likelihood_posterior_cpu_s;
+  ev.loop_query_s = identity.loop_query_s;
   if (fs::exists(dataset_dir / dataset::kCalibration)) {
     in.calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);
   }

@@ -89,6 +89,9 @@ const std::vector<Metric>& metric_list() {
           "", "likelihood_posterior_cpu_s",
           [](const E& e) { return e.likelihood_posterior_cpu_s.has_value(); },
           [](const E& e) { return Json(*e.likelihood_posterior_cpu_s); }),
+      both(
+          "", "loop_query_s", [](const E& e) { return e.loop_query_s.has_value(); },
+          [](const E& e) { return Json(*e.loop_query_s); }),
       {Flat::kNone, "", Nested::kKey, "", "thresholds", always,
        [](const E& e) { return e.options.to_json(); }},
       // Trajectory error.

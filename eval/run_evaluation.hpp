@@ -43,6 +43,9 @@ struct RunEvaluation {
   /// and the measured thread CPU of likelihood and posterior (the verification's measured time is
   /// timing.roles["long_term"]).
   std::optional<double> loop_closure_cost_s, likelihood_posterior_cpu_s;
+  /// ORB-SLAM's loop query time (DetectLoop and SearchByBoW, measured), when run.json has it;
+  /// its verifications are timing.roles["long_term"].
+  std::optional<double> loop_query_s;
   EvalOptions options;
 
   // Trajectory error (ATE after alignment, RPE per metre travelled).

@@ -26,6 +26,17 @@ const std::vector<StudyColumn<RadioResolution>>& radio_metric_columns();
 const std::vector<StudyColumn<eval::RunEvaluation>>& slam_metric_columns();
 const std::vector<StudyColumn<eval::RunEvaluation>>& slam_timing_columns();
 
+/// The loop-closure time the paper's tables give, measured as the front end's original system
+/// times it (seconds):
+///   rtabmap   likelihood + posterior (thread CPU) + the loop hypothesis' verification, the
+///             categories Rtabmap::process times for loop closure detection;
+///   orbslam   LoopClosing: the loop query (DetectLoop, SearchByBoW) + the Sim3 verifications +
+///             the pose-graph optimisations (CorrectLoop's essential graph; the pipeline optimises
+///             after loop closures and once at the end);
+///   others    the module bounding acts on (RGBD-SLAM's "affected modules"): candidate selection +
+///             the long-term verifications + optimisation.
+double paper_loop_closure_s(const eval::RunEvaluation& e);
+
 /// The values of `columns` for one source, in column order.
 template <class Source>
 std::vector<ResultColumn> column_values(const std::vector<StudyColumn<Source>>& columns,

@@ -208,6 +208,22 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
                                             path.string(), existing->name, study.path.string(),
                                             difference(*existing, mine)));
       }
+      // The same study by a build with other columns (a metric added since): its rows could not
+      // be written, nor compared with this build's.
+      std::vector<std::string> expected = {"case_id", "case_index", "variant"};
+      for (const StudyAxis& a : study.axes) expected.push_back(column_name(a.key));
+      for (const std::string& m : metric_columns) expected.push_back(m);
+      expected.push_back("software_version");
+      expected.push_back("scene_hash");
+      std::vector<std::string> expected_timing = {"case_id", "variant"};
+      for (const std::string& t : timing_columns) expected_timing.push_back(t);
+      if (result_columns(db_, "main", "results") != expected ||
+          result_columns(db_, "main", "timing") != expected_timing) {
+        throw InvalidInputError(fmt::format(
+            "{}: a database of study '{}' written by a build with other result columns; its "
+            "rows cannot be continued by this one: write to a new database",
+            path.string(), existing->name));
+      }
       return;
     }
     std::string columns =
@@ -432,6 +448,32 @@ ResultTable read_results(const fs::path& path) {
   try {
     table.columns = result_columns(db, "main", "results");
     Statement q(db, "SELECT * FROM results ORDER BY case_index, variant");
+    while (q.step()) table.rows.push_back(q.values(table.columns.size()));
+  } catch (...) {
+    sqlite3_close(db);
+    throw;
+  }
+  sqlite3_close(db);
+  return table;
+}
+
+ResultTable read_results_and_timing(const fs::path& path) {
+  const auto identity = ResultStore::read_identity(path);
+  if (!identity) throw InvalidInputError(path.string() + ": not a study database");
+  ResultTable table;
+  table.identity = *identity;
+  sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);
+  try {
+    table.columns = result_columns(db, "main", "results");
+    std::string select = "SELECT r.*";
+    for (const std::string& t : result_columns(db, "main", "timing")) {
+      if (t == "case_id" || t == "variant") continue;
+      table.columns.push_back(t);
+      select += ", t." + quote_identifier(t);
+    }
+    Statement q(db, select +
+                        " FROM results r LEFT JOIN timing t ON r.case_id = t.case_id AND "
+                        "r.variant = t.variant ORDER BY r.case_index, r.variant");
     while (q.step()) table.rows.push_back(q.values(table.columns.size()));
   } catch (...) {
     sqlite3_close(db);

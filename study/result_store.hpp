@@ -97,6 +97,10 @@ struct ResultTable {
 /// Reads a study database; InvalidInputError when `path` is not one.
 ResultTable read_results(const std::filesystem::path& path);
 
+/// The same with each row's `timing` columns after its results columns (their names as stored;
+/// NULL where a row has no timing).
+ResultTable read_results_and_timing(const std::filesystem::path& path);
+
 /// Every row of `results` ordered by case_id, variant, as text (for tests and `study show`).
 std::vector<std::vector<std::string>> dump_results(const std::filesystem::path& path);
 

@@ -173,6 +173,21 @@ ComparisonOptions case_comparison(const StudyFile& study, const StudyCase& c,
 
 }  // namespace
 
+ResultRow slam_run_row(const StudyFile& study, bool wifi, const std::string& status,
+                       const eval::RunEvaluation& evaluation, const std::string& scene_hash) {
+  ResultRow row;
+  row.variant = wifi ? "wifi" : "vanilla";
+  row.scene_hash = scene_hash;
+  row.metrics = column_values(slam_metric_columns(), evaluation);
+  row.timing = column_values(slam_timing_columns(), evaluation);
+  if (status != "ok") {  // a failed external run: its status, and no numbers (NULL)
+    for (auto* columns : {&row.metrics, &row.timing})
+      for (ResultColumn& column : *columns) column.value = SqlValue();
+  }
+  if (runs_external_system(study)) row.metrics.insert(row.metrics.begin(), {kStatusColumn, status});
+  return row;
+}
+
 std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
                                 const fs::path& scratch_dir, int jobs) {
   const auto start = Clock::now();
@@ -193,20 +208,8 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
   const ComparisonResult result =
       run_comparison({scene}, case_comparison(study, c, slam_options, jobs), work);
   std::vector<ResultRow> rows;
-  const bool with_status = runs_external_system(study);
-  for (const ComparisonCase& run : result.cases) {
-    ResultRow row;
-    row.variant = run.wifi ? "wifi" : "vanilla";
-    row.scene_hash = scene_hash;
-    row.metrics = column_values(slam_metric_columns(), run.evaluation);
-    row.timing = column_values(slam_timing_columns(), run.evaluation);
-    if (run.status != "ok") {  // a failed external run: its status, and no numbers (NULL)
-      for (auto* columns : {&row.metrics, &row.timing})
-        for (ResultColumn& column : *columns) column.value = SqlValue();
-    }
-    if (with_status) row.metrics.insert(row.metrics.begin(), {kStatusColumn, run.status});
-    rows.push_back(std::move(row));
-  }
+  for (const ComparisonCase& run : result.cases)
+    rows.push_back(slam_run_row(study, run.wifi, run.status, run.evaluation, scene_hash));
   fs::remove_all(work);
   return rows;
 }

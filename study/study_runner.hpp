@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/run_evaluation.hpp"
 #include "sim/scene/scene.hpp"
 #include "slam/slam_options.hpp"
 #include "study/result_store.hpp"
@@ -60,6 +61,12 @@ inline constexpr const char* kStatusColumn = "status";
 bool runs_external_system(const StudyFile& study);
 std::vector<std::string> metric_columns(const StudyFile& study);
 std::vector<std::string> timing_columns(StudyLevel level);
+
+/// The row of one SLAM-level run: its variant ("vanilla" or "wifi") and every metric and timing
+/// column of its evaluation; a failed external run (`status` not "ok") has its status and NULL
+/// numbers. A study that runs an external system has the status column first.
+ResultRow slam_run_row(const StudyFile& study, bool wifi, const std::string& status,
+                       const eval::RunEvaluation& evaluation, const std::string& scene_hash);
 
 /// The rows of one case (no database involved).
 std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
