@@ -26,7 +26,7 @@ namespace wifislam::study {
 struct StreamedRun {
   slam::SlamOptions slam;
   std::filesystem::path run_dir;  // written by slam::write_run_folder; must not exist
-  nlohmann::json run_info;        // merged into run.json ("input": the dataset)
+  nlohmann::json run_info = nlohmann::json::object();  // merged into run.json ("input": ...)
   slam::RunSummary summary;       // filled in by generate_with_runs
 };
 
