@@ -10,7 +10,6 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
-#include "apps/presets/shipped_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
@@ -18,6 +17,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "study/comparison_study.hpp"
+#include "study/paper/paper_plan.hpp"
 
 namespace {
 
@@ -48,7 +48,7 @@ void apply_preset(CompareArgs& args, const CLI::App& app,
   if (args.preset != "paper-rgbdslam") {
     throw ParseError("--preset", args.preset, "unknown preset; known: paper-rgbdslam");
   }
-  if (scenes.empty()) scenes.push_back(sim::load_scene_yaml(cli::kCHallSceneYaml, "<c_hall twin>"));
+  if (scenes.empty()) scenes.push_back(study::paper::twin_scene("c_hall"));
   if (args.sweeps.empty()) args.sweeps.push_back("min_matches=50,70");
   if (app.count("--seeds") == 0) args.seeds = 5;
   if (args.fps <= 0) args.fps = 3.0;

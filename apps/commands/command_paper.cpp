@@ -1,0 +1,138 @@
+// `wifislam paper -o DIR [--seeds N] [--fps F] [--parts ...] [--twins ...] [--jobs J]`: every
+// table and figure of the paper's evaluation on the four twins, the paper's numbers beside ours
+// with a verdict (study/paper/).
+#include <filesystem>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
+#include "core/error.hpp"
+#include "core/thread_start.hpp"
+#include "study/paper/paper_folder.hpp"
+#include "study/paper/paper_report.hpp"
+#include "study/paper/paper_runner.hpp"
+#include "study/study_runner.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace wifislam;
+
+struct PaperArgs {
+  std::string output, parts = "rgbdslam,rtabmap,orbslam,fabmap",
+                      twins = "c_hall,b_hall,j_hall,a_hall", shard;
+  int seeds = 1, jobs = 0;
+  double fps = 3.0;
+  bool force = false, report_only = false, no_report = false, quiet = false;
+};
+
+std::vector<std::string> split(const std::string& text, const std::string& option) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');) {
+    if (item.empty()) throw ParseError(option, text, "empty name in the list");
+    if (std::find(out.begin(), out.end(), item) != out.end()) {
+      throw ParseError(option, text, "'" + item + "' is listed twice");
+    }
+    out.push_back(item);
+  }
+  if (out.empty() || text.back() == ',') throw ParseError(option, text, "empty name in the list");
+  return out;
+}
+
+void run(const PaperArgs& args) {
+  study::paper::PaperRunOptions options;
+  options.folder = args.output;
+  options.parts.clear();
+  for (const std::string& name : split(args.parts, "--parts")) {
+    const auto part = study::paper::parse_part(name);
+    const auto& runnable = study::paper::runnable_parts();
+    if (!part || std::find(runnable.begin(), runnable.end(), *part) == runnable.end()) {
+      throw ParseError("--parts", name, "unknown part; known: rgbdslam, rtabmap, orbslam, fabmap");
+    }
+    options.parts.push_back(*part);
+  }
+  options.twins.clear();
+  for (const std::string& twin : split(args.twins, "--twins")) {
+    try {
+      (void)study::paper::twin_scene_yaml(twin);
+    } catch (const Error& e) {
+      throw ParseError("--twins", twin, e.what());
+    }
+    options.twins.push_back(twin);
+  }
+  options.seeds = args.seeds;
+  options.settings.fps = args.fps;
+  options.jobs = clamp_thread_count(args.jobs);
+  options.force = args.force;
+  if (!args.shard.empty()) {
+    std::tie(options.shard_index, options.shard_count) = study::parse_shard(args.shard);
+  }
+  if (!args.quiet) {
+    options.on_progress = [](const std::string& line) { fmt::print(stderr, "paper: {}\n", line); };
+  }
+  if (args.report_only) {
+    if (!fs::exists(options.folder / study::paper::folder::kIdentity)) {
+      throw InvalidInputError(fmt::format("{}: not a paper folder (no {}); run `wifislam paper "
+                                          "-o {}` first",
+                                          args.output, study::paper::folder::kIdentity,
+                                          args.output));
+    }
+  } else {
+    const study::paper::PaperRunSummary s = study::paper::run_paper(options);
+    if (!args.quiet) {
+      fmt::print(stderr, "paper: {} runs and {} localisations made, {} cases already done ({:.0f} s)\n",
+                 s.runs, s.localisations, s.cases_skipped, s.wall_s);
+    }
+  }
+  if (args.no_report) return;
+  const std::string verdicts = study::paper::write_paper_report(options.folder);
+  fmt::print("{}\nwrote {}/report.md (and a page per part, paper_vs_ours.csv/.json, figures/)\n",
+             verdicts, fs::absolute(options.folder).lexically_normal().string());
+}
+
+}  // namespace
+
+WIFISLAM_COMMAND(paper, 66) {
+  auto args = std::make_shared<PaperArgs>();
+  CLI::App* app = parent.add_subcommand(
+      "paper",
+      "Reproduce the paper's evaluation on the twins of its four buildings: RGBD-SLAM on C Hall\n"
+      "(min-matches x inlier distance), RTAB-Map on all four (real-time thresholds), ORB-SLAM on\n"
+      "B, C and J Hall (min-matches) and A Hall, and the FAB-MAP comparison; then write the\n"
+      "report: every number of the paper beside ours (mean, sd and min-max over seeds) with a\n"
+      "verdict (reproduced, direction only, departs, not applicable), one page per part, the\n"
+      "figures redrawn. Resumable: run it again on the same folder to continue; nothing done is\n"
+      "redone. Each twin's rendering is shared by all its runs.");
+  app->add_option("-o,--output", args->output,
+                  "Paper folder: made if new, continued if `paper` made it")
+      ->required();
+  app->add_option("--seeds", args->seeds, "Seeds per twin (its own seed, +1, ...)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  app->add_option("--fps", args->fps, "Frame rate of every twin's dataset")
+      ->capture_default_str()
+      ->check(cli::finite_range(0.1, 30.0));
+  app->add_option("--parts", args->parts, "Parts to run, comma-separated")->capture_default_str();
+  app->add_option("--twins", args->twins, "Twins to run, comma-separated")->capture_default_str();
+  app->add_option("--jobs", args->jobs,
+                  "SLAM runs at a time (default: one per core; 1 keeps times free of\n"
+                  "interference; results are the same)")
+      ->check(CLI::NonNegativeNumber);
+  app->add_option("--shard", args->shard,
+                  "i/N: run only every N-th twin-and-seed group from the i-th (a cluster's task)");
+  app->add_flag("--report-only", args->report_only, "Write the report from what DIR holds");
+  app->add_flag("--no-report", args->no_report, "Run, but leave the report to a later call");
+  app->add_flag("--force", args->force, "Start over: replace DIR (a folder `paper` made)");
+  app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
+  app->footer(
+      "About 30 min a seed at the default 3 fps on 2 cores. DIR holds the twins' scene files,\n"
+      "one study file and SQLite database per part, twin and seed (`wifislam study slurm` takes\n"
+      "any of them), and the report. Details: docs/paper/README.md.");
+  app->callback([args] { run(*args); });
+}
