@@ -1,12 +1,13 @@
 #pragma once
 // Hamming distances between 256-bit binary descriptors (ORB), the inner loop of every exhaustive
-// descriptor search: the incremental RTAB-Map vocabulary's quantisation and the vocabulary tree's
-// descent and training (slam/bow).
+// descriptor search: the vocabulary tree's descent and training (slam/bow) and the incremental
+// RTAB-Map vocabulary's quantisation (nearest_two).
 
 #include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 
 namespace wifislam::slam {
 
@@ -18,10 +19,20 @@ inline int hamming_distance(const PackedDescriptor& a, const PackedDescriptor& b
          std::popcount(a[3] ^ b[3]);
 }
 
-/// Distances of one descriptor (4 x 64 bits) to `count` consecutive descriptors in `words`
-/// (4 x 64 bits each) into `out`. Uses the popcnt instruction where the CPU has it (checked at
-/// run time); the same integers either way.
-void hamming_distances(const std::uint64_t* query, const std::uint64_t* words, std::size_t count,
-                       int* out);
+/// The two smallest distances from a query to a set of descriptors, and the first (lowest)
+/// index at the smallest: what a scan in index order keeps when it replaces the best only on a
+/// strictly smaller distance (ties go to the lower index).
+struct NearestTwo {
+  int best = std::numeric_limits<int>::max();
+  int second = std::numeric_limits<int>::max();
+  std::size_t best_index = std::numeric_limits<std::size_t>::max();
+};
+
+/// Descriptors stored as four lanes: lanes[k][w] is 64-bit word k of descriptor w. The
+/// exhaustive 2-nearest search over them (RTAB-Map's vocabulary quantisation): AVX-512
+/// VPOPCNTDQ eight descriptors at a time where the CPU has it (checked at run time), else popcnt
+/// one at a time; the same result either way.
+NearestTwo nearest_two(const std::uint64_t* query, const std::uint64_t* const lanes[4],
+                       std::size_t count);
 
 }  // namespace wifislam::slam

@@ -31,33 +31,24 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
     throw std::invalid_argument("VisualVocabulary: descriptors must be 32-byte ORB rows (CV_8U)");
   }
   refresh_dictionary();
-  std::vector<int> distances;
   for (int i = 0; i < descriptors.rows; ++i) {
     const std::array<std::uint64_t, 4> query = packed(descriptors, i);
     // Every word of the dictionary, including those this node founded a moment ago.
-    distances.resize(dictionary_ids_.size());
-    hamming_distances(query.data(), dictionary_words_.data(), distances.size(), distances.data());
-    distance_computations_ += static_cast<std::int64_t>(distances.size());
-    int best = std::numeric_limits<int>::max(), second = std::numeric_limits<int>::max();
-    WordId best_word = -1;
-    for (std::size_t w = 0; w < distances.size(); ++w) {
-      const int d = distances[w];
-      if (d < best) {
-        second = best;
-        best = d;
-        best_word = dictionary_ids_[w];
-      } else if (d < second) {
-        second = d;
-      }
-    }
-    const bool matched = distances.size() >= 2 &&
+    const std::uint64_t* const lanes[4] = {dictionary_lanes_[0].data(), dictionary_lanes_[1].data(),
+                                           dictionary_lanes_[2].data(), dictionary_lanes_[3].data()};
+    const std::size_t searched = dictionary_ids_.size();
+    const NearestTwo nearest = nearest_two(query.data(), lanes, searched);
+    distance_computations_ += static_cast<std::int64_t>(searched);
+    const int best = nearest.best, second = nearest.second;
+    const WordId best_word = searched > 0 ? dictionary_ids_[nearest.best_index] : -1;
+    const bool matched = searched >= 2 &&
                          static_cast<double>(best) <= nndr_ratio_ * static_cast<double>(second);
     WordId word = best_word;
     if (!matched) {
       word = static_cast<WordId>(size());
       words_.insert(words_.end(), query.begin(), query.end());
       references_.emplace_back();
-      dictionary_words_.insert(dictionary_words_.end(), query.begin(), query.end());
+      for (int k = 0; k < 4; ++k) dictionary_lanes_[k].push_back(query[k]);
       dictionary_ids_.push_back(word);
     }
     ++out.counts[word];
@@ -84,12 +75,11 @@ void VisualVocabulary::enable_references(NodeId node, const NodeWords& words) {
 
 void VisualVocabulary::refresh_dictionary() {
   if (!dictionary_stale_) return;
-  dictionary_words_.clear();
+  for (auto& lane : dictionary_lanes_) lane.clear();
   dictionary_ids_.clear();
   for (std::size_t w = 0; w < references_.size(); ++w) {
     if (references_[w].empty()) continue;
-    dictionary_words_.insert(dictionary_words_.end(), words_.begin() + 4 * w,
-                             words_.begin() + 4 * (w + 1));
+    for (std::size_t k = 0; k < 4; ++k) dictionary_lanes_[k].push_back(words_[4 * w + k]);
     dictionary_ids_.push_back(static_cast<WordId>(w));
   }
   dictionary_stale_ = false;

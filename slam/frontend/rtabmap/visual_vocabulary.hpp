@@ -6,11 +6,13 @@
 // Words founded earlier in the same node are searched too (RTAB-Map searches its index and, by
 // brute force, the words not yet indexed).
 //
-// Search is brute-force Hamming over every word (4 x 64-bit popcounts per word). RTAB-Map uses a
-// FLANN index; at our sizes (a few hundred nodes x 500 descriptors: ~250 new words per node, so
-// under ~10^5 words) an exhaustive search is exact and deterministic, which an approximate index
-// is not, and costs ~2 ns per word and descriptor (measured: 1.76e-6 ms per comparison, so ~25 ms
-// per node at 30 000 words, on a loaded machine). Ties go to the lower word id.
+// Search is brute-force Hamming over every word (slam/match/hamming_distances.hpp's nearest_two:
+// eight words at a time with AVX-512 where the CPU has it, else 4 x 64-bit popcounts per word).
+// RTAB-Map uses a FLANN index; at our sizes (a few hundred nodes x 500 descriptors: ~250 new
+// words per node, so ~10^5 words) an exhaustive search is exact and deterministic, which an
+// approximate index is not. The cost model charges every (descriptor, word) pair, whichever
+// instructions compare them (calibrated at 1.87e-6 ms a pair with popcnt). Ties go to the lower
+// word id.
 //
 // With fewer than two words the ratio test cannot be applied; the descriptor then founds a new
 // word (RTAB-Map would take the single word as a match, which makes the first node's descriptors
@@ -23,6 +25,7 @@
 // dictionary until a retrieved node references it again, so a new descriptor near it founds a
 // new word: memory management bounds the quantisation's cost along with the likelihood's.
 
+#include <array>
 #include <cstdint>
 #include <map>
 #include <vector>
@@ -73,7 +76,7 @@ class VisualVocabulary {
   /// The searched dictionary, in word-id order (ties go to the lower id): packed descriptors and
   /// ids, rebuilt when a word left or rejoined it.
   void refresh_dictionary();
-  std::vector<std::uint64_t> dictionary_words_;
+  std::array<std::vector<std::uint64_t>, 4> dictionary_lanes_;  // lane k: word k of each
   std::vector<WordId> dictionary_ids_;
   bool dictionary_stale_ = false;
 };
