@@ -122,6 +122,9 @@ inline constexpr const char* kAcceptedTransformations = "accepted_transformation
 inline constexpr const char* kLoopClosures = "loop_closures";
 inline constexpr const char* kRejectedHypotheses = "rejected_hypotheses";
 inline constexpr const char* kOptimisations = "optimisations";
+/// Levenberg-Marquardt iterations, summed over every optimisation (a graph torn between
+/// conflicting edges takes more before it settles: rgbdslam's optimizer_convergence).
+inline constexpr const char* kOptimisationIterations = "optimisation_iterations";
 /// Optimisations whose result Ceres called unusable (the poses before it were kept).
 inline constexpr const char* kOptimisationFailures = "optimisation_failures";
 /// After-run pruning: edges removed, and edges discounted because removal would split the graph.

@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "core/run_format.hpp"
+
 namespace wifislam::study {
 
 namespace {
@@ -72,6 +74,12 @@ const std::vector<StudyColumn<eval::RunEvaluation>>& slam_metric_columns() {
       {"wifi_clusters", [](const E& e) { return count(e.wifi_clusters); }},
       {"cost_model_s", [](const E& e) { return optional_value(e.cost_model_s); }},
       {"loop_closure_cost_s", [](const E& e) { return optional_value(e.loop_closure_cost_s); }},
+      {"optimisations",
+       [](const E& e) { return count(e.timing.counter(run_folder::counter::kOptimisations)); }},
+      {"optimisation_iterations",
+       [](const E& e) {
+         return count(e.timing.counter(run_folder::counter::kOptimisationIterations));
+       }},
   };
   return columns;
 }

@@ -346,7 +346,10 @@ void SlamSystem::optimise_if_due(KeyframeId id, bool loop_found) {
 OptimisationSummary SlamSystem::optimise(int max_iterations, double convergence) {
   OptimisationSummary summary = optimise_pose_graph(graph_, options_.graph, max_iterations,
                                                     robustness_.kernel, 0, convergence);
-  if (summary.ran) instrumentation_.count(counter::kOptimisations);
+  if (summary.ran) {
+    instrumentation_.count(counter::kOptimisations);
+    instrumentation_.count(counter::kOptimisationIterations, summary.iterations);
+  }
   if (!summary.usable) instrumentation_.count(counter::kOptimisationFailures);
   return summary;
 }
