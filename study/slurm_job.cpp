@@ -15,12 +15,7 @@ namespace wifislam::study {
 
 namespace {
 
-/// Single-quoted for the shell.
-std::string sh(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
+std::string sh(const std::string& text) { return shell_quoted(text); }
 
 /// Runs `command` and returns its standard output; throws naming it when it fails.
 std::string run_capturing(const std::string& command) {
@@ -37,86 +32,129 @@ std::string run_capturing(const std::string& command) {
   return out;
 }
 
-std::string job_name(const StudyFile& study) {
-  std::string name = "wifislam-";
-  for (char c : study.name) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
-  return name;
+std::string job_name(const std::string& name) {
+  std::string out = "wifislam-";
+  for (char c : name) out += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return out;
 }
 
-}  // namespace
-
-SlurmJobFiles slurm_job_files(const StudyFile& study, const SlurmJobRequest& request,
-                              const std::filesystem::path& folder) {
-  if (request.tasks < 1 || request.tasks > 100000) {
-    throw InvalidInputError(fmt::format("--tasks {}: expected 1 to 100000", request.tasks));
+void check_job(int tasks, const std::filesystem::path& folder) {
+  if (tasks < 1 || tasks > 100000) {
+    throw InvalidInputError(fmt::format("--tasks {}: expected 1 to 100000", tasks));
   }
   if (folder.string().find_first_of(" \t\n") != std::string::npos) {
     // #SBATCH --output takes the rest of its line as the path: it cannot be quoted.
     throw InvalidInputError(folder.string() + ": a Slurm job folder's path may not contain spaces");
   }
+}
+
+std::string optional_lines(const std::string& partition, const std::string& time_limit) {
+  std::string lines;
+  if (!partition.empty()) lines += "#SBATCH --partition=" + partition + "\n";
+  if (!time_limit.empty()) lines += "#SBATCH --time=" + time_limit + "\n";
+  return lines;
+}
+
+}  // namespace
+
+std::string shell_quoted(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+
+SlurmJobFiles slurm_array_files(const SlurmArrayJob& job, const std::filesystem::path& folder) {
+  check_job(job.tasks, folder);
   SlurmJobFiles files;
-  files.merged_database = column_name(study.name) + ".sqlite";
+  files.array_file = job.array_file;
+  files.final_file = job.final_file;
   const std::string dir = folder.string();
-  std::string optional_lines;
-  if (!request.partition.empty())
-    optional_lines += "#SBATCH --partition=" + request.partition + "\n";
-  if (!request.time_limit.empty()) optional_lines += "#SBATCH --time=" + request.time_limit + "\n";
+  const std::string optional = optional_lines(job.partition, job.time_limit);
   files.array_script = fmt::format(
       "#!/bin/bash\n"
-      "# wifislam study '{name}': {cases} cases in {tasks} shards, one per array task.\n"
-      "# Submit: sbatch study.sbatch; then, with its job id J: sbatch --dependency=afterok:J "
-      "merge.sbatch\n"
+      "# {what}\n"
+      "# Submit: sbatch {array}; then, with its job id J: sbatch --dependency=afterok:J {final}\n"
       "#SBATCH --job-name={job}\n"
       "#SBATCH --array=0-{last}\n"
       "#SBATCH --cpus-per-task={cpus}\n"
-      "#SBATCH --output={dir}/logs/shard-%a.log\n"
+      "#SBATCH --output={dir}/logs/{log}\n"
       "{optional}"
       "set -euo pipefail\n"
-      "exec {bin} study run {study} --shard \"${{SLURM_ARRAY_TASK_ID}}/{tasks}\" \\\n"
-      "  --jobs {cpus} -o {dir_q}/shards/shard-\"${{SLURM_ARRAY_TASK_ID}}\".sqlite\n",
-      fmt::arg("name", study.name), fmt::arg("cases", study.cases.size()),
-      fmt::arg("tasks", request.tasks), fmt::arg("job", job_name(study)),
-      fmt::arg("last", request.tasks - 1), fmt::arg("cpus", request.cpus_per_task),
-      fmt::arg("dir", dir), fmt::arg("optional", optional_lines),
-      fmt::arg("bin", sh(request.wifislam_binary.string())),
-      fmt::arg("study", sh(request.study_file.string())), fmt::arg("dir_q", sh(dir)));
-  std::string shards;
-  for (int i = 0; i < request.tasks; ++i) {
-    shards += fmt::format(" \\\n  {}/shards/shard-{}.sqlite", sh(dir), i);
-  }
+      "exec {command}\n",
+      fmt::arg("what", job.what), fmt::arg("array", job.array_file),
+      fmt::arg("final", job.final_file), fmt::arg("job", job_name(job.name)),
+      fmt::arg("last", job.tasks - 1), fmt::arg("cpus", job.cpus_per_task), fmt::arg("dir", dir),
+      fmt::arg("log", job.task_log), fmt::arg("optional", optional),
+      fmt::arg("command", job.task_command));
   files.merge_script = fmt::format(
       "#!/bin/bash\n"
-      "# Unions the {tasks} shard databases of study '{name}' into {merged}.\n"
-      "#SBATCH --job-name={job}-merge\n"
-      "#SBATCH --output={dir}/logs/merge.log\n"
+      "# {what}\n"
+      "#SBATCH --job-name={job}{suffix}\n"
+      "#SBATCH --output={dir}/logs/{log}\n"
       "{optional}"
       "set -euo pipefail\n"
-      "exec {bin} study merge{shards} \\\n"
-      "  --force -o {dir_q}/{merged}\n",
-      fmt::arg("tasks", request.tasks), fmt::arg("name", study.name),
-      fmt::arg("merged", files.merged_database.string()), fmt::arg("job", job_name(study)),
-      fmt::arg("dir", dir), fmt::arg("optional", optional_lines),
-      fmt::arg("bin", sh(request.wifislam_binary.string())), fmt::arg("shards", shards),
-      fmt::arg("dir_q", sh(dir)));
+      "exec {command}\n",
+      fmt::arg("what", job.final_what), fmt::arg("job", job_name(job.name)),
+      fmt::arg("suffix", job.final_job_suffix), fmt::arg("dir", dir),
+      fmt::arg("log", job.final_log), fmt::arg("optional", optional),
+      fmt::arg("command", job.final_command));
+  return files;
+}
+
+SlurmJobFiles slurm_job_files(const StudyFile& study, const SlurmJobRequest& request,
+                              const std::filesystem::path& folder) {
+  const std::string dir_q = sh(folder.string());
+  SlurmArrayJob job;
+  job.name = study.name;
+  job.what = fmt::format("wifislam study '{}': {} cases in {} shards, one per array task.",
+                         study.name, study.cases.size(), request.tasks);
+  job.tasks = request.tasks;
+  job.cpus_per_task = request.cpus_per_task;
+  job.partition = request.partition;
+  job.time_limit = request.time_limit;
+  job.task_command = fmt::format(
+      "{} study run {} --shard \"${{SLURM_ARRAY_TASK_ID}}/{}\" \\\n  --jobs {} -o "
+      "{}/shards/shard-\"${{SLURM_ARRAY_TASK_ID}}\".sqlite",
+      sh(request.wifislam_binary.string()), sh(request.study_file.string()), request.tasks,
+      request.cpus_per_task, dir_q);
+  const std::filesystem::path merged = column_name(study.name) + ".sqlite";
+  std::string shards;
+  for (int i = 0; i < request.tasks; ++i) {
+    shards += fmt::format(" \\\n  {}/shards/shard-{}.sqlite", dir_q, i);
+  }
+  job.final_what = fmt::format("Unions the {} shard databases of study '{}' into {}.",
+                               request.tasks, study.name, merged.string());
+  job.final_command = fmt::format("{} study merge{} \\\n  --force -o {}/{}",
+                                  sh(request.wifislam_binary.string()), shards, dir_q,
+                                  merged.string());
+  job.array_file = "study.sbatch";
+  job.final_file = "merge.sbatch";
+  job.task_log = "shard-%a.log";
+  job.final_log = "merge.log";
+  job.final_job_suffix = "-merge";
+  SlurmJobFiles files = slurm_array_files(job, folder);
+  files.merged_database = merged;
   return files;
 }
 
 void write_slurm_job(const std::filesystem::path& folder, bool replace,
                      const SlurmJobFiles& files) {
   AtomicDirectory out(folder, replace);
-  write_file_atomic(out.staging_path() / "study.sbatch", files.array_script);
-  write_file_atomic(out.staging_path() / "merge.sbatch", files.merge_script);
+  write_file_atomic(out.staging_path() / files.array_file, files.array_script);
+  write_file_atomic(out.staging_path() / files.final_file, files.merge_script);
   std::filesystem::create_directories(out.staging_path() / "shards");
   std::filesystem::create_directories(out.staging_path() / "logs");
   out.commit();
 }
 
-SubmittedSlurmJob submit_slurm_job(const std::filesystem::path& folder) {
+SubmittedSlurmJob submit_slurm_job(const std::filesystem::path& folder,
+                                   const SlurmJobFiles& files) {
   SubmittedSlurmJob job;
   job.array_id = run_capturing(
-      fmt::format("sbatch --parsable {} 2>&1", sh((folder / "study.sbatch").string())));
-  job.merge_id = run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} {} 2>&1",
-                                           job.array_id, sh((folder / "merge.sbatch").string())));
+      fmt::format("sbatch --parsable {} 2>&1", sh((folder / files.array_file).string())));
+  job.merge_id =
+      run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} {} 2>&1", job.array_id,
+                                sh((folder / files.final_file).string())));
   return job;
 }
 

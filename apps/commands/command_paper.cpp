@@ -16,6 +16,7 @@
 #include "study/paper/paper_folder.hpp"
 #include "study/paper/paper_report.hpp"
 #include "study/paper/paper_runner.hpp"
+#include "study/slurm_job.hpp"
 #include "study/study_runner.hpp"
 
 namespace {
@@ -25,11 +26,51 @@ using namespace wifislam;
 
 struct PaperArgs {
   std::string output, parts = "rgbdslam,rtabmap,orbslam,fabmap",
-                      twins = "c_hall,b_hall,j_hall,a_hall", shard;
-  int seeds = 1, jobs = 0;
+                      twins = "c_hall,b_hall,j_hall,a_hall", shard, partition, time_limit;
+  int seeds = 1, jobs = 0, slurm_tasks = 0, cpus = 2;
   double fps = 3.0;
-  bool force = false, report_only = false, no_report = false, quiet = false;
+  bool force = false, report_only = false, no_report = false, quiet = false, submit = false;
 };
+
+/// `--slurm N`: the folder prepared here, then a job array of N tasks, each `paper --shard i/N
+/// --no-report` with these options, and a final job writing the report once all succeeded.
+void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions& options) {
+  study::paper::prepare_paper_folder(options);
+  const fs::path dir = fs::absolute(options.folder).lexically_normal();
+  const std::string common = fmt::format(
+      "{} paper -o {} --seeds {} --fps {} --parts {} --twins {}",
+      study::shell_quoted(study::own_binary().string()), study::shell_quoted(dir.string()),
+      args.seeds, args.fps, study::shell_quoted(args.parts), study::shell_quoted(args.twins));
+  study::SlurmArrayJob job;
+  job.name = "paper";
+  job.what = fmt::format("wifislam paper: {} seed(s) of {} on {}, in {} tasks (--shard i/N).",
+                         args.seeds, args.parts, args.twins, args.slurm_tasks);
+  job.final_what = "wifislam paper: the report, once every task has succeeded.";
+  job.tasks = args.slurm_tasks;
+  job.cpus_per_task = args.cpus;
+  job.partition = args.partition;
+  job.time_limit = args.time_limit;
+  job.task_command = fmt::format("{} --jobs {} --shard \"${{SLURM_ARRAY_TASK_ID}}/{}\" "
+                                 "--no-report -q",
+                                 common, args.cpus, args.slurm_tasks);
+  job.final_command = common + " --report-only";
+  job.array_file = "paper.sbatch";
+  job.final_file = "report.sbatch";
+  const fs::path folder = dir / "slurm";
+  const study::SlurmJobFiles files = study::slurm_array_files(job, folder);
+  study::write_slurm_job(folder, fs::exists(folder), files);
+  fmt::print("wrote {0}/paper.sbatch ({1} tasks) and {0}/report.sbatch\n", folder.string(),
+             args.slurm_tasks);
+  if (!args.submit) {
+    fmt::print("submit: cd {} && J=$(sbatch --parsable paper.sbatch) && sbatch "
+               "--dependency=afterok:$J report.sbatch\n",
+               folder.string());
+    return;
+  }
+  const study::SubmittedSlurmJob submitted = study::submit_slurm_job(folder, files);
+  fmt::print("submitted array job {} and report job {}; the report: {}/report.md\n",
+             submitted.array_id, submitted.merge_id, dir.string());
+}
 
 std::vector<std::string> split(const std::string& text, const std::string& option) {
   std::vector<std::string> out;
@@ -75,6 +116,17 @@ void run(const PaperArgs& args) {
   }
   if (!args.quiet) {
     options.on_progress = [](const std::string& line) { fmt::print(stderr, "paper: {}\n", line); };
+  }
+  if (args.submit && args.slurm_tasks == 0) {
+    throw ParseError("--submit", "", "submits the jobs --slurm N writes: give --slurm too");
+  }
+  if (args.slurm_tasks > 0) {
+    if (args.report_only || !args.shard.empty()) {
+      throw ParseError("--slurm", std::to_string(args.slurm_tasks),
+                       "writes the tasks' jobs: not with --report-only or --shard");
+    }
+    write_slurm_jobs(args, options);
+    return;
   }
   if (args.report_only) {
     if (!fs::exists(options.folder / study::paper::folder::kIdentity)) {
@@ -127,6 +179,16 @@ WIFISLAM_COMMAND(paper, 66) {
   app->add_option("--shard", args->shard,
                   "i/N: run only every N-th twin-and-seed group from the i-th (a cluster's task)");
   app->add_flag("--report-only", args->report_only, "Write the report from what DIR holds");
+  app->add_option("--slurm", args->slurm_tasks,
+                  "N: write DIR/slurm/paper.sbatch (an N-task job array, task i running\n"
+                  "--shard i/N) and report.sbatch (the report, once every task succeeded)")
+      ->check(CLI::Range(1, 100000));
+  app->add_option("--cpus-per-task", args->cpus, "With --slurm: CPUs per task (its --jobs)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1024));
+  app->add_option("--partition", args->partition, "With --slurm: the Slurm partition");
+  app->add_option("--time", args->time_limit, "With --slurm: time limit per task, e.g. 02:00:00");
+  app->add_flag("--submit", args->submit, "With --slurm: submit both jobs with sbatch");
   app->add_flag("--no-report", args->no_report, "Run, but leave the report to a later call");
   app->add_flag("--force", args->force, "Start over: replace DIR (a folder `paper` made)");
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");

@@ -51,7 +51,7 @@ void slurm_command(const SlurmArgs& args) {
         folder.string());
     return;
   }
-  const study::SubmittedSlurmJob job = study::submit_slurm_job(folder);
+  const study::SubmittedSlurmJob job = study::submit_slurm_job(folder, files);
   fmt::print("submitted array job {} and merge job {}; merged database: {}/{}\n", job.array_id,
              job.merge_id, folder.string(), files.merged_database.string());
 }
