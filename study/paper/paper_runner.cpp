@@ -26,6 +26,7 @@
 #include "study/localisation_methods.hpp"
 #include "study/localisation_report.hpp"
 #include "study/paper/paper_folder.hpp"
+#include "study/radio_resolution.hpp"
 #include "study/recorded_dataset.hpp"
 #include "study/result_store.hpp"
 #include "study/study_runner.hpp"
@@ -178,7 +179,7 @@ class GroupRunner {
     generate.colour_images = false;  // the evaluation reads depth; the runs replay features
     const RecordedDataset dataset(site, work / "dataset", generate, features, options_.jobs);
     times["shared rendering and feature extraction"] += seconds_since(start);
-    write_dataset_facts(*site, dataset.summary(), group);
+    write_dataset_facts(site, dataset.summary(), group);
     progress(fmt::format("{}: generated and recorded {} frames ({:.0f} s); {} cases to run",
                          group, dataset.summary().frames, seconds_since(start), cases));
 
@@ -212,10 +213,15 @@ class GroupRunner {
     write_file_atomic(work / kOutputMarkerFile, "paper scratch folder\n");
   }
 
-  void write_dataset_facts(const sim::Site& site, const sim::GenerateSummary& g,
-                           const std::string& group) {
-    const nlohmann::json facts = {
-        {"twin", site.scene().name},
+  /// What the twin's dataset held, and what its Wi-Fi can tell apart along the route
+  /// (radio_resolution.hpp: the pauses' signatures against their true distances, the SLAM's
+  /// similarity threshold): the measured side of the paper's cluster counts.
+  void write_dataset_facts(const std::shared_ptr<const sim::Site>& site,
+                           const sim::GenerateSummary& g, const std::string& group) {
+    const slam::WifiOptions wifi;
+    const RadioResolution radio = radio_resolution(simulate_pauses(site, wifi), wifi);
+    nlohmann::json facts = {
+        {"twin", site->scene().name},
         {"seed", g.seed},
         {"fps", g.fps},
         {"frames", g.frames},
@@ -224,6 +230,11 @@ class GroupRunner {
         {"wifi_scans", g.wifi_scans},
         {"access_points", g.access_points},
         {"aps_heard_per_pause_mean", g.aps_heard_per_pause_mean},
+        {"wifi_similarity", wifi.similarity},
+        {"near_similar_share", radio.near_similar_share},
+        {"far_similar_share", radio.far_similar_share},
+        {"radio_clusters", radio.clusters},
+        {"resolution_m", radio.resolution_m ? nlohmann::json(*radio.resolution_m) : nullptr},
     };
     write_file_atomic(options_.folder / folder::kDatasets / (group + ".json"),
                       facts.dump(1) + "\n");
