@@ -3,7 +3,6 @@
 // lines and '#' comments are skipped. Used by the dataset reader so that memory does not grow
 // with the length of a dataset.
 
-#include <fstream>
 #include <string>
 
 #include "core/text_lines.hpp"
@@ -22,7 +21,7 @@ class LineCursor {
 
  private:
   std::string path_;
-  std::ifstream in_;
+  InputFile file_;
   int line_number_ = 0;
 };
 

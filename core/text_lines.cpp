@@ -11,13 +11,11 @@
 
 namespace wifislam {
 
-std::ifstream open_text_file(const std::string& path) {
+InputFile open_text_file(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec))
     throw ParseError(path, "", "is a folder; expected a text file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(path + ": cannot open file for reading");
-  return in;
+  return InputFile(path);
 }
 
 bool read_line(std::istream& in, std::string& text, const std::string& path, int number) {
@@ -50,8 +48,19 @@ bool read_line(std::istream& in, std::string& text, const std::string& path, int
   return true;
 }
 
+void for_each_text_line(const std::string& path,
+                        const std::function<void(const TextLine&)>& line) {
+  InputFile file = open_text_file(path);
+  TextLine current;
+  while (read_line(file.stream(), current.text, path, current.number + 1)) {
+    ++current.number;
+    line(current);
+  }
+}
+
 std::vector<TextLine> read_text_lines(const std::string& path) {
-  std::ifstream in = open_text_file(path);
+  InputFile file = open_text_file(path);
+  std::istream& in = file.stream();
   std::vector<TextLine> lines;
   std::string text;
   int number = 0;
@@ -108,8 +117,8 @@ void for_each_csv_row(const std::string& path, std::span<const char* const> colu
   std::string header;
   for (const char* column : columns) header += (header.empty() ? "" : ",") + std::string(column);
   bool header_seen = false;
-  for (const TextLine& line : read_text_lines(path)) {
-    if (line.text.empty() || line.text[0] == '#') continue;
+  for_each_text_line(path, [&](const TextLine& line) {
+    if (line.text.empty() || line.text[0] == '#') return;
     const std::string where = path + ":" + std::to_string(line.number);
     const std::vector<std::string_view> fields = split_fields(line.text, ',');
     if (!header_seen) {
@@ -117,7 +126,7 @@ void for_each_csv_row(const std::string& path, std::span<const char* const> colu
       bool ok = fields.size() == columns.size();
       for (std::size_t i = 0; ok && i < fields.size(); ++i) ok = fields[i] == columns[i];
       if (!ok) throw ParseError(where, "header", "expected the header '" + header + "'");
-      continue;
+      return;
     }
     if (fields.size() != columns.size()) {
       throw ParseError(where, "",
@@ -125,7 +134,7 @@ void for_each_csv_row(const std::string& path, std::span<const char* const> colu
                            " comma-separated fields, found " + std::to_string(fields.size()));
     }
     row(CsvRow{fields, line.number, where});
-  }
+  });
   if (!header_seen) {
     throw ParseError(path + ":1", "header", "empty file: expected the CSV header '" + header + "'");
   }

@@ -2,12 +2,14 @@
 // Reading line-oriented text files (TUM lists, CSV) with positions for error messages.
 
 #include <cstddef>
-#include <fstream>
+#include <istream>
 #include <functional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "core/input_file.hpp"
 
 namespace wifislam {
 
@@ -20,15 +22,22 @@ struct TextLine {
 /// of ours (a binary file, /dev/zero), and reading on would only fill memory.
 inline constexpr std::size_t kMaxTextLineBytes = std::size_t{16} << 20;
 
-/// Opens `path` for line reading: ParseError when it is a folder, IoError when it cannot be
-/// opened. Pipes and devices are allowed (`<(...)` in a shell); read_line caps what they give.
-std::ifstream open_text_file(const std::string& path);
+/// Opens `path` for line reading (core/input_file.hpp: never blocks in open()): ParseError when
+/// it is a folder, IoError when it cannot be opened. Pipes and devices are allowed (`<(...)` in a
+/// shell); read_line caps what they give.
+InputFile open_text_file(const std::string& path);
 
 /// The next line of `in` without its "\n" or "\r\n"; false at the end. Throws ParseError at
 /// `path`:`number` for a line longer than kMaxTextLineBytes, IoError on a read error.
 bool read_line(std::istream& in, std::string& text, const std::string& path, int number);
 
-/// All lines of a file; throws IoError naming the file when it cannot be read.
+/// Every line of a file in turn, read as a stream: memory holds one line whatever the file's
+/// size, and a caller that throws at a bad line stops reading there. Throws as open_text_file and
+/// read_line.
+void for_each_text_line(const std::string& path, const std::function<void(const TextLine&)>& line);
+
+/// All lines of a file; throws IoError naming the file when it cannot be read. For small files
+/// (a survey, a system's list): for_each_text_line streams.
 std::vector<TextLine> read_text_lines(const std::string& path);
 
 /// Splits on runs of spaces/tabs (TUM) or, when `separator` is given, on that character (CSV).

@@ -73,14 +73,15 @@ void require_later_stamp(std::optional<Timestamp>& last, Timestamp time, std::st
 Trajectory read_tum_trajectory(const std::string& path) {
   Trajectory out;
   std::optional<Timestamp> last;
-  for (const TextLine& line : read_text_lines(path)) {
+  // Streamed: a bad line stops the reading there, and blank lines cost nothing.
+  for_each_text_line(path, [&](const TextLine& line) {
     const auto fields = split_fields(line.text);
-    if (fields.empty() || fields[0].front() == '#') continue;
+    if (fields.empty() || fields[0].front() == '#') return;
     const std::string where = path + ":" + std::to_string(line.number);
     StampedPose p = parse_tum_pose_fields(fields, where);
     require_later_stamp(last, p.time, fields[0], where);
     out.push_back(p);
-  }
+  });
   return out;
 }
 

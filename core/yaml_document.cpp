@@ -15,6 +15,7 @@
 
 #include "core/did_you_mean.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 
 namespace wifislam {
 
@@ -87,10 +88,8 @@ YAML::Node load_yaml_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) {
     throw ParseError(path, "", "is a folder; expected a YAML file");
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    throw IoError(fmt::format("{}: cannot open for reading ({})", path, std::strerror(errno)));
-  }
+  InputFile file(path);  // never blocks in open() (a FIFO without a writer reads as empty)
+  std::istream& in = file.stream();
   // Read at most one byte past the cap (a FIFO or /dev/zero has no size to check first).
   std::string text(kMaxYamlDocumentBytes + 1, '\0');
   in.read(text.data(), static_cast<std::streamsize>(text.size()));

@@ -102,6 +102,7 @@ Survey read_long(const std::string& path, double receiver_height_m) {
     survey.samples.push_back(s);
   }
   if (!header_seen) throw ParseError(path, "", "empty survey: no header and no rows");
+  if (survey.samples.empty()) throw ParseError(path, "", "no survey rows after the header");
   return survey;
 }
 
@@ -151,6 +152,7 @@ Survey read_royal_holloway(const std::string& path, double receiver_height_m) {
     }
   }
   if (!header_seen) throw ParseError(path, "", "empty survey: no header and no rows");
+  if (survey.samples.empty()) throw ParseError(path, "", "no survey rows after the header");
   return survey;
 }
 

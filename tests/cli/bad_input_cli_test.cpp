@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -240,6 +241,68 @@ TEST_F(BadInput, ArgumentErrorsExitTwoWithAUsageMessage) {
   }
   EXPECT_EQ(wifislam("generate --help").exit_code, 0);
   EXPECT_EQ(wifislam("--version").exit_code, 0);
+}
+
+// Issue 44: `--sweep min_matches=10 --sweep min_matches=20` ran one setting labelled with both
+// values (the last won), and a key both --set and swept likewise; a swept value long enough to
+// make a run folder's name exceed 255 bytes lost the whole comparison (exit 3).
+TEST_F(BadInput, ASweptKeyIsGivenOnceAndLongSettingsGetShortFolders) {
+  for (const std::string& repeated :
+       {std::string("--sweep min_matches=10 --sweep min_matches=20"),
+        std::string("--set min_matches=10 --sweep min_matches=20,30")}) {
+    const test::CliResult r = wifislam("compare " + scene_.string() + " " + repeated +
+                                       " --max-frames 4 --fps 2 -q -o " +
+                                       (scratch_ / "c").string());
+    EXPECT_EQ(r.exit_code, 2) << repeated << ": " << r.err;
+    EXPECT_NE(r.err.find("min_matches"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(scratch_ / "c"));
+  }
+  // A value of 300 characters (a system file's path, say): one folder, named in under 255 bytes.
+  const std::string long_value = "0.9" + std::string(297, '0');
+  const test::CliResult r = wifislam("compare " + scene_.string() + " --sweep wifi_similarity=" +
+                                     long_value + " --max-frames 4 --fps 2 --no-plots -q -o " +
+                                     (scratch_ / "c").string());
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  for (const auto& seed_dir : fs::directory_iterator(scratch_ / "c" / "runs")) {
+    for (const auto& setting : fs::directory_iterator(seed_dir.path())) {
+      EXPECT_LT(setting.path().filename().string().size(), 255u);
+    }
+  }
+}
+
+// Issue 44: a survey of only a header named no file ("0 position-AP links for 1 unknowns").
+TEST_F(BadInput, ASurveyOfOnlyAHeaderIsNamed) {
+  test::write_file(scratch_ / "survey.csv", "x_m,y_m,ap_id,rss_dbm\n");
+  const test::CliResult r =
+      wifislam("radio calibrate " + (scratch_ / "survey.csv").string() + " --scene " +
+               scene_.string() + " -o " + (scratch_ / "fit.yaml").string());
+  test::expect_located_bad_input(r, (scratch_ / "survey.csv").string(), "no survey rows");
+  EXPECT_FALSE(fs::exists(scratch_ / "fit.yaml"));
+}
+
+// Issue 44: a trajectory was read whole before its lines were checked (a 2 GB file with a bad
+// second line: 55 s and 5.9 GB). Readers stream now: the bad line stops the reading at once,
+// whatever follows it.
+TEST_F(BadInput, ABadLineStopsTheReadingThereWhateverFollows) {
+  const fs::path ds = scratch_ / "ds";
+  ASSERT_EQ(wifislam("generate " + scene_.string() + " --fps 1 --no-images -q -o " + ds.string())
+                .exit_code,
+            0);
+  {
+    std::ofstream out(scratch_ / "big.txt", std::ios::binary);
+    out << "1700000000.0 0 0 0 0 0 0 1\nnot a pose\n";
+    const std::string block(1 << 20, 'x');
+    for (int i = 0; i < 300; ++i) out << block;  // 300 MB after the bad line, in one line
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const test::CliResult r = wifislam("eval " + (scratch_ / "big.txt").string() + " --gt " +
+                                         ds.string() + " -o " + (scratch_ / "e").string(),
+                                     "ulimit -v 2000000;");
+  const double took_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  test::expect_located_bad_input(r, (scratch_ / "big.txt").string() + ":2", "");
+  EXPECT_LT(took_s, 10.0);
+  fs::remove(scratch_ / "big.txt");
 }
 
 }  // namespace
