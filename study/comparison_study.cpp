@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -33,11 +34,18 @@ std::string label_of(const std::vector<std::string>& base, const Setting& settin
   return out.empty() ? "defaults" : out;
 }
 
+/// Longest run-folder name of a setting: well below the file systems' 255 bytes.
+constexpr std::size_t kMaxSettingFolderBytes = 120;
+
 /// Folder-name form of a label ("min_matches=10 inlier_distance=3" -> "min_matches-10_...";
 /// "frontend=external:sys/a.yaml" -> "frontend-external-sys-a.yaml": one folder, no separator).
+/// A long one keeps its start and ends with a hash of the whole label, so it stays unique.
 std::string folder_of(const std::string& label) {
   std::string out;
   for (char c : label) out += c == '=' || c == ':' || c == '/' ? '-' : c == ' ' ? '_' : c;
+  if (out.size() > kMaxSettingFolderBytes) {
+    out = out.substr(0, kMaxSettingFolderBytes - 13) + "-" + sha256_hex(label).substr(0, 12);
+  }
   return out;
 }
 
@@ -546,6 +554,23 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
                                 const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir) {
   check_comparison_input(scenes, options);
+  // One place per option: a key swept twice, or set and swept, would leave one of its values
+  // silently unused.
+  std::set<std::string> swept;
+  for (const SweepAxis& axis : options.sweeps) {
+    if (!swept.insert(axis.key).second) {
+      throw InvalidInputError(fmt::format(
+          "compare: --sweep {0} given twice; give its values once (--sweep {0}=a,b,c)", axis.key));
+    }
+  }
+  for (const std::string& assignment : options.settings) {
+    const std::string key = assignment.substr(0, assignment.find('='));
+    if (swept.count(key)) {
+      throw InvalidInputError(fmt::format(
+          "compare: {0} is both set (--set {1}) and swept (--sweep {0}=...); keep one", key,
+          assignment));
+    }
+  }
   ComparisonResult result;
   result.seeds = options.seeds;
   const std::vector<Setting> settings = expand(options.sweeps);
