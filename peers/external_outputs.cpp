@@ -10,7 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/contained_file.hpp"
 #include "core/error.hpp"
+#include "core/line_cursor.hpp"
 #include "core/run_format.hpp"
 #include "core/text_lines.hpp"
 #include "core/tum_trajectory.hpp"
@@ -24,14 +26,63 @@ namespace {
 /// A closure stamp is its keyframe's when they differ by less than this (TUM's association bound).
 constexpr std::int64_t kStampToleranceNs = 20'000'000;
 
+/// A declared output, checked before anything reads it: a regular file below the system's
+/// folder with no symbolic link on its way (core/contained_file.hpp), so that a link to
+/// /etc/passwd or to the dataset's ground truth is refused, never imported.
 fs::path required_output(const fs::path& system_out, const std::string& name, const char* what) {
   const fs::path p = system_out / name;
-  std::error_code ec;
-  if (!fs::is_regular_file(p, ec)) {
+  const ContainedFile file = inspect_file_below(system_out, name);
+  if (file.state == ContainedFile::State::kMissing) {
     throw ParseError(p.string(), "",
                      fmt::format("the system wrote no {} (outputs: {})", what, name));
   }
+  if (file.state == ContainedFile::State::kRefused) throw ParseError(p.string(), "", file.problem);
   return p;
+}
+
+/// The largest graph.json read (nlohmann's parse takes about ten times a file's size).
+constexpr std::uintmax_t kMaxGraphBytes = std::uintmax_t{256} << 20;
+
+/// graph.json as the run format has it (core/run_format.hpp's graph_key): an object with the
+/// arrays "nodes" and "edges", each edge an object with integer "from" and "to". eval checks the
+/// rest when it scores the run.
+void check_graph(const fs::path& file) {
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(file, ec);
+  if (ec || bytes > kMaxGraphBytes) {
+    throw ParseError(file.string(), "", fmt::format("larger than {} MiB", kMaxGraphBytes >> 20));
+  }
+  std::ifstream in(file, std::ios::binary);
+  const nlohmann::json graph = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!graph.is_object()) throw ParseError(file.string(), "", "expected a JSON object");
+  for (const char* key : {run_folder::graph_key::kNodes, run_folder::graph_key::kEdges}) {
+    if (!graph.contains(key) || !graph[key].is_array()) {
+      throw ParseError(file.string(), key, "expected an array");
+    }
+  }
+  std::size_t i = 0;
+  for (const auto& edge : graph[run_folder::graph_key::kEdges]) {
+    for (const char* key : {run_folder::graph_key::kFrom, run_folder::graph_key::kTo}) {
+      if (!edge.is_object() || !edge.contains(key) || !edge[key].is_number_integer()) {
+        throw ParseError(file.string(), fmt::format("edges[{}].{}", i, key),
+                         "expected a keyframe id");
+      }
+    }
+    ++i;
+  }
+}
+
+/// wifi_clusters.csv as the run format has it: a text file whose header starts with cluster_id.
+void check_wifi_clusters(const fs::path& file) {
+  LineCursor cursor(file.string());  // its first line that is not blank or a comment
+  TextLine line;
+  if (!cursor.next(line)) {
+    throw ParseError(file.string(), "", "no header: expected wifislam's wifi_clusters.csv");
+  }
+  if (line.text.rfind("cluster_id,", 0) != 0) {
+    throw ParseError(cursor.where(line.number), "",
+                     "expected the header of wifislam's wifi_clusters.csv (cluster_id,...)");
+  }
 }
 
 /// The keyframe whose stamp is nearest `t`, within the tolerance.
@@ -50,12 +101,11 @@ std::optional<std::size_t> keyframe_at(const Trajectory& keyframes, Timestamp t)
 /// The system's loop closures in our loop_closures.csv columns (see the header).
 std::string convert_loop_closures(const fs::path& file, const Trajectory& keyframes,
                                   const Trajectory& trajectory) {
-  const std::vector<TextLine> lines = read_text_lines(file.string());
   std::map<std::string, std::size_t> column;
   std::string out = run_folder::csv_header(run_folder::loop_closures_column::kAll);
   bool header = true;
-  for (const TextLine& line : lines) {
-    if (line.text.empty() || line.text.front() == '#') continue;
+  for_each_text_line(file.string(), [&](const TextLine& line) {
+    if (line.text.empty() || line.text.front() == '#') return;
     const std::vector<std::string_view> fields = split_fields(line.text, ',');
     const std::string where = fmt::format("{}:{}", file.string(), line.number);
     if (header) {
@@ -68,7 +118,7 @@ std::string convert_loop_closures(const fs::path& file, const Trajectory& keyfra
         if (!column.count(needed)) throw ParseError(where, needed, "missing column");
       }
       header = false;
-      continue;
+      return;
     }
     if (fields.size() != column.size()) {
       throw ParseError(where, "",
@@ -119,7 +169,7 @@ std::string convert_loop_closures(const fs::path& file, const Trajectory& keyfra
     out += fmt::format("{},{},{},{},{},{},{},{},0,{},{},{},{},{},{},{}\n", index[0], index[1],
                        frame[0], frame[1], from.time.to_tum_string(), to.time.to_tum_string(), role,
                        inliers, t.x(), t.y(), t.z(), q.x(), q.y(), q.z(), q.w());
-  }
+  });
   return out;
 }
 
@@ -151,6 +201,7 @@ std::string timing_json(const fs::path& time_log, double cpu_s, double wall_s) {
 ImportedOutputs import_external_outputs(const ExternalSystem& system, const fs::path& system_out,
                                         const fs::path& run_dir, bool wifi, double cpu_s,
                                         double wall_s) {
+  // Every declared output is read and checked first; nothing is written before all passed.
   ImportedOutputs imported;
   const Trajectory trajectory =
       read_tum_trajectory(required_output(system_out, system.trajectory, "trajectory").string());
@@ -158,9 +209,6 @@ ImportedOutputs import_external_outputs(const ExternalSystem& system, const fs::
     throw ParseError((system_out / system.trajectory).string(), "", "the trajectory is empty");
   }
   imported.frames = static_cast<std::int64_t>(trajectory.size());
-  write_tum_trajectory((run_dir / run_folder::kTrajectory).string(), trajectory,
-                       {"camera-to-map pose of every frame (external system " + system.name + ")",
-                        "timestamp tx ty tz qx qy qz qw"});
   Trajectory keyframes;
   if (!system.keyframes.empty()) {
     keyframes =
@@ -168,30 +216,42 @@ ImportedOutputs import_external_outputs(const ExternalSystem& system, const fs::
   } else if (!system.loop_closures.empty() && system.graph.empty()) {
     keyframes = trajectory;  // every pose a keyframe: the closures' stamps index into it
   }
-  if (!keyframes.empty()) {
-    imported.keyframes = static_cast<std::int64_t>(keyframes.size());
-    write_tum_trajectory(
-        (run_dir / run_folder::kKeyframes).string(), keyframes,
-        {"keyframes of external system " + system.name, "timestamp tx ty tz qx qy qz qw"});
-  }
+  imported.keyframes = static_cast<std::int64_t>(keyframes.size());
+  std::string closures;
   if (!system.loop_closures.empty()) {
-    const std::string csv = convert_loop_closures(
+    closures = convert_loop_closures(
         required_output(system_out, system.loop_closures, "loop closures"), keyframes, trajectory);
-    imported.loop_closures = std::count(csv.begin(), csv.end(), '\n') - 1;
-    write_file_atomic(run_dir / run_folder::kLoopClosures, csv);
+    imported.loop_closures = std::count(closures.begin(), closures.end(), '\n') - 1;
   }
+  fs::path graph, clusters;
   if (!system.graph.empty()) {
-    fs::copy_file(required_output(system_out, system.graph, "graph"), run_dir / run_folder::kGraph);
-    imported.graph = true;
+    graph = required_output(system_out, system.graph, "graph");
+    check_graph(graph);
   }
   if (wifi && !system.wifi_clusters.empty()) {
-    fs::copy_file(required_output(system_out, system.wifi_clusters, "Wi-Fi clusters"),
-                  run_dir / run_folder::kWifiClusters);
+    clusters = required_output(system_out, system.wifi_clusters, "Wi-Fi clusters");
+    check_wifi_clusters(clusters);
   }
   const fs::path time_log = system.time_log.empty()
                                 ? fs::path()
                                 : required_output(system_out, system.time_log, "time log");
-  write_file_atomic(run_dir / run_folder::kTiming, timing_json(time_log, cpu_s, wall_s));
+  const std::string timing = timing_json(time_log, cpu_s, wall_s);
+
+  write_tum_trajectory((run_dir / run_folder::kTrajectory).string(), trajectory,
+                       {"camera-to-map pose of every frame (external system " + system.name + ")",
+                        "timestamp tx ty tz qx qy qz qw"});
+  if (!keyframes.empty()) {
+    write_tum_trajectory(
+        (run_dir / run_folder::kKeyframes).string(), keyframes,
+        {"keyframes of external system " + system.name, "timestamp tx ty tz qx qy qz qw"});
+  }
+  if (!system.loop_closures.empty()) write_file_atomic(run_dir / run_folder::kLoopClosures, closures);
+  if (!graph.empty()) {
+    fs::copy_file(graph, run_dir / run_folder::kGraph);
+    imported.graph = true;
+  }
+  if (!clusters.empty()) fs::copy_file(clusters, run_dir / run_folder::kWifiClusters);
+  write_file_atomic(run_dir / run_folder::kTiming, timing);
   return imported;
 }
 

@@ -15,6 +15,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// The system's folder in the run folder ({out} while it ran).
+constexpr const char* kSystemFolder = "system";
+
 /// The running wifislam binary, for {wifislam}.
 fs::path this_binary() {
   std::error_code ec;
@@ -65,15 +68,40 @@ ExternalRunRequest external_run_request(const std::string& frontend, bool wifi,
   return request;
 }
 
+namespace {
+
+/// `text` with every mention of where the run was written (the staging folder, the system's
+/// working folder in it) replaced by where it ends up, so that messages and run.json name paths
+/// that exist once the run folder is in place.
+std::string final_paths(std::string text, const fs::path& system_out, const fs::path& staging,
+                        const fs::path& final_dir) {
+  const auto replace_all = [&text](const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos;
+         at = text.find(from, at + to.size())) {
+      text.replace(at, from.size(), to);
+    }
+  };
+  replace_all(system_out.string(), (final_dir / kSystemFolder).string());
+  replace_all(staging.string(), final_dir.string());
+  return text;
+}
+
+}  // namespace
+
 ExternalRunResult run_external_system(const ExternalRunRequest& request) {
   if (!fs::is_directory(request.dataset)) {
     throw IoError(request.dataset.string() + ": dataset folder not found");
   }
   AtomicDirectory folder(request.run_dir, request.overwrite);
   const fs::path staging = fs::absolute(folder.staging_path());
+  const fs::path final_dir = fs::absolute(request.run_dir).lexically_normal();
   ExternalRunValues values;
   values.dataset = fs::absolute(request.dataset).lexically_normal();
-  values.out = staging / "system";
+  // The system works two levels below the run folder, in a scratch folder of its own: what it
+  // does around {out} ($2/../trajectory.txt, mkdir $2/../run.json, rm -rf "$(dirname "$2")")
+  // reaches that scratch folder, never a file wifislam writes. Its folder becomes system/ after.
+  const fs::path scratch = staging / ".system";
+  values.out = scratch / "out";
   values.seed = request.seed;
   values.wifi = request.wifi;
   values.wifislam_binary = this_binary();
@@ -94,26 +122,48 @@ ExternalRunResult run_external_system(const ExternalRunRequest& request) {
   process.stdout_file = staging / "stdout.log";
   process.stderr_file = staging / "stderr.log";
   process.timeout_s = request.system.timeout_s;
+  // Everything the system started has ended when this returns (process_runner.hpp).
   result.process = run_process(process);
   result.status = result.process.describe(request.system.timeout_s);
   ImportedOutputs imported;
-  if (result.process.succeeded()) {
-    try {
-      imported = import_external_outputs(request.system, values.out, staging, request.wifi,
+  const fs::path system_dir = staging / kSystemFolder;
+  try {
+    // Its folder, as it left it (links kept as links, never followed), becomes system/; a folder
+    // it removed or replaced by something else is the run's failure, not ours.
+    std::error_code ec;
+    if (fs::is_directory(fs::symlink_status(values.out, ec))) {
+      fs::rename(values.out, system_dir);
+    } else {
+      fs::create_directories(system_dir);
+      if (result.process.succeeded()) {
+        throw ParseError(values.out.string(), "", "the system removed or replaced its folder");
+      }
+    }
+    fs::remove_all(scratch, ec);
+    if (result.process.succeeded()) {
+      imported = import_external_outputs(request.system, system_dir, staging, request.wifi,
                                          result.process.cpu_s, result.process.wall_s);
       result.ok = true;
       result.status = "ok";
-    } catch (const Error& e) {
-      result.status = std::string("unusable output: ") + e.what();
-      for (const char* f :
-           {run_folder::kTrajectory, run_folder::kKeyframes, run_folder::kLoopClosures,
-            run_folder::kGraph, run_folder::kTiming, run_folder::kWifiClusters}) {
-        fs::remove(staging / f);  // nothing half-imported looks like a finished run
-      }
+    }
+  } catch (const std::exception& e) {  // Error, or a filesystem_error in what it left
+    result.ok = false;
+    result.status = std::string("unusable output: ") + e.what();
+    imported = {};
+    std::error_code ec;
+    for (const char* f :
+         {run_folder::kTrajectory, run_folder::kKeyframes, run_folder::kLoopClosures,
+          run_folder::kGraph, run_folder::kTiming, run_folder::kWifiClusters}) {
+      fs::remove_all(staging / f, ec);  // nothing half-imported looks like a finished run
     }
   }
+  result.status = final_paths(result.status, values.out, staging, final_dir);
+  std::vector<std::string> shown_argv;
+  for (const std::string& a : argv) shown_argv.push_back(final_paths(a, values.out, staging, final_dir));
+  std::error_code ec;
+  fs::remove_all(staging / run_folder::kRun, ec);  // ours to write, whatever the system left there
   write_file_atomic(staging / run_folder::kRun,
-                    run_json(request, argv, result, imported, staging).dump(1) + "\n");
+                    run_json(request, shown_argv, result, imported, staging).dump(1) + "\n");
   folder.commit();
   return result;
 }

@@ -86,11 +86,13 @@ void check_placeholders(const ExternalSystem& system, const YamlReader& r, const
   }
 }
 
-/// An output path: relative, inside {out} (no "..", not absolute).
+/// An output path: a file inside {out} (relative, no "..", not absolute, not {out} itself).
 std::string output_path(const YamlReader& r, const YAML::Node& node, const std::string& key) {
   const std::string text = r.scalar(node, key);
   const fs::path p(text);
-  if (text.empty() || p.is_absolute() ||
+  const fs::path normal = p.lexically_normal();
+  if (text.empty() || p.is_absolute() || !p.has_filename() || normal == "." ||
+      normal.filename() == "." ||
       std::any_of(p.begin(), p.end(), [](const fs::path& part) { return part == ".."; })) {
     r.fail(node, key,
            "expected a file name inside {out} (relative, without ..), got '" + text + "'");
