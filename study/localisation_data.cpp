@@ -73,21 +73,25 @@ std::vector<PositionedScan> moving_scans(const sim::Scene& resolved, double inte
   return out;
 }
 
-/// Nearest ground-truth position of a stamp (groundtruth.txt in time order).
+/// The ground-truth position at a stamp (groundtruth.txt in time order): interpolated linearly
+/// between the poses around it, as eval associates a slow dataset's poses (a 1 fps dataset has a
+/// pose a second, and its scans fall between them). A stamp outside the file's span is an error.
 Eigen::Vector2d position_at(const Trajectory& truth, Timestamp t, const fs::path& file) {
   const auto after = std::lower_bound(truth.begin(), truth.end(), t,
                                       [](const StampedPose& p, Timestamp x) { return p.time < x; });
-  const StampedPose* best = nullptr;
-  if (after != truth.end()) best = &*after;
-  if (after != truth.begin() &&
-      (!best || t.ns - std::prev(after)->time.ns < best->time.ns - t.ns)) {
-    best = &*std::prev(after);
+  if (after != truth.end() && after->time.ns == t.ns) return after->translation_m.head<2>();
+  if (after == truth.end() || after == truth.begin()) {
+    throw InvalidInputError(fmt::format(
+        "{}: {} lies outside its poses ({} to {}); the stamps of images and scans must fall "
+        "within the ground truth",
+        file.string(), t.to_tum_string(),
+        truth.empty() ? std::string("none") : truth.front().time.to_tum_string(),
+        truth.empty() ? std::string("none") : truth.back().time.to_tum_string()));
   }
-  if (!best || std::llabs(best->time.ns - t.ns) > 100'000'000) {
-    throw InvalidInputError(
-        fmt::format("{}: no pose within 0.1 s of {}", file.string(), t.to_tum_string()));
-  }
-  return best->translation_m.head<2>();
+  const StampedPose& before = *std::prev(after);
+  const double share = static_cast<double>(t.ns - before.time.ns) /
+                       static_cast<double>(after->time.ns - before.time.ns);
+  return (before.translation_m + share * (after->translation_m - before.translation_m)).head<2>();
 }
 
 }  // namespace
@@ -134,7 +138,9 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
     throw InvalidInputError(truth_file.string() + ": missing (localisation is scored against it)");
   }
   const Trajectory truth = read_tum_trajectory(truth_file.string());
-  sim::SensorInput input = sim::open_sensor_input(dataset, {});
+  sim::SensorInputOptions input_options;
+  input_options.verify_checksums = options.verify_checksums;
+  sim::SensorInput input = sim::open_sensor_input(dataset, input_options);
   LocalisationData data;
   data.description = fmt::format(
       "dataset {}, an image every {:g} s, its wifi.csv for both "

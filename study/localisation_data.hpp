@@ -52,6 +52,7 @@ struct LocalisationDataOptions {
   double moving_scan_interval_s = 10.0;  // and a Wi-Fi scan every 10 s while moving
   int max_keypoints = 1000;
   std::optional<std::uint64_t> seed;  // scenes only: replaces the scene's seed
+  bool verify_checksums = true;       // datasets: check manifest.json's SHA-256 sums
   slam::WifiOptions wifi;             // pause recognition
 };
 

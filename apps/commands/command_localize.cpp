@@ -31,11 +31,15 @@ struct LocalizeArgs {
   double image_interval_s = 2.0, moving_scan_interval_s = 10.0, map_share = 0.4;
   std::optional<std::uint64_t> seed;
   std::uint64_t fabmap_seed = 1;
-  bool naive_bayes = false, force = false, quiet = false;
+  bool naive_bayes = false, force = false, quiet = false, no_verify = false;
 };
 
 std::vector<study::LocalisationMethod> parse_methods(const std::string& text) {
   std::vector<study::LocalisationMethod> out;
+  if (text.empty() || text.front() == ',' || text.back() == ',' ||
+      text.find(",,") != std::string::npos) {
+    throw ParseError("--method", text, "empty name in the list");
+  }
   std::stringstream in(text);
   for (std::string name; std::getline(in, name, ',');) {
     const auto m = study::parse_localisation_method(name);
@@ -82,9 +86,13 @@ slam::place::FabMapTraining load_training(const LocalizeArgs& args) {
 }
 
 /// The scene, with --route's node sequence (e.g. two laps, so the queries revisit the map).
-sim::Scene scene_with_route(const LocalizeArgs& args) {
+sim::Scene scene_with_route(const LocalizeArgs& args, bool route_given) {
   sim::Scene scene = sim::load_scene_file(args.input);
-  if (args.route.empty()) return scene;
+  if (!route_given) return scene;
+  if (args.route.empty() || args.route.front() == ',' || args.route.back() == ',' ||
+      args.route.find(",,") != std::string::npos) {
+    throw ParseError("--route", args.route, "expected node ids, comma-separated (e.g. A,B,C,A)");
+  }
   scene.route.nodes.clear();
   std::stringstream in(args.route);
   for (std::string node; std::getline(in, node, ',');) scene.route.nodes.push_back(node);
@@ -96,8 +104,8 @@ sim::Scene scene_with_route(const LocalizeArgs& args) {
   return scene;
 }
 
-void run(const LocalizeArgs& args) {
-  if (!args.route.empty() && fs::is_directory(args.input)) {
+void run(const LocalizeArgs& args, bool route_given) {
+  if (route_given && fs::is_directory(args.input)) {
     throw ParseError("--route", args.route,
                      "a dataset's route is fixed; --route applies to scenes");
   }
@@ -109,12 +117,13 @@ void run(const LocalizeArgs& args) {
   data_options.image_interval_s = args.image_interval_s;
   data_options.moving_scan_interval_s = args.moving_scan_interval_s;
   data_options.seed = args.seed;
+  data_options.verify_checksums = !args.no_verify;
   data_options.wifi = options.wifi;
   const auto start = std::chrono::steady_clock::now();
   const study::LocalisationData data =
       fs::is_directory(args.input)
           ? study::localisation_data_from_dataset(args.input, data_options)
-          : study::localisation_data_from_scene(scene_with_route(args), data_options);
+          : study::localisation_data_from_scene(scene_with_route(args, route_given), data_options);
   if (!args.quiet) {
     fmt::print(stderr, "localize: {}: {} images, {} pause scans, {} moving scans ({:.0f} s)\n",
                data.description, data.images.size(), data.pause_scans.size(),
@@ -167,6 +176,7 @@ WIFISLAM_COMMAND(localize, 67) {
       "Scenes: the route's nodes, comma-separated, replacing the scene's (e.g. two laps\n"
       "A,B,C,D,A,B,C,D,A so that the queries revisit the map)");
   app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
+  app->add_flag("--no-verify", args->no_verify, "Datasets: do not check their SHA-256 sums");
   app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)");
   app->add_option("--training", args->training,
                   "FAB-MAP training file for --vocabulary (wifislam vocab fabmap)");
@@ -177,5 +187,5 @@ WIFISLAM_COMMAND(localize, 67) {
       ->check(cli::kSeedValidator);
   app->add_flag("--force", args->force, "Replace an existing output folder");
   app->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-  app->callback([args] { run(*args); });
+  app->callback([args, app] { run(*args, app->count("--route") > 0); });
 }

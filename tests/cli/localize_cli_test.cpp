@@ -73,5 +73,31 @@ TEST(LocalizeCli, ADatasetWithoutWifiIsRefusedForTheWifiMethods) {
   fs::remove_all(scratch);
 }
 
+// Issue 44: localize refused the tool's own 1 fps dataset ("no pose within 0.1 s": its scans fall
+// between the poses, which it now interpolates, as eval does); its message suggested --no-verify,
+// which it did not take; an empty --route and a trailing comma in --method were accepted.
+TEST(LocalizeCli, AOneFpsDatasetLocalisesAndEmptyListsAreRefused) {
+  const fs::path scratch = test::scratch_folder();
+  const fs::path scene = test::tiny_loop_with(scratch, "duration_s: 1.0", "duration_s: 4.0",
+                                              "tiny.yaml");
+  const std::string generate = std::string(WIFISLAM_BINARY) + " generate " + scene.string() +
+                               " --fps 1 -q -o " + (scratch / "dataset").string();
+  ASSERT_EQ(std::system(generate.c_str()), 0);
+  const std::string input = (scratch / "dataset").string();
+  test::CliResult r = test::run_wifislam(
+      "localize " + input + " --no-verify -q -o " + (scratch / "out").string(), scratch);
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(scratch / "out" / "summary.json"));
+  for (const std::string& bad :
+       {std::string("--method fabmap,"), std::string("--method ,fabmap"),
+        std::string("--route \"\""), std::string("--route A,,B")}) {
+    r = test::run_wifislam(
+        "localize " + scene.string() + " " + bad + " -o " + (scratch / "bad").string(), scratch);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
+    EXPECT_FALSE(fs::exists(scratch / "bad")) << bad;
+  }
+  fs::remove_all(scratch);
+}
+
 }  // namespace
 }  // namespace wifislam
