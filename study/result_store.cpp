@@ -1,10 +1,14 @@
 #include "study/result_store.hpp"
 
+#include <fcntl.h>
 #include <sqlite3.h>
+#include <sys/file.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <charconv>
 #include <cstdlib>
+#include <cstring>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -180,6 +184,26 @@ std::vector<std::string> result_columns(sqlite3* db, const std::string& schema,
   return columns;
 }
 
+/// SQLite's own check of every page of a database: a damaged shard is named before a merge
+/// reads it (its error would otherwise say "database disk image is malformed" and no file).
+void check_integrity(const fs::path& path) {
+  sqlite3* db = nullptr;
+  try {
+    db = open_database(path, SQLITE_OPEN_READONLY);
+    Statement q(db, "PRAGMA integrity_check");
+    const std::string verdict = q.step() ? q.text(0) : "no answer";
+    sqlite3_close(db);
+    db = nullptr;
+    if (verdict != "ok") {
+      throw InvalidInputError(fmt::format("{}: a damaged database ({})", path.string(), verdict));
+    }
+  } catch (const IoError& e) {
+    if (db) sqlite3_close(db);
+    throw InvalidInputError(fmt::format("{}: not a readable study database ({})", path.string(),
+                                        e.what()));
+  }
+}
+
 }  // namespace
 
 StudyIdentity identity_of(const StudyFile& study) {
@@ -196,7 +220,27 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
                          const std::vector<std::string>& metric_columns,
                          const std::vector<std::string>& timing_columns)
     : study_(study), metric_columns_(metric_columns), timing_columns_(timing_columns) {
-  db_ = open_database(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  // A lock of our own beside the database (flock on the database file itself would be unsafe:
+  // closing any descriptor of it drops SQLite's own fcntl locks).
+  const fs::path lock = path.string() + ".lock";
+  lock_fd_ = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
+  if (lock_fd_ < 0) {
+    throw IoError(fmt::format("{}: cannot create the lock ({})", lock.string(),
+                              std::strerror(errno)));
+  }
+  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
+    ::close(lock_fd_);
+    throw InvalidInputError(fmt::format(
+        "{}: another run is writing this database now (it holds {}); wait for it to finish, or "
+        "give each run a database of its own (--shard i/N and study merge)",
+        path.string(), lock.string()));
+  }
+  try {
+    db_ = open_database(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
+  } catch (...) {
+    ::close(lock_fd_);
+    throw;
+  }
   try {
     // A rollback journal (the default) and full syncs: a transaction is all there or absent
     // after a crash, on every file system (WAL needs shared memory, which NFS may not give).
@@ -255,11 +299,15 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
     exec("COMMIT");
   } catch (...) {
     sqlite3_close(db_);
+    ::close(lock_fd_);
     throw;
   }
 }
 
-ResultStore::~ResultStore() { sqlite3_close(db_); }
+ResultStore::~ResultStore() {
+  sqlite3_close(db_);
+  ::close(lock_fd_);
+}
 
 void ResultStore::exec(const std::string& sql) const { exec_on(db_, sql); }
 
@@ -345,6 +393,9 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
   }
   std::optional<StudyIdentity> first;
   for (const fs::path& in : inputs) {
+    std::error_code ec;
+    if (!fs::exists(in, ec)) throw IoError(in.string() + ": no such shard database");
+    check_integrity(in);
     const auto id = ResultStore::read_identity(in);
     if (!id) throw InvalidInputError(in.string() + ": not a study database");
     if (!first) {

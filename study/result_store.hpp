@@ -56,7 +56,9 @@ StudyIdentity identity_of(const StudyFile& study);
 class ResultStore {
  public:
   /// Opens `path`, creating the tables when the file is new. An existing database must be one of
-  /// this study (same identity): InvalidInputError naming what differs otherwise.
+  /// this study (same identity): InvalidInputError naming what differs otherwise. One store at a
+  /// time writes a database: it holds a lock on `path`.lock (kept beside it) while it is open,
+  /// and a second is refused (InvalidInputError) instead of repeating the first one's cases.
   ResultStore(const std::filesystem::path& path, const StudyFile& study,
               const std::vector<std::string>& metric_columns,
               const std::vector<std::string>& timing_columns);
@@ -75,6 +77,7 @@ class ResultStore {
  private:
   void exec(const std::string& sql) const;
   sqlite3* db_ = nullptr;
+  int lock_fd_ = -1;
   StudyFile study_;
   std::vector<std::string> metric_columns_, timing_columns_;
 };

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/option_table.hpp"
 #include "core/yaml_document.hpp"
+#include "peers/external_system.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/slam_options.hpp"
@@ -152,7 +153,18 @@ void read_scene_set(const Reader& r, const YAML::Node& set, StudyFile& study) {
   }
 }
 
-StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Node& values) {
+/// "external:X" with X a relative system file path made relative to `dir`; anything else as is.
+std::string front_end_from(const fs::path& dir, const std::string& frontend) {
+  if (!peers::is_external_frontend(frontend)) return frontend;
+  const std::string x = frontend.substr(std::string(peers::kExternalPrefix).size());
+  const fs::path file(x);
+  const bool is_path = x.find('/') != std::string::npos || file.extension() == ".yaml";
+  if (!is_path || file.is_absolute()) return frontend;
+  return std::string(peers::kExternalPrefix) + (dir / file).lexically_normal().string();
+}
+
+StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Node& values,
+                    const fs::path& study_dir) {
   StudyAxis axis;
   axis.key = key_node.Scalar();
   axis.where = r.where(key_node);
@@ -171,7 +183,8 @@ StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Nod
   }
   if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
     for (const std::string& v : axis.values) {
-      const std::string frontend = axis.kind == AxisKind::kSystem ? system_front_end(v) : v;
+      const std::string frontend = front_end_from(
+          study_dir, axis.kind == AxisKind::kSystem ? system_front_end(v) : v);
       if (const std::optional<std::string> problem = front_end_problem(frontend)) {
         r.fail(values, key_path, *problem);
       }
@@ -186,7 +199,22 @@ void read_axes(const Reader& r, const YAML::Node& axes, StudyFile& study) {
   if (!axes.IsMap() || axes.size() == 0) {
     r.fail(axes, "axes", "expected a mapping of axis keys to lists of values");
   }
-  for (const auto& kv : axes) study.axes.push_back(read_axis(r, kv.first, kv.second));
+  for (const auto& kv : axes) {
+    study.axes.push_back(read_axis(r, kv.first, kv.second, study.path.parent_path()));
+  }
+  // One way to choose the front end, and only where one runs.
+  const auto has = [&](AxisKind kind) {
+    return std::any_of(study.axes.begin(), study.axes.end(),
+                       [kind](const StudyAxis& a) { return a.kind == kind; });
+  };
+  if (has(AxisKind::kFrontend) && has(AxisKind::kSystem)) {
+    r.fail(axes, "axes", "give the front end by 'frontend' or by 'system', not both");
+  }
+  if (study.level == StudyLevel::kRadio && (has(AxisKind::kFrontend) || has(AxisKind::kSystem))) {
+    r.fail(axes, "axes",
+           "level radio runs no front end: a 'frontend' or 'system' axis would only repeat "
+           "identical cases (use level: slam)");
+  }
   // Distinct column names: "a.b" and "a_b" would share one.
   std::set<std::string> columns;
   for (const StudyAxis& a : study.axes) {
@@ -327,6 +355,11 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
   make_cases(r, root["cases"], study);
   if (const YAML::Node s = root["slam"]) read_slam(r, s, study);
   return study;
+}
+
+std::string axis_front_end(const StudyFile& study, AxisKind kind, const std::string& value) {
+  return front_end_from(study.path.parent_path(),
+                        kind == AxisKind::kSystem ? system_front_end(value) : value);
 }
 
 std::vector<StudyCase> shard_cases(const StudyFile& study, int index, int count) {

@@ -84,6 +84,11 @@ struct StudyFile {
 StudyFile load_study_file(const std::filesystem::path& path);
 StudyFile load_study_yaml(const std::string& text, const std::filesystem::path& path);
 
+/// The front end a `frontend` or `system` axis value names, a system file given as a relative
+/// path taken from the study file's folder (as `scene:` is): "system: [../sys/x.yaml]" means the
+/// same file from any current directory. The value stays as written in ids and columns.
+std::string axis_front_end(const StudyFile& study, AxisKind kind, const std::string& value);
+
 /// Column-safe name of an axis key ("access_points.count" -> "access_points_count").
 std::string column_name(const std::string& axis_key);
 

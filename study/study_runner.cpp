@@ -84,8 +84,9 @@ slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c) 
     for (std::size_t a = 0; a < study.axes.size(); ++a) {
       const StudyAxis& axis = study.axes[a];
       if (axis.kind == AxisKind::kSlamOption) slam::set_option(o, axis.key.substr(5), c.values[a]);
-      if (axis.kind == AxisKind::kFrontend) o.frontend = c.values[a];
-      if (axis.kind == AxisKind::kSystem) o.frontend = system_front_end(c.values[a]);
+      if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
+        o.frontend = axis_front_end(study, axis.kind, c.values[a]);
+      }
     }
     slam::validate(o);
   } catch (const Error& e) {

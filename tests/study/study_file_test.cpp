@@ -2,6 +2,10 @@
 // the product of the axes (or a listed subset) with stable ids, and shards that partition them.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <set>
 
 #include "core/error.hpp"
@@ -149,6 +153,49 @@ TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
   e = parse_error("version: 1\nname: t\nscene: " + kScene +
                   "\nset:\n  access_points.line_to_m: {x: 1}\naxes:\n" + axes);
   EXPECT_EQ(e.key_path(), "set.access_points.line_to_m");
+}
+
+}  // namespace
+}  // namespace wifislam::study
+
+namespace wifislam::study {
+namespace {
+
+// Issue 44: contradicting front-end axes, and a front-end axis where no front end runs, were
+// accepted (the second only repeated identical cases).
+TEST(StudyFile, FrontEndAxesAreOneKindAndOnlyWhereAFrontEndRuns) {
+  const std::string slam_study = "version: 1\nname: t\nscene: " + kScene + "\nlevel: slam\naxes:\n";
+  const ParseError both = parse_error(slam_study + "  frontend: [rgbdslam]\n  system: [rtabmap]\n");
+  EXPECT_NE(std::string(both.what()).find("not both"), std::string::npos) << both.what();
+  const ParseError radio = parse_error(study_yaml("  frontend: [rgbdslam, orbslam]\n"));
+  EXPECT_NE(std::string(radio.what()).find("level radio runs no front end"), std::string::npos)
+      << radio.what();
+}
+
+// Issue 44: `system: [../sys/x.yaml]` was read from the current folder while `scene:` is read
+// from the study file's: a system file's relative path is the study file's now.
+TEST(StudyFile, ASystemFilesRelativePathIsTheStudyFiles) {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("wifislam_study_sys_" + std::to_string(::getpid()));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "studies");
+  std::filesystem::create_directories(dir / "sys");
+  {
+    std::ofstream(dir / "sys" / "x.yaml") << "version: 1\nname: x\ncommand: [/bin/true]\n"
+                                             "outputs: {trajectory: t.txt}\n";
+    std::ofstream(dir / "studies" / "s.yaml")
+        << "version: 1\nname: s\nscene: " << kScene << "\nlevel: slam\naxes:\n  system: "
+        << "[../sys/x.yaml, rgbdslam]\n";
+  }
+  // Loaded from a current folder where ../sys/x.yaml is not that file.
+  const StudyFile s = load_study_file(dir / "studies" / "s.yaml");
+  EXPECT_EQ(s.cases[0].values[0], "../sys/x.yaml");  // ids and columns keep the text
+  EXPECT_EQ(axis_front_end(s, AxisKind::kSystem, "../sys/x.yaml"),
+            "external:" + (dir / "sys" / "x.yaml").string());
+  EXPECT_EQ(case_slam_options(s, s.cases[0]).frontend,
+            "external:" + (dir / "sys" / "x.yaml").string());
+  EXPECT_EQ(case_slam_options(s, s.cases[1]).frontend, "rgbdslam");
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

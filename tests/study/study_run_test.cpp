@@ -202,6 +202,54 @@ TEST(StudyRun, TheSameShardTwiceIsRefused) {
 // Co-linear access points (all on the south corridor's centre line) against scattered ones, on
 // one scene and three seeds: far places (> 12 m) look alike to the Wi-Fi far more often when the
 // APs lie on one line, and the route splits into fewer clusters.
+// Issue 44: two `study run` on one database at once repeated each other's work and the second
+// failed on a UNIQUE constraint; a damaged shard's merge said "database disk image is malformed"
+// and named no file; a missing shard gave exit 2, not the I/O error's 3.
+TEST(StudyRun, OneWriterADatabaseAndMergeNamesWhatIsWrongWithAShard) {
+  const fs::path dir = test::scratch_folder();
+  const fs::path file = write_study(dir, "locked", "  access_points.count: [10, 20]\n");
+  const StudyFile study = load_study_file(file);
+  {
+    // A store open (a run in progress) holds the database: a second writer is refused at once.
+    ResultStore first(dir / "db.sqlite", study, metric_columns(study),
+                      timing_columns(study.level));
+    StudyRunOptions o;
+    o.database = dir / "db.sqlite";
+    try {
+      run_study(study, o);
+      ADD_FAILURE() << "a second writer was let in";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("another run is writing this database"),
+                std::string::npos)
+          << e.what();
+    }
+    const auto r = test::run_wifislam(
+        "study run " + file.string() + " -o " + (dir / "db.sqlite").string(), dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+  }
+  StudyRunOptions o;
+  o.database = dir / "db.sqlite";
+  EXPECT_EQ(run_study(study, o).ran, 2u);  // free again once the first store is gone
+
+  // A damaged shard: named. A missing one: an I/O error.
+  test::write_file(dir / "damaged.sqlite",
+                   test::read_file(dir / "db.sqlite").substr(0, 4096) + std::string(8192, 'x'));
+  auto r = test::run_wifislam("study merge " + (dir / "db.sqlite").string() + " " +
+                                  (dir / "damaged.sqlite").string() + " -o " +
+                                  (dir / "m.sqlite").string(),
+                              dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("damaged.sqlite"), std::string::npos) << r.err;
+  r = test::run_wifislam("study merge " + (dir / "db.sqlite").string() + " " +
+                             (dir / "missing.sqlite").string() + " -o " +
+                             (dir / "m.sqlite").string(),
+                         dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("missing.sqlite"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "m.sqlite"));
+  fs::remove_all(dir);
+}
+
 TEST(StudyRun, ScatteredAccessPointsTellPlacesApartBetterThanCoLinearOnes) {
   const fs::path dir = test::scratch_folder();
   const fs::path file = write_study(dir, "colinear",
