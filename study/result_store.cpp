@@ -490,7 +490,10 @@ int ResultTable::column(const std::string& name) const {
   return -1;
 }
 
-ResultTable read_results(const fs::path& path) {
+namespace {
+
+/// The results table, with each row's timing columns after it when `with_timing`.
+ResultTable read_table(const fs::path& path, bool with_timing) {
   const auto identity = ResultStore::read_identity(path);
   if (!identity) throw InvalidInputError(path.string() + ": not a study database");
   ResultTable table;
@@ -498,7 +501,19 @@ ResultTable read_results(const fs::path& path) {
   sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);
   try {
     table.columns = result_columns(db, "main", "results");
-    Statement q(db, "SELECT * FROM results ORDER BY case_index, variant");
+    std::string select = "SELECT r.*";
+    if (with_timing) {
+      for (const std::string& t : result_columns(db, "main", "timing")) {
+        if (t == "case_id" || t == "variant") continue;
+        table.columns.push_back(t);
+        select += ", t." + quote_identifier(t);
+      }
+    }
+    Statement q(db, select +
+                        (with_timing ? " FROM results r LEFT JOIN timing t ON r.case_id = "
+                                       "t.case_id AND r.variant = t.variant"
+                                     : " FROM results r") +
+                        " ORDER BY r.case_index, r.variant");
     while (q.step()) table.rows.push_back(q.values(table.columns.size()));
   } catch (...) {
     sqlite3_close(db);
@@ -508,31 +523,11 @@ ResultTable read_results(const fs::path& path) {
   return table;
 }
 
-ResultTable read_results_and_timing(const fs::path& path) {
-  const auto identity = ResultStore::read_identity(path);
-  if (!identity) throw InvalidInputError(path.string() + ": not a study database");
-  ResultTable table;
-  table.identity = *identity;
-  sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);
-  try {
-    table.columns = result_columns(db, "main", "results");
-    std::string select = "SELECT r.*";
-    for (const std::string& t : result_columns(db, "main", "timing")) {
-      if (t == "case_id" || t == "variant") continue;
-      table.columns.push_back(t);
-      select += ", t." + quote_identifier(t);
-    }
-    Statement q(db, select +
-                        " FROM results r LEFT JOIN timing t ON r.case_id = t.case_id AND "
-                        "r.variant = t.variant ORDER BY r.case_index, r.variant");
-    while (q.step()) table.rows.push_back(q.values(table.columns.size()));
-  } catch (...) {
-    sqlite3_close(db);
-    throw;
-  }
-  sqlite3_close(db);
-  return table;
-}
+}  // namespace
+
+ResultTable read_results(const fs::path& path) { return read_table(path, false); }
+
+ResultTable read_results_and_timing(const fs::path& path) { return read_table(path, true); }
 
 std::vector<std::vector<std::string>> dump_results(const fs::path& path) {
   sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);

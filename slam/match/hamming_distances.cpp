@@ -19,8 +19,13 @@ inline void keep_nearest_two(NearestTwo& r, int d, std::size_t w) {
   }
 }
 
-NearestTwo nearest_two_portable(const std::uint64_t* query, const std::uint64_t* const lanes[4],
-                                std::size_t begin, std::size_t count, NearestTwo r) {
+/// One descriptor at a time from `begin`, continuing `r`. GCC builds it twice (with the popcnt
+/// instruction and without) and picks one when the program starts.
+#if defined(__x86_64__) && defined(__GNUC__)
+__attribute__((target_clones("popcnt", "default")))
+#endif
+NearestTwo nearest_two_scalar(const std::uint64_t* query, const std::uint64_t* const lanes[4],
+                              std::size_t begin, std::size_t count, NearestTwo r) {
   for (std::size_t w = begin; w < count; ++w) {
     keep_nearest_two(r,
                      std::popcount(query[0] ^ lanes[0][w]) + std::popcount(query[1] ^ lanes[1][w]) +
@@ -32,19 +37,6 @@ NearestTwo nearest_two_portable(const std::uint64_t* query, const std::uint64_t*
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
-__attribute__((target("popcnt"))) NearestTwo nearest_two_popcnt(
-    const std::uint64_t* query, const std::uint64_t* const lanes[4], std::size_t begin,
-    std::size_t count, NearestTwo r) {
-  for (std::size_t w = begin; w < count; ++w) {
-    keep_nearest_two(r,
-                     std::popcount(query[0] ^ lanes[0][w]) + std::popcount(query[1] ^ lanes[1][w]) +
-                         std::popcount(query[2] ^ lanes[2][w]) +
-                         std::popcount(query[3] ^ lanes[3][w]),
-                     w);
-  }
-  return r;
-}
-
 /// Eight descriptors at a time: their distances in one register; only the lanes that would
 /// change the result (distance below the current second) go through the scalar step, in index
 /// order, so the result is the scan's.
@@ -70,7 +62,7 @@ __attribute__((target("avx512f,avx512vpopcntdq,popcnt"))) NearestTwo nearest_two
     _mm512_store_si512(d, dist);
     for (int j = 0; j < 8; ++j) keep_nearest_two(r, static_cast<int>(d[j]), w + j);
   }
-  return nearest_two_popcnt(query, lanes, w, count, r);
+  return nearest_two_scalar(query, lanes, w, count, r);
 }
 #endif
 
@@ -81,11 +73,9 @@ NearestTwo nearest_two(const std::uint64_t* query, const std::uint64_t* const la
 #if defined(__x86_64__) && defined(__GNUC__)
   static const bool has_avx512 = __builtin_cpu_supports("avx512f") &&
                                  __builtin_cpu_supports("avx512vpopcntdq");
-  static const bool has_popcnt = __builtin_cpu_supports("popcnt");
   if (has_avx512) return nearest_two_avx512(query, lanes, count);
-  if (has_popcnt) return nearest_two_popcnt(query, lanes, 0, count, {});
 #endif
-  return nearest_two_portable(query, lanes, 0, count, {});
+  return nearest_two_scalar(query, lanes, 0, count, {});
 }
 
 }  // namespace wifislam::slam

@@ -115,6 +115,17 @@ inline std::filesystem::path tiny_loop_with(const std::filesystem::path& dir,
   return path;
 }
 
+/// The tiny loop with 4 s pauses (long enough for a Wi-Fi scan, so Wi-Fi variants run too),
+/// written to `dir`/tiny.yaml and generated at 2 fps into `dir`/dataset with `extra` flags
+/// (e.g. "--no-images"). True when `generate` succeeded.
+inline bool make_tiny_wifi_dataset(const std::filesystem::path& dir, const std::string& extra = "") {
+  tiny_loop_with(dir, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml");
+  const std::string command = std::string(WIFISLAM_BINARY) + " generate " +
+                              (dir / "tiny.yaml").string() + " --fps 2 -q " + extra + " -o " +
+                              (dir / "dataset").string();
+  return std::system(command.c_str()) == 0;
+}
+
 /// Bad input as the README promises it: exit 2 (no signal), a message naming `where` (file,
 /// line) and `what` (key, value), and no "internal error".
 inline void expect_located_bad_input(const CliResult& r, const std::string& where,

@@ -68,11 +68,7 @@ class ExternalContainment : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("wifislam_cli_Containment_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    test::tiny_loop_with(root_, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml");
-    const std::string command = std::string(WIFISLAM_BINARY) + " generate " +
-                                (root_ / "tiny.yaml").string() + " --fps 2 --no-images -q -o " +
-                                (root_ / "dataset").string();
-    generated_ = std::system(command.c_str()) == 0;
+    generated_ = test::make_tiny_wifi_dataset(root_, "--no-images");
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {

@@ -43,13 +43,8 @@ class ExternalSystemCli : public ::testing::Test {
         fs::temp_directory_path() / ("wifislam_cli_ExternalSystem_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    // Pauses long enough for a Wi-Fi scan (2 s), so our front end's Wi-Fi variant runs too.
-    test::tiny_loop_with(root_, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml");
     write_file(root_ / "broken.yaml", kBrokenSystem);
-    const std::string command = std::string(WIFISLAM_BINARY) + " generate " +
-                                (root_ / "tiny.yaml").string() + " --fps 2 -q -o " +
-                                (root_ / "dataset").string();
-    generated_ = std::system(command.c_str()) == 0;
+    generated_ = test::make_tiny_wifi_dataset(root_);
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {

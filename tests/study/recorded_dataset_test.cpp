@@ -8,9 +8,7 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 #include <mutex>
-#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -21,18 +19,14 @@
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
 #include "study/recorded_dataset.hpp"
+#include "tests/cli/cli_run.hpp"
 
 namespace wifislam::study {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using test::read_file;
 
 TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
   const fs::path scratch =
@@ -82,16 +76,16 @@ TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
     EXPECT_GT(summary.keyframes, 5);
     for (const char* file :
          {"trajectory.txt", "keyframes.txt", "graph.json", "loop_closures.csv"}) {
-      const std::string replayed = read_text(run.run_dir / file);
+      const std::string replayed = read_file(run.run_dir / file);
       EXPECT_FALSE(replayed.empty()) << file;
-      EXPECT_EQ(replayed, read_text(by_reader / file)) << file;
+      EXPECT_EQ(replayed, read_file(by_reader / file)) << file;
     }
     if (run.slam.wifi.enabled) {
-      EXPECT_EQ(read_text(run.run_dir / "wifi_clusters.csv"),
-                read_text(by_reader / "wifi_clusters.csv"));
+      EXPECT_EQ(read_file(run.run_dir / "wifi_clusters.csv"),
+                read_file(by_reader / "wifi_clusters.csv"));
     }
     // The extraction is charged: one call per frame, as in the reader's run.
-    const auto timing = nlohmann::json::parse(read_text(run.run_dir / "timing.json"));
+    const auto timing = nlohmann::json::parse(read_file(run.run_dir / "timing.json"));
     const auto& extraction = timing["modules"]["feature_extraction"];
     EXPECT_EQ(extraction["calls"], 150);
     EXPECT_GT(extraction["total_s"].get<double>(), 0.0);
