@@ -6,16 +6,22 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <regex>
+#include <string_view>
 #include <system_error>
+#include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/text_lines.hpp"
 
 namespace wifislam::floorplan {
 
@@ -101,6 +107,63 @@ class IndoorOsmConfig {
   const char* options_[2] = {nullptr, nullptr};
 };
 
+/// Every point a longitude and latitude in degrees: 1e308, NaN or lon 200 reached PROJ and GDAL
+/// (their unlocated "ERROR 1" and a 300-digit projection string) instead of a located error.
+void check_lon_lat(const PlanFeature& feature) {
+  const auto check = [&](const Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const double lon = ring[i].x(), lat = ring[i].y();
+      if (!std::isfinite(lon) || !std::isfinite(lat) || std::abs(lon) > 180 ||
+          std::abs(lat) > 90) {
+        throw ParseError(feature.where, "coordinates",
+                         fmt::format("point {} is ({}, {}): expected a longitude in [-180, 180] "
+                                     "and a latitude in [-90, 90] degrees (WGS 84)",
+                                     i, lon, lat));
+      }
+    }
+  };
+  for (const PolygonRings& p : feature.polygons_lon_lat) {
+    check(p.outer);
+    for (const Ring& hole : p.holes) check(hole);
+  }
+  for (const Ring& line : feature.lines_lon_lat) check(line);
+}
+
+/// An OSM XML way that names a node the file does not hold: GDAL's OSM driver drops the point
+/// without a word and imports a smaller polygon. No XML library is needed to check it: node
+/// elements and way references are one line each in OSM XML (`<node id=...`, `<nd ref=...`),
+/// so their ids are scanned as text.
+void check_osm_node_references(const std::filesystem::path& file) {
+  std::unordered_set<std::string> nodes;
+  std::vector<std::pair<std::string, std::string>> refs;  // (node id, where)
+  std::string way;
+  const auto attribute = [](const std::string& line, const std::string& name) {
+    const std::size_t at = line.find(" " + name + "=");
+    if (at == std::string::npos) return std::string();
+    const std::size_t open = at + name.size() + 2;
+    if (open >= line.size()) return std::string();
+    const char quote = line[open];
+    const std::size_t close = line.find(quote, open + 1);
+    return close == std::string::npos ? std::string() : line.substr(open + 1, close - open - 1);
+  };
+  for_each_text_line(file.string(), [&](const TextLine& line) {
+    const std::size_t start = line.text.find_first_not_of(" \t");
+    if (start == std::string::npos) return;
+    const std::string_view text = std::string_view(line.text).substr(start);
+    if (text.starts_with("<node ")) nodes.insert(attribute(line.text, "id"));
+    if (text.starts_with("<way ")) way = attribute(line.text, "id");
+    if (text.starts_with("<nd ")) {
+      refs.emplace_back(attribute(line.text, "ref"),
+                        fmt::format("{}:{} (way/{})", file.string(), line.number, way));
+    }
+  });
+  for (const auto& [ref, where] : refs) {
+    if (!nodes.count(ref)) {
+      throw ParseError(where, "nd ref", "node " + ref + " is not in the file: the way is incomplete");
+    }
+  }
+}
+
 struct DatasetCloser {
   void operator()(GDALDataset* d) const { GDALClose(d); }
 };
@@ -109,8 +172,13 @@ struct DatasetCloser {
 
 std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
+  if (!std::filesystem::exists(file, ec)) {
     throw IoError(fmt::format("{}: no such plan file", file.string()));
+  }
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    throw ParseError(file.string(), "", "is not a plan file (a folder, a device or a pipe)");
+  }
+  if (file.extension() == ".osm") check_osm_node_references(file);
   GDALAllRegister();
   // GDAL's warnings (an unclosed ring it closes itself) would go to stderr unasked; its errors
   // still reach CPLGetLastErrorMsg and our message.
@@ -148,6 +216,7 @@ std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
       feature.where = fmt::format("{}: feature {}{}", file.string(), index,
                                   id.empty() ? std::string() : " (" + id + ")");
       collect(f->GetGeometryRef(), feature);
+      check_lon_lat(feature);
       features.push_back(std::move(feature));
       ++index;
     }

@@ -170,5 +170,30 @@ TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
   EXPECT_TRUE(fs::exists(scratch_ / "ds" / "wifi.csv"));
 }
 
+// Issue 44: coordinates that are no longitude and latitude reached PROJ and GDAL (an unlocated
+// "ERROR 1", a 300-digit projection string); a way naming a node the file lacks was imported as
+// a smaller polygon; /dev/zero was "no such plan file" (exit 3).
+TEST_F(ImportCli, PlansThatAreNotWhatTheySayAreLocatedErrors) {
+  for (const std::string& point : {std::string("[1e308, 0]"), std::string("[200, 0]"),
+                                   std::string("[0, 95]")}) {
+    const std::string ring = "[[0, 0], " + point + ", [0.0002, 0.0001], [0, 0.0001], [0, 0]]";
+    test::write_file(scratch_ / "far.geojson", collection({feature("corridor", ring)}));
+    expect_refused("import " + (scratch_ / "far.geojson").string(),
+                   {"far.geojson: feature 0 (way/7)", "coordinates", "longitude"});
+  }
+  test::write_file(scratch_ / "missing.osm",
+                   "<?xml version='1.0' encoding='UTF-8'?>\n<osm version=\"0.6\">\n"
+                   "  <node id=\"1\" lat=\"0.0\" lon=\"0.0\"/>\n"
+                   "  <node id=\"2\" lat=\"0.0\" lon=\"0.0002\"/>\n"
+                   "  <node id=\"3\" lat=\"0.0001\" lon=\"0.0002\"/>\n"
+                   "  <way id=\"10\">\n    <nd ref=\"1\"/>\n    <nd ref=\"2\"/>\n"
+                   "    <nd ref=\"3\"/>\n    <nd ref=\"4\"/>\n    <nd ref=\"1\"/>\n"
+                   "    <tag k=\"indoor\" v=\"corridor\"/>\n    <tag k=\"level\" v=\"0\"/>\n"
+                   "  </way>\n</osm>\n");
+  expect_refused("import " + (scratch_ / "missing.osm").string(),
+                 {"missing.osm:10 (way/10)", "node 4 is not in the file"});
+  expect_refused("import /dev/zero", {"/dev/zero", "not a plan file"});
+}
+
 }  // namespace
 }  // namespace wifislam
