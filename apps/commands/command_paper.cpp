@@ -193,8 +193,9 @@ WIFISLAM_COMMAND(paper, 66) {
   app->add_flag("--force", args->force, "Start over: replace DIR (a folder `paper` made)");
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   app->footer(
-      "About 30 min a seed at the default 3 fps on 2 cores. DIR holds the twins' scene files,\n"
-      "one study file and SQLite database per part, twin and seed (`wifislam study slurm` takes\n"
-      "any of them), and the report. Details: docs/paper/README.md.");
+      "About 25 min a seed at the default 3 fps on 2 cores (bench/paper/run.sh). DIR holds the\n"
+      "twins' scene files, one study file and SQLite database per part, twin and seed\n"
+      "(`wifislam study slurm` takes any of them), and the report. Details:\n"
+      "docs/paper/README.md.");
   app->callback([args] { run(*args); });
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <map>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -17,6 +18,21 @@ namespace fs = std::filesystem;
 
 const plot::Colour kVanilla{0.80, 0.25, 0.20}, kWifi{0.15, 0.40, 0.75}, kPaperVanilla{0.95, 0.6, 0.5},
     kPaperWifi{0.55, 0.7, 0.95};
+
+std::string axis_label(Quantity q) {
+  switch (q) {
+    case Quantity::kAteRmseM:
+      return "ATE RMSE (m)";
+    case Quantity::kFalseNegativePct:
+      return "false negatives (% of revisits missed)";
+    case Quantity::kFalsePositivePct:
+      return "false positives (% of loop closures)";
+    case Quantity::kWifiOverheadS:
+      return "Wi-Fi overhead (s)";
+    default:
+      return to_string(q);
+  }
+}
 
 plot::ChartPoint point(double x, const Measured& m) {
   return {x, m.mean(), m.min(), m.max()};
@@ -137,7 +153,7 @@ void table_figures(const PaperTable& table, const std::vector<ComparedNumber>& c
                              "the paper's dashed"
                            : "ours solid (band: seeds' range), the paper's dashed";
     chart.x_label = table.setting_key;
-    chart.y_label = ratio ? "Wi-Fi / vanilla" : to_string(table.quantity);
+    chart.y_label = ratio ? "Wi-Fi / vanilla loop-closure time" : axis_label(table.quantity);
     chart.x_categories = table.settings;
     bool any = false;
     for (std::size_t s = 0; s < table.settings.size(); ++s) {
