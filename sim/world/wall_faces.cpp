@@ -1,6 +1,7 @@
 #include "sim/world/wall_faces.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -8,7 +9,9 @@
 #include <tuple>
 
 #include "core/rng.hpp"
+#include "sim/world/box_grid.hpp"
 #include "sim/world/plan_queries.hpp"
+#include "sim/world/region_locator.hpp"
 
 namespace wifislam::sim {
 
@@ -97,28 +100,74 @@ struct Bounding {
   WallMaterial material = WallMaterial::kPlasterboard;
 };
 
-Bounding bounding_of(const Eigen::Vector2d& p, const Scene& scene, const PlanLayout& layout,
-                     const FloorPlan& plan) {
-  for (const Door& d : plan.doors) {
-    if (!d.open) continue;
-    const Eigen::Vector2d f = p - d.center_m;
-    const Eigen::Vector2d n(-d.along_wall.y(), d.along_wall.x());
-    if (d.room_index >= 0 && std::abs(f.dot(d.along_wall)) <= 0.5 * d.width_m + kTol &&
-        std::abs(f.dot(n)) <= 0.5 * d.wall_thickness_m + kTol)
-      return {3, plan.rooms[d.room_index].material};
-  }
-  for (const Room& r : plan.rooms)
-    if (ring_contains(r.polygon_m, p)) return {3, r.material};
-  for (const CorridorLayout& c : layout.corridors)
-    if (c.rect.contains(p)) return {2, scene.corridors[c.corridor_index].material};
-  for (const Space& s : scene.spaces)
-    if (s.kind == SpaceKind::kCorridor && ring_contains(s.polygon_m, p)) return {2, s.material};
-  for (const OpenArea& a : scene.open_areas)
-    if (ring_contains(a.polygon_m, p)) return {1, a.material};
-  for (const Space& s : scene.spaces)
-    if (s.kind == SpaceKind::kArea && ring_contains(s.polygon_m, p)) return {1, s.material};
-  return {};
+template <class Points>
+void add_box(BoxGrid& grid, int index, const Points& points, double margin_m = 1e-9) {
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
+  for (const Eigen::Vector2d& q : points) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+  grid.add(index, lo - Eigen::Vector2d::Constant(margin_m),
+           hi + Eigen::Vector2d::Constant(margin_m));
 }
+
+/// What bounds the points just off the faces: the open doors, rooms, corridors, spaces and open
+/// areas near a point, found on grids of their boxes (a scan of all of them per face is quadratic
+/// in the building's size), tried in the order and with the tests of a scan.
+class BoundingLocator {
+ public:
+  BoundingLocator(const Scene& scene, const PlanLayout& layout, const FloorPlan& plan)
+      : scene_(scene), layout_(layout), plan_(plan) {
+    for (std::size_t i = 0; i < plan.doors.size(); ++i) {
+      const Door& d = plan.doors[i];
+      const double reach = 0.5 * d.width_m + 0.5 * d.wall_thickness_m + 1e-3;
+      doors_.add(static_cast<int>(i), d.center_m - Eigen::Vector2d::Constant(reach),
+                 d.center_m + Eigen::Vector2d::Constant(reach));
+    }
+    for (std::size_t i = 0; i < plan.rooms.size(); ++i)
+      add_box(rooms_, static_cast<int>(i), plan.rooms[i].polygon_m);
+    for (std::size_t i = 0; i < layout.corridors.size(); ++i)
+      add_box(corridors_, static_cast<int>(i), layout.corridors[i].rect.corners());
+    for (std::size_t i = 0; i < scene.spaces.size(); ++i)
+      add_box(spaces_, static_cast<int>(i), scene.spaces[i].polygon_m);
+    for (std::size_t i = 0; i < scene.open_areas.size(); ++i)
+      add_box(open_areas_, static_cast<int>(i), scene.open_areas[i].polygon_m);
+  }
+
+  Bounding at(const Eigen::Vector2d& p) const {
+    for (const int i : doors_.at(p)) {
+      const Door& d = plan_.doors[i];
+      if (!d.open) continue;
+      const Eigen::Vector2d f = p - d.center_m;
+      const Eigen::Vector2d n(-d.along_wall.y(), d.along_wall.x());
+      if (d.room_index >= 0 && std::abs(f.dot(d.along_wall)) <= 0.5 * d.width_m + kTol &&
+          std::abs(f.dot(n)) <= 0.5 * d.wall_thickness_m + kTol)
+        return {3, plan_.rooms[d.room_index].material};
+    }
+    for (const int i : rooms_.at(p))
+      if (ring_contains(plan_.rooms[i].polygon_m, p)) return {3, plan_.rooms[i].material};
+    for (const int i : corridors_.at(p)) {
+      const CorridorLayout& c = layout_.corridors[i];
+      if (c.rect.contains(p)) return {2, scene_.corridors[c.corridor_index].material};
+    }
+    const std::vector<int> spaces = spaces_.at(p);
+    for (const int i : spaces) {
+      const Space& s = scene_.spaces[i];
+      if (s.kind == SpaceKind::kCorridor && ring_contains(s.polygon_m, p)) return {2, s.material};
+    }
+    for (const int i : open_areas_.at(p))
+      if (ring_contains(scene_.open_areas[i].polygon_m, p))
+        return {1, scene_.open_areas[i].material};
+    for (const int i : spaces) {
+      const Space& s = scene_.spaces[i];
+      if (s.kind == SpaceKind::kArea && ring_contains(s.polygon_m, p)) return {1, s.material};
+    }
+    return {};
+  }
+
+ private:
+  const Scene& scene_;
+  const PlanLayout& layout_;
+  const FloorPlan& plan_;
+  BoxGrid doors_{4.0}, rooms_{4.0}, corridors_{4.0}, spaces_{4.0}, open_areas_{4.0};
+};
 
 /// Step 1: every boundary edge of every wall solid, with the wall on its right (rings have the
 /// wall on their left).
@@ -170,13 +219,28 @@ void cut_at_closed_doors(const FloorPlan& plan, std::vector<Piece>& pieces) {
   }
 }
 
+/// The pieces on a grid, each under its box grown by `max_gap_m`: a face that faces p across a
+/// wall at most that thick (opposite_interval) shares a cell with p's own box.
+BoxGrid piece_grid(const std::vector<Piece>& pieces, double max_gap_m) {
+  BoxGrid grid(std::max(1.0, 2 * max_gap_m));
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    add_box(grid, static_cast<int>(i), std::array{pieces[i].a, pieces[i].b}, max_gap_m + 1e-3);
+  return grid;
+}
+
+std::vector<int> pieces_near(const BoxGrid& grid, const Piece& p) {
+  return grid.near(p.a.cwiseMin(p.b), p.a.cwiseMax(p.b));
+}
+
 /// Step 3: cuts each face at the ends of the faces opposite it across a wall, so that opposite
 /// faces end up the same length and can be paired.
 std::vector<Piece> cut_at_opposite_ends(const std::vector<Piece>& pieces, double max_gap_m) {
+  const BoxGrid grid = piece_grid(pieces, max_gap_m);
   std::vector<Piece> next;
   for (const Piece& p : pieces) {
     std::vector<double> cuts;
-    for (const Piece& q : pieces) {
+    for (const int j : pieces_near(grid, p)) {
+      const Piece& q = pieces[j];
       if (&q == &p) continue;
       if (auto iv = opposite_interval(p, q, max_gap_m)) {
         cuts.push_back(iv->first);
@@ -190,8 +254,11 @@ std::vector<Piece> cut_at_opposite_ends(const std::vector<Piece>& pieces, double
 
 /// Step 4a: two faces that cover each other exactly across a wall are one wall.
 void unite_opposite_faces(const std::vector<Piece>& pieces, double max_gap_m, UnionFind& walls) {
+  const BoxGrid grid = piece_grid(pieces, max_gap_m);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
-    for (std::size_t j = i + 1; j < pieces.size(); ++j) {
+    for (const int near : pieces_near(grid, pieces[i])) {
+      const std::size_t j = static_cast<std::size_t>(near);
+      if (j <= i) continue;
       auto iv = opposite_interval(pieces[i], pieces[j], max_gap_m);
       if (iv && std::abs(iv->first) < 1e-5 && std::abs(iv->second - pieces[i].length()) < 1e-5)
         walls.unite(static_cast<int>(i), static_cast<int>(j));
@@ -202,9 +269,11 @@ void unite_opposite_faces(const std::vector<Piece>& pieces, double max_gap_m, Un
 /// The face that lone face `i` continues: a collinear neighbour in a wall of two or more faces
 /// if there is one, else any such neighbour; -1 when none touches it.
 int continued_face(const std::vector<Piece>& pieces, std::size_t i,
-                   const std::vector<int>& group_size, UnionFind& walls) {
+                   const std::vector<int>& group_size, UnionFind& walls,
+                   const std::vector<int>& touching) {
   int collinear = -1, other = -1;
-  for (std::size_t j = 0; j < pieces.size(); ++j) {
+  for (const int near : touching) {
+    const std::size_t j = static_cast<std::size_t>(near);
     if (j == i || group_size[walls.find(static_cast<int>(j))] < 2) continue;
     if (pieces[j].b != pieces[i].a && pieces[j].a != pieces[i].b) continue;
     if (pieces[j].dir().dot(pieces[i].dir()) > 1 - 1e-9) {
@@ -220,12 +289,27 @@ int continued_face(const std::vector<Piece>& pieces, std::size_t i,
 /// corner) belongs to the wall it continues. Merges are collected first so that they all see the
 /// walls as step 4a left them.
 void attach_lone_faces(const std::vector<Piece>& pieces, UnionFind& walls) {
+  // The faces that end where a face starts, and start where it ends (exact points, as the
+  // comparison in continued_face).
+  const auto key = [](const Eigen::Vector2d& q) { return std::pair(q.x() + 0.0, q.y() + 0.0); };
+  std::map<std::pair<double, double>, std::vector<int>> ending_at, starting_at;
+  for (std::size_t j = 0; j < pieces.size(); ++j) {
+    ending_at[key(pieces[j].b)].push_back(static_cast<int>(j));
+    starting_at[key(pieces[j].a)].push_back(static_cast<int>(j));
+  }
   std::vector<int> group_size(pieces.size(), 0);
   for (std::size_t i = 0; i < pieces.size(); ++i) ++group_size[walls.find(static_cast<int>(i))];
   std::vector<std::pair<std::size_t, int>> merges;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     if (group_size[walls.find(static_cast<int>(i))] > 1 || pieces[i].door >= 0) continue;
-    const int continued = continued_face(pieces, i, group_size, walls);
+    std::vector<int> touching;
+    if (const auto it = ending_at.find(key(pieces[i].a)); it != ending_at.end())
+      touching = it->second;
+    if (const auto it = starting_at.find(key(pieces[i].b)); it != starting_at.end())
+      touching.insert(touching.end(), it->second.begin(), it->second.end());
+    std::sort(touching.begin(), touching.end());
+    touching.erase(std::unique(touching.begin(), touching.end()), touching.end());
+    const int continued = continued_face(pieces, i, group_size, walls, touching);
     if (continued >= 0) merges.emplace_back(i, continued);
   }
   for (const auto& [i, j] : merges) walls.unite(static_cast<int>(i), j);
@@ -256,11 +340,13 @@ struct FaceSides {
 FaceSides classify_face_sides(const Scene& scene, const PlanLayout& layout, const FloorPlan& plan,
                               const std::vector<Piece>& pieces, UnionFind& walls) {
   FaceSides sides{std::vector<bool>(pieces.size()), std::vector<Bounding>(pieces.size())};
+  const RegionLocator free_space(plan.free_space);
+  const BoundingLocator bounding(scene, layout, plan);
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Eigen::Vector2d probe = pieces[i].mid() + 1e-4 * pieces[i].left_normal();
-    sides.exterior[i] = !regions_contain(plan.free_space, probe);
+    sides.exterior[i] = free_space.find(probe) < 0;
     if (sides.exterior[i]) continue;
-    const Bounding b = bounding_of(probe, scene, layout, plan);
+    const Bounding b = bounding.at(probe);
     Bounding& g = sides.wall_bounding[walls.find(static_cast<int>(i))];
     if (b.rank > g.rank) g = b;
   }

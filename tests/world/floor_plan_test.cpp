@@ -1,11 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
 #include "core/error.hpp"
+#include "sim/world/box_grid.hpp"
 #include "sim/world/floor_plan_builder.hpp"
 #include "sim/world/plan_queries.hpp"
+#include "sim/world/region_locator.hpp"
 #include "sim/world/wall_face_grid.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/world/world_test_support.hpp"
@@ -178,6 +181,58 @@ TEST(FloorPlan, WallFaceGridAgreesWithTheFullScan) {
       }
     }
     EXPECT_GT(near, 1000) << radius;
+  }
+}
+
+// The region locator answers regions_find's question with regions_find's answer, on the free
+// space, the walkable space and the wall solids (rings with holes) of a plan, on a lattice that
+// includes points outside the building and points on lattice lines through ring vertices.
+TEST(FloorPlan, RegionLocatorAgreesWithTheFullScan) {
+  const Scene scene = test::square_loop_scene(14.0);
+  const FloorPlan plan = build_floor_plan(scene);
+  for (const auto* regions : {&plan.free_space, &plan.walkable, &plan.walls}) {
+    ASSERT_FALSE(regions->empty());
+    for (const double band_m : {0.25, 1.0, 7.0}) {
+      const RegionLocator locator(*regions, band_m);
+      int inside = 0;
+      for (double y = plan.bounds_min_m.y() - 2.0; y < plan.bounds_max_m.y() + 2.0; y += 0.1) {
+        for (double x = plan.bounds_min_m.x() - 2.0; x < plan.bounds_max_m.x() + 2.0; x += 0.137) {
+          const Eigen::Vector2d p(x, y);
+          const int full = regions_find(*regions, p);
+          ASSERT_EQ(locator.find(p), full) << "at " << x << ", " << y << " band " << band_m;
+          inside += full >= 0;
+        }
+      }
+      EXPECT_GT(inside, 500) << band_m;
+    }
+  }
+}
+
+// Every item whose box overlaps the query box is among the candidates, sorted and once each.
+TEST(FloorPlan, BoxGridFindsEveryOverlappingBoxInIndexOrder) {
+  const Scene scene = test::square_loop_scene(14.0);
+  const FloorPlan plan = build_floor_plan(scene);
+  BoxGrid grid(1.5);
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> boxes;
+  for (const WallFace2& f : plan.wall_faces) {
+    boxes.emplace_back(f.a_m.cwiseMin(f.b_m), f.a_m.cwiseMax(f.b_m));
+    grid.add(static_cast<int>(boxes.size()) - 1, boxes.back().first, boxes.back().second);
+  }
+  for (double y = plan.bounds_min_m.y() - 1.0; y < plan.bounds_max_m.y() + 1.0; y += 0.7) {
+    for (double x = plan.bounds_min_m.x() - 1.0; x < plan.bounds_max_m.x() + 1.0; x += 0.9) {
+      const Eigen::Vector2d lo(x, y), hi(x + 0.4, y + 2.0);
+      const std::vector<int> found = grid.near(lo, hi);
+      ASSERT_TRUE(std::is_sorted(found.begin(), found.end()));
+      ASSERT_EQ(std::adjacent_find(found.begin(), found.end()), found.end());
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const bool overlaps = boxes[i].first.x() <= hi.x() && lo.x() <= boxes[i].second.x() &&
+                              boxes[i].first.y() <= hi.y() && lo.y() <= boxes[i].second.y();
+        if (overlaps) {
+          ASSERT_TRUE(std::binary_search(found.begin(), found.end(), static_cast<int>(i)))
+              << "face " << i << " at " << x << ", " << y;
+        }
+      }
+    }
   }
 }
 
