@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <queue>
+#include <unordered_map>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
@@ -50,6 +52,9 @@ std::vector<cv::Point> to_pixels(const sim::Polygon2& ring, const Grid& g) {
 constexpr double kMaxGridCells = 36e6;
 // Walk costs kept for every target at most (12 bytes each): see plan_tour.
 constexpr double kMaxKeptCostCells = 40e6;
+// Targets times piece cells at most for exact walk costs between every two targets (a few
+// seconds); see plan_tour.
+constexpr double kMaxExactWalkCells = 2e7;
 
 Grid make_grid(const sim::FloorPlan& plan, const TourOptions& options) {
   Grid g;
@@ -105,6 +110,21 @@ struct Costs {
   std::vector<int> previous;
 };
 
+constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1}, kDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
+
+/// The cost of the step from cell i (at x, y) in direction k into cell j.
+double step_cost(const Grid& g, int k, int j) {
+  const double step = (k < 4 ? 1.0 : M_SQRT2) * g.cell_m;
+  return step * (1.0 + 0.5 / std::max(0.05f, g.clearance(j)));
+}
+
+/// The neighbour of cell i in direction k when it is in the piece, else -1.
+int piece_neighbour(const Grid& g, int i, int k) {
+  const int nx = i % g.width + kDx[k], ny = i / g.width + kDy[k];
+  if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height || !g.piece(ny, nx)) return -1;
+  return ny * g.width + nx;
+}
+
 Costs walk_costs(const Grid& g, int source) {
   const int n = g.width * g.height;
   Costs c{std::vector<double>(n, std::numeric_limits<double>::infinity()), std::vector<int>(n, -1)};
@@ -112,18 +132,14 @@ Costs walk_costs(const Grid& g, int source) {
   std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
   c.cost[source] = 0;
   open.push({0.0, source});
-  static const int dx[8] = {1, -1, 0, 0, 1, 1, -1, -1}, dy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
   while (!open.empty()) {
     const auto [cost, i] = open.top();
     open.pop();
     if (cost > c.cost[i]) continue;
-    const int x = i % g.width, y = i / g.width;
     for (int k = 0; k < 8; ++k) {
-      const int nx = x + dx[k], ny = y + dy[k];
-      if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height || !g.piece(ny, nx)) continue;
-      const int j = ny * g.width + nx;
-      const double step = (k < 4 ? 1.0 : M_SQRT2) * g.cell_m;
-      const double next = cost + step * (1.0 + 0.5 / std::max(0.05f, g.clearance(j)));
+      const int j = piece_neighbour(g, i, k);
+      if (j < 0) continue;
+      const double next = cost + step_cost(g, k, j);
       if (next < c.cost[j]) {
         c.cost[j] = next;
         c.previous[j] = i;
@@ -133,6 +149,58 @@ Costs walk_costs(const Grid& g, int source) {
   }
   return c;
 }
+
+/// The same Dijkstra as walk_costs, stopped early: for large plans, where every target's costs
+/// over the whole piece would make the route quadratic in the plan's size. Its arrays are reused
+/// between runs (only the cells a run touched are reset), and up to where it stops it settles
+/// cells in walk_costs' order with walk_costs' costs and predecessors.
+class BoundedWalk {
+ public:
+  explicit BoundedWalk(const Grid& g)
+      : g_(g),
+        cost_(static_cast<std::size_t>(g.width) * g.height,
+              std::numeric_limits<double>::infinity()),
+        previous_(cost_.size(), -1) {}
+
+  /// Runs from `source`; `settled(cell, cost)` is called for each cell as it is settled, in
+  /// order of cost, and returns false to stop.
+  template <class Settled>
+  void run(int source, Settled&& settled) {
+    for (const int i : touched_)
+      cost_[i] = std::numeric_limits<double>::infinity(), previous_[i] = -1;
+    touched_.clear();
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+    cost_[source] = 0;
+    touched_.push_back(source);
+    open.push({0.0, source});
+    while (!open.empty()) {
+      const auto [cost, i] = open.top();
+      open.pop();
+      if (cost > cost_[i]) continue;
+      if (!settled(i, cost)) return;
+      for (int k = 0; k < 8; ++k) {
+        const int j = piece_neighbour(g_, i, k);
+        if (j < 0) continue;
+        const double next = cost + step_cost(g_, k, j);
+        if (next < cost_[j]) {
+          if (std::isinf(cost_[j])) touched_.push_back(j);
+          cost_[j] = next;
+          previous_[j] = i;
+          open.push({next, j});
+        }
+      }
+    }
+  }
+  /// The predecessor of a cell the last run settled.
+  int previous(int cell) const { return previous_[cell]; }
+
+ private:
+  const Grid& g_;
+  std::vector<double> cost_;
+  std::vector<int> previous_;
+  std::vector<int> touched_;
+};
 
 /// The cell of the piece nearest to p (within 3 m), or -1.
 int snap(const Grid& g, const Eigen::Vector2d& p) {
@@ -151,27 +219,64 @@ int snap(const Grid& g, const Eigen::Vector2d& p) {
 }
 
 /// Farthest-point sampling of the piece, from the given targets (or its roomiest cell).
+///
+/// Each new target can only lower the distances of cells nearer to it than the largest distance
+/// so far (the new target's own), so only the cells in that square around it are updated, and
+/// the farthest cell is found from per-block maxima. The targets are those of the plain scan over
+/// every cell for every target (the same distances, the first farthest cell in row order), at a
+/// cost that stays near linear in the plan's size.
 std::vector<int> spread_targets(const Grid& g, double spacing_m, std::vector<int> targets) {
   std::vector<int> cells;
+  std::vector<std::size_t> row_begin(g.height + 1, 0);  // cells of row y: [row_begin[y], [y+1])
   int start = -1;
   for (int i = 0; i < g.width * g.height; ++i) {
     if (!g.piece(i / g.width, i % g.width)) continue;
     cells.push_back(i);
+    ++row_begin[i / g.width + 1];
     if (start < 0 || g.clearance(i) > g.clearance(start)) start = i;
   }
+  for (int y = 0; y < g.height; ++y) row_begin[y + 1] += row_begin[y];
   if (targets.empty()) targets.push_back(start);
+
+  constexpr std::size_t kBlock = 256;
   std::vector<double> nearest(cells.size(), 1e300);
-  for (std::size_t t = 0; t + 1 < targets.size(); ++t)
-    for (std::size_t k = 0; k < cells.size(); ++k)
-      nearest[k] = std::min(nearest[k], (g.centre_of(cells[k]) - g.centre_of(targets[t])).norm());
-  while (true) {
-    const Eigen::Vector2d t = g.centre_of(targets.back());
-    std::size_t far = 0;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      nearest[k] = std::min(nearest[k], (g.centre_of(cells[k]) - t).norm());
-      if (nearest[k] > nearest[far]) far = k;
+  std::vector<double> block_max((cells.size() + kBlock - 1) / kBlock, 1e300);
+  // Lowers the distances of the cells within `radius_m` (a square) of target cell t.
+  auto update = [&](int t, double radius_m) {
+    const Eigen::Vector2d tc = g.centre_of(t);
+    const int r = radius_m >= 1e299 ? std::max(g.width, g.height)
+                                    : static_cast<int>(std::ceil(radius_m / g.cell_m)) + 1;
+    const int tx = t % g.width, ty = t / g.width;
+    const int y0 = std::max(0, ty - r), y1 = std::min(g.height - 1, ty + r);
+    const int x0 = tx - r, x1 = tx + r;
+    for (int y = y0; y <= y1; ++y) {
+      auto first = std::lower_bound(cells.begin() + row_begin[y], cells.begin() + row_begin[y + 1],
+                                    y * g.width + std::max(0, x0));
+      const int last_cell = y * g.width + std::min(g.width - 1, x1);
+      std::size_t k = first - cells.begin();
+      if (k >= row_begin[y + 1] || cells[k] > last_cell) continue;
+      const std::size_t k_begin = k;
+      for (; k < row_begin[y + 1] && cells[k] <= last_cell; ++k)
+        nearest[k] = std::min(nearest[k], (g.centre_of(cells[k]) - tc).norm());
+      for (std::size_t b = k_begin / kBlock; b * kBlock < k; ++b) {
+        const auto from = nearest.begin() + static_cast<long>(b * kBlock);
+        const auto to =
+            nearest.begin() + static_cast<long>(std::min(cells.size(), (b + 1) * kBlock));
+        block_max[b] = *std::max_element(from, to);
+      }
     }
-    if (nearest[far] < spacing_m) break;
+  };
+  for (std::size_t t = 0; t + 1 < targets.size(); ++t) update(targets[t], 1e300);
+  double largest = *std::max_element(block_max.begin(), block_max.end());
+  while (true) {
+    update(targets.back(), largest);
+    largest = *std::max_element(block_max.begin(), block_max.end());
+    const std::size_t block =
+        std::find(block_max.begin(), block_max.end(), largest) - block_max.begin();
+    const std::size_t far =
+        std::find(nearest.begin() + static_cast<long>(block * kBlock), nearest.end(), largest) -
+        nearest.begin();
+    if (largest < spacing_m) break;
     targets.push_back(cells[far]);
   }
   return targets;
@@ -233,6 +338,158 @@ std::vector<Eigen::Vector2d> shortcut(const Grid& g, const std::vector<int>& cel
   return out;
 }
 
+/// Walking costs between the targets (d[a][b] from a to b), and the cells of the walk between
+/// any two.
+class TargetWalks {
+ public:
+  virtual ~TargetWalks() = default;
+  const std::vector<std::vector<double>>& distances() const { return d_; }
+  /// The cells of the cheapest walk from target a to target b, a's cell first.
+  virtual std::vector<int> leg(int a, int b) = 0;
+
+ protected:
+  std::vector<std::vector<double>> d_;
+};
+
+/// Every target's walk costs over the whole piece: exact, and quadratic in the plan's size. The
+/// costs are kept for the legs when they fit in ~0.5 GB; else (hundreds of targets over millions
+/// of cells) each leg's are computed again, the same numbers, so the route is the same either way.
+class ExactWalks final : public TargetWalks {
+ public:
+  ExactWalks(const Grid& g, const std::vector<int>& targets) : g_(g), targets_(targets) {
+    keep_costs_ = static_cast<double>(targets.size()) * g.width * g.height <= kMaxKeptCostCells;
+    d_.assign(targets.size(), std::vector<double>(targets.size()));
+    for (std::size_t a = 0; a < targets.size(); ++a) {
+      Costs from_a = walk_costs(g, targets[a]);
+      for (std::size_t b = 0; b < targets.size(); ++b) d_[a][b] = from_a.cost[targets[b]];
+      if (keep_costs_) costs_.push_back(std::move(from_a));
+    }
+  }
+  std::vector<int> leg(int a, int b) override {
+    const Costs recomputed = keep_costs_ ? Costs{} : walk_costs(g_, targets_[a]);
+    const std::vector<int>& previous = keep_costs_ ? costs_[a].previous : recomputed.previous;
+    std::vector<int> cells;
+    for (int c = targets_[b]; c >= 0; c = previous[c]) cells.push_back(c);
+    std::reverse(cells.begin(), cells.end());
+    return cells;
+  }
+
+ private:
+  const Grid& g_;
+  const std::vector<int>& targets_;
+  bool keep_costs_ = false;
+  std::vector<Costs> costs_;
+};
+
+/// For each cell of the piece, the target that reaches it first (one Dijkstra from all targets at
+/// once), -1 outside the piece: the walking-distance Voronoi regions of the targets.
+std::vector<int> nearest_target_labels(const Grid& g, const std::vector<int>& targets) {
+  const std::size_t n = static_cast<std::size_t>(g.width) * g.height;
+  std::vector<double> cost(n, std::numeric_limits<double>::infinity());
+  std::vector<int> label(n, -1);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    if (label[targets[t]] < 0) {
+      cost[targets[t]] = 0;
+      label[targets[t]] = static_cast<int>(t);
+      open.push({0.0, targets[t]});
+    }
+  while (!open.empty()) {
+    const auto [c, i] = open.top();
+    open.pop();
+    if (c > cost[i]) continue;
+    for (int k = 0; k < 8; ++k) {
+      const int j = piece_neighbour(g, i, k);
+      if (j < 0) continue;
+      const double next = c + step_cost(g, k, j);
+      if (next < cost[j]) cost[j] = next, label[j] = label[i], open.push({next, j});
+    }
+  }
+  return label;
+}
+
+/// Walk costs between neighbouring targets only, and the rest along the graph they make: near
+/// linear in the plan's size. From each target, the Dijkstra of walk_costs runs until it has
+/// settled every target whose Voronoi region touches its own and has gone `radius` (cost) far;
+/// the costs to the targets it settled are exact. A cost between targets farther apart is that of
+/// the cheapest chain of such walks, at least the exact one and close to it where targets are
+/// dense (every cell within the target spacing of one). The graph is connected because the
+/// Voronoi regions of a connected piece are.
+class SparseWalks final : public TargetWalks {
+ public:
+  SparseWalks(const Grid& g, const std::vector<int>& targets, double radius)
+      : targets_(targets), walk_(g) {
+    const std::size_t n = targets.size();
+    std::unordered_map<int, std::vector<int>> targets_at;  // a cell's targets (a route may repeat)
+    for (std::size_t t = 0; t < n; ++t) targets_at[targets[t]].push_back(static_cast<int>(t));
+    const std::vector<int> label = nearest_target_labels(g, targets);
+    std::vector<std::vector<int>> touching(n);  // by label
+    for (int i = 0; i < g.width * g.height; ++i) {
+      if (label[i] < 0) continue;
+      for (int k = 0; k < 8; ++k) {
+        const int j = piece_neighbour(g, i, k);
+        if (j >= 0 && label[j] != label[i]) touching[label[i]].push_back(label[j]);
+      }
+    }
+    for (auto& t : touching)
+      std::sort(t.begin(), t.end()), t.erase(std::unique(t.begin(), t.end()), t.end());
+
+    std::vector<std::vector<std::pair<int, double>>> edges(n);
+    std::vector<char> wanted(n, 0);
+    for (std::size_t a = 0; a < n; ++a) {
+      std::size_t missing = 0;
+      for (const int b : touching[label[targets[a]]]) missing += !wanted[b], wanted[b] = 1;
+      walk_.run(targets[a], [&](int cell, double cost) {
+        const auto it = targets_at.find(cell);
+        if (it != targets_at.end())
+          for (const int b : it->second) {
+            if (b != static_cast<int>(a)) edges[a].push_back({b, cost});
+            if (wanted[b]) wanted[b] = 0, --missing;
+          }
+        return missing > 0 || cost <= radius;
+      });
+      for (const int b : touching[label[targets[a]]]) wanted[b] = 0;
+    }
+    // Cheapest chains: Dijkstra over the target graph from each target.
+    d_.assign(n, std::vector<double>(n, std::numeric_limits<double>::infinity()));
+    via_.assign(n, std::vector<int>(n, -1));
+    using Item = std::pair<double, int>;
+    for (std::size_t a = 0; a < n; ++a) {
+      std::vector<double>& d = d_[a];
+      std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+      d[a] = 0;
+      open.push({0.0, static_cast<int>(a)});
+      while (!open.empty()) {
+        const auto [c, u] = open.top();
+        open.pop();
+        if (c > d[u]) continue;
+        for (const auto& [v, w] : edges[u])
+          if (c + w < d[v]) d[v] = c + w, via_[a][v] = u, open.push({c + w, v});
+      }
+    }
+  }
+  std::vector<int> leg(int a, int b) override {
+    std::vector<int> hops{b};  // targets from b back to a
+    while (hops.back() != a && via_[a][hops.back()] >= 0) hops.push_back(via_[a][hops.back()]);
+    std::reverse(hops.begin(), hops.end());
+    std::vector<int> cells{targets_[a]};
+    for (std::size_t h = 0; h + 1 < hops.size(); ++h) {
+      const int from = targets_[hops[h]], to = targets_[hops[h + 1]];
+      walk_.run(from, [&](int cell, double) { return cell != to; });
+      std::vector<int> piece;
+      for (int c = to; c != from; c = walk_.previous(c)) piece.push_back(c);
+      cells.insert(cells.end(), piece.rbegin(), piece.rend());
+    }
+    return cells;
+  }
+
+ private:
+  const std::vector<int>& targets_;
+  BoundedWalk walk_;
+  std::vector<std::vector<int>> via_;  // via_[a][b]: the target before b on the chain from a
+};
+
 }  // namespace
 
 std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
@@ -259,31 +516,22 @@ std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
   if (!given) targets = spread_targets(g, options.target_spacing_m, targets);
   if (targets.size() < 2)
     throw InvalidInputError("the walkable space is too small for a route with a loop");
-  // Every target's walk costs over the whole grid are kept for the legs when they fit in
-  // ~0.5 GB; else (a long plan: hundreds of targets over millions of cells) each leg's are
-  // computed again, the same numbers, so the route is the same either way.
-  const bool keep_costs =
-      static_cast<double>(targets.size()) * g.width * g.height <= kMaxKeptCostCells;
-  std::vector<Costs> costs;
-  std::vector<std::vector<double>> d(targets.size(), std::vector<double>(targets.size()));
-  for (std::size_t a = 0; a < targets.size(); ++a) {
-    Costs from_a = walk_costs(g, targets[a]);
-    for (std::size_t b = 0; b < targets.size(); ++b) d[a][b] = from_a.cost[targets[b]];
-    if (keep_costs) costs.push_back(std::move(from_a));
-  }
+  // Exact walk costs between all targets while that stays cheap (every plan we ship, and any
+  // building up to a few hundred rooms); past that, the sparse graph of neighbouring targets.
+  const double piece_cells = cv::countNonZero(g.piece);
+  std::unique_ptr<TargetWalks> walks;
+  if (static_cast<double>(targets.size()) * piece_cells <= kMaxExactWalkCells)
+    walks = std::make_unique<ExactWalks>(g, targets);
+  else
+    walks = std::make_unique<SparseWalks>(g, targets, 2 * options.target_spacing_m);
   std::vector<int> order(targets.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-  if (!given) order = tour_order(d);
+  if (!given) order = tour_order(walks->distances());
   order.push_back(order.front());  // a closed loop: the start is seen again
 
   std::vector<Eigen::Vector2d> lap;
   for (std::size_t k = 0; k + 1 < order.size(); ++k) {
-    // The leg from order[k] to order[k+1]: walk back the predecessors from the latter.
-    const Costs recomputed = keep_costs ? Costs{} : walk_costs(g, targets[order[k]]);
-    const std::vector<int>& previous = keep_costs ? costs[order[k]].previous : recomputed.previous;
-    std::vector<int> cells;
-    for (int c = targets[order[k + 1]]; c >= 0; c = previous[c]) cells.push_back(c);
-    std::reverse(cells.begin(), cells.end());
+    const std::vector<int> cells = walks->leg(order[k], order[k + 1]);
     if (cells.size() < 2) continue;
     for (const auto& p : shortcut(g, cells))
       if (lap.empty() || (p - lap.back()).norm() > 1e-9) lap.push_back(p);

@@ -167,6 +167,66 @@ TEST(PlanImport, UserRouteWaypointOutsideThePlanIsAnErrorNotDropped) {
   }
 }
 
+/// A comb: one main corridor 2.5 m wide along x, `branches` corridors 2 m wide and 200 m long
+/// off it every 12 m, and rooms on both sides of each branch every 4 m, drawn 0.2 m apart (the
+/// walls left out, as OSM drawings often do), as OSM Simple Indoor Tagging GeoJSON near lon/lat
+/// (0, 0). Returns the file.
+fs::path write_comb(const fs::path& file, int branches) {
+  const double deg = 1 / 111320.0;
+  std::vector<std::string> features;
+  auto poly = [&](double x0, double y0, double x1, double y1, const char* indoor) {
+    features.push_back(fmt::format(
+        R"({{"type":"Feature","properties":{{"@id":"way/{}","indoor":"{}","level":"1"}},)"
+        R"("geometry":{{"type":"Polygon","coordinates":[[[{},{}],[{},{}],[{},{}],[{},{}],[{},{}]]]}}}})",
+        features.size() + 1, indoor, x0 * deg, y0 * deg, x1 * deg, y0 * deg, x1 * deg, y1 * deg,
+        x0 * deg, y1 * deg, x0 * deg, y0 * deg));
+  };
+  poly(0, 0, branches * 12.0, 2.5, "corridor");
+  for (int b = 0; b < branches; ++b) {
+    const double x = b * 12.0 + 4.0;
+    poly(x, 2.5, x + 2.0, 202.5, "corridor");
+    for (int j = 0; j < 50; ++j) {
+      poly(x - 3.9, 2.6 + 4.0 * j, x - 0.1, 6.4 + 4.0 * j, "room");
+      poly(x + 2.1, 2.6 + 4.0 * j, x + 5.9, 6.4 + 4.0 * j, "room");
+    }
+  }
+  std::ofstream(file) << R"({"type":"FeatureCollection","features":[)"
+                      << fmt::format("{}", fmt::join(features, ",")) << "]}";
+  return file;
+}
+
+// 1 000 rooms on 2 km of corridor: more spaces than step 2 grows into one unclaimed geometry
+// (space_partition.cpp, grow_into_tiles), and past the budget for exact walk costs between every
+// two of the tour's targets, so the tour is planned on the graph of neighbouring targets
+// (route_planner.cpp, SparseWalks). Every room must still be a space, the gaps closed into walls,
+// and the tour must reach the far end of every branch (one that skipped a branch would pass 200 m
+// from its end) and go round its loop twice.
+TEST(PlanImport, AThousandRoomCombGetsATourThatReachesTheEndOfEveryBranch) {
+  const int branches = 10;
+  const fs::path file = write_comb(
+      fs::temp_directory_path() / ("wifislam_comb_" + std::to_string(::getpid()) + ".geojson"),
+      branches);
+  const floorplan::ImportedPlan plan = floorplan::import_plan(file, {});
+  fs::remove(file);
+  EXPECT_EQ(plan.counts.rooms, 50 * 2 * branches);
+  EXPECT_GE(plan.spaces.size(), 50u * 2 * branches) << "every room is a space";
+  EXPECT_GE(plan.counts.space_doors, 50 * 2 * branches) << "every room has a door";
+  floorplan::SceneOptions options;
+  options.access_points = 10;
+  const sim::Scene scene = floorplan::imported_scene(plan, options);
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300);
+  for (const sim::Space& space : plan.spaces)
+    for (const Eigen::Vector2d& p : space.polygon_m) lo = lo.cwiseMin(p);
+  for (int b = 0; b < branches; ++b) {
+    const Eigen::Vector2d end = lo + Eigen::Vector2d(b * 12.0 + 5.0, 201.0);
+    double nearest_m = 1e300;
+    for (const Eigen::Vector2d& w : scene.route.waypoints_m)
+      nearest_m = std::min(nearest_m, (w - end).norm());
+    EXPECT_LT(nearest_m, 9.0) << "branch " << b << ": every cell is within 8 m of a target";
+  }
+  expect_route_revisits(scene);
+}
+
 TEST(LocalProjection, RoundTripsAKnownPointToOneCentimetre) {
   // Centred on Westport House; a point 40 m east and 30 m north of the centre.
   const floorplan::LocalProjection projection(-2.978, 56.4599);
