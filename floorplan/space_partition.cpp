@@ -33,11 +33,13 @@ struct Box {
   }
 };
 
-// Above this many spaces, step 2's growth takes the unclaimed footprint in tiles: one geometry of
-// it, cut again for every space at every growth step, makes the growth quadratic in the number of
-// spaces (a plan of 1 000 rooms drawn 0.2 m apart: 47 s). Up to it (every plan we ship), the one
-// geometry, whose results the shipped scenes were made with.
-constexpr int kMaxSpacesForOneUnclaimedGeometry = 300;
+// Up to this many spaces (every plan we ship), step 2 works on geometries of the whole plan, as the
+// shipped scenes were made. Above it, that is quadratic in the number of spaces, and step 2 works
+// near each space instead: it subtracts only the earlier spaces near it (subtract_near_earlier),
+// and grows into the unclaimed footprint cut into tiles (grow_into_tiles). The same areas, but
+// GEOS may start a ring at another vertex or keep another collinear one, so the scene's bytes
+// can differ; hence the two paths.
+constexpr int kMaxSpacesForWholePlanGeometries = 300;
 
 Box box_of(const Geometry& g) {
   Box box;
@@ -58,7 +60,7 @@ std::size_t vertex_count(const Geometry& g) {
 /// kTileVertices vertices or is at most 4 m across.
 void cut_into_tiles(const GeosContext& geos, Geometry g, const Box& box,
                     std::vector<Geometry>& out) {
-  constexpr std::size_t kTileVertices = 400;
+  constexpr std::size_t kTileVertices = 64;
   if (g.empty()) return;
   const Eigen::Vector2d size = box.hi - box.lo;
   if (vertex_count(g) <= kTileVertices || size.maxCoeff() <= 4.0) {
@@ -73,6 +75,26 @@ void cut_into_tiles(const GeosContext& geos, Geometry g, const Box& box,
     rect.outer = {
         half.lo, {half.hi.x(), half.lo.y()}, half.hi, {half.lo.x(), half.hi.y()}, half.lo};
     cut_into_tiles(geos, g.intersected(geos.polygon(rect)).polygonal(), half, out);
+  }
+}
+
+/// Step 2's start for large plans: each space as drawn minus the spaces placed before it that are
+/// near it (within 0.01 m of its box); far spaces change nothing in the difference.
+void subtract_near_earlier(const GeosContext& geos, const std::vector<Geometry>& drawn,
+                           const std::vector<int>& order, std::vector<Geometry>& grown) {
+  const Eigen::Vector2d margin = Eigen::Vector2d::Constant(0.01);
+  sim::BoxGrid placed(8.0);
+  const Geometry nothing = geos.empty_polygon();
+  for (int i : order) {
+    const Box box = box_of(drawn[i]);
+    std::vector<const Geometry*> near;
+    for (const int j : placed.near(box.lo - margin, box.hi + margin)) near.push_back(&grown[j]);
+    grown[i] =
+        (near.empty() ? drawn[i].minus(nothing) : drawn[i].minus(geos.union_all(near))).polygonal();
+    if (!grown[i].empty()) {
+      const Box grown_box = box_of(grown[i]);
+      placed.add(i, grown_box.lo, grown_box.hi);
+    }
   }
 }
 
@@ -141,10 +163,9 @@ Partition partition_spaces(const GeosContext& geos, const std::vector<SpaceInput
   for (const SpaceInput& in : inputs) drawn.push_back(geos.polygon(in.polygon_m).snapped(0.001));
   for (const Geometry& g : drawn) drawn_ptrs.push_back(&g);
   // Step 1: footprint = closing of the union.
-  const Geometry footprint = geos.union_all(drawn_ptrs)
-                                 .buffer_mitre(grow_m)
-                                 .buffer_mitre(-grow_m)
-                                 .united(geos.union_all(drawn_ptrs));
+  const Geometry drawn_union = geos.union_all(drawn_ptrs);
+  const Geometry footprint =
+      drawn_union.buffer_mitre(grow_m).buffer_mitre(-grow_m).united(drawn_union);
 
   // Step 2, in priority order.
   std::vector<int> order(inputs.size());
@@ -158,36 +179,24 @@ Partition partition_spaces(const GeosContext& geos, const std::vector<SpaceInput
   // Each starts as drawn (minus what earlier spaces drew over), then all grow in turns of
   // kGrowStepM into the footprint nobody holds yet, so a gap is split near its middle: the
   // shared boundary is the drawn wall's centre line to within one step.
-  //
-  // "Minus what earlier spaces drew over" subtracts only the earlier spaces near it (within
-  // kNearM of its box): subtracting the union of all of them, grown one space at a time, made
-  // this step quadratic in the number of spaces (10 000 rooms: minutes). Far spaces change
-  // nothing in the difference.
-  constexpr double kNearM = 0.01;
   std::vector<Geometry> grown(inputs.size());
-  {
-    const Eigen::Vector2d margin = Eigen::Vector2d::Constant(kNearM);
-    sim::BoxGrid placed(8.0);
-    const Geometry nothing = geos.empty_polygon();
+  const bool whole_plan = static_cast<int>(inputs.size()) <= kMaxSpacesForWholePlanGeometries;
+  Geometry occupied = geos.empty_polygon();
+  if (whole_plan) {
     for (int i : order) {
-      Box box;
-      for (const auto& p : drawn[i].polygons()) box.add(p);
-      std::vector<const Geometry*> near;
-      for (const int j : placed.near(box.lo - margin, box.hi + margin)) near.push_back(&grown[j]);
-      grown[i] = (near.empty() ? drawn[i].minus(nothing) : drawn[i].minus(geos.union_all(near)))
-                     .polygonal();
-      Box grown_box;
-      for (const auto& p : grown[i].polygons()) grown_box.add(p);
-      if (!grown[i].empty()) placed.add(i, grown_box.lo, grown_box.hi);
+      grown[i] = drawn[i].minus(occupied).polygonal();
+      occupied = occupied.united(grown[i]).polygonal();
     }
+  } else {
+    subtract_near_earlier(geos, drawn, order, grown);
+    std::vector<const Geometry*> grown_ptrs;
+    for (const Geometry& g : grown) grown_ptrs.push_back(&g);
+    occupied = geos.union_all(grown_ptrs).polygonal();
   }
-  std::vector<const Geometry*> grown_ptrs;
-  for (const Geometry& g : grown) grown_ptrs.push_back(&g);
-  const Geometry occupied = geos.union_all(grown_ptrs).polygonal();
   constexpr double kGrowStepM = 0.05;
   const int steps = static_cast<int>(std::ceil(grow_m / kGrowStepM));
   Geometry unclaimed = footprint.minus(occupied).polygonal();
-  if (static_cast<int>(inputs.size()) <= kMaxSpacesForOneUnclaimedGeometry) {
+  if (whole_plan) {
     for (int step = 0; step < steps && !unclaimed.empty(); ++step) {
       for (int i : order) {
         if (grown[i].empty()) continue;
