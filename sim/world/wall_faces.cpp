@@ -212,11 +212,28 @@ std::vector<Piece> cut_at_closed_door(const std::vector<Piece>& pieces, const Do
 }
 
 /// Step 2: closed doors, one after the other (a later door cuts the pieces an earlier one made).
+///
+/// A door cuts only faces on its own face lines, and the pieces of a face stay on that face's line,
+/// so each face is cut by the closed doors near it, in door order, on its own: the pieces, and
+/// their order, of cutting every face at every door in turn, without a pass over all faces per
+/// door (10 000 doors: quadratic).
 void cut_at_closed_doors(const FloorPlan& plan, std::vector<Piece>& pieces) {
+  BoxGrid doors(4.0);
   for (std::size_t d = 0; d < plan.doors.size(); ++d) {
-    if (plan.doors[d].open) continue;
-    pieces = cut_at_closed_door(pieces, plan.doors[d], static_cast<int>(d));
+    const Door& door = plan.doors[d];
+    if (door.open) continue;
+    const double reach = 0.5 * door.width_m + 0.5 * door.wall_thickness_m + 1e-3;
+    doors.add(static_cast<int>(d), door.center_m - Eigen::Vector2d::Constant(reach),
+              door.center_m + Eigen::Vector2d::Constant(reach));
   }
+  std::vector<Piece> cut;
+  for (const Piece& p : pieces) {
+    std::vector<Piece> of_p{p};
+    for (const int d : doors.near(p.a.cwiseMin(p.b), p.a.cwiseMax(p.b)))
+      of_p = cut_at_closed_door(of_p, plan.doors[d], d);
+    cut.insert(cut.end(), of_p.begin(), of_p.end());
+  }
+  pieces = std::move(cut);
 }
 
 /// The pieces on a grid, each under its box grown by `max_gap_m`: a face that faces p across a
