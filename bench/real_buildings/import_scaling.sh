@@ -48,3 +48,5 @@ for gap in 0 0.2; do
       "$(awk -v a="$s" -v b="$first" 'BEGIN { printf "%.1fx", a / b }')" "$extra"
   done
 done
+/usr/bin/python3 "$here/comb_plan.py" 9999 "$work/plan.geojson" 0 9999
+echo "one corridor and 9 999 rooms: $(run "$bin" "$work/plan.geojson") (seconds, peak MB)"
