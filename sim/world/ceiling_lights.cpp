@@ -4,7 +4,9 @@
 #include <cmath>
 
 #include "core/rng.hpp"
+#include "sim/world/box_grid.hpp"
 #include "sim/world/plan_queries.hpp"
+#include "sim/world/region_locator.hpp"
 
 namespace wifislam::sim {
 
@@ -14,17 +16,22 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
   const double z = plan.wall_height_m - 0.01;
   const Eigen::Vector2d size(0.6, 0.6);
   std::vector<CeilingLight> lights;
+  // Free space and the lights so far are looked up near the candidate, not scanned whole (a
+  // building of 10 000 rooms has tens of thousands of lights): the same answers.
+  const RegionLocator free_space(plan.free_space);
+  BoxGrid near_lights(spacing);
   auto try_add = [&](const Eigen::Vector2d& p, double min_gap_m) {
     // All four corners in free space, so no light pokes into a wall.
     for (double sx : {-0.5, 0.5})
       for (double sy : {-0.5, 0.5})
-        if (!regions_contain(plan.free_space, p + Eigen::Vector2d(sx * size.x(), sy * size.y())))
-          return;
-    for (const auto& l : lights)
-      if ((l.center_m.head<2>() - p).norm() < min_gap_m) return;
+        if (free_space.find(p + Eigen::Vector2d(sx * size.x(), sy * size.y())) < 0) return;
+    const Eigen::Vector2d gap = Eigen::Vector2d::Constant(min_gap_m);
+    for (const int l : near_lights.near(p - gap, p + gap))
+      if ((lights[l].center_m.head<2>() - p).norm() < min_gap_m) return;
     CeilingLight light;
     light.center_m = Eigen::Vector3d(p.x(), p.y(), z);
     light.size_m = size;
+    near_lights.add(static_cast<int>(lights.size()), p, p);
     lights.push_back(light);
   };
   // Along corridors each light is shifted by up to 20 % of the spacing (seeded): with a strictly
@@ -52,13 +59,14 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
     Eigen::Vector2d lo = space.polygon_m[0], hi = space.polygon_m[0];
     for (const auto& v : space.polygon_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     const Eigen::Vector2d mid = 0.5 * (lo + hi);
+    const RegionLocator inside({PolygonWithHoles2{space.polygon_m, {}}});  // == ring_contains
     const double step = spacing / 3;
     const int nx = static_cast<int>(std::ceil(0.5 * (hi.x() - lo.x()) / step));
     const int ny = static_cast<int>(std::ceil(0.5 * (hi.y() - lo.y()) / step));
     for (int j = -ny; j <= ny; ++j)
       for (int i = -nx; i <= nx; ++i) {
         const Eigen::Vector2d p = mid + step * Eigen::Vector2d(i, j);
-        if (ring_contains(space.polygon_m, p)) try_add(p, spacing);
+        if (inside.find(p) == 0) try_add(p, spacing);
       }
   }
   for (const Room& room : plan.rooms) {

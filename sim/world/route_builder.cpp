@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "sim/world/plan_queries.hpp"
+#include "sim/world/region_locator.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
 namespace wifislam::sim {
@@ -146,6 +147,7 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
   const double clearance = route.min_wall_clearance_m;
   std::optional<WallFaceGrid> walls;
   if (clearance > 0.0) walls.emplace(plan, clearance);
+  const RegionLocator walkable(plan.walkable);  // ~20 samples a metre: not every edge per sample
   for (std::size_t k = 0; k < sampler.path.points_m.size(); ++k) {
     const Eigen::Vector2d& p = sampler.path.points_m[k];
     const int leg = sampler.leg[k];
@@ -161,7 +163,7 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
       return by_waypoints ? fmt::format("route.waypoints_m[{}]", leg + 1)
                           : fmt::format("route.nodes[{}]", leg + 1);
     };
-    if (!regions_contain(plan.walkable, p))
+    if (walkable.find(p) < 0)
       scene.reject(key(), where() + ": outside the corridors, open areas and walkable spaces");
     if (!walls) continue;
     const double d = walls->nearest_within_m(p, clearance);
