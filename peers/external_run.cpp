@@ -125,12 +125,29 @@ ExternalRunResult run_external_system(const ExternalRunRequest& request) {
   // Everything the system started has ended when this returns (process_runner.hpp).
   result.process = run_process(process);
   result.status = result.process.describe(request.system.timeout_s);
+  // The system runs as the user: it could replace the run's folder under construction ($2/../..)
+  // or its scratch folder ($2/..) by a link to elsewhere. Nothing is then moved, read or deleted
+  // through the link (remove_all of a link removes the link only).
+  const auto real_directory = [](const fs::path& p) {
+    std::error_code ec;
+    return fs::symlink_status(p, ec).type() == fs::file_type::directory;
+  };
+  if (!real_directory(staging)) {
+    throw IoError(staging.string() +
+                  ": the external system replaced the run folder under construction; nothing in "
+                  "it is used or removed");
+  }
   ImportedOutputs imported;
   const fs::path system_dir = staging / kSystemFolder;
   try {
     // Its folder, as it left it (links kept as links, never followed), becomes system/; a folder
     // it removed or replaced by something else is the run's failure, not ours.
     std::error_code ec;
+    if (!real_directory(scratch)) {
+      fs::remove(scratch, ec);  // the link, not what it names
+      fs::create_directories(system_dir);
+      throw ParseError(values.out.string(), "", "the system removed or replaced its folder");
+    }
     if (fs::is_directory(fs::symlink_status(values.out, ec))) {
       fs::rename(values.out, system_dir);
     } else {
@@ -159,7 +176,8 @@ ExternalRunResult run_external_system(const ExternalRunRequest& request) {
   }
   result.status = final_paths(result.status, values.out, staging, final_dir);
   std::vector<std::string> shown_argv;
-  for (const std::string& a : argv) shown_argv.push_back(final_paths(a, values.out, staging, final_dir));
+  for (const std::string& a : argv)
+    shown_argv.push_back(final_paths(a, values.out, staging, final_dir));
   std::error_code ec;
   fs::remove_all(staging / run_folder::kRun, ec);  // ours to write, whatever the system left there
   write_file_atomic(staging / run_folder::kRun,

@@ -103,10 +103,10 @@ class ExternalContainment : public ::testing::Test {
 
 TEST_F(ExternalContainment, WhatTheSystemStartedIsGoneWhenItsRunEndsSetsidIncluded) {
   const std::string seconds = unique_seconds(3142);
-  const fs::path system = system_file(
-      "cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\nsetsid sleep " + seconds +
-          " &\nsleep " + seconds + "1 &\nsleep 1\nexit 0\n",
-      "{trajectory: trajectory.txt}");
+  const fs::path system =
+      system_file("cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\nsetsid sleep " + seconds +
+                      " &\nsleep " + seconds + "1 &\nsleep 1\nexit 0\n",
+                  "{trajectory: trajectory.txt}");
   const test::CliResult r = test::run_wifislam(slam_args(system), scratch_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(processes_with_argument(seconds).empty()) << "the setsid'd sleep outlived the run";
@@ -166,7 +166,8 @@ TEST_F(ExternalContainment, OutputsAreNeverFollowedOutOfTheSystemsFolder) {
   for (const Case& c : cases) {
     SCOPED_TRACE(c.script);
     fs::remove_all(scratch_ / "run");
-    const test::CliResult r = test::run_wifislam(slam_args(system_file(c.script, c.outputs)), scratch_);
+    const test::CliResult r =
+        test::run_wifislam(slam_args(system_file(c.script, c.outputs)), scratch_);
     EXPECT_EQ(r.exit_code, 5) << r.err;
     EXPECT_NE(r.err.find(c.why), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(scratch_ / "run" / "trajectory.txt"));
@@ -185,15 +186,43 @@ TEST_F(ExternalContainment, WhatTheSystemDoesAroundItsFolderIsItsFailureNotOurs)
         std::string("rm -rf \"$(dirname \"$2\")\"")}) {
     SCOPED_TRACE(mischief);
     fs::remove_all(scratch_ / "run");
-    const fs::path system = system_file(
-        "cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\n" + mischief + "\n",
-        "{trajectory: trajectory.txt}");
+    const fs::path system =
+        system_file("cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\n" + mischief + "\n",
+                    "{trajectory: trajectory.txt}");
     const test::CliResult r = test::run_wifislam(slam_args(system), scratch_);
     // Around {out} there is nothing of ours: the run succeeds, or fails as the system's run
     // (its folder removed), with its run folder; never an internal error or a bad-input exit.
     EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 5) << r.exit_code << ": " << r.err;
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
     EXPECT_TRUE(fs::is_regular_file(scratch_ / "run" / "run.json")) << r.err;
+  }
+}
+
+TEST_F(ExternalContainment, ASystemThatLinksItsFoldersElsewhereMakesUsDeleteNothingThere) {
+  // A folder of the user's that the system points the run's folders at: after the run, every
+  // file in it is still there. $2/.. is the system's scratch folder, $2/../.. the run folder
+  // under construction.
+  const fs::path victim = scratch_ / "victim";
+  for (const std::string& mischief :
+       {std::string("d=\"$(dirname \"$2\")\"; rm -rf \"$d\"; ln -s \"") + victim.string() +
+            "\" \"$d\"",
+        std::string("d=\"$(dirname \"$(dirname \"$2\")\")\"; mv \"$d\" \"$d.moved\"; ln -s \"") +
+            victim.string() + "\" \"$d\""}) {
+    SCOPED_TRACE(mischief);
+    fs::remove_all(scratch_ / "run");
+    fs::remove_all(victim);
+    fs::create_directories(victim / "out" / "keep");
+    for (const char* f : {"trajectory.txt", "graph.json", "run", "thesis.tex", "out/x"})
+      std::ofstream(victim / f) << "mine\n";
+    const fs::path system =
+        system_file("cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\n" + mischief + "\n",
+                    "{trajectory: trajectory.txt}");
+    const test::CliResult r = test::run_wifislam(slam_args(system), scratch_);
+    EXPECT_NE(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+    for (const char* f : {"trajectory.txt", "graph.json", "run", "thesis.tex", "out/x"})
+      EXPECT_EQ(read_file(victim / f), "mine\n") << f;
+    EXPECT_TRUE(fs::is_directory(victim / "out" / "keep"));
   }
 }
 
