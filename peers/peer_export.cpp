@@ -13,6 +13,7 @@
 #include "core/output_folder.hpp"
 #include "core/tum_file_list.hpp"
 #include "peers/orbslam2_settings.hpp"
+#include "peers/rtabmap_calibration.hpp"
 
 namespace wifislam::peers {
 
@@ -72,40 +73,17 @@ std::optional<TumCamera> camera_by_folder_name(const fs::path& folder) {
 }
 
 void rtabmap_warnings(PeerExportSummary& s, const DatasetCalibration& calibration) {
+  // The tool reads rtabmap_calib.yaml, which we write from the dataset's intrinsics, unless the
+  // folder's name holds a TUM camera's name: then it writes that camera's calibration over ours.
   const std::string folder = s.output.filename().string();
-  if (!s.tum_camera) {
-    const TumCamera* closest = nullptr;
-    for (const TumCamera& camera : tum_cameras()) {
-      if (!closest || largest_difference_px(s.intrinsics, camera) <
-                          largest_difference_px(s.intrinsics, *closest)) {
-        closest = &camera;
-      }
-    }
+  for (const TumCamera& camera : tum_cameras()) {
+    if (folder.find(camera.name) == std::string::npos) continue;
+    if (s.tum_camera && camera.name == std::string(s.tum_camera->name)) continue;
     s.warnings.push_back(fmt::format(
-        "the dataset's intrinsics ({}) match no TUM camera; rtabmap-rgbd_dataset takes intrinsics "
-        "only from 'freiburg1', 'freiburg2' or 'freiburg3' in the folder's name, so it would run "
-        "with another camera's (the closest, {}, is off by {:.1f} px) or, without such a name, "
-        "with none. For exact intrinsics set the scene's sensors.camera to a TUM camera's (e.g. "
-        "{}: {}) and generate again, or use --for orbslam2, whose settings carry any intrinsics",
-        describe_intrinsics(s.intrinsics), closest->name,
-        largest_difference_px(s.intrinsics, *closest), closest->name,
-        describe_intrinsics(closest->intrinsics)));
-  } else {
-    for (const TumCamera& camera : tum_cameras()) {
-      if (camera.name != std::string(s.tum_camera->name) &&
-          folder.find(camera.name) != std::string::npos) {
-        s.warnings.push_back(
-            fmt::format("the folder's name '{}' says {}, but the dataset's intrinsics are {}'s; "
-                        "rtabmap-rgbd_dataset would use {}'s: rename the folder",
-                        folder, camera.name, s.tum_camera->name, camera.name));
-      }
-    }
-    if (folder.find(s.tum_camera->name) == std::string::npos) {
-      s.warnings.push_back(fmt::format(
-          "rtabmap-rgbd_dataset takes the intrinsics from the folder's name: rename '{}' to "
-          "contain '{}' (e.g. '{}_{}') before running it",
-          folder, s.tum_camera->name, folder, s.tum_camera->name));
-    }
+        "the folder's name '{}' says {}, so rtabmap-rgbd_dataset would replace {} with {}'s "
+        "intrinsics ({}), not the dataset's ({}): use a name without 'freiburg1/2/3'",
+        folder, camera.name, kRtabmapCalibration, camera.name,
+        describe_intrinsics(camera.intrinsics), describe_intrinsics(s.intrinsics)));
   }
   if (calibration.depth_units_per_metre != dataset::kDepthUnitsPerMetre) {
     s.warnings.push_back(fmt::format(
@@ -230,6 +208,8 @@ void write_peer_files(const ExportPlan& plan, const DatasetCalibration& calibrat
                       const fs::path& staging, PeerExportSummary& summary) {
   const std::string dir = summary.output.string();
   if (rtabmap) {
+    write_file_atomic(staging / kRtabmapCalibration,
+                      rtabmap_calibration_yaml(calibration.intrinsics));
     rtabmap_warnings(summary, calibration);
     summary.run_command = fmt::format("rtabmap-rgbd_dataset {}", dir);
     return;

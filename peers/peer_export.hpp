@@ -9,8 +9,11 @@
 //                                                       <t> (the tool reads times from the names
 //                                                       and pairs the two folders by order)
 //               groundtruth.txt                        link to the dataset's (RMSE in its report)
-//             The tool takes intrinsics from "freiburg1/2/3" in the folder's name only, so the
-//             export names the TUM camera the calibration matches, or warns that none does.
+//               rtabmap_calib.yaml                     the dataset's intrinsics in RTAB-Map's own
+//                                                       calibration format (rtabmap_calibration)
+//             The tool reads that file whatever the folder is called, unless the name holds
+//             "freiburg1/2/3": then it writes that TUM Kinect's over it, and the export warns when
+//             that camera is not the dataset's.
 //   orbslam2  ORB-SLAM2's Examples/RGB-D/rgbd_tum <vocabulary> <settings> <dir> <associations>:
 //               rgb/<t>.png, depth/<t>.png             links under each image's own stamp
 //               associations.txt                       "t_rgb rgb/<t>.png t_depth depth/<t>.png"

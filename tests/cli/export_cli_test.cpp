@@ -3,8 +3,9 @@
 // "0.000000.png"), rgb_sync and depth_sync hold the same names, ORB-SLAM2's associations.txt names
 // exactly the linked files, every link resolves to the dataset's own image (same bytes, nothing
 // copied), the settings file reads back through OpenCV's FileStorage (as ORB-SLAM2 reads it) with
-// the calibration's intrinsics; refusals are exit 2 before anything is written, and a calibration
-// that is no TUM Kinect's warns.
+// the calibration's intrinsics, and so does rtabmap_calib.yaml (as RTAB-Map's CameraModel::load
+// reads it); refusals are exit 2 before anything is written, and a folder whose name would make
+// rtabmap-rgbd_dataset use another TUM Kinect's intrinsics warns.
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,6 +21,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core/persistence.hpp>
 
+#include "core/camera_intrinsics.hpp"
 #include "core/dataset_calibration.hpp"
 #include "core/timestamp.hpp"
 #include "core/tum_file_list.hpp"
@@ -200,31 +202,76 @@ TEST_F(ExportCli, Orbslam2LayoutListsExactlyTheLinkedImagesAndCarriesTheCalibrat
   expect_links_to(out / "groundtruth.txt", root_ / "default_ds" / "groundtruth.txt");
 }
 
-TEST_F(ExportCli, RtabmapExportOfACalibrationNoTumCameraHasWarns) {
-  const fs::path out = scratch_ / "default_freiburg1";
-  const auto r = export_to("default_ds", "rtabmap", out);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("warning: the dataset's intrinsics (fx 525 fy 525 cx 319.5 cy 239.5 "
-                       "(640x480)) match no TUM camera"),
-            std::string::npos)
-      << r.err;
-  EXPECT_NE(r.out.find("none matches"), std::string::npos) << r.out;
-  const auto j = nlohmann::json::parse(read_file(out / "export.json"));
-  EXPECT_TRUE(j.at("tum_camera").is_null());
-  EXPECT_EQ(j.at("warnings").size(), 1u) << j.dump();
+/// rtabmap_calib.yaml read as RTAB-Map's CameraModel::load reads it (OpenCV FileStorage), with the
+/// shapes its UASSERTs demand: camera_matrix 3x3, distortion_coefficients 1x(4|5|8),
+/// rectification_matrix 3x3, projection_matrix 3x4, local_transform 3x4.
+void expect_rtabmap_calibration(const fs::path& file, const CameraIntrinsics& k) {
+  cv::FileStorage fs(file.string(), cv::FileStorage::READ);
+  ASSERT_TRUE(fs.isOpened()) << file;
+  EXPECT_EQ(static_cast<std::string>(fs["camera_name"]), "rtabmap_calib");
+  EXPECT_EQ(static_cast<int>(fs["image_width"]), k.width_px);
+  EXPECT_EQ(static_cast<int>(fs["image_height"]), k.height_px);
+  const auto matrix = [&](const char* key, int rows, int cols) {
+    const cv::FileNode n = fs[key];
+    EXPECT_FALSE(n.empty()) << key;
+    EXPECT_EQ(static_cast<int>(n["rows"]), rows) << key;
+    EXPECT_EQ(static_cast<int>(n["cols"]), cols) << key;
+    std::vector<double> data;
+    n["data"] >> data;
+    EXPECT_EQ(data.size(), static_cast<std::size_t>(rows * cols)) << key;
+    return data;
+  };
+  const std::vector<double> kk = matrix("camera_matrix", 3, 3);
+  EXPECT_EQ(kk, (std::vector<double>{k.fx_px, 0, k.cx_px, 0, k.fy_px, k.cy_px, 0, 0, 1}));
+  EXPECT_EQ(matrix("distortion_coefficients", 1, 5), std::vector<double>(5, 0.0));
+  EXPECT_EQ(static_cast<std::string>(fs["distortion_model"]), "plumb_bob");
+  EXPECT_EQ(matrix("rectification_matrix", 3, 3),
+            (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(matrix("projection_matrix", 3, 4),
+            (std::vector<double>{k.fx_px, 0, k.cx_px, 0, 0, k.fy_px, k.cy_px, 0, 0, 0, 1, 0}));
+  // rtabmap-rgbd_dataset's own optical rotation (camera base frame -> optical frame).
+  EXPECT_EQ(matrix("local_transform", 3, 4),
+            (std::vector<double>{0, 0, 1, 0, -1, 0, 0, 0, 0, -1, 0, 0}));
 }
 
-TEST_F(ExportCli, RtabmapExportSaysWhichNameTheFolderNeeds) {
-  const fs::path out = scratch_ / "tiny";
-  const auto r = export_to("fr1_ds", "rtabmap", out);
+TEST_F(ExportCli, RtabmapCalibrationCarriesTheDatasetsOwnIntrinsicsWhateverTheFolderIsCalled) {
+  // Our default camera (525 px) is no TUM Kinect's: the calibration file carries it anyway.
+  const fs::path out = scratch_ / "rgbd_export";
+  const auto r = export_to("default_ds", "rtabmap", out);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("rename 'tiny' to contain 'freiburg1'"), std::string::npos) << r.err;
-  const fs::path wrong = scratch_ / "tiny_freiburg3";
-  const auto w = export_to("fr1_ds", "rtabmap", wrong);
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("none matches"), std::string::npos) << r.out;
+  expect_rtabmap_calibration(out / "rtabmap_calib.yaml", CameraIntrinsics{});
+  const auto j = nlohmann::json::parse(read_file(out / "export.json"));
+  EXPECT_TRUE(j.at("tum_camera").is_null());
+  EXPECT_TRUE(j.at("warnings").empty()) << j.dump();
+
+  const fs::path fr1 = scratch_ / "fr1_anything";
+  ASSERT_EQ(export_to("fr1_ds", "rtabmap", fr1).exit_code, 0);
+  CameraIntrinsics freiburg1;
+  freiburg1.fx_px = 517.3;
+  freiburg1.fy_px = 516.5;
+  freiburg1.cx_px = 318.6;
+  freiburg1.cy_px = 255.3;
+  expect_rtabmap_calibration(fr1 / "rtabmap_calib.yaml", freiburg1);
+}
+
+TEST_F(ExportCli, AFolderNamedForAnotherTumCameraWarnsThatRtabmapWouldUseThatCamera) {
+  // The tool replaces rtabmap_calib.yaml with the named Kinect's calibration.
+  const auto w = export_to("fr1_ds", "rtabmap", scratch_ / "tiny_freiburg3");
   ASSERT_EQ(w.exit_code, 0) << w.err;
-  EXPECT_NE(w.err.find("says freiburg3, but the dataset's intrinsics are freiburg1's"),
+  EXPECT_NE(w.err.find("says freiburg3, so rtabmap-rgbd_dataset would replace rtabmap_calib.yaml "
+                       "with freiburg3's intrinsics"),
             std::string::npos)
       << w.err;
+  const auto d = export_to("default_ds", "rtabmap", scratch_ / "default_freiburg1");
+  ASSERT_EQ(d.exit_code, 0) << d.err;
+  EXPECT_NE(d.err.find("not the dataset's (fx 525 fy 525 cx 319.5 cy 239.5"), std::string::npos)
+      << d.err;
+  // A name holding the dataset's own camera is no conflict.
+  const auto same = export_to("fr1_ds", "rtabmap", scratch_ / "tiny_freiburg1_again");
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_EQ(same.err.find("warning"), std::string::npos) << same.err;
 }
 
 TEST_F(ExportCli, AnExistingExportIsReplacedOnlyWithForce) {

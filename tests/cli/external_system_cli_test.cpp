@@ -162,6 +162,51 @@ TEST_F(ExternalSystemCli, OwnBinaryThroughTheContractScoresAsTheBuiltInFrontEnd)
   EXPECT_TRUE(builtin.at("loop_closures").is_object());
 }
 
+/// A stand-in for rtabmap-rgbd_dataset (RTAB-Map is not in Debian): it checks the export has the
+/// calibration file, writes the export's ground truth as rtabmap_poses.txt (TUM lines, as
+/// graph::exportPoses format 1 does), and a database whose Link table holds one accepted loop
+/// closure between two graph nodes, one to a node of an earlier map (after an odometry reset: not
+/// in the exported poses) and one neighbour link (type 0).
+constexpr const char* kRtabmapStandIn = R"sh(#!/bin/sh
+set -eu
+out="$2"; export_dir="$3"
+test -f "$export_dir/rtabmap_calib.yaml"
+test -d "$export_dir/rgb_sync"
+grep -v '^#' "$export_dir/groundtruth.txt" > "$out/rtabmap_poses.txt"
+first=$(head -n 1 "$out/rtabmap_poses.txt" | cut -d ' ' -f 1)
+last=$(tail -n 1 "$out/rtabmap_poses.txt" | cut -d ' ' -f 1)
+sqlite3 "$out/rtabmap.db" "CREATE TABLE Node(id INTEGER, stamp REAL);
+  CREATE TABLE Link(from_id INTEGER, to_id INTEGER, type INTEGER);
+  INSERT INTO Node VALUES (1, $first), (2, $last), (3, 1000.5);
+  INSERT INTO Link VALUES (2, 1, 1), (3, 1, 1), (2, 1, 0);"
+)sh";
+
+TEST_F(ExternalSystemCli, ShippedRtabmapWrapperKeepsOnlyClosuresBetweenNodesOfTheExportedGraph) {
+  const fs::path tool = scratch_ / "rtabmap-rgbd_dataset";
+  write_file(tool, kRtabmapStandIn);
+  fs::permissions(tool, fs::perms::owner_all);
+  const fs::path run = scratch_ / "run";
+  const test::CliResult r = test::run_wifislam(
+      "slam " + dataset().string() + " --frontend external:rtabmap -o " + run.string(), scratch_,
+      {}, "RTABMAP_DATASET_TOOL='" + tool.string() + "'");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(read_file(run / "loop_closures.csv"));
+  std::string header, closure, more;
+  std::getline(lines, header);
+  std::getline(lines, closure);
+  EXPECT_FALSE(std::getline(lines, more)) << "more than the one closure in the graph: " << more;
+  EXPECT_NE(header.find("from_time"), std::string::npos) << header;
+  const test::CliResult e = test::run_wifislam(
+      "eval " + run.string() + " --gt " + dataset().string() + " -o " + (run / "eval").string(),
+      scratch_);
+  ASSERT_EQ(e.exit_code, 0) << e.err;
+  const nlohmann::json metrics = nlohmann::json::parse(read_file(run / "eval" / "metrics.json"));
+  EXPECT_LT(metrics.at("trajectory").at("ate_rmse_m").get<double>(), 1e-3) << metrics.dump(1);
+  const nlohmann::json& closures = metrics.at("loop_closures");
+  EXPECT_TRUE(closures.at("available").get<bool>()) << closures.dump(1);
+  EXPECT_EQ(closures.at("loop_closure_csv_rows").get<int>(), 1) << closures.dump(1);
+}
+
 TEST_F(ExternalSystemCli, ATimedOutSystemIsKilledAndSaysSo) {
   const auto start = std::chrono::steady_clock::now();
   const test::CliResult r = slam_with_system(R"(version: 1
