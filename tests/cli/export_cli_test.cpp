@@ -225,8 +225,7 @@ void expect_rtabmap_calibration(const fs::path& file, const CameraIntrinsics& k)
   EXPECT_EQ(kk, (std::vector<double>{k.fx_px, 0, k.cx_px, 0, k.fy_px, k.cy_px, 0, 0, 1}));
   EXPECT_EQ(matrix("distortion_coefficients", 1, 5), std::vector<double>(5, 0.0));
   EXPECT_EQ(static_cast<std::string>(fs["distortion_model"]), "plumb_bob");
-  EXPECT_EQ(matrix("rectification_matrix", 3, 3),
-            (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+  EXPECT_EQ(matrix("rectification_matrix", 3, 3), (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
   EXPECT_EQ(matrix("projection_matrix", 3, 4),
             (std::vector<double>{k.fx_px, 0, k.cx_px, 0, 0, k.fy_px, k.cy_px, 0, 0, 0, 1, 0}));
   // rtabmap-rgbd_dataset's own optical rotation (camera base frame -> optical frame).
