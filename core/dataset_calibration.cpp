@@ -34,19 +34,44 @@ std::string calibration_to_yaml(const DatasetCalibration& c) {
   out << YAML::Key << "depth" << YAML::Value << YAML::BeginMap << YAML::Key << "units_per_metre";
   number(c.depth_units_per_metre);
   out << YAML::EndMap;
-  const Eigen::Quaterniond q(c.camera_in_base.linear());
-  out << YAML::Key << "camera_in_base" << YAML::Comment("camera optical frame in the robot base")
-      << YAML::Value << YAML::BeginMap;
-  out << YAML::Key << "translation_m" << YAML::Value << YAML::Flow << YAML::BeginSeq;
-  for (int i = 0; i < 3; ++i) out << format_double_exact(c.camera_in_base.translation()[i]);
-  out << YAML::EndSeq;
-  out << YAML::Key << "rotation_xyzw" << YAML::Value << YAML::Flow << YAML::BeginSeq
-      << format_double_exact(q.x()) << format_double_exact(q.y()) << format_double_exact(q.z())
-      << format_double_exact(q.w()) << YAML::EndSeq;
-  out << YAML::EndMap;
+  auto pose_map = [&](const char* key, const char* comment, const Pose& pose) {
+    const Eigen::Quaterniond q(pose.linear());
+    out << YAML::Key << key << YAML::Comment(comment) << YAML::Value << YAML::BeginMap;
+    out << YAML::Key << "translation_m" << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (int i = 0; i < 3; ++i) out << format_double_exact(pose.translation()[i]);
+    out << YAML::EndSeq;
+    out << YAML::Key << "rotation_xyzw" << YAML::Value << YAML::Flow << YAML::BeginSeq
+        << format_double_exact(q.x()) << format_double_exact(q.y()) << format_double_exact(q.z())
+        << format_double_exact(q.w()) << YAML::EndSeq;
+    out << YAML::EndMap;
+  };
+  pose_map("camera_in_base", "camera optical frame in the robot base", c.camera_in_base);
   if (c.odometry_rate_hz) {
     out << YAML::Key << "odometry" << YAML::Value << YAML::BeginMap << YAML::Key << "rate_hz";
     number(*c.odometry_rate_hz);
+    out << YAML::EndMap;
+  }
+  if (c.imu) {
+    const ImuCalibration& imu = *c.imu;
+    out << YAML::Key << "imu" << YAML::Comment("imu.csv") << YAML::Value << YAML::BeginMap
+        << YAML::Key << "rate_hz";
+    number(imu.rate_hz);
+    pose_map("imu_in_base", "IMU frame in the robot base", imu.imu_in_base);
+    out << YAML::Key << "T_cam_imu"
+        << YAML::Comment("IMU frame to camera optical frame, 4x4 row-major (Kalibr)") << YAML::Value
+        << YAML::Flow << YAML::BeginSeq;
+    const Eigen::Matrix4d t = c.camera_from_imu().matrix();
+    for (int r = 0; r < 4; ++r)
+      for (int col = 0; col < 4; ++col) out << format_double_exact(t(r, col));
+    out << YAML::EndSeq;
+    for (const auto& [key, value] :
+         {std::pair{"gyroscope_noise_density", imu.gyroscope_noise_density},
+          std::pair{"gyroscope_random_walk", imu.gyroscope_random_walk},
+          std::pair{"accelerometer_noise_density", imu.accelerometer_noise_density},
+          std::pair{"accelerometer_random_walk", imu.accelerometer_random_walk}}) {
+      out << YAML::Key << key;
+      number(value);
+    }
     out << YAML::EndMap;
   }
   if (!c.sensor_model.empty()) {
@@ -92,6 +117,24 @@ double number(const Ctx& ctx, const YAML::Node& n, const std::string& path) {
   return v;
 }
 
+/// {translation_m: [x, y, z], rotation_xyzw: [x, y, z, w]} under `path`.
+Pose read_pose(const Ctx& ctx, const YAML::Node& node, const std::string& path) {
+  const YAML::Node t = child(ctx, node, "translation_m", path, true);
+  const YAML::Node q = child(ctx, node, "rotation_xyzw", path, true);
+  if (!t.IsSequence() || t.size() != 3)
+    throw ParseError(ctx.where(t), path + ".translation_m", "expected [x, y, z]");
+  if (!q.IsSequence() || q.size() != 4)
+    throw ParseError(ctx.where(q), path + ".rotation_xyzw", "expected [x, y, z, w]");
+  Eigen::Vector3d tv;
+  for (int i = 0; i < 3; ++i) tv[i] = number(ctx, t[i], path + ".translation_m");
+  double qv[4];
+  for (int i = 0; i < 4; ++i) qv[i] = number(ctx, q[i], path + ".rotation_xyzw");
+  const Eigen::Quaterniond quat(qv[3], qv[0], qv[1], qv[2]);
+  if (!(quat.norm() >= 1e-6))
+    throw ParseError(ctx.where(q), path + ".rotation_xyzw", "quaternion has zero length");
+  return pose_from_translation_quaternion(tv, quat);
+}
+
 }  // namespace
 
 DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
@@ -130,25 +173,29 @@ DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
     if (!(c.depth_units_per_metre > 0))
       throw ParseError(ctx.where(depth), "depth.units_per_metre", "must be positive");
   }
-  if (const YAML::Node mount = child(ctx, root, "camera_in_base", "", false)) {
-    const YAML::Node t = child(ctx, mount, "translation_m", "camera_in_base", true);
-    const YAML::Node q = child(ctx, mount, "rotation_xyzw", "camera_in_base", true);
-    if (!t.IsSequence() || t.size() != 3)
-      throw ParseError(ctx.where(t), "camera_in_base.translation_m", "expected [x, y, z]");
-    if (!q.IsSequence() || q.size() != 4)
-      throw ParseError(ctx.where(q), "camera_in_base.rotation_xyzw", "expected [x, y, z, w]");
-    Eigen::Vector3d tv;
-    for (int i = 0; i < 3; ++i) tv[i] = number(ctx, t[i], "camera_in_base.translation_m");
-    double qv[4];
-    for (int i = 0; i < 4; ++i) qv[i] = number(ctx, q[i], "camera_in_base.rotation_xyzw");
-    const Eigen::Quaterniond quat(qv[3], qv[0], qv[1], qv[2]);
-    if (quat.norm() < 1e-6)
-      throw ParseError(ctx.where(q), "camera_in_base.rotation_xyzw", "quaternion has zero length");
-    c.camera_in_base = pose_from_translation_quaternion(tv, quat);
-  }
+  if (const YAML::Node mount = child(ctx, root, "camera_in_base", "", false))
+    c.camera_in_base = read_pose(ctx, mount, "camera_in_base");
   if (const YAML::Node odo = child(ctx, root, "odometry", "", false))
     c.odometry_rate_hz =
         number(ctx, child(ctx, odo, "rate_hz", "odometry", true), "odometry.rate_hz");
+  if (const YAML::Node imu = child(ctx, root, "imu", "", false)) {
+    ImuCalibration i;
+    auto positive = [&](const char* key) {
+      const YAML::Node n = child(ctx, imu, key, "imu", true);
+      const double v = number(ctx, n, std::string("imu.") + key);
+      if (!(v >= 0.0 && std::isfinite(v)))
+        throw ParseError(ctx.where(n), std::string("imu.") + key, "must be a finite number >= 0");
+      return v;
+    };
+    i.rate_hz = positive("rate_hz");
+    if (!(i.rate_hz > 0.0)) throw ParseError(ctx.where(imu), "imu.rate_hz", "must be positive");
+    i.imu_in_base = read_pose(ctx, child(ctx, imu, "imu_in_base", "imu", true), "imu.imu_in_base");
+    i.gyroscope_noise_density = positive("gyroscope_noise_density");
+    i.gyroscope_random_walk = positive("gyroscope_random_walk");
+    i.accelerometer_noise_density = positive("accelerometer_noise_density");
+    i.accelerometer_random_walk = positive("accelerometer_random_walk");
+    c.imu = i;
+  }
   if (const YAML::Node model = child(ctx, root, "sensor_model", "", false)) {
     if (!model.IsMap()) throw ParseError(ctx.where(model), "sensor_model", "expected a mapping");
     for (const auto& group : model) {

@@ -20,6 +20,7 @@
 #include "core/dataset_format.hpp"
 #include "core/dataset_manifest.hpp"
 #include "core/error.hpp"
+#include "core/imu_csv.hpp"
 #include "core/text_lines.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
@@ -30,6 +31,7 @@
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/radio/radio_band.hpp"
 #include "sim/render/depth_png.hpp"
+#include "sim/robot/imu_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 
 namespace wifislam::sim {
@@ -134,6 +136,17 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
                              {"noise_per_rad", num(o.noise_per_rad)},
                              {"scale_error", num(o.scale_error)},
                              {"yaw_bias_radpm", num(o.yaw_bias_radpm)}}});
+  const ImuSpec& imu = s.sensors.imu;
+  if (imu.enabled) {
+    ImuCalibration i;
+    i.rate_hz = imu.rate_hz;
+    i.imu_in_base = ImuModel(pipeline.motion(), imu, s.seed).imu_in_base();
+    i.gyroscope_noise_density = imu.gyroscope_noise_density;
+    i.gyroscope_random_walk = imu.gyroscope_random_walk;
+    i.accelerometer_noise_density = imu.accelerometer_noise_density;
+    i.accelerometer_random_walk = imu.accelerometer_random_walk;
+    c.imu = i;
+  }
   return c;
 }
 
@@ -201,6 +214,7 @@ class DatasetWriter {
     while (auto generated = pipeline_.next()) take(*generated);
     while (!pending_.empty()) collect_oldest();
     pool_.reset();
+    write_imu();
     for (const RobotPause& p : pipeline_.motion().pauses())
       summary_.pauses += p.start <= pipeline_.schedule().end_time();
     finish();
@@ -276,6 +290,25 @@ class DatasetWriter {
     } else {
       take_frame(std::get<RgbdFrame>(generated.event), generated.camera_to_world);
     }
+  }
+
+  /// imu.csv: every IMU sample up to the run's end, on the events' clock. Not an event of the
+  /// stream: nothing we run reads it, and 200 rows a second would only slow the stream down.
+  void write_imu() {
+    const Scene& scene = pipeline_.scene();
+    if (!scene.sensors.imu.enabled) return;
+    const auto t_io = WallClock::now();
+    ImuModel imu(pipeline_.motion(), scene.sensors.imu, scene.seed);
+    TextOutput out(dir_ / dataset::kImu, imu_csv_header() + "\n");
+    const std::int64_t n = imu.sample_count(pipeline_.schedule().end_time());
+    for (std::int64_t k = 0; k < n; ++k) {
+      ImuReading reading = imu.measure(k);
+      reading.time = Timestamp::from_ns(reading.time.ns + pipeline_.time_origin().ns);
+      out.write(format_imu_csv_row(reading));
+    }
+    out.close();
+    summary_.imu_samples = n;
+    summary_.io_s += seconds_since(t_io);
   }
 
   void take_scan(const WifiScan& scan) {
@@ -392,6 +425,7 @@ class DatasetWriter {
     manifest.counts = {{"frames", options_.images ? summary_.frames : 0},
                        {"groundtruth_poses", summary_.frames},
                        {"odometry_readings", summary_.odometry_readings},
+                       {"imu_samples", summary_.imu_samples},
                        {"wifi_scans", summary_.wifi_scans},
                        {"wifi_scans_that_heard_nothing", summary_.wifi_scans_empty},
                        {"wifi_readings", summary_.wifi_readings},
@@ -405,6 +439,7 @@ class DatasetWriter {
     for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
                           dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
       files.push_back(f);
+    if (pipeline_.scene().sensors.imu.enabled) files.push_back(dataset::kImu);
     if (options_.images) files.push_back(dataset::kImageChecksums);
     for (const std::string& f : files) {
       manifest.files.push_back(describe_dataset_file(dir_, f));
@@ -490,6 +525,7 @@ std::string GenerateSummary::full_report() const {
       access_points, bssids, aps_heard_per_pause_mean, aps_heard_per_pause_min,
       aps_heard_per_pause_max);
   r += fmt::format("odometry          {} readings\n", odometry_readings);
+  if (imu_samples > 0) r += fmt::format("imu               {} samples\n", imu_samples);
   r += fmt::format("size              {:.1f} MB\n", bytes_written / 1e6);
   r += fmt::format("time              {:.2f} s total, {:.1f} frames/s ({} thread{})\n", total_s,
                    frames_per_second(), threads, threads == 1 ? "" : "s");

@@ -69,6 +69,7 @@ struct GenerateSummary {
   int threads = 1;
   std::int64_t frames = 0;
   std::int64_t odometry_readings = 0;
+  std::int64_t imu_samples = 0;
   std::int64_t wifi_scans = 0;        // scans with at least one reading (wifi.csv's scans)
   std::int64_t wifi_scans_empty = 0;  // scans that heard no access point (no row in wifi.csv)
   std::int64_t wifi_readings = 0;

@@ -203,6 +203,7 @@ RobotState MotionProfile::state_at(Timestamp t) const {
   if (rate > 0.0) {
     if (s1 > s0) {
       state.speed_mps = rate;
+      state.velocity_mps = rate * (path_.points_m[i + 1] - path_.points_m[i]) / (s1 - s0);
       state.yaw_rate_radps = rate * dh / (s1 - s0);
     } else if (dh != 0.0) {
       state.yaw_rate_radps = dh > 0.0 ? rate : -rate;

@@ -50,6 +50,9 @@ struct RobotState {
   double heading_rad = 0.0;     // direction of travel, counter-clockwise from +x, in (-pi, pi]
   double arc_length_m = 0.0;    // distance travelled along the route
   double speed_mps = 0.0;       // 0 during pauses
+  // The base's velocity in the world: along the route segment it is on (route points are close
+  // together, so the base follows the chords while its heading turns smoothly).
+  Eigen::Vector2d velocity_mps = Eigen::Vector2d::Zero();
   double yaw_rate_radps = 0.0;  // signed
   int pause_index = -1;         // the pause the robot is in, else -1
 

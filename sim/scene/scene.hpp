@@ -243,12 +243,28 @@ struct OdometrySpec {
   double yaw_bias_radpm = 0.002;  // systematic heading drift per metre (rad/m)
 };
 
+/// The IMU (sim/robot/imu_model.hpp): rigidly mounted on the robot base, its axes those of the
+/// base (x forward, y left, z up), at `position_m` in the base frame. Noise parameters are
+/// continuous-time, in the Kalibr/Allan convention; the defaults are the EuRoC MAV dataset's
+/// VI-Sensor IMU (ADIS16448, imu0/sensor.yaml), a common MEMS IMU many VIO systems ship settings
+/// for.
+struct ImuSpec {
+  bool enabled = true;  // false: no imu.csv
+  double rate_hz = 200.0;
+  Eigen::Vector3d position_m{0.0, 0.0, 0.1};    // on the base plate, under the camera
+  double gyroscope_noise_density = 1.6968e-4;   // rad / s / sqrt(Hz)
+  double gyroscope_random_walk = 1.9393e-5;     // rad / s^2 / sqrt(Hz)
+  double accelerometer_noise_density = 2.0e-3;  // m / s^2 / sqrt(Hz)
+  double accelerometer_random_walk = 3.0e-3;    // m / s^3 / sqrt(Hz)
+};
+
 struct Sensors {
   CameraSpec camera;
   DepthSensorSpec depth;
   ColorSensorSpec color;
   WifiScannerSpec wifi;
   OdometrySpec odometry;
+  ImuSpec imu;
   /// Unix time (whole seconds) of the route's start: every time a dataset or the in-memory
   /// stream carries is route time plus this (core/dataset_format.hpp). The simulation itself
   /// runs on route time, so the origin changes no pixel, pose or RSSI. 0 = times from 0 s.

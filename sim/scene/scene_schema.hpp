@@ -279,12 +279,24 @@ void visit(V& v, OdometrySpec& o) {
 }
 
 template <class V>
+void visit(V& v, ImuSpec& i) {
+  v.boolean("enabled", i.enabled);
+  v.number("rate_hz", i.rate_hz, Limits{10.0, 2000.0});
+  v.vec3("position_m", i.position_m, Limits{-2.0, 2.0}, Limits{0.0, 5.0});
+  v.number("gyroscope_noise_density", i.gyroscope_noise_density, Limits{0.0, 1.0});
+  v.number("gyroscope_random_walk", i.gyroscope_random_walk, Limits{0.0, 1.0});
+  v.number("accelerometer_noise_density", i.accelerometer_noise_density, Limits{0.0, 10.0});
+  v.number("accelerometer_random_walk", i.accelerometer_random_walk, Limits{0.0, 10.0});
+}
+
+template <class V>
 void visit(V& v, Sensors& s) {
   v.object("camera", s.camera);
   v.object("depth", s.depth);
   v.object("color", s.color);
   v.object("wifi", s.wifi);
   v.object("odometry", s.odometry);
+  v.object("imu", s.imu);
   v.uint64("time_origin_s", s.time_origin_s, dataset::kMaxTimeOriginS);
 }
 

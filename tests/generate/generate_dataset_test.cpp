@@ -10,12 +10,15 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgcodecs.hpp>
 
+#include "core/dataset_calibration.hpp"
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
+#include "core/imu_csv.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/wifi_csv.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/generator_stream.hpp"
+#include "sim/robot/imu_model.hpp"
 #include "tests/generate/test_scene.hpp"
 
 namespace wifislam::sim {
@@ -308,6 +311,53 @@ TEST(GenerateDataset, EveryStampIsRouteTimePlusTheSceneTimeOrigin) {
         std::string::npos);
   }
   for (const auto& dir : {d0, dd, d1}) fs::remove_all(dir);
+}
+
+TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheImu) {
+  const Scene scene = test::small_scene();
+  const fs::path dir = test::fresh_folder("imu");
+  const GenerateSummary summary = generate_dataset(scene, dir, short_run(2));
+  const std::vector<ImuReading> imu = read_imu_csv((dir / dataset::kImu).string());
+  // 200 Hz over the run (30 frames at 5 fps: its end is the last frame's time).
+  ASSERT_EQ(static_cast<std::int64_t>(imu.size()), summary.imu_samples);
+  const double run_s = summary.last_time.seconds() - summary.first_time.seconds();
+  EXPECT_EQ(summary.imu_samples, static_cast<std::int64_t>(std::floor(run_s * 200.0)) + 1);
+  EXPECT_EQ(imu.front().time, summary.first_time);  // the time origin, as every stamp
+  for (std::size_t i = 1; i < imu.size(); ++i)
+    ASSERT_EQ(imu[i].time.ns - imu[i - 1].time.ns, 5'000'000) << "row " << i;
+  // The robot stands through its first pause: gravity up, within the noise (sigma ~0.03 m/s^2
+  // white at 200 Hz, plus the bias walk).
+  const ImuReading& first = imu.front();
+  EXPECT_NEAR(first.specific_force_mps2.z(), kStandardGravityMps2, 0.2);
+  EXPECT_NEAR(first.specific_force_mps2.head<2>().norm(), 0.0, 0.2);
+  const auto manifest = nlohmann::json::parse(test::read_text(dir / dataset::kManifest));
+  EXPECT_EQ(manifest.at("counts").at("imu_samples"), summary.imu_samples);
+
+  const DatasetCalibration calibration = read_calibration_yaml(dir / dataset::kCalibration);
+  ASSERT_TRUE(calibration.imu.has_value());
+  EXPECT_EQ(calibration.imu->rate_hz, 200.0);
+  EXPECT_EQ(calibration.imu->gyroscope_noise_density, scene.sensors.imu.gyroscope_noise_density);
+  EXPECT_EQ(calibration.imu->accelerometer_random_walk,
+            scene.sensors.imu.accelerometer_random_walk);
+  // T_cam_imu takes the IMU's origin to where the camera sees it: below the camera (optical y
+  // points down) by the camera's height above the IMU.
+  const Eigen::Vector3d imu_in_camera = calibration.camera_from_imu().translation();
+  EXPECT_NEAR(imu_in_camera.y(), scene.sensors.camera.height_m - scene.sensors.imu.position_m.z(),
+              1e-12);
+
+  Scene without = scene;
+  without.sensors.imu.enabled = false;
+  const fs::path none = test::fresh_folder("no_imu");
+  generate_dataset(without, none, short_run(2));
+  EXPECT_FALSE(fs::exists(none / dataset::kImu));
+  EXPECT_FALSE(read_calibration_yaml(none / dataset::kCalibration).imu.has_value());
+  // Nothing else moves: the IMU draws from its own stream.
+  for (const char* file : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi})
+    EXPECT_EQ(test::read_text(dir / file), test::read_text(none / file)) << file;
+  EXPECT_EQ(test::read_text(dir / dataset::kImageChecksums),
+            test::read_text(none / dataset::kImageChecksums));
+  fs::remove_all(dir);
+  fs::remove_all(none);
 }
 
 }  // namespace
