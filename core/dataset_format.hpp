@@ -16,6 +16,7 @@
 //   odometry.txt                 wheel odometry: robot base in the odometry frame (TUM trajectory)
 //   wifi.csv                     one row per BSSID heard per scan (wifi_csv.hpp)
 //   imu.csv                      IMU samples (imu_csv.hpp), when the scene has an IMU
+//   imu_groundtruth.csv          the IMU's true state at the frame times (imu_groundtruth_csv.hpp)
 //   access_points.csv            ground-truth AP positions, power and BSSIDs (studies only)
 //   calibration.yaml             intrinsics, depth scale, camera mount, sensor model parameters
 //   scene.yaml                   the resolved scene, seed included
@@ -41,6 +42,7 @@ inline constexpr const char* kGroundTruth = "groundtruth.txt";
 inline constexpr const char* kOdometry = "odometry.txt";
 inline constexpr const char* kWifi = "wifi.csv";
 inline constexpr const char* kImu = "imu.csv";
+inline constexpr const char* kImuGroundTruth = "imu_groundtruth.csv";
 inline constexpr const char* kAccessPoints = "access_points.csv";
 inline constexpr const char* kCalibration = "calibration.yaml";
 inline constexpr const char* kScene = "scene.yaml";

@@ -21,6 +21,7 @@
 #include "core/dataset_manifest.hpp"
 #include "core/error.hpp"
 #include "core/imu_csv.hpp"
+#include "core/imu_groundtruth_csv.hpp"
 #include "core/text_lines.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
@@ -300,13 +301,32 @@ class DatasetWriter {
     const auto t_io = WallClock::now();
     ImuModel imu(pipeline_.motion(), scene.sensors.imu, scene.seed);
     TextOutput out(dir_ / dataset::kImu, imu_csv_header() + "\n");
-    const std::int64_t n = imu.sample_count(pipeline_.schedule().end_time());
+    TextOutput truth(dir_ / dataset::kImuGroundTruth, imu_groundtruth_csv_header() + "\n");
+    const SensorSchedule& schedule = pipeline_.schedule();
+    const std::int64_t n = imu.sample_count(schedule.end_time());
+    const auto on_clock = [&](Timestamp route_time) {
+      return Timestamp::from_ns(route_time.ns + pipeline_.time_origin().ns);
+    };
+    // The true state at each frame time, with the biases of the sample at or before it.
+    std::int64_t frame = 0;
+    const auto state_rows_up_to = [&](Timestamp before) {
+      for (; frame < schedule.frame_count() && schedule.frame_time(frame) < before; ++frame) {
+        const Timestamp t = schedule.frame_time(frame);
+        const ImuState state = imu.true_state(t);
+        truth.write(
+            format_imu_groundtruth_csv_row({on_clock(t), state.imu_to_world, state.velocity_mps,
+                                            imu.gyro_bias_radps(), imu.accel_bias_mps2()}));
+      }
+    };
     for (std::int64_t k = 0; k < n; ++k) {
+      state_rows_up_to(imu.sample_time(k));
       ImuReading reading = imu.measure(k);
-      reading.time = Timestamp::from_ns(reading.time.ns + pipeline_.time_origin().ns);
+      reading.time = on_clock(reading.time);
       out.write(format_imu_csv_row(reading));
     }
+    state_rows_up_to(Timestamp::from_ns(std::numeric_limits<std::int64_t>::max()));
     out.close();
+    truth.close();
     summary_.imu_samples = n;
     summary_.io_s += seconds_since(t_io);
   }
@@ -439,7 +459,10 @@ class DatasetWriter {
     for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
                           dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
       files.push_back(f);
-    if (pipeline_.scene().sensors.imu.enabled) files.push_back(dataset::kImu);
+    if (pipeline_.scene().sensors.imu.enabled) {
+      files.push_back(dataset::kImu);
+      files.push_back(dataset::kImuGroundTruth);
+    }
     if (options_.images) files.push_back(dataset::kImageChecksums);
     for (const std::string& f : files) {
       manifest.files.push_back(describe_dataset_file(dir_, f));

@@ -14,7 +14,9 @@
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/imu_csv.hpp"
+#include "core/imu_groundtruth_csv.hpp"
 #include "core/tum_file_list.hpp"
+#include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/generator_stream.hpp"
@@ -345,11 +347,24 @@ TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheIm
   EXPECT_NEAR(imu_in_camera.y(), scene.sensors.camera.height_m - scene.sensors.imu.position_m.z(),
               1e-12);
 
+  // The IMU's true state at every frame time: the camera's ground truth carried to the IMU by
+  // the calibration's T_cam_imu.
+  const std::vector<ImuGroundTruth> truth =
+      read_imu_groundtruth_csv((dir / dataset::kImuGroundTruth).string());
+  const Trajectory camera = read_tum_trajectory((dir / dataset::kGroundTruth).string());
+  ASSERT_EQ(truth.size(), camera.size());
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    EXPECT_EQ(truth[i].time, camera[i].time);
+    const Pose expected = camera[i].pose() * calibration.camera_from_imu();
+    EXPECT_LT((truth[i].imu_to_world.matrix() - expected.matrix()).norm(), 1e-9) << "frame " << i;
+  }
+
   Scene without = scene;
   without.sensors.imu.enabled = false;
   const fs::path none = test::fresh_folder("no_imu");
   generate_dataset(without, none, short_run(2));
   EXPECT_FALSE(fs::exists(none / dataset::kImu));
+  EXPECT_FALSE(fs::exists(none / dataset::kImuGroundTruth));
   EXPECT_FALSE(read_calibration_yaml(none / dataset::kCalibration).imu.has_value());
   // Nothing else moves: the IMU draws from its own stream.
   for (const char* file : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi})
