@@ -12,19 +12,41 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/tum_file_list.hpp"
+#include "peers/euroc_export.hpp"
+#include "peers/kapture_export.hpp"
 #include "peers/orbslam2_settings.hpp"
+#include "peers/relative_link.hpp"
 #include "peers/rtabmap_calibration.hpp"
 
 namespace wifislam::peers {
 
 namespace fs = std::filesystem;
 
-const char* to_string(Peer peer) { return peer == Peer::kRtabmap ? "rtabmap" : "orbslam2"; }
+namespace {
+
+constexpr std::pair<Peer, const char*> kPeerNames[] = {{Peer::kRtabmap, "rtabmap"},
+                                                       {Peer::kOrbslam2, "orbslam2"},
+                                                       {Peer::kEuroc, "euroc"},
+                                                       {Peer::kKapture, "kapture"}};
+
+}  // namespace
+
+const char* to_string(Peer peer) {
+  for (const auto& [p, name] : kPeerNames)
+    if (p == peer) return name;
+  return "?";
+}
 
 std::optional<Peer> peer_from_string(std::string_view name) {
-  if (name == "rtabmap") return Peer::kRtabmap;
-  if (name == "orbslam2") return Peer::kOrbslam2;
+  for (const auto& [p, text] : kPeerNames)
+    if (name == text) return p;
   return std::nullopt;
+}
+
+std::vector<std::string> peer_names() {
+  std::vector<std::string> names;
+  for (const auto& [p, name] : kPeerNames) names.emplace_back(name);
+  return names;
 }
 
 namespace {
@@ -171,19 +193,6 @@ ExportPlan plan_export(const fs::path& dataset, const std::vector<FramePair>& pa
   return plan;
 }
 
-/// A symbolic link at `at` to `target`, relative to where the link will live after the rename
-/// (`at_final`); the staging folder is the final folder's sibling, so it resolves from there too.
-void link_to(const fs::path& target, const fs::path& at_final, const fs::path& at) {
-  std::error_code link_error;
-  fs::create_symlink(resolve_path(target).lexically_relative(at_final.parent_path()), at,
-                     link_error);
-  if (link_error) {
-    throw IoError(fmt::format(
-        "{}: cannot create a link to {} ({}; the export needs a file system with symbolic links)",
-        at.string(), target.string(), link_error.message()));
-  }
-}
-
 /// The image folders and their links in `staging`, and a link to the ground truth when the
 /// dataset has one; returns whether it has.
 bool write_links(const fs::path& dataset, const std::vector<Link>& links, bool rtabmap,
@@ -191,13 +200,13 @@ bool write_links(const fs::path& dataset, const std::vector<Link>& links, bool r
   fs::create_directory(staging / (rtabmap ? kRtabmapRgbDir : dataset::kRgbDir));
   fs::create_directory(staging / (rtabmap ? kRtabmapDepthDir : dataset::kDepthDir));
   for (const Link& l : links) {
-    link_to(dataset / l.source, final_path / l.dir / l.name, staging / l.dir / l.name);
+    link_relative(dataset / l.source, final_path / l.dir / l.name, staging / l.dir / l.name);
   }
   std::error_code ec;
   const bool has_ground_truth = fs::exists(dataset / dataset::kGroundTruth, ec);
   if (has_ground_truth) {
-    link_to(dataset / dataset::kGroundTruth, final_path / dataset::kGroundTruth,
-            staging / dataset::kGroundTruth);
+    link_relative(dataset / dataset::kGroundTruth, final_path / dataset::kGroundTruth,
+                  staging / dataset::kGroundTruth);
   }
   return has_ground_truth;
 }
@@ -238,6 +247,41 @@ nlohmann::ordered_json export_json(const PeerExportSummary& summary) {
   return j;
 }
 
+/// The EuRoC and Kapture layouts: everything read and checked first, then written atomically.
+PeerExportSummary export_layout(const fs::path& dataset, const fs::path& output,
+                                const PeerExportOptions& options,
+                                const std::vector<FramePair>& pairs,
+                                const DatasetCalibration& calibration, PeerExportSummary& summary) {
+  const bool euroc = options.peer == Peer::kEuroc;
+  std::optional<EurocInput> euroc_input;
+  std::optional<KaptureInput> kapture_input;
+  if (euroc) {
+    euroc_input = read_euroc_input(dataset, pairs, calibration);
+  } else {
+    kapture_input = read_kapture_input(dataset, pairs, calibration);
+  }
+  AtomicDirectory folder(output, options.overwrite);
+  summary.output = folder.final_path();
+  const std::string dir = summary.output.string();
+  if (euroc) {
+    write_euroc(dataset, *euroc_input, summary.output, folder.staging_path());
+    summary.run_command = fmt::format(
+        "Examples/Monocular-Inertial/mono_inertial_euroc Vocabulary/ORBvoc.txt SETTINGS.yaml {} "
+        "{}/timestamps.txt (SETTINGS: cam0's intrinsics and T_BS, imu0's noise; see "
+        "docs/peers.md)",
+        dir, dir);
+  } else {
+    write_kapture(dataset, *kapture_input, summary.output, folder.staging_path());
+    if (kapture_input->scans.empty())
+      summary.warnings.push_back(dataset.string() +
+                                 " has no Wi-Fi scans: records_wifi.txt is empty");
+    summary.run_command = fmt::format("kapture_print.py -i {}", dir);
+  }
+  write_file_atomic(folder.staging_path() / kExportJson, export_json(summary).dump(2) + "\n");
+  folder.commit();
+  return summary;
+}
+
 }  // namespace
 
 PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& output,
@@ -263,6 +307,8 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
   summary.first_time = pairs.front().rgb_time;
   summary.last_time = pairs.back().rgb_time;
   const DatasetCalibration calibration = peer_calibration(dataset, reader, summary);
+  if (options.peer == Peer::kEuroc || options.peer == Peer::kKapture)
+    return export_layout(dataset, output, options, pairs, calibration, summary);
   const bool rtabmap = options.peer == Peer::kRtabmap;
   const ExportPlan plan = plan_export(dataset, pairs, rtabmap);
 

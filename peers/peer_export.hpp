@@ -21,7 +21,9 @@
 //                                                       rgbd_tum reads every line as a frame)
 //               orbslam2_settings.yaml                 the dataset's intrinsics (orbslam2_settings)
 //               groundtruth.txt                        link to the dataset's
-//   both      export.json                            what was exported, the TUM camera match,
+//   euroc     the EuRoC MAV / ASL layout with depth and the IMU (euroc_export.hpp)
+//   kapture   a Kapture 1.1 folder with Wi-Fi and IMU records (kapture_export.hpp)
+//   all       export.json                            what was exported, the TUM camera match,
 //                                                       warnings, and how to run the peer
 //
 // Stamps are written as TUM writes them (6 decimals, or 9 when finer), so each name is exactly
@@ -40,9 +42,11 @@
 
 namespace wifislam::peers {
 
-enum class Peer { kRtabmap, kOrbslam2 };
+enum class Peer { kRtabmap, kOrbslam2, kEuroc, kKapture };
 const char* to_string(Peer peer);
 std::optional<Peer> peer_from_string(std::string_view name);
+/// Every peer's name, as --for takes it.
+std::vector<std::string> peer_names();
 
 inline constexpr const char* kRtabmapRgbDir = "rgb_sync";
 inline constexpr const char* kRtabmapDepthDir = "depth_sync";

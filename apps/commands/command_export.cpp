@@ -1,5 +1,6 @@
-// `wifislam export <dataset> --for rtabmap|orbslam2 -o <dir>`: lay a dataset out the way another
-// SLAM system's own dataset tool reads one, with links to the dataset's images (peers/).
+// `wifislam export <dataset> --for rtabmap|orbslam2|euroc|kapture -o <dir>`: lay a dataset out the
+// way another SLAM system's own dataset tool reads one, with links to the dataset's images
+// (peers/).
 #include <memory>
 #include <string>
 
@@ -69,16 +70,31 @@ WIFISLAM_COMMAND(export, 58) {
       "                                           dataset's units per metre), ORB extractor and\n"
       "                                           viewer defaults\n"
       "  groundtruth.txt                          link to the dataset's\n"
-      "Both write export.json (what was exported, the TUM camera match, warnings, the command to\n"
-      "run). Names are stamps as TUM writes them (6 decimals, 9 when finer). Score the peer's\n"
-      "trajectory with `wifislam eval CameraTrajectory.txt --gt DATASET`.\n"
+      "--for euroc: the EuRoC MAV / ASL layout (ORB-SLAM3's EuRoC examples, OpenVINS, Kalibr),\n"
+      "  for datasets with an IMU (imu.csv; sensors.imu, on by default):\n"
+      "  mav0/cam0/data/<ns>.png, data.csv, sensor.yaml  colour images, T_BS = camera in the IMU\n"
+      "                                           frame, pinhole intrinsics\n"
+      "  mav0/depth0/...                          depth PNGs under the colour stamps,\n"
+      "                                           depth_map_factor 5000\n"
+      "  mav0/imu0/data.csv, sensor.yaml          the IMU in ns, its noise parameters\n"
+      "  mav0/state_groundtruth_estimate0/data.csv  the IMU's pose, velocity and biases\n"
+      "  timestamps.txt                           frame stamps in ns (ORB-SLAM3's times file)\n"
+      "--for kapture: a Kapture 1.1 folder: sensors.txt, rigs.txt, trajectories.txt (world to\n"
+      "  rig), records_camera.txt (image links), records_depth.txt (float32 .depth files,\n"
+      "  converted), records_wifi.txt (LaMAR's Wi-Fi columns, MHz) and, with an IMU,\n"
+      "  records_accelerometer.txt and records_gyroscope.txt; integer microsecond stamps.\n"
+      "Every layout writes export.json (what was exported, the TUM camera match, warnings, the\n"
+      "command to run). rtabmap and orbslam2 name frames by their stamps as TUM writes them (6\n"
+      "decimals, 9 when finer). Score the peer's trajectory with `wifislam eval\n"
+      "CameraTrajectory.txt --gt DATASET`.\n"
       "DIR is written as DIR.partial and renamed when complete; it is never inside or around the\n"
-      "dataset. Exit 2 for a dataset without images, frames sharing a stamp, or (rtabmap) a\n"
-      "stamp that is not positive.");
+      "dataset. Exit 2 for a dataset without images, frames sharing a stamp, (rtabmap) a stamp\n"
+      "that is not positive, (euroc) a dataset without an IMU, (kapture) one without ground\n"
+      "truth.");
   app->add_option("dataset", args->dataset, "Dataset folder")->required();
   app->add_option("--for", args->peer, "The peer whose dataset tool reads the export")
       ->required()
-      ->check(CLI::IsMember({"rtabmap", "orbslam2"}));
+      ->check(CLI::IsMember(wifislam::peers::peer_names()));
   app->add_option("-o,--output", args->output, "Folder to create")->required();
   app->add_flag("--force", args->force,
                 "Replace the output folder if it holds this tool's output (a previous export,\n"
