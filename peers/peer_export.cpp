@@ -16,6 +16,7 @@
 #include "peers/kapture_export.hpp"
 #include "peers/orbslam2_settings.hpp"
 #include "peers/relative_link.hpp"
+#include "peers/rosbag_export.hpp"
 #include "peers/rtabmap_calibration.hpp"
 
 namespace wifislam::peers {
@@ -27,7 +28,8 @@ namespace {
 constexpr std::pair<Peer, const char*> kPeerNames[] = {{Peer::kRtabmap, "rtabmap"},
                                                        {Peer::kOrbslam2, "orbslam2"},
                                                        {Peer::kEuroc, "euroc"},
-                                                       {Peer::kKapture, "kapture"}};
+                                                       {Peer::kKapture, "kapture"},
+                                                       {Peer::kRosbag, "rosbag"}};
 
 }  // namespace
 
@@ -253,17 +255,24 @@ PeerExportSummary export_layout(const fs::path& dataset, const fs::path& output,
                                 const std::vector<FramePair>& pairs,
                                 const DatasetCalibration& calibration, PeerExportSummary& summary) {
   const bool euroc = options.peer == Peer::kEuroc;
+  const bool rosbag = options.peer == Peer::kRosbag;
   std::optional<EurocInput> euroc_input;
   std::optional<KaptureInput> kapture_input;
   if (euroc) {
     euroc_input = read_euroc_input(dataset, pairs, calibration);
+  } else if (rosbag) {
+    check_rosbag_input(dataset);
   } else {
     kapture_input = read_kapture_input(dataset, pairs, calibration);
   }
   AtomicDirectory folder(output, options.overwrite);
   summary.output = folder.final_path();
   const std::string dir = summary.output.string();
-  if (euroc) {
+  if (rosbag) {
+    // The dataset was verified above; the bag's reader need not hash every image again.
+    write_rosbag(dataset, calibration, folder.staging_path(), false);
+    summary.run_command = fmt::format("rosbag info {}/{}", dir, kBagFile);
+  } else if (euroc) {
     write_euroc(dataset, *euroc_input, summary.output, folder.staging_path());
     summary.run_command = fmt::format(
         "Examples/Monocular-Inertial/mono_inertial_euroc Vocabulary/ORBvoc.txt SETTINGS.yaml {} "
@@ -307,7 +316,8 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
   summary.first_time = pairs.front().rgb_time;
   summary.last_time = pairs.back().rgb_time;
   const DatasetCalibration calibration = peer_calibration(dataset, reader, summary);
-  if (options.peer == Peer::kEuroc || options.peer == Peer::kKapture)
+  if (options.peer == Peer::kEuroc || options.peer == Peer::kKapture ||
+      options.peer == Peer::kRosbag)
     return export_layout(dataset, output, options, pairs, calibration, summary);
   const bool rtabmap = options.peer == Peer::kRtabmap;
   const ExportPlan plan = plan_export(dataset, pairs, rtabmap);

@@ -23,6 +23,8 @@
 //               groundtruth.txt                        link to the dataset's
 //   euroc     the EuRoC MAV / ASL layout with depth and the IMU (euroc_export.hpp)
 //   kapture   a Kapture 1.1 folder with Wi-Fi and IMU records (kapture_export.hpp)
+//   rosbag    one ROS 1 bag with the TUM bags' topics, the IMU, odometry and Wi-Fi
+//             (rosbag_export.hpp)
 //   all       export.json                            what was exported, the TUM camera match,
 //                                                       warnings, and how to run the peer
 //
@@ -42,7 +44,7 @@
 
 namespace wifislam::peers {
 
-enum class Peer { kRtabmap, kOrbslam2, kEuroc, kKapture };
+enum class Peer { kRtabmap, kOrbslam2, kEuroc, kKapture, kRosbag };
 const char* to_string(Peer peer);
 std::optional<Peer> peer_from_string(std::string_view name);
 /// Every peer's name, as --for takes it.

@@ -22,6 +22,11 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy                          # reference port of TUM evaluate_ate.py (eval tests)
   python3-opencv                         # systems/opencv_rgbd_odometry (cv2.rgbd), an external system
+  librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev
+                                         # export --for rosbag: ROS 1 bags and message types
+  python3-rosbag python3-roslz4 python3-genmsg python3-sensor-msgs python3-nav-msgs
+  python3-tf2-msgs python3-geometry-msgs
+                                         # the tests read the bags back with ROS's own reader
 )
 # --fuzz: also clang, whose compiler-rt has libFuzzer and the sanitizers (scripts/fuzz.sh).
 if [ "${1:-}" = "--fuzz" ]; then packages+=(clang); fi

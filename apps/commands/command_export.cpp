@@ -1,5 +1,5 @@
-// `wifislam export <dataset> --for rtabmap|orbslam2|euroc|kapture -o <dir>`: lay a dataset out the
-// way another SLAM system's own dataset tool reads one, with links to the dataset's images
+// `wifislam export <dataset> --for rtabmap|orbslam2|euroc|kapture|rosbag -o <dir>`: lay a dataset
+// out the way another SLAM system's own dataset tool reads one, with links to the dataset's images
 // (peers/).
 #include <memory>
 #include <string>
@@ -83,6 +83,12 @@ WIFISLAM_COMMAND(export, 58) {
       "  rig), records_camera.txt (image links), records_depth.txt (float32 .depth files,\n"
       "  converted), records_wifi.txt (LaMAR's Wi-Fi columns, MHz) and, with an IMU,\n"
       "  records_accelerometer.txt and records_gyroscope.txt; integer microsecond stamps.\n"
+      "--for rosbag: one ROS 1 bag, DIR/dataset.bag (LZ4 chunks), with the TUM RGB-D bags'\n"
+      "  topics: /camera/rgb/image_color (rgb8), /camera/depth/image (32FC1 metres, NaN = no\n"
+      "  reading), both camera_info, /tf (world -> kinect ground truth, odom -> base_link),\n"
+      "  /tf_static (base_link -> camera, imu_link); and /imu (sensor_msgs/Imu), /odom (wheel\n"
+      "  odometry), /ground_truth/pose (geometry_msgs/PoseStamped) and /wifi/scan\n"
+      "  (wifislam_msgs/WifiScan, its definition in the bag). ROS 2: `rosbags-convert`.\n"
       "Every layout writes export.json (what was exported, the TUM camera match, warnings, the\n"
       "command to run). rtabmap and orbslam2 name frames by their stamps as TUM writes them (6\n"
       "decimals, 9 when finer). Score the peer's trajectory with `wifislam eval\n"

@@ -1,10 +1,10 @@
-// `wifislam export --for euroc|kapture`, read back by each format's documented rules (neither has
-// a reader Debian packages): EuRoC's ASL folder (data.csv headers and nanosecond stamps, links to
-// the dataset's own images, imu0 equal to imu.csv, the ground truth equal to imu_groundtruth.csv,
-// sensor.yaml's T_BS the inverse of T_cam_imu) and Kapture 1.1 (the version line, field counts,
-// device ids declared in sensors.txt, world-to-rig poses that invert to the ground truth, .depth
-// files equal to the depth PNGs in metres, one Wi-Fi row per reading); refusals are exit 2 with
-// nothing written.
+// `wifislam export --for euroc|kapture` (rosbag: tests/peers/rosbag_export_test.py), read back by
+// each format's documented rules (neither has a reader Debian packages): EuRoC's ASL folder
+// (data.csv headers and nanosecond stamps, links to the dataset's own images, imu0 equal to
+// imu.csv, the ground truth equal to imu_groundtruth.csv, sensor.yaml's T_BS the inverse of
+// T_cam_imu) and Kapture 1.1 (the version line, field counts, device ids declared in sensors.txt,
+// world-to-rig poses that invert to the ground truth, .depth files equal to the depth PNGs in
+// metres, one Wi-Fi row per reading); refusals are exit 2 with nothing written.
 #include <unistd.h>
 
 #include <cmath>
@@ -283,6 +283,20 @@ TEST_F(ExportLayoutsCli, KaptureFolderFollowsTheFormatsRulesAndCarriesWifiDepthA
   EXPECT_GT(row, 0u);
   EXPECT_EQ(csv_lines(sensors / "records_accelerometer.txt").size(),
             read_imu_csv((dataset() / "imu.csv").string()).size());
+}
+
+TEST_F(ExportLayoutsCli, EveryLayoutRefusesAnUnfinishedDatasetAndWritesNothing) {
+  // What an interrupted `generate` leaves: the folder without its manifest (written last).
+  const fs::path unfinished = scratch_ / "unfinished";
+  fs::copy(dataset(), unfinished, fs::copy_options::recursive);
+  fs::remove(unfinished / "manifest.json");
+  for (const char* layout : {"euroc", "kapture", "rosbag"}) {
+    const fs::path out = scratch_ / layout;
+    const auto r = export_to(unfinished, layout, out);
+    test::expect_located_bad_input(r, unfinished.string(), "unfinished dataset");
+    EXPECT_FALSE(fs::exists(out)) << layout;
+    EXPECT_FALSE(fs::exists(out.string() + ".partial")) << layout;
+  }
 }
 
 TEST_F(ExportLayoutsCli, AnUnknownLayoutIsRefused) {
