@@ -51,22 +51,17 @@ std::string imu_sensor_yaml(const ImuCalibration& imu) {
   y += "# Sensor extrinsics wrt. the body-frame.\n" + euroc_matrix(Pose::Identity());
   y += fmt::format("rate_hz: {}\n\n# inertial sensor noise model parameters (static)\n",
                    format_double_exact(imu.rate_hz));
-  y += fmt::format(
-      "gyroscope_noise_density: {}     # [ rad / s / sqrt(Hz) ]   ( gyro \"white "
-      "noise\" )\n",
-      format_double_exact(imu.gyroscope_noise_density));
-  y += fmt::format(
-      "gyroscope_random_walk: {}       # [ rad / s^2 / sqrt(Hz) ] ( gyro bias "
-      "diffusion )\n",
-      format_double_exact(imu.gyroscope_random_walk));
-  y += fmt::format(
-      "accelerometer_noise_density: {}  # [ m / s^2 / sqrt(Hz) ]   ( accel \"white "
-      "noise\" )\n",
-      format_double_exact(imu.accelerometer_noise_density));
-  y += fmt::format(
-      "accelerometer_random_walk: {}    # [ m / s^3 / sqrt(Hz) ].  ( accel bias "
-      "diffusion )\n",
-      format_double_exact(imu.accelerometer_random_walk));
+  const std::pair<const char*, double> noise[] = {
+      {"gyroscope_noise_density: {}     # [ rad / s / sqrt(Hz) ]   ( gyro \"white noise\" )\n",
+       imu.gyroscope_noise_density},
+      {"gyroscope_random_walk: {}       # [ rad / s^2 / sqrt(Hz) ] ( gyro bias diffusion )\n",
+       imu.gyroscope_random_walk},
+      {"accelerometer_noise_density: {}  # [ m / s^2 / sqrt(Hz) ]   ( accel \"white noise\" )\n",
+       imu.accelerometer_noise_density},
+      {"accelerometer_random_walk: {}    # [ m / s^3 / sqrt(Hz) ].  ( accel bias diffusion )\n",
+       imu.accelerometer_random_walk}};
+  for (const auto& [line, value] : noise)
+    y += fmt::format(fmt::runtime(line), format_double_exact(value));
   return y;
 }
 
