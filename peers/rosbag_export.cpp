@@ -162,12 +162,20 @@ void check_rosbag_input(const fs::path& dataset) {
     throw InvalidInputError(dataset.string() +
                             ": has no groundtruth.txt, which the bag's ground-truth topic needs");
   }
+  // A bag holds no message at time 0 (ros::TIME_MIN is 1 ns) and none after 2106. Every record
+  // of a generated dataset lies within its frames' times.
   const Trajectory truth = read_ground_truth(dataset, false);
   for (const StampedPose& p : truth) {
-    if (p.time.ns < 0 || p.time.ns > kMaxRosTimeNs) {
-      throw InvalidInputError(
-          fmt::format("{}: time {} is outside ROS time (unsigned seconds from 1970 to 2106)",
-                      dataset.string(), p.time.to_tum_string()));
+    if (p.time.ns <= 0) {
+      throw InvalidInputError(fmt::format(
+          "{}: time {} is not a positive time, which a ROS bag cannot hold. This dataset starts "
+          "at 0 s (generated before datasets had a time origin, or with sensors.time_origin_s: "
+          "0): generate it again with a time origin (by default {} s)",
+          dataset.string(), p.time.to_tum_string(), dataset::kDefaultTimeOriginS));
+    }
+    if (p.time.ns > kMaxRosTimeNs) {
+      throw InvalidInputError(fmt::format("{}: time {} is after 2106, the last time ROS 1 holds",
+                                          dataset.string(), p.time.to_tum_string()));
     }
   }
 }

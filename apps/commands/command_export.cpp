@@ -94,9 +94,9 @@ WIFISLAM_COMMAND(export, 58) {
       "decimals, 9 when finer). Score the peer's trajectory with `wifislam eval\n"
       "CameraTrajectory.txt --gt DATASET`.\n"
       "DIR is written as DIR.partial and renamed when complete; it is never inside or around the\n"
-      "dataset. Exit 2 for a dataset without images, frames sharing a stamp, (rtabmap) a stamp\n"
-      "that is not positive, (euroc) a dataset without an IMU, (kapture) one without ground\n"
-      "truth.");
+      "dataset. Exit 2 for a dataset without images, frames sharing a stamp, (rtabmap, rosbag) a\n"
+      "stamp that is not positive, (euroc) a dataset without an IMU, (kapture, rosbag) one\n"
+      "without ground truth.");
   app->add_option("dataset", args->dataset, "Dataset folder")->required();
   app->add_option("--for", args->peer, "The peer whose dataset tool reads the export")
       ->required()

@@ -299,6 +299,26 @@ TEST_F(ExportLayoutsCli, EveryLayoutRefusesAnUnfinishedDatasetAndWritesNothing) 
   }
 }
 
+TEST_F(ExportLayoutsCli, RosbagRefusesADatasetStartingAtZeroAndWritesNothing) {
+  // A bag holds no message at time 0: such a dataset (time_origin_s: 0) is bad input, not an
+  // I/O error halfway through the bag.
+  const fs::path scene = test::tiny_loop_with(scratch_, "radio: {environment: office}",
+                                              "radio: {environment: office}\n"
+                                              "sensors: {time_origin_s: 0}",
+                                              "origin0.yaml");
+  const fs::path data = scratch_ / "origin0";
+  ASSERT_EQ(
+      test::run_wifislam(
+          "generate " + scene.string() + " --fps 2 --max-frames 3 -q -o " + data.string(), scratch_)
+          .exit_code,
+      0);
+  const fs::path out = scratch_ / "bag";
+  const auto r = export_to(data, "rosbag", out);
+  test::expect_located_bad_input(r, data.string(), "not a positive time");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(scratch_ / "bag.partial"));
+}
+
 TEST_F(ExportLayoutsCli, AnUnknownLayoutIsRefused) {
   const auto r = export_to(dataset(), "bagfile", scratch_ / "x");
   EXPECT_EQ(r.exit_code, 2) << r.err;
