@@ -42,6 +42,9 @@ int main(int argc, char** argv) {
   } catch (const wifislam::ExternalSystemError& e) {
     fmt::print(stderr, "wifislam: error: {}\n", e.what());
     return wifislam::cli::kExitExternal;
+  } catch (const wifislam::RequirementNotMetError& e) {
+    fmt::print(stderr, "wifislam: {}\n", e.what());
+    return wifislam::cli::kExitRequirementNotMet;
   } catch (const std::exception& e) {
     fmt::print(stderr, "wifislam: internal error: {}\n", e.what());
     return wifislam::cli::kExitInternal;

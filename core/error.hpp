@@ -54,4 +54,11 @@ class ExternalSystemError : public Error {
   using Error::Error;
 };
 
+/// The evaluation ran, but a requirement the user set on it (`eval --require`) is not met: the
+/// harness used as a regression test says the system under test regressed.
+class RequirementNotMetError : public Error {
+ public:
+  using Error::Error;
+};
+
 }  // namespace wifislam

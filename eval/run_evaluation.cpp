@@ -193,6 +193,20 @@ Json RunEvaluation::flat_metrics() const {
   return j;
 }
 
+std::vector<std::string> RunEvaluation::flat_metric_names() {
+  const RunEvaluation none;
+  std::vector<std::string> names;
+  for (const Metric& m : metric_list()) {
+    if (m.flat == Flat::kKey) {
+      names.push_back(m.flat_name);
+    } else if (m.flat == Flat::kPrefixed) {
+      const Json items = m.value(none);  // kept: items() refers to it
+      for (const auto& [name, item] : items.items()) names.push_back(m.flat_name + name);
+    }
+  }
+  return names;
+}
+
 Json RunEvaluation::to_ordered_json() const {
   Json j;
   for (const Metric& m : metric_list()) {

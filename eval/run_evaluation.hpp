@@ -93,6 +93,9 @@ struct RunEvaluation {
   nlohmann::ordered_json to_ordered_json() const;
   /// One flat level of scalars: the metrics.csv row (thresholds and counters included).
   nlohmann::ordered_json flat_metrics() const;
+  /// Every column a metrics.csv row can have, whatever the run holds (a trajectory file's row has
+  /// no loop-closure columns; a run folder's has them). Counters are named by the run itself.
+  static std::vector<std::string> flat_metric_names();
 };
 
 }  // namespace wifislam::eval

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "eval/eval.hpp"
+#include "eval/requirement.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace {
@@ -29,6 +30,7 @@ struct EvalArgs {
   bool no_plots = false;
   bool force = false;
   std::vector<std::string> settings;
+  std::vector<std::string> requirements;
 };
 
 std::string thresholds_help() {
@@ -71,8 +73,14 @@ void run(const EvalArgs& args) {
   const std::filesystem::path default_out = default_output(args.input);
   const std::filesystem::path out =
       args.output.empty() ? default_out : std::filesystem::path(args.output);
+  // Malformed requirements and unknown metrics are bad input before anything is written.
+  std::vector<eval::Requirement> requirements;
+  for (const std::string& text : args.requirements)
+    requirements.push_back(eval::parse_requirement(text));
   check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}});
   const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
+  const nlohmann::ordered_json flat = ev.flat_metrics();
+  eval::check_metric_names(requirements, flat);
   eval::PlanBackdrop backdrop;
   std::optional<sim::World> world;
   if (!args.no_plots) {
@@ -109,6 +117,15 @@ void run(const EvalArgs& args) {
     fmt::print("time               {}\n", ev.timing_note);
   }
   fmt::print("wrote {}\n", std::filesystem::absolute(out).lexically_normal().string());
+  int failed = 0;
+  for (const eval::RequirementResult& r : eval::check_requirements(requirements, flat)) {
+    fmt::print("requirement        {}\n", r.describe());
+    failed += !r.met;
+  }
+  if (failed > 0) {
+    throw RequirementNotMetError(
+        fmt::format("{} of {} requirements not met (exit 6)", failed, requirements.size()));
+  }
 }
 
 }  // namespace
@@ -149,6 +166,11 @@ WIFISLAM_COMMAND(eval, 70) {
   app->add_flag("--scale", args->scale, "Deprecated: same as --align sim3");
   app->add_flag("--no-plots", args->no_plots, "Write the text outputs only");
   app->add_option("--set", args->settings, "Threshold key=value (repeatable), see below");
+  app->add_option("--require", args->requirements,
+                  "METRIC OP NUMBER (repeatable), e.g. 'ate_rmse_m<=0.5' or\n"
+                  "'online_wrong_place==0': METRIC a column of metrics.csv, OP one of\n"
+                  "<= < >= > == !=. Exit 6 when one is not met (a metric the run does not\n"
+                  "have is not met), after writing the outputs; exit 2 for a malformed one");
   app->footer(thresholds_help());
   app->callback([args] { run(*args); });
 }

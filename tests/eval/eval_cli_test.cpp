@@ -177,6 +177,58 @@ TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
   fs::remove_all(dir);
 }
 
+TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
+  const fs::path dir = scratch("require");
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "small.yaml") << kSmallLoop;
+  const fs::path ds = dir / "ds", run = dir / "run";
+  ASSERT_EQ(
+      wifislam("generate " + (dir / "small.yaml").string() + " --fps 2 -q -o " + ds.string(), dir)
+          .exit_code,
+      0);
+  ASSERT_EQ(wifislam("slam " + ds.string() + " -o " + run.string(), dir).exit_code, 0);
+  const std::string eval = "eval " + run.string() + " --gt " + ds.string() + " --no-plots -o ";
+  const Result plain = wifislam(eval + (dir / "plain").string(), dir);
+  ASSERT_EQ(plain.exit_code, 0) << plain.err;
+  std::ifstream metrics_file(dir / "plain" / "metrics.json");
+  const nlohmann::json metrics = nlohmann::json::parse(metrics_file);
+  const double ate = metrics.at("trajectory").at("ate_rmse_m").get<double>();
+  ASSERT_GT(ate, 0.0);
+
+  // Met: exit 0 and says so.
+  const Result met = wifislam(eval + (dir / "met").string() + " --require 'ate_rmse_m<=" +
+                                  std::to_string(ate * 2) + "' --require 'frames_associated>=10'",
+                              dir);
+  EXPECT_EQ(met.exit_code, 0) << met.err;
+  EXPECT_NE(met.out.find("requirement        met: ate_rmse_m = "), std::string::npos) << met.out;
+  // Not met: exit 6, the outputs written all the same, the miss named with its size.
+  const Result missed = wifislam(
+      eval + (dir / "missed").string() + " --require 'ate_rmse_m<=" + std::to_string(ate / 2) + "'",
+      dir);
+  EXPECT_EQ(missed.exit_code, 6) << missed.err;
+  EXPECT_NE(missed.out.find("NOT met: ate_rmse_m = "), std::string::npos) << missed.out;
+  EXPECT_NE(missed.out.find("above"), std::string::npos) << missed.out;
+  EXPECT_NE(missed.err.find("1 of 1 requirements not met"), std::string::npos) << missed.err;
+  EXPECT_TRUE(fs::exists(dir / "missed" / "metrics.json"));
+  // A bare trajectory has no loop closures: a requirement on them is not met.
+  const Result bare = wifislam("eval " + (run / "trajectory.txt").string() + " --gt " +
+                                   ds.string() + " --no-plots -o " + (dir / "bare").string() +
+                                   " --require 'online_wrong_place==0'",
+                               dir);
+  EXPECT_EQ(bare.exit_code, 6) << bare.err;
+  EXPECT_NE(bare.out.find("not available"), std::string::npos) << bare.out;
+  // Malformed or unknown: exit 2 before anything is written.
+  for (const char* bad : {"ate_rmse_m<=abc", "ate_rms_m<=1", "ate_rmse_m"}) {
+    const fs::path out = dir / "bad";
+    const Result r = wifislam(eval + out.string() + " --require '" + bad + "'", dir);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
+    EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << bad;
+  }
+  fs::remove_all(dir);
+}
+
 TEST(EvalCommand, WifiRunGetsClusterPlot) {
   const fs::path dir = scratch("wifi");
   const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
