@@ -106,18 +106,22 @@ route:
 radio: {environment: office}
 )";
 
-TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
-  const fs::path dir = scratch("real");
+/// A fresh `dir` with the small loop generated at 2 fps (dir/ds) and run by `slam` (dir/run).
+/// False when either command failed.
+bool generate_and_run(const fs::path& dir) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   std::ofstream(dir / "small.yaml") << kSmallLoop;
+  const std::string ds = (dir / "ds").string();
+  return wifislam("generate " + (dir / "small.yaml").string() + " --fps 2 -q -o " + ds, dir)
+                 .exit_code == 0 &&
+         wifislam("slam " + ds + " -o " + (dir / "run").string(), dir).exit_code == 0;
+}
+
+TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
+  const fs::path dir = scratch("real");
+  ASSERT_TRUE(generate_and_run(dir));
   const fs::path ds = dir / "ds", run = dir / "run";
-  ASSERT_EQ(
-      wifislam("generate " + (dir / "small.yaml").string() + " --fps 2 -q -o " + ds.string(), dir)
-          .exit_code,
-      0);
-  const Result slam = wifislam("slam " + ds.string() + " -o " + run.string(), dir);
-  ASSERT_EQ(slam.exit_code, 0) << slam.err;
   const Result r = wifislam(
       "eval " + run.string() + " --gt " + ds.string() + " --set revisit_min_path_m=8", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -179,15 +183,8 @@ TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
 
 TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
   const fs::path dir = scratch("require");
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  std::ofstream(dir / "small.yaml") << kSmallLoop;
+  ASSERT_TRUE(generate_and_run(dir));
   const fs::path ds = dir / "ds", run = dir / "run";
-  ASSERT_EQ(
-      wifislam("generate " + (dir / "small.yaml").string() + " --fps 2 -q -o " + ds.string(), dir)
-          .exit_code,
-      0);
-  ASSERT_EQ(wifislam("slam " + ds.string() + " -o " + run.string(), dir).exit_code, 0);
   const std::string eval = "eval " + run.string() + " --gt " + ds.string() + " --no-plots -o ";
   const Result plain = wifislam(eval + (dir / "plain").string(), dir);
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
