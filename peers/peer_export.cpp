@@ -269,8 +269,9 @@ PeerExportSummary export_layout(const fs::path& dataset, const fs::path& output,
   summary.output = folder.final_path();
   const std::string dir = summary.output.string();
   if (rosbag) {
-    // The dataset was verified above; the bag's reader need not hash every image again.
-    write_rosbag(dataset, calibration, folder.staging_path(), false);
+    // The bag carries the images' bytes (the other layouts link them): its reader checks each
+    // PNG against images.sha256 as it decodes it, unless --no-verify.
+    write_rosbag(dataset, calibration, folder.staging_path(), options.verify_checksums);
     summary.run_command = fmt::format("rosbag info {}/{}", dir, kBagFile);
   } else if (euroc) {
     write_euroc(dataset, *euroc_input, summary.output, folder.staging_path());
