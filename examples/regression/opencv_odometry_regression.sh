@@ -6,6 +6,9 @@
 #
 #   opencv_odometry_regression.sh WIFISLAM_BINARY SCRATCH_DIR
 #
+# SCRATCH_DIR is a folder of the test's own: its dataset/ and run/ are replaced on every run, and
+# nothing else in it or around it is touched.
+#
 # Same scene and seed give the same dataset, so the bound is the system's, not the data's luck.
 # The bound: this odometry drifts along the corridors (docs/external_systems.md); it measured
 # 2.47 m RMSE here, and 3.0 m leaves room for another OpenCV version, not for a regression.
