@@ -1,7 +1,8 @@
 #!/bin/sh
 # A regression test of another SLAM system on this harness: OpenCV's RGB-D odometry (the shipped
-# external system systems/opencv_rgbd_odometry.yaml) on the first 120 frames (40 s, about 15 m of corridor) of the shipped C-hall
-# twin, seed 1001, held to an error bound. Exit 0 when it holds, 6 when it does not (wifislam
+# external system systems/opencv_rgbd_odometry.yaml) on the first 120 frames of the shipped C-hall
+# twin (40 s at 3 fps, 7.3 m of corridor with the pauses to scan), seed 1001, held to an error
+# bound. Exit 0 when it holds, 6 when it does not (wifislam
 # eval --require), anything else when the harness itself failed.
 #
 #   opencv_odometry_regression.sh WIFISLAM_BINARY SCRATCH_DIR
