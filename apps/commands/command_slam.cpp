@@ -12,13 +12,10 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
-#include "core/output_folder.hpp"
 #include "peers/external_run.hpp"
-#include "sim/generate/sensor_input.hpp"
 #include "slam/frontend/front_end_registry.hpp"
-#include "slam/io/run_folder_writer.hpp"
 #include "slam/slam_options.hpp"
-#include "slam/system/run_slam.hpp"
+#include "study/slam_run.hpp"
 
 namespace {
 
@@ -36,66 +33,33 @@ struct SlamArgs {
   std::optional<std::uint64_t> scene_seed;
 };
 
-/// An external system (--frontend external:X) on a dataset folder, through its system file.
-void run_external(const SlamArgs& args, const wifislam::slam::SlamOptions& options, bool replace) {
-  using namespace wifislam;
-  if (!std::filesystem::is_directory(args.input)) {
-    throw InvalidInputError(args.input +
-                            ": an external system reads a dataset folder; generate "
-                            "one from the scene first (wifislam generate)");
-  }
-  if (args.max_frames >= 0 || args.fps > 0 || args.scene_seed) {
-    throw ParseError("--frontend", options.frontend,
-                     "--max-frames, --fps and --seed apply to our front ends; an external system "
-                     "reads the whole dataset (its seed is --set seed=N)");
-  }
-  peers::ExternalRunRequest request =
-      peers::external_run_request(options.frontend, options.wifi.enabled, args.input, args.output);
-  request.overwrite = replace;
-  request.seed = options.seed;
-  request.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", args.input}}}};
-  const peers::ExternalRunResult result = peers::run_external_system(request);
-  const std::string dir = std::filesystem::absolute(args.output).lexically_normal().string();
-  if (!result.ok) {
-    throw ExternalSystemError(
-        fmt::format("{} ({}): {}; its run folder {} has run.json, stdout.log "
-                    "and stderr.log",
-                    options.frontend, request.system.file.string(), result.status, dir));
-  }
-  fmt::print("{}: {}, {:.1f} s wall-clock, {:.1f} s CPU\nwrote {}\n", options.frontend,
-             result.status, result.process.wall_s, result.process.cpu_s, dir);
-}
-
 void run(const SlamArgs& args) {
   using namespace wifislam;
-  slam::SlamOptions options;
-  options.frontend = args.frontend;
-  options.wifi.enabled = args.wifi;
-  for (const std::string& s : args.settings) slam::set_option_assignment(options, s);
-  slam::validate(options);
-  const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
-  if (peers::is_external_frontend(options.frontend)) {
-    run_external(args, options, replace);
-    return;
-  }
-  sim::SensorInputOptions input_options;
-  input_options.verify_checksums = !args.no_verify;
-  input_options.max_frames = args.max_frames;
-  if (args.fps > 0) input_options.fps = args.fps;
-  input_options.scene_seed = args.scene_seed;
-  sim::SensorInput input = sim::open_sensor_input(args.input, input_options);
-  SensorStream& stream = *input.stream;
+  study::SlamRunRequest request;
+  request.input = args.input;
+  request.output = args.output;
+  request.options.frontend = args.frontend;
+  request.options.wifi.enabled = args.wifi;
+  for (const std::string& s : args.settings) slam::set_option_assignment(request.options, s);
+  request.force = args.force;
+  request.verify_checksums = !args.no_verify;
+  request.max_frames = args.max_frames;
+  if (args.fps > 0) request.fps = args.fps;
+  request.scene_seed = args.scene_seed;
   const bool tty = cli::stderr_is_tty();
-  slam::RunSummary summary;
-  const auto progress = [tty](std::int64_t frames) {
+  request.on_frame = [tty](std::int64_t frames) {
     if (tty && frames % 30 == 0) fmt::print(stderr, "\rslam: {} frames", frames);
   };
-  const std::unique_ptr<slam::SlamSystem> system =
-      slam::run_slam(stream, options, summary, progress);
-  if (tty) fmt::print(stderr, "\n");
-  slam::write_run_folder(args.output, *system, summary, replace, {{"input", input.description}});
-  fmt::print("{}", summary.FullReport());
-  fmt::print("wrote {}\n", std::filesystem::absolute(args.output).lexically_normal().string());
+  const study::SlamRunResult result = study::run_slam_to_folder(request);
+  if (result.external) {
+    const peers::ExternalRunResult& external = *result.external;
+    fmt::print("{}: {}, {:.1f} s wall-clock, {:.1f} s CPU\n", request.options.frontend,
+               external.status, external.process.wall_s, external.process.cpu_s);
+  } else {
+    if (tty) fmt::print(stderr, "\n");
+    fmt::print("{}", result.summary->FullReport());
+  }
+  fmt::print("wrote {}\n", result.run_dir.string());
 }
 
 }  // namespace
