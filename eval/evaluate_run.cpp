@@ -40,6 +40,13 @@ std::vector<Timestamp> times_of(const Trajectory& t) {
   return out;
 }
 
+std::vector<Pose> poses_of(const Trajectory& t) {
+  std::vector<Pose> poses;
+  poses.reserve(t.size());
+  for (const StampedPose& p : t) poses.push_back(p.pose());
+  return poses;
+}
+
 /// What run.json says about the run: the front end and whether the Wi-Fi module ran. A folder
 /// without run.json (a run written by another tool) is a run without Wi-Fi of an unnamed front
 /// end. Format version 1 (before "wifi" existed) named a Wi-Fi run "<frontend>+wifi".
@@ -258,25 +265,27 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
 
 /// ATE, RPE and the aligned path. Ground truth is associate.py's first list, the estimate its
 /// second (with the offset), as evaluate_ate.py calls it: ties and repeated stamps go the same way.
-void score_trajectory(const RunInputs& in, const std::vector<Pose>& gt_poses,
-                      const std::vector<double>& gt_path_m, const fs::path& dataset_dir,
-                      const EvalOptions& options, RunEvaluation& ev) {
-  const std::vector<AssociatedIndices> pairs =
-      associate_by_time(times_of(in.ground_truth), times_of(in.estimated),
-                        options.max_time_difference_s, in.offset_ns);
-  ev.frames_estimated = static_cast<std::int64_t>(in.estimated.size());
-  ev.frames_ground_truth = static_cast<std::int64_t>(in.ground_truth.size());
+/// `estimate_name` and `ground_truth_name` name the two in the error for too few shared stamps.
+void score_trajectory(const Trajectory& ground_truth, const Trajectory& estimated,
+                      std::int64_t offset_ns, const std::vector<Pose>& gt_poses,
+                      const std::vector<double>& gt_path_m, const std::string& estimate_name,
+                      const std::string& ground_truth_name, const EvalOptions& options,
+                      RunEvaluation& ev) {
+  const std::vector<AssociatedIndices> pairs = associate_by_time(
+      times_of(ground_truth), times_of(estimated), options.max_time_difference_s, offset_ns);
+  ev.frames_estimated = static_cast<std::int64_t>(estimated.size());
+  ev.frames_ground_truth = static_cast<std::int64_t>(ground_truth.size());
   ev.frames_associated = static_cast<std::int64_t>(pairs.size());
   if (pairs.size() < 3) {
     throw InvalidInputError(
         fmt::format("{} and {}: only {} poses share a timestamp (within {} s, estimate shifted "
                     "by {} s); need at least 3 (is this the run of that dataset?)",
-                    in.trajectory_file.string(), (dataset_dir / dataset::kGroundTruth).string(),
-                    pairs.size(), options.max_time_difference_s, options.time_offset_s));
+                    estimate_name, ground_truth_name, pairs.size(), options.max_time_difference_s,
+                    options.time_offset_s));
   }
   std::vector<Pose> est_assoc, gt_assoc;
   for (const AssociatedIndices& a : pairs) {
-    est_assoc.push_back(in.estimated[a.second].pose());
+    est_assoc.push_back(estimated[a.second].pose());
     gt_assoc.push_back(gt_poses[a.first]);
   }
   const AbsoluteTrajectoryError ate = absolute_trajectory_error(est_assoc, gt_assoc, options.align);
@@ -294,7 +303,7 @@ void score_trajectory(const RunInputs& in, const std::vector<Pose>& gt_poses,
   ev.rpe_rot_rmse_deg = rpe.rotation_rmse_deg;
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     PathSample s;
-    s.time = in.ground_truth[pairs[i].first].time;
+    s.time = ground_truth[pairs[i].first].time;
     s.ground_truth_m = gt_assoc[i].translation();
     s.estimated_aligned_m = ate.alignment.apply(Eigen::Vector3d(est_assoc[i].translation()));
     s.path_m = gt_path_m[pairs[i].first];
@@ -372,12 +381,11 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
   ev.options = options;
   const RunInputs in = read_inputs(input, dataset_dir, options, ev);
 
-  // Ground truth with its path length.
-  std::vector<Pose> gt_poses;
-  gt_poses.reserve(in.ground_truth.size());
-  for (const StampedPose& p : in.ground_truth) gt_poses.push_back(p.pose());
+  const std::vector<Pose> gt_poses = poses_of(in.ground_truth);
   const std::vector<double> gt_path_m = cumulative_path_length_m(gt_poses);
-  score_trajectory(in, gt_poses, gt_path_m, dataset_dir, options, ev);
+  score_trajectory(in.ground_truth, in.estimated, in.offset_ns, gt_poses, gt_path_m,
+                   in.trajectory_file.string(), (dataset_dir / dataset::kGroundTruth).string(),
+                   options, ev);
   find_keyframe_truth(in, gt_poses, gt_path_m, options, ev);
   if (ev.loop_closures_available) score_closures(in, dataset_dir, options, ev);
 
@@ -388,6 +396,23 @@ RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
   ev.total_s = ev.timing.total_s;
   ev.wall_s = ev.timing.wall_s;
   ev.candidate_comparisons = ev.timing.counter(run_folder::counter::kCandidateComparisons);
+  return ev;
+}
+
+RunEvaluation evaluate_trajectory(const Trajectory& estimated, const Trajectory& ground_truth,
+                                  const EvalOptions& options, const std::string& estimate_name,
+                                  const std::string& ground_truth_name) {
+  validate(options);
+  RunEvaluation ev;
+  ev.run_dir = estimate_name;
+  ev.dataset_dir = ground_truth_name;
+  ev.options = options;
+  ev.loop_closure_note = "not available: a trajectory has no keyframes or graph";
+  ev.timing_note = "not available: a trajectory has no timing";
+  const std::vector<Pose> gt_poses = poses_of(ground_truth);
+  score_trajectory(ground_truth, estimated, Timestamp::from_seconds_exact(options.time_offset_s).ns,
+                   gt_poses, cumulative_path_length_m(gt_poses), estimate_name, ground_truth_name,
+                   options, ev);
   return ev;
 }
 

@@ -8,7 +8,9 @@
 // works on any run folder in this format and never links the SLAM library.
 
 #include <filesystem>
+#include <string>
 
+#include "core/tum_trajectory.hpp"
 #include "eval/eval_options.hpp"
 #include "eval/run_evaluation.hpp"
 
@@ -20,5 +22,13 @@ namespace wifislam::eval {
 /// the ground truth have fewer than 3 poses in common.
 RunEvaluation evaluate_run(const std::filesystem::path& run_or_trajectory,
                            const std::filesystem::path& dataset_dir, const EvalOptions& options);
+
+/// The trajectory part of evaluate_run (ATE, RPE, the aligned path) for two trajectories held in
+/// memory, associated and aligned exactly as evaluate_run does it (the Python module's evaluate
+/// of arrays). Loop closures and timing are "not available". The names stand for the two in
+/// errors. Throws InvalidInputError when fewer than 3 poses share a stamp.
+RunEvaluation evaluate_trajectory(const Trajectory& estimated, const Trajectory& ground_truth,
+                                  const EvalOptions& options, const std::string& estimate_name,
+                                  const std::string& ground_truth_name);
 
 }  // namespace wifislam::eval
