@@ -27,6 +27,8 @@ packages=(
   python3-rosbag python3-roslz4 python3-genmsg python3-sensor-msgs python3-nav-msgs
   python3-tf2-msgs python3-geometry-msgs
                                          # the tests read the bags back with ROS's own reader
+  pybind11-dev python3-dev               # the wifislam Python module (python/)
+  python3-pytest python3-matplotlib      # its tests, and the plots of examples/python
 )
 # --fuzz: also clang, whose compiler-rt has libFuzzer and the sanitizers (scripts/fuzz.sh).
 if [ "${1:-}" = "--fuzz" ]; then packages+=(clang); fi

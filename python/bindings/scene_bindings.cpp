@@ -1,0 +1,101 @@
+// Scene: loaded from a file or from YAML text (the package turns a dict into JSON text, which is
+// YAML), with the loader's located errors; back out as the resolved YAML or as a dict.
+#include <memory>
+#include <string>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+#include <yaml-cpp/yaml.h>
+
+#include "python/bindings/bindings.hpp"
+#include "sim/scene/scene_loader.hpp"
+
+namespace wifislam::python {
+
+namespace py = pybind11;
+
+namespace {
+
+/// A YAML scalar as the Python value it reads as: quoted scalars are strings; plain ones are
+/// null, booleans, integers or floats when they parse as such (YAML 1.2 core schema), else strings.
+py::object scalar_to_python(const YAML::Node& node) {
+  const std::string& text = node.Scalar();
+  if (node.Tag() == "!") return py::str(text);
+  if (text == "~" || text == "null" || text == "Null" || text == "NULL") return py::none();
+  if (text == "true" || text == "True" || text == "TRUE") return py::bool_(true);
+  if (text == "false" || text == "False" || text == "FALSE") return py::bool_(false);
+  try {
+    std::size_t used = 0;
+    const long long integer = std::stoll(text, &used);
+    if (used == text.size()) return py::int_(integer);
+  } catch (const std::exception&) {
+  }
+  try {
+    std::size_t used = 0;
+    const double real = std::stod(text, &used);
+    if (used == text.size()) return py::float_(real);
+  } catch (const std::exception&) {
+  }
+  return py::str(text);
+}
+
+py::object yaml_to_python(const YAML::Node& node) {
+  switch (node.Type()) {
+    case YAML::NodeType::Map: {
+      py::dict out;
+      for (const auto& item : node) {
+        out[py::str(item.first.Scalar())] = yaml_to_python(item.second);
+      }
+      return out;
+    }
+    case YAML::NodeType::Sequence: {
+      py::list out;
+      for (const auto& item : node) out.append(yaml_to_python(item));
+      return out;
+    }
+    case YAML::NodeType::Scalar:
+      return scalar_to_python(node);
+    default:
+      return py::none();
+  }
+}
+
+}  // namespace
+
+void bind_scene(py::module_& m) {
+  py::class_<sim::Scene, std::shared_ptr<sim::Scene>>(
+      m, "Scene",
+      "A scene: building, appearance, access points, route and sensors (scenes/README.md).\n\n"
+      "Scene.load(path) reads a scene file, Scene.from_dict(d) takes a dict of the same schema\n"
+      "and Scene.from_yaml(text) YAML text; to_dict() and to_yaml() give the scene back with\n"
+      "every key, defaults filled in. Errors are the loader's, located: ParseError naming the\n"
+      "line and key path (corridors[2].width_m), InvalidInputError for a scene that cannot be\n"
+      "built, IoError for an unreadable file.")
+      .def_static(
+          "load",
+          [](const std::string& path) {
+            return std::make_shared<sim::Scene>(sim::load_scene_file(path));
+          },
+          py::arg("path"))
+      .def_static(
+          "from_yaml",
+          [](const std::string& text, const std::string& source_name) {
+            return std::make_shared<sim::Scene>(sim::load_scene_yaml(text, source_name));
+          },
+          py::arg("text"), py::arg("source_name") = "<yaml>")
+      .def("to_yaml", [](const sim::Scene& scene) { return sim::resolved_scene_yaml(scene); })
+      .def("to_dict",
+           [](const sim::Scene& scene) {
+             return yaml_to_python(YAML::Load(sim::resolved_scene_yaml(scene)));
+           })
+      .def_property_readonly("name", [](const sim::Scene& s) { return s.name; })
+      .def_property_readonly("seed", [](const sim::Scene& s) { return s.seed; })
+      .def_property_readonly("fps", [](const sim::Scene& s) { return s.sensors.camera.fps; })
+      .def_property_readonly("source_path", [](const sim::Scene& s) { return s.source_path; })
+      .def("__repr__", [](const sim::Scene& s) {
+        return "<wifislam.Scene '" + s.name + "' seed " + std::to_string(s.seed) +
+               (s.source_path.empty() ? "" : " from " + s.source_path) + ">";
+      });
+}
+
+}  // namespace wifislam::python

@@ -1,0 +1,217 @@
+// Frames in route order from a SensorStream, the one interface SLAM reads: the simulator's
+// in-memory stream (sim/generate/generator_stream.hpp, exactly what a reader of the dataset gets)
+// or a dataset folder (core/dataset_reader.hpp). Each frame carries the Wi-Fi scans and odometry
+// readings that came before it in the stream (since the previous frame), and its ground truth.
+#include <map>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "core/dataset_format.hpp"
+#include "core/dataset_reader.hpp"
+#include "python/bindings/bindings.hpp"
+#include "python/bindings/numpy_convert.hpp"
+#include "sim/generate/generation_pipeline.hpp"
+#include "sim/generate/generator_stream.hpp"
+
+namespace wifislam::python {
+
+namespace py = pybind11;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// One frame and what came with it, gathered with the GIL released.
+struct GatheredFrame {
+  RgbdFrame frame;
+  std::optional<Pose> camera_to_world;
+  std::vector<WifiScan> scans;
+  std::vector<OdometryReading> odometry;
+};
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  virtual SensorStream& stream() = 0;
+  /// Ground truth of the frame just read, if known.
+  virtual std::optional<Pose> ground_truth(const RgbdFrame& frame) const = 0;
+
+  /// The next frame as a dict, or None at the end of the stream (scans after the last frame
+  /// belong to no frame and are not returned).
+  py::object next_frame() {
+    std::optional<GatheredFrame> gathered;
+    {
+      py::gil_scoped_release release;
+      gathered = gather();
+    }
+    if (!gathered) return py::none();
+    return frame_dict(*gathered);
+  }
+
+ private:
+  std::optional<GatheredFrame> gather() {
+    GatheredFrame out;
+    while (std::optional<SensorEvent> event = stream().next()) {
+      if (auto* scan = std::get_if<WifiScan>(&*event)) {
+        out.scans.push_back(std::move(*scan));
+      } else if (auto* reading = std::get_if<OdometryReading>(&*event)) {
+        out.odometry.push_back(*reading);
+      } else {
+        out.frame = std::move(std::get<RgbdFrame>(*event));
+        out.camera_to_world = ground_truth(out.frame);
+        return out;
+      }
+    }
+    return std::nullopt;
+  }
+
+  static py::dict scan_dict(const WifiScan& scan) {
+    py::list readings;
+    for (const WifiReading& r : scan.readings) {
+      py::dict reading;
+      reading["bssid"] = r.bssid.to_string();
+      reading["rssi_dbm"] = r.rssi_dbm;
+      reading["frequency_khz"] = r.frequency_khz;
+      reading["ssid"] = r.ssid;
+      readings.append(std::move(reading));
+    }
+    py::dict out;
+    out["stamp_ns"] = scan.time.ns;
+    out["start_ns"] = scan.start_time.ns;
+    out["end_ns"] = scan.end_time.ns;
+    out["sensor_id"] = scan.sensor_id;
+    out["readings"] = std::move(readings);
+    return out;
+  }
+
+  static py::dict frame_dict(const GatheredFrame& g) {
+    py::dict out;
+    out["index"] = g.frame.index;
+    out["stamp_ns"] = g.frame.time.ns;
+    out["rgb"] = g.frame.rgb.empty() ? py::object(py::none()) : py::object(rgb_array(g.frame.rgb));
+    out["depth"] =
+        g.frame.depth_m.empty() ? py::object(py::none()) : py::object(depth_array(g.frame.depth_m));
+    out["pose"] =
+        g.camera_to_world ? py::object(pose_array(*g.camera_to_world)) : py::object(py::none());
+    py::list scans, odometry;
+    for (const WifiScan& s : g.scans) scans.append(scan_dict(s));
+    for (const OdometryReading& o : g.odometry) {
+      odometry.append(py::make_tuple(o.time.ns, pose_array(o.base_in_odom)));
+    }
+    out["scans"] = std::move(scans);
+    out["odometry"] = std::move(odometry);
+    return out;
+  }
+};
+
+class SimulatorSource final : public FrameSource {
+ public:
+  SimulatorSource(const sim::Scene& scene, const sim::GenerateOptions& options)
+      : stream_(scene, options) {}
+  SensorStream& stream() override { return stream_; }
+  std::optional<Pose> ground_truth(const RgbdFrame&) const override {
+    return stream_.last_frame_ground_truth();
+  }
+  const sim::Scene& scene() const { return stream_.pipeline().scene(); }
+  std::int64_t frame_count() const { return stream_.pipeline().schedule().frame_count(); }
+
+ private:
+  sim::GeneratorStream stream_;
+};
+
+class DatasetSource final : public FrameSource {
+ public:
+  DatasetSource(const fs::path& folder, bool verify, bool load_images)
+      : reader_(folder, DatasetReaderOptions{verify, load_images, 4}) {
+    if (fs::is_regular_file(folder / dataset::kGroundTruth)) {
+      ground_truth_ = read_ground_truth(folder, verify);
+      for (const StampedPose& p : ground_truth_) by_stamp_.emplace(p.time.ns, p.pose());
+    }
+  }
+  SensorStream& stream() override { return reader_; }
+  /// The ground-truth pose at the frame's stamp: our datasets have one per frame; a plain TUM
+  /// dataset's motion-capture stamps are not the frames', and its frames get None.
+  std::optional<Pose> ground_truth(const RgbdFrame& frame) const override {
+    const auto it = by_stamp_.find(frame.time.ns);
+    if (it == by_stamp_.end()) return std::nullopt;
+    return it->second;
+  }
+  DatasetReader& reader() { return reader_; }
+  const Trajectory& ground_truth_trajectory() const { return ground_truth_; }
+
+ private:
+  DatasetReader reader_;
+  Trajectory ground_truth_;
+  std::map<std::int64_t, Pose> by_stamp_;
+};
+
+py::dict intrinsics_dict(const CameraIntrinsics& k) {
+  py::dict out;
+  out["width_px"] = k.width_px;
+  out["height_px"] = k.height_px;
+  out["fx_px"] = k.fx_px;
+  out["fy_px"] = k.fy_px;
+  out["cx_px"] = k.cx_px;
+  out["cy_px"] = k.cy_px;
+  return out;
+}
+
+template <typename Source, typename Class>
+void bind_stream_facts(Class& cls) {
+  cls.def("next_frame", &Source::next_frame)
+      .def_property_readonly(
+          "intrinsics", [](Source& s) { return intrinsics_dict(s.stream().intrinsics()); })
+      .def_property_readonly("camera_in_base",
+                             [](Source& s) { return pose_array(s.stream().camera_in_base()); })
+      .def_property_readonly("has_wifi", [](Source& s) { return s.stream().has_wifi(); })
+      .def_property_readonly("has_odometry", [](Source& s) { return s.stream().has_odometry(); })
+      .def_property_readonly("description", [](Source& s) { return s.stream().description(); });
+}
+
+}  // namespace
+
+void bind_streams(py::module_& m) {
+  py::class_<FrameSource>(m, "_FrameSource");
+  auto simulator = py::class_<SimulatorSource, FrameSource>(m, "_Simulator")
+                       .def(py::init([](const sim::Scene& scene, std::optional<std::uint64_t> seed,
+                                        std::optional<double> fps, std::int64_t max_frames,
+                                        bool images) {
+                              sim::GenerateOptions options;
+                              options.seed = seed;
+                              options.fps = fps;
+                              options.max_frames = max_frames;
+                              options.images = images;
+                              py::gil_scoped_release release;  // builds the world and renderer
+                              return std::make_unique<SimulatorSource>(scene, options);
+                            }),
+                            py::arg("scene"), py::arg("seed"), py::arg("fps"),
+                            py::arg("max_frames"), py::arg("images"))
+                       .def_property_readonly("frame_count", &SimulatorSource::frame_count)
+                       .def_property_readonly("scene", [](const SimulatorSource& s) {
+                         return std::make_shared<sim::Scene>(s.scene());
+                       });
+  bind_stream_facts<SimulatorSource>(simulator);
+
+  auto dataset =
+      py::class_<DatasetSource, FrameSource>(m, "_Dataset")
+          .def(py::init([](const std::string& folder, bool verify, bool load_images) {
+                 py::gil_scoped_release release;  // checks every file's SHA-256
+                 return std::make_unique<DatasetSource>(folder, verify, load_images);
+               }),
+               py::arg("folder"), py::arg("verify"), py::arg("load_images"))
+          .def_property_readonly("frame_count",
+                                 [](DatasetSource& d) { return d.reader().frame_count(); })
+          .def_property_readonly("wifi_scan_count",
+                                 [](DatasetSource& d) { return d.reader().wifi_scan_count(); })
+          .def_property_readonly(
+              "ground_truth",
+              [](const DatasetSource& d) { return trajectory_array(d.ground_truth_trajectory()); })
+          .def("rewind", [](DatasetSource& d) { d.reader().rewind(); });
+  bind_stream_facts<DatasetSource>(dataset);
+}
+
+}  // namespace wifislam::python

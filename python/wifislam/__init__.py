@@ -1,0 +1,384 @@
+"""wifislam for Python: scenes, frames as numpy arrays, Wi-Fi scans, ground truth and scoring.
+
+The package calls the same C++ libraries as the ``wifislam`` command line (through the
+pybind11 extension ``wifislam._wifislam``); nothing is implemented twice, so a frame, a dataset
+or a metric from Python equals the command's. Long calls (rendering, generating, SLAM,
+evaluation) release the GIL.
+
+    import wifislam
+    scene = wifislam.Scene.load("scenes/c_hall.yaml")
+    for frame in wifislam.Simulator(scene, fps=3, max_frames=10):
+        frame.rgb, frame.depth, frame.pose, frame.stamp, frame.scans
+    info = wifislam.generate(scene, "/tmp/c_hall", fps=3, max_frames=60)
+    run = wifislam.slam(info["dataset"], "/tmp/c_hall_run", wifi=True)
+    metrics = wifislam.evaluate(run["run"], info["dataset"])
+    wifislam.require(metrics, "ate_rmse_m <= 0.5")
+
+Bad arguments raise the library's errors with the command line's message: ``ParseError`` and
+``InvalidInputError`` are ``ValueError``s, ``IoError`` is an ``OSError``,
+``RequirementNotMetError`` an ``AssertionError`` (so pytest reports it as a failed check).
+docs/python.md is the guide.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import os
+from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _wifislam
+from ._wifislam import (
+    ExternalSystemError,
+    FacilityError,
+    InvalidInputError,
+    IoError,
+    ParseError,
+    RequirementNotMetError,
+)
+
+__version__ = _wifislam.__version__
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+__all__ = [
+    "Scene", "Simulator", "Dataset", "Frame", "WifiScan", "WifiReading", "Renderer", "render",
+    "camera_pose", "radio_map", "RadioMap", "generate", "slam", "evaluate", "require",
+    "read_trajectory", "encode_rgb_png", "encode_depth_png", "channel_of",
+    "ParseError", "InvalidInputError", "IoError", "ExternalSystemError",
+    "RequirementNotMetError", "FacilityError",
+]
+
+
+Scene = _wifislam.Scene
+
+
+def _scene_from_dict(scene: Mapping[str, Any], source_name: str = "<dict>") -> Scene:
+    """A scene from a dict of the scene-file schema (``version: 1`` and the rest).
+
+    The dict is written as JSON (which is YAML) one key per line and loaded by the scene loader
+    itself, so every check and default is the file's; errors name ``source_name``, the line of
+    that text and the key path.
+    """
+    if not isinstance(scene, Mapping):
+        raise TypeError(f"Scene.from_dict: expected a dict, got {type(scene).__name__}")
+    return Scene.from_yaml(json.dumps(scene, indent=2), source_name)
+
+
+Scene.from_dict = staticmethod(_scene_from_dict)
+
+
+def channel_of(frequency_khz: int) -> int:
+    """The IEEE 802.11 channel number of a centre frequency (2.4 GHz: 2412 MHz is channel 1,
+    2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel)."""
+    mhz = frequency_khz // 1000
+    if mhz == 2484:
+        return 14
+    if 2400 <= mhz < 2500:
+        return (mhz - 2407) // 5
+    return (mhz - 5000) // 5
+
+
+@dataclasses.dataclass(frozen=True)
+class WifiReading:
+    """One BSSID heard in a scan (a row of the dataset's wifi.csv)."""
+
+    bssid: str
+    rssi_dbm: int
+    frequency_khz: int
+    ssid: str
+
+    @property
+    def channel(self) -> int:
+        return channel_of(self.frequency_khz)
+
+
+@dataclasses.dataclass(frozen=True)
+class WifiScan:
+    """One sweep over the channels, reported at ``stamp`` (its end)."""
+
+    stamp_ns: int
+    start_ns: int
+    end_ns: int
+    sensor_id: str
+    readings: Tuple[WifiReading, ...]
+
+    @property
+    def stamp(self) -> float:
+        return self.stamp_ns * 1e-9
+
+
+@dataclasses.dataclass(frozen=True)
+class Frame:
+    """One RGB-D frame in route order.
+
+    rgb:      H x W x 3 uint8, RGB order (None when generated without images)
+    depth:    H x W float32 metres along the optical axis, NaN where the sensor has no reading:
+              exactly what a reader of the dataset gets (1/5000 m steps, as the PNG stores it)
+    pose:     4 x 4 camera-to-world ground truth (optical frame: x right, y down, z forward);
+              None for a plain TUM dataset's frames, whose ground truth is at other stamps
+    stamp_ns: the frame's time, Unix nanoseconds (``stamp`` in seconds)
+    scans:    the Wi-Fi scans reported since the previous frame (before this one)
+    odometry: the wheel-odometry readings since the previous frame, as (stamp_ns, 4 x 4 base
+              pose in the odometry frame)
+    """
+
+    index: int
+    stamp_ns: int
+    rgb: Optional[np.ndarray]
+    depth: Optional[np.ndarray]
+    pose: Optional[np.ndarray]
+    scans: Tuple[WifiScan, ...]
+    odometry: Tuple[Tuple[int, np.ndarray], ...]
+
+    @property
+    def stamp(self) -> float:
+        return self.stamp_ns * 1e-9
+
+
+def _frame(raw: Dict[str, Any]) -> Frame:
+    scans = tuple(
+        WifiScan(s["stamp_ns"], s["start_ns"], s["end_ns"], s["sensor_id"],
+                 tuple(WifiReading(**r) for r in s["readings"]))
+        for s in raw["scans"])
+    return Frame(raw["index"], raw["stamp_ns"], raw["rgb"], raw["depth"], raw["pose"], scans,
+                 tuple(raw["odometry"]))
+
+
+class _Frames:
+    """Iteration over a frame source; the source's facts as attributes."""
+
+    def __init__(self, source):
+        self._source = source
+
+    def __iter__(self) -> Iterator[Frame]:
+        return self
+
+    def __next__(self) -> Frame:
+        raw = self._source.next_frame()
+        if raw is None:
+            raise StopIteration
+        return _frame(raw)
+
+    def __len__(self) -> int:
+        return self._source.frame_count
+
+    @property
+    def intrinsics(self) -> Dict[str, float]:
+        """Pinhole intrinsics: width_px, height_px, fx_px, fy_px, cx_px, cy_px."""
+        return self._source.intrinsics
+
+    @property
+    def camera_in_base(self) -> np.ndarray:
+        """4 x 4 camera pose in the robot base frame."""
+        return self._source.camera_in_base
+
+    @property
+    def has_wifi(self) -> bool:
+        return self._source.has_wifi
+
+    @property
+    def description(self) -> str:
+        return self._source.description
+
+
+class Simulator(_Frames):
+    """Frames straight from the simulation of ``scene``, in route order, with no disk.
+
+    ``seed`` and ``fps`` replace the scene's (as ``wifislam generate --seed --fps`` do);
+    ``max_frames`` stops early; ``images=False`` gives frames without rgb and depth (poses and
+    scans only, fast). For the same scene, seed and fps, the frames equal those a ``Dataset``
+    of ``generate``'s folder returns, pixel for pixel.
+    """
+
+    def __init__(self, scene: Union[Scene, PathLike], seed: Optional[int] = None,
+                 fps: Optional[float] = None, max_frames: int = -1, images: bool = True):
+        super().__init__(_wifislam._Simulator(_scene(scene), seed, fps, max_frames, images))
+
+    @property
+    def scene(self) -> Scene:
+        """The scene as simulated (seed and fps overrides applied)."""
+        return self._source.scene
+
+
+class Dataset(_Frames):
+    """A dataset folder read as SLAM reads it: ours, or a plain TUM RGB-D one.
+
+    Opening checks the folder as ``wifislam slam`` does (manifest SHA-256 sums unless
+    ``verify=False``, every list file line by line) and raises ParseError naming the file and
+    line. ``ground_truth`` is groundtruth.txt as an N x 8 array of TUM rows.
+    """
+
+    def __init__(self, path: PathLike, verify: bool = True, load_images: bool = True):
+        super().__init__(_wifislam._Dataset(os.fspath(path), verify, load_images))
+        self.path = os.fspath(path)
+
+    @property
+    def ground_truth(self) -> np.ndarray:
+        return self._source.ground_truth
+
+    def rewind(self) -> None:
+        """Start again from the first frame."""
+        self._source.rewind()
+
+
+def _scene(scene: Union[Scene, PathLike]) -> Scene:
+    if isinstance(scene, _wifislam.Scene):
+        return scene
+    if isinstance(scene, (str, os.PathLike)):
+        return Scene.load(os.fspath(scene))
+    raise TypeError(f"expected a wifislam.Scene or a scene file path, got {type(scene).__name__}")
+
+
+class Renderer:
+    """One scene's world on the off-screen renderer, built once for many views.
+
+    ``render(pose)`` returns (rgb, depth) as a frame holds them; ``pose`` is a 4 x 4
+    camera-to-world matrix (``camera_pose`` makes one from a position and heading). With
+    ``noise=False`` the depth is ideal (no noise, quantisation or dropouts; the range applies).
+    ``frame_index`` seeds the depth noise, as ``wifislam render --frame`` does.
+    """
+
+    def __init__(self, scene: Union[Scene, PathLike]):
+        self._renderer = _wifislam._Renderer(_scene(scene))
+
+    def render(self, pose: np.ndarray, noise: bool = True,
+               frame_index: int = 0) -> Tuple[np.ndarray, np.ndarray]:
+        return self._renderer.render(np.asarray(pose, dtype=np.float64), noise, frame_index)
+
+    def camera_pose(self, x_m: float, y_m: float, yaw_deg: float,
+                    height_m: Optional[float] = None) -> np.ndarray:
+        return self._renderer.planar_pose(x_m, y_m, yaw_deg, height_m)
+
+
+def render(scene: Union[Scene, PathLike], pose: np.ndarray, noise: bool = True,
+           frame_index: int = 0) -> Tuple[np.ndarray, np.ndarray]:
+    """One RGB-D view of ``scene`` from ``pose`` (4 x 4): (rgb H x W x 3 uint8, depth H x W
+    float32 metres with NaN for no reading). Builds the world each call: use ``Renderer`` for
+    many views."""
+    return Renderer(scene).render(pose, noise, frame_index)
+
+
+def camera_pose(scene: Union[Scene, PathLike], x_m: float, y_m: float, yaw_deg: float,
+                height_m: Optional[float] = None) -> np.ndarray:
+    """The 4 x 4 camera-to-world pose ``wifislam render --pose x,y,yaw`` uses: at (x, y),
+    heading ``yaw_deg`` counter-clockwise from +x, at the scene camera's height and pitch
+    unless ``height_m`` is given."""
+    return Renderer(scene).camera_pose(x_m, y_m, yaw_deg, height_m)
+
+
+@dataclasses.dataclass(frozen=True)
+class RadioMap:
+    """Mean RSSI over the floor plan (``wifislam radiomap``'s grid).
+
+    rssi_dbm:   rows x cols float32, row 0 at the lowest y; NaN outside free space
+    best_ap_id: rows x cols int32, the access point giving each cell's value
+    origin_m:   (x, y) of cell (0, 0)'s lower-left corner; cells are resolution_m square
+    """
+
+    rssi_dbm: np.ndarray
+    best_ap_id: np.ndarray
+    origin_m: Tuple[float, float]
+    resolution_m: float
+    access_points: Tuple[Dict[str, Any], ...]
+
+    def cell_center_m(self, col: int, row: int) -> Tuple[float, float]:
+        return (self.origin_m[0] + self.resolution_m * (col + 0.5),
+                self.origin_m[1] + self.resolution_m * (row + 0.5))
+
+
+def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
+              ap: Optional[int] = None, band: str = "best",
+              height_m: Optional[float] = None) -> RadioMap:
+    """The mean RSSI (ITU-R P.1238, walls, shadowing) at every free cell: of access point
+    ``ap``, or of the strongest one (``ap=None``); ``band`` is "2.4", "5" or "best"; the
+    receiver at ``height_m`` (default: the camera's height, where datasets scan)."""
+    raw = _wifislam._radio_map(_scene(scene), resolution_m, ap, str(band), height_m)
+    return RadioMap(raw["rssi_dbm"], raw["best_ap_id"], tuple(raw["origin_m"]),
+                    raw["resolution_m"], tuple(raw["access_points"]))
+
+
+def generate(scene: Union[Scene, PathLike], output: PathLike, seed: Optional[int] = None,
+             fps: Optional[float] = None, max_frames: int = -1, images: bool = True,
+             threads: int = 0, force: bool = False) -> Dict[str, Any]:
+    """``wifislam generate``: writes the dataset folder ``output`` and returns its summary
+    (``dataset`` is the folder's absolute path; ``report`` the text the command prints).
+    ``force`` replaces an existing folder of this tool's output, never anything else."""
+    return _wifislam._generate(_scene(scene), os.fspath(output), seed, fps, max_frames, images,
+                               threads, force)
+
+
+def slam(dataset: PathLike, output: PathLike, frontend: str = "rgbdslam", wifi: bool = False,
+         settings: Optional[Mapping[str, Any]] = None, force: bool = False, verify: bool = True,
+         max_frames: int = -1, fps: Optional[float] = None,
+         seed: Optional[int] = None) -> Dict[str, Any]:
+    """``wifislam slam``: runs a front end (``rgbdslam``, ``rtabmap``, ``orbslam`` or
+    ``external:NAME``) on a dataset folder or a scene file and writes the run folder ``output``.
+
+    ``settings`` are the ``--set`` options (``{"min_matches": 70}``). Returns ``run`` (the run
+    folder's absolute path) and ``summary`` (run.json's summary) for our front ends, or
+    ``external`` (status, system file, times) for an external system.
+    """
+    values = {str(k): _setting_text(v) for k, v in (settings or {}).items()}
+    return _wifislam._slam(os.fspath(dataset), os.fspath(output), frontend, wifi, values, force,
+                           verify, max_frames, fps, seed)
+
+
+def _setting_text(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (list, tuple)):
+        return ",".join(_setting_text(v) for v in value)
+    return str(value)
+
+
+TrajectoryLike = Union[PathLike, np.ndarray, Sequence[Sequence[float]]]
+
+
+def evaluate(estimate: TrajectoryLike, ground_truth: TrajectoryLike, align: str = "se3",
+             time_offset_s: float = 0.0, settings: Optional[Mapping[str, Any]] = None,
+             verify: bool = True) -> Dict[str, Any]:
+    """ATE and RPE as ``wifislam eval`` computes them, as metrics.csv's row (a dict).
+
+    ``estimate`` is a run folder, a TUM trajectory file or an N x 8 array of TUM rows
+    (t, tx, ty, tz, qx, qy, qz, qw); ``ground_truth`` a dataset folder, a TUM file or such an
+    array. A run folder (or trajectory file) against a dataset folder is exactly
+    ``wifislam eval RUN --gt DATASET`` (loop closures and timing included); any other pair is
+    scored on the trajectories alone. ``align`` is "none", "se3" or "sim3"; ``settings`` are
+    eval's ``--set`` thresholds. Array stamps are float seconds, rounded to nanoseconds.
+    """
+    values = {str(k): _setting_text(v) for k, v in (settings or {}).items()}
+    return _wifislam._evaluate(_trajectory_arg(estimate), _trajectory_arg(ground_truth), align,
+                               float(time_offset_s), values, verify)
+
+
+def _trajectory_arg(value: TrajectoryLike):
+    if isinstance(value, (str, os.PathLike)):
+        return os.fspath(value)
+    return np.asarray(value, dtype=np.float64)
+
+
+def require(metrics: Mapping[str, Any], *requirements: str) -> List[str]:
+    """Holds metrics (``evaluate``'s dict) to requirements as ``eval --require`` does:
+    "METRIC OP NUMBER" with OP one of <=, <, >=, >, ==, !=. Returns each requirement's verdict;
+    raises RequirementNotMetError (an AssertionError) listing those not met and by how much,
+    InvalidInputError for a malformed requirement or an unknown metric."""
+    return _wifislam._require(dict(metrics), list(requirements))
+
+
+def read_trajectory(path: PathLike) -> np.ndarray:
+    """A TUM trajectory file as an N x 8 array (checked as ``wifislam eval`` reads it)."""
+    return _wifislam._read_trajectory(os.fspath(path))
+
+
+def encode_rgb_png(rgb: np.ndarray) -> bytes:
+    """The PNG bytes ``generate`` writes for this colour image (H x W x 3 uint8 RGB)."""
+    return _wifislam._encode_rgb_png(np.ascontiguousarray(rgb))
+
+
+def encode_depth_png(depth: np.ndarray) -> bytes:
+    """The 16-bit TUM depth PNG bytes (5000 per metre, 0 = no reading) ``generate`` writes for
+    this depth image (H x W float metres, NaN = no reading)."""
+    return _wifislam._encode_depth_png(np.asarray(depth))

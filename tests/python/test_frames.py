@@ -1,0 +1,114 @@
+"""The simulator's frames, the dataset's files and the Dataset reader agree bit for bit."""
+
+import math
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import wifislam
+from conftest import SMALL
+
+
+def read(path):
+    with open(path, "rb") as f:
+        return f.read()
+
+
+def listed(dataset, name):
+    """(stamp text, path) of a TUM list file's lines."""
+    rows = []
+    with open(os.path.join(dataset, name)) as f:
+        for line in f:
+            if line.strip() and not line.startswith("#"):
+                stamp, path = line.split()[:2]
+                rows.append((stamp, path))
+    return rows
+
+
+@pytest.fixture(scope="module")
+def simulated(c_hall):
+    return list(wifislam.Simulator(wifislam.Scene.load(c_hall), **SMALL))
+
+
+@pytest.fixture(scope="module")
+def read_back(small_dataset):
+    return list(wifislam.Dataset(small_dataset))
+
+
+def test_frames_have_the_promised_types(simulated, c_hall):
+    assert len(simulated) == SMALL["max_frames"]
+    frame = simulated[0]
+    assert frame.rgb.dtype == np.uint8 and frame.rgb.shape == (480, 640, 3)
+    assert frame.depth.dtype == np.float32 and frame.depth.shape == (480, 640)
+    assert frame.pose.shape == (4, 4)
+    assert np.allclose(frame.pose[:3, :3] @ frame.pose[:3, :3].T, np.eye(3))
+    # No reading is NaN, never 0.
+    depth = np.concatenate([f.depth.ravel() for f in simulated])
+    assert np.isnan(depth).any()
+    assert not (depth == 0).any()
+    assert [f.index for f in simulated] == list(range(SMALL["max_frames"]))
+    stamps = [f.stamp_ns for f in simulated]
+    assert stamps == sorted(stamps)
+
+
+def test_simulator_frames_encode_to_the_datasets_png_bytes(simulated, small_dataset):
+    rgb_files = listed(small_dataset, "rgb.txt")
+    depth_files = listed(small_dataset, "depth.txt")
+    assert len(rgb_files) == len(simulated)
+    for frame, (rgb_stamp, rgb_path), (_, depth_path) in zip(simulated, rgb_files, depth_files):
+        assert wifislam.encode_rgb_png(frame.rgb) == read(os.path.join(small_dataset, rgb_path))
+        assert wifislam.encode_depth_png(frame.depth) == read(
+            os.path.join(small_dataset, depth_path))
+        assert f"{frame.stamp_ns // 1000 // 1_000_000}.{frame.stamp_ns // 1000 % 1_000_000:06d}" \
+            == rgb_stamp
+
+
+def test_the_dataset_reader_returns_the_simulators_frames(simulated, read_back):
+    assert len(read_back) == len(simulated)
+    for sim, disk in zip(simulated, read_back):
+        assert sim.stamp_ns == disk.stamp_ns
+        assert np.array_equal(sim.rgb, disk.rgb)
+        assert np.array_equal(sim.depth, disk.depth, equal_nan=True)
+        # groundtruth.txt keeps the pose to its printed decimals.
+        assert np.allclose(sim.pose, disk.pose, atol=1e-6)
+        assert sim.scans == disk.scans
+
+
+def test_scans_arrive_with_the_frame_after_them(simulated, small_dataset):
+    scans = [s for f in simulated for s in f.scans]
+    assert scans, "c_hall pauses within its first 16 s: the test needs its scans"
+    rows = 0
+    for frame in simulated:
+        for scan in frame.scans:
+            assert scan.stamp_ns <= frame.stamp_ns
+            for reading in scan.readings:
+                assert -120 <= reading.rssi_dbm <= 30
+                assert reading.channel in range(1, 15) or reading.channel >= 32
+                assert len(reading.bssid) == 17
+            rows += len(scan.readings)
+    with open(os.path.join(small_dataset, "wifi.csv")) as f:
+        csv_rows = [line for line in f if line.strip() and not line.startswith(("#", "timestamp"))]
+    # Scans after the last frame belong to no frame.
+    assert 0 < rows <= len(csv_rows)
+
+
+def test_ground_truth_and_intrinsics(small_dataset):
+    dataset = wifislam.Dataset(small_dataset)
+    assert len(dataset) == SMALL["max_frames"]
+    assert dataset.ground_truth.shape == (SMALL["max_frames"], 8)
+    assert dataset.intrinsics["fx_px"] > 0
+    assert dataset.has_wifi
+    first = next(iter(dataset))
+    dataset.rewind()
+    again = next(iter(dataset))
+    assert first.stamp_ns == again.stamp_ns
+
+
+def test_a_folder_that_is_not_a_dataset_is_an_error(tmp_path):
+    with pytest.raises(OSError):
+        wifislam.Dataset(tmp_path / "missing")
+    (tmp_path / "empty").mkdir()
+    with pytest.raises((OSError, ValueError)):
+        wifislam.Dataset(tmp_path / "empty")
