@@ -39,9 +39,8 @@ SlamRunResult run_external_to_folder(const SlamRunRequest& request, bool replace
   result.external_system_file = external.system.file.string();
   if (!result.external->ok) {
     throw ExternalSystemError(fmt::format(
-        "{} ({}): {}; its run folder {} has run.json, stdout.log and stderr.log",
-        options.frontend, result.external_system_file, result.external->status,
-        result.run_dir.string()));
+        "{} ({}): {}; its run folder {} has run.json, stdout.log and stderr.log", options.frontend,
+        result.external_system_file, result.external->status, result.run_dir.string()));
   }
   return result;
 }
@@ -50,8 +49,7 @@ SlamRunResult run_external_to_folder(const SlamRunRequest& request, bool replace
 
 SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   slam::validate(request.options);
-  const bool replace =
-      check_output_folder({request.output, request.force, {}, {request.input}});
+  const bool replace = check_output_folder({request.output, request.force, {}, {request.input}});
   SlamRunResult result;
   result.run_dir = fs::absolute(request.output).lexically_normal();
   if (peers::is_external_frontend(request.options.frontend)) {
@@ -66,8 +64,7 @@ SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   slam::RunSummary summary;
   const std::unique_ptr<slam::SlamSystem> system =
       slam::run_slam(*input.stream, request.options, summary, request.on_frame);
-  slam::write_run_folder(request.output, *system, summary, replace,
-                         {{"input", input.description}});
+  slam::write_run_folder(request.output, *system, summary, replace, {{"input", input.description}});
   result.summary = std::move(summary);
   return result;
 }

@@ -15,8 +15,7 @@ void bind_errors(pybind11::module_& m) {
   py::register_exception<InvalidInputError>(m, "InvalidInputError", PyExc_ValueError);
   py::register_exception<IoError>(m, "IoError", PyExc_OSError);
   py::register_exception<ExternalSystemError>(m, "ExternalSystemError", PyExc_RuntimeError);
-  py::register_exception<RequirementNotMetError>(m, "RequirementNotMetError",
-                                                 PyExc_AssertionError);
+  py::register_exception<RequirementNotMetError>(m, "RequirementNotMetError", PyExc_AssertionError);
   // OSMesa or Embree unusable on this machine: not the caller's input.
   py::register_exception<EnvironmentError>(m, "FacilityError", PyExc_RuntimeError);
 }

@@ -50,7 +50,8 @@ cv::Mat depth_mat(const py::array& depth_m, const std::string& what) {
   if (depth_m.dtype().kind() != 'f' || depth_m.ndim() != 2) {
     throw InvalidInputError(what + ": expected an H x W float array of metres");
   }
-  const auto metres = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(depth_m);
+  const auto metres =
+      py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(depth_m);
   cv::Mat out(static_cast<int>(metres.shape(0)), static_cast<int>(metres.shape(1)), CV_32FC1);
   const float* src = metres.data();
   for (int r = 0; r < out.rows; ++r) {
@@ -78,7 +79,8 @@ Pose pose_from_array(const py::array& pose, const std::string& what) {
     for (int c = 0; c < 4; ++c) matrix(r, c) = m.at(r, c);
   if (!matrix.allFinite()) throw InvalidInputError(what + ": the pose has a NaN or infinity");
   const Eigen::Matrix3d rotation = matrix.topLeftCorner<3, 3>();
-  const double orthogonality = (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm();
+  const double orthogonality =
+      (rotation.transpose() * rotation - Eigen::Matrix3d::Identity()).norm();
   if (orthogonality > 1e-6 || rotation.determinant() < 0 ||
       (matrix.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).norm() > 0) {
     throw InvalidInputError(
@@ -95,7 +97,7 @@ py::array_t<double> trajectory_array(const Trajectory& trajectory) {
   auto m = out.mutable_unchecked<2>();
   for (std::size_t i = 0; i < trajectory.size(); ++i) {
     const StampedPose& p = trajectory[i];
-    const double row[8] = {p.time.seconds(), p.translation_m.x(), p.translation_m.y(),
+    const double row[8] = {p.time.seconds(),    p.translation_m.x(), p.translation_m.y(),
                            p.translation_m.z(), p.rotation.x(),      p.rotation.y(),
                            p.rotation.z(),      p.rotation.w()};
     for (int c = 0; c < 8; ++c) m(static_cast<py::ssize_t>(i), c) = row[c];
@@ -106,8 +108,8 @@ py::array_t<double> trajectory_array(const Trajectory& trajectory) {
 Trajectory trajectory_from_array(const py::array& rows, const std::string& what) {
   const auto m = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(rows);
   if (!m || m.ndim() != 2 || m.shape(1) != 8) {
-    throw InvalidInputError(what +
-                            ": expected an N x 8 array of TUM rows (t, tx, ty, tz, qx, qy, qz, qw)");
+    throw InvalidInputError(
+        what + ": expected an N x 8 array of TUM rows (t, tx, ty, tz, qx, qy, qz, qw)");
   }
   // Each row goes through the trajectory file's own line check, as its text.
   Trajectory trajectory;

@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include <opencv2/core/mat.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
+#include <opencv2/core/mat.hpp>
 
 #include "core/pose.hpp"
 #include "core/tum_trajectory.hpp"

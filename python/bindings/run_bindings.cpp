@@ -9,11 +9,11 @@
 #include <vector>
 
 #include <fmt/core.h>
-#include <nlohmann/json.hpp>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
+#include <nlohmann/json.hpp>
 
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
@@ -67,9 +67,9 @@ py::dict generate_summary_dict(const sim::GenerateSummary& s) {
 
 /// `generate`: `scene_path` is the file the scene came from (an input that must not be
 /// replaced), empty for a scene built from a dict.
-py::dict generate(const sim::Scene& scene, const fs::path& output, std::optional<std::uint64_t> seed,
-                  std::optional<double> fps, std::int64_t max_frames, bool images, int threads,
-                  bool force) {
+py::dict generate(const sim::Scene& scene, const fs::path& output,
+                  std::optional<std::uint64_t> seed, std::optional<double> fps,
+                  std::int64_t max_frames, bool images, int threads, bool force) {
   std::vector<fs::path> inputs;
   if (!scene.source_path.empty()) inputs.push_back(scene.source_path);
   sim::GenerateOptions options;
@@ -87,9 +87,9 @@ py::dict generate(const sim::Scene& scene, const fs::path& output, std::optional
   return generate_summary_dict(summary);
 }
 
-py::dict slam(const fs::path& input, const fs::path& output, const std::string& frontend,
-              bool wifi, const std::map<std::string, std::string>& settings, bool force,
-              bool verify, std::int64_t max_frames, std::optional<double> fps,
+py::dict slam(const fs::path& input, const fs::path& output, const std::string& frontend, bool wifi,
+              const std::map<std::string, std::string>& settings, bool force, bool verify,
+              std::int64_t max_frames, std::optional<double> fps,
               std::optional<std::uint64_t> seed) {
   study::SlamRunRequest request;
   request.input = input;
@@ -147,11 +147,11 @@ Trajectory trajectory_of(const py::object& value, const std::string& what, bool 
     const fs::path path = fspath(value);
     name = path.string();
     if (fs::is_directory(path)) {
-      if (fs::is_regular_file(path / dataset::kGroundTruth))
-        return read_ground_truth(path, verify);
-      throw IoError(fmt::format("{}: {} is a folder without {} (a run folder is evaluated "
-                                "against a dataset folder)",
-                                what, name, dataset::kGroundTruth));
+      if (fs::is_regular_file(path / dataset::kGroundTruth)) return read_ground_truth(path, verify);
+      throw IoError(
+          fmt::format("{}: {} is a folder without {} (a run folder is evaluated "
+                      "against a dataset folder)",
+                      what, name, dataset::kGroundTruth));
     }
     return read_tum_trajectory(path.string());
   }

@@ -163,8 +163,8 @@ py::dict intrinsics_dict(const CameraIntrinsics& k) {
 template <typename Source, typename Class>
 void bind_stream_facts(Class& cls) {
   cls.def("next_frame", &Source::next_frame)
-      .def_property_readonly(
-          "intrinsics", [](Source& s) { return intrinsics_dict(s.stream().intrinsics()); })
+      .def_property_readonly("intrinsics",
+                             [](Source& s) { return intrinsics_dict(s.stream().intrinsics()); })
       .def_property_readonly("camera_in_base",
                              [](Source& s) { return pose_array(s.stream().camera_in_base()); })
       .def_property_readonly("has_wifi", [](Source& s) { return s.stream().has_wifi(); })
@@ -176,24 +176,24 @@ void bind_stream_facts(Class& cls) {
 
 void bind_streams(py::module_& m) {
   py::class_<FrameSource>(m, "_FrameSource");
-  auto simulator = py::class_<SimulatorSource, FrameSource>(m, "_Simulator")
-                       .def(py::init([](const sim::Scene& scene, std::optional<std::uint64_t> seed,
-                                        std::optional<double> fps, std::int64_t max_frames,
-                                        bool images) {
-                              sim::GenerateOptions options;
-                              options.seed = seed;
-                              options.fps = fps;
-                              options.max_frames = max_frames;
-                              options.images = images;
-                              py::gil_scoped_release release;  // builds the world and renderer
-                              return std::make_unique<SimulatorSource>(scene, options);
-                            }),
-                            py::arg("scene"), py::arg("seed"), py::arg("fps"),
-                            py::arg("max_frames"), py::arg("images"))
-                       .def_property_readonly("frame_count", &SimulatorSource::frame_count)
-                       .def_property_readonly("scene", [](const SimulatorSource& s) {
-                         return std::make_shared<sim::Scene>(s.scene());
-                       });
+  auto simulator =
+      py::class_<SimulatorSource, FrameSource>(m, "_Simulator")
+          .def(py::init([](const sim::Scene& scene, std::optional<std::uint64_t> seed,
+                           std::optional<double> fps, std::int64_t max_frames, bool images) {
+                 sim::GenerateOptions options;
+                 options.seed = seed;
+                 options.fps = fps;
+                 options.max_frames = max_frames;
+                 options.images = images;
+                 py::gil_scoped_release release;  // builds the world and renderer
+                 return std::make_unique<SimulatorSource>(scene, options);
+               }),
+               py::arg("scene"), py::arg("seed"), py::arg("fps"), py::arg("max_frames"),
+               py::arg("images"))
+          .def_property_readonly("frame_count", &SimulatorSource::frame_count)
+          .def_property_readonly("scene", [](const SimulatorSource& s) {
+            return std::make_shared<sim::Scene>(s.scene());
+          });
   bind_stream_facts<SimulatorSource>(simulator);
 
   auto dataset =

@@ -43,7 +43,9 @@ void check_height(const std::string& option, double height_m, double ceiling_m) 
 class Renderer {
  public:
   explicit Renderer(const sim::Scene& scene)
-      : scene_(scene), world_(sim::generate_world(scene)), renderer_(scene.sensors.camera.intrinsics) {
+      : scene_(scene),
+        world_(sim::generate_world(scene)),
+        renderer_(scene.sensors.camera.intrinsics) {
     renderer_.set_world(world_, scene_);
   }
 
