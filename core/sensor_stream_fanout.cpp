@@ -49,11 +49,20 @@ void SensorStreamFanout::push(SensorEvent event) {
   const auto anyone_reading = [&] {
     return std::find(reading_.begin(), reading_.end(), true) != reading_.end();
   };
-  changed_.wait(lock, [&] { return !frame || frames_held_ < window_frames_ || !anyone_reading(); });
+  changed_.wait(lock, [&] {
+    const bool room = !frame || frames_held_ < window_frames_ || !anyone_reading();
+    producer_waits_ += !room;
+    return room;
+  });
   if (!anyone_reading()) return;
   events_.push_back(std::make_shared<const SensorEvent>(std::move(event)));
   frames_held_ += frame;
   changed_.notify_all();
+}
+
+std::int64_t SensorStreamFanout::producer_waits() const {
+  std::lock_guard lock(mutex_);
+  return producer_waits_;
 }
 
 void SensorStreamFanout::close() {

@@ -60,6 +60,10 @@ class SensorStreamFanout {
   /// Consumer i reads no more (it failed or finished early): the producer stops waiting for it.
   void leave(int i);
 
+  /// How many times push() has found the window full and waited (once per look: a woken producer
+  /// that is still held back counts again). Lets a test see the producer blocked without sleeping.
+  std::int64_t producer_waits() const;
+
  private:
   class Branch;
   friend class Branch;
@@ -72,13 +76,14 @@ class SensorStreamFanout {
   const int window_frames_;
   std::vector<std::unique_ptr<Branch>> branches_;
 
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::shared_ptr<const SensorEvent>> events_;
   std::int64_t first_sequence_ = 0;  // sequence number of events_.front()
   std::vector<std::int64_t> next_;   // per consumer: sequence number of its next event
   std::vector<bool> reading_;        // per consumer: has not left
   int frames_held_ = 0;              // frames among events_
+  std::int64_t producer_waits_ = 0;
   bool closed_ = false;
   std::string aborted_;  // non-empty: why the producer failed
 };

@@ -3,6 +3,7 @@
 // errors, and exits 2; a folder given as a scene is refused alike by every command; a radio map
 // too fine for memory says what resolution would do; a second run into a folder being written
 // says so instead of "write failed (disk full?)".
+#include <signal.h>
 #include <sys/wait.h>
 
 #include <chrono>
@@ -128,24 +129,30 @@ route: {nodes: [A, B, C]}
 }
 
 // Once: the second run deleted the first one's staging folder, and the first failed with
-// "write failed (disk full?)".
+// "write failed (disk full?)". The first run is stopped (SIGSTOP) once it writes, so the second
+// surely meets it mid-write, then continued (SIGCONT) to finish its dataset.
 TEST_F(LocatedMessage, SecondGenerateIntoAFolderBeingWrittenIsRefused) {
   const fs::path out = scratch_ / "ds", partial = scratch_ / "ds.partial";
-  const fs::path first_rc = scratch_ / "first_rc.txt";
+  const fs::path first_rc = scratch_ / "first_rc.txt", first_pid = scratch_ / "first_pid.txt";
   const std::string first =
       "( " + std::string(WIFISLAM_BINARY) + " generate " + scene_.string() + " -o " + out.string() +
       " --fps 10 --max-frames 150 --threads 1 -q >'" + (scratch_ / "first_out.txt").string() +
-      "' 2>'" + (scratch_ / "first_err.txt").string() + "'; echo $? >'" + first_rc.string() +
-      ".tmp' && mv '" + first_rc.string() + ".tmp' '" + first_rc.string() + "' ) &";
+      "' 2>'" + (scratch_ / "first_err.txt").string() + "' & echo $! >'" + first_pid.string() +
+      ".tmp' && mv '" + first_pid.string() + ".tmp' '" + first_pid.string() +
+      "'; wait $!; echo $? >'" + first_rc.string() + ".tmp' && mv '" + first_rc.string() +
+      ".tmp' '" + first_rc.string() + "' ) &";
   ASSERT_EQ(std::system(first.c_str()), 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-  while (!fs::exists(partial / "rgb") && !fs::exists(first_rc) &&
+  while (!(fs::exists(first_pid) && fs::exists(partial / "rgb")) && !fs::exists(first_rc) &&
          std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   ASSERT_TRUE(fs::exists(partial / "rgb")) << "the first run never started writing";
+  const pid_t pid = static_cast<pid_t>(std::stol(test::read_file(first_pid)));
+  ASSERT_EQ(::kill(pid, SIGSTOP), 0) << "the first run ended before the second could meet it";
   const auto second =
       wifislam("generate " + scene_.string() + " -o " + out.string() + " --fps 10 -q");
+  ASSERT_EQ(::kill(pid, SIGCONT), 0);
   while (!fs::exists(first_rc) && std::chrono::steady_clock::now() < deadline) {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }

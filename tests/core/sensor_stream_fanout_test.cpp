@@ -85,10 +85,12 @@ TEST(SensorStreamFanout, TheProducerWaitsForTheSlowestConsumerButNotForOneThatLe
     fanout.push(frame_at(3));
     pushed = true;
   });
-  std::this_thread::sleep_for(200ms);
+  // The producer's own count of the times it found the window full, not a sleep: once it has
+  // looked and waited, and again after consumer 0's read woke it, the frame is still out.
+  while (fanout.producer_waits() < 1) std::this_thread::yield();
   EXPECT_FALSE(pushed) << "a fourth frame went in while no consumer had read any";
   ASSERT_TRUE(fanout.consumer(0).next().has_value());
-  std::this_thread::sleep_for(200ms);
+  while (fanout.producer_waits() < 2) std::this_thread::yield();
   EXPECT_FALSE(pushed) << "consumer 1 still has the first frame to read";
   ASSERT_TRUE(fanout.consumer(1).next().has_value());
   producer.join();  // both read frame 0: room for frame 3
