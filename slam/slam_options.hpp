@@ -13,7 +13,7 @@
 #include "core/option_table.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
 #include "slam/frontend/orbslam/orbslam_options.hpp"
-#include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
+#include "slam/frontend/rgbdslam/rgbdslam_options.hpp"
 #include "slam/frontend/rtabmap/rtabmap_options.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 #include "slam/solve/visual_transformation.hpp"
@@ -139,10 +139,11 @@ void visit_options(V& v, SlamOptions& o) {
   v.integer("optimizer_skip_step", o.rgbdslam.optimizer_skip_step,
             "rgbdslam: optimise the graph after every n-th keyframe too, not only after loop "
             "closures (RGBDSLAMv2: 1; 0 = after loop closures only)");
-  v.number("optimizer_convergence", o.rgbdslam.optimizer_convergence,
-           "rgbdslam: each incremental optimisation runs rounds of 5 iterations until chi^2 improves "
-           "by less than this fraction (RGBDSLAMv2's optimizer_iterations 0.01; capped at "
-           "optimizer_iterations); 0 = at most optimizer_incremental_iterations");
+  v.number(
+      "optimizer_convergence", o.rgbdslam.optimizer_convergence,
+      "rgbdslam: each incremental optimisation runs rounds of 5 iterations until chi^2 improves "
+      "by less than this fraction (RGBDSLAMv2's optimizer_iterations 0.01; capped at "
+      "optimizer_iterations); 0 = at most optimizer_incremental_iterations");
   v.text("prune_chi2", o.rgbdslam.prune_chi2,
          "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
          "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge");
