@@ -1,5 +1,5 @@
 #pragma once
-// The SLAM run folder (DESIGN.md, "Data formats"): the names `wifislam slam` writes (slam/io) and
+// The SLAM run folder (docs/run_folder.md): the names `wifislam slam` writes (slam/io) and
 // `wifislam eval` reads (eval/), in one place, like dataset_format.hpp for datasets.
 //
 //   trajectory.txt     every frame, TUM (timestamp tx ty tz qx qy qz qw), camera-to-map
@@ -12,11 +12,8 @@
 //   loop_closures.csv  one row per loop-closure edge, with the candidate role that found it
 //   wifi_clusters.csv  Wi-Fi runs only: one row per cluster (slam/wifi/wifi_cluster_map.hpp); its
 //                      members are keyframe ids (lines of keyframes.txt)
-//   rtabmap_memory.csv rtabmap runs only: one row per node (memory sizes, transfers, retrievals,
-//                      hypothesis, time over budget; columns in rtabmap_memory_column below)
-//   orbslam_queries.csv orbslam runs only: one row per keyframe (its loop detection: indexes and
-//                      keyframes searched, postings read, candidates at each stage; columns in
-//                      orbslam_queries_column below)
+//   (a front end's own files: rtabmap_memory.csv, slam/frontend/rtabmap/rtabmap_memory_csv.hpp;
+//    orbslam_queries.csv, slam/frontend/orbslam/orbslam_queries_csv.hpp)
 //   timing.json        {"modules": {name: {"total_s", "calls"}}, "counters": {name: n},
 //                       "roles": {role: {"comparisons", "ransac_runs", "verified", "accepted",
 //                       "time_s"}}, "keyframe_searches": [...], "wall_s"}
@@ -41,8 +38,6 @@ inline constexpr const char* kKeyframes = "keyframes.txt";
 inline constexpr const char* kGraph = "graph.json";
 inline constexpr const char* kLoopClosures = "loop_closures.csv";
 inline constexpr const char* kWifiClusters = "wifi_clusters.csv";
-inline constexpr const char* kRtabmapMemory = "rtabmap_memory.csv";
-inline constexpr const char* kOrbslamQueries = "orbslam_queries.csv";
 inline constexpr const char* kTiming = "timing.json";
 inline constexpr const char* kRun = "run.json";
 
@@ -141,23 +136,7 @@ inline constexpr const char* kWifiClustersFounded = "wifi_clusters_founded";
 inline constexpr const char* kWifiClusterJoins = "wifi_cluster_joins";
 }  // namespace counter
 
-/// Columns of rtabmap_memory.csv, in order (slam/frontend/rtabmap/rtabmap_front_end.hpp,
-/// RtabmapNodeRecord). Sizes are after the node's memory management; times in ms.
-namespace rtabmap_memory_column {
-// clang-format off
-inline constexpr std::array<const char*, 32> kAll = {
-    "node", "stm", "wm", "ltm",
-    "entered_wm", "retrieved", "wifi_retrieved", "transferred", "immune", "rehearsed",
-    "words", "word_comparisons", "scored", "likelihood_terms", "hypotheses",
-    "best", "best_probability", "virtual_probability",
-    "loop_candidate", "loop_verified", "loop_accepted", "verifications", "loop_verifications",
-    "proximity_candidates",
-    "memory_update_cpu_ms", "likelihood_cpu_ms", "posterior_cpu_ms", "loop_closure_cost_ms",
-    "cost_ms", "wall_ms", "cpu_ms", "over_budget_ms"};
-// clang-format on
-}  // namespace rtabmap_memory_column
-
-/// A CSV header line ("a,b,c\n") of one of the column lists below.
+/// A CSV header line ("a,b,c\n") of a column list (those below, and the front ends' own).
 template <std::size_t N>
 std::string csv_header(const std::array<const char*, N>& columns) {
   std::string line;
@@ -178,17 +157,6 @@ inline constexpr std::array<const char*, 16> kAll = {
     "inliers", "rms_reprojection_px", "tx", "ty", "tz", "qx", "qy", "qz", "qw"};
 // clang-format on
 }  // namespace loop_closures_column
-
-/// Columns of orbslam_queries.csv, in order (slam/frontend/orbslam/orbslam_front_end.hpp,
-/// OrbslamQueryRecord); query_ms is wall-clock, the rest is exact.
-namespace orbslam_queries_column {
-// clang-format off
-inline constexpr std::array<const char*, 12> kAll = {
-    "keyframe", "detection_ran", "databases_searched", "keyframes_searched", "postings_read",
-    "min_score", "candidates", "consistent", "bow_passed", "accepted_loop", "cluster",
-    "query_ms"};
-// clang-format on
-}  // namespace orbslam_queries_column
 
 /// Fields of one role's entry in timing.json's "roles".
 namespace role_key {

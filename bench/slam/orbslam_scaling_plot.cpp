@@ -32,8 +32,9 @@
 #include "core/error.hpp"
 #include "core/run_format.hpp"
 #include "core/text_lines.hpp"
-#include "plot/line_chart.hpp"
 #include "eval/wifi_clusters_csv.hpp"
+#include "plot/line_chart.hpp"
+#include "slam/frontend/orbslam/orbslam_queries_csv.hpp"
 
 namespace {
 
@@ -96,7 +97,7 @@ RunSummary read_run(int wings, const fs::path& folder) {
   run.map_keyframes = meta.at("keyframes").get<long long>();
   run.keyframes_after_tracking_loss = meta.value("keyframes_after_tracking_loss", 0LL);
 
-  namespace col = run_folder::orbslam_queries_column;
+  namespace col = slam::orbslam_queries_csv::column;
   const auto index_of = [](const char* name) {
     return static_cast<std::size_t>(
         std::find_if(col::kAll.begin(), col::kAll.end(),
@@ -111,7 +112,7 @@ RunSummary read_run(int wings, const fs::path& folder) {
       {index_of("query_ms"), &run.query_ms}};
   long long rows = 0;
   for_each_csv_row(
-      (folder / run_folder::kOrbslamQueries).string(), col::kAll, [&](const CsvRow& row) {
+      (folder / slam::orbslam_queries_csv::kFileName).string(), col::kAll, [&](const CsvRow& row) {
         ++rows;
         if (row.fields[ran] != "1") return;
         for (const auto& [column, values] : wanted) {
@@ -125,7 +126,7 @@ RunSummary read_run(int wings, const fs::path& folder) {
       });
   if (rows != run.map_keyframes) {
     throw InvalidInputError(fmt::format("{}: {} rows in {} but {} keyframes in run.json",
-                                        folder.string(), rows, run_folder::kOrbslamQueries,
+                                        folder.string(), rows, slam::orbslam_queries_csv::kFileName,
                                         run.map_keyframes));
   }
   if (run.wifi) {

@@ -23,6 +23,7 @@
 #include "core/run_format.hpp"
 #include "core/text_lines.hpp"
 #include "plot/line_chart.hpp"
+#include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
 
 namespace {
 
@@ -53,7 +54,7 @@ MemoryRun read_run(const std::string& label, const fs::path& folder) {
   }
   run.wifi = meta.value(run_folder::run_key::kWifi, false);
 
-  namespace col = run_folder::rtabmap_memory_column;
+  namespace col = slam::rtabmap_memory_csv::column;
   const auto index_of = [](const char* name) {
     return static_cast<std::size_t>(
         std::find_if(col::kAll.begin(), col::kAll.end(),
@@ -64,7 +65,7 @@ MemoryRun read_run(const std::string& label, const fs::path& folder) {
                     transferred = index_of("transferred"), retrieved = index_of("retrieved"),
                     wifi_retrieved = index_of("wifi_retrieved");
   for_each_csv_row(
-      (folder / run_folder::kRtabmapMemory).string(), col::kAll, [&](const CsvRow& row) {
+      (folder / slam::rtabmap_memory_csv::kFileName).string(), col::kAll, [&](const CsvRow& row) {
         const auto number = [&](std::size_t column) {
           long long v = 0;
           if (!parse_int64(row.fields[column], v)) {

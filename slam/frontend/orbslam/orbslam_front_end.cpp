@@ -9,6 +9,7 @@
 #include "core/atomic_file.hpp"
 #include "core/run_format.hpp"
 #include "slam/bow/shipped_vocabulary.hpp"
+#include "slam/frontend/orbslam/orbslam_queries_csv.hpp"
 
 namespace wifislam::slam {
 
@@ -193,7 +194,7 @@ void OrbslamFrontEnd::after_verification(const VerificationReport& report) {
 }
 
 void OrbslamFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) const {
-  namespace col = run_folder::orbslam_queries_column;
+  namespace col = orbslam_queries_csv::column;
   std::string csv = run_folder::csv_header(col::kAll);
   for (const OrbslamQueryRecord& r : records_) {
     csv += fmt::format("{},{},{},{},{},{:.6g},{},{},{},{},{},{:.4f}\n", r.keyframe,
@@ -201,7 +202,7 @@ void OrbslamFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) co
                        r.postings_read, r.min_score, r.candidates, r.consistent, r.bow_passed,
                        r.accepted_loop, r.cluster, r.query_ms);
   }
-  write_file_atomic(run_dir / run_folder::kOrbslamQueries, csv);
+  write_file_atomic(run_dir / orbslam_queries_csv::kFileName, csv);
 }
 
 nlohmann::json OrbslamFrontEnd::own_summary() const {

@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/run_format.hpp"
 #include "slam/frontend/rtabmap/likelihood.hpp"
+#include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
 
 namespace wifislam::slam {
 
@@ -392,7 +393,7 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
 }
 
 void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) const {
-  namespace col = run_folder::rtabmap_memory_column;
+  namespace col = rtabmap_memory_csv::column;
   std::string csv = run_folder::csv_header(col::kAll);
   for (const RtabmapNodeRecord& r : records_) {
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},", r.node, r.stm, r.wm, r.ltm,
@@ -408,7 +409,7 @@ void RtabmapFrontEnd::write_own_outputs(const std::filesystem::path& run_dir) co
     csv += fmt::format("{:.4f},{:.4f},{:.4f},{:.4f}\n", r.cost_ms, r.wall_ms, r.cpu_ms,
                        r.over_budget_ms);
   }
-  write_file_atomic(run_dir / run_folder::kRtabmapMemory, csv);
+  write_file_atomic(run_dir / rtabmap_memory_csv::kFileName, csv);
 }
 
 nlohmann::json RtabmapFrontEnd::own_summary() const {
