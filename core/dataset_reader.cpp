@@ -15,6 +15,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/dataset_format.hpp"
+#include "core/depth_png.hpp"
 #include "core/error.hpp"
 #include "core/line_cursor.hpp"
 #include "core/output_folder.hpp"
@@ -74,9 +75,7 @@ cv::Mat decode_depth_png(const std::vector<unsigned char>& bytes, double units_p
                                  "metre), got {} channel(s) of {} bytes",
                                  units_per_metre, raw.channels(), raw.elemSize1()));
   }
-  cv::Mat depth_m;
-  raw.convertTo(depth_m, CV_32F, 1.0 / units_per_metre);
-  return depth_m;
+  return depth_from_png_units(raw, units_per_metre);
 }
 
 /// The decoded images of one frame.

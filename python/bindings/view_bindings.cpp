@@ -61,7 +61,7 @@ class Renderer {
       sim::DepthSensorSpec spec = scene_.sensors.depth;
       if (!noise) spec.noise = spec.quantisation = spec.dropouts = false;
       const sim::DepthSensorModel sensor(spec, scene_.sensors.camera.intrinsics, scene_.seed);
-      depth_m = sim::depth_as_stored(sim::depth_to_png_units(sensor.measure(view, frame_index)));
+      depth_m = sim::depth_as_stored(depth_to_png_units(sensor.measure(view, frame_index)));
     }
     return py::make_tuple(rgb_array(view.color_bgr), depth_array(depth_m));
   }
@@ -148,7 +148,7 @@ void bind_views(py::module_& m) {
   m.def(
       "_encode_depth_png",
       [](const py::array& depth) {
-        return png_bytes(sim::encode_png(sim::depth_to_png_units(depth_mat(depth, "depth"))));
+        return png_bytes(sim::encode_png(depth_to_png_units(depth_mat(depth, "depth"))));
       },
       py::arg("depth"));
 }

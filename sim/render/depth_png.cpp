@@ -12,27 +12,6 @@
 
 namespace wifislam::sim {
 
-cv::Mat depth_to_png_units(const cv::Mat& depth_m) {
-  CV_Assert(depth_m.type() == CV_32FC1);
-  cv::Mat units(depth_m.size(), CV_16UC1);
-  for (int y = 0; y < depth_m.rows; ++y) {
-    const float* in = depth_m.ptr<float>(y);
-    auto* out = units.ptr<std::uint16_t>(y);
-    for (int x = 0; x < depth_m.cols; ++x) {
-      const double value = std::nearbyint(static_cast<double>(in[x]) * kDepthPngUnitsPerMetre);
-      out[x] = (value > 0.0 && value <= 65535.0) ? static_cast<std::uint16_t>(value) : 0;
-    }
-  }
-  return units;
-}
-
-cv::Mat depth_from_png_units(const cv::Mat& depth_units) {
-  CV_Assert(depth_units.type() == CV_16UC1);
-  cv::Mat depth_m;
-  depth_units.convertTo(depth_m, CV_32FC1, 1.0 / kDepthPngUnitsPerMetre);
-  return depth_m;
-}
-
 std::vector<unsigned char> encode_png(const cv::Mat& image) {
   std::vector<unsigned char> bytes;
   if (!cv::imencode(".png", image, bytes)) {

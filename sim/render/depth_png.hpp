@@ -1,7 +1,8 @@
 #pragma once
 // Image files of RGB-D frames. Depth follows the TUM RGB-D convention: 16-bit PNG, 5000 units
-// per metre, 0 = no reading. Writes are atomic (core/atomic_file.hpp) and the PNG bytes depend
-// only on the pixels, so equal frames give byte-identical files.
+// per metre, 0 = no reading (its conversions: core/depth_png.hpp). Writes are atomic
+// (core/atomic_file.hpp) and the PNG bytes depend only on the pixels, so equal frames give
+// byte-identical files.
 
 #include <filesystem>
 #include <string>
@@ -9,15 +10,9 @@
 
 #include <opencv2/core.hpp>
 
+#include "core/depth_png.hpp"
+
 namespace wifislam::sim {
-
-inline constexpr double kDepthPngUnitsPerMetre = 5000.0;
-
-/// Metres (CV_32FC1, 0 = no reading) to TUM units (CV_16UC1). Depths that do not fit in 16 bits
-/// (> 13.107 m) become 0 rather than a wrong reading.
-cv::Mat depth_to_png_units(const cv::Mat& depth_m);
-/// TUM units (CV_16UC1) back to metres (CV_32FC1).
-cv::Mat depth_from_png_units(const cv::Mat& depth_units);
 
 /// PNG bytes of an 8-bit (1 or 3 channel, BGR) or 16-bit image; throws IoError on failure.
 std::vector<unsigned char> encode_png(const cv::Mat& image);
