@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/csv_field.hpp"
 #include "core/error.hpp"
 #include "eval/plots.hpp"
 
@@ -26,18 +27,9 @@ const char* const kAssociationRule =
 namespace {
 
 std::string csv_field(const nlohmann::ordered_json& v) {
-  std::string text;
-  if (v.is_string()) {
-    text = v.get<std::string>();
-  } else if (v.is_number_float()) {
-    text = fmt::format("{}", v.get<double>());
-  } else {
-    text = v.dump();
-  }
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
+  if (v.is_string()) return wifislam::csv_field(v.get<std::string>());
+  if (v.is_number_float()) return wifislam::csv_field(fmt::format("{}", v.get<double>()));
+  return wifislam::csv_field(v.dump());
 }
 
 std::string alignment_name(AlignmentMode mode) {

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "core/atomic_file.hpp"
+#include "core/csv_field.hpp"
 #include "core/error.hpp"
 #include "core/worker_pool.hpp"
 #include "eval/evaluate_run.hpp"
@@ -76,13 +77,7 @@ slam::SlamOptions options_for(const ComparisonOptions& options, const Setting& s
 }
 
 std::string csv_field(const nlohmann::ordered_json& value) {
-  if (value.is_string()) {
-    const std::string s = value.get<std::string>();
-    if (s.find_first_of(",\"\n") == std::string::npos) return s;
-    std::string quoted = "\"";
-    for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-  }
+  if (value.is_string()) return wifislam::csv_field(value.get<std::string>());
   if (value.is_null()) return "";
   return value.dump();
 }
@@ -566,9 +561,9 @@ ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
   for (const std::string& assignment : options.settings) {
     const std::string key = assignment.substr(0, assignment.find('='));
     if (swept.count(key)) {
-      throw InvalidInputError(fmt::format(
-          "compare: {0} is both set (--set {1}) and swept (--sweep {0}=...); keep one", key,
-          assignment));
+      throw InvalidInputError(
+          fmt::format("compare: {0} is both set (--set {1}) and swept (--sweep {0}=...); keep one",
+                      key, assignment));
     }
   }
   ComparisonResult result;

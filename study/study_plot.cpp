@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "core/atomic_file.hpp"
+#include "core/csv_field.hpp"
 #include "core/error.hpp"
 #include "plot/line_chart.hpp"
 
@@ -76,13 +77,6 @@ struct AxisColumn {
   std::vector<SqlValue> values;  // distinct, in first-seen order (study order)
   bool numeric = true;
 };
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 /// Median and the band (min-max of the finite values) of one point's cases; +inf stands for NULL
 /// (no resolution), so a median that is not finite is no value.
@@ -265,8 +259,9 @@ class StudyFigures {
         const std::string x_text =
             categorical_x_ ? categories_[static_cast<std::size_t>(x)] : fmt::format("{:g}", x);
         const auto cell = [](double d) { return std::isfinite(d) ? fmt::format("{:g}", d) : ""; };
-        csv += fmt::format("{},{},{},{},{},{},{}\n", metric.column, csv_field(series.label),
-                           csv_field(x_text), v.cases, cell(v.median), cell(v.lo), cell(v.hi));
+        csv += fmt::format("{},{},{},{},{},{},{}\n", metric.column,
+                           wifislam::csv_field(series.label), wifislam::csv_field(x_text), v.cases,
+                           cell(v.median), cell(v.lo), cell(v.hi));
       }
       chart.series.push_back(std::move(series));
     }

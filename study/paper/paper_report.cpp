@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/csv_field.hpp"
 #include "study/paper/paper_figures.hpp"
 #include "study/paper/paper_folder.hpp"
 #include "study/paper/paper_plan.hpp"
@@ -65,13 +66,6 @@ std::string cell_text(const std::string& s) {
   return out;
 }
 
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
-
 const char* part_title(Part part) {
   switch (part) {
     case Part::kDatasets:
@@ -93,9 +87,10 @@ const char* part_title(Part part) {
 /// The paper's table in its layout: one row per building, one column per setting and variant;
 /// each cell "paper → ours (verdict)".
 std::string table_grid(const PaperTable& table, const std::vector<ComparedNumber>& compared) {
-  std::string out = fmt::format("**{}** (`{}`). Each cell: the paper's value → ours (mean over "
-                                "seeds), and the verdict.\n\n| building |",
-                                table.caption, table.label);
+  std::string out = fmt::format(
+      "**{}** (`{}`). Each cell: the paper's value → ours (mean over "
+      "seeds), and the verdict.\n\n| building |",
+      table.caption, table.label);
   std::string rule = "| --- |";
   for (const std::string& s : table.settings) {
     for (Variant v : table.variants) {
@@ -115,11 +110,10 @@ std::string table_grid(const PaperTable& table, const std::vector<ComparedNumber
               n.setting != table.setting_key + "=" + s || n.variant != v) {
             continue;
           }
-          out += fmt::format(" {} → {} ({}) |", paper_value_text(n),
-                             c.ours.empty() ? "-"
-                                            : fmt::format("{:.{}f}", c.ours.mean(),
-                                                          decimals_of(n.quantity)),
-                             verdict_word(c.judgement.verdict));
+          out += fmt::format(
+              " {} → {} ({}) |", paper_value_text(n),
+              c.ours.empty() ? "-" : fmt::format("{:.{}f}", c.ours.mean(), decimals_of(n.quantity)),
+              verdict_word(c.judgement.verdict));
         }
       }
     }
@@ -136,12 +130,11 @@ std::string detail_table(Part part, const std::vector<ComparedNumber>& compared)
   for (const ComparedNumber& c : compared) {
     const PaperNumber& n = *c.paper;
     if (n.part != part) continue;
-    out += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", n.source,
-                       n.twin.empty() ? "all" : hall_name(n.twin),
-                       n.setting.empty() ? "-" : n.setting, to_string(n.variant),
-                       to_string(n.quantity), paper_value_text(n), ours_text(c),
-                       verdict_word(c.judgement.verdict), cell_text(c.judgement.why),
-                       cell_text(c.context));
+    out += fmt::format(
+        "| `{}` | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", n.source,
+        n.twin.empty() ? "all" : hall_name(n.twin), n.setting.empty() ? "-" : n.setting,
+        to_string(n.variant), to_string(n.quantity), paper_value_text(n), ours_text(c),
+        verdict_word(c.judgement.verdict), cell_text(c.judgement.why), cell_text(c.context));
   }
   return out + "\n";
 }
@@ -166,8 +159,9 @@ std::string quotes(const std::vector<ComparedNumber>& compared, Part part) {
 }
 
 std::string page_header(Part part, const std::string& lead) {
-  return fmt::format("# {}: the paper beside our twins\n\n{}\n\n[Back to the report](report.md)\n\n",
-                     part_title(part), lead);
+  return fmt::format(
+      "# {}: the paper beside our twins\n\n{}\n\n[Back to the report](report.md)\n\n",
+      part_title(part), lead);
 }
 
 std::string figure_links(const std::vector<PaperFigure>& figures, Part part) {
@@ -223,8 +217,7 @@ std::string datasets_page(const PaperMeasurements& m, const std::vector<Compared
     }
     out += fmt::format("| {} | {} (at {:g} fps) | {} | {} | {} | {} | {} % | {} % | {} |\n",
                        hall_name(twin), frames.text(0), fps, duration.text(0), pauses.text(0),
-                       scans.text(0), heard.text(1), far.text(1), near.text(1),
-                       resolution.text(1));
+                       scans.text(0), heard.text(1), far.text(1), near.text(1), resolution.text(1));
   }
   out +=
       "\n\"Look alike\": cosine similarity of the two pauses' signatures at or above the SLAM's "
@@ -278,9 +271,9 @@ std::string rgbdslam_trends(const PaperMeasurements& m) {
       for (int other : t.along_min_matches ? ids : mms) {
         const int mm = t.along_min_matches ? value : other;
         const int id = t.along_min_matches ? other : value;
-        const Measured v = m.column(Part::kRgbdslam, "c_hall",
-                                    fmt::format("min_matches={} inlier_distance={}", mm, id),
-                                    false, t.column);
+        const Measured v =
+            m.column(Part::kRgbdslam, "c_hall",
+                     fmt::format("min_matches={} inlier_distance={}", mm, id), false, t.column);
         if (!v.empty()) {
           sum += v.mean();
           ++n;
@@ -329,9 +322,9 @@ std::string rgbdslam_page(const PaperMeasurements& m, const std::vector<Compared
     const Measured kf = m.column(Part::kRgbdslam, "c_hall", setting, false, "keyframes");
     const auto mm = setting.substr(12, setting.find(' ') - 12);
     const auto id = setting.substr(setting.rfind('=') + 1);
-    out += fmt::format("| {} | {} | {} / {} | {} / {} | {} / {} | {} |\n", mm, id,
-                       fp.first.text(1), fp.second.text(1), t.first.text(2), t.second.text(2),
-                       ate.first.text(2), ate.second.text(2), kf.text(0));
+    out += fmt::format("| {} | {} | {} / {} | {} / {} | {} / {} | {} |\n", mm, id, fp.first.text(1),
+                       fp.second.text(1), t.first.text(2), t.second.text(2), ate.first.text(2),
+                       ate.second.text(2), kf.text(0));
   }
   out += "\n" + rgbdslam_trends(m);
   out += figure_links(figures, Part::kRgbdslam);
@@ -409,13 +402,14 @@ std::string orbslam_a_hall(const PaperMeasurements& m) {
   const Measured ate = m.column(Part::kOrbslam, "a_hall", "min_matches=20", false, "ate_rmse_m");
   // "A result" as the paper means it: a usable trajectory. Ours always ends with one; it counts
   // as a result when its error is below a metre on the 186 m route.
-  out += ate.max() < 1.0
-             ? fmt::format("\nOurs runs to the end with an ATE of {:.2f} m: unlike the paper's "
-                           "hall, our A Hall twin does not defeat ORB-SLAM.\n\n",
-                           ate.mean())
-             : fmt::format("\nOurs runs to the end, but {} m off (ATE): like the paper's, the "
-                           "twin's sparse features defeat ORB-SLAM.\n\n",
-                           ate.text(2));
+  out += ate.max() < 1.0 ? fmt::format(
+                               "\nOurs runs to the end with an ATE of {:.2f} m: unlike the paper's "
+                               "hall, our A Hall twin does not defeat ORB-SLAM.\n\n",
+                               ate.mean())
+                         : fmt::format(
+                               "\nOurs runs to the end, but {} m off (ATE): like the paper's, the "
+                               "twin's sparse features defeat ORB-SLAM.\n\n",
+                               ate.text(2));
   return out;
 }
 
@@ -443,13 +437,14 @@ std::string fabmap_page(const PaperMeasurements& m, const std::vector<ComparedNu
           w4.per_seed.push_back(100 * entry["all"].value("within_4m", 0.0));
         }
       }
-      out += fmt::format("| {} | {} | {} | {} | {} | {} |\n", hall_name(twin), method,
-                         w1.text(1), w2.text(1), w4.text(1), w4.per_seed.size());
+      out += fmt::format("| {} | {} | {} | {} | {} | {} |\n", hall_name(twin), method, w1.text(1),
+                         w2.text(1), w4.text(1), w4.per_seed.size());
     }
   }
   out += "\n## The paper's comparisons, judged on the share within 4 m\n\n";
-  out += "| building | the paper | ours vs Wi-Fi FAB-MAP (within 4 m) | agrees |\n| --- | --- | "
-         "--- | --- |\n";
+  out +=
+      "| building | the paper | ours vs Wi-Fi FAB-MAP (within 4 m) | agrees |\n| --- | --- | "
+      "--- | --- |\n";
   const std::map<std::string, std::string> claim = {{"c_hall", "ours better"},
                                                     {"b_hall", "ours better"},
                                                     {"j_hall", "similar"},
@@ -473,20 +468,22 @@ std::string fabmap_page(const PaperMeasurements& m, const std::vector<ComparedNu
                        claim.at(twin), ours.mean(), theirs.mean(), measured,
                        measured == claim.at(twin) ? "yes" : "no");
   }
-  out += "\n(\"similar\": within the tolerance of verdict.hpp: 10 % of the larger plus 2 points.)\n\n";
+  out +=
+      "\n(\"similar\": within the tolerance of verdict.hpp: 10 % of the larger plus 2 points.)\n\n";
   out += figure_links(figures, Part::kFabmap);
   out += "## Every number\n\n" + detail_table(Part::kFabmap, compared);
   return out;
 }
 
 std::string abstract_table(const std::vector<ComparedNumber>& compared) {
-  std::string out = "| the paper | quantity | paper | ours | verdict | how ours is computed |\n| "
-                    "--- | --- | ---: | ---: | --- | --- |\n";
+  std::string out =
+      "| the paper | quantity | paper | ours | verdict | how ours is computed |\n| "
+      "--- | --- | ---: | ---: | --- | --- |\n";
   for (const ComparedNumber& c : compared) {
     if (c.paper->part != Part::kAbstract) continue;
     out += fmt::format("| abstract | {} | {} | {} | {} | {} |\n", to_string(c.paper->quantity),
-                       paper_value_text(*c.paper), ours_text(c),
-                       verdict_word(c.judgement.verdict), cell_text(c.context));
+                       paper_value_text(*c.paper), ours_text(c), verdict_word(c.judgement.verdict),
+                       cell_text(c.context));
   }
   return out + "\n";
 }
@@ -510,15 +507,24 @@ nlohmann::json number_json(const ComparedNumber& c) {
   const PaperNumber& n = *c.paper;
   nlohmann::json ours = nullptr;
   if (!c.ours.empty()) {
-    ours = {{"mean", c.ours.mean()}, {"sd", c.ours.sd()}, {"min", c.ours.min()},
-            {"max", c.ours.max()}, {"seeds", c.ours.per_seed.size()}};
+    ours = {{"mean", c.ours.mean()},
+            {"sd", c.ours.sd()},
+            {"min", c.ours.min()},
+            {"max", c.ours.max()},
+            {"seeds", c.ours.per_seed.size()}};
   }
-  return {{"part", to_string(n.part)},       {"source", n.source},
-          {"building", n.twin},              {"setting", n.setting},
-          {"variant", to_string(n.variant)}, {"quantity", to_string(n.quantity)},
-          {"paper", paper_value_text(n)},    {"paper_value", n.value},
-          {"ours", ours},                    {"verdict", to_string(c.judgement.verdict)},
-          {"why", c.judgement.why},          {"measured", c.context}};
+  return {{"part", to_string(n.part)},
+          {"source", n.source},
+          {"building", n.twin},
+          {"setting", n.setting},
+          {"variant", to_string(n.variant)},
+          {"quantity", to_string(n.quantity)},
+          {"paper", paper_value_text(n)},
+          {"paper_value", n.value},
+          {"ours", ours},
+          {"verdict", to_string(c.judgement.verdict)},
+          {"why", c.judgement.why},
+          {"measured", c.context}};
 }
 
 std::string numbers_csv(const std::vector<ComparedNumber>& compared) {
@@ -530,11 +536,12 @@ std::string numbers_csv(const std::vector<ComparedNumber>& compared) {
     const bool has = !c.ours.empty();
     out += fmt::format(
         "{},{},{},{},{},{},{},{},{},{},{},{},{},{},{},{}\n", to_string(n.part), n.source, n.twin,
-        csv_field(n.setting), to_string(n.variant), to_string(n.quantity),
-        csv_field(paper_value_text(n)), n.value, has ? fmt::format("{}", c.ours.mean()) : "",
-        has ? fmt::format("{}", c.ours.sd()) : "", has ? fmt::format("{}", c.ours.min()) : "",
-        has ? fmt::format("{}", c.ours.max()) : "", c.ours.per_seed.size(),
-        to_string(c.judgement.verdict), csv_field(c.judgement.why), csv_field(c.context));
+        wifislam::csv_field(n.setting), to_string(n.variant), to_string(n.quantity),
+        wifislam::csv_field(paper_value_text(n)), n.value,
+        has ? fmt::format("{}", c.ours.mean()) : "", has ? fmt::format("{}", c.ours.sd()) : "",
+        has ? fmt::format("{}", c.ours.min()) : "", has ? fmt::format("{}", c.ours.max()) : "",
+        c.ours.per_seed.size(), to_string(c.judgement.verdict),
+        wifislam::csv_field(c.judgement.why), wifislam::csv_field(c.context));
   }
   return out;
 }
