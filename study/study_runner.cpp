@@ -10,6 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/wall_clock.hpp"
 #include "core/worker_pool.hpp"
 #include "core/yaml_document.hpp"
 #include "peers/external_system.hpp"
@@ -202,7 +203,7 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
     row.variant = "radio";
     row.scene_hash = scene_hash;
     row.metrics = column_values(radio_metric_columns(), r);
-    row.timing = {{"case_s", std::chrono::duration<double>(Clock::now() - start).count()}};
+    row.timing = {{"case_s", seconds_since(start)}};
     return {row};
   }
   const fs::path work = fresh_case_folder(scratch_dir, c);
@@ -263,13 +264,12 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
     store.write_case(todo[i], rows);
     ++done;
     progress(fmt::format("[{}/{}] case {} ({}): {:.1f} s", summary.skipped + done, cases.size(),
-                         todo[i].id, case_label(study, todo[i]),
-                         std::chrono::duration<double>(Clock::now() - case_start).count()));
+                         todo[i].id, case_label(study, todo[i]), seconds_since(case_start)));
   });
   std::error_code ec;
   fs::remove(scratch, ec);  // empty once every case is done (never recursive: it may be shared)
   summary.ran = done;
-  summary.wall_s = std::chrono::duration<double>(Clock::now() - start).count();
+  summary.wall_s = seconds_since(start);
   return summary;
 }
 

@@ -16,6 +16,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/wall_clock.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/bow/shipped_vocabulary.hpp"
 #include "study/localisation_report.hpp"
@@ -127,8 +128,7 @@ void run(const LocalizeArgs& args, bool route_given) {
   if (!args.quiet) {
     fmt::print(stderr, "localize: {}: {} images, {} pause scans, {} moving scans ({:.0f} s)\n",
                data.description, data.images.size(), data.pause_scans.size(),
-               data.moving_scans.size(),
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+               data.moving_scans.size(), seconds_since(start));
   }
   const study::LocalisationResult result =
       study::run_localisation(data, *vocabulary, training, options);

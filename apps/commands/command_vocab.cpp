@@ -16,6 +16,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/wall_clock.hpp"
 #include "sim/generate/sensor_input.hpp"
 #include "slam/bow/shipped_vocabulary.hpp"
 #include "slam/bow/vocabulary_tree.hpp"
@@ -96,8 +97,7 @@ void train(const TrainArgs& args) {
   options.seed = args.seed;
   const slam::bow::VocabularyTree tree = slam::bow::VocabularyTree::train(images, options);
   tree.save(args.output);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   fmt::print(
       "vocabulary: {} images, {} descriptors -> {} words ({} nodes, k {}, L {}), {} bytes, "
       "{:.1f} s -> {}\nsha256 {}\n",
@@ -126,16 +126,14 @@ void train_fabmap(const TrainArgs& args, const std::string& vocabulary_path) {
   fmt::print(
       "FAB-MAP training: {} observations, {} words, {} trees (roots), {:.1f} s -> {}\n"
       "sha256 {}\n",
-      training.observations.size(), words, roots,
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), args.output,
+      training.observations.size(), words, roots, seconds_since(start), args.output,
       sha256_file_hex(args.output));
 }
 
 void info(const std::string& file) {
   const auto start = std::chrono::steady_clock::now();
   const slam::bow::VocabularyTree tree = slam::bow::VocabularyTree::load(file);
-  const double load_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double load_s = seconds_since(start);
   fmt::print(
       "{}: k {}, L {}, {} words, {} nodes, trained on {} images ({} descriptors); loaded "
       "in {:.3f} s\nsha256 {}\n",

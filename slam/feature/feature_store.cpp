@@ -1,4 +1,5 @@
 #include "slam/feature/feature_store.hpp"
+#include "core/wall_clock.hpp"
 
 #include <chrono>
 
@@ -10,8 +11,7 @@ FeatureStore::FeatureStore(const FeatureOptions& options, const CameraIntrinsics
 void FeatureStore::add(const RgbdFrame& frame) {
   const auto start = std::chrono::steady_clock::now();
   auto features = std::make_shared<const FrameFeatures>(extractor_.extract(frame));
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = seconds_since(start);
   std::lock_guard lock(mutex_);
   entries_.emplace(frame.index, Entry{std::move(features), seconds});
 }

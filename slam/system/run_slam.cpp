@@ -1,4 +1,5 @@
 #include "slam/system/run_slam.hpp"
+#include "core/wall_clock.hpp"
 
 #include <chrono>
 
@@ -24,8 +25,7 @@ std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& op
     }
   }
   system->finish();
-  const double wall_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double wall_s = seconds_since(start);
   summary = summarize(*system, stream.description(), wall_s);
   return system;
 }

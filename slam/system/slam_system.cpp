@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "core/wall_clock.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 
 namespace wifislam::slam {
@@ -62,9 +63,9 @@ VisualTransformation SlamSystem::compare(const FrameFeatures& a, const FrameFeat
   const auto start = std::chrono::steady_clock::now();
   VisualTransformation t = estimate_visual_transformation(a, b, stream_.intrinsics,
                                                           options_.transform, instrumentation_);
-  instrumentation_.record_comparison(
-      role, instrumentation_.counter(counter::kRansacRuns) - ransac_before, t.accepted,
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  instrumentation_.record_comparison(role,
+                                     instrumentation_.counter(counter::kRansacRuns) - ransac_before,
+                                     t.accepted, seconds_since(start));
   return t;
 }
 

@@ -1,4 +1,5 @@
 #include "slam/util/instrumentation.hpp"
+#include "core/wall_clock.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -75,7 +76,7 @@ nlohmann::json Instrumentation::to_json() const {
 double ScopedTimer::stop() {
   if (stopped_) return 0.0;
   stopped_ = true;
-  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double s = seconds_since(start_);
   instrumentation_->add_time(module_, s);
   return s;
 }

@@ -16,6 +16,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/wall_clock.hpp"
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
 #include "sim/generate/generation_pipeline.hpp"
@@ -37,10 +38,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 std::string read_text(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -172,7 +169,8 @@ class GroupRunner {
 
     std::vector<slam::FeatureOptions> features;
     for (std::size_t s = 0; s < files.size(); ++s)
-      for (const StudyCase& c : todo[s]) features.push_back(case_slam_options(files[s], c).features);
+      for (const StudyCase& c : todo[s])
+        features.push_back(case_slam_options(files[s], c).features);
 
     const auto start = Clock::now();
     sim::GenerateOptions generate;
@@ -180,8 +178,8 @@ class GroupRunner {
     const RecordedDataset dataset(site, work / "dataset", generate, features, options_.jobs);
     times["shared rendering and feature extraction"] += seconds_since(start);
     write_dataset_facts(site, dataset.summary(), group);
-    progress(fmt::format("{}: generated and recorded {} frames ({:.0f} s); {} cases to run",
-                         group, dataset.summary().frames, seconds_since(start), cases));
+    progress(fmt::format("{}: generated and recorded {} frames ({:.0f} s); {} cases to run", group,
+                         dataset.summary().frames, seconds_since(start), cases));
 
     std::int64_t runs = 0;
     for (std::size_t s = 0; s < files.size(); ++s) {
@@ -203,9 +201,9 @@ class GroupRunner {
   static void fresh_work_folder(const fs::path& work) {
     if (fs::exists(work)) {
       if (!has_output_marker(work)) {
-        throw InvalidInputError(fmt::format(
-            "{}: exists and was not made by wifislam (no {}); move it away", work.string(),
-            kOutputMarkerFile));
+        throw InvalidInputError(
+            fmt::format("{}: exists and was not made by wifislam (no {}); move it away",
+                        work.string(), kOutputMarkerFile));
       }
       fs::remove_all(work);
     }
@@ -255,8 +253,8 @@ class GroupRunner {
         run.slam.seed = dataset.summary().seed;  // as compare: the dataset's seed
         run.slam.wifi.enabled = wifi;
         slam::validate(run.slam);
-        run.run_dir = work / planned.name() / setting_folder(file, todo[i]) /
-                      (wifi ? "wifi" : "vanilla");
+        run.run_dir =
+            work / planned.name() / setting_folder(file, todo[i]) / (wifi ? "wifi" : "vanilla");
         run.run_info = {{"input", {{"kind", "dataset"}, {"path", "dataset"}}}};
         runs.push_back(std::move(run));
         owner.emplace_back(i, wifi);
@@ -269,7 +267,8 @@ class GroupRunner {
       eval::RunEvaluation evaluation =
           eval::evaluate_run(run.run_dir, dataset.dataset_dir(), eval::EvalOptions{});
       const std::string setting = setting_folder(file, todo[i]);
-      if (kept_for_figures(planned, setting, wifi)) keep_for_figures(planned, run, evaluation, setting, wifi);
+      if (kept_for_figures(planned, setting, wifi))
+        keep_for_figures(planned, run, evaluation, setting, wifi);
       std::lock_guard lock(mutex);
       progress(fmt::format("{} {} {}: ATE {:.3f} m, loop closures {} ({} wrong place), {:.0f} s",
                            planned.name(), setting, wifi ? "wifi" : "vanilla",
@@ -293,8 +292,8 @@ class GroupRunner {
   void keep_for_figures(const PlannedStudy& planned, const StreamedRun& run,
                         const eval::RunEvaluation& evaluation, const std::string& setting,
                         bool wifi) {
-    const fs::path kept = options_.folder / folder::kRuns / planned.name() / setting /
-                          (wifi ? "wifi" : "vanilla");
+    const fs::path kept =
+        options_.folder / folder::kRuns / planned.name() / setting / (wifi ? "wifi" : "vanilla");
     std::error_code ec;
     fs::remove_all(kept, ec);
     fs::create_directories(kept);
@@ -421,8 +420,8 @@ PaperRunSummary run_paper(const PaperRunOptions& options) {
       }
     }
   }
-  const bool with_fabmap = std::find(options.parts.begin(), options.parts.end(),
-                                     Part::kFabmap) != options.parts.end();
+  const bool with_fabmap =
+      std::find(options.parts.begin(), options.parts.end(), Part::kFabmap) != options.parts.end();
   for (std::size_t g = 0; g < groups.size(); ++g) {
     if (static_cast<int>(g % static_cast<std::size_t>(options.shard_count)) !=
         options.shard_index) {
@@ -439,10 +438,10 @@ PaperRunSummary run_paper(const PaperRunOptions& options) {
         ++summary.localisations;
         times["fabmap"] += seconds_since(fabmap_start);
         if (options.on_progress) {
-          options.on_progress(fmt::format("fabmap {}: localised ({:.0f} s)",
-                                          folder::twin_seed(group_keys[g].first,
-                                                            group_keys[g].second),
-                                          seconds_since(fabmap_start)));
+          options.on_progress(
+              fmt::format("fabmap {}: localised ({:.0f} s)",
+                          folder::twin_seed(group_keys[g].first, group_keys[g].second),
+                          seconds_since(fabmap_start)));
         }
       }
     }
@@ -457,7 +456,8 @@ PaperRunSummary run_paper(const PaperRunOptions& options) {
 std::map<std::string, double> paper_part_times(const fs::path& dir) {
   std::map<std::string, double> out;
   if (!fs::exists(dir / folder::kTiming)) return out;
-  const nlohmann::json timing = nlohmann::json::parse(read_text(dir / folder::kTiming), nullptr, false);
+  const nlohmann::json timing =
+      nlohmann::json::parse(read_text(dir / folder::kTiming), nullptr, false);
   if (!timing.is_object()) return out;
   for (const auto& [k, v] : timing.items())
     if (v.is_number()) out[k] = v.get<double>();
