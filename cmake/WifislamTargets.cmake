@@ -12,7 +12,7 @@ function(wifislam_unity_build target)
   endif()
 endfunction()
 
-# wifislam_library(<name> SOURCES ... DEPS ...): one library per folder (DESIGN.md, "Layout").
+# wifislam_library(<name> SOURCES ... DEPS ...): one library per folder (docs/layout.md).
 function(wifislam_library name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;PRIVATE_DEPS" ${ARGN})
   add_library(${name} STATIC ${ARG_SOURCES})

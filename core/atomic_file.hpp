@@ -1,5 +1,5 @@
 #pragma once
-// Atomic writes (DESIGN.md, "Conventions"): a crash or Ctrl-C never leaves a half-written file
+// Atomic writes: a crash or Ctrl-C never leaves a half-written file
 // or folder that looks finished.
 
 #include <filesystem>

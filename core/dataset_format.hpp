@@ -1,5 +1,5 @@
 #pragma once
-// The dataset folder (DESIGN.md, "Data formats"): TUM RGB-D compatible, so RTAB-Map, ORB-SLAM and
+// The dataset folder: TUM RGB-D compatible, so RTAB-Map, ORB-SLAM and
 // evo read it, plus Wi-Fi, odometry, calibration and a manifest. The names and conventions both
 // the writer (sim/generate) and the reader (dataset_reader.hpp) use.
 //

@@ -1,6 +1,6 @@
 #pragma once
-// Reads a dataset folder as a SensorStream: our datasets (DESIGN.md, "Data formats";
-// dataset_format.hpp) and plain TUM RGB-D datasets (rgb.txt + depth.txt, associated as TUM's
+// Reads a dataset folder as a SensorStream: our datasets
+// (dataset_format.hpp) and plain TUM RGB-D datasets (rgb.txt + depth.txt, associated as TUM's
 // associate.py does, or associations.txt). A folder without wifi.csv has no Wi-Fi
 // (has_wifi() is false and description() says so); one without odometry.txt has no odometry; one
 // without calibration.yaml uses the TUM default Kinect v1 intrinsics and 5000 depth units per

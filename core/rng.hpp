@@ -1,5 +1,5 @@
 #pragma once
-// Seeded random numbers with named sub-streams (DESIGN.md, "Conventions").
+// Seeded random numbers with named sub-streams.
 //
 // Every consumer derives its own generator from the scene seed and a stream name, e.g.
 // `Rng::stream(seed, "shadowing/ap17")`, so adding a random consumer never changes another

@@ -1,6 +1,6 @@
 #pragma once
 // wifi.csv: Wi-Fi scans, one row per BSSID heard per scan, with LaMAR's Wi-Fi record columns
-// (DESIGN.md, "Data formats"):
+// (core/dataset_format.hpp):
 //
 //   timestamp,sensor_id,mac_addr,frequency_khz,rssi_dbm,name,scan_time_start_us,scan_time_end_us
 //   3500000,wifi0,02:1a:2b:3c:4d:50,2412000,-61,campus,0,3500000

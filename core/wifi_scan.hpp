@@ -1,7 +1,7 @@
 #pragma once
 // Wi-Fi scan records, as a receiver reports them: one scan = the BSSIDs heard during one sweep
 // over the channels, each with an integer RSSI. Mirrors LaMAR's Wi-Fi record columns
-// (DESIGN.md, "Data formats": timestamp, sensor_id, mac_addr, frequency_khz, rssi_dbm, name,
+// (core/dataset_format.hpp: timestamp, sensor_id, mac_addr, frequency_khz, rssi_dbm, name,
 // scan_time_start_us, scan_time_end_us).
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #pragma once
-// Every threshold of the evaluation, with its default and why (DESIGN.md, "Ground truth and
-// metrics"). All of them are written into metrics.json, metrics.csv and report.md, so a number is
-// never read without the rule that produced it. `wifislam eval --set key=value` changes them.
+// Every threshold of the evaluation, with its default and why (docs/evaluation.md). All of them are
+// written into metrics.json, metrics.csv and report.md, so a number is never read without the rule
+// that produced it. `wifislam eval --set key=value` changes them.
 
 #include <string>
 #include <vector>

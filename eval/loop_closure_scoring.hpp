@@ -1,5 +1,5 @@
 #pragma once
-// Loop closures scored against exact ground truth (DESIGN.md, "Ground truth and metrics"; the
+// Loop closures scored against exact ground truth (docs/evaluation.md; the
 // paper's "False Positive/Negative in Computing Loop Closure").
 //
 // - Scored edges: every accepted edge of type visual or loop whose two keyframes lie at least

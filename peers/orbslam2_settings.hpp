@@ -12,8 +12,8 @@
 
 namespace wifislam::peers {
 
-/// The Kinect v1's projector-to-camera baseline (DESIGN.md, ICL-NUIM / simkinect), used when the
-/// calibration does not state the depth sensor's own.
+/// The Kinect v1's projector-to-camera baseline (the ICL-NUIM / simkinect Kinect model), used when
+/// the calibration does not state the depth sensor's own.
 inline constexpr double kKinectV1BaselineM = 0.075;
 
 /// The depth sensor's baseline from calibration.yaml's sensor_model (depth_sensor.baseline_m),

@@ -1,4 +1,4 @@
-// Radio model benchmarks on j_hall (DESIGN.md, "Performance stance"):
+// Radio model benchmarks on j_hall (docs/benchmarks.md):
 //  - wall-crossing segment queries (AP -> receiver, 30 m, every wall counted) per second, next
 //    to bare Embree rtcIntersect1 rays on the same walls and segments in the same run (ratio);
 //    on random segments and on the radio map's rows (an AP to every cell);
@@ -16,8 +16,8 @@
 #include "sim/radio/propagation_model.hpp"
 #include "sim/radio/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
-#include "sim/world/plan_queries.hpp"
 #include "sim/site/site.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
 // Frame time of the RGB-D harness (render + readback + sensor model) next to the bare OSMesa cost
 // of drawing the same mesh with the same textures and reading colour and depth back, as a ratio
-// measured in the same run (DESIGN.md, "Performance stance"). Counters, all medians over frames:
+// measured in the same run (docs/benchmarks.md). Counters, all medians over frames:
 // bare_ms, render_ms (harness render + readback + unpack), sensor_ms, frame_ms (render + sensor),
 // frame_over_bare (the target: <= 1.3) and render_over_bare.
 // BM_PipelinedVsBare: the same in stretches of consecutive frames, one frame after the other

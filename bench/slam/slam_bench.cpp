@@ -1,7 +1,7 @@
 // rgbdslam on the c_hall scene, frames streamed from the generator (640x480). For every frame the
 // bare cost of OpenCV's ORB (detect + compute, same settings) is measured in the same run, so the
 // figure that matters is the ratio pipeline / bare ORB, which survives noisy machines
-// (DESIGN.md, "Performance stance"). Rendering is not counted: the pipeline's own clock is.
+// (docs/benchmarks.md). Rendering is not counted: the pipeline's own clock is.
 //
 // Environment: WIFISLAM_BENCH_SCENE (default c_hall), WIFISLAM_BENCH_FPS (default 30),
 // WIFISLAM_BENCH_MAX_FRAMES (default 900; -1 = the whole route), WIFISLAM_BENCH_SET

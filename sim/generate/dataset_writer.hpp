@@ -1,5 +1,5 @@
 #pragma once
-// Writes a generated dataset folder (DESIGN.md, "Data formats"; core/dataset_format.hpp).
+// Writes a generated dataset folder (core/dataset_format.hpp).
 //
 // Atomic: everything goes into `<output>.partial/`, renamed to `<output>` only when complete; an
 // error removes the partial folder, so nothing that looks finished is left behind.

@@ -58,8 +58,9 @@ class EmbreeWallScene {
   EmbreeWallScene(const EmbreeWallScene&) = delete;
   EmbreeWallScene& operator=(const EmbreeWallScene&) = delete;
 
-  /// Stretches of material within 1 mm of a face apart are one crossing (coincident faces of
-  /// touching solids); stretches shorter than this are touches, not crossings.
+  /// Stretches of material less than kTouchGapM (0.1 mm) apart are one crossing (coincident
+  /// faces of touching solids); stretches shorter than kMinCrossingM (1 mm) are touches, not
+  /// crossings.
   static constexpr double kTouchGapM = 1e-4;
   static constexpr double kMinCrossingM = 1e-3;
 

@@ -1,6 +1,6 @@
 #pragma once
 // Procedural surface textures, generated deterministically from the scene seed, the theme name,
-// the surface kind and the appearance variant (DESIGN.md, "Conventions").
+// the surface kind and the appearance variant (one seed, one look: datasets are byte-identical).
 //
 // Appearance variant 0 is the shared look: every wall segment with variant 0 gets the very same
 // texture, so at aliasing 1.0 two corridor segments render (near-)identical images. A variant

@@ -1,6 +1,6 @@
 #pragma once
 // Which verified hypotheses become graph edges: the part of loop closing where the three families
-// differ most after candidate selection (DESIGN.md, "The SLAM pipeline").
+// differ most after candidate selection (docs/frontends.md).
 //   all               every verified hypothesis (RGBD-SLAM: the back end sorts them out later)
 //   best              every ordinary visual hypothesis, and of the loop hypotheses only the one
 //                     with most inliers (RTAB-Map and ORB-SLAM close at most one loop per node);

@@ -1,8 +1,8 @@
 #pragma once
-// A SLAM front end: the policies where the three families of the paper differ (DESIGN.md, "The
-// SLAM pipeline"). The shared pipeline (slam/system) owns features, tracking, the keyframe
-// decision, visual verification, the pose graph and its optimiser, and run output; for each new
-// keyframe it asks the front end
+// A SLAM front end: the policies where the three families of the paper differ (docs/frontends.md).
+// The shared pipeline (slam/system) owns features, tracking, the keyframe decision, visual
+// verification, the pose graph and its optimiser, and run output; for each new keyframe it asks the
+// front end
 //   memory       which keyframes may be compared at all (searchable)
 //   candidates   which to verify, in what order, and why (select -> roles)
 //   classify     whether a verified match is a loop closure or an ordinary visual edge

@@ -1,6 +1,6 @@
 #pragma once
-// Where the time goes: wall-clock per module and deterministic work counters (DESIGN.md,
-// "Ground truth and metrics": time is reported both ways, because wall-clock depends on the
+// Where the time goes: wall-clock per module and deterministic work counters (docs/evaluation.md:
+// time is reported both ways, because wall-clock depends on the
 // machine and the counters do not). Written to timing.json.
 
 #include <chrono>

@@ -1,5 +1,5 @@
 #pragma once
-// The Wi-Fi module of the paper ("General approach"; DESIGN.md, "The SLAM pipeline"): one object
+// The Wi-Fi module of the paper ("General approach"; docs/frontends.md): one object
 // that a front end holds. Nothing in it knows which front end holds it; a front end calls it at
 // the paper's points, in this order for each new place (an RGBD-SLAM keyframe, an RTAB-Map node,
 // an ORB-SLAM keyframe: all called "keyframe" here, ids growing):

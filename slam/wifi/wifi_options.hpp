@@ -1,5 +1,5 @@
 #pragma once
-// Options of the Wi-Fi module (paper, "General approach"; DESIGN.md, "The SLAM pipeline"). Each
+// Options of the Wi-Fi module (paper, "General approach"; docs/frontends.md). Each
 // field says what it trades off; the flat `--set` keys are listed in slam_options.cpp.
 
 namespace wifislam::slam {

@@ -1,5 +1,5 @@
 // Same pose and seed => byte-identical RGB and depth PNGs, within one process and across
-// processes (DESIGN.md, "Conventions").
+// processes: the determinism every dataset promises.
 
 #include <gtest/gtest.h>
 

@@ -14,9 +14,9 @@
 namespace wifislam::slam {
 
 /// Deterministic processing time of one node, in milliseconds: a fixed part plus work units
-/// (RTAB-Map measures wall-clock, which makes runs machine-dependent; DESIGN.md, "Ground truth
-/// and metrics"). The units are the front end's own work counters, so a run's transfers are
-/// exactly reproducible whatever the load.
+/// (RTAB-Map measures wall-clock, which makes runs machine-dependent; docs/evaluation.md). The
+/// units are the front end's own work counters, so a run's transfers are exactly reproducible
+/// whatever the load.
 ///
 /// Calibration (2026-12-02; release build, 2 cores, otherwise idle; bench/slam/
 /// rtabmap_cost_calibration.py): vanilla and Wi-Fi runs on the c_hall and b_hall twins at 3 fps,
