@@ -71,9 +71,6 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.min_sampled_candidates >= 0, "min_sampled_candidates must be >= 0");
   require(o.rgbdslam.optimizer_skip_step >= 0, "optimizer_skip_step must be >= 0");
   require(o.rgbdslam.wifi_long_term_candidates >= -1, "wifi_long_term_candidates must be >= -1");
-  require(o.rgbdslam.robust_kernel == "none" || o.rgbdslam.robust_kernel == "huber" ||
-              o.rgbdslam.robust_kernel == "cauchy",
-          "robust_kernel must be none, huber or cauchy, got '" + o.rgbdslam.robust_kernel + "'");
   require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
           "robust_kernel_chi2 must be a positive number");
   parse_chi2_thresholds("prune_chi2", o.rgbdslam.prune_chi2);  // throws naming the entry
@@ -110,8 +107,6 @@ void validate(const SlamOptions& o) {
   require(o.rtabmap.proximity_angle_deg > 0 && o.rtabmap.proximity_angle_deg <= 180,
           "proximity_angle_deg must be in (0, 180]");
   require(o.rtabmap.time_threshold_ms > 0, "time_threshold_ms must be > 0 (inf = off)");
-  require(o.rtabmap.time_source == "cost" || o.rtabmap.time_source == "wall",
-          "time_source must be cost or wall, got '" + o.rtabmap.time_source + "'");
   require(o.rtabmap.cost.ms_per_node >= 0 && o.rtabmap.cost.ms_per_word_comparison >= 0 &&
               o.rtabmap.cost.ms_per_likelihood_term >= 0 && o.rtabmap.cost.ms_per_hypothesis >= 0 &&
               o.rtabmap.cost.ms_per_verification >= 0 && o.rtabmap.cost.ms_per_scored_node >= 0,

@@ -132,8 +132,8 @@ void visit_options(V& v, SlamOptions& o) {
   v.integer("wifi_long_term_candidates", o.rgbdslam.wifi_long_term_candidates,
             "rgbdslam with Wi-Fi: long-term candidates from similar clusters, best signature first "
             "(-1 = min_sampled_candidates, 0 = all)");
-  v.text("robust_kernel", o.rgbdslam.robust_kernel,
-         "rgbdslam: kernel on every edge: none, huber (RGBDSLAMv2), cauchy");
+  v.choice("robust_kernel", o.rgbdslam.robust_kernel, robust_kernel_kinds(),
+           "rgbdslam: kernel on every edge: none, huber (RGBDSLAMv2), cauchy");
   v.number("robust_kernel_chi2", o.rgbdslam.robust_kernel_chi2,
            "rgbdslam: chi^2 where the kernel leaves the quadratic (4 x the last pruning stage)");
   v.integer("optimizer_skip_step", o.rgbdslam.optimizer_skip_step,
@@ -191,8 +191,8 @@ void visit_options(V& v, SlamOptions& o) {
   v.number("time_threshold_ms", o.rtabmap.time_threshold_ms,
            "rtabmap: Rtabmap/TimeThr (ms), over it WM nodes move to LTM; inf = off (RTAB-Map: 0)",
            options::Infinity::kAllowed);
-  v.text("time_source", o.rtabmap.time_source,
-         "rtabmap: what TimeThr is compared with: cost (deterministic cost model) or wall");
+  v.choice("time_source", o.rtabmap.time_source, rtabmap_time_sources(),
+           "rtabmap: what TimeThr is compared with: cost (deterministic cost model) or wall");
   v.number("cost_ms_per_node", o.rtabmap.cost.ms_per_node, "rtabmap cost model: fixed ms per node");
   v.number("cost_ms_per_word_comparison", o.rtabmap.cost.ms_per_word_comparison,
            "rtabmap cost model: ms per descriptor-word distance of the vocabulary search");

@@ -4,24 +4,19 @@
 
 namespace wifislam::slam {
 
-std::string to_string(RobustKernel::Kind kind) {
-  switch (kind) {
-    case RobustKernel::Kind::kNone:
-      return "none";
-    case RobustKernel::Kind::kHuber:
-      return "huber";
-    case RobustKernel::Kind::kCauchy:
-      return "cauchy";
-  }
-  return "none";
+const options::Choices<RobustKernel::Kind>& robust_kernel_kinds() {
+  static const options::Choices<RobustKernel::Kind> kinds = {
+      {RobustKernel::Kind::kNone, "none"},
+      {RobustKernel::Kind::kHuber, "huber"},
+      {RobustKernel::Kind::kCauchy, "cauchy"}};
+  return kinds;
 }
 
-RobustKernel::Kind robust_kernel_kind(const std::string& name) {
-  for (RobustKernel::Kind kind :
-       {RobustKernel::Kind::kNone, RobustKernel::Kind::kHuber, RobustKernel::Kind::kCauchy}) {
-    if (to_string(kind) == name) return kind;
+std::string to_string(RobustKernel::Kind kind) {
+  for (const auto& [value, name] : robust_kernel_kinds()) {
+    if (value == kind) return std::string(name);
   }
-  throw InvalidInputError("robust kernel must be none, huber or cauchy, got '" + name + "'");
+  return "none";
 }
 
 }  // namespace wifislam::slam

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "core/option_table.hpp"
+
 namespace wifislam::slam {
 
 struct RobustKernel {
@@ -17,9 +19,10 @@ struct RobustKernel {
   bool every_edge = false;
 };
 
-/// "none", "huber" or "cauchy".
+/// Each kind with its name ("none", "huber", "cauchy"): the one spelling of the names, for
+/// options (`--set robust_kernel=`), run.json and messages.
+const options::Choices<RobustKernel::Kind>& robust_kernel_kinds();
+/// The kind's name.
 std::string to_string(RobustKernel::Kind kind);
-/// Inverse of to_string; throws InvalidInputError naming the valid names.
-RobustKernel::Kind robust_kernel_kind(const std::string& name);
 
 }  // namespace wifislam::slam

@@ -168,7 +168,7 @@ std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
 
 GraphRobustness RgbdslamFrontEnd::graph_robustness() const {
   GraphRobustness robustness;
-  robustness.kernel.kind = robust_kernel_kind(options_.robust_kernel);
+  robustness.kernel.kind = options_.robust_kernel;
   robustness.kernel.width_chi2 = options_.robust_kernel_chi2;
   robustness.kernel.every_edge = true;
   robustness.pruning.chi2_thresholds = parse_chi2_thresholds("prune_chi2", options_.prune_chi2);

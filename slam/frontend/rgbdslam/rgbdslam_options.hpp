@@ -5,6 +5,8 @@
 
 #include <string>
 
+#include "slam/optimize/robust_kernel.hpp"
+
 namespace wifislam::slam {
 
 /// Defaults are RGBDSLAMv2's current ones (parameter_server.cpp, since 2015): 4 / 4 / 4. Its
@@ -36,7 +38,7 @@ struct RgbdslamOptions {
   /// 0.25 would prune every edge. We keep its schedule's shape, 20 : 4 : 1 with the kernel at 4x
   /// the last stage, and anchor the last stage at the 99.9 % quantile of chi^2(6) (22.46): an
   /// edge measured as well as it claims is pruned with probability 0.1 %.
-  std::string robust_kernel = "huber";           // none, huber, cauchy
+  RobustKernel::Kind robust_kernel = RobustKernel::Kind::kHuber;
   double robust_kernel_chi2 = 4 * 22.46;         // where the kernel leaves the quadratic
   std::string prune_chi2 = "449.2,89.84,22.46";  // stages, comma-separated; "none": no pruning
 

@@ -338,7 +338,7 @@ std::vector<KeyframeId> RtabmapFrontEnd::wifi_immune_nodes() const {
 }
 
 double RtabmapFrontEnd::node_time_ms(const RtabmapNodeRecord& record) const {
-  return options_.time_source == "wall" ? record.wall_ms : record.cost_ms;
+  return options_.time_source == RtabmapTimeSource::kWall ? record.wall_ms : record.cost_ms;
 }
 
 void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
@@ -444,7 +444,7 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
       {"nodes", records_.size()},
       {"stm_size", options_.stm_size},
       {"time_threshold_ms", json_ms(options_.time_threshold_ms)},
-      {"time_source", options_.time_source},
+      {"time_source", to_string(options_.time_source)},
       {"memory",
        {{"stm", memory_.stm().size()},
         {"wm", memory_.wm().size()},

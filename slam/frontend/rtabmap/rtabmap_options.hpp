@@ -9,9 +9,27 @@
 #include <limits>
 #include <string>
 
+#include "core/option_table.hpp"
 #include "slam/frontend/rtabmap/bayes_filter.hpp"
 
 namespace wifislam::slam {
+
+/// What Rtabmap/TimeThr is compared with: the deterministic cost model, or measured wall-clock.
+enum class RtabmapTimeSource { kCost, kWall };
+
+/// Each source with its name ("cost", "wall"), for `--set time_source=` and run.json.
+inline const options::Choices<RtabmapTimeSource>& rtabmap_time_sources() {
+  static const options::Choices<RtabmapTimeSource> sources = {{RtabmapTimeSource::kCost, "cost"},
+                                                              {RtabmapTimeSource::kWall, "wall"}};
+  return sources;
+}
+
+inline std::string to_string(RtabmapTimeSource source) {
+  for (const auto& [value, name] : rtabmap_time_sources()) {
+    if (value == source) return std::string(name);
+  }
+  return "cost";
+}
 
 /// Deterministic processing time of one node, in milliseconds: a fixed part plus work units
 /// (RTAB-Map measures wall-clock, which makes runs machine-dependent; docs/evaluation.md). The
@@ -98,7 +116,7 @@ struct RtabmapOptions {
   double time_threshold_ms = std::numeric_limits<double>::infinity();
   /// What the threshold is compared with: "cost" (the deterministic cost model) or "wall"
   /// (measured wall-clock of the node's selection, verification and memory management).
-  std::string time_source = "cost";
+  RtabmapTimeSource time_source = RtabmapTimeSource::kCost;
   RtabmapCostModel cost;
   /// With a Wi-Fi module: LTM nodes of similar clusters retrieved per node (0 = all of them; they
   /// are the nodes the bounded search scores anyway, see RtabmapFrontEnd).
