@@ -39,7 +39,7 @@
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
-#include "tests/render/test_meshes.hpp"
+#include "tests/sim/render/test_meshes.hpp"
 
 namespace wifislam {
 namespace {

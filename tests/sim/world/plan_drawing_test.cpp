@@ -1,0 +1,48 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include "core/error.hpp"
+#include "sim/world/plan_drawing.hpp"
+#include "sim/world/world_generator.hpp"
+#include "tests/sim/world/world_test_support.hpp"
+
+namespace wifislam::sim {
+namespace {
+
+std::string read_all(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(PlanDrawing, WritesPngAndSvgAtomically) {
+  const World world = generate_world(test::square_loop_scene());
+  const auto dir =
+      std::filesystem::temp_directory_path() /
+      ("wifislam_plan_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+  std::filesystem::create_directories(dir);
+  PlanDrawingOptions options;
+  options.title = "square loop";
+  options.access_points_m = {{3, 3, 2.5}, {10, -3, 2.5}};
+  draw_floor_plan(world, dir / "plan.png", options);
+  draw_floor_plan(world, dir / "plan.svg", options);
+  const std::string png = read_all(dir / "plan.png");
+  const std::string svg = read_all(dir / "plan.svg");
+  ASSERT_GT(png.size(), 8u);
+  EXPECT_EQ(png.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  EXPECT_GT(png.size(), 10000u) << "a plan with walls, rooms and a route is not a blank image";
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "plan.png.partial"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "plan.svg.partial"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(PlanDrawing, UnwritablePathIsAnIoError) {
+  const World world = generate_world(test::square_loop_scene());
+  EXPECT_THROW(draw_floor_plan(world, "/nonexistent-dir/plan.png"), IoError);
+}
+
+}  // namespace
+}  // namespace wifislam::sim
