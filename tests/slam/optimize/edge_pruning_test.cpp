@@ -14,7 +14,7 @@
 #include "slam/graph/pose_graph.hpp"
 #include "slam/optimize/edge_pruning.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
-#include "tests/slam/graph_test_poses.hpp"
+#include "tests/slam/graph/graph_test_poses.hpp"
 
 namespace wifislam::slam {
 namespace {
