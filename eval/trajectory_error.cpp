@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "core/median.hpp"
 
 namespace wifislam::eval {
 
@@ -39,10 +40,7 @@ AbsoluteTrajectoryError absolute_trajectory_error(const std::vector<Pose>& estim
   }
   out.rmse_m = std::sqrt(sum_sq / static_cast<double>(n));
   out.mean_m = sum / static_cast<double>(n);
-  std::vector<double> sorted = out.errors_m;
-  std::sort(sorted.begin(), sorted.end());
-  const std::size_t mid = sorted.size() / 2;
-  out.median_m = sorted.size() % 2 ? sorted[mid] : 0.5 * (sorted[mid - 1] + sorted[mid]);
+  out.median_m = median(out.errors_m);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/median.hpp"
 #include "core/rng.hpp"
 #include "sim/radio/ap_placement.hpp"
 #include "sim/site/site.hpp"
@@ -41,13 +42,6 @@ std::vector<PauseSample> restrict_to(const std::vector<PauseReadings>& pauses,
     out.push_back({p.position_m, slam::WifiSignature(std::move(strengths))});
   }
   return out;
-}
-
-template <typename T>
-T median_of(std::vector<T> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 }  // namespace
@@ -136,11 +130,11 @@ void random_baseline(const std::vector<PauseReadings>& pauses,
     near.push_back(r.near_similar_share);
   }
   if (resolution.empty()) return;
-  const double m = median_of(resolution);
+  const double m = median(resolution);
   if (std::isfinite(m)) step.random_resolution_m = m;
-  step.random_error = median_of(error);
-  step.random_far_similar_share = median_of(far);
-  step.random_near_similar_share = median_of(near);
+  step.random_error = median(error);
+  step.random_far_similar_share = median(far);
+  step.random_near_similar_share = median(near);
 }
 
 /// The unchosen candidate whose addition resolves best (lowest index among equals).

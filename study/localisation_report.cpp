@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/median.hpp"
 #include "plot/line_chart.hpp"
 
 namespace wifislam::study {
@@ -32,13 +33,6 @@ double share_within(const std::vector<const QueryResult*>& queries, double limit
     within += q->error_m <= limit_m;
   }
   return n > 0 ? static_cast<double>(within) / n : 0.0;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t h = v.size() / 2;
-  return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
 }
 
 std::string queries_csv(const LocalisationResult& r, const LocalisationData& data) {

@@ -4,6 +4,7 @@
 #include <map>
 #include <memory>
 
+#include "core/median.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/site/site.hpp"
 #include "slam/wifi/pause_signature_tracker.hpp"
@@ -74,10 +75,7 @@ RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
   std::vector<std::pair<double, double>> medians;  // (bin centre, median)
   for (auto& [bin, values] : bins) {
     if (static_cast<int>(values.size()) < kMinPairsPerBin) continue;
-    std::sort(values.begin(), values.end());
-    const std::size_t n = values.size();
-    medians.emplace_back(bin + 0.5,
-                         n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]));
+    medians.emplace_back(bin + 0.5, median(values));
   }
   // The crossing after the last bin at or above the threshold: beyond it places stay apart.
   std::size_t last_above = medians.size();
