@@ -1,6 +1,6 @@
 #pragma once
 // The one drawing canvas of the project (cairo), shared by every picture it makes: the floor plan
-// (sim/world/plan_drawing), the radio map (sim/radio/radio_map), the evaluation plots (eval/) and
+// (sim/world/plan_drawing), the radio map (radio_model/radio_map), the evaluation plots (eval/) and
 // the study and benchmark charts (line_chart.hpp). It sits below the simulator and knows no world
 // type: points are Eigen vectors in metres (x east, y north), rings are lists of them.
 //

@@ -100,4 +100,12 @@ done
 step vocab_train "$bin" vocab train "$out/datasets/c_hall_slam" --every 8 --branching 4 --depth 3 \
   -o "$out/voc.bin" -q
 step vocab_info "$bin" vocab info "$out/voc.bin"
+# The radio model calibrated to the shipped Royal Holloway survey (two rooms, held-out halves).
+surveys=assets/surveys/royal_holloway
+for room in office corridor; do
+  step "calibrate_$room" "$bin" radio calibrate "$surveys/database_${room}_train.csv" \
+    --scene "scenes/real/royal_holloway_$room.yaml" --aps "$surveys/${room}_aps.csv" \
+    --test "$surveys/database_${room}_test.csv" --format royal-holloway -o "$out/calibrate_$room.yaml" \
+    --report "$out/calibrate_$room.md" --json "$out/calibrate_$room.json"
+done
 echo "snapshot: done -> $out" >&2

@@ -22,7 +22,7 @@ std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
   sim::GenerationPipeline pipeline(std::move(site), options);
   if (ap_keys) {
     ap_keys->clear();
-    for (const sim::radio::AccessPoint& ap : pipeline.site().access_points())
+    for (const radio_model::AccessPoint& ap : pipeline.site().access_points())
       ap_keys->push_back(ap.base_mac().value);
   }
   slam::PauseSignatureTracker tracker(wifi);

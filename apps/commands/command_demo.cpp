@@ -33,7 +33,7 @@ void draw_scene_pictures(const wifislam::sim::Site& site, const std::filesystem:
   sim::draw_site_plan(site, dir / "plan.png");
   // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
   // and with the shadowing of the dataset's scans.
-  sim::radio::RadioMapOptions map_options;
+  radio_model::RadioMapOptions map_options;
   map_options.receiver_height_m = site.receiver_height_m();
   sim::draw_site_radio_map(site, map_options, dir / "radio_map.png");
   write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(site.scene()));

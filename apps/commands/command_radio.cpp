@@ -1,6 +1,6 @@
 // `wifislam radio calibrate`: fit the itu_walls model's constants (N, wall losses by material,
 // shadowing sigma and decorrelation, fast fading, each AP's tx power) to RSS measured at known
-// positions, counting walls exactly as the simulator does (sim/calibrate/).
+// positions, counting walls exactly as the simulator does (radio_model/calibrate/).
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -12,18 +12,18 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
-#include "sim/calibrate/calibration_report.hpp"
-#include "sim/calibrate/correlated_intervals.hpp"
-#include "sim/calibrate/rss_survey.hpp"
-#include "sim/calibrate/survey_links.hpp"
-#include "sim/radio/access_point.hpp"
-#include "sim/radio/propagation_model.hpp"
+#include "radio_model/access_point.hpp"
+#include "radio_model/calibrate/calibration_report.hpp"
+#include "radio_model/calibrate/correlated_intervals.hpp"
+#include "radio_model/calibrate/rss_survey.hpp"
+#include "radio_model/calibrate/survey_links.hpp"
+#include "radio_model/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
 
 namespace {
 
-namespace cal = wifislam::sim::calibrate;
+namespace cal = wifislam::radio_model::calibrate;
 
 struct CalibrateArgs {
   std::string survey_path, scene_path, aps_path, test_path;
@@ -82,7 +82,7 @@ void run_calibrate(const CalibrateArgs& args) {
     c.test = cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps, scene,
                                site.world());
   }
-  const auto options = sim::radio::PropagationOptions::from_scene(scene);
+  const auto options = radio_model::PropagationOptions::from_scene(scene);
   c.before = cal::scene_model(c.train, options.wall_losses, scene.radio.distance_coefficient,
                               scene.access_points.tx_power_dbm, args.frequency_mhz);
   c.fit = cal::fit_propagation(c.train, c.before.wall_loss_db);

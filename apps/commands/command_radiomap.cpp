@@ -39,18 +39,18 @@ void run_radiomap(const RadiomapArgs& args) {
         *args.height_m, ceiling_m));
   }
   const sim::Site site(scene);
-  sim::radio::RadioMapOptions options;
+  radio_model::RadioMapOptions options;
   options.resolution_m = args.resolution_m;
   options.receiver_height_m = args.height_m.value_or(site.receiver_height_m());
   options.ap_id = args.strongest ? std::nullopt : args.ap_id;
-  options.band = args.band == "2.4" ? sim::radio::RadioMapBand::k2_4GHz
-                 : args.band == "5" ? sim::radio::RadioMapBand::k5GHz
-                                    : sim::radio::RadioMapBand::kBest;
-  const sim::radio::RadioMap map = sim::draw_site_radio_map(site, options, args.output);
+  options.band = args.band == "2.4" ? radio_model::RadioMapBand::k2_4GHz
+                 : args.band == "5" ? radio_model::RadioMapBand::k5GHz
+                                    : radio_model::RadioMapBand::kBest;
+  const radio_model::RadioMap map = sim::draw_site_radio_map(site, options, args.output);
   fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
              map.rows, map.resolution_m, site.access_points().size());
   if (!args.csv.empty()) {
-    sim::radio::write_radio_map_csv(map, args.csv);
+    radio_model::write_radio_map_csv(map, args.csv);
     fmt::print("wrote {}\n", args.csv);
   }
 }

@@ -29,7 +29,7 @@ void run_world(const WorldArgs& args) {
   const sim::Site site(scene);
   const sim::World& world = site.world();
   const sim::MotionProfile& motion = site.motion();
-  const std::vector<sim::radio::AccessPoint>& access_points = site.access_points();
+  const std::vector<radio_model::AccessPoint>& access_points = site.access_points();
   if (!args.plan_path.empty()) {
     const std::filesystem::path png = args.plan_path;
     sim::draw_site_plan(site, png);

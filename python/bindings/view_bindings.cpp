@@ -14,9 +14,9 @@
 #include "core/error.hpp"
 #include "python/bindings/bindings.hpp"
 #include "python/bindings/numpy_convert.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "radio_model/radio_map.hpp"
 #include "sim/generate/as_stored.hpp"
-#include "sim/radio/propagation_model.hpp"
-#include "sim/radio/radio_map.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"
@@ -88,25 +88,25 @@ py::dict radio_map(const sim::Scene& scene, double resolution_m, std::optional<i
   }
   if (height_m) check_height("height_m", *height_m, scene.building.wall_height_m);
   std::optional<sim::Site> site;
-  sim::radio::RadioMap map;
+  radio_model::RadioMap map;
   {
     py::gil_scoped_release release;
     site.emplace(scene);
-    sim::radio::RadioMapOptions options;
+    radio_model::RadioMapOptions options;
     options.resolution_m = resolution_m;
     options.receiver_height_m = height_m.value_or(site->receiver_height_m());
     options.ap_id = ap_id;
-    options.band = band == "2.4" ? sim::radio::RadioMapBand::k2_4GHz
-                   : band == "5" ? sim::radio::RadioMapBand::k5GHz
-                                 : sim::radio::RadioMapBand::kBest;
-    map = sim::radio::compute_radio_map(site->radio(), site->world().plan, options);
+    options.band = band == "2.4" ? radio_model::RadioMapBand::k2_4GHz
+                   : band == "5" ? radio_model::RadioMapBand::k5GHz
+                                 : radio_model::RadioMapBand::kBest;
+    map = radio_model::compute_radio_map(site->radio(), site->world().plan, options);
   }
   py::array_t<float> rssi({map.rows, map.cols});
   py::array_t<std::int32_t> best({map.rows, map.cols});
   std::copy(map.rssi_dbm.begin(), map.rssi_dbm.end(), rssi.mutable_data());
   std::copy(map.best_ap_id.begin(), map.best_ap_id.end(), best.mutable_data());
   py::list access_points;
-  for (const sim::radio::AccessPoint& ap : site->access_points()) {
+  for (const radio_model::AccessPoint& ap : site->access_points()) {
     py::dict entry;
     entry["id"] = ap.id;
     entry["position_m"] = py::make_tuple(ap.position_m.x(), ap.position_m.y(), ap.position_m.z());

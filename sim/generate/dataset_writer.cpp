@@ -28,9 +28,9 @@
 #include "core/wall_clock.hpp"
 #include "core/wifi_csv.hpp"
 #include "core/worker_pool.hpp"
+#include "radio_model/radio_band.hpp"
 #include "sim/generate/as_stored.hpp"
 #include "sim/generate/generation_pipeline.hpp"
-#include "sim/radio/radio_band.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/robot/imu_model.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -151,10 +151,10 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
   return c;
 }
 
-std::string access_points_csv(const radio::PropagationModel& radio) {
+std::string access_points_csv(const radio_model::PropagationModel& radio) {
   std::string out = "ap_id,x_m,y_m,z_m,tx_power_dbm,bssid,ssid,band,channel,frequency_khz\n";
-  for (const radio::AccessPoint& ap : radio.access_points()) {
-    for (const radio::Bssid& b : ap.bssids) {
+  for (const radio_model::AccessPoint& ap : radio.access_points()) {
+    for (const radio_model::Bssid& b : ap.bssids) {
       out += fmt::format(
           "{},{},{},{},{},{},{},{},{},{}\n", ap.id, format_double_exact(ap.position_m.x()),
           format_double_exact(ap.position_m.y()), format_double_exact(ap.position_m.z()),
@@ -238,7 +238,7 @@ class DatasetWriter {
     summary_.time_origin_s = scene.sensors.time_origin_s;
     summary_.images = options_.images;
     summary_.access_points = static_cast<std::int64_t>(pipeline_.radio().access_points().size());
-    for (const radio::AccessPoint& ap : pipeline_.radio().access_points())
+    for (const radio_model::AccessPoint& ap : pipeline_.radio().access_points())
       summary_.bssids += static_cast<std::int64_t>(ap.bssids.size());
   }
 

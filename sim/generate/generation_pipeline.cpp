@@ -48,8 +48,9 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   // The validated origin is before 2100, so whole seconds to nanoseconds cannot overflow.
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
-  scanner_ = std::make_unique<radio::WifiScanner>(
-      site_->radio(), radio::WifiScannerOptions::from_scene(scene_.sensors.wifi), scene_.seed);
+  scanner_ = std::make_unique<radio_model::WifiScanner>(
+      site_->radio(), radio_model::WifiScannerOptions::from_scene(scene_.sensors.wifi),
+      scene_.seed);
 
   SensorScheduleOptions schedule;
   schedule.fps = scene_.sensors.camera.fps;

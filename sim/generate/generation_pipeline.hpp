@@ -27,9 +27,9 @@
 #include <optional>
 
 #include "core/sensor_stream.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "radio_model/wifi_scanner.hpp"
 #include "sim/generate/generate_options.hpp"
-#include "sim/radio/propagation_model.hpp"
-#include "sim/radio/wifi_scanner.hpp"
 #include "sim/render/color_sensor_model.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"
@@ -72,8 +72,8 @@ class GenerationPipeline {
   const MotionProfile& motion() const { return site_->motion(); }
   const SensorSchedule& schedule() const { return *schedule_; }
   const CameraMount& mount() const { return mount_; }
-  const radio::PropagationModel& radio() const { return site_->radio(); }
-  const radio::WifiScanner& scanner() const { return *scanner_; }
+  const radio_model::PropagationModel& radio() const { return site_->radio(); }
+  const radio_model::WifiScanner& scanner() const { return *scanner_; }
   bool images() const { return renderer_ != nullptr; }
   /// The renderer (null without images); benchmarks time it alone as a baseline.
   RgbdRenderer* renderer() { return renderer_.get(); }
@@ -103,7 +103,7 @@ class GenerationPipeline {
   std::unique_ptr<RgbdRenderer> renderer_;
   std::unique_ptr<DepthSensorModel> depth_model_;
   std::unique_ptr<ColorSensorModel> color_model_;
-  std::unique_ptr<radio::WifiScanner> scanner_;
+  std::unique_ptr<radio_model::WifiScanner> scanner_;
   std::unique_ptr<WheelOdometry> odometry_;
   RenderedView view_;
   std::int64_t submitted_frame_ = -1;       // the frame the renderer is working on ahead, if any

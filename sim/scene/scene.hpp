@@ -274,7 +274,7 @@ struct Sensors {
 enum class RadioEnvironment { kResidential, kOffice, kCommercial };
 const char* to_string(RadioEnvironment environment);
 
-/// The mean path loss model (sim/radio/propagation_model.hpp says what each computes).
+/// The mean path loss model (radio_model/propagation_model.hpp says what each computes).
 enum class PathLossModel { kItuWalls, kItuSiteGeneral, kItuSiteGeneralFit };
 const char* to_string(PathLossModel model);
 

@@ -1,7 +1,7 @@
 #include "sim/site/site.hpp"
 
-#include "sim/radio/ap_placement.hpp"
-#include "sim/radio/propagation_model.hpp"
+#include "radio_model/ap_placement.hpp"
+#include "radio_model/propagation_model.hpp"
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
@@ -10,10 +10,10 @@ namespace wifislam::sim {
 
 namespace {
 
-std::unique_ptr<radio::PropagationModel> make_radio(const Scene& scene, const World& world) {
-  return std::make_unique<radio::PropagationModel>(
-      world, radio::make_access_points(scene, world.plan),
-      radio::PropagationOptions::from_scene(scene), scene.seed);
+std::unique_ptr<radio_model::PropagationModel> make_radio(const Scene& scene, const World& world) {
+  return std::make_unique<radio_model::PropagationModel>(
+      world, radio_model::make_access_points(scene, world.plan),
+      radio_model::PropagationOptions::from_scene(scene), scene.seed);
 }
 
 }  // namespace
@@ -43,7 +43,7 @@ Site Site::with_access_points(const AccessPoints& access_points) const {
   return Site(scene, world_, motion_);
 }
 
-const std::vector<radio::AccessPoint>& Site::access_points() const {
+const std::vector<radio_model::AccessPoint>& Site::access_points() const {
   return radio_->access_points();
 }
 

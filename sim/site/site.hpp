@@ -7,21 +7,22 @@
 //
 // Seeds, as datasets have always used them: the world, the motion and the radio model's
 // shadowing draw from `scene.seed`'s named streams; the access points from
-// `access_points.seed` when the scene sets it (sim/radio/ap_placement.hpp).
+// `access_points.seed` when the scene sets it (radio_model/ap_placement.hpp).
 
 #include <memory>
 #include <vector>
 
-#include "sim/radio/access_point.hpp"
+#include "radio_model/access_point.hpp"
 #include "sim/scene/scene.hpp"
+
+namespace wifislam::radio_model {
+class PropagationModel;
+}
 
 namespace wifislam::sim {
 
 struct World;
 class MotionProfile;
-namespace radio {
-class PropagationModel;
-}
 
 class Site {
  public:
@@ -40,8 +41,8 @@ class Site {
   const Scene& scene() const { return scene_; }
   const World& world() const { return *world_; }
   const MotionProfile& motion() const { return *motion_; }
-  const radio::PropagationModel& radio() const { return *radio_; }
-  const std::vector<radio::AccessPoint>& access_points() const;
+  const radio_model::PropagationModel& radio() const { return *radio_; }
+  const std::vector<radio_model::AccessPoint>& access_points() const;
   /// Height of the Wi-Fi receiver above the floor. It rides with the camera: datasets scan there,
   /// and radio maps default to it.
   double receiver_height_m() const { return scene_.sensors.camera.height_m; }
@@ -53,7 +54,7 @@ class Site {
   Scene scene_;
   std::shared_ptr<const World> world_;
   std::shared_ptr<const MotionProfile> motion_;
-  std::unique_ptr<radio::PropagationModel> radio_;
+  std::unique_ptr<radio_model::PropagationModel> radio_;
 };
 
 }  // namespace wifislam::sim

@@ -2,8 +2,8 @@
 
 #include <fmt/format.h>
 
-#include "sim/radio/propagation_model.hpp"
-#include "sim/radio/wifi_scanner.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "radio_model/wifi_scanner.hpp"
 #include "sim/world/plan_drawing.hpp"
 
 namespace wifislam::sim {
@@ -11,17 +11,19 @@ namespace wifislam::sim {
 void draw_site_plan(const Site& site, const std::filesystem::path& path) {
   PlanDrawingOptions options;
   options.title = fmt::format("{} (seed {})", site.scene().name, site.scene().seed);
-  for (const radio::AccessPoint& ap : site.access_points())
+  for (const radio_model::AccessPoint& ap : site.access_points())
     options.access_points_m.push_back(ap.position_m);
   draw_floor_plan(site.world(), path, options);
 }
 
-radio::RadioMap draw_site_radio_map(const Site& site, const radio::RadioMapOptions& options,
-                                    const std::filesystem::path& path) {
-  const radio::RadioMap map = radio::compute_radio_map(site.radio(), site.world().plan, options);
+radio_model::RadioMap draw_site_radio_map(const Site& site,
+                                          const radio_model::RadioMapOptions& options,
+                                          const std::filesystem::path& path) {
+  const radio_model::RadioMap map =
+      radio_model::compute_radio_map(site.radio(), site.world().plan, options);
   const double floor_dbm =
-      radio::WifiScannerOptions::from_scene(site.scene().sensors.wifi).sensitivity_dbm;
-  radio::write_radio_map_png(map, site.world().plan, site.access_points(), path, floor_dbm);
+      radio_model::WifiScannerOptions::from_scene(site.scene().sensors.wifi).sensitivity_dbm;
+  radio_model::write_radio_map_png(map, site.world().plan, site.access_points(), path, floor_dbm);
   return map;
 }
 

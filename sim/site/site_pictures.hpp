@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "sim/radio/radio_map.hpp"
+#include "radio_model/radio_map.hpp"
 #include "sim/site/site.hpp"
 
 namespace wifislam::sim {
@@ -15,7 +15,8 @@ namespace wifislam::sim {
 void draw_site_plan(const Site& site, const std::filesystem::path& path);
 
 /// Computes the site's radio map with `options` and draws it as a PNG at `path`; returns the map.
-radio::RadioMap draw_site_radio_map(const Site& site, const radio::RadioMapOptions& options,
-                                    const std::filesystem::path& path);
+radio_model::RadioMap draw_site_radio_map(const Site& site,
+                                          const radio_model::RadioMapOptions& options,
+                                          const std::filesystem::path& path);
 
 }  // namespace wifislam::sim

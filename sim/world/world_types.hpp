@@ -1,7 +1,7 @@
 #pragma once
 // The generated world: a 2-D floor plan (free space, wall solids, doors) and a 3-D triangle mesh.
 // Produced by the world generator (world_generator.hpp) from a Scene; read by the renderer
-// (sim/render), the radio model (sim/radio/), the robot (sim/robot) and eval's plots.
+// (sim/render), the radio model (radio_model/), the robot (sim/robot) and eval's plots.
 
 #include <cstdint>
 #include <string>

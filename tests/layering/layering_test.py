@@ -187,7 +187,7 @@ class TheCheckCanFail(unittest.TestCase):
         self.assertNotIn("sim/generate", table["slam"])
         self.assertNotIn("slam", table["eval"])
         self.assertIn("core", table["slam"])
-        self.assertEqual(library_of("sim/radio/radio_map.hpp", table), "sim/radio")
+        self.assertEqual(library_of("radio_model/radio_map.hpp", table), "radio_model")
         self.assertEqual(library_of("peers/rosbag/rosbag_writer.hpp", table), "peers/rosbag")
 
     def test_public_headers_are_read(self):

@@ -10,9 +10,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "radio_model/ap_placement.hpp"
+#include "radio_model/propagation_model.hpp"
 #include "sim/generate/generation_pipeline.hpp"
-#include "sim/radio/ap_placement.hpp"
-#include "sim/radio/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_types.hpp"
 
@@ -47,16 +47,16 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
   const GenerationPipeline pipeline(scene, options);
   ASSERT_EQ(site.access_points().size(), 5u);
   ASSERT_EQ(pipeline.radio().access_points().size(), 5u);
-  const radio::PropagationModel seeded_by_ap_seed(site.world(), site.access_points(),
-                                                  radio::PropagationOptions::from_scene(scene),
-                                                  radio::access_point_seed(scene));
+  const radio_model::PropagationModel seeded_by_ap_seed(
+      site.world(), site.access_points(), radio_model::PropagationOptions::from_scene(scene),
+      radio_model::access_point_seed(scene));
   int differs_from_ap_seed = 0;
   for (std::size_t i = 0; i < site.access_points().size(); ++i) {
     EXPECT_EQ(site.access_points()[i].position_m, pipeline.radio().access_points()[i].position_m);
     for (const Eigen::Vector3d& p : {Eigen::Vector3d(1, 0.2, 0.7), Eigen::Vector3d(8.5, 3, 0.7),
                                      Eigen::Vector3d(4, 6.3, 0.7)}) {
-      const radio::RadioLink a = site.radio().link(i, p);
-      const radio::RadioLink b = pipeline.radio().link(i, p);
+      const radio_model::RadioLink a = site.radio().link(i, p);
+      const radio_model::RadioLink b = pipeline.radio().link(i, p);
       EXPECT_EQ(a.shadowing_normal, b.shadowing_normal);
       EXPECT_EQ(a.walls_per_material, b.walls_per_material);
       differs_from_ap_seed += a.shadowing_normal != seeded_by_ap_seed.link(i, p).shadowing_normal;

@@ -1,0 +1,213 @@
+#include "radio_model/calibrate/rss_survey.hpp"
+
+#include <array>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "core/text_lines.hpp"
+#include "sim/scene/scene_schema.hpp"
+
+namespace wifislam::radio_model::calibrate {
+
+namespace {
+
+// Received power a Wi-Fi card can report: anything outside is a unit or sign mistake.
+constexpr double kMinRssDbm = -150.0, kMaxRssDbm = 30.0;
+constexpr double kRoyalHollowayNotHeardDbm = -200.0;
+constexpr double kMaxCoordinateM = 10000.0;  // the scene's own limit
+
+bool skipped(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r");
+  return first == std::string::npos || text[first] == '#';
+}
+
+std::string joined(const std::vector<std::string_view>& fields) {
+  std::string out;
+  for (std::size_t i = 0; i < fields.size(); ++i) out += (i ? "," : "") + std::string(fields[i]);
+  return out;
+}
+
+std::vector<std::string_view> fields_of(const TextLine& line) {
+  std::string_view text = line.text;
+  if (!text.empty() && text.back() == '\r') text.remove_suffix(1);
+  return split_fields(text, ',');
+}
+
+double number(std::string_view field, const std::string& where, const char* column) {
+  double v = 0.0;
+  if (!parse_double(field, v) || !std::isfinite(v))
+    throw ParseError(where, column, fmt::format("expected a number, got '{}'", field));
+  return v;
+}
+
+double coordinate(std::string_view field, const std::string& where, const char* column) {
+  const double v = number(field, where, column);
+  if (std::abs(v) > kMaxCoordinateM)
+    throw ParseError(where, column,
+                     fmt::format("{} m is more than 10 km from the origin (a unit mistake?)", v));
+  return v;
+}
+
+int ap_id(std::string_view field, const std::string& where, const char* column) {
+  long long id = 0;
+  if (!parse_int64(field, id) || id < 0 || id > 1'000'000)
+    throw ParseError(where, column,
+                     fmt::format("expected an access point id (integer >= 0), got '{}'", field));
+  return static_cast<int>(id);
+}
+
+double rss(std::string_view field, const std::string& where, const char* column) {
+  const double v = number(field, where, column);
+  if (v < kMinRssDbm || v > kMaxRssDbm)
+    throw ParseError(
+        where, column,
+        fmt::format("{} dBm is not a received power ({} to {} dBm)", v, kMinRssDbm, kMaxRssDbm));
+  return v;
+}
+
+Survey read_long(const std::string& path, double receiver_height_m) {
+  Survey survey{path, {}};
+  bool header_seen = false, with_z = false;
+  for (const TextLine& line : read_text_lines(path)) {
+    if (skipped(line.text)) continue;
+    const std::string where = survey.where(line.number);
+    const auto f = fields_of(line);
+    if (!header_seen) {
+      const std::string header = joined(f);
+      if (header == "x_m,y_m,z_m,ap_id,rss_dbm") {
+        with_z = true;
+      } else if (header != "x_m,y_m,ap_id,rss_dbm") {
+        throw ParseError(where, "",
+                         fmt::format("expected the header 'x_m,y_m,ap_id,rss_dbm' or "
+                                     "'x_m,y_m,z_m,ap_id,rss_dbm', got '{}' (for the Royal "
+                                     "Holloway files use --format royal-holloway)",
+                                     header));
+      }
+      header_seen = true;
+      continue;
+    }
+    const std::size_t expected = with_z ? 5 : 4;
+    if (f.size() != expected)
+      throw ParseError(where, "", fmt::format("expected {} fields, got {}", expected, f.size()));
+    SurveySample s;
+    s.line = line.number;
+    s.position_m = {coordinate(f[0], where, "x_m"), coordinate(f[1], where, "y_m"),
+                    with_z ? number(f[2], where, "z_m") : receiver_height_m};
+    const std::size_t k = with_z ? 3 : 2;
+    s.ap_id = ap_id(f[k], where, "ap_id");
+    s.rss_dbm = rss(f[k + 1], where, "rss_dbm");
+    survey.samples.push_back(s);
+  }
+  if (!header_seen) throw ParseError(path, "", "empty survey: no header and no rows");
+  if (survey.samples.empty()) throw ParseError(path, "", "no survey rows after the header");
+  return survey;
+}
+
+Survey read_royal_holloway(const std::string& path, double receiver_height_m) {
+  static constexpr const char* kHeader =
+      "X,Y,AP1 RTT(mm),AP2 RTT(mm),AP3 RTT(mm),AP4 RTT(mm),AP5 RTT(mm),AP1 RSS(dBm),"
+      "AP2 RSS(dBm),AP3 RSS(dBm),AP4 RSS(dBm),AP5 RSS(dBm),LOS APs";
+  static constexpr const char* kRssColumns[] = {"AP1 RSS(dBm)", "AP2 RSS(dBm)", "AP3 RSS(dBm)",
+                                                "AP4 RSS(dBm)", "AP5 RSS(dBm)"};
+  constexpr std::size_t kFirstRss = 7, kFields = 13;
+  Survey survey{path, {}};
+  bool header_seen = false;
+  for (const TextLine& line : read_text_lines(path)) {
+    if (skipped(line.text)) continue;
+    const std::string where = survey.where(line.number);
+    const auto f = fields_of(line);
+    if (!header_seen) {
+      if (joined(f) != kHeader)
+        throw ParseError(
+            where, "",
+            fmt::format("expected the Royal Holloway header '{}', got '{}'", kHeader, joined(f)));
+      header_seen = true;
+      continue;
+    }
+    if (f.size() != kFields)
+      throw ParseError(where, "", fmt::format("expected {} fields, got {}", kFields, f.size()));
+    const Eigen::Vector3d p(coordinate(f[0], where, "X") * kRoyalHollowayCellM,
+                            coordinate(f[1], where, "Y") * kRoyalHollowayCellM, receiver_height_m);
+    // "LOS APs": space-separated AP numbers in line of sight of this spot.
+    std::array<bool, 6> los{};
+    for (std::string_view id : split_fields(f[kFields - 1])) {
+      long long k = 0;
+      if (!parse_int64(id, k) || k < 1 || k > 5)
+        throw ParseError(where, "LOS APs", fmt::format("expected AP numbers 1-5, got '{}'", id));
+      los[k] = true;
+    }
+    for (int k = 0; k < 5; ++k) {
+      const double v = number(f[kFirstRss + k], where, kRssColumns[k]);
+      if (v == kRoyalHollowayNotHeardDbm) continue;
+      SurveySample s;
+      s.line = line.number;
+      s.position_m = p;
+      s.ap_id = k + 1;  // column APk
+      s.line_of_sight = los[k + 1];
+      s.rss_dbm = rss(f[kFirstRss + k], where, kRssColumns[k]);
+      survey.samples.push_back(s);
+    }
+  }
+  if (!header_seen) throw ParseError(path, "", "empty survey: no header and no rows");
+  if (survey.samples.empty()) throw ParseError(path, "", "no survey rows after the header");
+  return survey;
+}
+
+}  // namespace
+
+Survey read_survey(const std::string& path, SurveyFormat format, double receiver_height_m) {
+  return format == SurveyFormat::kRoyalHolloway ? read_royal_holloway(path, receiver_height_m)
+                                                : read_long(path, receiver_height_m);
+}
+
+std::vector<SurveyAccessPoint> read_access_points_csv(const std::string& path) {
+  std::vector<SurveyAccessPoint> aps;
+  std::map<int, std::string> seen;
+  bool header_seen = false, with_tx = false;
+  for (const TextLine& line : read_text_lines(path)) {
+    if (skipped(line.text)) continue;
+    const std::string where = path + ":" + std::to_string(line.number);
+    const auto f = fields_of(line);
+    if (!header_seen) {
+      const std::string header = joined(f);
+      if (header == "id,x_m,y_m,z_m,tx_power_dbm") {
+        with_tx = true;
+      } else if (header != "id,x_m,y_m,z_m") {
+        throw ParseError(where, "",
+                         fmt::format("expected the header 'id,x_m,y_m,z_m' or "
+                                     "'id,x_m,y_m,z_m,tx_power_dbm', got '{}'",
+                                     header));
+      }
+      header_seen = true;
+      continue;
+    }
+    const std::size_t expected = with_tx ? 5 : 4;
+    if (f.size() != expected)
+      throw ParseError(where, "", fmt::format("expected {} fields, got {}", expected, f.size()));
+    SurveyAccessPoint ap;
+    ap.where = where;
+    ap.id = ap_id(f[0], where, "id");
+    if (auto [it, fresh] = seen.emplace(ap.id, where); !fresh)
+      throw ParseError(
+          where, "id",
+          fmt::format("access point {} is listed twice (first at {})", ap.id, it->second));
+    ap.position_m = {coordinate(f[1], where, "x_m"), coordinate(f[2], where, "y_m"),
+                     number(f[3], where, "z_m")};
+    if (with_tx) {
+      ap.tx_power_dbm = number(f[4], where, "tx_power_dbm");
+      const sim::schema::Limits& limits = sim::schema::kTxPowerDbm;  // as a scene's tx_power_dbm
+      if (*ap.tx_power_dbm < limits.lo || *ap.tx_power_dbm > limits.hi)
+        throw ParseError(where, "tx_power_dbm",
+                         fmt::format("{} dBm is not a Wi-Fi transmit power (expected {} to {})",
+                                     f[4], limits.lo, limits.hi));
+    }
+    aps.push_back(ap);
+  }
+  if (aps.empty()) throw ParseError(path, "", "no access points listed");
+  return aps;
+}
+
+}  // namespace wifislam::radio_model::calibrate

@@ -1,0 +1,128 @@
+#include "radio_model/calibrate/survey_links.hpp"
+
+#include <cmath>
+#include <map>
+#include <tuple>
+
+#include <fmt/format.h>
+
+#include "core/error.hpp"
+#include "radio_model/propagation_model.hpp"
+#include "sim/world/plan_queries.hpp"
+
+namespace wifislam::radio_model::calibrate {
+
+std::size_t SurveyLinks::sample_count() const {
+  std::size_t n = 0;
+  for (const LinkGroup& g : groups) n += g.rss_dbm.size();
+  return n;
+}
+
+LineOfSightAgreement SurveyLinks::line_of_sight_agreement() const {
+  LineOfSightAgreement a;
+  for (const LinkGroup& g : groups) {
+    if (!g.line_of_sight) continue;
+    double walls = 0.0;
+    for (double w : g.walls_per_material) walls += w;
+    if (*g.line_of_sight) {
+      ++a.los_links;
+      a.los_clear += walls == 0.0;
+    } else {
+      ++a.nlos_links;
+      a.nlos_blocked += walls > 0.0;
+    }
+  }
+  return a;
+}
+
+namespace {
+
+std::string id_list(const std::vector<SurveyAccessPoint>& aps) {
+  std::string out;
+  for (std::size_t i = 0; i < aps.size(); ++i) out += (i ? ", " : "") + std::to_string(aps[i].id);
+  return out;
+}
+
+void check_inside(const sim::Scene& scene, const sim::World& world, const Eigen::Vector3d& p,
+                  const std::string& where, const char* column, const std::string& what) {
+  if (!sim::regions_contain(world.plan.free_space, p.head<2>())) {
+    throw ParseError(where, column,
+                     fmt::format("{} ({:.2f}, {:.2f}) m is not in the free space of scene '{}' "
+                                 "(inside a wall or outside its plan, which spans ({:.2f}, {:.2f}) "
+                                 "to ({:.2f}, {:.2f}) m)",
+                                 what, p.x(), p.y(), scene.name, world.plan.bounds_min_m.x(),
+                                 world.plan.bounds_min_m.y(), world.plan.bounds_max_m.x(),
+                                 world.plan.bounds_max_m.y()));
+  }
+  if (!(p.z() >= 0.0 && p.z() <= scene.building.wall_height_m)) {
+    throw ParseError(where, "z_m",
+                     fmt::format("{} height {} m is not between the floor and the ceiling (0 to "
+                                 "{} m)",
+                                 what, p.z(), scene.building.wall_height_m));
+  }
+}
+
+}  // namespace
+
+SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoint>& aps,
+                         const sim::Scene& scene, const sim::World& world) {
+  SurveyLinks out;
+  out.aps = aps;
+  std::map<int, std::size_t> index_of_id;
+  std::vector<radio_model::AccessPoint> model_aps;
+  for (std::size_t i = 0; i < aps.size(); ++i) {
+    const std::string where = aps[i].where.empty() ? scene.where("access_points") : aps[i].where;
+    check_inside(scene, world, aps[i].position_m, where, "x_m",
+                 fmt::format("access point {}", aps[i].id));
+    index_of_id[aps[i].id] = i;
+    radio_model::AccessPoint ap;
+    ap.id = aps[i].id;
+    ap.position_m = aps[i].position_m;
+    model_aps.push_back(ap);
+  }
+
+  // Group by millimetre position and AP, in order of first appearance.
+  std::map<std::tuple<long long, long long, long long, std::size_t>, std::size_t> group_of;
+  for (const SurveySample& s : survey.samples) {
+    const std::string where = survey.where(s.line);
+    const auto ap = index_of_id.find(s.ap_id);
+    if (ap == index_of_id.end()) {
+      throw ParseError(where, "ap_id",
+                       fmt::format("access point {} is not known (known ids: {}; give positions "
+                                   "with --aps FILE or the scene's access_points)",
+                                   s.ap_id, id_list(aps)));
+    }
+    const auto key =
+        std::make_tuple(std::llround(s.position_m.x() * 1e3), std::llround(s.position_m.y() * 1e3),
+                        std::llround(s.position_m.z() * 1e3), ap->second);
+    auto [it, fresh] = group_of.emplace(key, out.groups.size());
+    if (fresh) {
+      check_inside(scene, world, s.position_m, where, "x_m", "the survey position");
+      LinkGroup g;
+      g.position_m = s.position_m;
+      g.ap_index = ap->second;
+      g.first_line = s.line;
+      g.line_of_sight = s.line_of_sight;
+      out.groups.push_back(g);
+    }
+    out.groups[it->second].rss_dbm.push_back(s.rss_dbm);
+  }
+
+  // The simulator's own link geometry; no shadowing (sigma 0 builds no fields).
+  radio_model::PropagationOptions options = radio_model::PropagationOptions::from_scene(scene);
+  options.model = sim::PathLossModel::kItuWalls;
+  options.walls = true;
+  options.shadowing_sigma_db = 0.0;
+  const radio_model::PropagationModel model(world, model_aps, options, scene.seed);
+  for (LinkGroup& g : out.groups) {
+    double sum = 0.0;
+    for (double r : g.rss_dbm) sum += r;
+    g.mean_dbm = sum / static_cast<double>(g.rss_dbm.size());
+    const radio_model::RadioLink link = model.link(g.ap_index, g.position_m);
+    g.distance_m = link.distance_m;
+    g.walls_per_material = link.walls_per_material;
+  }
+  return out;
+}
+
+}  // namespace wifislam::radio_model::calibrate

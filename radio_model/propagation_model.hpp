@@ -1,0 +1,140 @@
+#pragma once
+// Mean received power from every access point at any receiver position, by one of three path
+// loss models (radio.model):
+//
+//  itu_walls (default): ITU-R P.1238's distance law with a stated N plus every wall on the
+//    straight AP -> receiver segment, found by Embree (embree_wall_scene.hpp, wall_materials.hpp):
+//      RSSI = P_tx - L_ITU(f, d; N) - sum over walls crossed L_wall(material, f) - S
+//    N = radio.distance_coefficient, default 22 (itu_p1238.hpp says why); radio.environment
+//    only chooses the floor term, which is zero on one storey. Shadowing sigma 4 dB by default.
+//  itu_site_general: P.1238-7's site-general model for radio.environment, no walls: N from
+//    Table 2 and shadowing sigma from Table 4, each for the BSSID's band (2.4 GHz row, 5.2 GHz
+//    row for 5 GHz); the walls of the building are in N, as the recommendation fitted it.
+//  itu_site_general_fit: P.1238-11's alpha/beta/gamma fit (office rows), line of sight where the
+//    segment crosses no wall and non line of sight where it crosses any (Embree decides which;
+//    the walls themselves add no loss), shadowing sigma the row's.
+//
+// S is the AP's spatially correlated shadowing (shadowing_field.hpp): one unit-variance field
+// per AP, shared by both of its radios, scaled by the model's sigma for the link (or by
+// radio.shadowing_sigma_db when the scene sets it, under any model). Fast fading and people are
+// per scan and live in the scanner.
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "radio_model/access_point.hpp"
+#include "radio_model/embree_wall_scene.hpp"
+#include "radio_model/itu_p1238.hpp"
+#include "radio_model/shadowing_field.hpp"
+#include "radio_model/wall_materials.hpp"
+#include "sim/scene/scene.hpp"
+#include "sim/world/world_types.hpp"
+
+namespace wifislam::radio_model {
+
+struct PropagationOptions {
+  sim::PathLossModel model = sim::PathLossModel::kItuWalls;
+  sim::RadioEnvironment environment = sim::RadioEnvironment::kOffice;
+  /// N in the ITU formula; default kDefaultDistanceCoefficient (see itu_p1238.hpp for why).
+  std::optional<double> distance_coefficient;
+  int floors_between = 0;  // one storey for now; the floor term stays in the formula
+  bool walls = true;       // itu_walls: add per-wall losses (off = the distance law alone)
+  WallLossTable wall_losses;
+  /// Shadowing sigma; nullopt: the model's (shadowing_sigma_db_for). Under itu_walls that is
+  /// 4 dB, ITU-R P.1238-11's site-general corridor LoS fit (4.07 dB); the recommendation's
+  /// 8-12 dB (P.1238-7 Table 4) also covers building-to-building variation that our explicit
+  /// walls already model.
+  std::optional<double> shadowing_sigma_db;
+  double shadowing_decorrelation_m = 3.0;
+  /// Scanner: the fading of each radio (fading_process.hpp) with its coherence time at a still
+  /// receiver, the per-BSSID spread around it, and random extra loss from people.
+  double fast_fading_sigma_db = 2.0;
+  double fading_coherence_s = 3.0;
+  double bssid_spread_db = 0.5;
+  double people_disturbance_db = 0.0;  // 0 = off; else extra loss up to this much
+  double people_probability = 0.3;     // chance a person blocks a given AP during one scan
+
+  double distance_coefficient_or_default() const {
+    return distance_coefficient.value_or(kDefaultDistanceCoefficient);
+  }
+  /// The shadowing sigma of a link in `band`, with or without a wall on it.
+  double shadowing_sigma_db_for(RadioBand band, bool line_of_sight) const;
+  /// The largest sigma any link can have (0: no shadowing at all).
+  double max_shadowing_sigma_db() const;
+  /// The scene's radio keys, and wall losses for its building's wall thickness.
+  static PropagationOptions from_scene(const sim::Scene& scene);
+};
+
+/// The geometry-dependent part of one AP -> receiver link, shared by all its BSSIDs.
+struct RadioLink {
+  double distance_m = 0.0;
+  /// Walls crossed, by material; a crossing that enters through one material and leaves through
+  /// another counts half a wall of each (embree_wall_scene.hpp). Counted under itu_walls and
+  /// itu_site_general_fit (which needs only whether there is one); empty under itu_site_general.
+  std::array<double, kWallMaterialCount> walls_per_material{};
+  /// The AP's shadowing field at the receiver, in standard deviations (scaled per band by the
+  /// model: PropagationModel::shadowing_db).
+  double shadowing_normal = 0.0;
+  double wall_count() const;
+};
+
+class PropagationModel {
+ public:
+  /// Builds the Embree wall scene from `world.mesh` and one shadowing field per AP over
+  /// `world.plan`'s bounds, from the sub-streams "shadowing/ap<id>" of `seed`.
+  PropagationModel(const sim::World& world, std::vector<AccessPoint> access_points,
+                   PropagationOptions options, std::uint64_t seed);
+  /// Same from a bare mesh and the bounds the shadowing fields must cover (hand-built tests).
+  PropagationModel(const sim::Mesh& mesh, const Eigen::Vector2d& bounds_min_m,
+                   const Eigen::Vector2d& bounds_max_m, std::vector<AccessPoint> access_points,
+                   PropagationOptions options, std::uint64_t seed);
+
+  const std::vector<AccessPoint>& access_points() const { return aps_; }
+  const PropagationOptions& options() const { return options_; }
+  const EmbreeWallScene& wall_scene() const { return *walls_; }
+
+  RadioLink link(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const;
+  /// The link with no wall counted (no ray cast). When walls_only_attenuate(), RSSI computed
+  /// from it bounds the true RSSI from above: radio maps use it to skip hopeless APs. (Under
+  /// itu_site_general_fit it is the LoS link, whose loss is below the NLoS loss: see
+  /// itu_p1238_fit_loss_db.)
+  RadioLink link_without_walls(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const;
+  /// True when a wall on the link can only lower RSSI anywhere in the Wi-Fi bands (2.4-5.9 GHz):
+  /// under itu_walls no wall loss is negative, and neither the NLoS fit nor its sigma can give more
+  /// than the LoS one.
+  bool walls_only_attenuate() const;
+  /// Path loss (no shadowing) at `frequency_mhz` for a link, by the model.
+  double path_loss_db(const RadioLink& link, double frequency_mhz) const;
+  /// The link's shadowing in dB for a BSSID in `band`.
+  double shadowing_db(const RadioLink& link, RadioBand band) const;
+  /// Mean RSSI (shadowing included, no fading) of BSSID `bssid` of AP `ap_index`.
+  double mean_rssi_dbm(std::size_t ap_index, const Bssid& bssid, const RadioLink& link) const;
+  double mean_rssi_dbm(std::size_t ap_index, const Bssid& bssid,
+                       const Eigen::Vector3d& receiver_m) const {
+    return mean_rssi_dbm(ap_index, bssid, link(ap_index, receiver_m));
+  }
+  /// Index of the AP with this id, or nullopt.
+  std::optional<std::size_t> index_of(int ap_id) const;
+
+ private:
+  std::vector<AccessPoint> aps_;
+  PropagationOptions options_;
+  std::unique_ptr<EmbreeWallScene> walls_;
+  std::vector<std::shared_ptr<const ShadowingField>> shadowing_;  // shadowing_cache.hpp
+  double floor_loss_db_ = 0.0;
+  /// Every material's wall loss at each frequency the access points' BSSIDs use, computed once:
+  /// the P.2040 absorption laws cost a pow and logs per call, and a scan asks per BSSID. Values
+  /// are those of WallLossLaw::at (the same call, made earlier).
+  struct WallLossesAt {
+    double frequency_mhz;
+    std::array<double, kWallMaterialCount> loss_db;
+  };
+  std::vector<WallLossesAt> wall_losses_at_;
+};
+
+}  // namespace wifislam::radio_model
