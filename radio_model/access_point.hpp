@@ -38,6 +38,11 @@ struct AccessPoint {
   }
 };
 
+/// An access point's transmit power (EIRP): a Wi-Fi radio's range. 36 dBm is the largest EIRP any
+/// regulator allows in the 2.4 and 5 GHz bands. The scene schema and survey AP files check it.
+inline constexpr double kMinTxPowerDbm = -10.0;
+inline constexpr double kMaxTxPowerDbm = 36.0;
+
 /// The most BSSIDs a radio can advertise (eight last-nibble values per radio).
 inline constexpr int kMaxSsidsPerRadio = 8;
 

@@ -94,24 +94,25 @@ struct EmbreeWallScene::Handles {
   }
 };
 
-EmbreeWallScene::EmbreeWallScene(const sim::Mesh& mesh) : handles_(std::make_unique<Handles>()) {
+EmbreeWallScene::EmbreeWallScene(const WallMesh& mesh) : handles_(std::make_unique<Handles>()) {
   std::vector<std::uint32_t> indices;
-  for (const sim::Triangle& tri : mesh.triangles) {
-    if (tri.wall_id < 0) continue;
+  for (const WallMesh::Face& face : mesh.faces) {
+    if (face.wall_id < 0)
+      throw InvalidInputError(fmt::format("wall face with wall id {}", face.wall_id));
     for (int k = 0; k < 3; ++k) {
-      if (tri.v[k] >= mesh.positions_m.size())
+      if (face.v[k] >= mesh.positions_m.size())
         throw InvalidInputError(
-            fmt::format("mesh triangle refers to vertex {} but the mesh has {} vertices", tri.v[k],
+            fmt::format("mesh triangle refers to vertex {} but the mesh has {} vertices", face.v[k],
                         mesh.positions_m.size()));
-      indices.push_back(tri.v[k]);
+      indices.push_back(face.v[k]);
     }
-    wall_ids_.push_back(tri.wall_id);
-    materials_.push_back(tri.material);
+    wall_ids_.push_back(face.wall_id);
+    materials_.push_back(face.material);
     // The side the material lies on: the geometric normal, turned to agree with the mesh's
     // shading normal (which points to free space); the winding alone is not a promise.
-    const Eigen::Vector3f& p0 = mesh.positions_m[tri.v[0]];
-    Eigen::Vector3f n = (mesh.positions_m[tri.v[1]] - p0).cross(mesh.positions_m[tri.v[2]] - p0);
-    if (tri.v[0] < mesh.normals.size() && n.dot(mesh.normals[tri.v[0]]) < 0.0f) n = -n;
+    const Eigen::Vector3f& p0 = mesh.positions_m[face.v[0]];
+    Eigen::Vector3f n = (mesh.positions_m[face.v[1]] - p0).cross(mesh.positions_m[face.v[2]] - p0);
+    if (n.dot(face.free_side) < 0.0f) n = -n;
     normals_.push_back(n);
   }
 

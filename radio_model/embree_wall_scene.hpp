@@ -2,9 +2,10 @@
 // The world's walls in Embree 3, for the question the radio model asks millions of times: which
 // physical walls does the straight segment from an access point to a receiver cross?
 //
-// Built from every mesh triangle with a wall_id >= 0 (wall faces, closed door leaves, jambs,
-// lintels; floors, ceilings, wall tops and posters carry -1). Every such face bounds wall material
-// and its normal (the mesh's, which points to free space) says on which side the material lies.
+// Built from the wall mesh it is handed (wall_mesh.hpp): the world's triangles with a wall_id >= 0
+// (wall faces, closed door leaves, jambs, lintels; not floors, ceilings, wall tops or posters).
+// Every such face bounds wall material and its free-space side (the mesh's normal) says on which
+// side the material lies.
 //
 // Counting rule: the segment is cut at every face it hits; a piece of the segment is inside
 // material when the face before it is entered (the segment runs against the face's normal) or
@@ -37,15 +38,16 @@
 
 #include <Eigen/Core>
 
-#include "sim/world/world_types.hpp"
+#include "radio_model/wall_material.hpp"
+#include "radio_model/wall_mesh.hpp"
 
 namespace wifislam::radio_model {
 
 /// One continuous stretch of wall material on the segment.
 struct WallCrossing {
-  int wall_id = -1;  // wall of the face where it starts
-  sim::WallMaterial material = sim::WallMaterial::kPlasterboard;  // of the face where it starts
-  sim::WallMaterial exit_material = sim::WallMaterial::kPlasterboard;  // of the face where it ends
+  int wall_id = -1;                                          // wall of the face where it starts
+  WallMaterial material = WallMaterial::kPlasterboard;       // of the face where it starts
+  WallMaterial exit_material = WallMaterial::kPlasterboard;  // of the face where it ends
   double distance_m = 0.0;  // from the segment's start to where the material starts
   double length_m = 0.0;    // path length inside the material
 };
@@ -53,7 +55,8 @@ struct WallCrossing {
 class EmbreeWallScene {
  public:
   /// Throws EnvironmentError if Embree cannot create a device or scene.
-  explicit EmbreeWallScene(const sim::Mesh& mesh);
+  /// Throws InvalidInputError for a face with a negative wall id or a vertex index out of range.
+  explicit EmbreeWallScene(const WallMesh& mesh);
   ~EmbreeWallScene();
   EmbreeWallScene(const EmbreeWallScene&) = delete;
   EmbreeWallScene& operator=(const EmbreeWallScene&) = delete;
@@ -87,7 +90,7 @@ class EmbreeWallScene {
   struct Handles;
   std::unique_ptr<Handles> handles_;
   std::vector<int> wall_ids_;  // per Embree primitive
-  std::vector<sim::WallMaterial> materials_;
+  std::vector<WallMaterial> materials_;
   std::vector<Eigen::Vector3f> normals_;  // per primitive, toward free space
 };
 

@@ -5,7 +5,7 @@
 
 namespace wifislam::radio_model {
 
-ItuP1238Coefficients itu_p1238_coefficients(sim::RadioEnvironment environment, RadioBand band) {
+ItuP1238Coefficients itu_p1238_coefficients(RadioEnvironment environment, RadioBand band) {
   // ITU-R P.1238-7, Table 2 (N) and Table 4 (shadow fading sigma, dB).
   //   N        residential  office  commercial
   //   1.8-2 GHz      28        30        22
@@ -15,29 +15,29 @@ ItuP1238Coefficients itu_p1238_coefficients(sim::RadioEnvironment environment, R
   // Where the table has no entry (commercial at 2.4 and 5.2 GHz, residential sigma at 5.2 GHz)
   // the 1.8-2 GHz value is used. Residential at 5.2 GHz takes the apartment value 30.
   switch (environment) {
-    case sim::RadioEnvironment::kResidential:
+    case RadioEnvironment::kResidential:
       return band == RadioBand::k2_4GHz ? ItuP1238Coefficients{28.0, 8.0}
                                         : ItuP1238Coefficients{30.0, 8.0};
-    case sim::RadioEnvironment::kOffice:
+    case RadioEnvironment::kOffice:
       return band == RadioBand::k2_4GHz ? ItuP1238Coefficients{30.0, 10.0}
                                         : ItuP1238Coefficients{31.0, 12.0};
-    case sim::RadioEnvironment::kCommercial:
+    case RadioEnvironment::kCommercial:
       return ItuP1238Coefficients{22.0, 10.0};
   }
   return {};
 }
 
-double itu_p1238_floor_loss_db(sim::RadioEnvironment environment, int floors) {
+double itu_p1238_floor_loss_db(RadioEnvironment environment, int floors) {
   // ITU-R P.1238-7, Table 3, 1.8-2 GHz row (the row that gives the n-dependence for all three
   // environments; ns-3 uses it for every frequency). No floor in between: no loss.
   if (floors <= 0) return 0.0;
   const double n = floors;
   switch (environment) {
-    case sim::RadioEnvironment::kResidential:
+    case RadioEnvironment::kResidential:
       return 4.0 * n;
-    case sim::RadioEnvironment::kOffice:
+    case RadioEnvironment::kOffice:
       return 15.0 + 4.0 * (n - 1.0);
-    case sim::RadioEnvironment::kCommercial:
+    case RadioEnvironment::kCommercial:
       return 6.0 + 3.0 * (n - 1.0);
   }
   return 0.0;

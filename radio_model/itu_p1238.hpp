@@ -8,8 +8,8 @@
 // terminals, both from the recommendation's tables for the environment and band. The shadow
 // fading standard deviation comes from the same recommendation (Table 4).
 
+#include "radio_model/path_loss_choice.hpp"
 #include "radio_model/radio_band.hpp"
-#include "sim/scene/scene.hpp"
 
 namespace wifislam::radio_model {
 
@@ -19,10 +19,10 @@ struct ItuP1238Coefficients {
 };
 
 /// N and sigma from the recommendation's tables for an environment and band.
-ItuP1238Coefficients itu_p1238_coefficients(sim::RadioEnvironment environment, RadioBand band);
+ItuP1238Coefficients itu_p1238_coefficients(RadioEnvironment environment, RadioBand band);
 
 /// Lf(n) for n floors between transmitter and receiver (0 on the same storey).
-double itu_p1238_floor_loss_db(sim::RadioEnvironment environment, int floors);
+double itu_p1238_floor_loss_db(RadioEnvironment environment, int floors);
 
 /// L(d) in dB. Distances below 1 m are taken as 1 m: the model is stated for d > 1 m and the
 /// log term would otherwise turn into a gain.

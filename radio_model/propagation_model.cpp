@@ -8,34 +8,14 @@
 
 namespace wifislam::radio_model {
 
-PropagationOptions PropagationOptions::from_scene(const sim::Scene& scene) {
-  const sim::RadioSpec& radio = scene.radio;
-  PropagationOptions o;
-  o.wall_losses = WallLossTable(scene.building.wall_thickness_m);
-  o.model = radio.model;
-  o.environment = radio.environment;
-  o.distance_coefficient = radio.distance_coefficient;
-  o.shadowing_sigma_db = radio.shadowing_sigma_db;
-  o.shadowing_decorrelation_m = radio.shadowing_decorrelation_m;
-  o.fast_fading_sigma_db = radio.fast_fading_sigma_db;
-  o.fading_coherence_s = radio.fading_coherence_s;
-  o.bssid_spread_db = radio.bssid_spread_db;
-  o.people_disturbance_db = radio.people_disturbance_db;
-  for (int m = 0; m < kWallMaterialCount; ++m) {
-    if (const auto& loss_db = radio.wall_loss_db.by_material_db[m])
-      o.wall_losses.laws[m] = WallLossLaw::linear(*loss_db, 0.0);  // measured: flat in frequency
-  }
-  return o;
-}
-
 double PropagationOptions::shadowing_sigma_db_for(RadioBand band, bool line_of_sight) const {
   if (shadowing_sigma_db) return *shadowing_sigma_db;
   switch (model) {
-    case sim::PathLossModel::kItuWalls:
+    case PathLossModel::kItuWalls:
       return 4.0;
-    case sim::PathLossModel::kItuSiteGeneral:
+    case PathLossModel::kItuSiteGeneral:
       return itu_p1238_coefficients(environment, band).shadow_sigma_db;
-    case sim::PathLossModel::kItuSiteGeneralFit:
+    case PathLossModel::kItuSiteGeneralFit:
       return itu_p1238_office_fit(line_of_sight).sigma_db;
   }
   return 0.0;
@@ -54,18 +34,13 @@ double RadioLink::wall_count() const {
   return n;
 }
 
-PropagationModel::PropagationModel(const sim::World& world, std::vector<AccessPoint> access_points,
-                                   PropagationOptions options, std::uint64_t seed)
-    : PropagationModel(world.mesh, world.plan.bounds_min_m, world.plan.bounds_max_m,
-                       std::move(access_points), std::move(options), seed) {}
-
-PropagationModel::PropagationModel(const sim::Mesh& mesh, const Eigen::Vector2d& bounds_min_m,
+PropagationModel::PropagationModel(const WallMesh& walls, const Eigen::Vector2d& bounds_min_m,
                                    const Eigen::Vector2d& bounds_max_m,
                                    std::vector<AccessPoint> access_points,
                                    PropagationOptions options, std::uint64_t seed)
     : aps_(std::move(access_points)),
       options_(std::move(options)),
-      walls_(std::make_unique<EmbreeWallScene>(mesh)),
+      walls_(std::make_unique<EmbreeWallScene>(walls)),
       floor_loss_db_(itu_p1238_floor_loss_db(options_.environment, options_.floors_between)) {
   // One grid and covariance spectrum for the site, one field per AP from its own stream.
   // Unit variance: each link scales it by its own sigma (shadowing_db). One field per AP, from
@@ -92,7 +67,7 @@ RadioLink PropagationModel::link(std::size_t ap_index, const Eigen::Vector3d& re
   const AccessPoint& ap = aps_[ap_index];
   RadioLink l;
   l.distance_m = (receiver_m - ap.position_m).norm();
-  if (options_.walls && options_.model != sim::PathLossModel::kItuSiteGeneral) {
+  if (options_.walls && options_.model != PathLossModel::kItuSiteGeneral) {
     thread_local std::vector<WallCrossing> crossings;
     walls_->walls_crossed(ap.position_m, receiver_m, crossings);
     for (const WallCrossing& c : crossings) {
@@ -117,8 +92,8 @@ RadioLink PropagationModel::link_without_walls(std::size_t ap_index,
 }
 
 bool PropagationModel::walls_only_attenuate() const {
-  if (options_.model == sim::PathLossModel::kItuSiteGeneral) return true;  // walls are not counted
-  if (options_.model == sim::PathLossModel::kItuSiteGeneralFit) {
+  if (options_.model == PathLossModel::kItuSiteGeneral) return true;  // walls are not counted
+  if (options_.model == PathLossModel::kItuSiteGeneralFit) {
     // The NLoS row loses more than the LoS row (itu_p1238_fit_loss_db), but its larger sigma can
     // make a link's shadowing a gain bigger than that margin: bounds hold only without it.
     return options_.shadowing_sigma_db.has_value();
@@ -132,15 +107,15 @@ bool PropagationModel::walls_only_attenuate() const {
 
 double PropagationModel::path_loss_db(const RadioLink& link, double frequency_mhz) const {
   switch (options_.model) {
-    case sim::PathLossModel::kItuWalls:
+    case PathLossModel::kItuWalls:
       break;
-    case sim::PathLossModel::kItuSiteGeneral: {
+    case PathLossModel::kItuSiteGeneral: {
       const RadioBand band = frequency_mhz < 4000.0 ? RadioBand::k2_4GHz : RadioBand::k5GHz;
       return itu_p1238_path_loss_db(
           frequency_mhz, link.distance_m,
           itu_p1238_coefficients(options_.environment, band).distance_coefficient, floor_loss_db_);
     }
-    case sim::PathLossModel::kItuSiteGeneralFit:
+    case PathLossModel::kItuSiteGeneralFit:
       return itu_p1238_fit_loss_db(itu_p1238_office_fit(link.wall_count() == 0.0), frequency_mhz,
                                    link.distance_m);
   }

@@ -30,16 +30,16 @@
 #include "radio_model/access_point.hpp"
 #include "radio_model/embree_wall_scene.hpp"
 #include "radio_model/itu_p1238.hpp"
+#include "radio_model/path_loss_choice.hpp"
 #include "radio_model/shadowing_field.hpp"
 #include "radio_model/wall_materials.hpp"
-#include "sim/scene/scene.hpp"
-#include "sim/world/world_types.hpp"
+#include "radio_model/wall_mesh.hpp"
 
 namespace wifislam::radio_model {
 
 struct PropagationOptions {
-  sim::PathLossModel model = sim::PathLossModel::kItuWalls;
-  sim::RadioEnvironment environment = sim::RadioEnvironment::kOffice;
+  PathLossModel model = PathLossModel::kItuWalls;
+  RadioEnvironment environment = RadioEnvironment::kOffice;
   /// N in the ITU formula; default kDefaultDistanceCoefficient (see itu_p1238.hpp for why).
   std::optional<double> distance_coefficient;
   int floors_between = 0;  // one storey for now; the floor term stays in the formula
@@ -66,8 +66,6 @@ struct PropagationOptions {
   double shadowing_sigma_db_for(RadioBand band, bool line_of_sight) const;
   /// The largest sigma any link can have (0: no shadowing at all).
   double max_shadowing_sigma_db() const;
-  /// The scene's radio keys, and wall losses for its building's wall thickness.
-  static PropagationOptions from_scene(const sim::Scene& scene);
 };
 
 /// The geometry-dependent part of one AP -> receiver link, shared by all its BSSIDs.
@@ -85,12 +83,11 @@ struct RadioLink {
 
 class PropagationModel {
  public:
-  /// Builds the Embree wall scene from `world.mesh` and one shadowing field per AP over
-  /// `world.plan`'s bounds, from the sub-streams "shadowing/ap<id>" of `seed`.
-  PropagationModel(const sim::World& world, std::vector<AccessPoint> access_points,
-                   PropagationOptions options, std::uint64_t seed);
-  /// Same from a bare mesh and the bounds the shadowing fields must cover (hand-built tests).
-  PropagationModel(const sim::Mesh& mesh, const Eigen::Vector2d& bounds_min_m,
+  /// Builds the Embree wall scene from `walls` and one shadowing field per AP over the rectangle
+  /// `bounds_min_m`..`bounds_max_m` (the plan's bounds: every receiver stands inside it), from the
+  /// sub-streams "shadowing/ap<id>" of `seed`. The walls are copied into Embree: `walls` need not
+  /// outlive the model.
+  PropagationModel(const WallMesh& walls, const Eigen::Vector2d& bounds_min_m,
                    const Eigen::Vector2d& bounds_max_m, std::vector<AccessPoint> access_points,
                    PropagationOptions options, std::uint64_t seed);
 

@@ -1,20 +1,20 @@
 #pragma once
-// Radio maps: the mean RSSI (shadowing included, no fading) on a regular grid over the floor
-// plan, for one access point or for the strongest one at each cell; drawn as a cairo heat map
-// over the plan's walls, or written as CSV.
+// Radio maps: the mean RSSI (shadowing included, no fading) on a regular grid over an area (the
+// floor plan's bounds), for one access point or for the strongest one at each cell; written as
+// CSV here, drawn over the plan by the simulator (sim/site/radio_map_over_plan.hpp).
 //
 // Computed row by row on worker threads; every cell depends only on its own position, so the map
 // is identical whatever the thread count.
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <vector>
 
 #include <Eigen/Core>
 
 #include "radio_model/propagation_model.hpp"
-#include "sim/world/world_types.hpp"
 
 namespace wifislam::radio_model {
 
@@ -27,9 +27,9 @@ struct RadioMapOptions {
   std::optional<int> ap_id;                 // nullopt: the strongest AP at every cell
   RadioMapBand band = RadioMapBand::kBest;  // best: the AP's stronger radio
   int threads = 0;                          // 0: all hardware threads
-  /// Compute only cells whose centre is in free space (others are NaN): the map is drawn over
-  /// free space only, and a loop building's courtyard and the walls are a large part of its
-  /// bounding box.
+  /// Compute only the area's cells_to_compute, its free space (others are NaN): the map is
+  /// drawn over free space only, and a loop building's courtyard and the walls are a large part
+  /// of its bounding box.
   bool free_space_only = true;
   /// Strongest-AP maps: skip the wall ray for an AP whose wall-free RSSI (an upper bound) cannot
   /// beat the best found so far. Exact: the map is identical with and without.
@@ -49,21 +49,25 @@ struct RadioMap {
   float at(int col, int row) const { return rssi_dbm[static_cast<std::size_t>(row) * cols + col]; }
 };
 
+/// Where a map is computed: the rectangle it covers, the ceiling a receiver must stay under, and
+/// which cells of the grid lie in free space (row-major, as RadioMap::rssi_dbm; unset: all).
+struct RadioMapArea {
+  Eigen::Vector2d bounds_min_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d bounds_max_m = Eigen::Vector2d::Zero();
+  double ceiling_m = 0.0;
+  std::function<std::vector<bool>(const RadioMap& grid)> cells_to_compute;
+};
+
 /// The largest map: 16 million cells (about 150 MB with its picture), at most 16384 a side (the
 /// picture is a cairo surface, which takes at most 32767).
 inline constexpr std::int64_t kRadioMapMaxCells = 16'000'000;
 inline constexpr int kRadioMapMaxSide = 16384;
 
 /// Throws InvalidInputError for an unknown ap_id, a non-positive resolution, a resolution that
-/// needs more cells than kRadioMapMaxCells or kRadioMapMaxSide, or a model without access points.
-RadioMap compute_radio_map(const PropagationModel& model, const sim::FloorPlan& plan,
+/// needs more cells than kRadioMapMaxCells or kRadioMapMaxSide, a receiver height not under the
+/// ceiling, or a model without access points.
+RadioMap compute_radio_map(const PropagationModel& model, const RadioMapArea& area,
                            const RadioMapOptions& options);
-
-/// Heat map PNG over the plan (free space coloured, walls dark, APs marked, colour bar), written
-/// atomically. Cells below `floor_dbm` are left grey.
-void write_radio_map_png(const RadioMap& map, const sim::FloorPlan& plan,
-                         const std::vector<AccessPoint>& access_points,
-                         const std::filesystem::path& path, double floor_dbm = -92.0);
 
 /// CSV "x_m,y_m,rssi_dbm,ap_id" (cell centres of the computed cells), written atomically.
 void write_radio_map_csv(const RadioMap& map, const std::filesystem::path& path);

@@ -62,14 +62,14 @@ WallLossLaw WallLossLaw::measured_with_absorption(double anchor_db, double ancho
 
 WallLossTable::WallLossTable(double wall_thickness_m) {
   // TR 38.901 Table 7.4.3-1: concrete, standard glass, wood.
-  laws[material_index(sim::WallMaterial::kConcrete)] = WallLossLaw::linear(5.0, 4.0);
-  laws[material_index(sim::WallMaterial::kGlass)] = WallLossLaw::linear(2.0, 0.2);
-  laws[material_index(sim::WallMaterial::kWoodDoor)] = WallLossLaw::linear(4.85, 0.12);
+  laws[material_index(WallMaterial::kConcrete)] = WallLossLaw::linear(5.0, 4.0);
+  laws[material_index(WallMaterial::kGlass)] = WallLossLaw::linear(2.0, 0.2);
+  laws[material_index(WallMaterial::kWoodDoor)] = WallLossLaw::linear(4.85, 0.12);
   // COST 231 at 1800 MHz, with the frequency dependence of the material's absorption (P.2040-3):
   // masonry of the wall's thickness (heavy wall); a stud partition of two boards (light wall).
-  laws[material_index(sim::WallMaterial::kBrick)] =
+  laws[material_index(WallMaterial::kBrick)] =
       WallLossLaw::measured_with_absorption(6.9, 1800.0, kP2040Brick, wall_thickness_m);
-  laws[material_index(sim::WallMaterial::kPlasterboard)] = WallLossLaw::measured_with_absorption(
+  laws[material_index(WallMaterial::kPlasterboard)] = WallLossLaw::measured_with_absorption(
       3.4, 1800.0, kP2040Plasterboard, 2.0 * kPlasterboardSheetM);
 }
 

@@ -34,12 +34,9 @@
 
 #include <array>
 
-#include "sim/scene/scene.hpp"
+#include "radio_model/wall_material.hpp"
 
 namespace wifislam::radio_model {
-
-inline constexpr int kWallMaterialCount = 5;
-inline int material_index(sim::WallMaterial m) { return static_cast<int>(m); }
 
 /// ITU-R P.2040-3 Table 3: relative permittivity a f^b and conductivity c f^d S/m, f in GHz.
 struct P2040Material {
@@ -79,7 +76,7 @@ struct WallLossTable {
   /// ... for the schema's default wall thickness, 0.15 m.
   WallLossTable() : WallLossTable(0.15) {}
   std::array<WallLossLaw, kWallMaterialCount> laws;
-  double loss_db(sim::WallMaterial material, double frequency_mhz) const {
+  double loss_db(WallMaterial material, double frequency_mhz) const {
     return laws[material_index(material)].at(frequency_mhz);
   }
 };

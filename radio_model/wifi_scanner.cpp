@@ -11,13 +11,6 @@
 
 namespace wifislam::radio_model {
 
-WifiScannerOptions WifiScannerOptions::from_scene(const sim::WifiScannerSpec& spec) {
-  WifiScannerOptions o;
-  o.sensitivity_dbm = spec.sensitivity_dbm;
-  o.dwell_per_channel_s = spec.dwell_per_channel_s;
-  return o;
-}
-
 WifiScanner::WifiScanner(const PropagationModel& model, WifiScannerOptions options,
                          std::uint64_t seed)
     : model_(model), options_(std::move(options)), seed_(seed) {

@@ -43,7 +43,6 @@
 #include "core/wifi_scan.hpp"
 #include "radio_model/fading_process.hpp"
 #include "radio_model/propagation_model.hpp"
-#include "sim/scene/scene.hpp"
 
 namespace wifislam::radio_model {
 
@@ -53,7 +52,6 @@ struct WifiScannerOptions {
   double detection_width_db = 3.0;    // how far above the floor detection becomes near-certain
   double beacon_interval_s = 0.1024;  // 802.11 default: 100 TU of 1.024 ms
   std::string sensor_id = "wifi0";
-  static WifiScannerOptions from_scene(const sim::WifiScannerSpec& spec);
 };
 
 class WifiScanner {

@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "core/median.hpp"
 #include "core/rng.hpp"
-#include "radio_model/ap_placement.hpp"
+#include "sim/site/ap_placement.hpp"
 #include "sim/site/site.hpp"
 #include "sim/world/world_types.hpp"
 
@@ -62,7 +62,7 @@ namespace {
 std::vector<Eigen::Vector2d> candidate_spots(const sim::Site& site,
                                              const PlacementOptions& options) {
   const std::vector<Eigen::Vector2d> spots =
-      radio_model::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
+      sim::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
   if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
     throw InvalidInputError(
         fmt::format("{} candidate positions at {} m spacing (at most {}): give a larger --spacing",

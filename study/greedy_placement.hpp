@@ -4,7 +4,7 @@
 // budget; next to it, the same numbers of access points drawn at random from the same candidates.
 //
 // Candidates: free-space spots in rooms, corridors and halls, 0.4 m off the walls, no two closer
-// than `candidate_spacing_m` (radio_model/ap_placement.hpp), at the scene's access_points.height_m
+// than `candidate_spacing_m` (sim/site/ap_placement.hpp), at the scene's access_points.height_m
 // and tx_power_dbm.
 //
 // Evaluation, at radio level (radio_resolution.hpp): the scene is simulated once with an access

@@ -20,6 +20,7 @@
 #include "radio_model/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
+#include "sim/site/survey_site.hpp"
 
 namespace {
 
@@ -76,13 +77,13 @@ void run_calibrate(const CalibrateArgs& args) {
   c.survey_path = args.survey_path;
   c.test_path = args.test_path;
   c.frequency_mhz = args.frequency_mhz;
-  c.train = cal::survey_links(cal::read_survey(args.survey_path, format, height_m), aps, scene,
-                              site.world());
-  if (!args.test_path.empty()) {
-    c.test = cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps, scene,
-                               site.world());
-  }
-  const auto options = radio_model::PropagationOptions::from_scene(scene);
+  const cal::SurveySite survey_site = sim::survey_site(site);
+  c.train =
+      cal::survey_links(cal::read_survey(args.survey_path, format, height_m), aps, survey_site);
+  if (!args.test_path.empty())
+    c.test =
+        cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps, survey_site);
+  const radio_model::PropagationOptions& options = survey_site.options;
   c.before = cal::scene_model(c.train, options.wall_losses, scene.radio.distance_coefficient,
                               scene.access_points.tx_power_dbm, args.frequency_mhz);
   c.fit = cal::fit_propagation(c.train, c.before.wall_loss_db);

@@ -14,8 +14,8 @@
 
 #include "core/rng.hpp"
 #include "radio_model/propagation_model.hpp"
-#include "radio_model/radio_map.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/radio_map_over_plan.hpp"
 #include "sim/site/site.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
@@ -143,7 +143,7 @@ void BM_RadioMapJHallAllAps(benchmark::State& state) {
   std::size_t cells = 0;
   for (auto _ : state) {
     const radio_model::RadioMap map =
-        radio_model::compute_radio_map(h.site->radio(), h.site->world().plan, options);
+        sim::compute_radio_map(h.site->radio(), h.site->world().plan, options);
     cells = 0;
     for (float v : map.rssi_dbm) cells += std::isfinite(v);
     benchmark::DoNotOptimize(map.rssi_dbm.data());

@@ -20,6 +20,7 @@
 #include "core/rng.hpp"
 #include "radio_model/embree_wall_scene.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace {
@@ -46,7 +47,7 @@ int main(int argc, char** argv) {
   constexpr int kSegments = 200000;
   for (const std::string& file : files) {
     const sim::World world = sim::generate_world(sim::load_scene_file(file));
-    const radio_model::EmbreeWallScene walls(world.mesh);
+    const radio_model::EmbreeWallScene walls(sim::radio_wall_mesh(world.mesh));
     const Eigen::Vector2d lo = world.plan.bounds_min_m, hi = world.plan.bounds_max_m;
     Rng rng = Rng::stream(7, "bench/wall_crossing_digest");
     std::string bytes;

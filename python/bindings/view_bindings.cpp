@@ -15,11 +15,11 @@
 #include "python/bindings/bindings.hpp"
 #include "python/bindings/numpy_convert.hpp"
 #include "radio_model/propagation_model.hpp"
-#include "radio_model/radio_map.hpp"
 #include "sim/generate/as_stored.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"
+#include "sim/site/radio_map_over_plan.hpp"
 #include "sim/site/site.hpp"
 #include "sim/world/world_generator.hpp"
 
@@ -99,7 +99,7 @@ py::dict radio_map(const sim::Scene& scene, double resolution_m, std::optional<i
     options.band = band == "2.4" ? radio_model::RadioMapBand::k2_4GHz
                    : band == "5" ? radio_model::RadioMapBand::k5GHz
                                  : radio_model::RadioMapBand::kBest;
-    map = radio_model::compute_radio_map(site->radio(), site->world().plan, options);
+    map = sim::compute_radio_map(site->radio(), site->world().plan, options);
   }
   py::array_t<float> rssi({map.rows, map.cols});
   py::array_t<std::int32_t> best({map.rows, map.cols});

@@ -6,6 +6,8 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "radio_model/access_point.hpp"
+
 namespace wifislam::radio_model::calibrate {
 
 namespace {
@@ -15,7 +17,7 @@ struct Range {
   double lo, hi;
 };
 constexpr Range kDistanceCoefficient{10.0, 60.0}, kSigmaDb{0.0, 30.0}, kDecorrelationM{0.5, 1000.0},
-    kWallLossDb{0.0, 100.0}, kTxPowerDbm{-10.0, 36.0};
+    kWallLossDb{0.0, 100.0}, kTxPowerDbm{kMinTxPowerDbm, kMaxTxPowerDbm};
 
 std::string clamped(double v, Range r, std::string& note, const char* key) {
   const double c = std::clamp(v, r.lo, r.hi);
@@ -23,7 +25,7 @@ std::string clamped(double v, Range r, std::string& note, const char* key) {
   return fmt::format("{:.2f}", c);
 }
 
-sim::WallMaterial material(int m) { return static_cast<sim::WallMaterial>(m); }
+WallMaterial material(int m) { return static_cast<WallMaterial>(m); }
 
 std::string residual_cell(const ApResiduals& r) {
   return r.samples ? fmt::format("{:.2f} / {:+.2f}", r.rms_db, r.bias_db) : "-";

@@ -9,7 +9,6 @@
 
 #include "core/error.hpp"
 #include "radio_model/itu_p1238.hpp"
-#include "sim/scene/scene.hpp"
 
 namespace wifislam::radio_model::calibrate {
 

@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
-#include "sim/scene/scene_schema.hpp"
+#include "radio_model/access_point.hpp"
 
 namespace wifislam::radio_model::calibrate {
 
@@ -198,11 +198,10 @@ std::vector<SurveyAccessPoint> read_access_points_csv(const std::string& path) {
                      number(f[3], where, "z_m")};
     if (with_tx) {
       ap.tx_power_dbm = number(f[4], where, "tx_power_dbm");
-      const sim::schema::Limits& limits = sim::schema::kTxPowerDbm;  // as a scene's tx_power_dbm
-      if (*ap.tx_power_dbm < limits.lo || *ap.tx_power_dbm > limits.hi)
+      if (*ap.tx_power_dbm < kMinTxPowerDbm || *ap.tx_power_dbm > kMaxTxPowerDbm)
         throw ParseError(where, "tx_power_dbm",
                          fmt::format("{} dBm is not a Wi-Fi transmit power (expected {} to {})",
-                                     f[4], limits.lo, limits.hi));
+                                     f[4], kMinTxPowerDbm, kMaxTxPowerDbm));
     }
     aps.push_back(ap);
   }

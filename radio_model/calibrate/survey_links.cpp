@@ -8,7 +8,6 @@
 
 #include "core/error.hpp"
 #include "radio_model/propagation_model.hpp"
-#include "sim/world/plan_queries.hpp"
 
 namespace wifislam::radio_model::calibrate {
 
@@ -43,37 +42,36 @@ std::string id_list(const std::vector<SurveyAccessPoint>& aps) {
   return out;
 }
 
-void check_inside(const sim::Scene& scene, const sim::World& world, const Eigen::Vector3d& p,
-                  const std::string& where, const char* column, const std::string& what) {
-  if (!sim::regions_contain(world.plan.free_space, p.head<2>())) {
-    throw ParseError(where, column,
-                     fmt::format("{} ({:.2f}, {:.2f}) m is not in the free space of scene '{}' "
-                                 "(inside a wall or outside its plan, which spans ({:.2f}, {:.2f}) "
-                                 "to ({:.2f}, {:.2f}) m)",
-                                 what, p.x(), p.y(), scene.name, world.plan.bounds_min_m.x(),
-                                 world.plan.bounds_min_m.y(), world.plan.bounds_max_m.x(),
-                                 world.plan.bounds_max_m.y()));
+void check_inside(const SurveySite& site, const Eigen::Vector3d& p, const std::string& where,
+                  const char* column, const std::string& what) {
+  if (!site.in_free_space(p.head<2>())) {
+    throw ParseError(
+        where, column,
+        fmt::format("{} ({:.2f}, {:.2f}) m is not in the free space of scene '{}' "
+                    "(inside a wall or outside its plan, which spans ({:.2f}, {:.2f}) "
+                    "to ({:.2f}, {:.2f}) m)",
+                    what, p.x(), p.y(), site.name, site.bounds_min_m.x(), site.bounds_min_m.y(),
+                    site.bounds_max_m.x(), site.bounds_max_m.y()));
   }
-  if (!(p.z() >= 0.0 && p.z() <= scene.building.wall_height_m)) {
+  if (!(p.z() >= 0.0 && p.z() <= site.ceiling_m)) {
     throw ParseError(where, "z_m",
                      fmt::format("{} height {} m is not between the floor and the ceiling (0 to "
                                  "{} m)",
-                                 what, p.z(), scene.building.wall_height_m));
+                                 what, p.z(), site.ceiling_m));
   }
 }
 
 }  // namespace
 
 SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoint>& aps,
-                         const sim::Scene& scene, const sim::World& world) {
+                         const SurveySite& site) {
   SurveyLinks out;
   out.aps = aps;
   std::map<int, std::size_t> index_of_id;
   std::vector<radio_model::AccessPoint> model_aps;
   for (std::size_t i = 0; i < aps.size(); ++i) {
-    const std::string where = aps[i].where.empty() ? scene.where("access_points") : aps[i].where;
-    check_inside(scene, world, aps[i].position_m, where, "x_m",
-                 fmt::format("access point {}", aps[i].id));
+    const std::string where = aps[i].where.empty() ? site.access_points_where : aps[i].where;
+    check_inside(site, aps[i].position_m, where, "x_m", fmt::format("access point {}", aps[i].id));
     index_of_id[aps[i].id] = i;
     radio_model::AccessPoint ap;
     ap.id = aps[i].id;
@@ -97,7 +95,7 @@ SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoi
                         std::llround(s.position_m.z() * 1e3), ap->second);
     auto [it, fresh] = group_of.emplace(key, out.groups.size());
     if (fresh) {
-      check_inside(scene, world, s.position_m, where, "x_m", "the survey position");
+      check_inside(site, s.position_m, where, "x_m", "the survey position");
       LinkGroup g;
       g.position_m = s.position_m;
       g.ap_index = ap->second;
@@ -109,11 +107,12 @@ SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoi
   }
 
   // The simulator's own link geometry; no shadowing (sigma 0 builds no fields).
-  radio_model::PropagationOptions options = radio_model::PropagationOptions::from_scene(scene);
-  options.model = sim::PathLossModel::kItuWalls;
+  PropagationOptions options = site.options;
+  options.model = PathLossModel::kItuWalls;
   options.walls = true;
   options.shadowing_sigma_db = 0.0;
-  const radio_model::PropagationModel model(world, model_aps, options, scene.seed);
+  const PropagationModel model(site.walls, site.bounds_min_m, site.bounds_max_m, model_aps, options,
+                               site.seed);
   for (LinkGroup& g : out.groups) {
     double sum = 0.0;
     for (double r : g.rss_dbm) sum += r;

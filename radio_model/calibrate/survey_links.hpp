@@ -5,6 +5,8 @@
 // scene and counting rule) that computes simulated RSSI.
 
 #include <array>
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,9 +14,9 @@
 #include <Eigen/Core>
 
 #include "radio_model/calibrate/rss_survey.hpp"
+#include "radio_model/propagation_model.hpp"
 #include "radio_model/wall_materials.hpp"
-#include "sim/scene/scene.hpp"
-#include "sim/world/world_types.hpp"
+#include "radio_model/wall_mesh.hpp"
 
 namespace wifislam::radio_model::calibrate {
 
@@ -43,11 +45,26 @@ struct SurveyLinks {
   LineOfSightAgreement line_of_sight_agreement() const;
 };
 
+/// The building a survey was taken in, as the fit needs it: its walls, the rectangle its plan
+/// spans, its free space and ceiling (positions outside are rejected), and the radio options walls
+/// are counted under. The simulator builds it from a scene (sim/site/survey_site.hpp).
+struct SurveySite {
+  std::string name;                 // the scene's, for messages
+  std::string access_points_where;  // where an AP without a file line was declared
+  WallMesh walls;
+  Eigen::Vector2d bounds_min_m = Eigen::Vector2d::Zero();
+  Eigen::Vector2d bounds_max_m = Eigen::Vector2d::Zero();
+  double ceiling_m = 0.0;
+  std::function<bool(const Eigen::Vector2d&)> in_free_space;
+  PropagationOptions options;  // the scene's; walls are counted under itu_walls whatever it says
+  std::uint64_t seed = 0;
+};
+
 /// Groups `survey` by position (to the millimetre) and AP and counts each link's walls in
-/// `world`. Throws ParseError located in the survey for a sample from an AP not in `aps`, or at a
+/// `site`. Throws ParseError located in the survey for a sample from an AP not in `aps`, or at a
 /// position outside the scene's free space or above its ceiling, and located at the AP (its
 /// aps.csv line, else the scene's `access_points`) for an AP outside the free space.
 SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoint>& aps,
-                         const sim::Scene& scene, const sim::World& world);
+                         const SurveySite& site);
 
 }  // namespace wifislam::radio_model::calibrate

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/wall_clock.hpp"
+#include "sim/site/radio_options.hpp"
 
 namespace wifislam::sim {
 
@@ -49,8 +50,7 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
   scanner_ = std::make_unique<radio_model::WifiScanner>(
-      site_->radio(), radio_model::WifiScannerOptions::from_scene(scene_.sensors.wifi),
-      scene_.seed);
+      site_->radio(), wifi_scanner_options(scene_.sensors.wifi), scene_.seed);
 
   SensorScheduleOptions schedule;
   schedule.fps = scene_.sensors.camera.fps;

@@ -4,22 +4,6 @@
 
 namespace wifislam::sim {
 
-const char* to_string(WallMaterial material) {
-  switch (material) {
-    case WallMaterial::kPlasterboard:
-      return "plasterboard";
-    case WallMaterial::kBrick:
-      return "brick";
-    case WallMaterial::kConcrete:
-      return "concrete";
-    case WallMaterial::kGlass:
-      return "glass";
-    case WallMaterial::kWoodDoor:
-      return "wood_door";
-  }
-  return "unknown";
-}
-
 const char* to_string(SpaceKind kind) {
   switch (kind) {
     case SpaceKind::kCorridor:
@@ -30,14 +14,6 @@ const char* to_string(SpaceKind kind) {
       return "room";
   }
   return "unknown";
-}
-
-std::optional<WallMaterial> wall_material_from_string(const std::string& name) {
-  for (WallMaterial m : {WallMaterial::kPlasterboard, WallMaterial::kBrick, WallMaterial::kConcrete,
-                         WallMaterial::kGlass, WallMaterial::kWoodDoor}) {
-    if (name == to_string(m)) return m;
-  }
-  return std::nullopt;
 }
 
 const char* to_string(ApPlacement placement) {
@@ -52,30 +28,6 @@ const char* to_string(ApPlacement placement) {
       return "rooms";
     case ApPlacement::kColinear:
       return "colinear";
-  }
-  return "unknown";
-}
-
-const char* to_string(RadioEnvironment environment) {
-  switch (environment) {
-    case RadioEnvironment::kResidential:
-      return "residential";
-    case RadioEnvironment::kOffice:
-      return "office";
-    case RadioEnvironment::kCommercial:
-      return "commercial";
-  }
-  return "unknown";
-}
-
-const char* to_string(PathLossModel model) {
-  switch (model) {
-    case PathLossModel::kItuWalls:
-      return "itu_walls";
-    case PathLossModel::kItuSiteGeneral:
-      return "itu_site_general";
-    case PathLossModel::kItuSiteGeneralFit:
-      return "itu_site_general_fit";
   }
   return "unknown";
 }

@@ -15,13 +15,16 @@
 
 #include "core/camera_intrinsics.hpp"
 #include "core/dataset_format.hpp"
+#include "radio_model/path_loss_choice.hpp"
+#include "radio_model/wall_material.hpp"
 
 namespace wifislam::sim {
 
-/// Physical wall materials. The radio model maps each to a per-band penetration loss.
-enum class WallMaterial { kPlasterboard, kBrick, kConcrete, kGlass, kWoodDoor };
-const char* to_string(WallMaterial material);
-std::optional<WallMaterial> wall_material_from_string(const std::string& name);
+/// The radio model's vocabulary, as the scene file names it.
+using radio_model::PathLossModel;
+using radio_model::RadioEnvironment;
+using radio_model::wall_material_from_string;
+using radio_model::WallMaterial;
 
 struct SceneNode {
   std::string id;
@@ -270,13 +273,6 @@ struct Sensors {
   /// runs on route time, so the origin changes no pixel, pose or RSSI. 0 = times from 0 s.
   std::uint64_t time_origin_s = dataset::kDefaultTimeOriginS;
 };
-
-enum class RadioEnvironment { kResidential, kOffice, kCommercial };
-const char* to_string(RadioEnvironment environment);
-
-/// The mean path loss model (radio_model/propagation_model.hpp says what each computes).
-enum class PathLossModel { kItuWalls, kItuSiteGeneral, kItuSiteGeneralFit };
-const char* to_string(PathLossModel model);
 
 /// Measured per-wall losses by material (`radio calibrate` writes them), indexed like
 /// WallMaterial. A set value replaces that material's default loss law (wall_materials.hpp) by

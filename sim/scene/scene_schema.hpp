@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "radio_model/access_point.hpp"
 #include "sim/scene/scene.hpp"
 
 namespace wifislam::sim::schema {
@@ -42,9 +43,9 @@ inline constexpr Limits kCoordinateM{-10000.0, 10000.0, false};
 /// A height above the floor, up to the highest ceiling a scene may have (building.wall_height_m);
 /// the scene validation compares it with the scene's own ceiling.
 inline constexpr Limits kHeightM{0.0, 10.0, false};
-/// An access point's transmit power: a Wi-Fi radio's range (36 dBm is the largest EIRP any
-/// regulator allows in the 2.4 and 5 GHz bands).
-inline constexpr Limits kTxPowerDbm{-10.0, 36.0, false};
+/// An access point's transmit power: a Wi-Fi radio's range (radio_model/access_point.hpp).
+inline constexpr Limits kTxPowerDbm{radio_model::kMinTxPowerDbm, radio_model::kMaxTxPowerDbm,
+                                    false};
 
 template <class E>
 using Names = std::vector<std::pair<E, std::string_view>>;

@@ -1,9 +1,11 @@
 #include "sim/site/site.hpp"
 
-#include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/ap_placement.hpp"
+#include "sim/site/radio_options.hpp"
+#include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace wifislam::sim {
@@ -12,8 +14,8 @@ namespace {
 
 std::unique_ptr<radio_model::PropagationModel> make_radio(const Scene& scene, const World& world) {
   return std::make_unique<radio_model::PropagationModel>(
-      world, radio_model::make_access_points(scene, world.plan),
-      radio_model::PropagationOptions::from_scene(scene), scene.seed);
+      radio_wall_mesh(world.mesh), world.plan.bounds_min_m, world.plan.bounds_max_m,
+      make_access_points(scene, world.plan), propagation_options(scene), scene.seed);
 }
 
 }  // namespace

@@ -7,7 +7,7 @@
 //
 // Seeds, as datasets have always used them: the world, the motion and the radio model's
 // shadowing draw from `scene.seed`'s named streams; the access points from
-// `access_points.seed` when the scene sets it (radio_model/ap_placement.hpp).
+// `access_points.seed` when the scene sets it (sim/site/ap_placement.hpp).
 
 #include <memory>
 #include <vector>

@@ -3,7 +3,8 @@
 #include <fmt/format.h>
 
 #include "radio_model/propagation_model.hpp"
-#include "radio_model/wifi_scanner.hpp"
+#include "sim/site/radio_map_over_plan.hpp"
+#include "sim/site/radio_options.hpp"
 #include "sim/world/plan_drawing.hpp"
 
 namespace wifislam::sim {
@@ -19,11 +20,9 @@ void draw_site_plan(const Site& site, const std::filesystem::path& path) {
 radio_model::RadioMap draw_site_radio_map(const Site& site,
                                           const radio_model::RadioMapOptions& options,
                                           const std::filesystem::path& path) {
-  const radio_model::RadioMap map =
-      radio_model::compute_radio_map(site.radio(), site.world().plan, options);
-  const double floor_dbm =
-      radio_model::WifiScannerOptions::from_scene(site.scene().sensors.wifi).sensitivity_dbm;
-  radio_model::write_radio_map_png(map, site.world().plan, site.access_points(), path, floor_dbm);
+  const radio_model::RadioMap map = compute_radio_map(site.radio(), site.world().plan, options);
+  const double floor_dbm = wifi_scanner_options(site.scene().sensors.wifi).sensitivity_dbm;
+  write_radio_map_png(map, site.world().plan, site.access_points(), path, floor_dbm);
   return map;
 }
 

@@ -24,7 +24,8 @@ INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
 def layering_table(source_dir, marker="<!-- layering table"):
     """{library folder: set of folders it may include}, from docs/layout.md (or, with the
     public-headers marker, {library folder: set of its public headers})."""
-    text = open(os.path.join(source_dir, "docs", "layout.md")).read()
+    with open(os.path.join(source_dir, "docs", "layout.md")) as f:
+        text = f.read()
     start = text.index(marker)
     table = {}
     for line in text[start:].splitlines()[1:]:
@@ -76,7 +77,8 @@ def cmake_links(source_dir, libraries):
         cmake = os.path.join(source_dir, library, "CMakeLists.txt")
         if not os.path.exists(cmake):
             continue
-        text = open(cmake).read()
+        with open(cmake) as f:
+            text = f.read()
         for match in re.finditer(r"wifislam_library\((\w+)(.*?)\)", text, re.S):
             target_folder[match.group(1)] = library
             tokens = match.group(2).split()

@@ -14,9 +14,11 @@
 #include <iostream>
 #include <vector>
 
-#include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/ap_placement.hpp"
+#include "sim/site/radio_options.hpp"
+#include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace wifislam::radio_model {
@@ -151,9 +153,11 @@ TEST(IndependentRadioCheck, MeanRssiOnJHallAgreesWithA2DCalculationFromThePlan) 
   sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   scene.access_points.height_m = 1.5;  // below the doors (2.1 m)
   const sim::World world = generate_world(scene);
-  PropagationOptions options = PropagationOptions::from_scene(scene);
+  PropagationOptions options = sim::propagation_options(scene);
   options.shadowing_sigma_db = 0.0;
-  const PropagationModel model(world, make_access_points(scene, world.plan), options, scene.seed);
+  const PropagationModel model(sim::radio_wall_mesh(world.mesh), world.plan.bounds_min_m,
+                               world.plan.bounds_max_m, sim::make_access_points(scene, world.plan),
+                               options, scene.seed);
   const double receiver_z_m = 0.5;
 
   std::vector<double> diffs;

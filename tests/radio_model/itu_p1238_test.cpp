@@ -28,29 +28,27 @@ TEST(ItuP1238, PathLossMatchesHandComputedValues) {
 }
 
 TEST(ItuP1238, TableCoefficientsFollowTheRecommendation) {
-  EXPECT_EQ(itu_p1238_coefficients(sim::RadioEnvironment::kResidential, RadioBand::k2_4GHz)
+  EXPECT_EQ(itu_p1238_coefficients(RadioEnvironment::kResidential, RadioBand::k2_4GHz)
                 .distance_coefficient,
             28.0);
-  EXPECT_EQ(itu_p1238_coefficients(sim::RadioEnvironment::kOffice, RadioBand::k2_4GHz)
-                .distance_coefficient,
-            30.0);
-  EXPECT_EQ(itu_p1238_coefficients(sim::RadioEnvironment::kCommercial, RadioBand::k2_4GHz)
+  EXPECT_EQ(
+      itu_p1238_coefficients(RadioEnvironment::kOffice, RadioBand::k2_4GHz).distance_coefficient,
+      30.0);
+  EXPECT_EQ(itu_p1238_coefficients(RadioEnvironment::kCommercial, RadioBand::k2_4GHz)
                 .distance_coefficient,
             22.0);
   EXPECT_EQ(
-      itu_p1238_coefficients(sim::RadioEnvironment::kOffice, RadioBand::k5GHz).distance_coefficient,
+      itu_p1238_coefficients(RadioEnvironment::kOffice, RadioBand::k5GHz).distance_coefficient,
       31.0);
-  EXPECT_EQ(
-      itu_p1238_coefficients(sim::RadioEnvironment::kOffice, RadioBand::k2_4GHz).shadow_sigma_db,
-      10.0);
-  EXPECT_EQ(
-      itu_p1238_coefficients(sim::RadioEnvironment::kOffice, RadioBand::k5GHz).shadow_sigma_db,
-      12.0);
+  EXPECT_EQ(itu_p1238_coefficients(RadioEnvironment::kOffice, RadioBand::k2_4GHz).shadow_sigma_db,
+            10.0);
+  EXPECT_EQ(itu_p1238_coefficients(RadioEnvironment::kOffice, RadioBand::k5GHz).shadow_sigma_db,
+            12.0);
   // Floor penetration (Table 3): residential 4n, office 15 + 4(n-1), commercial 6 + 3(n-1).
-  EXPECT_EQ(itu_p1238_floor_loss_db(sim::RadioEnvironment::kOffice, 0), 0.0);
-  EXPECT_EQ(itu_p1238_floor_loss_db(sim::RadioEnvironment::kResidential, 2), 8.0);
-  EXPECT_EQ(itu_p1238_floor_loss_db(sim::RadioEnvironment::kOffice, 3), 23.0);
-  EXPECT_EQ(itu_p1238_floor_loss_db(sim::RadioEnvironment::kCommercial, 2), 9.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 0), 0.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kResidential, 2), 8.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 3), 23.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kCommercial, 2), 9.0);
 }
 
 TEST(ItuP1238, LossGrowsWithDistanceAndNeverBelowOneMetre) {

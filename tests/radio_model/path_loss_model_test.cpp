@@ -37,8 +37,8 @@ struct Link {
 
 // One AP at the origin, a receiver 12 m away behind one brick wall at x = 6 (or no wall).
 Link link_behind_wall(PropagationOptions options, bool wall) {
-  sim::Mesh mesh;
-  if (wall) test::add_wall_x(mesh, 6.0f, 0.15f, 10.0f, 2.8f, sim::WallMaterial::kBrick, 1);
+  WallMesh mesh;
+  if (wall) test::add_wall_x(mesh, 6.0f, 0.15f, 10.0f, 2.8f, WallMaterial::kBrick, 1);
   MacAllocator macs(5);
   const Eigen::Vector3d ap(0, 0, 2.0), rx(12, 0, 2.0);
   PropagationModel model(mesh, {-20, -20}, {20, 20}, {make_access_point(0, ap, 20.0, 1, 5, macs)},
@@ -48,7 +48,7 @@ Link link_behind_wall(PropagationOptions options, bool wall) {
           a.bssids.front().frequency_mhz(), a.bssids.back().frequency_mhz()};
 }
 
-PropagationOptions without_shadowing(sim::PathLossModel model) {
+PropagationOptions without_shadowing(PathLossModel model) {
   PropagationOptions o;
   o.model = model;
   o.shadowing_sigma_db = 0.0;
@@ -56,7 +56,7 @@ PropagationOptions without_shadowing(sim::PathLossModel model) {
 }
 
 TEST(PathLossModels, ItuWallsIsTheDistanceLawWithNTwentyTwoPlusTheWall) {
-  const auto o = without_shadowing(sim::PathLossModel::kItuWalls);
+  const auto o = without_shadowing(PathLossModel::kItuWalls);
   const Link open = link_behind_wall(o, false), walled = link_behind_wall(o, true);
   const double d = 12.0;
   EXPECT_NEAR(open.rssi_24_dbm, 20 - (20 * std::log10(open.f_24_mhz) + 22 * std::log10(d) - 28),
@@ -73,10 +73,10 @@ TEST(PathLossModels, ItuWallsIsTheDistanceLawWithNTwentyTwoPlusTheWall) {
 }
 
 TEST(PathLossModels, ItuSiteGeneralTakesNFromTheTablePerBandAndIgnoresWalls) {
-  for (auto [environment, n24, n5] : {std::tuple{sim::RadioEnvironment::kOffice, 30.0, 31.0},
-                                      std::tuple{sim::RadioEnvironment::kResidential, 28.0, 30.0},
-                                      std::tuple{sim::RadioEnvironment::kCommercial, 22.0, 22.0}}) {
-    auto o = without_shadowing(sim::PathLossModel::kItuSiteGeneral);
+  for (auto [environment, n24, n5] : {std::tuple{RadioEnvironment::kOffice, 30.0, 31.0},
+                                      std::tuple{RadioEnvironment::kResidential, 28.0, 30.0},
+                                      std::tuple{RadioEnvironment::kCommercial, 22.0, 22.0}}) {
+    auto o = without_shadowing(PathLossModel::kItuSiteGeneral);
     o.environment = environment;
     const Link open = link_behind_wall(o, false), walled = link_behind_wall(o, true);
     const double d = 12.0;
@@ -92,7 +92,7 @@ TEST(PathLossModels, ItuSiteGeneralTakesNFromTheTablePerBandAndIgnoresWalls) {
 }
 
 TEST(PathLossModels, ItuSiteGeneralFitIsLosWithoutAWallAndNlosBehindOne) {
-  const auto o = without_shadowing(sim::PathLossModel::kItuSiteGeneralFit);
+  const auto o = without_shadowing(PathLossModel::kItuSiteGeneralFit);
   const Link open = link_behind_wall(o, false), walled = link_behind_wall(o, true);
   const double d = 12.0;
   auto fit = [&](double alpha, double beta, double gamma, double f_mhz) {
@@ -106,10 +106,10 @@ TEST(PathLossModels, ItuSiteGeneralFitIsLosWithoutAWallAndNlosBehindOne) {
 TEST(PathLossModels, ShadowingSigmaIsTheModelsUnlessTheSceneSetsIt) {
   PropagationOptions o;
   EXPECT_EQ(o.shadowing_sigma_db_for(RadioBand::k2_4GHz, true), 4.0);  // itu_walls
-  o.model = sim::PathLossModel::kItuSiteGeneral;
+  o.model = PathLossModel::kItuSiteGeneral;
   EXPECT_EQ(o.shadowing_sigma_db_for(RadioBand::k2_4GHz, false), 10.0);  // P.1238-7 Table 4
   EXPECT_EQ(o.shadowing_sigma_db_for(RadioBand::k5GHz, false), 12.0);
-  o.model = sim::PathLossModel::kItuSiteGeneralFit;
+  o.model = PathLossModel::kItuSiteGeneralFit;
   EXPECT_EQ(o.shadowing_sigma_db_for(RadioBand::k5GHz, true), 3.76);  // P.1238-11 Table 2
   EXPECT_EQ(o.shadowing_sigma_db_for(RadioBand::k5GHz, false), 5.04);
   o.shadowing_sigma_db = 6.0;
@@ -118,9 +118,9 @@ TEST(PathLossModels, ShadowingSigmaIsTheModelsUnlessTheSceneSetsIt) {
   // One field per AP scaled per band: under the site-general model the 5 GHz radio's shadowing
   // is 12 / 10 of the 2.4 GHz radio's at every spot.
   PropagationOptions site_general;
-  site_general.model = sim::PathLossModel::kItuSiteGeneral;
+  site_general.model = PathLossModel::kItuSiteGeneral;
   MacAllocator macs(9);
-  PropagationModel model(sim::Mesh{}, {-20, -20}, {20, 20},
+  PropagationModel model(WallMesh{}, {-20, -20}, {20, 20},
                          {make_access_point(0, {0, 0, 2}, 20.0, 1, 9, macs)}, site_general, 9);
   int nonzero = 0;
   for (double x = -15; x < 15; x += 1.7) {

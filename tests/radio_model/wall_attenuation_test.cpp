@@ -15,9 +15,9 @@ namespace {
 using test::add_two_face_wall_x;
 using test::add_wall_x;
 
-constexpr sim::WallMaterial kMaterials[] = {
-    sim::WallMaterial::kPlasterboard, sim::WallMaterial::kBrick, sim::WallMaterial::kConcrete,
-    sim::WallMaterial::kGlass, sim::WallMaterial::kWoodDoor};
+constexpr WallMaterial kMaterials[] = {WallMaterial::kPlasterboard, WallMaterial::kBrick,
+                                       WallMaterial::kConcrete, WallMaterial::kGlass,
+                                       WallMaterial::kWoodDoor};
 
 PropagationOptions noise_free() {
   PropagationOptions o;
@@ -35,7 +35,7 @@ struct Rssi {
   double ghz24, ghz5;
 };
 
-Rssi rssi_at(const sim::Mesh& mesh, const Eigen::Vector3d& ap, const Eigen::Vector3d& rx) {
+Rssi rssi_at(const WallMesh& mesh, const Eigen::Vector3d& ap, const Eigen::Vector3d& rx) {
   PropagationModel model(mesh, {-30, -30}, {30, 30}, one_ap(ap), noise_free(), 1);
   const AccessPoint& a = model.access_points()[0];
   return {model.mean_rssi_dbm(0, a.bssids.front(), rx),
@@ -44,14 +44,14 @@ Rssi rssi_at(const sim::Mesh& mesh, const Eigen::Vector3d& ap, const Eigen::Vect
 
 TEST(WallAttenuation, ReceiverBehindKParallelWallsLosesExactlyKTimesTheWallLoss) {
   const Eigen::Vector3d ap(0, 0, 1.5), rx(20, 0.7, 1.0);
-  const Rssi open = rssi_at(sim::Mesh{}, ap, rx);
+  const Rssi open = rssi_at(WallMesh{}, ap, rx);
   const WallLossTable table;
   const AccessPoint reference = one_ap(ap)[0];
   const double f24 = reference.bssids.front().frequency_mhz();
   const double f5 = reference.bssids.back().frequency_mhz();
-  for (sim::WallMaterial m : kMaterials) {
+  for (WallMaterial m : kMaterials) {
     for (int k = 1; k <= 4; ++k) {
-      sim::Mesh mesh;
+      WallMesh mesh;
       for (int w = 0; w < k; ++w) add_wall_x(mesh, 3.0f + 4.0f * w, 0.15f, 10.0f, 2.8f, m, 100 + w);
       const Rssi behind = rssi_at(mesh, ap, rx);
       EXPECT_NEAR(open.ghz24 - behind.ghz24, k * table.loss_db(m, f24), 1e-9) << to_string(m) << k;
@@ -63,19 +63,19 @@ TEST(WallAttenuation, ReceiverBehindKParallelWallsLosesExactlyKTimesTheWallLoss)
 
 TEST(WallAttenuation, DefaultWallLossesMatchTheCitedFigures) {
   const WallLossTable t(0.15);
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kConcrete, 2400), 14.6, 1e-9);  // TR 38.901: 5 + 4 f
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kConcrete, 5200), 25.8, 1e-9);
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kGlass, 2400), 2.48, 1e-9);      // 2 + 0.2 f
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kWoodDoor, 5200), 5.474, 1e-9);  // 4.85 + 0.12 f
+  EXPECT_NEAR(t.loss_db(WallMaterial::kConcrete, 2400), 14.6, 1e-9);  // TR 38.901: 5 + 4 f
+  EXPECT_NEAR(t.loss_db(WallMaterial::kConcrete, 5200), 25.8, 1e-9);
+  EXPECT_NEAR(t.loss_db(WallMaterial::kGlass, 2400), 2.48, 1e-9);      // 2 + 0.2 f
+  EXPECT_NEAR(t.loss_db(WallMaterial::kWoodDoor, 5200), 5.474, 1e-9);  // 4.85 + 0.12 f
   // COST 231 at 1.8 GHz plus P.2040-3 absorption, computed by hand from wall_materials.hpp.
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kBrick, 1800), 6.9, 1e-9);     // heavy wall
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kBrick, 2437), 7.0619, 1e-3);  // 0.15 m
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kBrick, 5200), 7.5020, 1e-3);
-  EXPECT_NEAR(WallLossTable(0.2).loss_db(sim::WallMaterial::kBrick, 5200), 7.7026, 1e-3);
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kPlasterboard, 1800), 3.4, 1e-9);     // light wall
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kPlasterboard, 2437), 3.5204, 1e-3);  // 2 x 12.5 mm
-  EXPECT_NEAR(t.loss_db(sim::WallMaterial::kPlasterboard, 5200), 4.0248, 1e-3);
-  for (sim::WallMaterial m : kMaterials) EXPECT_GT(t.loss_db(m, 5200), t.loss_db(m, 2400));
+  EXPECT_NEAR(t.loss_db(WallMaterial::kBrick, 1800), 6.9, 1e-9);     // heavy wall
+  EXPECT_NEAR(t.loss_db(WallMaterial::kBrick, 2437), 7.0619, 1e-3);  // 0.15 m
+  EXPECT_NEAR(t.loss_db(WallMaterial::kBrick, 5200), 7.5020, 1e-3);
+  EXPECT_NEAR(WallLossTable(0.2).loss_db(WallMaterial::kBrick, 5200), 7.7026, 1e-3);
+  EXPECT_NEAR(t.loss_db(WallMaterial::kPlasterboard, 1800), 3.4, 1e-9);     // light wall
+  EXPECT_NEAR(t.loss_db(WallMaterial::kPlasterboard, 2437), 3.5204, 1e-3);  // 2 x 12.5 mm
+  EXPECT_NEAR(t.loss_db(WallMaterial::kPlasterboard, 5200), 4.0248, 1e-3);
+  for (WallMaterial m : kMaterials) EXPECT_GT(t.loss_db(m, 5200), t.loss_db(m, 2400));
 }
 
 TEST(WallAttenuation, P2040SlabAgreesWithItsLimitsAndWithTr38901Concrete) {
@@ -103,8 +103,8 @@ TEST(WallAttenuation, P2040SlabAgreesWithItsLimitsAndWithTr38901Concrete) {
 }
 
 TEST(WallAttenuation, DoorOpeningCrossesNoWall) {
-  sim::Mesh mesh;
-  add_wall_x(mesh, 5.0f, 0.15f, 10.0f, 2.8f, sim::WallMaterial::kBrick, 1, /*door_width=*/0.9f);
+  WallMesh mesh;
+  add_wall_x(mesh, 5.0f, 0.15f, 10.0f, 2.8f, WallMaterial::kBrick, 1, /*door_width=*/0.9f);
   EmbreeWallScene scene(mesh);
   // Straight through the opening (below the lintel).
   EXPECT_TRUE(scene.walls_crossed({0, 0, 1.2}, {10, 0.1, 1.0}).empty());
@@ -112,37 +112,37 @@ TEST(WallAttenuation, DoorOpeningCrossesNoWall) {
   const auto beside = scene.walls_crossed({0, 2, 1.2}, {10, 2, 1.0});
   ASSERT_EQ(beside.size(), 1u);
   EXPECT_EQ(beside[0].wall_id, 1);
-  EXPECT_EQ(beside[0].material, sim::WallMaterial::kBrick);
+  EXPECT_EQ(beside[0].material, WallMaterial::kBrick);
   EXPECT_NEAR(beside[0].distance_m, 5.0, 0.01);
   // Above the door: the lintel is the same wall.
   EXPECT_EQ(scene.walls_crossed({0, 0, 2.5}, {10, 0, 2.5}).size(), 1u);
 
   const Eigen::Vector3d ap(0, 0, 1.5);
-  const Rssi open = rssi_at(sim::Mesh{}, ap, {10, 0.1, 1.0});
+  const Rssi open = rssi_at(WallMesh{}, ap, {10, 0.1, 1.0});
   const Rssi through_door = rssi_at(mesh, ap, {10, 0.1, 1.0});
   EXPECT_DOUBLE_EQ(open.ghz24, through_door.ghz24);
   EXPECT_DOUBLE_EQ(open.ghz5, through_door.ghz5);
 }
 
 TEST(WallAttenuation, ThickWallsAndTwoFacedWallsCountOnce) {
-  sim::Mesh mesh;
-  add_wall_x(mesh, 2.0f, 1.0f, 10.0f, 2.8f, sim::WallMaterial::kConcrete, 5);  // 1 m thick box
-  add_two_face_wall_x(mesh, 6.0f, 0.12f, 10.0f, 2.8f, sim::WallMaterial::kGlass, 6);  // two faces
+  WallMesh mesh;
+  add_wall_x(mesh, 2.0f, 1.0f, 10.0f, 2.8f, WallMaterial::kConcrete, 5);         // 1 m thick box
+  add_two_face_wall_x(mesh, 6.0f, 0.12f, 10.0f, 2.8f, WallMaterial::kGlass, 6);  // two faces
   EmbreeWallScene scene(mesh);
   const auto crossed = scene.walls_crossed({0, 0.3, 1.5}, {10, -0.4, 1.0});
   ASSERT_EQ(crossed.size(), 2u);
   EXPECT_EQ(crossed[0].wall_id, 5);
-  EXPECT_EQ(crossed[0].material, sim::WallMaterial::kConcrete);
+  EXPECT_EQ(crossed[0].material, WallMaterial::kConcrete);
   EXPECT_EQ(crossed[1].wall_id, 6);
-  EXPECT_EQ(crossed[1].material, sim::WallMaterial::kGlass);
+  EXPECT_EQ(crossed[1].material, WallMaterial::kGlass);
   EXPECT_LT(crossed[0].distance_m, crossed[1].distance_m);
 }
 
 TEST(WallAttenuation, SegmentThroughASharedTriangleEdgeCountsTheWallOnce) {
   // The face quad at x = 2 is split along its diagonal from (2, -10, 0) to (2, 10, 2.8); at
   // y = 0 the diagonal is at z = 1.4, so this segment passes exactly through the shared edge.
-  sim::Mesh mesh;
-  add_two_face_wall_x(mesh, 2.0f, 0.1f, 10.0f, 2.8f, sim::WallMaterial::kBrick, 9);
+  WallMesh mesh;
+  add_two_face_wall_x(mesh, 2.0f, 0.1f, 10.0f, 2.8f, WallMaterial::kBrick, 9);
   EmbreeWallScene scene(mesh);
   const auto crossed = scene.walls_crossed({0, 0, 1.4}, {4, 0, 1.4});
   ASSERT_EQ(crossed.size(), 1u);
@@ -150,8 +150,8 @@ TEST(WallAttenuation, SegmentThroughASharedTriangleEdgeCountsTheWallOnce) {
 }
 
 TEST(WallAttenuation, EndpointsOnAFaceAndShortSegmentsCrossNothing) {
-  sim::Mesh mesh;
-  add_wall_x(mesh, 2.0f, 0.15f, 10.0f, 2.8f, sim::WallMaterial::kBrick, 3);
+  WallMesh mesh;
+  add_wall_x(mesh, 2.0f, 0.15f, 10.0f, 2.8f, WallMaterial::kBrick, 3);
   EmbreeWallScene scene(mesh);
   EXPECT_TRUE(scene.walls_crossed({0, 0, 1}, {1.9, 0, 1}).empty());
   EXPECT_TRUE(scene.walls_crossed({1, 0, 1}, {1, 0, 1}).empty());
@@ -162,7 +162,7 @@ TEST(WallAttenuation, EndpointsOnAFaceAndShortSegmentsCrossNothing) {
 
 TEST(Propagation, RssiFallsMonotonicallyWithDistanceWithoutWalls) {
   const Eigen::Vector3d ap(0, 0, 2.5);
-  PropagationModel model(sim::Mesh{}, {-5, -5}, {60, 5}, one_ap(ap), noise_free(), 3);
+  PropagationModel model(WallMesh{}, {-5, -5}, {60, 5}, one_ap(ap), noise_free(), 3);
   for (const Bssid& b : model.access_points()[0].bssids) {
     double previous = model.mean_rssi_dbm(0, b, Eigen::Vector3d(0.5, 0, 1.0));
     for (double x = 1.0; x < 60.0; x += 0.25) {
@@ -174,9 +174,9 @@ TEST(Propagation, RssiFallsMonotonicallyWithDistanceWithoutWalls) {
 }
 
 TEST(Propagation, FiveGigahertzLosesMoreThanTwoPointFourAtEqualDistanceAndWalls) {
-  sim::Mesh mesh;
-  add_wall_x(mesh, 3.0f, 0.15f, 10.0f, 2.8f, sim::WallMaterial::kBrick, 1);
-  add_wall_x(mesh, 7.0f, 0.15f, 10.0f, 2.8f, sim::WallMaterial::kPlasterboard, 2);
+  WallMesh mesh;
+  add_wall_x(mesh, 3.0f, 0.15f, 10.0f, 2.8f, WallMaterial::kBrick, 1);
+  add_wall_x(mesh, 7.0f, 0.15f, 10.0f, 2.8f, WallMaterial::kPlasterboard, 2);
   for (double x : {2.0, 5.0, 9.0, 15.0}) {
     const Rssi r = rssi_at(mesh, {0, 0, 2.5}, {x, 1.0, 1.0});
     EXPECT_GT(r.ghz24, r.ghz5) << x;

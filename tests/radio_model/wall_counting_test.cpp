@@ -21,8 +21,8 @@ constexpr float kHeightM = 2.8f;
 
 // A vertical face over a -> b between heights z0 and z1, with the wall on its right and free
 // space (the normal) on its left, as the plan's faces are oriented.
-void add_face(sim::Mesh& mesh, const V2& a, const V2& b, float z0, float z1,
-              sim::WallMaterial material, int wall_id) {
+void add_face(WallMesh& mesh, const V2& a, const V2& b, float z0, float z1, WallMaterial material,
+              int wall_id) {
   using V = Eigen::Vector3f;
   const V pa(static_cast<float>(a.x()), static_cast<float>(a.y()), 0.0f);
   const V pb(static_cast<float>(b.x()), static_cast<float>(b.y()), 0.0f);
@@ -32,12 +32,12 @@ void add_face(sim::Mesh& mesh, const V2& a, const V2& b, float z0, float z1,
 
 struct OutlineFace {
   V2 a, b;
-  sim::WallMaterial material;
+  WallMaterial material;
   int wall_id;
 };
 
-sim::Mesh outline_solid(const std::vector<OutlineFace>& faces) {
-  sim::Mesh mesh;
+WallMesh outline_solid(const std::vector<OutlineFace>& faces) {
+  WallMesh mesh;
   for (const OutlineFace& f : faces)
     add_face(mesh, f.a, f.b, 0.0f, kHeightM, f.material, f.wall_id);
   return mesh;
@@ -45,8 +45,8 @@ sim::Mesh outline_solid(const std::vector<OutlineFace>& faces) {
 
 // A T: bar x in [0, 10], y in [-0.1, 0.1] (brick, wall 1); stem x in [4.9, 5.1] up to y = 5
 // (plasterboard, wall 2). The outline runs clockwise, so the solid is on each face's right.
-sim::Mesh t_junction() {
-  const auto brick = sim::WallMaterial::kBrick, plaster = sim::WallMaterial::kPlasterboard;
+WallMesh t_junction() {
+  const auto brick = WallMaterial::kBrick, plaster = WallMaterial::kPlasterboard;
   return outline_solid({{{0, -0.1}, {0, 0.1}, brick, 1},
                         {{0, 0.1}, {4.9, 0.1}, brick, 1},
                         {{4.9, 0.1}, {4.9, 5}, plaster, 2},
@@ -64,18 +64,18 @@ TEST(WallCounting, ARayThroughATJunctionCrossesOneWallOfBothMaterials) {
   const auto crossed = scene.walls_crossed(V3(3, 3, 1), V3(7, -3, 1));
   ASSERT_EQ(crossed.size(), 1u);
   EXPECT_EQ(crossed[0].wall_id, 2);
-  EXPECT_EQ(crossed[0].material, sim::WallMaterial::kPlasterboard);
-  EXPECT_EQ(crossed[0].exit_material, sim::WallMaterial::kBrick);
+  EXPECT_EQ(crossed[0].material, WallMaterial::kPlasterboard);
+  EXPECT_EQ(crossed[0].exit_material, WallMaterial::kBrick);
   EXPECT_NEAR(crossed[0].length_m, std::hypot(0.1667, 0.25), 0.01);
   // Away from the junction each piece is one wall of its own material.
   const auto bar = scene.walls_crossed(V3(2, 3, 1), V3(2, -3, 1));
   ASSERT_EQ(bar.size(), 1u);
-  EXPECT_EQ(bar[0].material, sim::WallMaterial::kBrick);
-  EXPECT_EQ(bar[0].exit_material, sim::WallMaterial::kBrick);
+  EXPECT_EQ(bar[0].material, WallMaterial::kBrick);
+  EXPECT_EQ(bar[0].exit_material, WallMaterial::kBrick);
   EXPECT_NEAR(bar[0].length_m, 0.2, 1e-4);
   const auto stem = scene.walls_crossed(V3(3, 3, 1), V3(7, 3, 1));
   ASSERT_EQ(stem.size(), 1u);
-  EXPECT_EQ(stem[0].material, sim::WallMaterial::kPlasterboard);
+  EXPECT_EQ(stem[0].material, WallMaterial::kPlasterboard);
   // The two-material crossing costs half a wall of each: between one brick and one plasterboard
   // wall, and less than the two the old rule charged.
   MacAllocator macs(3);
@@ -85,16 +85,16 @@ TEST(WallCounting, ARayThroughATJunctionCrossesOneWallOfBothMaterials) {
                          {make_access_point(0, V3(3, 3, 1), 20.0, 1, 3, macs)}, quiet, 3);
   const RadioLink link = model.link(0, V3(7, -3, 1));
   EXPECT_DOUBLE_EQ(link.wall_count(), 1.0);
-  EXPECT_DOUBLE_EQ(link.walls_per_material[material_index(sim::WallMaterial::kBrick)], 0.5);
-  EXPECT_DOUBLE_EQ(link.walls_per_material[material_index(sim::WallMaterial::kPlasterboard)], 0.5);
+  EXPECT_DOUBLE_EQ(link.walls_per_material[material_index(WallMaterial::kBrick)], 0.5);
+  EXPECT_DOUBLE_EQ(link.walls_per_material[material_index(WallMaterial::kPlasterboard)], 0.5);
 }
 
 // A closed door as the world builds it: one wall solid x in [5, 5.15] whose faces are cut at the
 // door's edges, the leaf (|y| < 0.45, up to 2.1 m) a wall piece of its own (wood, wall 3), the
 // faces beside it the wall (brick, wall 1), the lintel above the leaf part of the leaf's piece.
-sim::Mesh closed_door() {
-  sim::Mesh mesh;
-  const auto brick = sim::WallMaterial::kBrick, wood = sim::WallMaterial::kWoodDoor;
+WallMesh closed_door() {
+  WallMesh mesh;
+  const auto brick = WallMaterial::kBrick, wood = WallMaterial::kWoodDoor;
   const double x0 = 5.0, x1 = 5.15, d = 0.45, L = 10.0;
   // Front (x = 5, facing -x): walking towards +y keeps the wall (larger x) on the right.
   add_face(mesh, {x0, -L}, {x0, -d}, 0.0f, kHeightM, brick, 1);
@@ -117,25 +117,25 @@ TEST(WallCounting, ARayThroughTheEdgeOfADoorLeafCrossesOneWall) {
   // Through the leaf alone: one wooden wall.
   const auto leaf = scene.walls_crossed(V3(0, 0, 1), V3(10, 0.2, 1));
   ASSERT_EQ(leaf.size(), 1u);
-  EXPECT_EQ(leaf[0].material, sim::WallMaterial::kWoodDoor);
-  EXPECT_EQ(leaf[0].exit_material, sim::WallMaterial::kWoodDoor);
+  EXPECT_EQ(leaf[0].material, WallMaterial::kWoodDoor);
+  EXPECT_EQ(leaf[0].exit_material, WallMaterial::kWoodDoor);
   // Enters the leaf at y = 0.40 and leaves beside it at y = 0.50: one wall, wood then brick (the
   // old rule counted the leaf and the wall: 12 dB instead of 6 at 2.4 GHz).
   const double slope = 0.1 / 0.15;
   const auto edge = scene.walls_crossed(V3(0, 0.40 - 5 * slope, 1), V3(10, 0.40 + 5 * slope, 1));
   ASSERT_EQ(edge.size(), 1u);
-  EXPECT_EQ(edge[0].material, sim::WallMaterial::kWoodDoor);
-  EXPECT_EQ(edge[0].exit_material, sim::WallMaterial::kBrick);
+  EXPECT_EQ(edge[0].material, WallMaterial::kWoodDoor);
+  EXPECT_EQ(edge[0].exit_material, WallMaterial::kBrick);
   EXPECT_NEAR(edge[0].distance_m, std::hypot(5.0, 5 * slope), 0.01);
   // Above the leaf: the lintel, one brick wall.
   const auto lintel = scene.walls_crossed(V3(0, 0, 2.5), V3(10, 0.1, 2.5));
   ASSERT_EQ(lintel.size(), 1u);
-  EXPECT_EQ(lintel[0].material, sim::WallMaterial::kBrick);
+  EXPECT_EQ(lintel[0].material, WallMaterial::kBrick);
 }
 
 TEST(WallCounting, ARayRunningInsideAWallAlongItsLengthCrossesItOnce) {
-  sim::Mesh mesh;
-  test::add_box(mesh, {0, -0.1f, 0}, {10, 0.1f, kHeightM}, sim::WallMaterial::kConcrete, 4);
+  WallMesh mesh;
+  test::add_box(mesh, {0, -0.1f, 0}, {10, 0.1f, kHeightM}, WallMaterial::kConcrete, 4);
   const EmbreeWallScene scene(mesh);
   const auto crossed = scene.walls_crossed(V3(-1, 0, 1), V3(11, 0.05, 1));
   ASSERT_EQ(crossed.size(), 1u);
@@ -144,8 +144,8 @@ TEST(WallCounting, ARayRunningInsideAWallAlongItsLengthCrossesItOnce) {
 }
 
 TEST(WallCounting, GrazingACornerIsATouchAndGrazingAFaceCrossesAtMostOneWall) {
-  sim::Mesh mesh;
-  test::add_box(mesh, {2, 0, 0}, {3, 1, kHeightM}, sim::WallMaterial::kBrick, 5);
+  WallMesh mesh;
+  test::add_box(mesh, {2, 0, 0}, {3, 1, kHeightM}, WallMaterial::kBrick, 5);
   const EmbreeWallScene scene(mesh);
   // Through the corner (2, 0) and nowhere else inside the box (the old rule counted one wall).
   EXPECT_TRUE(scene.walls_crossed(V3(1, 1, 1), V3(3, -1, 1)).empty());
@@ -162,26 +162,26 @@ TEST(WallCounting, GrazingACornerIsATouchAndGrazingAFaceCrossesAtMostOneWall) {
 TEST(WallCounting, TouchingSolidsAreOneStretchOfMaterial) {
   // Two boxes side by side (a lintel against its jamb, the end of one wall against another): the
   // faces where they touch coincide with opposite normals.
-  sim::Mesh mesh;
-  test::add_box(mesh, {2, -1, 0}, {2.2f, 0, kHeightM}, sim::WallMaterial::kBrick, 6);
-  test::add_box(mesh, {2, 0, 0}, {2.2f, 1, kHeightM}, sim::WallMaterial::kPlasterboard, 7);
+  WallMesh mesh;
+  test::add_box(mesh, {2, -1, 0}, {2.2f, 0, kHeightM}, WallMaterial::kBrick, 6);
+  test::add_box(mesh, {2, 0, 0}, {2.2f, 1, kHeightM}, WallMaterial::kPlasterboard, 7);
   const EmbreeWallScene scene(mesh);
   // Enters the first at (2, -0.1), passes where they touch at (2.1, 0), leaves the second at
   // (2.2, 0.1) (the old rule counted walls 6 and 7).
   const auto crossed = scene.walls_crossed(V3(0, -2.1, 1), V3(4, 1.9, 1));
   ASSERT_EQ(crossed.size(), 1u);
-  EXPECT_EQ(crossed[0].material, sim::WallMaterial::kBrick);
-  EXPECT_EQ(crossed[0].exit_material, sim::WallMaterial::kPlasterboard);
+  EXPECT_EQ(crossed[0].material, WallMaterial::kBrick);
+  EXPECT_EQ(crossed[0].exit_material, WallMaterial::kPlasterboard);
   // Two separate walls stay two.
-  sim::Mesh apart;
-  test::add_box(apart, {2, -1, 0}, {2.2f, 1, kHeightM}, sim::WallMaterial::kBrick, 8);
-  test::add_box(apart, {3, -1, 0}, {3.2f, 1, kHeightM}, sim::WallMaterial::kBrick, 9);
+  WallMesh apart;
+  test::add_box(apart, {2, -1, 0}, {2.2f, 1, kHeightM}, WallMaterial::kBrick, 8);
+  test::add_box(apart, {3, -1, 0}, {3.2f, 1, kHeightM}, WallMaterial::kBrick, 9);
   EXPECT_EQ(EmbreeWallScene(apart).walls_crossed(V3(0, 0, 1), V3(4, 0.1, 1)).size(), 2u);
 }
 
 TEST(WallCounting, ASegmentStartingInsideAWallCrossesIt) {
-  sim::Mesh mesh;
-  test::add_box(mesh, {2, -1, 0}, {2.5f, 1, kHeightM}, sim::WallMaterial::kConcrete, 10);
+  WallMesh mesh;
+  test::add_box(mesh, {2, -1, 0}, {2.5f, 1, kHeightM}, WallMaterial::kConcrete, 10);
   const EmbreeWallScene scene(mesh);
   const auto crossed = scene.walls_crossed(V3(2.2, 0, 1), V3(6, 0, 1));
   ASSERT_EQ(crossed.size(), 1u);

@@ -9,6 +9,7 @@
 
 #include "radio_model/embree_wall_scene.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace wifislam::radio_model {
@@ -17,7 +18,7 @@ namespace {
 TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThroughItsEdge) {
   const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   const sim::World world = generate_world(scene);
-  const EmbreeWallScene walls(world.mesh);
+  const EmbreeWallScene walls(sim::radio_wall_mesh(world.mesh));
   int closed = 0;
   for (const sim::Door& door : world.plan.doors) {
     if (door.open) continue;

@@ -19,15 +19,15 @@ std::vector<AccessPoint> aps_along_x(int count, std::uint64_t seed) {
   return aps;
 }
 
-sim::Mesh some_walls() {
-  sim::Mesh mesh;
+WallMesh some_walls() {
+  WallMesh mesh;
   for (int w = 0; w < 6; ++w)
-    test::add_wall_x(mesh, 5.0f + 8.0f * w, 0.15f, 15.0f, 2.8f, sim::WallMaterial::kBrick, w, 0.9f);
+    test::add_wall_x(mesh, 5.0f + 8.0f * w, 0.15f, 15.0f, 2.8f, WallMaterial::kBrick, w, 0.9f);
   return mesh;
 }
 
 TEST(WifiScanner, SameSeedGivesIdenticalScansAndDifferentSeedDifferentShadowing) {
-  const sim::Mesh mesh = some_walls();
+  const WallMesh mesh = some_walls();
   PropagationOptions opt;
   PropagationModel a(mesh, {0, -15}, {50, 15}, aps_along_x(4, 1), opt, 100);
   PropagationModel b(mesh, {0, -15}, {50, 15}, aps_along_x(4, 1), opt, 100);
@@ -56,7 +56,7 @@ TEST(WifiScanner, SameSeedGivesIdenticalScansAndDifferentSeedDifferentShadowing)
 }
 
 TEST(WifiScanner, ScansTakeDwellTimesChannelsAndReportIntegerRssiAboveTheFloor) {
-  PropagationModel model(sim::Mesh{}, {0, -5}, {100, 5}, aps_along_x(10, 2), {}, 7);
+  PropagationModel model(WallMesh{}, {0, -5}, {100, 5}, aps_along_x(10, 2), {}, 7);
   WifiScannerOptions o;
   o.dwell_per_channel_s = 0.1;
   WifiScanner scanner(model, o, 7);
@@ -76,7 +76,7 @@ TEST(WifiScanner, DetectionProbabilityFallsNearTheSensitivityFloor) {
   opt.shadowing_sigma_db = 0.0;
   opt.fast_fading_sigma_db = 0.0;
   opt.bssid_spread_db = 0.0;
-  PropagationModel model(sim::Mesh{}, {-5, -5}, {400, 5}, aps_along_x(1, 3), opt, 3);
+  PropagationModel model(WallMesh{}, {-5, -5}, {400, 5}, aps_along_x(1, 3), opt, 3);
   const Bssid& b = model.access_points()[0].bssids.front();
   auto x_for = [&](double target_dbm) {
     double lo = 1.0, hi = 5000.0;
@@ -164,7 +164,7 @@ TEST(WifiScanner, FadingIsPerRadioAndCorrelatedOverTimeAtAStillReceiver) {
   for (int i = 0; i < 40; ++i)  // all within 12 m of the receivers: every beacon is strong
     aps.push_back(
         make_access_point(i, Eigen::Vector3d(3.0 * (i % 8), 2.0 * (i / 8), 2.5), 20.0, 3, 6, macs));
-  PropagationModel model(sim::Mesh{}, {-5, -5}, {30, 15}, aps, opt, 6);
+  PropagationModel model(WallMesh{}, {-5, -5}, {30, 15}, aps, opt, 6);
   WifiScanner scanner(model, {}, 6);
   // residual[(scan, mac)] = reading - mean RSSI
   auto residuals = [&](Timestamp t, const Eigen::Vector3d& p) {
@@ -230,7 +230,7 @@ TEST(WifiScanner, FadingIsPerRadioAndCorrelatedOverTimeAtAStillReceiver) {
 TEST(WifiScanner, ShortDwellsMissBeaconsAtTheIntervalRatio) {
   PropagationOptions opt;
   opt.shadowing_sigma_db = 0.0;
-  PropagationModel model(sim::Mesh{}, {-5, -5}, {50, 5}, aps_along_x(3, 8), opt, 8);
+  PropagationModel model(WallMesh{}, {-5, -5}, {50, 5}, aps_along_x(3, 8), opt, 8);
   for (const double dwell_s : {0.05, 0.1, 0.11}) {
     WifiScannerOptions o;
     o.dwell_per_channel_s = dwell_s;
@@ -249,8 +249,8 @@ TEST(WifiScanner, ShortDwellsMissBeaconsAtTheIntervalRatio) {
 TEST(WifiScanner, PeopleDisturbanceLowersRssiOnAverage) {
   PropagationOptions quiet, busy;
   busy.people_disturbance_db = 10.0;
-  PropagationModel mq(sim::Mesh{}, {0, -5}, {50, 5}, aps_along_x(3, 5), quiet, 5);
-  PropagationModel mb(sim::Mesh{}, {0, -5}, {50, 5}, aps_along_x(3, 5), busy, 5);
+  PropagationModel mq(WallMesh{}, {0, -5}, {50, 5}, aps_along_x(3, 5), quiet, 5);
+  PropagationModel mb(WallMesh{}, {0, -5}, {50, 5}, aps_along_x(3, 5), busy, 5);
   WifiScanner sq(mq, {}, 5), sb(mb, {}, 5);
   double sum_q = 0, sum_b = 0;
   for (int k = 0; k < 200; ++k) {

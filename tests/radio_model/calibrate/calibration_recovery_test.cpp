@@ -35,7 +35,9 @@
 #include "radio_model/calibrate/survey_links.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/radio_options.hpp"
 #include "sim/site/site.hpp"
+#include "sim/site/survey_site.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
 
@@ -117,7 +119,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   std::vector<SurveyAccessPoint> aps;
   for (const auto& ap : site_->access_points()) aps.push_back({ap.id, ap.position_m, {}, ""});
   const Survey survey = read_survey(survey_path_, SurveyFormat::kLong, kReceiverHeightM);
-  const SurveyLinks links = survey_links(survey, aps, scene, site_->world());
+  const SurveyLinks links = survey_links(survey, aps, sim::survey_site(*site_));
   ASSERT_GT(links.groups.size(), 5000u);
 
   // Fitted against the default laws (what a user's scene has), not the truth.
@@ -179,7 +181,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   EXPECT_NEAR(*brick_db, brick.loss_db, 0.01);
   EXPECT_EQ(fitted.access_points.explicit_list.size(), aps.size());
   // The fitted loss reaches the radio model: flat in frequency.
-  const auto options = radio_model::PropagationOptions::from_scene(fitted);
+  const auto options = sim::propagation_options(fitted);
   EXPECT_NEAR(options.wall_losses.loss_db(sim::WallMaterial::kBrick, 5200.0), *brick_db, 1e-9);
 }
 

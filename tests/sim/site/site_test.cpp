@@ -10,10 +10,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "radio_model/ap_placement.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/ap_placement.hpp"
+#include "sim/site/radio_options.hpp"
+#include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_types.hpp"
 
 namespace wifislam::sim {
@@ -48,8 +50,9 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
   ASSERT_EQ(site.access_points().size(), 5u);
   ASSERT_EQ(pipeline.radio().access_points().size(), 5u);
   const radio_model::PropagationModel seeded_by_ap_seed(
-      site.world(), site.access_points(), radio_model::PropagationOptions::from_scene(scene),
-      radio_model::access_point_seed(scene));
+      sim::radio_wall_mesh(site.world().mesh), site.world().plan.bounds_min_m,
+      site.world().plan.bounds_max_m, site.access_points(), sim::propagation_options(scene),
+      sim::access_point_seed(scene));
   int differs_from_ap_seed = 0;
   for (std::size_t i = 0; i < site.access_points().size(); ++i) {
     EXPECT_EQ(site.access_points()[i].position_m, pipeline.radio().access_points()[i].position_m);

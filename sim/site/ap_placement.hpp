@@ -20,25 +20,24 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::radio_model {
+namespace wifislam::sim {
 
 /// AP positions (x, y, z). Throws InvalidInputError when the plan has no room for them or the
 /// placement's parameters are unusable (e.g. colinear with line_from_m == line_to_m).
-std::vector<Eigen::Vector3d> place_access_point_positions(const sim::AccessPoints& spec,
-                                                          const sim::FloorPlan& plan,
+std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& spec,
+                                                          const FloorPlan& plan,
                                                           std::uint64_t seed);
 
 /// Where an access point could stand, for placement studies (`wifislam study place`): free-space
 /// spots (rooms, corridors and halls) 0.4 m off the wall faces, as the placements take them,
 /// thinned in lattice order so that no two are closer than `spacing_m`. Deterministic; (x, y) only.
-std::vector<Eigen::Vector2d> access_point_candidate_spots(const sim::FloorPlan& plan,
-                                                          double spacing_m);
+std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan, double spacing_m);
 
 /// The scene's access points with their BSSIDs; ids 0..n-1 in placement order. A placement that
 /// cannot be done is rejected at the scene's `access_points` key (Scene::reject).
-std::vector<AccessPoint> make_access_points(const sim::Scene& scene, const sim::FloorPlan& plan);
+std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan);
 
 /// The seed the access points derive from: `access_points.seed`, else the scene seed.
-std::uint64_t access_point_seed(const sim::Scene& scene);
+std::uint64_t access_point_seed(const Scene& scene);
 
-}  // namespace wifislam::radio_model
+}  // namespace wifislam::sim

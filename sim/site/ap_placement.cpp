@@ -1,4 +1,4 @@
-#include "radio_model/ap_placement.hpp"
+#include "sim/site/ap_placement.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
-namespace wifislam::radio_model {
+namespace wifislam::sim {
 
 namespace {
 
@@ -30,9 +30,8 @@ constexpr Lattice kNarrowLattice{0.1, 0.1};
 constexpr double kClearanceM = kLattice.clearance_m;
 
 // Free-space spots on a lattice over the plan bounds, optionally restricted to one polygon.
-std::vector<Eigen::Vector2d> candidate_spots(const sim::FloorPlan& plan,
-                                             const sim::WallFaceGrid& walls,
-                                             const sim::Polygon2* inside,
+std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFaceGrid& walls,
+                                             const Polygon2* inside,
                                              const Lattice& lattice = kLattice) {
   const double spacing_m = lattice.spacing_m;
   std::vector<Eigen::Vector2d> spots;
@@ -54,8 +53,8 @@ std::vector<Eigen::Vector2d> candidate_spots(const sim::FloorPlan& plan,
     // regions_contain, so only spots within spans are tested. A big sparse plan (a 10 km L) then
     // costs a test per free spot, not per lattice point of its bounding box.
     spans.clear();
-    for (const sim::PolygonWithHoles2& region : plan.free_space) {
-      const sim::Polygon2& ring = region.outer;
+    for (const PolygonWithHoles2& region : plan.free_space) {
+      const Polygon2& ring = region.outer;
       crossings.clear();
       for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
         const Eigen::Vector2d& a = ring[i];
@@ -89,8 +88,8 @@ std::vector<Eigen::Vector2d> candidate_spots(const sim::FloorPlan& plan,
         continue;
       }
       const Eigen::Vector2d p(x, y);
-      if (inside && !sim::ring_contains(*inside, p)) continue;
-      if (!sim::regions_contain(plan.free_space, p)) continue;
+      if (inside && !ring_contains(*inside, p)) continue;
+      if (!regions_contain(plan.free_space, p)) continue;
       if (walls.nearest_within_m(p, lattice.clearance_m) < lattice.clearance_m) continue;
       spots.push_back(p);
     }
@@ -135,7 +134,7 @@ std::vector<Eigen::Vector3d> at_height(const std::vector<Eigen::Vector2d>& xy, d
 }
 
 /// kColinear: `count` points evenly from line_from_m to line_to_m (one point: the middle).
-std::vector<Eigen::Vector2d> colinear_spots(const sim::AccessPoints& spec) {
+std::vector<Eigen::Vector2d> colinear_spots(const AccessPoints& spec) {
   const Eigen::Vector2d a = spec.line_from_m, b = spec.line_to_m;
   if ((b - a).norm() < 1e-9 && spec.count > 1)
     throw InvalidInputError("colinear placement needs line_from_m and line_to_m to differ");
@@ -149,8 +148,7 @@ std::vector<Eigen::Vector2d> colinear_spots(const sim::AccessPoints& spec) {
 
 /// Candidate spots of the whole plan: the usual lattice, or the narrow one when the usual has
 /// none.
-std::vector<Eigen::Vector2d> lattice_spots(const sim::FloorPlan& plan,
-                                           const sim::WallFaceGrid& walls) {
+std::vector<Eigen::Vector2d> lattice_spots(const FloorPlan& plan, const WallFaceGrid& walls) {
   std::vector<Eigen::Vector2d> spots = candidate_spots(plan, walls, nullptr);
   if (spots.empty()) spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
   return spots;
@@ -158,7 +156,7 @@ std::vector<Eigen::Vector2d> lattice_spots(const sim::FloorPlan& plan,
 
 /// kGrid: a cols x rows grid over the plan bounds, shaped like them; each grid point takes the
 /// nearest free spot not taken yet.
-std::vector<Eigen::Vector2d> grid_spots(const sim::AccessPoints& spec, const sim::FloorPlan& plan,
+std::vector<Eigen::Vector2d> grid_spots(const AccessPoints& spec, const FloorPlan& plan,
                                         const std::vector<Eigen::Vector2d>& free_spots) {
   std::vector<Eigen::Vector2d> chosen;
   const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
@@ -190,7 +188,7 @@ std::vector<Eigen::Vector2d> grid_spots(const sim::AccessPoints& spec, const sim
 }
 
 /// The room indices in a random order (a Fisher-Yates shuffle drawn from `rng`).
-std::vector<std::size_t> shuffled_rooms(const sim::FloorPlan& plan, Rng& rng) {
+std::vector<std::size_t> shuffled_rooms(const FloorPlan& plan, Rng& rng) {
   std::vector<std::size_t> order(plan.rooms.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   for (std::size_t i = order.size(); i > 1; --i)
@@ -202,8 +200,8 @@ std::vector<std::size_t> shuffled_rooms(const sim::FloorPlan& plan, Rng& rng) {
 
 /// kRooms: all but a quarter (rounded down) of the access points in rooms, at most one per room,
 /// rooms in random order; the rest (and whatever the rooms could not take) in corridors and halls.
-std::vector<Eigen::Vector2d> room_spots(const sim::AccessPoints& spec, const sim::FloorPlan& plan,
-                                        const sim::WallFaceGrid& walls,
+std::vector<Eigen::Vector2d> room_spots(const AccessPoints& spec, const FloorPlan& plan,
+                                        const WallFaceGrid& walls,
                                         const std::vector<Eigen::Vector2d>& free_spots, Rng& rng) {
   std::vector<Eigen::Vector2d> chosen;
   const int in_rooms_wanted = spec.count - spec.count / 4;
@@ -220,7 +218,7 @@ std::vector<Eigen::Vector2d> room_spots(const sim::AccessPoints& spec, const sim
   }
   std::vector<Eigen::Vector2d> walkable;
   for (const auto& p : free_spots)
-    if (sim::regions_contain(plan.walkable, p)) walkable.push_back(p);
+    if (regions_contain(plan.walkable, p)) walkable.push_back(p);
   if (walkable.empty()) walkable = free_spots;
   shuffle(walkable, rng);
   take_spaced(walkable, spec.count - static_cast<int>(chosen.size()), spec.min_spacing_m, chosen);
@@ -228,10 +226,10 @@ std::vector<Eigen::Vector2d> room_spots(const sim::AccessPoints& spec, const sim
 }
 
 /// kGrid, kRandom and kRooms: spots picked from the plan's free lattice spots.
-std::vector<Eigen::Vector2d> spots_from_lattice(const sim::AccessPoints& spec,
-                                                const sim::FloorPlan& plan, std::uint64_t seed) {
+std::vector<Eigen::Vector2d> spots_from_lattice(const AccessPoints& spec, const FloorPlan& plan,
+                                                std::uint64_t seed) {
   Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
-  const sim::WallFaceGrid walls(plan, kClearanceM);
+  const WallFaceGrid walls(plan, kClearanceM);
   std::vector<Eigen::Vector2d> free_spots = lattice_spots(plan, walls);
   if (free_spots.empty())
     throw InvalidInputError(fmt::format(
@@ -240,18 +238,18 @@ std::vector<Eigen::Vector2d> spots_from_lattice(const sim::AccessPoints& spec,
         kNarrowLattice.clearance_m, to_string(spec.placement)));
   std::vector<Eigen::Vector2d> chosen;
   switch (spec.placement) {
-    case sim::ApPlacement::kGrid:
+    case ApPlacement::kGrid:
       chosen = grid_spots(spec, plan, free_spots);
       break;
-    case sim::ApPlacement::kRandom:
+    case ApPlacement::kRandom:
       shuffle(free_spots, rng);
       take_spaced(free_spots, spec.count, spec.min_spacing_m, chosen);
       break;
-    case sim::ApPlacement::kRooms:
+    case ApPlacement::kRooms:
       chosen = room_spots(spec, plan, walls, free_spots, rng);
       break;
-    case sim::ApPlacement::kExplicit:
-    case sim::ApPlacement::kColinear:
+    case ApPlacement::kExplicit:
+    case ApPlacement::kColinear:
       break;
   }
   if (static_cast<int>(chosen.size()) < spec.count)
@@ -262,14 +260,14 @@ std::vector<Eigen::Vector2d> spots_from_lattice(const sim::AccessPoints& spec,
 
 }  // namespace
 
-std::uint64_t access_point_seed(const sim::Scene& scene) {
+std::uint64_t access_point_seed(const Scene& scene) {
   return scene.access_points.seed.value_or(scene.seed);
 }
 
-std::vector<Eigen::Vector3d> place_access_point_positions(const sim::AccessPoints& spec,
-                                                          const sim::FloorPlan& plan,
+std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& spec,
+                                                          const FloorPlan& plan,
                                                           std::uint64_t seed) {
-  if (spec.placement == sim::ApPlacement::kExplicit) {
+  if (spec.placement == ApPlacement::kExplicit) {
     std::vector<Eigen::Vector3d> out;
     for (const auto& e : spec.explicit_list) out.push_back(e.position_m);
     return out;
@@ -277,14 +275,13 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const sim::AccessPoint
   if (spec.count < 0)
     throw InvalidInputError(fmt::format("access_points.count must be >= 0 (got {})", spec.count));
   if (spec.count == 0) return {};
-  if (spec.placement == sim::ApPlacement::kColinear)
+  if (spec.placement == ApPlacement::kColinear)
     return at_height(colinear_spots(spec), spec.height_m);
   return at_height(spots_from_lattice(spec, plan, seed), spec.height_m);
 }
 
-std::vector<Eigen::Vector2d> access_point_candidate_spots(const sim::FloorPlan& plan,
-                                                          double spacing_m) {
-  const sim::WallFaceGrid walls(plan, kClearanceM);
+std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan, double spacing_m) {
+  const WallFaceGrid walls(plan, kClearanceM);
   const std::vector<Eigen::Vector2d> spots = lattice_spots(plan, walls);
   std::vector<Eigen::Vector2d> kept;
   for (const Eigen::Vector2d& p : spots)
@@ -292,8 +289,9 @@ std::vector<Eigen::Vector2d> access_point_candidate_spots(const sim::FloorPlan& 
   return kept;
 }
 
-std::vector<AccessPoint> make_access_points(const sim::Scene& scene, const sim::FloorPlan& plan) {
-  const sim::AccessPoints& spec = scene.access_points;
+std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene,
+                                                         const FloorPlan& plan) {
+  const AccessPoints& spec = scene.access_points;
   const std::uint64_t seed = access_point_seed(scene);
   std::vector<Eigen::Vector3d> positions;
   try {
@@ -301,16 +299,16 @@ std::vector<AccessPoint> make_access_points(const sim::Scene& scene, const sim::
   } catch (const InvalidInputError& e) {
     scene.reject("access_points", e.what());  // located at the scene's access_points
   }
-  MacAllocator macs(seed);
-  std::vector<AccessPoint> aps;
+  radio_model::MacAllocator macs(seed);
+  std::vector<radio_model::AccessPoint> aps;
   for (std::size_t i = 0; i < positions.size(); ++i) {
     double tx = spec.tx_power_dbm;
-    if (spec.placement == sim::ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
+    if (spec.placement == ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
       tx = *spec.explicit_list[i].tx_power_dbm;
-    aps.push_back(
-        make_access_point(static_cast<int>(i), positions[i], tx, spec.ssids_per_radio, seed, macs));
+    aps.push_back(radio_model::make_access_point(static_cast<int>(i), positions[i], tx,
+                                                 spec.ssids_per_radio, seed, macs));
   }
   return aps;
 }
 
-}  // namespace wifislam::radio_model
+}  // namespace wifislam::sim

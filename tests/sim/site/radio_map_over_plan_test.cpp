@@ -10,26 +10,27 @@
 
 #include "core/error.hpp"
 #include "radio_model/radio_map.hpp"
+#include "sim/site/radio_map_over_plan.hpp"
 #include "sim/world/plan_queries.hpp"
-#include "tests/radio_model/test_plan.hpp"
 #include "tests/radio_model/test_walls.hpp"
+#include "tests/sim/site/test_plan.hpp"
 
 namespace wifislam::radio_model {
 namespace {
 
 struct Fixture {
   sim::FloorPlan plan = test::corridor_with_rooms(5);
-  sim::Mesh mesh;
+  WallMesh mesh;
   std::unique_ptr<PropagationModel> model;
   Fixture() {
     // Room walls along the corridor's north side (with doors), one wall_id per room front.
     for (int i = 0; i < 5; ++i) {
-      sim::Mesh& m = mesh;
+      WallMesh& m = mesh;
       using V = Eigen::Vector3f;
-      test::add_box(m, V(4.0f * i, 2.0f, 0), V(4.0f * i + 1.5f, 2.15f, 2.8f),
-                    sim::WallMaterial::kBrick, i);
+      test::add_box(m, V(4.0f * i, 2.0f, 0), V(4.0f * i + 1.5f, 2.15f, 2.8f), WallMaterial::kBrick,
+                    i);
       test::add_box(m, V(4.0f * i + 2.4f, 2.0f, 0), V(4.0f * i + 4.0f, 2.15f, 2.8f),
-                    sim::WallMaterial::kBrick, i);
+                    WallMaterial::kBrick, i);
     }
     MacAllocator macs(3);
     std::vector<AccessPoint> aps;
@@ -45,9 +46,9 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   RadioMapOptions o;
   o.resolution_m = 0.5;
   o.threads = 1;
-  const RadioMap strongest1 = compute_radio_map(*f.model, f.plan, o);
+  const RadioMap strongest1 = sim::compute_radio_map(*f.model, f.plan, o);
   o.threads = 2;
-  const RadioMap strongest2 = compute_radio_map(*f.model, f.plan, o);
+  const RadioMap strongest2 = sim::compute_radio_map(*f.model, f.plan, o);
   ASSERT_EQ(strongest1.rssi_dbm.size(), strongest2.rssi_dbm.size());
   EXPECT_EQ(std::memcmp(strongest1.rssi_dbm.data(), strongest2.rssi_dbm.data(),
                         strongest1.rssi_dbm.size() * sizeof(float)),
@@ -57,9 +58,9 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   EXPECT_EQ(strongest1.rows, 13);  // 6.4 m / 0.5
 
   o.ap_id = 0;
-  const RadioMap ap0 = compute_radio_map(*f.model, f.plan, o);
+  const RadioMap ap0 = sim::compute_radio_map(*f.model, f.plan, o);
   o.ap_id = 1;
-  const RadioMap ap1 = compute_radio_map(*f.model, f.plan, o);
+  const RadioMap ap1 = sim::compute_radio_map(*f.model, f.plan, o);
   int from0 = 0, from1 = 0;
   for (std::size_t i = 0; i < ap0.rssi_dbm.size(); ++i) {
     // Only free-space cells are computed: the corridor and the rooms, not the walls.
@@ -77,7 +78,7 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   EXPECT_GT(ap0.at(4, 8), ap0.at(40, 2) + 15.0);
 
   o.ap_id = 7;
-  EXPECT_THROW(compute_radio_map(*f.model, f.plan, o), InvalidInputError);
+  EXPECT_THROW(sim::compute_radio_map(*f.model, f.plan, o), InvalidInputError);
 }
 
 TEST(RadioMap, PruningHopelessApsLeavesTheStrongestMapUnchanged) {
@@ -90,9 +91,9 @@ TEST(RadioMap, PruningHopelessApsLeavesTheStrongestMapUnchanged) {
                          PropagationOptions{}, 4);
   RadioMapOptions o;
   o.resolution_m = 0.25;
-  const RadioMap pruned = compute_radio_map(model, f.plan, o);
+  const RadioMap pruned = sim::compute_radio_map(model, f.plan, o);
   o.prune = false;
-  const RadioMap full = compute_radio_map(model, f.plan, o);
+  const RadioMap full = sim::compute_radio_map(model, f.plan, o);
   ASSERT_EQ(pruned.rssi_dbm.size(), full.rssi_dbm.size());
   EXPECT_EQ(std::memcmp(pruned.rssi_dbm.data(), full.rssi_dbm.data(),
                         full.rssi_dbm.size() * sizeof(float)),
@@ -104,11 +105,11 @@ TEST(RadioMap, WritesAReadablePngAndACsvWithOneRowPerCell) {
   Fixture f;
   RadioMapOptions o;
   o.resolution_m = 0.25;
-  const RadioMap map = compute_radio_map(*f.model, f.plan, o);
+  const RadioMap map = sim::compute_radio_map(*f.model, f.plan, o);
   const auto dir = std::filesystem::temp_directory_path() / "wifislam_radio_map_test";
   std::filesystem::create_directories(dir);
   const auto png = dir / "map.png", csv = dir / "map.csv";
-  write_radio_map_png(map, f.plan, f.model->access_points(), png);
+  sim::write_radio_map_png(map, f.plan, f.model->access_points(), png);
   write_radio_map_csv(map, csv);
 
   cairo_surface_t* img = cairo_image_surface_create_from_png(png.c_str());

@@ -1,0 +1,32 @@
+#include "sim/site/radio_options.hpp"
+
+namespace wifislam::sim {
+
+radio_model::PropagationOptions propagation_options(const Scene& scene) {
+  const RadioSpec& radio = scene.radio;
+  radio_model::PropagationOptions o;
+  o.wall_losses = radio_model::WallLossTable(scene.building.wall_thickness_m);
+  o.model = radio.model;
+  o.environment = radio.environment;
+  o.distance_coefficient = radio.distance_coefficient;
+  o.shadowing_sigma_db = radio.shadowing_sigma_db;
+  o.shadowing_decorrelation_m = radio.shadowing_decorrelation_m;
+  o.fast_fading_sigma_db = radio.fast_fading_sigma_db;
+  o.fading_coherence_s = radio.fading_coherence_s;
+  o.bssid_spread_db = radio.bssid_spread_db;
+  o.people_disturbance_db = radio.people_disturbance_db;
+  for (int m = 0; m < radio_model::kWallMaterialCount; ++m) {
+    if (const auto& loss_db = radio.wall_loss_db.by_material_db[m])
+      o.wall_losses.laws[m] = radio_model::WallLossLaw::linear(*loss_db, 0.0);  // flat in frequency
+  }
+  return o;
+}
+
+radio_model::WifiScannerOptions wifi_scanner_options(const WifiScannerSpec& spec) {
+  radio_model::WifiScannerOptions o;
+  o.sensitivity_dbm = spec.sensitivity_dbm;
+  o.dwell_per_channel_s = spec.dwell_per_channel_s;
+  return o;
+}
+
+}  // namespace wifislam::sim
