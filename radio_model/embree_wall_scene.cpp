@@ -108,6 +108,8 @@ EmbreeWallScene::EmbreeWallScene(const WallMesh& mesh) : handles_(std::make_uniq
     }
     wall_ids_.push_back(face.wall_id);
     materials_.push_back(face.material);
+    slabs_.push_back(face.slab ? 1 : 0);
+    has_slabs_ = has_slabs_ || face.slab;
     // The side the material lies on: the geometric normal, turned to agree with the mesh's
     // shading normal (which points to free space); the winding alone is not a promise.
     const Eigen::Vector3f& p0 = mesh.positions_m[face.v[0]];
@@ -229,7 +231,8 @@ void EmbreeWallScene::walls_crossed(const Eigen::Vector3d& from, const Eigen::Ve
       // Named after the face where the material starts (or, when the segment starts inside, the
       // face where it ends).
       const unsigned prim = before ? before->prim : after ? after->prim : 0;
-      current = WallCrossing{wall_ids_[prim], materials_[prim], materials_[prim], from_m, 0.0};
+      current = WallCrossing{wall_ids_[prim],  materials_[prim], materials_[prim], from_m, 0.0,
+                             slabs_[prim] != 0};
     }
     if (after) current->exit_material = materials_[after->prim];
     current->length_m = to_m - current->distance_m;

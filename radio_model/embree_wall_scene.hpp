@@ -50,6 +50,10 @@ struct WallCrossing {
   WallMaterial exit_material = WallMaterial::kPlasterboard;  // of the face where it ends
   double distance_m = 0.0;  // from the segment's start to where the material starts
   double length_m = 0.0;    // path length inside the material
+  /// Whether the face where it starts is a floor slab's (WallMesh::Face::slab): the crossing is a
+  /// floor. A stretch that runs from a wall straight into the slab it stands on is one crossing,
+  /// named, like any other, after the face where it starts.
+  bool slab = false;
 };
 
 class EmbreeWallScene {
@@ -81,6 +85,8 @@ class EmbreeWallScene {
                      double max_distance_m) const;
 
   std::size_t triangle_count() const { return wall_ids_.size(); }
+  /// Whether any face is a floor slab's (a building of more than one storey).
+  bool has_slabs() const { return has_slabs_; }
 
  private:
   /// Whether `point` lies inside wall material, by horizontal probes (used where the faces
@@ -91,6 +97,8 @@ class EmbreeWallScene {
   std::unique_ptr<Handles> handles_;
   std::vector<int> wall_ids_;  // per Embree primitive
   std::vector<WallMaterial> materials_;
+  std::vector<std::uint8_t> slabs_;  // per primitive: 1 for a floor slab's face
+  bool has_slabs_ = false;
   std::vector<Eigen::Vector3f> normals_;  // per primitive, toward free space
 };
 

@@ -27,18 +27,25 @@ ItuP1238Coefficients itu_p1238_coefficients(RadioEnvironment environment, RadioB
   return {};
 }
 
-double itu_p1238_floor_loss_db(RadioEnvironment environment, int floors) {
-  // ITU-R P.1238-7, Table 3, 1.8-2 GHz row (the row that gives the n-dependence for all three
-  // environments; ns-3 uses it for every frequency). No floor in between: no loss.
+double itu_p1238_floor_loss_db(RadioEnvironment environment, double frequency_mhz, int floors) {
+  // ITU-R P.1238-7, Table 3 (the header says which row and why). No floor in between: no loss.
   if (floors <= 0) return 0.0;
-  const double n = floors;
-  switch (environment) {
+  const double further = floors - 1.0;
+  const double step_db = environment == RadioEnvironment::kCommercial ? 3.0 : 4.0;
+  if (frequency_mhz >= 2200.0 && environment != RadioEnvironment::kCommercial) {
+    const bool five_ghz = frequency_mhz >= 4000.0;
+    const double one_floor_db = environment == RadioEnvironment::kResidential
+                                    ? (five_ghz ? 13.0 : 10.0)
+                                    : (five_ghz ? 16.0 : 14.0);
+    return one_floor_db + step_db * further;
+  }
+  switch (environment) {  // 1.8-2 GHz row
     case RadioEnvironment::kResidential:
-      return 4.0 * n;
+      return 4.0 * floors;
     case RadioEnvironment::kOffice:
-      return 15.0 + 4.0 * (n - 1.0);
+      return 15.0 + 4.0 * further;
     case RadioEnvironment::kCommercial:
-      return 6.0 + 3.0 * (n - 1.0);
+      return 6.0 + 3.0 * further;
   }
   return 0.0;
 }

@@ -21,8 +21,19 @@ struct ItuP1238Coefficients {
 /// N and sigma from the recommendation's tables for an environment and band.
 ItuP1238Coefficients itu_p1238_coefficients(RadioEnvironment environment, RadioBand band);
 
-/// Lf(n) for n floors between transmitter and receiver (0 on the same storey).
-double itu_p1238_floor_loss_db(RadioEnvironment environment, int floors);
+/// Lf(n) for n floors between transmitter and receiver at `frequency_mhz` (0 on the same storey),
+/// from ITU-R P.1238-7 Table 3 (floor penetration loss factors, dB):
+///                residential               office                 commercial
+///   1.8-2 GHz    4 n                       15 + 4 (n - 1)         6 + 3 (n - 1)
+///   2.4 GHz      10 (apartment), 5 (house) 14                     -
+///   5.2 GHz      13 (apartment), 7 (house) 16 (1 floor)           -
+/// Rows by band: below 2.2 GHz the 1.8-2 GHz row, below 4 GHz the 2.4 GHz row, above it the
+/// 5.2 GHz row (as N uses it for all of 5 GHz). Choices where the table is silent, as for N:
+/// residential takes the apartment value (P.1238's residential rows are for multi-storey
+/// dwellings, the buildings with floors to cross); commercial, which has no 2.4 or 5.2 GHz entry,
+/// keeps the 1.8-2 GHz row; and for more than one floor at 2.4 or 5.2 GHz, where the table gives
+/// one value, each further floor adds the 1.8-2 GHz row's step (4 dB; 3 dB commercial).
+double itu_p1238_floor_loss_db(RadioEnvironment environment, double frequency_mhz, int floors);
 
 /// L(d) in dB. Distances below 1 m are taken as 1 m: the model is stated for d > 1 m and the
 /// log term would otherwise turn into a gain.

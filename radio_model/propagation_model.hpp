@@ -2,17 +2,23 @@
 // Mean received power from every access point at any receiver position, by one of three path
 // loss models (radio.model):
 //
-//  itu_walls (default): ITU-R P.1238's distance law with a stated N plus every wall on the
-//    straight AP -> receiver segment, found by Embree (embree_wall_scene.hpp, wall_materials.hpp):
-//      RSSI = P_tx - L_ITU(f, d; N) - sum over walls crossed L_wall(material, f) - S
-//    N = radio.distance_coefficient, default 22 (itu_p1238.hpp says why); radio.environment
-//    only chooses the floor term, which is zero on one storey. Shadowing sigma 4 dB by default.
+//  itu_walls (default): ITU-R P.1238's distance law with a stated N plus every wall and floor
+//    slab on the straight AP -> receiver segment, found by Embree (embree_wall_scene.hpp,
+//    wall_materials.hpp):
+//      RSSI = P_tx - L_ITU(f, d; N) - sum over walls and slabs crossed L(material, f) - S
+//    N = radio.distance_coefficient, default 22 (itu_p1238.hpp says why). A slab costs its
+//    material's loss like a wall (concrete: TR 38.901's 5 + 4 f, which matches a 0.2 m slab:
+//    wall_materials.hpp); P.1238's floor factor is not added on top. Shadowing sigma 4 dB by
+//    default.
 //  itu_site_general: P.1238-7's site-general model for radio.environment, no walls: N from
-//    Table 2 and shadowing sigma from Table 4, each for the BSSID's band (2.4 GHz row, 5.2 GHz
-//    row for 5 GHz); the walls of the building are in N, as the recommendation fitted it.
+//    Table 2, the floor penetration factor Lf(n) of Table 3 for the n floor slabs the segment
+//    crosses (Embree counts them; itu_p1238_floor_loss_db has the rows), and shadowing sigma from
+//    Table 4, each for the BSSID's band (2.4 GHz row, 5.2 GHz row for 5 GHz); the walls of the
+//    building are in N, as the recommendation fitted it.
 //  itu_site_general_fit: P.1238-11's alpha/beta/gamma fit (office rows), line of sight where the
-//    segment crosses no wall and non line of sight where it crosses any (Embree decides which;
-//    the walls themselves add no loss), shadowing sigma the row's.
+//    segment crosses no wall or slab and non line of sight where it crosses any (Embree decides
+//    which; the walls themselves add no loss), shadowing sigma the row's. The fit is for both
+//    ends on one floor; a link through floors adds Lf(n) as itu_site_general does.
 //
 // S is the AP's spatially correlated shadowing (shadowing_field.hpp): one unit-variance field
 // per AP, shared by both of its radios, scaled by the model's sigma for the link (or by
@@ -42,8 +48,8 @@ struct PropagationOptions {
   RadioEnvironment environment = RadioEnvironment::kOffice;
   /// N in the ITU formula; default kDefaultDistanceCoefficient (see itu_p1238.hpp for why).
   std::optional<double> distance_coefficient;
-  int floors_between = 0;  // one storey for now; the floor term stays in the formula
-  bool walls = true;       // itu_walls: add per-wall losses (off = the distance law alone)
+  /// Count walls and slabs (off = the distance law alone, under every model).
+  bool walls = true;
   WallLossTable wall_losses;
   /// Shadowing sigma; nullopt: the model's (shadowing_sigma_db_for). Under itu_walls that is
   /// 4 dB, ITU-R P.1238-11's site-general corridor LoS fit (4.07 dB); the recommendation's
@@ -51,6 +57,11 @@ struct PropagationOptions {
   /// walls already model.
   std::optional<double> shadowing_sigma_db;
   double shadowing_decorrelation_m = 3.0;
+  /// The floor elevations of the building's storeys, lowest first (empty or one: one storey).
+  /// Shadowing is correlated in 3-D: one field per AP and storey, mixed so that two receivers
+  /// at the same (x, y) on storeys dz apart correlate as exp(-dz / decorrelation), as two
+  /// receivers dz apart on one storey do (PropagationModel::shadowing_normal).
+  std::vector<double> storey_elevations_m;
   /// Scanner: the fading of each radio (fading_process.hpp) with its coherence time at a still
   /// receiver, the per-BSSID spread around it, and random extra loss from people.
   double fast_fading_sigma_db = 2.0;
@@ -75,10 +86,17 @@ struct RadioLink {
   /// another counts half a wall of each (embree_wall_scene.hpp). Counted under itu_walls and
   /// itu_site_general_fit (which needs only whether there is one); empty under itu_site_general.
   std::array<double, kWallMaterialCount> walls_per_material{};
+  /// Floor slabs crossed, by material (counted as walls are, under every model; empty without
+  /// slabs), and how many.
+  std::array<double, kWallMaterialCount> slabs_per_material{};
+  int slabs_crossed = 0;
   /// The AP's shadowing field at the receiver, in standard deviations (scaled per band by the
   /// model: PropagationModel::shadowing_db).
   double shadowing_normal = 0.0;
+  /// Walls crossed (slabs not included).
   double wall_count() const;
+  /// No wall and no slab on the segment.
+  bool line_of_sight() const { return wall_count() == 0.0 && slabs_crossed == 0; }
 };
 
 class PropagationModel {
@@ -107,6 +125,11 @@ class PropagationModel {
   bool walls_only_attenuate() const;
   /// Path loss (no shadowing) at `frequency_mhz` for a link, by the model.
   double path_loss_db(const RadioLink& link, double frequency_mhz) const;
+  /// AP `ap_index`'s unit shadowing at `receiver_m`. On storey k (the last elevation at or below
+  /// the receiver's z): S_0 = W_0(x, y) and S_k = rho_k S_(k-1) + sqrt(1 - rho_k^2) W_k(x, y),
+  /// rho_k = exp(-(e_k - e_(k-1)) / decorrelation), W_k the AP's independent field of storey k.
+  /// One storey: W_0, the field a one-storey building has always had.
+  double shadowing_normal(std::size_t ap_index, const Eigen::Vector3d& receiver_m) const;
   /// The link's shadowing in dB for a BSSID in `band`.
   double shadowing_db(const RadioLink& link, RadioBand band) const;
   /// Mean RSSI (shadowing included, no fading) of BSSID `bssid` of AP `ap_index`.
@@ -122,8 +145,8 @@ class PropagationModel {
   std::vector<AccessPoint> aps_;
   PropagationOptions options_;
   std::unique_ptr<EmbreeWallScene> walls_;
-  std::vector<std::shared_ptr<const ShadowingField>> shadowing_;  // shadowing_cache.hpp
-  double floor_loss_db_ = 0.0;
+  /// [AP][storey], shared with other models of the site (shadowing_cache.hpp).
+  std::vector<std::vector<std::shared_ptr<const ShadowingField>>> shadowing_;
   /// Every material's wall loss at each frequency the access points' BSSIDs use, computed once:
   /// the P.2040 absorption laws cost a pow and logs per call, and a scan asks per BSSID. Values
   /// are those of WallLossLaw::at (the same call, made earlier).

@@ -12,7 +12,7 @@ namespace wifislam::radio_model {
 namespace {
 
 using GridKey = std::tuple<double, double, double, double, double, double>;
-using FieldKey = std::tuple<GridKey, std::uint64_t, int>;
+using FieldKey = std::tuple<GridKey, std::uint64_t, int, int>;
 
 struct Cache {
   std::mutex mutex;
@@ -34,14 +34,12 @@ Cache& cache() {
 
 }  // namespace
 
-std::shared_ptr<const ShadowingField> shared_shadowing_field(const Eigen::Vector2d& min_m,
-                                                             const Eigen::Vector2d& max_m,
-                                                             double sigma_db,
-                                                             double decorrelation_m,
-                                                             std::uint64_t seed, int ap_id) {
+std::shared_ptr<const ShadowingField> shared_shadowing_field(
+    const Eigen::Vector2d& min_m, const Eigen::Vector2d& max_m, double sigma_db,
+    double decorrelation_m, std::uint64_t seed, int ap_id, int storey) {
   Cache& c = cache();
   const GridKey grid_key{min_m.x(), min_m.y(), max_m.x(), max_m.y(), sigma_db, decorrelation_m};
-  const FieldKey key{grid_key, seed, ap_id};
+  const FieldKey key{grid_key, seed, ap_id, storey};
   std::shared_ptr<const ShadowingGrid> grid;
   {
     std::lock_guard lock(c.mutex);
@@ -58,8 +56,9 @@ std::shared_ptr<const ShadowingField> shared_shadowing_field(const Eigen::Vector
     if (c.grids.size() > 16) c.grids.clear();  // a handful of sites per process
     c.grids.emplace(grid_key, grid);
   }
-  auto field = std::make_shared<const ShadowingField>(
-      grid->draw(Rng::stream(seed, fmt::format("shadowing/ap{}", ap_id))));
+  auto field = std::make_shared<const ShadowingField>(grid->draw(
+      Rng::stream(seed, storey == 0 ? fmt::format("shadowing/ap{}", ap_id)
+                                    : fmt::format("shadowing/ap{}/storey{}", ap_id, storey))));
   const std::size_t bytes = field->memory_bytes();
   std::lock_guard lock(c.mutex);
   if (auto it = c.fields.find(key); it != c.fields.end()) return it->second.field;

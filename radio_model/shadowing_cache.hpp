@@ -20,11 +20,11 @@ namespace wifislam::radio_model {
 
 inline constexpr std::size_t kShadowingCacheBytes = std::size_t{256} << 20;
 
-/// The field of AP `ap_id` over [min_m, max_m], drawn from Rng::stream(seed, "shadowing/ap<id>").
-std::shared_ptr<const ShadowingField> shared_shadowing_field(const Eigen::Vector2d& min_m,
-                                                             const Eigen::Vector2d& max_m,
-                                                             double sigma_db,
-                                                             double decorrelation_m,
-                                                             std::uint64_t seed, int ap_id);
+/// The field of AP `ap_id` over [min_m, max_m] on storey `storey`, drawn from
+/// Rng::stream(seed, "shadowing/ap<id>") for the lowest storey (and a one-storey building) and
+/// from "shadowing/ap<id>/storey<k>" for storey k > 0.
+std::shared_ptr<const ShadowingField> shared_shadowing_field(
+    const Eigen::Vector2d& min_m, const Eigen::Vector2d& max_m, double sigma_db,
+    double decorrelation_m, std::uint64_t seed, int ap_id, int storey = 0);
 
 }  // namespace wifislam::radio_model

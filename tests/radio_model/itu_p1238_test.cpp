@@ -45,10 +45,20 @@ TEST(ItuP1238, TableCoefficientsFollowTheRecommendation) {
   EXPECT_EQ(itu_p1238_coefficients(RadioEnvironment::kOffice, RadioBand::k5GHz).shadow_sigma_db,
             12.0);
   // Floor penetration (Table 3): residential 4n, office 15 + 4(n-1), commercial 6 + 3(n-1).
-  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 0), 0.0);
-  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kResidential, 2), 8.0);
-  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 3), 23.0);
-  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kCommercial, 2), 9.0);
+  // 1.8-2 GHz row.
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 1900.0, 0), 0.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kResidential, 1900.0, 2), 8.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 1900.0, 3), 23.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kCommercial, 1900.0, 2), 9.0);
+  // 2.4 and 5.2 GHz rows (P.1238-7 Table 3): office 14 and 16 dB, residential (apartment) 10 and
+  // 13 dB for one floor; each further floor the 1.8-2 GHz row's 4 dB; commercial keeps that row.
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 2437.0, 0), 0.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 2437.0, 1), 14.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 5180.0, 1), 16.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kOffice, 5805.0, 2), 20.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kResidential, 2412.0, 1), 10.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kResidential, 5240.0, 3), 21.0);
+  EXPECT_EQ(itu_p1238_floor_loss_db(RadioEnvironment::kCommercial, 2462.0, 2), 9.0);
 }
 
 TEST(ItuP1238, LossGrowsWithDistanceAndNeverBelowOneMetre) {
