@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/read_file.hpp"
+
 namespace wifislam::test {
 
 struct CliResult {
@@ -20,11 +22,6 @@ struct CliResult {
   int signal = 0;
   std::string out, err;
 };
-
-inline std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 inline void write_file(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
@@ -58,8 +55,8 @@ inline CliResult run_wifislam(const std::string& args, const std::filesystem::pa
   if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
   // The shell reports a child killed by a signal as 128 + signal.
   if (r.exit_code > 128 && r.exit_code < 160) r.signal = r.exit_code - 128;
-  r.out = read_file(out);
-  r.err = read_file(err);
+  r.out = test::read_file(out);
+  r.err = test::read_file(err);
   return r;
 }
 
@@ -118,7 +115,8 @@ inline std::filesystem::path tiny_loop_with(const std::filesystem::path& dir,
 /// The tiny loop with 4 s pauses (long enough for a Wi-Fi scan, so Wi-Fi variants run too),
 /// written to `dir`/tiny.yaml and generated at 2 fps into `dir`/dataset with `extra` flags
 /// (e.g. "--no-images"). True when `generate` succeeded.
-inline bool make_tiny_wifi_dataset(const std::filesystem::path& dir, const std::string& extra = "") {
+inline bool make_tiny_wifi_dataset(const std::filesystem::path& dir,
+                                   const std::string& extra = "") {
   tiny_loop_with(dir, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml");
   const std::string command = std::string(WIFISLAM_BINARY) + " generate " +
                               (dir / "tiny.yaml").string() + " --fps 2 -q " + extra + " -o " +

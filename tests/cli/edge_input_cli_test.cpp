@@ -6,6 +6,7 @@
 #include <string>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {

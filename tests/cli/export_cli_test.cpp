@@ -26,6 +26,7 @@
 #include "core/timestamp.hpp"
 #include "core/tum_file_list.hpp"
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -96,9 +97,9 @@ class ExportCli : public ::testing::Test {
     EXPECT_TRUE(fs::read_symlink(link).is_relative()) << link << " -> " << fs::read_symlink(link);
     ASSERT_TRUE(fs::exists(link)) << link << " dangles";
     EXPECT_EQ(fs::canonical(link), fs::canonical(image)) << link;
-    const std::string bytes = read_file(link);
+    const std::string bytes = test::read_file(link);
     EXPECT_FALSE(bytes.empty()) << link;
-    EXPECT_EQ(bytes, read_file(image)) << link;
+    EXPECT_EQ(bytes, test::read_file(image)) << link;
   }
 
   /// The stamp a frame file is named by, as rtabmap-rgbd_dataset reads it (a decimal number of
@@ -137,7 +138,7 @@ TEST_F(ExportCli, RtabmapLayoutNamesEveryPairByItsPositiveUnixStampAndLinksTheDa
   }
   expect_links_to(out / "groundtruth.txt", root_ / "fr1_ds" / "groundtruth.txt");
 
-  const auto j = nlohmann::json::parse(read_file(out / "export.json"));
+  const auto j = nlohmann::json::parse(test::read_file(out / "export.json"));
   EXPECT_EQ(j.at("peer"), "rtabmap");
   EXPECT_EQ(j.at("tum_camera"), "freiburg1");
   EXPECT_EQ(j.at("frames"), 6);
@@ -176,7 +177,7 @@ TEST_F(ExportCli, Orbslam2LayoutListsExactlyTheLinkedImagesAndCarriesTheCalibrat
 
   // The settings as ORB-SLAM2 reads them (cv::FileStorage), against the dataset's calibration.
   const DatasetCalibration c = read_calibration_yaml(root_ / "default_ds" / "calibration.yaml");
-  EXPECT_TRUE(read_file(out / "orbslam2_settings.yaml").starts_with("%YAML:1.0\n"));
+  EXPECT_TRUE(test::read_file(out / "orbslam2_settings.yaml").starts_with("%YAML:1.0\n"));
   cv::FileStorage settings((out / "orbslam2_settings.yaml").string(), cv::FileStorage::READ);
   ASSERT_TRUE(settings.isOpened());
   EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.fx"]), c.intrinsics.fx_px);
@@ -241,7 +242,7 @@ TEST_F(ExportCli, RtabmapCalibrationCarriesTheDatasetsOwnIntrinsicsWhateverTheFo
   EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
   EXPECT_NE(r.out.find("none matches"), std::string::npos) << r.out;
   expect_rtabmap_calibration(out / "rtabmap_calib.yaml", CameraIntrinsics{});
-  const auto j = nlohmann::json::parse(read_file(out / "export.json"));
+  const auto j = nlohmann::json::parse(test::read_file(out / "export.json"));
   EXPECT_TRUE(j.at("tum_camera").is_null());
   EXPECT_TRUE(j.at("warnings").empty()) << j.dump();
 

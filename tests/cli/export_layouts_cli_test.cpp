@@ -30,6 +30,7 @@
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -40,7 +41,7 @@ using test::read_file;
 /// Non-comment lines of a text file, split on commas with the spaces around them trimmed.
 std::vector<std::vector<std::string>> csv_lines(const fs::path& file) {
   std::vector<std::vector<std::string>> rows;
-  std::istringstream in(read_file(file));
+  std::istringstream in(test::read_file(file));
   std::string line;
   while (std::getline(in, line)) {
     if (line.empty() || line[0] == '#') continue;
@@ -106,7 +107,7 @@ TEST_F(ExportLayoutsCli, EurocLayoutHoldsTheFramesTheImuAndItsGroundTruthInNanos
 
   const std::vector<FramePair> pairs = read_frame_pairs(dataset());
   for (const char* sensor : {"cam0", "depth0"}) {
-    const std::string csv = read_file(mav / sensor / "data.csv");
+    const std::string csv = test::read_file(mav / sensor / "data.csv");
     EXPECT_EQ(csv.substr(0, csv.find('\n')), "#timestamp [ns],filename") << sensor;
     const auto rows = csv_lines(mav / sensor / "data.csv");
     ASSERT_EQ(rows.size(), pairs.size()) << sensor;
@@ -125,7 +126,7 @@ TEST_F(ExportLayoutsCli, EurocLayoutHoldsTheFramesTheImuAndItsGroundTruthInNanos
 
   // imu0 is imu.csv, in nanoseconds.
   const std::vector<ImuReading> imu = read_imu_csv((dataset() / "imu.csv").string());
-  const std::string imu_csv = read_file(mav / "imu0/data.csv");
+  const std::string imu_csv = test::read_file(mav / "imu0/data.csv");
   EXPECT_EQ(imu_csv.substr(0, imu_csv.find('\n')),
             "#timestamp [ns],w_RS_S_x [rad s^-1],w_RS_S_y [rad s^-1],w_RS_S_z [rad s^-1],"
             "a_RS_S_x [m s^-2],a_RS_S_y [m s^-2],a_RS_S_z [m s^-2]");
@@ -202,7 +203,7 @@ TEST_F(ExportLayoutsCli, KaptureFolderFollowsTheFormatsRulesAndCarriesWifiDepthA
                                                      {"records_gyroscope.txt", 5}};
   for (const auto& e : fs::directory_iterator(sensors)) {
     if (e.path().extension() != ".txt") continue;
-    const std::string text = read_file(e.path());
+    const std::string text = test::read_file(e.path());
     EXPECT_EQ(text.substr(0, text.find('\n')), "# kapture format: 1.1") << e.path();
     const std::string name = e.path().filename().string();
     if (fields.count(name) == 0) continue;
@@ -256,10 +257,10 @@ TEST_F(ExportLayoutsCli, KaptureFolderFollowsTheFormatsRulesAndCarriesWifiDepthA
     EXPECT_EQ(fs::canonical(image), fs::canonical(dataset() / pairs[i].rgb_path));
     const fs::path depth = sensors / "records_data" / depths[i][2];
     ASSERT_EQ(fs::file_size(depth), static_cast<std::uintmax_t>(k.width_px * k.height_px * 4));
-    const std::string png = read_file(dataset() / pairs[i].depth_path);
+    const std::string png = test::read_file(dataset() / pairs[i].depth_path);
     const cv::Mat expected =
         decode_depth_png(std::vector<unsigned char>(png.begin(), png.end()), 5000.0, "png");
-    const std::string raw = read_file(depth);
+    const std::string raw = test::read_file(depth);
     const cv::Mat got(k.height_px, k.width_px, CV_32FC1, const_cast<char*>(raw.data()));
     EXPECT_EQ(cv::norm(got, expected, cv::NORM_INF), 0.0) << depth;
   }

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -35,7 +36,7 @@ std::vector<pid_t> processes_with_argument(const std::string& needle) {
   for (const auto& entry : fs::directory_iterator("/proc")) {
     const std::string name = entry.path().filename().string();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    const std::string cmdline = read_file(entry.path() / "cmdline");
+    const std::string cmdline = test::read_file(entry.path() / "cmdline");
     bool found = false;
     for (std::size_t at = 0; at < cmdline.size();) {
       const std::size_t end = cmdline.find('\0', at);
@@ -44,7 +45,7 @@ std::vector<pid_t> processes_with_argument(const std::string& needle) {
       at = end + 1;
     }
     if (!found) continue;
-    const std::string stat = read_file(entry.path() / "stat");
+    const std::string stat = test::read_file(entry.path() / "stat");
     const std::size_t close = stat.rfind(')');
     if (close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z') continue;
     out.push_back(static_cast<pid_t>(std::stol(name)));
@@ -126,7 +127,7 @@ void expect_system_dies_with_wifislam(const std::string& args, const fs::path& s
     ::_exit(127);
   }
   const bool started = wait_for(30, [&] { return !processes_with_argument(seconds).empty(); });
-  ASSERT_TRUE(started) << read_file(scratch / "out.txt");
+  ASSERT_TRUE(started) << test::read_file(scratch / "out.txt");
   ::kill(pid, signal);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
@@ -172,7 +173,8 @@ TEST_F(ExternalContainment, OutputsAreNeverFollowedOutOfTheSystemsFolder) {
     EXPECT_NE(r.err.find(c.why), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(scratch_ / "run" / "trajectory.txt"));
     EXPECT_FALSE(fs::exists(scratch_ / "run" / "graph.json"));
-    const nlohmann::json run = nlohmann::json::parse(read_file(scratch_ / "run" / "run.json"));
+    const nlohmann::json run =
+        nlohmann::json::parse(test::read_file(scratch_ / "run" / "run.json"));
     const std::string status = run.at("external").at("status").get<std::string>();
     EXPECT_NE(status.find(c.why), std::string::npos) << status;
     EXPECT_EQ(status.find(".partial"), std::string::npos) << "a path that no longer exists";
@@ -221,7 +223,7 @@ TEST_F(ExternalContainment, ASystemThatLinksItsFoldersElsewhereMakesUsDeleteNoth
     EXPECT_NE(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
     for (const char* f : {"trajectory.txt", "graph.json", "run", "thesis.tex", "out/x"})
-      EXPECT_EQ(read_file(victim / f), "mine\n") << f;
+      EXPECT_EQ(test::read_file(victim / f), "mine\n") << f;
     EXPECT_TRUE(fs::is_directory(victim / "out" / "keep"));
   }
 }

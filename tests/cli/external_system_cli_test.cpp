@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -71,7 +72,7 @@ class ExternalSystemCli : public ::testing::Test {
 
 /// comparison.csv as rows of fields by column name (the file has no quoted commas here).
 std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& file) {
-  std::istringstream in(read_file(file));
+  std::istringstream in(test::read_file(file));
   std::string line;
   std::vector<std::string> header;
   std::vector<std::map<std::string, std::string>> rows;
@@ -114,7 +115,7 @@ TEST_F(ExternalSystemCli, OpencvOdometryAndABrokenSystemThroughCompare) {
       const double ate_m = std::stod(row.at("ate_rmse_m"));
       EXPECT_TRUE(std::isfinite(ate_m) && ate_m > 0.0 && ate_m < 50.0) << ate_m;
       const nlohmann::json run =
-          nlohmann::json::parse(read_file(scratch_ / "cmp" / row.at("run_dir") / "run.json"));
+          nlohmann::json::parse(test::read_file(scratch_ / "cmp" / row.at("run_dir") / "run.json"));
       EXPECT_EQ(run.at("frontend"), "external:opencv_rgbd_odometry");
       EXPECT_EQ(run.at("external").at("exit_code"), 0);
       EXPECT_GT(run.at("external").at("cpu_s").get<double>(), 0.0);
@@ -123,21 +124,21 @@ TEST_F(ExternalSystemCli, OpencvOdometryAndABrokenSystemThroughCompare) {
       EXPECT_EQ(row.at("status"), "exited 3");
       EXPECT_EQ(row.at("ate_rmse_m"), "");  // no number that could read as a score
       const fs::path run_dir = scratch_ / "cmp" / row.at("run_dir");
-      EXPECT_NE(read_file(run_dir / "stdout.log").find("starting"), std::string::npos);
+      EXPECT_NE(test::read_file(run_dir / "stdout.log").find("starting"), std::string::npos);
       EXPECT_FALSE(fs::exists(run_dir / "trajectory.txt"));
     }
   }
   EXPECT_EQ(ours, 2);
   EXPECT_EQ(opencv_rows, 1);
   EXPECT_EQ(broken_rows, 1);
-  const std::string md = read_file(scratch_ / "cmp" / "comparison.md");
+  const std::string md = test::read_file(scratch_ / "cmp" / "comparison.md");
   EXPECT_NE(md.find("Runs that failed"), std::string::npos);
   EXPECT_NE(md.find("exited 3"), std::string::npos);
 }
 
 /// metrics.json without what differs by design: where the run is, its name and its timing.
 nlohmann::json scores(const fs::path& metrics_json) {
-  nlohmann::json j = nlohmann::json::parse(read_file(metrics_json));
+  nlohmann::json j = nlohmann::json::parse(test::read_file(metrics_json));
   for (const char* key : {"run_dir", "frontend", "timing"}) j.erase(key);
   return j;
 }
@@ -190,7 +191,7 @@ TEST_F(ExternalSystemCli, ShippedRtabmapWrapperKeepsOnlyClosuresBetweenNodesOfTh
       "slam " + dataset().string() + " --frontend external:rtabmap -o " + run.string(), scratch_,
       {}, "RTABMAP_DATASET_TOOL='" + tool.string() + "'");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  std::istringstream lines(read_file(run / "loop_closures.csv"));
+  std::istringstream lines(test::read_file(run / "loop_closures.csv"));
   std::string header, closure, more;
   std::getline(lines, header);
   std::getline(lines, closure);
@@ -200,7 +201,8 @@ TEST_F(ExternalSystemCli, ShippedRtabmapWrapperKeepsOnlyClosuresBetweenNodesOfTh
       "eval " + run.string() + " --gt " + dataset().string() + " -o " + (run / "eval").string(),
       scratch_);
   ASSERT_EQ(e.exit_code, 0) << e.err;
-  const nlohmann::json metrics = nlohmann::json::parse(read_file(run / "eval" / "metrics.json"));
+  const nlohmann::json metrics =
+      nlohmann::json::parse(test::read_file(run / "eval" / "metrics.json"));
   EXPECT_LT(metrics.at("trajectory").at("ate_rmse_m").get<double>(), 1e-3) << metrics.dump(1);
   const nlohmann::json& closures = metrics.at("loop_closures");
   EXPECT_TRUE(closures.at("available").get<bool>()) << closures.dump(1);
@@ -220,7 +222,7 @@ outputs: {trajectory: t.txt}
   EXPECT_EQ(r.exit_code, 5) << r.err;
   EXPECT_LT(took_s, 20.0);
   EXPECT_NE(r.err.find("timed out"), std::string::npos) << r.err;
-  const nlohmann::json run = nlohmann::json::parse(read_file(scratch_ / "run" / "run.json"));
+  const nlohmann::json run = nlohmann::json::parse(test::read_file(scratch_ / "run" / "run.json"));
   EXPECT_NE(run.at("external").at("status").get<std::string>().find("timed out"),
             std::string::npos);
 }
@@ -271,7 +273,8 @@ TEST_F(ExternalSystemCli, StudySystemAxisGivesAStatusPerRow) {
                             "case_index, variant\" > " +
                             (scratch_ / "rows.txt").string();
   ASSERT_EQ(std::system(query.c_str()), 0);
-  EXPECT_EQ(read_file(scratch_ / "rows.txt"), "vanilla|ok|0\nwifi|ok|0\nvanilla|exited 3|1\n");
+  EXPECT_EQ(test::read_file(scratch_ / "rows.txt"),
+            "vanilla|ok|0\nwifi|ok|0\nvanilla|exited 3|1\n");
   const test::CliResult p = test::run_wifislam(
       "study plot " + (scratch_ / "s.sqlite").string() + " -o " + (scratch_ / "plots").string(),
       scratch_);

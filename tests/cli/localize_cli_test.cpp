@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -38,7 +39,8 @@ TEST(LocalizeCli, WifiWordsRaiseFabmapsShareWithin2mOnTheAliasingLadder) {
                              (scratch / "out").string(),
                          scratch);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const nlohmann::json summary = nlohmann::json::parse(read_file(scratch / "out" / "summary.json"));
+  const nlohmann::json summary =
+      nlohmann::json::parse(test::read_file(scratch / "out" / "summary.json"));
   EXPECT_GT(summary.at("query_images").get<int>(), 50);
   const double visual = share_within_2m(summary, "fabmap");
   const double wifi = share_within_2m(summary, "wifi-fabmap");
@@ -78,8 +80,8 @@ TEST(LocalizeCli, ADatasetWithoutWifiIsRefusedForTheWifiMethods) {
 // which it did not take; an empty --route and a trailing comma in --method were accepted.
 TEST(LocalizeCli, AOneFpsDatasetLocalisesAndEmptyListsAreRefused) {
   const fs::path scratch = test::scratch_folder();
-  const fs::path scene = test::tiny_loop_with(scratch, "duration_s: 1.0", "duration_s: 4.0",
-                                              "tiny.yaml");
+  const fs::path scene =
+      test::tiny_loop_with(scratch, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml");
   const std::string generate = std::string(WIFISLAM_BINARY) + " generate " + scene.string() +
                                " --fps 1 -q -o " + (scratch / "dataset").string();
   ASSERT_EQ(std::system(generate.c_str()), 0);
@@ -88,9 +90,8 @@ TEST(LocalizeCli, AOneFpsDatasetLocalisesAndEmptyListsAreRefused) {
       "localize " + input + " --no-verify -q -o " + (scratch / "out").string(), scratch);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(scratch / "out" / "summary.json"));
-  for (const std::string& bad :
-       {std::string("--method fabmap,"), std::string("--method ,fabmap"),
-        std::string("--route \"\""), std::string("--route A,,B")}) {
+  for (const std::string& bad : {std::string("--method fabmap,"), std::string("--method ,fabmap"),
+                                 std::string("--route \"\""), std::string("--route A,,B")}) {
     r = test::run_wifislam(
         "localize " + scene.string() + " " + bad + " -o " + (scratch / "bad").string(), scratch);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -163,8 +164,8 @@ TEST_F(OutputFolders, ForceNeverReplacesAFolderThatIsNotThisToolsOutput) {
 // comparison.md) was taken for an old eval (compare) report and `generate --force` deleted
 // thesis.tex with it. Only the marker makes a folder replaceable now.
 TEST_F(OutputFolders, ForceKeepsAUserFolderWhoseFileNamesLookLikeOurReports) {
-  for (const auto& [report, text] : {std::pair{"metrics.json", "report.md"},
-                                     std::pair{"comparison.json", "comparison.md"}}) {
+  for (const auto& [report, text] :
+       {std::pair{"metrics.json", "report.md"}, std::pair{"comparison.json", "comparison.md"}}) {
     const fs::path mine = user_folder(std::string("reports_") + report);
     test::write_file(mine / report, "{}\n");
     test::write_file(mine / text, "\n");

@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/wifi_csv.hpp"
 #include "tests/core/test_folder.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -203,7 +204,7 @@ TEST(DatasetReader, MissingPngIsAnErrorNamingTheListLine) {
 TEST(DatasetReader, ManifestMismatchIsAnErrorUnlessVerificationIsOff) {
   const auto dir = test::fresh_folder("mismatch");
   write_ours(dir);
-  test::write_text(dir / "odometry.txt", test::read_text(dir / "odometry.txt") + "\n");
+  test::write_text(dir / "odometry.txt", test::read_file(dir / "odometry.txt") + "\n");
   std::string e = open_error(dir);
   EXPECT_NE(e.find("odometry.txt"), std::string::npos) << e;
   EXPECT_NE(e.find("manifest mismatch"), std::string::npos) << e;
@@ -261,21 +262,21 @@ TEST(DatasetReader, CorruptFilesAreErrorsWithFileAndLine) {
   const auto dir = test::fresh_folder("corrupt");
   write_ours(dir);
   // A malformed wifi.csv row.
-  const std::string wifi = test::read_text(dir / "wifi.csv");
+  const std::string wifi = test::read_file(dir / "wifi.csv");
   test::write_text(dir / "wifi.csv", wifi + "400001,wifi0,not-a-mac,2412000,-50,x,0,400001\n");
   std::string e = open_error(dir, {.verify_checksums = false});
   EXPECT_NE(e.find("wifi.csv:5"), std::string::npos) << e;
   EXPECT_NE(e.find("not-a-mac"), std::string::npos) << e;
   test::write_text(dir / "wifi.csv", wifi);
   // A truncated odometry line.
-  const std::string odo = test::read_text(dir / "odometry.txt");
+  const std::string odo = test::read_file(dir / "odometry.txt");
   test::write_text(dir / "odometry.txt", odo.substr(0, odo.size() - 10));
   e = open_error(dir, {.verify_checksums = false});
   EXPECT_NE(e.find("odometry.txt:9"), std::string::npos) << e;
   test::write_text(dir / "odometry.txt", odo);
   // Found by fuzzing: calibration.yaml with a scalar where a mapping belongs escaped as a
   // yaml-cpp exception (an internal error); so did a sensor_model group that is not a mapping.
-  const std::string calibration = test::read_text(dir / "calibration.yaml");
+  const std::string calibration = test::read_file(dir / "calibration.yaml");
   for (const std::string& bad :
        {std::string("camera: 5\n"),
         calibration.substr(0, calibration.find("sensor_model:")) + "sensor_model: [1, 2]\n",
@@ -394,7 +395,7 @@ TEST(DatasetReader, AnUnfinishedDatasetIsRefusedUnlessVerificationIsOff) {
 TEST(DatasetReader, EqualStampsInTheListsAreRefusedAtTheLine) {
   const auto dir = test::fresh_folder("equal");
   write_ours(dir);
-  std::string assoc = test::read_text(dir / "associations.txt");
+  std::string assoc = test::read_file(dir / "associations.txt");
   const std::size_t second = assoc.find('\n') + 1;
   const std::string first_line = assoc.substr(0, second);
   test::write_text(dir / "associations.txt", first_line + assoc);
@@ -403,7 +404,7 @@ TEST(DatasetReader, EqualStampsInTheListsAreRefusedAtTheLine) {
   EXPECT_NE(e.find("not later than the previous line"), std::string::npos) << e;
   const auto plain = test::fresh_folder("equal_plain");
   write_plain_tum(plain, 3);
-  std::string depth = test::read_text(plain / "depth.txt");
+  std::string depth = test::read_file(plain / "depth.txt");
   const std::size_t last = depth.rfind('\n', depth.size() - 2) + 1;
   test::write_text(plain / "depth.txt", depth + depth.substr(last));
   e = error_of_kind<ParseError>(plain);
@@ -416,7 +417,7 @@ TEST(DatasetReader, EqualStampsInTheListsAreRefusedAtTheLine) {
 TEST(DatasetReader, TheListsBesideAssociationsAreCheckedToo) {
   const auto dir = test::fresh_folder("lists");
   write_ours(dir);
-  const std::string rgb = test::read_text(dir / "rgb.txt");
+  const std::string rgb = test::read_file(dir / "rgb.txt");
   const DatasetReaderOptions unverified{.verify_checksums = false};
   test::write_text(dir / "rgb.txt", "");
   std::string e = error_of_kind<ParseError>(dir, unverified);
@@ -440,7 +441,7 @@ TEST(DatasetReader, TheListsBesideAssociationsAreCheckedToo) {
 TEST(DatasetReader, ImagePathsOutsideTheFolderAreRefused) {
   const auto dir = test::fresh_folder("escape");
   write_ours(dir);
-  const std::string assoc = test::read_text(dir / "associations.txt");
+  const std::string assoc = test::read_file(dir / "associations.txt");
   const std::string image = dataset::frame_image_path(dataset::kRgbDir, frame_time(0));
   for (const std::string& path :
        std::vector<std::string>{(dir / image).string(),
@@ -479,7 +480,7 @@ TEST(DatasetReader, TruncatedGroundTruthIsAnError) {
   const auto dir = test::fresh_folder("gt");
   write_ours(dir);
   EXPECT_EQ(read_ground_truth(dir).size(), 5u);
-  const std::string gt = test::read_text(dir / "groundtruth.txt");
+  const std::string gt = test::read_file(dir / "groundtruth.txt");
   // Cut in the middle of the last line.
   test::write_text(dir / "groundtruth.txt", gt.substr(0, gt.size() - 12));
   try {

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/read_file.hpp"
+
 namespace wifislam::test {
 
 inline std::filesystem::path fresh_folder(const std::string& name) {
@@ -22,11 +24,6 @@ inline std::filesystem::path fresh_folder(const std::string& name) {
 inline void write_text(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
-}
-
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 }  // namespace wifislam::test

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -174,8 +175,8 @@ TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
 // "ERROR 1", a 300-digit projection string); a way naming a node the file lacks was imported as
 // a smaller polygon; /dev/zero was "no such plan file" (exit 3).
 TEST_F(ImportCli, PlansThatAreNotWhatTheySayAreLocatedErrors) {
-  for (const std::string& point : {std::string("[1e308, 0]"), std::string("[200, 0]"),
-                                   std::string("[0, 95]")}) {
+  for (const std::string& point :
+       {std::string("[1e308, 0]"), std::string("[200, 0]"), std::string("[0, 95]")}) {
     const std::string ring = "[[0, 0], " + point + ", [0.0002, 0.0001], [0, 0.0001], [0, 0]]";
     test::write_file(scratch_ / "far.geojson", collection({feature("corridor", ring)}));
     expect_refused("import " + (scratch_ / "far.geojson").string(),

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "fuzz/fuzz_targets.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::fuzz {
 
@@ -34,11 +35,6 @@ std::vector<fs::path> inputs_of(const std::string& target, const char* kind) {
   return files;
 }
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 class CorpusReplay : public ::testing::TestWithParam<Target> {};
 
 TEST_P(CorpusReplay, EveryCommittedInputIsAcceptedOrRefusedWithOurErrors) {
@@ -49,7 +45,7 @@ TEST_P(CorpusReplay, EveryCommittedInputIsAcceptedOrRefusedWithOurErrors) {
   std::vector<fs::path> all = corpus;
   for (const fs::path& crash : inputs_of(target.name, "crashes")) all.push_back(crash);
   for (const fs::path& input : all) {
-    const std::string bytes = read_bytes(input);
+    const std::string bytes = test::read_file(input);
     SCOPED_TRACE(input.string());
     EXPECT_NO_THROW(target.run(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()));
   }

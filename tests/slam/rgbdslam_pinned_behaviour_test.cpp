@@ -55,6 +55,7 @@
 #include "core/atomic_file.hpp"
 #include "sim/render/osmesa_context.hpp"
 #include "tests/slam/slam_test_scene.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
@@ -68,10 +69,6 @@ constexpr const char* kVanillaDigest =
 constexpr const char* kWifiDigest =
     "86062e240301db6b47181755015237560a8eb6ef07575242b17c6c5665fb8f22";
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 std::string without_sixth_field(const std::string& csv) {
   std::string out;
@@ -112,9 +109,9 @@ std::string image_hashes(const std::string& checksums) {
 std::string run_digest(const fs::path& run) {
   std::string bytes;
   for (const char* file : {"trajectory.txt", "keyframes.txt", "graph.json", "wifi_clusters.csv"}) {
-    if (fs::exists(run / file)) bytes += read_bytes(run / file);
+    if (fs::exists(run / file)) bytes += test::read_file(run / file);
   }
-  bytes += without_sixth_field(read_bytes(run / "loop_closures.csv"));
+  bytes += without_sixth_field(test::read_file(run / "loop_closures.csv"));
   return sha256_hex(bytes);
 }
 
@@ -138,7 +135,7 @@ class RgbdslamPinnedBehaviour : public ::testing::Test {
   void expect_pinned(const char* variant, const char* flags, const char* expected) {
     ASSERT_TRUE(generated_) << "wifislam generate failed";
     const std::string images =
-        sha256_hex(image_hashes(read_bytes(root_ / "dataset" / "images.sha256")));
+        sha256_hex(image_hashes(test::read_file(root_ / "dataset" / "images.sha256")));
     const fs::path run = root_ / variant;
     const std::string command = std::string(WIFISLAM_BINARY) + " slam " +
                                 (root_ / "dataset").string() + " --set max_keypoints=500 " + flags +

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Eigen/Geometry>
+#include "eval/alignment.hpp"
 
 namespace wifislam::test {
 
@@ -24,11 +24,10 @@ AlignedError aligned_translation_error(const Trajectory& estimate,
     a.col(static_cast<Eigen::Index>(i)) = est[i];
     b.col(static_cast<Eigen::Index>(i)) = gt[i];
   }
-  const Eigen::Matrix4d t = Eigen::umeyama(a, b, false);
+  const eval::Alignment alignment = eval::align_points(a, b, /*with_scale=*/false);
   double sum_sq = 0.0;
   for (std::size_t i = 0; i < est.size(); ++i) {
-    const Eigen::Vector3d aligned = t.topLeftCorner<3, 3>() * est[i] + t.topRightCorner<3, 1>();
-    const double e = (aligned - gt[i]).norm();
+    const double e = (alignment.apply(est[i]) - gt[i]).norm();
     sum_sq += e * e;
     out.max_m = std::max(out.max_m, e);
   }

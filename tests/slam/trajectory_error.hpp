@@ -1,6 +1,7 @@
 #pragma once
 // A small aligned trajectory error for the SLAM tests (the full evaluation lives in eval/): poses
-// paired by equal timestamps, rigid Umeyama alignment (no scale, as for RGB-D), translation RMSE.
+// paired by equal timestamps, eval's rigid alignment (eval/alignment.hpp, no scale, as for RGB-D),
+// translation RMSE.
 
 #include <map>
 

@@ -11,16 +11,12 @@
 #include <sstream>
 #include <string>
 
+#include "tests/support/read_file.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 TEST(ComparePreset, PaperRgbdslamRunsTheCHallTwinAtMinMatches50And70) {
   const fs::path dir =
@@ -31,8 +27,8 @@ TEST(ComparePreset, PaperRgbdslamRunsTheCHallTwinAtMinMatches50And70) {
                               " compare --preset paper-rgbdslam --seeds 1 --max-frames 30 "
                               "--no-plots -q -o " +
                               (dir / "out").string() + " > " + (dir / "log.txt").string() + " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(dir / "log.txt");
-  const std::string md = read_text(dir / "out" / "comparison.md");
+  ASSERT_EQ(std::system(command.c_str()), 0) << wifislam::test::read_file(dir / "log.txt");
+  const std::string md = wifislam::test::read_file(dir / "out" / "comparison.md");
   EXPECT_NE(md.find("| c_hall |"), std::string::npos) << md;
   EXPECT_NE(md.find("min_matches=50 Vanilla"), std::string::npos) << md;
   EXPECT_NE(md.find("min_matches=70 WiFi"), std::string::npos) << md;

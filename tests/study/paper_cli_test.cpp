@@ -15,6 +15,7 @@
 
 #include "study/result_store.hpp"
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -47,15 +48,15 @@ TEST_F(PaperCli, OneSmallPartWritesTheReportAndASecondRunRedoesNothing) {
   EXPECT_EQ(rows.size(), 2u);  // one case (min_matches 20), vanilla and Wi-Fi
 
   // Every number of the paper is in the table, judged; those of parts not run are n/a.
-  const std::string csv = read_file(dir / "paper_vs_ours.csv");
+  const std::string csv = test::read_file(dir / "paper_vs_ours.csv");
   EXPECT_EQ(lines_of(csv), 1 + 231) << csv.substr(0, 400);
   EXPECT_NE(csv.find("table:rtabmap_rmse,a_hall,time_threshold_ms=70,vanilla,ate_rmse_m,0.4895 m"),
             std::string::npos);
   EXPECT_NE(csv.find("not applicable,not run"), std::string::npos);
-  const std::string report = read_file(dir / "report.md");
+  const std::string report = test::read_file(dir / "report.md");
   EXPECT_NE(report.find("| [ORB-SLAM](orbslam.md) | 96 |"), std::string::npos) << report;
   EXPECT_NE(report.find("## Time per part"), std::string::npos) << report;
-  const std::string orbslam = read_file(dir / "orbslam.md");
+  const std::string orbslam = test::read_file(dir / "orbslam.md");
   EXPECT_NE(orbslam.find("## A Hall"), std::string::npos) << orbslam;
   EXPECT_NE(orbslam.find("We were not able to get any result for A Hall"), std::string::npos);
   for (const char* page : {"datasets.md", "rgbdslam.md", "rtabmap.md", "fabmap.md"})
@@ -95,7 +96,7 @@ TEST_F(PaperCli, BadOptionsAndForeignFoldersAreRefusedBeforeAnyWork) {
   auto r = wifislam("paper -o " + (scratch_ / "mine").string() + " --parts fabmap --twins c_hall");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("not a paper folder"), std::string::npos) << r.err;
-  EXPECT_EQ(read_file(scratch_ / "mine" / "notes.txt"), "mine");
+  EXPECT_EQ(test::read_file(scratch_ / "mine" / "notes.txt"), "mine");
   EXPECT_EQ(std::distance(fs::directory_iterator(scratch_ / "mine"), fs::directory_iterator{}), 1);
   // --report-only on a folder that is not one.
   r = wifislam("paper -o " + (scratch_ / "none").string() + " --report-only");

@@ -20,6 +20,7 @@
 #include "slam/system/run_slam.hpp"
 #include "study/recorded_dataset.hpp"
 #include "tests/cli/cli_run.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -76,16 +77,16 @@ TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
     EXPECT_GT(summary.keyframes, 5);
     for (const char* file :
          {"trajectory.txt", "keyframes.txt", "graph.json", "loop_closures.csv"}) {
-      const std::string replayed = read_file(run.run_dir / file);
+      const std::string replayed = test::read_file(run.run_dir / file);
       EXPECT_FALSE(replayed.empty()) << file;
-      EXPECT_EQ(replayed, read_file(by_reader / file)) << file;
+      EXPECT_EQ(replayed, test::read_file(by_reader / file)) << file;
     }
     if (run.slam.wifi.enabled) {
-      EXPECT_EQ(read_file(run.run_dir / "wifi_clusters.csv"),
-                read_file(by_reader / "wifi_clusters.csv"));
+      EXPECT_EQ(test::read_file(run.run_dir / "wifi_clusters.csv"),
+                test::read_file(by_reader / "wifi_clusters.csv"));
     }
     // The extraction is charged: one call per frame, as in the reader's run.
-    const auto timing = nlohmann::json::parse(read_file(run.run_dir / "timing.json"));
+    const auto timing = nlohmann::json::parse(test::read_file(run.run_dir / "timing.json"));
     const auto& extraction = timing["modules"]["feature_extraction"];
     EXPECT_EQ(extraction["calls"], 150);
     EXPECT_GT(extraction["total_s"].get<double>(), 0.0);

@@ -19,18 +19,13 @@
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
 #include "study/comparison_study.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::study {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// "" when equal, else the first line where they differ (the files are long).
 std::string first_difference(const std::string& a, const std::string& b) {
@@ -92,13 +87,13 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
     slam::write_run_folder(by_reader, *system, summary, false);
     EXPECT_GT(summary.keyframes, 10);
     for (const char* file : kRunFiles) {
-      const std::string streamed = read_text(scratch_ / "jobs1" / c.run_dir / file);
+      const std::string streamed = test::read_file(scratch_ / "jobs1" / c.run_dir / file);
       EXPECT_FALSE(streamed.empty()) << file;
-      EXPECT_EQ(first_difference(streamed, read_text(by_reader / file)), "") << file;
+      EXPECT_EQ(first_difference(streamed, test::read_file(by_reader / file)), "") << file;
     }
     if (c.wifi) {
-      EXPECT_EQ(first_difference(read_text(scratch_ / "jobs1" / c.run_dir / "wifi_clusters.csv"),
-                                 read_text(by_reader / "wifi_clusters.csv")),
+      EXPECT_EQ(first_difference(test::read_file(scratch_ / "jobs1" / c.run_dir / "wifi_clusters.csv"),
+                                 test::read_file(by_reader / "wifi_clusters.csv")),
                 "");
     }
   }
@@ -111,8 +106,8 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
     SCOPED_TRACE(b.run_dir.string());
     ASSERT_EQ(a.run_dir, b.run_dir);
     for (const char* file : kRunFiles) {
-      EXPECT_EQ(first_difference(read_text(scratch_ / "jobs1" / a.run_dir / file),
-                                 read_text(scratch_ / "jobs2" / b.run_dir / file)),
+      EXPECT_EQ(first_difference(test::read_file(scratch_ / "jobs1" / a.run_dir / file),
+                                 test::read_file(scratch_ / "jobs2" / b.run_dir / file)),
                 "")
           << file;
     }
@@ -130,7 +125,7 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
   ASSERT_TRUE(fs::is_directory(depth_only / "depth")) << depth_only;
   EXPECT_FALSE(fs::exists(depth_only / "rgb"));
   EXPECT_FALSE(fs::exists(depth_only / "rgb.txt"));
-  EXPECT_NE(read_text(depth_only / "manifest.json").find("\"colour_images\": false"),
+  EXPECT_NE(test::read_file(depth_only / "manifest.json").find("\"colour_images\": false"),
             std::string::npos);
   try {
     (void)sim::open_sensor_input(depth_only, {});

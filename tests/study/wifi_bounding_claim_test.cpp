@@ -26,16 +26,11 @@
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::study {
 namespace {
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// One comparison run (2 seeds x {vanilla, wifi}) checked in one test: ctest runs every test in a
 /// process of its own, so splitting the checks would run the whole comparison once per check.
@@ -75,7 +70,7 @@ TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorr
   for (const auto& [seed, ate] : wifi_ate) EXPECT_LT(ate, vanilla_ate.at(seed)) << "seed " << seed;
 
   // The comparison's files: tables, one CSV row per run, every run folder with its evaluation.
-  const std::string md = read_text(out / "comparison.md");
+  const std::string md = test::read_file(out / "comparison.md");
   EXPECT_NE(md.find("| scene | min_matches=10 Vanilla | min_matches=10 WiFi |"), std::string::npos)
       << md;
   EXPECT_NE(md.find("| twin_corridors |"), std::string::npos);
@@ -85,7 +80,7 @@ TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorr
   ASSERT_EQ(result.divergences.size(), 2u);
   for (const PairDivergence& d : result.divergences) EXPECT_GT(d.keyframe, 0) << d.seed;
   EXPECT_NE(md.find("First keyframe where the WiFi run differs"), std::string::npos);
-  const std::string csv = read_text(out / "comparison.csv");
+  const std::string csv = test::read_file(out / "comparison.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);  // header + 4 runs
   for (const ComparisonCase& c : result.cases) {
     EXPECT_TRUE(std::filesystem::exists(out / c.run_dir / "trajectory.txt"));

@@ -40,6 +40,7 @@
 #include "sim/site/survey_site.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::radio_model::calibrate {
 namespace {
@@ -50,11 +51,6 @@ constexpr double kTrueN = 30.0, kTrueBrickDb = 9.0, kTrueSigmaDb = 4.0, kTrueFad
 constexpr double kTrueDecorrelationM = 3.0, kTxDbm = 20.0, kFrequencyMhz = 2437.0;
 constexpr double kReceiverHeightM = 1.0, kSensitivityDbm = -130.0;
 constexpr int kScansPerSpot = 10;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 class CalibrationRecovery : public ::testing::Test {
  protected:
@@ -166,7 +162,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   c.baseline = fit_log_distance(links);
   c.shadowing = s;
   std::string yaml;
-  std::istringstream lines(read_text(scene_path_));
+  std::istringstream lines(test::read_file(scene_path_));
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("radio:", 0) == 0 || line.rfind("access_points:", 0) == 0) continue;
     yaml += line + "\n";

@@ -7,6 +7,7 @@
 
 #include "core/dataset_format.hpp"
 #include "tests/sim/generate/test_scene.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -25,8 +26,8 @@ RunResult run(const std::string& args, const fs::path& scratch) {
   const int status = std::system(command.c_str());
   RunResult r;
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = test::read_text(out);
-  r.err = test::read_text(err);
+  r.out = test::read_file(out);
+  r.err = test::read_file(err);
   return r;
 }
 
@@ -98,20 +99,20 @@ TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
             scratch_);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("does not look like wifislam output"), std::string::npos) << r.err;
-    EXPECT_EQ(test::read_text(mine / "keep.txt"), "mine");
+    EXPECT_EQ(test::read_file(mine / "keep.txt"), "mine");
   }
   // A dataset is replaced with --force only.
   const fs::path out = make_dataset("dataset");
-  const std::string manifest = test::read_text(out / dataset::kManifest);
+  const std::string manifest = test::read_file(out / dataset::kManifest);
   RunResult r =
       run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3", scratch_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
-  EXPECT_EQ(test::read_text(out / dataset::kManifest), manifest);
+  EXPECT_EQ(test::read_file(out / dataset::kManifest), manifest);
   r = run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3 --force -q",
           scratch_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(test::read_text(out / dataset::kManifest), manifest);
+  EXPECT_NE(test::read_file(out / dataset::kManifest), manifest);
 }
 
 // Each damage: a non-zero exit, a message naming the file, and the folder left as it was.
@@ -127,7 +128,7 @@ void expect_check_fails(const fs::path& dir, const fs::path& scratch, const std:
 
 TEST_F(GenerateCli, TruncatedGroundTruthIsAClearError) {
   const fs::path dir = make_dataset("gt");
-  const std::string gt = test::read_text(dir / dataset::kGroundTruth);
+  const std::string gt = test::read_file(dir / dataset::kGroundTruth);
   test::write_text(dir / dataset::kGroundTruth, gt.substr(0, gt.size() - 15));
   expect_check_fails(dir, scratch_, "groundtruth.txt:");
   expect_check_fails(dir, scratch_, "groundtruth.txt:", "--no-verify");
@@ -142,7 +143,7 @@ TEST_F(GenerateCli, MissingPngIsAClearError) {
 
 TEST_F(GenerateCli, MalformedWifiRowIsAClearError) {
   const fs::path dir = make_dataset("wifi");
-  std::string wifi = test::read_text(dir / dataset::kWifi);
+  std::string wifi = test::read_file(dir / dataset::kWifi);
   const auto second_line = wifi.find('\n') + 1;
   wifi.replace(wifi.find(',', wifi.find(',', second_line) + 1) + 1, 2, "zz");  // break a BSSID
   test::write_text(dir / dataset::kWifi, wifi);
@@ -153,7 +154,7 @@ TEST_F(GenerateCli, MalformedWifiRowIsAClearError) {
 TEST_F(GenerateCli, ManifestMismatchIsAClearError) {
   const fs::path dir = make_dataset("manifest");
   test::write_text(dir / dataset::kOdometry,
-                   test::read_text(dir / dataset::kOdometry) + "# edit\n");
+                   test::read_file(dir / dataset::kOdometry) + "# edit\n");
   expect_check_fails(dir, scratch_, "odometry.txt");
   const RunResult r = run("check " + dir.string(), scratch_);
   EXPECT_NE(r.err.find("manifest mismatch"), std::string::npos) << r.err;
@@ -175,7 +176,7 @@ TEST_F(GenerateCli, ZeroAccessPointsGiveADatasetCheckAcceptsVanillaRunsAndWifiRe
                                       " --fps 2 --max-frames 40 --threads 2 -q",
                                   scratch_);
   ASSERT_EQ(generated.exit_code, 0) << generated.err;
-  const std::string manifest = test::read_text(dataset / dataset::kManifest);
+  const std::string manifest = test::read_file(dataset / dataset::kManifest);
   EXPECT_NE(manifest.find("\"wifi_scans\": 0"), std::string::npos) << manifest;
   EXPECT_EQ(manifest.find("\"wifi_scans_that_heard_nothing\": 0"), std::string::npos)
       << "the route should pause and scan within 40 frames:\n"

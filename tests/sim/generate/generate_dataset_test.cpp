@@ -22,6 +22,7 @@
 #include "sim/generate/generator_stream.hpp"
 #include "sim/robot/imu_model.hpp"
 #include "tests/sim/generate/test_scene.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -45,17 +46,17 @@ TEST(GenerateDataset, SameSeedGivesIdenticalDatasetsWhateverTheThreadCount) {
   const GenerateSummary sc = generate_dataset(scene, c, short_run(2));
   EXPECT_EQ(sa.frames, 30);
   EXPECT_EQ(sc.threads, 2);
-  const std::string manifest = test::read_text(a / dataset::kManifest);
+  const std::string manifest = test::read_file(a / dataset::kManifest);
   EXPECT_FALSE(manifest.empty());
-  EXPECT_EQ(manifest, test::read_text(b / dataset::kManifest));
-  EXPECT_EQ(manifest, test::read_text(c / dataset::kManifest));
+  EXPECT_EQ(manifest, test::read_file(b / dataset::kManifest));
+  EXPECT_EQ(manifest, test::read_file(c / dataset::kManifest));
   // The manifest covers the images through images.sha256; check that too.
-  EXPECT_EQ(test::read_text(a / dataset::kImageChecksums),
-            test::read_text(c / dataset::kImageChecksums));
+  EXPECT_EQ(test::read_file(a / dataset::kImageChecksums),
+            test::read_file(c / dataset::kImageChecksums));
   GenerateOptions other_seed = short_run(2);
   other_seed.seed = 78;
   generate_dataset(scene, d, other_seed);
-  EXPECT_NE(manifest, test::read_text(d / dataset::kManifest));
+  EXPECT_NE(manifest, test::read_file(d / dataset::kManifest));
   for (const auto& dir : {a, b, c, d}) {
     EXPECT_FALSE(fs::exists(dir.string() + ".partial"));
     fs::remove_all(dir);
@@ -160,7 +161,7 @@ TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
   // associate.py on rgb.txt and depth.txt gives exactly associations.txt.
   std::string expected;
   for (const FramePair& p : associate_tum(rgb, depth, 0.02)) expected += format_association_line(p);
-  EXPECT_EQ(expected, test::read_text(dir / dataset::kAssociations));
+  EXPECT_EQ(expected, test::read_file(dir / dataset::kAssociations));
   AssociationsReader reader((dir / dataset::kAssociations).string());
   int pairs = 0;
   while (auto p = reader.next()) {
@@ -241,7 +242,7 @@ TEST(GenerateDataset, ScansHappenOnlyWhileTheRobotPauses) {
 std::vector<std::pair<Timestamp, std::string>> stamped_lines(const fs::path& file,
                                                              char separator = ' ') {
   std::vector<std::pair<Timestamp, std::string>> out;
-  std::istringstream in(test::read_text(file));
+  std::istringstream in(test::read_file(file));
   for (std::string line; std::getline(in, line);) {
     if (line.empty() || line[0] == '#' || line.starts_with("timestamp")) continue;
     const auto cut = line.find(separator);
@@ -300,16 +301,16 @@ TEST(GenerateDataset, EveryStampIsRouteTimePlusTheSceneTimeOrigin) {
       EXPECT_EQ(scans[i], scans0[i]) << "scan " << i;  // same readings, shifted stamps
     }
     // The pixels are the same; only the names in images.sha256 differ.
-    std::istringstream a(test::read_text(d0 / dataset::kImageChecksums)),
-        b(test::read_text(dir / dataset::kImageChecksums));
+    std::istringstream a(test::read_file(d0 / dataset::kImageChecksums)),
+        b(test::read_file(dir / dataset::kImageChecksums));
     std::string line_a, line_b;
     while (std::getline(a, line_a) && std::getline(b, line_b)) {
       EXPECT_EQ(line_a.substr(0, 64), line_b.substr(0, 64));
     }
-    const auto manifest = nlohmann::json::parse(test::read_text(dir / dataset::kManifest));
+    const auto manifest = nlohmann::json::parse(test::read_file(dir / dataset::kManifest));
     EXPECT_EQ(manifest.at("parameters").at("time_origin_s"), origin_s) << manifest.dump();
     EXPECT_NE(
-        test::read_text(dir / dataset::kScene).find("time_origin_s: " + std::to_string(origin_s)),
+        test::read_file(dir / dataset::kScene).find("time_origin_s: " + std::to_string(origin_s)),
         std::string::npos);
   }
   for (const auto& dir : {d0, dd, d1}) fs::remove_all(dir);
@@ -332,7 +333,7 @@ TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheIm
   const ImuReading& first = imu.front();
   EXPECT_NEAR(first.specific_force_mps2.z(), kStandardGravityMps2, 0.2);
   EXPECT_NEAR(first.specific_force_mps2.head<2>().norm(), 0.0, 0.2);
-  const auto manifest = nlohmann::json::parse(test::read_text(dir / dataset::kManifest));
+  const auto manifest = nlohmann::json::parse(test::read_file(dir / dataset::kManifest));
   EXPECT_EQ(manifest.at("counts").at("imu_samples"), summary.imu_samples);
 
   const DatasetCalibration calibration = read_calibration_yaml(dir / dataset::kCalibration);
@@ -368,9 +369,9 @@ TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheIm
   EXPECT_FALSE(read_calibration_yaml(none / dataset::kCalibration).imu.has_value());
   // Nothing else moves: the IMU draws from its own stream.
   for (const char* file : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi})
-    EXPECT_EQ(test::read_text(dir / file), test::read_text(none / file)) << file;
-  EXPECT_EQ(test::read_text(dir / dataset::kImageChecksums),
-            test::read_text(none / dataset::kImageChecksums));
+    EXPECT_EQ(test::read_file(dir / file), test::read_file(none / file)) << file;
+  EXPECT_EQ(test::read_file(dir / dataset::kImageChecksums),
+            test::read_file(none / dataset::kImageChecksums));
   fs::remove_all(dir);
   fs::remove_all(none);
 }

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/scene/scene_loader.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::test {
 
@@ -46,11 +47,6 @@ inline std::filesystem::path fresh_folder(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::remove_all(dir.string() + ".partial");
   return dir;
-}
-
-inline std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 inline void write_text(const std::filesystem::path& path, const std::string& text) {

@@ -11,17 +11,12 @@
 #include <string>
 
 #include "tests/sim/render/render_frame_tool.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << path;
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 fs::path fresh_dir(const std::string& name) {
   const fs::path dir =
@@ -33,8 +28,8 @@ fs::path fresh_dir(const std::string& name) {
 
 void expect_same_files(const fs::path& a_prefix, const fs::path& b_prefix) {
   for (const char* suffix : {"_rgb.png", "_depth.png"}) {
-    const std::string a = read_bytes(a_prefix.string() + suffix);
-    const std::string b = read_bytes(b_prefix.string() + suffix);
+    const std::string a = test::read_file(a_prefix.string() + suffix);
+    const std::string b = test::read_file(b_prefix.string() + suffix);
     EXPECT_GT(a.size(), 10000u) << suffix;
     EXPECT_TRUE(a == b) << suffix << " differs between " << a_prefix << " and " << b_prefix;
   }
@@ -47,8 +42,8 @@ TEST(RenderDeterminism, SamePoseAndSeedGiveIdenticalPngsInOneProcess) {
   expect_same_files(dir / "first", dir / "second");
   // And the seed matters: other noise, other textures.
   test::render_reference_frame((dir / "other").string(), 78, 3);
-  EXPECT_NE(read_bytes(dir / "first_rgb.png"), read_bytes(dir / "other_rgb.png"));
-  EXPECT_NE(read_bytes(dir / "first_depth.png"), read_bytes(dir / "other_depth.png"));
+  EXPECT_NE(test::read_file(dir / "first_rgb.png"), test::read_file(dir / "other_rgb.png"));
+  EXPECT_NE(test::read_file(dir / "first_depth.png"), test::read_file(dir / "other_depth.png"));
   fs::remove_all(dir);
 }
 

@@ -21,6 +21,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/sim/render/embree_depth.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -77,12 +78,6 @@ TEST(SceneRender, EveryShippedSceneMatchesEmbreeFromRandomRoutePoses) {
   }
 }
 
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  EXPECT_TRUE(in.good()) << path;
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
   const fs::path dir =
       fs::temp_directory_path() / ("wifislam_render_cli_" + std::to_string(::getpid()));
@@ -101,9 +96,9 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
   }
   for (const char* suffix : {"_rgb.png", "_depth.png", "_depth_color.png"}) {
-    const std::string a = read_bytes(dir.string() + "/a" + suffix);
+    const std::string a = test::read_file(dir.string() + "/a" + suffix);
     EXPECT_GT(a.size(), 5000u) << suffix;
-    EXPECT_TRUE(a == read_bytes(dir.string() + "/b" + suffix)) << suffix;
+    EXPECT_TRUE(a == test::read_file(dir.string() + "/b" + suffix)) << suffix;
   }
   // The depth file is a TUM depth image with readings in the sensor's range.
   const cv::Mat depth = read_depth_png(dir / "a_depth.png");

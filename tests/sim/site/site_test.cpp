@@ -17,6 +17,7 @@
 #include "sim/site/radio_options.hpp"
 #include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_types.hpp"
+#include "tests/support/read_file.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -74,13 +75,6 @@ TEST(Site, TheReceiverRidesWithTheCamera) {
   EXPECT_EQ(Site(scene).receiver_height_m(), 0.7);
 }
 
-std::string read_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 // `wifislam radiomap` without --height maps at the camera height, where the dataset's scans are.
 TEST(Site, RadioMapCommandDefaultsToTheCameraHeight) {
   const auto dir = std::filesystem::temp_directory_path() / "wifislam_site_test_radiomap";
@@ -93,7 +87,7 @@ TEST(Site, RadioMapCommandDefaultsToTheCameraHeight) {
                             (dir / (name + ".png")).string() + " --csv " +
                             (dir / (name + ".csv")).string() + " " + extra + " > /dev/null";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    return read_file(dir / (name + ".csv"));
+    return test::read_file(dir / (name + ".csv"));
   };
   const std::string by_default = map_csv("", "default");
   ASSERT_FALSE(by_default.empty());
