@@ -168,7 +168,7 @@ void run_scene(const std::uint8_t* data, std::size_t size) {
     check(sim::resolved_scene_yaml(sim::load_scene_yaml(resolved, "resolved.yaml")) == resolved,
           "scene: resolved YAML does not load back to the same scene");
     sim::GenerateOptions options;
-    options.images = false;
+    options.camera = sim::CameraOutput::kNoImages;
     options.max_frames = kSceneFrameBudget;
     sim::GenerationPipeline pipeline(scene, options);
     for (int i = 0; i < kSceneEventBudget && pipeline.next(); ++i) {

@@ -418,7 +418,8 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
   generate.max_frames = options.max_frames;
   // An external system reads the images from disk; otherwise colour only when the caller keeps
   // the dataset (the evaluation reads depth alone).
-  generate.colour_images = options.dataset_colour || any_external;
+  generate.camera = options.dataset_colour || any_external ? sim::CameraOutput::kColourAndDepth
+                                                           : sim::CameraOutput::kDepthOnly;
   const sim::GenerateSummary g =
       generate_with_runs(any.site, out_dir / any.dataset, generate, runs, options.jobs);
   progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s){}", any.dataset.string(),

@@ -61,7 +61,7 @@ std::vector<PositionedScan> moving_scans(const sim::Scene& resolved, double inte
   moving.route.pause.scan_while_moving = true;
   moving.sensors.wifi.scan_interval_s = interval_s;
   sim::GenerateOptions no_images;
-  no_images.images = false;
+  no_images.camera = sim::CameraOutput::kNoImages;
   sim::GenerationPipeline pipeline(moving, no_images);
   std::vector<PositionedScan> out;
   while (auto generated = pipeline.next()) {

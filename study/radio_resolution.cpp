@@ -17,8 +17,7 @@ std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
                                          const slam::WifiOptions& wifi,
                                          std::vector<slam::AccessPointKey>* ap_keys) {
   sim::GenerateOptions options;
-  options.images = false;
-  options.frames = false;  // the pauses need odometry and scans only
+  options.camera = sim::CameraOutput::kNoFrames;  // the pauses need odometry and scans only
   sim::GenerationPipeline pipeline(std::move(site), options);
   if (ap_keys) {
     ap_keys->clear();

@@ -48,7 +48,8 @@ void run_generate(const GenerateArgs& args) {
   options.seed = args.seed;
   options.fps = args.fps;
   options.max_frames = args.max_frames;
-  options.images = !args.no_images;
+  options.camera =
+      args.no_images ? sim::CameraOutput::kNoImages : sim::CameraOutput::kColourAndDepth;
   options.threads = args.threads;
   options.overwrite = replace;
   if (cli::stderr_is_tty() && !args.quiet) {

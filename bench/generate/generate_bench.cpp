@@ -59,7 +59,7 @@ void BM_Generate(benchmark::State& state) {
   const bool images = state.range(1) != 0;
   sim::GenerateOptions options;
   options.max_frames = frames;
-  options.images = images;
+  options.camera = images ? sim::CameraOutput::kColourAndDepth : sim::CameraOutput::kNoImages;
   options.overwrite = true;
   sim::GenerateSummary summary;
   for (auto _ : state) {

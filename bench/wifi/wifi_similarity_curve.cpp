@@ -33,7 +33,7 @@ struct PauseSample {
 
 std::vector<PauseSample> pause_samples(const sim::Scene& scene, const std::filesystem::path& tmp) {
   sim::GenerateOptions options;
-  options.images = false;
+  options.camera = sim::CameraOutput::kNoImages;
   options.overwrite = true;
   sim::generate_dataset(scene, tmp, options);
   const std::vector<WifiScan> scans = read_wifi_csv((tmp / "wifi.csv").string());

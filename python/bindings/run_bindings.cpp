@@ -76,7 +76,7 @@ py::dict generate(const sim::Scene& scene, const fs::path& output,
   options.seed = seed;
   options.fps = fps;
   options.max_frames = max_frames;
-  options.images = images;
+  options.camera = images ? sim::CameraOutput::kColourAndDepth : sim::CameraOutput::kNoImages;
   options.threads = threads;
   sim::GenerateSummary summary;
   {

@@ -184,7 +184,8 @@ void bind_streams(py::module_& m) {
                  options.seed = seed;
                  options.fps = fps;
                  options.max_frames = max_frames;
-                 options.images = images;
+                 options.camera =
+                     images ? sim::CameraOutput::kColourAndDepth : sim::CameraOutput::kNoImages;
                  py::gil_scoped_release release;  // builds the world and renderer
                  return std::make_unique<SimulatorSource>(scene, options);
                }),

@@ -172,8 +172,9 @@ std::string parameters_json(const Scene& scene, const GenerateOptions& options) 
   p["fps"] = scene.sensors.camera.fps;
   p["time_origin_s"] = scene.sensors.time_origin_s;
   p["max_frames"] = options.max_frames;
-  p["images"] = options.images;
-  if (!options.colour_images) p["colour_images"] = false;  // absent (true) in every other dataset
+  p["images"] = options.images();
+  if (options.camera == CameraOutput::kDepthOnly)
+    p["colour_images"] = false;  // absent (true) in every other dataset
   p["render"] = {{"near_m", options.render.near_m},
                  {"far_m", options.render.far_m},
                  {"ambient", options.render.ambient},
@@ -236,7 +237,7 @@ class DatasetWriter {
     summary_.seed = scene.seed;
     summary_.fps = scene.sensors.camera.fps;
     summary_.time_origin_s = scene.sensors.time_origin_s;
-    summary_.images = options_.images;
+    summary_.images = options_.images();
     summary_.access_points = static_cast<std::int64_t>(pipeline_.radio().access_points().size());
     for (const radio_model::AccessPoint& ap : pipeline_.radio().access_points())
       summary_.bssids += static_cast<std::int64_t>(ap.bssids.size());
@@ -248,9 +249,9 @@ class DatasetWriter {
     write_file_atomic(dir_ / dataset::kCalibration,
                       calibration_to_yaml(make_calibration(pipeline_, options_)));
     write_file_atomic(dir_ / dataset::kAccessPoints, access_points_csv(pipeline_.radio()));
-    if (!options_.images) return;
+    if (!options_.images()) return;
     const std::string name = scene.name + " (wifislam)";
-    if (options_.colour_images) {
+    if (options_.colour_images()) {
       fs::create_directories(dir_ / dataset::kRgbDir);
       rgb_list_.emplace(dir_ / dataset::kRgbList,
                         fmt::format("# color images\n# file: '{}'\n# timestamp filename\n", name));
@@ -264,13 +265,13 @@ class DatasetWriter {
 
   void start_encoders() {
     int threads = clamp_thread_count(options_.threads);
-    if (options_.images && threads > 1) {
+    if (options_.images() && threads > 1) {
       pool_.emplace(threads);
       // A process or memory limit may allow fewer threads: encode with those, or inline.
       threads = std::max(1, pool_->size());
       if (pool_->size() == 0) pool_.reset();
     }
-    summary_.threads = options_.images ? threads : 1;
+    summary_.threads = options_.images() ? threads : 1;
     max_pending_ = static_cast<std::size_t>(2 * threads);
   }
 
@@ -352,13 +353,13 @@ class DatasetWriter {
     groundtruth_.write(format_tum_line(StampedPose::from_pose(frame.time, camera_to_world)));
     groundtruth_.write("\n");
     ++summary_.frames;
-    if (!options_.images) {
+    if (!options_.images()) {
       report_progress();
       return;
     }
     const FramePair pair{
         frame.time,
-        options_.colour_images ? dataset::frame_image_path(dataset::kRgbDir, frame.time) : "",
+        options_.colour_images() ? dataset::frame_image_path(dataset::kRgbDir, frame.time) : "",
         frame.time, dataset::frame_image_path(dataset::kDepthDir, frame.time), 0};
     // Depth goes to the encoder in metres (converted there, off this thread) unless the frame is
     // also streamed: then its PNG units are made once, here, for both.
@@ -370,7 +371,7 @@ class DatasetWriter {
       as_read.depth_m = depth_as_stored(depth);
       options_.on_event(std::move(as_read));
     }
-    cv::Mat rgb = options_.colour_images ? std::move(frame.rgb) : cv::Mat();
+    cv::Mat rgb = options_.colour_images() ? std::move(frame.rgb) : cv::Mat();
     if (!pool_) {
       finish_frame(pair, encode_and_write(dir_, pair.rgb_path, pair.depth_path, rgb, depth));
       report_progress();
@@ -435,14 +436,14 @@ class DatasetWriter {
 
   DatasetManifest make_manifest() {
     DatasetManifest manifest;
-    manifest.images = options_.images;
-    manifest.colour_images = options_.colour_images;
+    manifest.images = options_.images();
+    manifest.colour_images = options_.camera != CameraOutput::kDepthOnly;  // false: depth only
     manifest.versions = {{"wifislam", WIFISLAM_VERSION},
                          {"opencv", CV_VERSION},
                          {"eigen", fmt::format("{}.{}.{}", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION,
                                                EIGEN_MINOR_VERSION)}};
     manifest.parameters_json = parameters_json(pipeline_.scene(), options_);
-    manifest.counts = {{"frames", options_.images ? summary_.frames : 0},
+    manifest.counts = {{"frames", options_.images() ? summary_.frames : 0},
                        {"groundtruth_poses", summary_.frames},
                        {"odometry_readings", summary_.odometry_readings},
                        {"imu_samples", summary_.imu_samples},
@@ -453,9 +454,9 @@ class DatasetWriter {
                        {"access_points", summary_.access_points},
                        {"bssids", summary_.bssids}};
     std::vector<std::string> files;
-    if (options_.images && options_.colour_images) files = {dataset::kRgbList};
-    if (options_.images) files.push_back(dataset::kDepthList);
-    if (options_.images && options_.colour_images) files.push_back(dataset::kAssociations);
+    if (options_.images() && options_.colour_images()) files = {dataset::kRgbList};
+    if (options_.images()) files.push_back(dataset::kDepthList);
+    if (options_.images() && options_.colour_images()) files.push_back(dataset::kAssociations);
     for (const char* f : {dataset::kGroundTruth, dataset::kOdometry, dataset::kWifi,
                           dataset::kAccessPoints, dataset::kCalibration, dataset::kScene})
       files.push_back(f);
@@ -463,7 +464,7 @@ class DatasetWriter {
       files.push_back(dataset::kImu);
       files.push_back(dataset::kImuGroundTruth);
     }
-    if (options_.images) files.push_back(dataset::kImageChecksums);
+    if (options_.images()) files.push_back(dataset::kImageChecksums);
     for (const std::string& f : files) {
       manifest.files.push_back(describe_dataset_file(dir_, f));
       summary_.bytes_written += manifest.files.back().bytes;
@@ -504,8 +505,7 @@ class DatasetWriter {
 
 /// Options that only make sense with images.
 void check_image_options(const GenerateOptions& options) {
-  if (options.images) return;
-  if (!options.colour_images) throw std::invalid_argument("colour_images=false needs images");
+  if (options.images()) return;
   if (options.on_event) throw std::invalid_argument("on_event needs images");
 }
 

@@ -14,6 +14,23 @@
 
 namespace wifislam::sim {
 
+/// What a generation keeps of the camera: one choice where three linked booleans (images, frames,
+/// colour images) used to allow combinations that meant nothing.
+enum class CameraOutput {
+  /// rgb/ and depth/ PNGs (the default).
+  kColourAndDepth,
+  /// depth/ only: rgb/, rgb.txt and associations.txt absent; the manifest says so and SLAM refuses
+  /// such a dataset. For a dataset nobody reads but the evaluation, whose overlap test needs
+  /// depth: a study case's, whose SLAM runs take their frames from `on_event`.
+  kDepthOnly,
+  /// No images: poses, odometry and Wi-Fi only (no rendering; fast radio studies). The in-memory
+  /// pipeline still emits each camera frame, without pixels.
+  kNoImages,
+  /// No images and no camera frames in memory either: odometry and scans only, which are the same
+  /// with or without frames (radio-level studies).
+  kNoFrames,
+};
+
 struct GenerateProgress {
   std::int64_t frames_done = 0;
   std::int64_t frames_total = 0;
@@ -28,20 +45,18 @@ struct GenerateOptions {
   std::optional<double> fps;
   /// Stop after this many frames (< 0: the whole route). Odometry and scans stop there too.
   std::int64_t max_frames = -1;
-  /// false: write poses, odometry and Wi-Fi only (no rendering; fast radio studies).
-  bool images = true;
-  /// false (with images false): the in-memory pipeline emits no camera frames at all, only
-  /// odometry and scans, which are the same with or without frames (radio-level studies).
-  bool frames = true;
-  /// false (with images): write the depth images only, no colour (rgb/, rgb.txt and
-  /// associations.txt absent; the manifest says so and SLAM refuses such a dataset). For a
-  /// dataset nobody reads but the evaluation, whose overlap test needs depth: a study case's,
-  /// whose SLAM runs take their frames from `on_event`.
-  bool colour_images = true;
+  CameraOutput camera = CameraOutput::kColourAndDepth;
+  /// Rendered images are written (colour and depth, or depth only).
+  bool images() const {
+    return camera == CameraOutput::kColourAndDepth || camera == CameraOutput::kDepthOnly;
+  }
+  bool colour_images() const { return camera == CameraOutput::kColourAndDepth; }
+  /// Camera frames are emitted (with or without pixels).
+  bool frames() const { return camera != CameraOutput::kNoFrames; }
   /// Called from the generating thread with every event, in time order, exactly as SLAM would
   /// read it back from the dataset being written (frames: colour as written, depth at the PNG's
   /// resolution): lets SLAM runs consume a dataset while it is written, with no PNG round trip
-  /// (study/streamed_runs.hpp). Needs images.
+  /// (study/streamed_runs.hpp). Needs images().
   std::function<void(SensorEvent)> on_event;
   /// Threads encoding and writing PNGs while the main thread renders (1 = encode inline;
   /// 0 = one per core). Clamped to 4 per core, and fewer when a process or memory limit will

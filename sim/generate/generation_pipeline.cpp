@@ -62,8 +62,8 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   schedule_ = std::make_unique<SensorSchedule>(site_->motion(), schedule);
   odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, scene_.seed);
 
-  frames_ = options.frames || options.images;
-  if (options.images) {
+  frames_ = options.frames();
+  if (options.images()) {
     renderer_ = std::make_unique<RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
     renderer_->set_world(site_->world(), scene_);
     depth_model_ = std::make_unique<DepthSensorModel>(

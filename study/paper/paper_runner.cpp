@@ -174,7 +174,8 @@ class GroupRunner {
 
     const auto start = Clock::now();
     sim::GenerateOptions generate;
-    generate.colour_images = false;  // the evaluation reads depth; the runs replay features
+    generate.camera = sim::CameraOutput::kDepthOnly;  // the evaluation reads depth; the runs replay
+                                                      // features
     const RecordedDataset dataset(site, work / "dataset", generate, features, options_.jobs);
     times["shared rendering and feature extraction"] += seconds_since(start);
     write_dataset_facts(site, dataset.summary(), group);

@@ -180,7 +180,7 @@ TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
 TEST(GenerateDataset, NoImagesWritesPosesOdometryAndWifiOnly) {
   const fs::path dir = test::fresh_folder("noimg");
   GenerateOptions options;
-  options.images = false;
+  options.camera = sim::CameraOutput::kNoImages;
   const GenerateSummary summary = generate_dataset(test::small_scene(), dir, options);
   EXPECT_FALSE(fs::exists(dir / dataset::kRgbDir));
   EXPECT_FALSE(fs::exists(dir / dataset::kAssociations));
@@ -196,7 +196,7 @@ TEST(GenerateDataset, NoImagesWritesPosesOdometryAndWifiOnly) {
 TEST(GenerateDataset, ScansHappenOnlyWhileTheRobotPauses) {
   const fs::path dir = test::fresh_folder("pauses");
   GenerateOptions options;
-  options.images = false;
+  options.camera = sim::CameraOutput::kNoImages;
   const Scene scene = test::small_scene();
   const GenerateSummary summary = generate_dataset(scene, dir, options);
   const GenerationPipeline truth(scene, options);

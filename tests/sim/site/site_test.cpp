@@ -46,7 +46,7 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
   const Scene scene = load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
   const Site site(scene);
   GenerateOptions options;
-  options.images = false;
+  options.camera = sim::CameraOutput::kNoImages;
   const GenerationPipeline pipeline(scene, options);
   ASSERT_EQ(site.access_points().size(), 5u);
   ASSERT_EQ(pipeline.radio().access_points().size(), 5u);
