@@ -36,7 +36,8 @@ std::vector<pid_t> processes_with_argument(const std::string& needle) {
   for (const auto& entry : fs::directory_iterator("/proc")) {
     const std::string name = entry.path().filename().string();
     if (name.find_first_not_of("0123456789") != std::string::npos) continue;
-    const std::string cmdline = test::read_file(entry.path() / "cmdline");
+    // A process may exit between the listing and the read.
+    const std::string cmdline = test::read_file_if_present(entry.path() / "cmdline");
     bool found = false;
     for (std::size_t at = 0; at < cmdline.size();) {
       const std::size_t end = cmdline.find('\0', at);
@@ -45,7 +46,7 @@ std::vector<pid_t> processes_with_argument(const std::string& needle) {
       at = end + 1;
     }
     if (!found) continue;
-    const std::string stat = test::read_file(entry.path() / "stat");
+    const std::string stat = test::read_file_if_present(entry.path() / "stat");
     const std::size_t close = stat.rfind(')');
     if (close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z') continue;
     out.push_back(static_cast<pid_t>(std::stol(name)));

@@ -20,4 +20,11 @@ inline std::string read_file(const std::filesystem::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+/// For a file that may vanish while the test reads it (a /proc entry of a process that exits):
+/// empty when it cannot be opened, without failing the test.
+inline std::string read_file_if_present(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
 }  // namespace wifislam::test
