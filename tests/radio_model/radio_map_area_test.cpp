@@ -15,7 +15,10 @@
 namespace wifislam::radio_model {
 namespace {
 
-PropagationModel one_ap_behind_a_wall(WallMesh& walls) {
+// One AP at x = 2 and a brick wall at x = 5, over the rectangle (0, -4)-(10, 4). The model copies
+// the walls into Embree: the mesh need not outlive it.
+PropagationModel one_ap_behind_a_wall() {
+  WallMesh walls;
   test::add_wall_x(walls, 5.0f, 0.15f, 10.0f, 3.0f, WallMaterial::kBrick, 0);
   MacAllocator macs(5);
   std::vector<AccessPoint> aps{make_access_point(0, {2, 0, 2.5}, 20, 1, 5, macs)};
@@ -24,13 +27,17 @@ PropagationModel one_ap_behind_a_wall(WallMesh& walls) {
   return PropagationModel(walls, {0, -4}, {10, 4}, std::move(aps), options, 5);
 }
 
-TEST(RadioMapArea, TheMaskSaysWhichCellsAreComputedAndTheWallLowersTheFarSide) {
-  WallMesh walls;
-  const PropagationModel model = one_ap_behind_a_wall(walls);
+RadioMapArea the_models_rectangle() {
   RadioMapArea area;
   area.bounds_min_m = {0, -4};
   area.bounds_max_m = {10, 4};
   area.ceiling_m = 3.0;
+  return area;
+}
+
+TEST(RadioMapArea, TheMaskSaysWhichCellsAreComputedAndEachIsTheModelAtItsCentre) {
+  const PropagationModel model = one_ap_behind_a_wall();
+  RadioMapArea area = the_models_rectangle();
   // Compute only the row through y in [0, 1): every other cell stays NaN.
   int calls = 0;
   area.cells_to_compute = [&calls](const RadioMap& grid) {
@@ -77,12 +84,8 @@ TEST(RadioMapArea, TheMaskSaysWhichCellsAreComputedAndTheWallLowersTheFarSide) {
 }
 
 TEST(RadioMapArea, RejectsAReceiverAboveTheCeilingAndAMaskOfTheWrongSize) {
-  WallMesh walls;
-  const PropagationModel model = one_ap_behind_a_wall(walls);
-  RadioMapArea area;
-  area.bounds_min_m = {0, -4};
-  area.bounds_max_m = {10, 4};
-  area.ceiling_m = 3.0;
+  const PropagationModel model = one_ap_behind_a_wall();
+  RadioMapArea area = the_models_rectangle();
   RadioMapOptions options;
   options.resolution_m = 1.0;
   options.receiver_height_m = 3.5;
