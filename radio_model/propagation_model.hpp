@@ -37,6 +37,7 @@
 #include "radio_model/embree_wall_scene.hpp"
 #include "radio_model/itu_p1238.hpp"
 #include "radio_model/path_loss_choice.hpp"
+#include "radio_model/radio_defaults.hpp"
 #include "radio_model/shadowing_field.hpp"
 #include "radio_model/wall_materials.hpp"
 #include "radio_model/wall_mesh.hpp"
@@ -56,7 +57,7 @@ struct PropagationOptions {
   /// 8-12 dB (P.1238-7 Table 4) also covers building-to-building variation that our explicit
   /// walls already model.
   std::optional<double> shadowing_sigma_db;
-  double shadowing_decorrelation_m = 3.0;
+  double shadowing_decorrelation_m = defaults::kShadowingDecorrelationM;
   /// The floor elevations of the building's storeys, lowest first (empty or one: one storey).
   /// Shadowing is correlated in 3-D: one field per AP and storey, mixed so that two receivers
   /// at the same (x, y) on storeys dz apart correlate as exp(-dz / decorrelation), as two
@@ -64,10 +65,11 @@ struct PropagationOptions {
   std::vector<double> storey_elevations_m;
   /// Scanner: the fading of each radio (fading_process.hpp) with its coherence time at a still
   /// receiver, the per-BSSID spread around it, and random extra loss from people.
-  double fast_fading_sigma_db = 2.0;
-  double fading_coherence_s = 3.0;
-  double bssid_spread_db = 0.5;
-  double people_disturbance_db = 0.0;  // 0 = off; else extra loss up to this much
+  double fast_fading_sigma_db = defaults::kFastFadingSigmaDb;
+  double fading_coherence_s = defaults::kFadingCoherenceS;
+  double bssid_spread_db = defaults::kBssidSpreadDb;
+  double people_disturbance_db =
+      defaults::kPeopleDisturbanceDb;  // 0 = off; else extra loss up to this much
   double people_probability = 0.3;     // chance a person blocks a given AP during one scan
 
   double distance_coefficient_or_default() const {

@@ -43,12 +43,13 @@
 #include "core/wifi_scan.hpp"
 #include "radio_model/fading_process.hpp"
 #include "radio_model/propagation_model.hpp"
+#include "radio_model/radio_defaults.hpp"
 
 namespace wifislam::radio_model {
 
 struct WifiScannerOptions {
-  double sensitivity_dbm = -92.0;     // typical 802.11 receiver floor for beacons at 1 Mb/s
-  double dwell_per_channel_s = 0.1;   // passive-scan dwell (one 102.4 ms beacon interval)
+  double sensitivity_dbm = defaults::kSensitivityDbm;
+  double dwell_per_channel_s = defaults::kDwellPerChannelS;
   double detection_width_db = 3.0;    // how far above the floor detection becomes near-certain
   double beacon_interval_s = 0.1024;  // 802.11 default: 100 TU of 1.024 ms
   std::string sensor_id = "wifi0";

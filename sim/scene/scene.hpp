@@ -16,6 +16,7 @@
 #include "core/camera_intrinsics.hpp"
 #include "core/dataset_format.hpp"
 #include "radio_model/path_loss_choice.hpp"
+#include "radio_model/radio_defaults.hpp"
 #include "radio_model/wall_material.hpp"
 
 namespace wifislam::sim {
@@ -233,8 +234,8 @@ struct ColorSensorSpec {
 };
 
 struct WifiScannerSpec {
-  double sensitivity_dbm = -92.0;
-  double dwell_per_channel_s = 0.1;
+  double sensitivity_dbm = radio_model::defaults::kSensitivityDbm;
+  double dwell_per_channel_s = radio_model::defaults::kDwellPerChannelS;
   double scan_interval_s = 2.0;  // time from one scan's start to the next's
 };
 
@@ -286,12 +287,13 @@ struct RadioSpec {
   RadioEnvironment environment = RadioEnvironment::kOffice;
   std::optional<double> distance_coefficient;  // N; default chosen by the radio model
   std::optional<double> shadowing_sigma_db;    // default chosen by the radio model
-  double shadowing_decorrelation_m = 3.0;
-  double fast_fading_sigma_db = 2.0;   // per radio, shared by its BSSIDs (fading_process.hpp)
-  double fading_coherence_s = 3.0;     // at a still receiver
-  double bssid_spread_db = 0.5;        // per BSSID and scan, on top of the radio's fading
-  double people_disturbance_db = 0.0;  // optional temporal disturbance for open halls
-  WallLossOverrides wall_loss_db;      // itu_walls only; unset materials keep their laws
+  // Defaults: the radio model's (radio_model/radio_defaults.hpp).
+  double shadowing_decorrelation_m = radio_model::defaults::kShadowingDecorrelationM;
+  double fast_fading_sigma_db = radio_model::defaults::kFastFadingSigmaDb;     // per radio
+  double fading_coherence_s = radio_model::defaults::kFadingCoherenceS;        // still receiver
+  double bssid_spread_db = radio_model::defaults::kBssidSpreadDb;              // per BSSID and scan
+  double people_disturbance_db = radio_model::defaults::kPeopleDisturbanceDb;  // open halls
+  WallLossOverrides wall_loss_db;  // itu_walls only; unset materials keep their laws
 };
 
 struct Scene {
