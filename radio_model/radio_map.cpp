@@ -139,7 +139,8 @@ RadioMap compute_radio_map(const PropagationModel& model, const RadioMapArea& ar
           const std::size_t i = r * static_cast<std::size_t>(map.cols) + c;
           if (!compute[i]) continue;
           const Eigen::Vector2d xy = map.cell_center_m(c, static_cast<int>(r));
-          const Eigen::Vector3d rx(xy.x(), xy.y(), options.receiver_height_m);
+          const Eigen::Vector3d rx(xy.x(), xy.y(),
+                                   area.floor_elevation_m + options.receiver_height_m);
           const auto [best, index] = strongest(model, rx, options.band, only, prune, bounds);
           map.rssi_dbm[i] = static_cast<float>(best);
           map.best_ap_id[i] = index < aps.size() ? aps[index].id : -1;

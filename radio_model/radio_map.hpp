@@ -55,6 +55,9 @@ struct RadioMapArea {
   Eigen::Vector2d bounds_min_m = Eigen::Vector2d::Zero();
   Eigen::Vector2d bounds_max_m = Eigen::Vector2d::Zero();
   double ceiling_m = 0.0;
+  /// The floor the receiver height is measured from, in the model's frame (a storey's
+  /// elevation in a building of several; 0 for one).
+  double floor_elevation_m = 0.0;
   std::function<std::vector<bool>(const RadioMap& grid)> cells_to_compute;
 };
 

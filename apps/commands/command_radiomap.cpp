@@ -10,6 +10,7 @@
 #include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site_pictures.hpp"
 
@@ -24,6 +25,7 @@ struct RadiomapArgs {
   std::string band = "best";
   std::string output = "radiomap.png";
   std::string csv;
+  std::string level;  // empty: the route's level
 };
 
 void run_radiomap(const RadiomapArgs& args) {
@@ -31,6 +33,7 @@ void run_radiomap(const RadiomapArgs& args) {
   check_output_file(args.output, {args.scene_path});
   if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
   const sim::Scene scene = sim::load_scene_file(args.scene_path);
+  sim::require_level(scene, args.level, "--level");
   const double ceiling_m = scene.building.wall_height_m;
   if (args.height_m && !(*args.height_m > 0.0 && *args.height_m < ceiling_m)) {
     throw InvalidInputError(fmt::format(
@@ -46,7 +49,8 @@ void run_radiomap(const RadiomapArgs& args) {
   options.band = args.band == "2.4" ? radio_model::RadioMapBand::k2_4GHz
                  : args.band == "5" ? radio_model::RadioMapBand::k5GHz
                                     : radio_model::RadioMapBand::kBest;
-  const radio_model::RadioMap map = sim::draw_site_radio_map(site, options, args.output);
+  const radio_model::RadioMap map =
+      sim::draw_site_radio_map(site, options, args.output, args.level);
   fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
              map.rows, map.resolution_m, site.access_points().size());
   if (!args.csv.empty()) {
@@ -79,6 +83,9 @@ WIFISLAM_COMMAND(radiomap, 40) {
   app->add_option("--band", args->band, "Radio: 2.4, 5 or best (the stronger of the two)")
       ->capture_default_str()
       ->check(CLI::IsMember({"2.4", "5", "best"}));
+  app->add_option("--level", args->level,
+                  "Level to map (scene key levels:, by id); the receiver stands on its floor and "
+                  "hears the access points of every level; default: the route's level");
   app->add_option("-o,--output", args->output, "Heat-map PNG to write")->capture_default_str();
   app->add_option("--csv", args->csv, "Also write the grid as CSV (x_m,y_m,rssi_dbm,ap_id)");
   app->callback([args] {

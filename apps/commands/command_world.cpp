@@ -1,5 +1,5 @@
-// `wifislam world <scene.yaml> [--plan plan.png] [--svg]`: generate a scene's world, optionally
-// draw its floor plan, and print a summary.
+// `wifislam world <scene.yaml> [--plan plan.png] [--svg] [--level ID]`: generate a scene's world,
+// optionally draw its floor plan, and print a summary.
 #include <filesystem>
 
 #include <fmt/core.h>
@@ -7,6 +7,7 @@
 #include "apps/command_registry.hpp"
 #include "core/output_folder.hpp"
 #include "sim/robot/motion_profile.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
 #include "sim/site/site_pictures.hpp"
@@ -17,6 +18,7 @@ namespace {
 struct WorldArgs {
   std::string scene_path;
   std::string plan_path;
+  std::string level;  // empty: the route's level
   bool svg = false;
 };
 
@@ -24,6 +26,7 @@ void run_world(const WorldArgs& args) {
   using namespace wifislam;
   if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
   const sim::Scene scene = sim::load_scene_file(args.scene_path);
+  sim::require_level(scene, args.level, "--level");
   // The site as `generate` builds it: a route `world` accepts is one `generate` can drive, and
   // the access points are the ones the dataset's scans hear.
   const sim::Site site(scene);
@@ -32,18 +35,27 @@ void run_world(const WorldArgs& args) {
   const std::vector<radio_model::AccessPoint>& access_points = site.access_points();
   if (!args.plan_path.empty()) {
     const std::filesystem::path png = args.plan_path;
-    sim::draw_site_plan(site, png);
+    sim::draw_site_plan(site, png, args.level);
     fmt::print("wrote {}\n", png.string());
     if (args.svg && png.extension() != ".svg") {
       const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
       check_output_file(svg, {args.scene_path});
-      sim::draw_site_plan(site, svg);
+      sim::draw_site_plan(site, svg, args.level);
       fmt::print("wrote {}\n", svg.string());
     }
   }
   fmt::print("scene: {}\n{}route time: {:.1f} s ({} pauses)\naccess points: {}\n", scene.name,
              sim::summarize_world(world).to_text(), motion.end_time().seconds(),
              motion.pauses().size(), access_points.size());
+  if (!world.storeys.empty()) {
+    // The summary above is of the route's level; the others are in the radio's building.
+    std::string levels;
+    for (const sim::Storey& storey : world.storeys)
+      levels +=
+          fmt::format("{}{} at {:g} m{}", levels.empty() ? "" : ", ", storey.level_id,
+                      storey.elevation_m, storey.level_id == world.level_id ? " (route)" : "");
+    fmt::print("levels: {}\n", levels);
+  }
 }
 
 }  // namespace
@@ -57,5 +69,7 @@ WIFISLAM_COMMAND(world, 20) {
   app->add_option("--plan", args->plan_path,
                   "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)");
   app->add_flag("--svg", args->svg, "Also write the plan as SVG next to the PNG");
+  app->add_option("--level", args->level,
+                  "Level to draw (scene key levels:, by id); default: the route's level");
   app->callback([args] { run_world(*args); });
 }

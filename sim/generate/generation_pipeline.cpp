@@ -140,10 +140,11 @@ Pose GenerationPipeline::camera_pose(std::int64_t k) const {
 
 WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
   const auto t0 = WallClock::now();
-  const double antenna_height_m = site_->receiver_height_m();
+  // The radio works in the building's frame: the route level's floor is at its elevation.
+  const double antenna_z_m = site_->world().elevation_m + site_->receiver_height_m();
   auto position_at = [&](Timestamp t) {
     const RobotState s = site_->motion().state_at(t);
-    return Eigen::Vector3d(s.position_m.x(), s.position_m.y(), antenna_height_m);
+    return Eigen::Vector3d(s.position_m.x(), s.position_m.y(), antenna_z_m);
   };
   WifiScan scan = window.pause_index >= 0 && scene_.route.pause.scan_while_moving == false
                       ? scanner_->scan(window.start, position_at(window.start))

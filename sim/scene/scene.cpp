@@ -61,12 +61,23 @@ std::string Scene::where(std::string key_path) const {
   return source_path.empty() ? "scene" : source_path;
 }
 
+std::string Scene::key_path_in_file(const std::string& key_path) const {
+  // The longest renumbered item the path starts with ("spaces[0]" for "spaces[0].polygon_m").
+  for (std::size_t cut = key_path.size(); cut != std::string::npos && cut > 0;
+       cut = key_path.find_last_of(".[", cut - 1)) {
+    const auto it = key_paths_in_file.find(key_path.substr(0, cut));
+    if (it != key_paths_in_file.end()) return it->second + key_path.substr(cut);
+  }
+  return key_path;
+}
+
 void Scene::reject(const std::string& key_path, const std::string& message) const {
+  const std::string key = key_path_in_file(key_path);
   // As validate_scene does: a scene built in code has no file to point into.
   if (source_path.empty() && key_locations.empty()) {
-    throw InvalidInputError("scene: key '" + key_path + "': " + message);
+    throw InvalidInputError("scene: key '" + key + "': " + message);
   }
-  throw ParseError(where(key_path), key_path, message);
+  throw ParseError(where(key_path), key, message);
 }
 
 }  // namespace wifislam::sim

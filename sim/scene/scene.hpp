@@ -27,9 +27,28 @@ using radio_model::RadioEnvironment;
 using radio_model::wall_material_from_string;
 using radio_model::WallMaterial;
 
+/// One storey of a building of several (scene key `levels:`). Every piece of the plan (node,
+/// open area, space, door, obstacle, listed access point) names its level in its `level` key;
+/// corridors are on their nodes' level. A scene without `levels:` has one level, at 0 m, and
+/// its pieces name none. Coordinates are the building's: x and y shared by every level, z up.
+struct Level {
+  std::string id;
+  /// Height of the level's floor (top of its slab). Default: the level below's elevation plus
+  /// its storey height, 0 m for the first.
+  std::optional<double> elevation_m;
+  /// Floor to the next level's floor. Default: building.wall_height_m plus the slab thickness
+  /// of the next level in the file (of this one for the last), walls reaching the slab above.
+  std::optional<double> storey_height_m;
+  /// The slab under the level's floor, between it and the level below: its material costs a
+  /// floor's loss to a link that crosses it (radio_model/propagation_model.hpp).
+  double slab_thickness_m = 0.3;
+  WallMaterial slab_material = WallMaterial::kConcrete;
+};
+
 struct SceneNode {
   std::string id;
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();
+  std::string level = {};  // empty: the first level
 };
 
 /// A row of rooms along one side of a corridor, between `from_m` and `to_m` measured along
@@ -62,6 +81,7 @@ struct Corridor {
 /// or clockwise, at least 3 vertices), with optional square pillars inside.
 struct OpenArea {
   std::string id;
+  std::string level = {};  // empty: the first level
   std::vector<Eigen::Vector2d> polygon_m;
   WallMaterial material = WallMaterial::kConcrete;
   struct Pillar {
@@ -84,6 +104,7 @@ const char* to_string(SpaceKind kind);
 /// two spaces meant to share a wall must lie exactly one wall thickness apart.
 struct Space {
   std::string id;
+  std::string level = {};  // empty: the first level
   SpaceKind kind = SpaceKind::kRoom;
   std::vector<Eigen::Vector2d> polygon_m;
   WallMaterial material = WallMaterial::kBrick;
@@ -96,11 +117,13 @@ struct SpaceDoor {
   Eigen::Vector2d from_m = Eigen::Vector2d::Zero();
   Eigen::Vector2d to_m = Eigen::Vector2d::Zero();
   bool open = false;
+  std::string level = {};  // empty: the first level
 };
 
 /// A solid block inside free space (a column, a shaft, a stair core), as a simple polygon.
 struct Obstacle {
   std::vector<Eigen::Vector2d> polygon_m;
+  std::string level = {};  // empty: the first level
 };
 
 struct Building {
@@ -153,10 +176,13 @@ enum class ApPlacement { kExplicit, kGrid, kRandom, kRooms, kColinear };
 const char* to_string(ApPlacement placement);
 
 struct AccessPointSpec {
-  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d position_m = Eigen::Vector3d::Zero();  // z: height above its level's floor
   std::optional<double> tx_power_dbm;
+  std::string level = {};  // empty: the first level
 };
 
+/// Generated placements (all but explicit) place `count` access points on every level, each
+/// level's from its own plan and its own stream (sim/site/ap_placement.hpp).
 struct AccessPoints {
   ApPlacement placement = ApPlacement::kRooms;
   int count = 0;
@@ -188,6 +214,8 @@ struct Route {
   double turn_radius_m = 0.6;  // corners are rounded with this radius
   double min_wall_clearance_m = 0.3;
   PauseSpec pause;
+  /// The level the route runs on (empty: the first level). A route stays on one level.
+  std::string level;
 };
 
 struct CameraSpec {
@@ -302,6 +330,7 @@ struct Scene {
   std::string description;
   std::uint64_t seed = 1;
   Building building;
+  std::vector<Level> levels;  // empty: one level at 0 m (sim/scene/scene_levels.hpp)
   std::vector<SceneNode> nodes;
   std::vector<Corridor> corridors;
   std::vector<OpenArea> open_areas;
@@ -319,6 +348,9 @@ struct Scene {
   /// "file:line:column" of every key path the loader read (e.g. "route.nodes[2]"), so that
   /// problems found after loading (the floor plan, the route, AP placement) are located too.
   std::map<std::string, std::string> key_locations;
+  /// In one level's part of a scene (scene_on_level): the list items renumbered, new key path to
+  /// the file's ("spaces[0]" -> "spaces[7]"), so that messages name the keys the file has.
+  std::map<std::string, std::string> key_paths_in_file;
 
   /// Where `key_path`, or its closest parent key found in the file, is written:
   /// "file:line:column", else the file, else "scene" (built in code).
@@ -326,6 +358,8 @@ struct Scene {
   /// Throws ParseError at `key_path` (exit 2 on the command line): bad input found after loading.
   /// For a scene built in code, InvalidInputError naming the key (as validate_scene does).
   [[noreturn]] void reject(const std::string& key_path, const std::string& message) const;
+  /// `key_path` as the file writes it (key_paths_in_file; unchanged outside a level's part).
+  std::string key_path_in_file(const std::string& key_path) const;
 
   const SceneNode* find_node(const std::string& id) const;
   const Corridor* find_corridor(const std::string& id) const;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
 #include "core/yaml_document.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_schema.hpp"
 
 namespace wifislam::sim {
@@ -423,10 +425,12 @@ std::set<std::string> check_nodes(const Scene& scene, const Locator& locate) {
   }
   // Two nodes at one spot make two corridor ends that the graph does not join, and a route through
   // both turns back where it seems to go on.
-  std::map<std::pair<double, double>, std::size_t> node_at;
+  // Nodes of different levels may stand one above the other.
+  std::map<std::tuple<std::string, double, double>, std::size_t> node_at;
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     const Eigen::Vector2d& p = scene.nodes[i].position_m;
-    const auto [other, fresh] = node_at.emplace(std::pair{p.x(), p.y()}, i);
+    const auto [other, fresh] =
+        node_at.emplace(std::tuple{level_or_first(scene, scene.nodes[i].level), p.x(), p.y()}, i);
     if (!fresh) {
       invalid(locate, fmt::format("nodes[{}].position_m", i),
               fmt::format("node '{}' is at the same spot as node '{}' (nodes[{}]); use one node "
@@ -475,6 +479,14 @@ void check_corridor(const Scene& scene, std::size_t i, const std::set<std::strin
   }
   if (c.from == c.to)
     invalid(locate, path + ".to", "corridor joins node '" + c.from + "' to itself");
+  const std::string from_level = level_or_first(scene, scene.find_node(c.from)->level);
+  const std::string to_level = level_or_first(scene, scene.find_node(c.to)->level);
+  if (from_level != to_level) {
+    invalid(locate, path + ".to",
+            fmt::format("corridor '{}' joins node '{}' on level '{}' to node '{}' on level '{}'; a "
+                        "corridor stays on one level",
+                        c.id, c.from, from_level, c.to, to_level));
+  }
   const double length_m =
       (scene.find_node(c.to)->position_m - scene.find_node(c.from)->position_m).norm();
   if (length_m < 0.5)
@@ -500,8 +512,8 @@ Adjacency check_corridors(const Scene& scene, const std::set<std::string>& node_
   return adjacency;
 }
 
-/// Every node is on a corridor, and the corridor graph is connected: the robot and the radio see
-/// one building.
+/// Every node is on a corridor, and each level's corridor graph is connected: the robot and the
+/// radio see one building. (Corridors stay on one level, so a level's nodes reach only its own.)
 void check_graph_connected(const Scene& scene, const Adjacency& adjacency, const Locator& locate) {
   if (scene.nodes.empty()) return;  // a scene of spaces only
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
@@ -510,20 +522,26 @@ void check_graph_connected(const Scene& scene, const Adjacency& adjacency, const
               "node '" + scene.nodes[i].id + "' is not joined to any corridor");
     }
   }
-  std::set<std::string> reached{scene.nodes.front().id};
-  std::vector<std::string> frontier{scene.nodes.front().id};
-  while (!frontier.empty()) {
-    const std::string n = frontier.back();
-    frontier.pop_back();
-    // Every node is a key (checked above), so at() finds each one.
-    for (const auto& m : adjacency.at(n))
-      if (reached.insert(m).second) frontier.push_back(m);
+  std::map<std::string, std::string> first_node_of_level;
+  std::set<std::string> reached;
+  for (const SceneNode& start : scene.nodes) {
+    if (!first_node_of_level.emplace(level_or_first(scene, start.level), start.id).second) continue;
+    reached.insert(start.id);
+    std::vector<std::string> frontier{start.id};
+    while (!frontier.empty()) {
+      const std::string n = frontier.back();
+      frontier.pop_back();
+      // Every node is a key (checked above), so at() finds each one.
+      for (const auto& m : adjacency.at(n))
+        if (reached.insert(m).second) frontier.push_back(m);
+    }
   }
   for (std::size_t i = 0; i < scene.nodes.size(); ++i) {
     if (!reached.count(scene.nodes[i].id)) {
       invalid(locate, fmt::format("nodes[{}]", i),
               "the corridor graph is disconnected: node '" + scene.nodes[i].id +
-                  "' cannot be reached from node '" + scene.nodes.front().id + "'");
+                  "' cannot be reached from node '" +
+                  first_node_of_level.at(level_or_first(scene, scene.nodes[i].level)) + "'");
     }
   }
 }
@@ -566,6 +584,13 @@ void check_route(const Scene& scene, const std::set<std::string>& node_ids, cons
   for (std::size_t i = 0; i < route.size(); ++i) {
     if (!node_ids.count(route[i])) {
       invalid(locate, fmt::format("route.nodes[{}]", i), "no node with id '" + route[i] + "'");
+    }
+    const std::string node_level = level_or_first(scene, scene.find_node(route[i])->level);
+    if (node_level != route_level(scene)) {
+      invalid(locate, fmt::format("route.nodes[{}]", i),
+              fmt::format("node '{}' is on level '{}', the route on level '{}'; a route runs on "
+                          "one level (route.level)",
+                          route[i], node_level, route_level(scene)));
     }
     if (i > 0 && !scene.corridor_between(route[i - 1], route[i])) {
       invalid(locate, fmt::format("route.nodes[{}]", i),
@@ -657,6 +682,74 @@ void check_radio(const Scene& scene, const Locator& locate) {
   }
 }
 
+/// Level ids are unique, levels do not overlap, and every piece names a level the scene has.
+void check_levels(const Scene& scene, const Locator& locate) {
+  const auto missing = [&](const std::string& key, const std::string& level) {
+    if (level.empty()) return;
+    if (scene.levels.empty()) {
+      invalid(locate, key,
+              "names level '" + level + "', but the scene has no `levels:` (one level, unnamed)");
+    }
+    if (level_index(scene, level) < 0) {
+      std::string ids;
+      for (const Level& l : scene.levels) ids += (ids.empty() ? "'" : ", '") + l.id + "'";
+      invalid(locate, key, "no level '" + level + "' (levels: " + ids + ")");
+    }
+  };
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < scene.levels.size(); ++i) {
+    if (!ids.insert(scene.levels[i].id).second)
+      invalid(locate, fmt::format("levels[{}].id", i), "duplicate level id");
+  }
+  const std::vector<ResolvedLevel> levels = resolved_levels(scene);
+  const double walls_m = scene.building.wall_height_m;
+  for (std::size_t i = 0; i < scene.levels.size(); ++i) {
+    if (levels[i].storey_height_m < walls_m) {
+      invalid(locate, fmt::format("levels[{}].storey_height_m", i),
+              fmt::format("{} m is lower than the walls (building.wall_height_m {} m)",
+                          levels[i].storey_height_m, walls_m));
+    }
+    // Level i takes its slab and its walls: from elevation - slab to elevation + wall height.
+    for (std::size_t j = 0; j < i; ++j) {
+      const ResolvedLevel &a = levels[i], &b = levels[j];
+      const bool apart = a.elevation_m + walls_m <= b.elevation_m - b.slab_thickness_m + 1e-9 ||
+                         b.elevation_m + walls_m <= a.elevation_m - a.slab_thickness_m + 1e-9;
+      if (!apart) {
+        invalid(locate, fmt::format("levels[{}].elevation_m", i),
+                fmt::format("level '{}' (slab from {} m, walls up to {} m) overlaps level '{}' "
+                            "(levels[{}]: slab from {} m, walls up to {} m)",
+                            a.id, a.elevation_m - a.slab_thickness_m, a.elevation_m + walls_m, b.id,
+                            j, b.elevation_m - b.slab_thickness_m, b.elevation_m + walls_m));
+      }
+    }
+  }
+  for (std::size_t i = 0; i < scene.nodes.size(); ++i)
+    missing(fmt::format("nodes[{}].level", i), scene.nodes[i].level);
+  for (std::size_t i = 0; i < scene.open_areas.size(); ++i)
+    missing(fmt::format("open_areas[{}].level", i), scene.open_areas[i].level);
+  for (std::size_t i = 0; i < scene.spaces.size(); ++i)
+    missing(fmt::format("spaces[{}].level", i), scene.spaces[i].level);
+  for (std::size_t i = 0; i < scene.doors.size(); ++i)
+    missing(fmt::format("doors[{}].level", i), scene.doors[i].level);
+  for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
+    missing(fmt::format("obstacles[{}].level", i), scene.obstacles[i].level);
+  for (std::size_t i = 0; i < scene.access_points.explicit_list.size(); ++i)
+    missing(fmt::format("access_points.list[{}].level", i),
+            scene.access_points.explicit_list[i].level);
+  missing("route.level", scene.route.level);
+  // Every level has a plan: the world builds each one.
+  for (std::size_t i = 0; i < scene.levels.size(); ++i) {
+    const std::string& id = scene.levels[i].id;
+    bool has_plan = false;
+    for (const SceneNode& n : scene.nodes) has_plan |= level_or_first(scene, n.level) == id;
+    for (const Space& sp : scene.spaces) has_plan |= level_or_first(scene, sp.level) == id;
+    if (!has_plan) {
+      invalid(locate, fmt::format("levels[{}]", i),
+              "level '" + id + "' has no corridors' nodes and no spaces");
+    }
+  }
+}
+
 /// Checks what the schema's per-key limits cannot: cross-references, the graph, and relations
 /// between keys. The checks run in this order, so the first problem in it is the one reported.
 void validate_scene_impl(const Scene& scene, const Locator& locate) {
@@ -666,6 +759,7 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
             fmt::format("expected a whole number from 0 to {}, got {}", dataset::kMaxTimeOriginS,
                         scene.sensors.time_origin_s));
   }
+  check_levels(scene, locate);
   const std::set<std::string> node_ids = check_nodes(scene, locate);
   const Adjacency adjacency = check_corridors(scene, node_ids, locate);
   check_graph_connected(scene, adjacency, locate);
@@ -698,6 +792,12 @@ Scene load_scene_node(const YAML::Node& root, const std::string& source_name) {
   for (const auto& [key_path, mark] : sources.marks)
     scene.key_locations[key_path] = sources.where(mark);
   validate_scene_impl(scene, [&](const std::string& key) { return sources.where(key); });
+  // Level defaults written out, so the resolved scene says where every level stands.
+  const std::vector<ResolvedLevel> levels = resolved_levels(scene);
+  for (std::size_t i = 0; i < scene.levels.size(); ++i) {
+    scene.levels[i].elevation_m = levels[i].elevation_m;
+    scene.levels[i].storey_height_m = levels[i].storey_height_m;
+  }
   if (scene.access_points.placement == ApPlacement::kExplicit && scene.access_points.count == 0) {
     scene.access_points.count = static_cast<int>(scene.access_points.explicit_list.size());
   }

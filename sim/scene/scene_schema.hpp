@@ -65,11 +65,22 @@ void visit(V& v, Building& b) {
 }
 
 template <class V>
+void visit(V& v, Level& l) {
+  v.required();
+  v.text("id", l.id);
+  v.optional_number("elevation_m", l.elevation_m, Limits{-1000.0, 1000.0});
+  v.optional_number("storey_height_m", l.storey_height_m, Limits{1.8, 50.0});
+  v.number("slab_thickness_m", l.slab_thickness_m, Limits{0.02, 3.0});
+  v.choice("slab_material", l.slab_material, material_names());
+}
+
+template <class V>
 void visit(V& v, SceneNode& n) {
   v.required();
   v.text("id", n.id);
   v.required();
   v.vec2("position_m", n.position_m, kCoordinateM);
+  v.text("level", n.level);
 }
 
 template <class V>
@@ -112,6 +123,7 @@ template <class V>
 void visit(V& v, OpenArea& a) {
   v.required();
   v.text("id", a.id);
+  v.text("level", a.level);
   v.required();
   v.polygon("polygon_m", a.polygon_m, kCoordinateM);
   v.choice("material", a.material, material_names());
@@ -122,6 +134,7 @@ template <class V>
 void visit(V& v, Space& s) {
   v.required();
   v.text("id", s.id);
+  v.text("level", s.level);
   v.choice("kind", s.kind,
            Names<SpaceKind>{{SpaceKind::kCorridor, "corridor"},
                             {SpaceKind::kArea, "area"},
@@ -139,12 +152,14 @@ void visit(V& v, SpaceDoor& d) {
   v.required();
   v.vec2("to_m", d.to_m, kCoordinateM);
   v.boolean("open", d.open);
+  v.text("level", d.level);
 }
 
 template <class V>
 void visit(V& v, Obstacle& o) {
   v.required();
   v.polygon("polygon_m", o.polygon_m, kCoordinateM);
+  v.text("level", o.level);
 }
 
 template <class V>
@@ -182,6 +197,7 @@ void visit(V& v, AccessPointSpec& s) {
   v.required();
   v.vec3("position_m", s.position_m, kCoordinateM, kHeightM);
   v.optional_number("tx_power_dbm", s.tx_power_dbm, kTxPowerDbm);
+  v.text("level", s.level);
 }
 
 template <class V>
@@ -220,6 +236,7 @@ void visit(V& v, Route& r) {
   v.number("turn_radius_m", r.turn_radius_m, Limits{0.0, 20.0});
   v.number("min_wall_clearance_m", r.min_wall_clearance_m, Limits{0.0, 25.0});
   v.object("pause", r.pause);
+  v.text("level", r.level);
 }
 
 template <class V>
@@ -338,6 +355,7 @@ void visit(V& v, Scene& s) {
   v.text("description", s.description);
   v.uint64("seed", s.seed);
   v.object("building", s.building);
+  v.list_if_any("levels", s.levels);
   // A scene has corridors (on nodes) or spaces, or both (validate_scene checks).
   v.list("nodes", s.nodes);
   v.list("corridors", s.corridors);

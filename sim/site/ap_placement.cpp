@@ -11,6 +11,7 @@
 
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
@@ -307,6 +308,38 @@ std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene,
       tx = *spec.explicit_list[i].tx_power_dbm;
     aps.push_back(radio_model::make_access_point(static_cast<int>(i), positions[i], tx,
                                                  spec.ssids_per_radio, seed, macs));
+  }
+  return aps;
+}
+
+std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene, const World& world) {
+  if (world.storeys.empty()) return make_access_points(scene, world.plan);
+  const std::uint64_t seed = access_point_seed(scene);
+  radio_model::MacAllocator macs(seed);
+  std::vector<radio_model::AccessPoint> aps;
+  for (std::size_t k = 0; k < world.storeys.size(); ++k) {
+    const Storey& storey = world.storeys[k];
+    const Scene part = scene_on_level(scene, storey.level_id);
+    const AccessPoints& spec = part.access_points;
+    // The lowest storey places from the scene's seed, as a one-level building does; every other
+    // from a stream of its own, so adding a level moves no AP of another.
+    const std::uint64_t level_seed =
+        k == 0 ? seed : Rng::stream(seed, "access_points/level/" + storey.level_id).next_u64();
+    std::vector<Eigen::Vector3d> positions;
+    try {
+      positions = place_access_point_positions(spec, storey.plan, level_seed);
+    } catch (const InvalidInputError& e) {
+      part.reject("access_points", fmt::format("level '{}': {}", storey.level_id, e.what()));
+    }
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      double tx = spec.tx_power_dbm;
+      if (spec.placement == ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
+        tx = *spec.explicit_list[i].tx_power_dbm;
+      Eigen::Vector3d at = positions[i];
+      at.z() += storey.elevation_m;  // heights are above the level's floor
+      aps.push_back(radio_model::make_access_point(static_cast<int>(aps.size()), at, tx,
+                                                   spec.ssids_per_radio, seed, macs));
+    }
   }
   return aps;
 }

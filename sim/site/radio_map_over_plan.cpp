@@ -42,8 +42,9 @@ std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& 
 
 }  // namespace
 
-radio_model::RadioMapArea radio_map_area(const FloorPlan& plan) {
+radio_model::RadioMapArea radio_map_area(const FloorPlan& plan, double floor_elevation_m) {
   radio_model::RadioMapArea area;
+  area.floor_elevation_m = floor_elevation_m;
   area.bounds_min_m = plan.bounds_min_m;
   area.bounds_max_m = plan.bounds_max_m;
   area.ceiling_m = plan.wall_height_m;
@@ -57,8 +58,9 @@ radio_model::RadioMapArea radio_map_area(const FloorPlan& plan) {
 
 radio_model::RadioMap compute_radio_map(const radio_model::PropagationModel& model,
                                         const FloorPlan& plan,
-                                        const radio_model::RadioMapOptions& options) {
-  return radio_model::compute_radio_map(model, radio_map_area(plan), options);
+                                        const radio_model::RadioMapOptions& options,
+                                        double floor_elevation_m) {
+  return radio_model::compute_radio_map(model, radio_map_area(plan, floor_elevation_m), options);
 }
 
 void write_radio_map_png(const radio_model::RadioMap& map, const FloorPlan& plan,

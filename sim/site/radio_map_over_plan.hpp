@@ -15,12 +15,14 @@ namespace wifislam::sim {
 
 /// The plan's bounds, its wall height as the ceiling, and its free space rasterised by cairo (a
 /// cell is computed when its centre is in free space; a plan without free space computes all).
-radio_model::RadioMapArea radio_map_area(const FloorPlan& plan);
+/// `floor_elevation_m`: the plan's floor in the radio model's frame (a storey's elevation).
+radio_model::RadioMapArea radio_map_area(const FloorPlan& plan, double floor_elevation_m = 0.0);
 
-/// compute_radio_map over radio_map_area(plan).
+/// compute_radio_map over radio_map_area(plan, floor_elevation_m).
 radio_model::RadioMap compute_radio_map(const radio_model::PropagationModel& model,
                                         const FloorPlan& plan,
-                                        const radio_model::RadioMapOptions& options);
+                                        const radio_model::RadioMapOptions& options,
+                                        double floor_elevation_m = 0.0);
 
 /// Heat map PNG over the plan (free space coloured, walls dark, APs marked, colour bar), written
 /// atomically. Cells below `floor_dbm` are left grey.

@@ -1,5 +1,9 @@
 #include "sim/site/radio_options.hpp"
 
+#include <algorithm>
+
+#include "sim/scene/scene_levels.hpp"
+
 namespace wifislam::sim {
 
 radio_model::PropagationOptions propagation_options(const Scene& scene) {
@@ -15,6 +19,11 @@ radio_model::PropagationOptions propagation_options(const Scene& scene) {
   o.fading_coherence_s = radio.fading_coherence_s;
   o.bssid_spread_db = radio.bssid_spread_db;
   o.people_disturbance_db = radio.people_disturbance_db;
+  if (has_levels(scene)) {
+    for (const ResolvedLevel& level : resolved_levels(scene))
+      o.storey_elevations_m.push_back(level.elevation_m);
+    std::sort(o.storey_elevations_m.begin(), o.storey_elevations_m.end());
+  }
   for (int m = 0; m < radio_model::kWallMaterialCount; ++m) {
     if (const auto& loss_db = radio.wall_loss_db.by_material_db[m])
       o.wall_losses.laws[m] = radio_model::WallLossLaw::linear(*loss_db, 0.0);  // flat in frequency

@@ -13,9 +13,11 @@ namespace wifislam::sim {
 namespace {
 
 std::unique_ptr<radio_model::PropagationModel> make_radio(const Scene& scene, const World& world) {
+  Eigen::Vector2d bounds_min_m, bounds_max_m;
+  building_bounds(world, bounds_min_m, bounds_max_m);
   return std::make_unique<radio_model::PropagationModel>(
-      radio_wall_mesh(world.mesh), world.plan.bounds_min_m, world.plan.bounds_max_m,
-      make_access_points(scene, world.plan), propagation_options(scene), scene.seed);
+      radio_wall_mesh(world), bounds_min_m, bounds_max_m, make_access_points(scene, world),
+      propagation_options(scene), scene.seed);
 }
 
 }  // namespace

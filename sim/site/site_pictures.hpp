@@ -2,21 +2,33 @@
 // The pictures of a site, made one way for every command that shows them (world, radiomap,
 // demo): the floor plan with the site's access points, and the radio map with the cells below
 // the scanner's sensitivity left grey (the floor of what a dataset's scans can hear).
+//
+// A building of several levels draws one level per picture: `level` names it (empty: the
+// route's level). The access points drawn are that level's; a radio map of a level hears every
+// level's, through the slabs.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "radio_model/radio_map.hpp"
 #include "sim/site/site.hpp"
 
 namespace wifislam::sim {
 
-/// The plan (walls, doors, lights, route, access points), titled "<scene> (seed N)"; PNG, or SVG
-/// when `path` ends in ".svg".
-void draw_site_plan(const Site& site, const std::filesystem::path& path);
+/// The ids of the site's levels, lowest first (empty for a one-level scene).
+std::vector<std::string> site_level_ids(const Site& site);
 
-/// Computes the site's radio map with `options` and draws it as a PNG at `path`; returns the map.
+/// The plan (walls, doors, lights, route, access points), titled "<scene> (seed N)"; PNG, or SVG
+/// when `path` ends in ".svg". Throws InvalidInputError for a level the scene does not have.
+void draw_site_plan(const Site& site, const std::filesystem::path& path,
+                    const std::string& level = "");
+
+/// Computes the site's radio map on `level` with `options` (receiver height above that level's
+/// floor) and draws it as a PNG at `path`; returns the map.
 radio_model::RadioMap draw_site_radio_map(const Site& site,
                                           const radio_model::RadioMapOptions& options,
-                                          const std::filesystem::path& path);
+                                          const std::filesystem::path& path,
+                                          const std::string& level = "");
 
 }  // namespace wifislam::sim

@@ -1,11 +1,13 @@
 #include "sim/world/world_generator.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 #include <fmt/format.h>
 
 #include "core/dataset_format.hpp"
 #include "core/error.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/floor_plan_builder.hpp"
 #include "sim/world/mesh_builder.hpp"
@@ -14,12 +16,49 @@
 
 namespace wifislam::sim {
 
+namespace {
+
+Mesh raised_by(Mesh mesh, double dz_m) {
+  for (Eigen::Vector3f& p : mesh.positions_m) p.z() += static_cast<float>(dz_m);
+  return mesh;
+}
+
+}  // namespace
+
 World generate_world(const Scene& scene) {
   World world;
   world.seed = scene.seed;
-  world.plan = build_floor_plan(scene);
-  world.route = build_route(scene, world.plan);
-  world.mesh = build_mesh(scene, world.plan);
+  if (!has_levels(scene)) {
+    world.plan = build_floor_plan(scene);
+    world.route = build_route(scene, world.plan);
+    world.mesh = build_mesh(scene, world.plan);
+    return world;
+  }
+  // Every level is built as a one-level scene of its own pieces (scene_on_level); the route's
+  // level also gets the route. Lowest first: the radio model takes storeys in that order.
+  std::vector<ResolvedLevel> levels = resolved_levels(scene);
+  std::stable_sort(
+      levels.begin(), levels.end(),
+      [](const ResolvedLevel& a, const ResolvedLevel& b) { return a.elevation_m < b.elevation_m; });
+  world.level_id = route_level(scene);
+  for (const ResolvedLevel& level : levels) {
+    const Scene part = scene_on_level(scene, level.id);
+    Storey storey;
+    storey.level_id = level.id;
+    storey.elevation_m = level.elevation_m;
+    storey.slab_thickness_m = level.slab_thickness_m;
+    storey.slab_material = level.slab_material;
+    storey.plan = build_floor_plan(part);
+    Mesh mesh = build_mesh(part, storey.plan);
+    if (level.id == world.level_id) {
+      world.plan = storey.plan;
+      world.route = build_route(part, world.plan);
+      world.elevation_m = level.elevation_m;
+      world.mesh = mesh;
+    }
+    storey.mesh = raised_by(std::move(mesh), level.elevation_m);
+    world.storeys.push_back(std::move(storey));
+  }
   return world;
 }
 

@@ -121,11 +121,38 @@ struct RoutePath {
   double length_m() const { return arc_length_m.empty() ? 0.0 : arc_length_m.back(); }
 };
 
+/// One level of a building of several (scene `levels:`): its plan, and its mesh in the
+/// building's frame (z from the level's elevation). The radio model sees every storey's walls
+/// and the slabs between them; the camera sees only the route's level.
+struct Storey {
+  std::string level_id;
+  double elevation_m = 0.0;
+  double slab_thickness_m = 0.0;
+  WallMaterial slab_material = WallMaterial::kConcrete;
+  FloorPlan plan;
+  Mesh mesh;
+};
+
 struct World {
+  /// The route's level: plan, mesh and route in the level's own frame (floor at z = 0), the
+  /// frame of the camera, the robot and the ground truth.
   FloorPlan plan;
   Mesh mesh;
   RoutePath route;
   std::uint64_t seed = 0;
+  /// The route level's floor in the building's frame (0 for a one-level scene): a receiver at
+  /// height h above it stands at z = elevation_m + h among the storeys.
+  double elevation_m = 0.0;
+  std::string level_id;  // empty for a one-level scene
+  /// Every level, lowest first, for a scene with `levels:`; empty for a one-level scene, whose
+  /// plan and mesh above are the whole building.
+  std::vector<Storey> storeys;
+  /// The storey of level `id` (nullptr when there is none).
+  const Storey* storey(const std::string& id) const {
+    for (const Storey& s : storeys)
+      if (s.level_id == id) return &s;
+    return nullptr;
+  }
 };
 
 }  // namespace wifislam::sim
