@@ -1,10 +1,12 @@
 #include "floorplan/imported_scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
 #include <fmt/format.h>
 
+#include "core/error.hpp"
 #include "floorplan/route_planner.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/floor_plan_builder.hpp"
@@ -55,6 +57,54 @@ sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options)
     for (const Ring& path : plan.paths_m) visit.insert(visit.end(), path.begin(), path.end());
   scene.route.waypoints_m = plan_tour(floor_plan, visit, tour, keep_order);
   sim::build_route(scene, floor_plan);  // the same check generate makes
+  return scene;
+}
+
+sim::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
+                                   const std::string& route_level, const SceneOptions& options) {
+  const auto route_plan = std::find_if(
+      levels.begin(), levels.end(), [&](const ImportedPlan& p) { return p.level == route_level; });
+  if (route_plan == levels.end())
+    throw InvalidInputError("import: the route's level '" + route_level + "' was not imported");
+  // The route level's scene as a one-level import makes it: route, access point count, defaults.
+  sim::Scene scene = imported_scene(*route_plan, options);
+  scene.name = options.name.empty() ? default_name(*route_plan) + "_building" : options.name;
+  std::string names;
+  for (const ImportedPlan& p : levels) names += (names.empty() ? "" : ", ") + p.level;
+  scene.description =
+      fmt::format("Levels {} of {} ({} plan), imported by wifislam import; the route on level {}.",
+                  names, std::filesystem::path(route_plan->source).filename().string(),
+                  to_string(route_plan->format), route_level);
+  scene.spaces.clear();
+  scene.doors.clear();
+  scene.obstacles.clear();
+  // Rounded to the micrometre, so the scene says 3.1 m, not 3.0999999999999996.
+  const auto micrometres = [](double m) { return std::round(m * 1e6) / 1e6; };
+  const double storey_m = micrometres(options.wall_height_m + kImportedSlabThicknessM);
+  for (std::size_t k = 0; k < levels.size(); ++k) {
+    const ImportedPlan& plan = levels[k];
+    sim::Level level;
+    level.id = plan.level;
+    level.elevation_m = micrometres(static_cast<double>(k) * storey_m);
+    level.storey_height_m = storey_m;
+    level.slab_thickness_m = kImportedSlabThicknessM;
+    level.slab_material = sim::WallMaterial::kConcrete;
+    scene.levels.push_back(level);
+    for (sim::Space space : plan.spaces) {
+      space.id = plan.level + "/" + space.id;
+      space.level = plan.level;
+      scene.spaces.push_back(std::move(space));
+    }
+    for (sim::SpaceDoor door : plan.doors) {
+      door.level = plan.level;
+      scene.doors.push_back(door);
+    }
+    for (sim::Obstacle obstacle : plan.obstacles) {
+      obstacle.level = plan.level;
+      scene.obstacles.push_back(std::move(obstacle));
+    }
+  }
+  scene.route.level = route_level;
   return scene;
 }
 

@@ -28,6 +28,19 @@ struct SceneOptions {
 /// route builder `generate` uses. Throws InvalidInputError when no route fits.
 sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options);
 
+/// Storeys of an imported building stand this far apart when the plan gives no heights (none of
+/// the shipped formats does): the scene's wall height plus a 0.3 m slab, written into the scene.
+inline constexpr double kImportedSlabThicknessM = 0.3;
+
+/// A whole building: every level of `levels` (one import per level, all in one frame), each with
+/// its spaces, doors and obstacles tagged with its level, stacked kImportedSlabThicknessM + wall
+/// height apart in the order given (lowest first), concrete slabs between them. The route is
+/// planned on `route_level` as imported_scene plans it; the access points are placed by rooms on
+/// every level, `options.access_points` each (default: one per 100 m^2 of the route level's free
+/// space, at least 4). Space ids are prefixed with their level ("<level>/<id>") to stay unique.
+sim::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
+                                   const std::string& route_level, const SceneOptions& options);
+
 /// The scene file's text: a comment header (source, level, projection, notes, attribution),
 /// then the resolved scene.
 std::string imported_scene_yaml(const ImportedPlan& plan, const sim::Scene& scene,

@@ -23,6 +23,7 @@ struct ImportArgs {
   int laps = 2;
   int access_points = 0;
   double wall_thickness_m = 0.15;
+  bool all_levels = false;
 };
 
 /// "x,y;x,y;..." in the scene's metres.
@@ -73,19 +74,48 @@ void run_import(const ImportArgs& args) {
   if (args.format == "imdf") options.format = floorplan::PlanFormat::kImdf;
   if (!args.level.empty()) options.level = args.level;
   options.wall_thickness_m = args.wall_thickness_m;
-  const floorplan::ImportedPlan plan = floorplan::import_plan(args.plan_path, options);
+  floorplan::ImportedPlan plan = floorplan::import_plan(args.plan_path, options);
 
   floorplan::SceneOptions scene_options;
   scene_options.name = args.name;
   scene_options.laps = args.laps;
   if (args.access_points > 0) scene_options.access_points = args.access_points;
   if (!args.route.empty()) scene_options.route_m = parse_route(args.route);
-  const sim::Scene scene = floorplan::imported_scene(plan, scene_options);
+  std::vector<std::filesystem::path> inputs = plan.input_files;
+  sim::Scene scene;
+  if (!args.all_levels) {
+    scene = floorplan::imported_scene(plan, scene_options);
+  } else {
+    // Every level the plan has, lowest first, each imported as --level would; the route runs on
+    // the level chosen above (--level, else the default level).
+    std::vector<floorplan::ImportedPlan> levels;
+    for (const std::string& level : plan.levels) {
+      floorplan::ImportOptions level_options = options;
+      level_options.level = level;
+      try {
+        levels.push_back(
+            level == plan.level ? plan : floorplan::import_plan(args.plan_path, level_options));
+      } catch (const ParseError& e) {
+        // A level with nothing to build (stairs only, an outline) is left out, and said so.
+        plan.notes.push_back(fmt::format("level {} left out: {}", level, e.what()));
+        continue;
+      }
+      inputs.insert(inputs.end(), levels.back().input_files.begin(),
+                    levels.back().input_files.end());
+    }
+    scene = floorplan::imported_building_scene(levels, plan.level, scene_options);
+    std::string names;
+    for (const auto& l : levels) names += (names.empty() ? "" : ", ") + l.level;
+    plan.notes.push_back(fmt::format(
+        "levels {} stacked {:g} m apart (wall height {:g} m and a {:g} m concrete slab): the plan "
+        "gives no heights",
+        names, scene_options.wall_height_m + floorplan::kImportedSlabThicknessM,
+        scene_options.wall_height_m, floorplan::kImportedSlabThicknessM));
+  }
   const std::string text = floorplan::imported_scene_yaml(plan, scene, attribution_lines(args));
   sim::load_scene_yaml(text, args.output_path);  // what we write, our loader reads
   // Now that the import knows every file it read (main.json, level and paths files beside the
   // plan, an IMDF folder's files, the attribution), none of them may be the output.
-  std::vector<std::filesystem::path> inputs = plan.input_files;
   if (args.attribution.empty()) inputs.push_back(attribution_file(args));
   check_output_file(args.output_path, inputs);
   write_file_atomic(args.output_path, text);
@@ -134,6 +164,9 @@ WIFISLAM_COMMAND(import, 15) {
                   "Level to import (OSM level=* value; WRLD level name from main.json; IMDF level "
                   "short name, id or ordinal). Default: the lowest level with corridors (OSM, "
                   "IMDF), the given file (WRLD)");
+  app->add_flag("--all-levels", args->all_levels,
+                "Import every level of the plan into one building scene (scene key levels:), the "
+                "route on --level or the default level");
   app->add_option("--format", args->format, "Plan format (default: from the file's contents)")
       ->check(CLI::IsMember({"osm-sit", "wrld", "imdf"}));
   app->add_option("--route", args->route,

@@ -1,5 +1,7 @@
 #include "sim/scene/scene_levels.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "core/error.hpp"
@@ -20,9 +22,12 @@ std::vector<ResolvedLevel> resolved_levels(const Scene& scene) {
     // Walls reach the slab above: the next level's in the file, else one like its own.
     const double slab_above_m =
         i + 1 < scene.levels.size() ? scene.levels[i + 1].slab_thickness_m : level.slab_thickness_m;
-    r.storey_height_m = level.storey_height_m.value_or(scene.building.wall_height_m + slab_above_m);
+    // Defaults are sums of decimals: rounded to the micrometre, so 2.8 + 0.3 is written 3.1.
+    const auto micrometres = [](double m) { return std::round(m * 1e6) / 1e6; };
+    r.storey_height_m =
+        level.storey_height_m.value_or(micrometres(scene.building.wall_height_m + slab_above_m));
     r.elevation_m = level.elevation_m.value_or(
-        out.empty() ? 0.0 : out.back().elevation_m + out.back().storey_height_m);
+        out.empty() ? 0.0 : micrometres(out.back().elevation_m + out.back().storey_height_m));
     out.push_back(r);
   }
   return out;

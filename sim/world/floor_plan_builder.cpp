@@ -417,7 +417,7 @@ void set_bounds(FloorPlan& plan) {
 
 }  // namespace
 
-FloorPlan build_floor_plan(const Scene& scene) {
+FloorPlan build_floor_plan(const Scene& scene, bool robot_space) {
   check_building(scene);
   const double t = scene.building.wall_thickness_m;
   const PlanLayout layout = lay_out_scene(scene);
@@ -428,7 +428,7 @@ FloorPlan build_floor_plan(const Scene& scene) {
   plan.wall_height_m = scene.building.wall_height_m;
   plan.wall_thickness_m = t;
   set_plan_regions(pieces, kept, plan);
-  check_walkable_connected(plan);
+  if (robot_space) check_walkable_connected(plan);
   add_rooms_and_doors(scene, layout, kept.candidates, plan);
   add_space_rooms_and_doors(scene, plan);
   build_wall_faces(scene, layout, plan);

@@ -23,8 +23,10 @@ namespace wifislam::sim {
 ///   direction.
 /// - Wall faces are the boundary edges of the wall solids, see wall_faces.hpp.
 ///
-/// Throws InvalidInputError when the corridors and open areas do not form one connected piece,
-/// or when the scene's geometry is unusable (degenerate open-area polygon, door not fitting ...).
-FloorPlan build_floor_plan(const Scene& scene);
+/// Throws InvalidInputError when the corridors and open areas do not form one connected piece
+/// (only where the robot drives: `robot_space` false for a storey the route is not on, which the
+/// radio alone sees), or when the scene's geometry is unusable (degenerate open-area polygon, door
+/// not fitting ...).
+FloorPlan build_floor_plan(const Scene& scene, bool robot_space = true);
 
 }  // namespace wifislam::sim

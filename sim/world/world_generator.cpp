@@ -48,7 +48,7 @@ World generate_world(const Scene& scene) {
     storey.elevation_m = level.elevation_m;
     storey.slab_thickness_m = level.slab_thickness_m;
     storey.slab_material = level.slab_material;
-    storey.plan = build_floor_plan(part);
+    storey.plan = build_floor_plan(part, level.id == world.level_id);
     Mesh mesh = build_mesh(part, storey.plan);
     if (level.id == world.level_id) {
       world.plan = storey.plan;

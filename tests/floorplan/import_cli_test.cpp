@@ -171,6 +171,41 @@ TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
   EXPECT_TRUE(fs::exists(scratch_ / "ds" / "wifi.csv"));
 }
 
+// Issue 46: a whole building. Both FEI levels in one scene, stacked at the stated default, the
+// route on the level asked for; its world has both storeys, its radio hears both levels' APs,
+// and it generates a dataset.
+TEST_F(ImportCli, AllLevelsImportIntoOneBuildingThatGeneratesADataset) {
+  const fs::path scene = scratch_ / "fei_building.yaml";
+  const test::CliResult imported = test::run_wifislam(
+      "import " + (kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
+          " --all-levels --level 2 --access-points 5 -o " + scene.string(),
+      scratch_);
+  ASSERT_EQ(imported.exit_code, 0) << imported.err;
+  EXPECT_NE(imported.out.find("levels 1, 2 stacked 3.1 m apart"), std::string::npos)
+      << imported.out;
+  const std::string text = test::read_file(scene);
+  EXPECT_NE(text.find("OpenStreetMap contributors"), std::string::npos);
+  EXPECT_NE(text.find("elevation_m: 3.1"), std::string::npos) << "the default is written";
+  const test::CliResult world = test::run_wifislam("world " + scene.string(), scratch_);
+  ASSERT_EQ(world.exit_code, 0) << world.err;
+  EXPECT_NE(world.out.find("levels: 1 at 0 m, 2 at 3.1 m (route)"), std::string::npos) << world.out;
+  EXPECT_NE(world.out.find("access points: 10"), std::string::npos) << world.out;
+  const test::CliResult generated =
+      test::run_wifislam("generate " + scene.string() + " -o " + (scratch_ / "ds").string() +
+                             " --fps 1 --max-frames 4 --threads 2 -q",
+                         scratch_);
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  EXPECT_TRUE(fs::exists(scratch_ / "ds" / "wifi.csv"));
+  // A level the picture is asked for that the building lacks: exit 2, nothing drawn.
+  const test::CliResult bad = test::run_wifislam(
+      "world " + scene.string() + " --level 3 --plan " + (scratch_ / "l3.png").string(), scratch_);
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--level 3: the scene has no such level (levels: 1, 2)"),
+            std::string::npos)
+      << bad.err;
+  EXPECT_FALSE(fs::exists(scratch_ / "l3.png"));
+}
+
 // Issue 44: coordinates that are no longitude and latitude reached PROJ and GDAL (an unlocated
 // "ERROR 1", a 300-digit projection string); a way naming a node the file lacks was imported as
 // a smaller polygon; /dev/zero was "no such plan file" (exit 3).
