@@ -131,6 +131,15 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
                              {"scan_interval_s", num(w.scan_interval_s)},
                              {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
                              {"antenna_height_m", num(s.sensors.camera.height_m)}}});
+  const World& world = pipeline.site().world();
+  if (!world.storeys.empty()) {
+    // A building of several levels: access_points.csv's z is the building's, the poses' the
+    // route level's, whose floor stands at this elevation.
+    c.sensor_model.push_back({"building_level",
+                              {{"level", world.level_id},
+                               {"floor_elevation_m", num(world.elevation_m)},
+                               {"levels", std::to_string(world.storeys.size())}}});
+  }
   const OdometrySpec& o = s.sensors.odometry;
   c.sensor_model.push_back({"wheel_odometry",
                             {{"noise_per_m", num(o.noise_per_m)},
