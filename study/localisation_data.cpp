@@ -11,6 +11,8 @@
 #include "core/tum_trajectory.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/sensor_input.hpp"
+#include "sim/scene/scene_levels.hpp"
+#include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
 #include "slam/wifi/pause_signature_tracker.hpp"
@@ -94,6 +96,13 @@ Eigen::Vector2d position_at(const Trajectory& truth, Timestamp t, const fs::path
   return (before.translation_m + share * (after->translation_m - before.translation_m)).head<2>();
 }
 
+/// The route's level and the building's levels of a scene (empty for one level).
+void set_levels(const sim::Scene& scene, LocalisationData& data) {
+  if (!sim::has_levels(scene)) return;
+  data.level = sim::route_level(scene);
+  for (const sim::Level& level : scene.levels) data.building_levels.push_back(level.id);
+}
+
 }  // namespace
 
 LocalisationData localisation_data_from_scene(const sim::Scene& scene,
@@ -124,6 +133,7 @@ LocalisationData localisation_data_from_scene(const sim::Scene& scene,
   }
   data.moving_scans = moving_scans(resolved, options.moving_scan_interval_s);
   data.wifi_source = "scene " + resolved.name + " (its access points and scanner)";
+  set_levels(resolved, data);
   return data;
 }
 
@@ -160,7 +170,37 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
   }
   data.moving_scans = data.pause_scans;
   data.wifi_source = (dataset / dataset::kWifi).string();
+  if (fs::exists(dataset / dataset::kScene))
+    set_levels(sim::load_scene_file((dataset / dataset::kScene).string()), data);
   return data;
+}
+
+void add_other_floor(LocalisationData& data, LocalisationData other,
+                     const std::string& other_name) {
+  const auto refuse = [&](const std::string& why) {
+    throw InvalidInputError(fmt::format("--other-floor {}: {}", other_name, why));
+  };
+  if (data.level.empty() || other.level.empty())
+    refuse("both inputs must be of one building of several levels (scene key levels:)");
+  if (data.building_levels != other.building_levels)
+    refuse("its building has other levels than the input's");
+  if (data.level == other.level)
+    refuse(fmt::format("its route is on level '{}', as the input's; give a route on another level",
+                       data.level));
+  for (LocalisationImage& image : other.images) {
+    image.floor = 1;
+    data.images.push_back(std::move(image));
+  }
+  for (auto [scans, others] : {std::pair{&data.pause_scans, &other.pause_scans},
+                               std::pair{&data.moving_scans, &other.moving_scans}}) {
+    for (PositionedScan& scan : *others) {
+      scan.floor = 1;
+      scans->push_back(std::move(scan));
+    }
+  }
+  data.other_floor_images = static_cast<int>(other.images.size());
+  data.description +=
+      fmt::format("; the map also holds level {} ({})", other.level, other.description);
 }
 
 }  // namespace wifislam::study

@@ -33,11 +33,15 @@ struct LocalisationImage {
   cv::Mat descriptors;                                   // ORB, one row each
   /// The signature of the last pause before the image (null before the first scan).
   std::shared_ptr<const slam::WifiSignature> pause_signature;
+  /// 0: on the route's level; 1: from the route on another floor joined to the map
+  /// (add_other_floor), whose images are all map and never queries.
+  int floor = 0;
 };
 
 struct PositionedScan {
   WifiScan scan;
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // true receiver position
+  int floor = 0;                                         // as LocalisationImage::floor
 };
 
 struct LocalisationData {
@@ -45,6 +49,11 @@ struct LocalisationData {
   std::vector<PositionedScan> pause_scans, moving_scans;
   std::string description;  // what was read or simulated
   std::string wifi_source;  // where the scans come from (a dataset's wifi.csv), for messages
+  /// A building of several levels (scene `levels:`): the route's level and the building's level
+  /// ids; both empty for a one-level scene or a dataset without scene.yaml.
+  std::string level;
+  std::vector<std::string> building_levels;
+  int other_floor_images = 0;  // images joined from another floor (add_other_floor)
 };
 
 struct LocalisationDataOptions {
@@ -64,5 +73,11 @@ LocalisationData localisation_data_from_scene(const sim::Scene& scene,
 /// position from groundtruth.txt (nearest stamp), and its wifi.csv as both protocols.
 LocalisationData localisation_data_from_dataset(const std::filesystem::path& dataset,
                                                 const LocalisationDataOptions& options);
+
+/// Joins `other`, a route on another level of the same building, to `data`'s map: its images
+/// and scans, with floor 1, become map places a query may wrongly choose, the way a building's
+/// floors look alike. Throws InvalidInputError naming `other_name` when either input is not of a
+/// building of several levels, the buildings' levels differ, or both routes are on one level.
+void add_other_floor(LocalisationData& data, LocalisationData other, const std::string& other_name);
 
 }  // namespace wifislam::study

@@ -26,13 +26,23 @@ struct Split {
   Timestamp split_time;
 };
 
+/// Whether an image or scan of the route's floor (0) lies before the split; another floor's are
+/// all map.
+bool in_map(int floor, Timestamp time, Timestamp split_time) {
+  return floor != 0 || time < split_time;
+}
+
 Split split_images(const LocalisationData& data, double map_share) {
-  if (data.images.size() < 2) throw InvalidInputError("localize: fewer than two images");
-  const std::int64_t t0 = data.images.front().time.ns, t1 = data.images.back().time.ns;
+  std::vector<std::int64_t> route_ns;
+  for (const LocalisationImage& image : data.images)
+    if (image.floor == 0) route_ns.push_back(image.time.ns);
+  if (route_ns.size() < 2) throw InvalidInputError("localize: fewer than two images");
+  const std::int64_t t0 = route_ns.front(), t1 = route_ns.back();
   Split s;
   s.split_time = Timestamp::from_ns(t0 + std::llround(map_share * static_cast<double>(t1 - t0)));
   for (int i = 0; i < static_cast<int>(data.images.size()); ++i) {
-    (data.images[static_cast<std::size_t>(i)].time < s.split_time ? s.map : s.queries).push_back(i);
+    const LocalisationImage& image = data.images[static_cast<std::size_t>(i)];
+    (in_map(image.floor, image.time, s.split_time) ? s.map : s.queries).push_back(i);
   }
   if (s.map.empty() || s.queries.empty()) {
     throw InvalidInputError("localize: the route gives no map image or no query image");
@@ -79,14 +89,15 @@ class WifiWords {
   std::map<std::uint64_t, int> ap_index_;
 };
 
-/// The scan among `scans` (restricted to before / from `split`) closest to `position`.
+/// The scan among `scans` on the image's floor (restricted to the map's or the queries')
+/// closest to the image.
 const PositionedScan* closest_scan(const std::vector<PositionedScan>& scans,
-                                   const Eigen::Vector2d& position, Timestamp split, bool before) {
+                                   const LocalisationImage& image, Timestamp split, bool map) {
   const PositionedScan* best = nullptr;
   double best_m = std::numeric_limits<double>::infinity();
   for (const PositionedScan& s : scans) {
-    if ((s.scan.time < split) != before) continue;
-    const double d = (s.position_m - position).norm();
+    if (s.floor != image.floor || in_map(s.floor, s.scan.time, split) != map) continue;
+    const double d = (s.position_m - image.position_m).norm();
     if (d < best_m) {
       best_m = d;
       best = &s;
@@ -120,12 +131,15 @@ void record(const Context& c, LocalisationMethod method, int query, int map_plac
   r.query = query;
   r.chosen = c.split.map[static_cast<std::size_t>(map_place)];
   r.probability = p;
-  const Eigen::Vector2d& at = c.data.images[static_cast<std::size_t>(query)].position_m;
-  r.error_m = (c.data.images[static_cast<std::size_t>(r.chosen)].position_m - at).norm();
+  const LocalisationImage& asked = c.data.images[static_cast<std::size_t>(query)];
+  const LocalisationImage& chosen = c.data.images[static_cast<std::size_t>(r.chosen)];
+  r.error_m = (chosen.position_m - asked.position_m).norm();
+  r.wrong_floor = chosen.floor != asked.floor;
   r.nearest_map_m = std::numeric_limits<double>::infinity();
   for (int m : c.split.map) {
-    r.nearest_map_m = std::min(r.nearest_map_m,
-                               (c.data.images[static_cast<std::size_t>(m)].position_m - at).norm());
+    const LocalisationImage& place = c.data.images[static_cast<std::size_t>(m)];
+    if (place.floor != asked.floor) continue;
+    r.nearest_map_m = std::min(r.nearest_map_m, (place.position_m - asked.position_m).norm());
   }
   r.candidates = candidates;
   r.time_s = seconds_since(start);
@@ -144,14 +158,14 @@ void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
   const std::vector<PositionedScan>& scans = c.data.moving_scans;
   std::vector<PositionedScan> map_scans;  // the words are the access points the map heard
   for (const PositionedScan& s : scans) {
-    if (s.scan.time < c.split.split_time) map_scans.push_back(s);
+    if (in_map(s.floor, s.scan.time, c.split.split_time)) map_scans.push_back(s);
   }
   const WifiWords words(map_scans, c.options.wifi_words);
   const int visual_words = c.training.tree.word_count();
   std::vector<BinaryObservation> map_wifi;
   for (int m : c.split.map) {
     const auto& image = c.data.images[static_cast<std::size_t>(m)];
-    const PositionedScan* scan = closest_scan(scans, image.position_m, c.split.split_time, true);
+    const PositionedScan* scan = closest_scan(scans, image, c.split.split_time, true);
     map_wifi.push_back(scan ? words.of(scan->scan) : BinaryObservation{});
   }
   // Wi-Fi words are independent in the tree, with their marginals over the map images.
@@ -177,7 +191,7 @@ void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
   for (int q : c.split.queries) {
     const auto start = WallClock::now();
     const auto& image = c.data.images[static_cast<std::size_t>(q)];
-    const PositionedScan* scan = closest_scan(scans, image.position_m, c.split.split_time, false);
+    const PositionedScan* scan = closest_scan(scans, image, c.split.split_time, false);
     const BinaryObservation query =
         slam::place::concatenate(c.visual[static_cast<std::size_t>(q)],
                                  scan ? words.of(scan->scan) : BinaryObservation{}, visual_words);
@@ -271,6 +285,7 @@ LocalisationResult run_localisation(const LocalisationData& data,
   out.description = data.description;
   out.map_images = static_cast<int>(split.map.size());
   out.query_images = static_cast<int>(split.queries.size());
+  out.other_floor_images = data.other_floor_images;
   const Context context{data, split, visual, training, options};
   FabMap fabmap(training.tree, options.fabmap, training.observations);
   for (int m : split.map) fabmap.add_place(visual[static_cast<std::size_t>(m)]);

@@ -1,7 +1,8 @@
 #pragma once
 // The three localisation methods of the paper's FAB-MAP comparison, run on the same query images
 // (study/localisation_data.hpp): the first `map_share` of the images (by time) are the map, the
-// rest the queries, and each query is matched to one map image.
+// rest the queries, and each query is matched to one map image. Images of another floor
+// (add_other_floor) are all map: a query that chooses one is on the wrong floor.
 //
 //   fabmap         visual FAB-MAP (slam/place/fabmap.hpp) over the map images' word observations
 //   wifi-fabmap    Wi-Fi FAB-MAP (Nowakowski et al., IROS 2017): early fusion, Wi-Fi words
@@ -58,11 +59,17 @@ struct QueryResult {
   double nearest_map_m = 0.0;  // true distance to the nearest map image
   int candidates = 0;          // map images the method chose among
   double time_s = 0.0;         // matching time (Wi-Fi part included)
+  /// The chosen image is on another floor (add_other_floor): wrong whatever error_m, the
+  /// horizontal distance, says.
+  bool wrong_floor = false;
+  /// Chosen on the query's floor within `limit_m`.
+  bool within(double limit_m) const { return !wrong_floor && error_m <= limit_m; }
 };
 
 struct LocalisationResult {
   std::string description;
   int map_images = 0, query_images = 0;
+  int other_floor_images = 0;        // of the map images, those of another floor
   std::vector<QueryResult> queries;  // per method, in query order
 };
 

@@ -30,22 +30,27 @@ double share_within(const std::vector<const QueryResult*>& queries, double limit
   for (const QueryResult* q : queries) {
     if (with_map_nearby && q->nearest_map_m > kTrueMatchM) continue;
     ++n;
-    within += q->error_m <= limit_m;
+    within += q->within(limit_m);
   }
   return n > 0 ? static_cast<double>(within) / n : 0.0;
 }
 
 std::string queries_csv(const LocalisationResult& r, const LocalisationData& data) {
+  // With another floor in the map, a last column says whether the chosen image is on it (the
+  // file of a one-floor run keeps its columns).
+  const bool floors = r.other_floor_images > 0;
   std::string out =
       "method,query_time,query_x_m,query_y_m,chosen_time,chosen_x_m,chosen_y_m,probability,"
-      "error_m,nearest_map_m,candidates,time_s\n";
+      "error_m,nearest_map_m,candidates,time_s";
+  out += floors ? ",wrong_floor\n" : "\n";
   for (const QueryResult& q : r.queries) {
     const LocalisationImage& a = data.images[static_cast<std::size_t>(q.query)];
     const LocalisationImage& b = data.images[static_cast<std::size_t>(q.chosen)];
-    out += fmt::format("{},{},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.6g},{:.3f},{:.3f},{},{:.6f}\n",
+    out += fmt::format("{},{},{:.3f},{:.3f},{},{:.3f},{:.3f},{:.6g},{:.3f},{:.3f},{},{:.6f}",
                        to_string(q.method), a.time.to_tum_string(), a.position_m.x(),
                        a.position_m.y(), b.time.to_tum_string(), b.position_m.x(), b.position_m.y(),
                        q.probability, q.error_m, q.nearest_map_m, q.candidates, q.time_s);
+    out += floors ? fmt::format(",{}\n", q.wrong_floor ? 1 : 0) : "\n";
   }
   return out;
 }
@@ -56,13 +61,17 @@ std::string cdf_csv(const LocalisationResult& r, const LocalisationOptions& o,
   std::string out = "method,error_m,share\n";
   int colour = 0;
   for (LocalisationMethod m : o.methods) {
+    // A query matched on another floor has no error on its own: it counts in the shares'
+    // denominator and never in a step, so the curve ends below 1.
     std::vector<double> errors;
-    for (const QueryResult* q : of_method(r, m)) errors.push_back(q->error_m);
+    const std::vector<const QueryResult*> queries = of_method(r, m);
+    for (const QueryResult* q : queries)
+      if (!q->wrong_floor) errors.push_back(q->error_m);
     std::sort(errors.begin(), errors.end());
     plot::ChartSeries series{to_string(m), plot::category_colour(colour++), false, {}};
     series.points.push_back({0.0, 0.0, 0.0, 0.0});
     for (std::size_t i = 0; i < errors.size(); ++i) {
-      const double share = static_cast<double>(i + 1) / static_cast<double>(errors.size());
+      const double share = static_cast<double>(i + 1) / static_cast<double>(queries.size());
       out += fmt::format("{},{:.3f},{:.6f}\n", to_string(m), errors[i], share);
       series.points.push_back({errors[i], share, share, share});
     }
@@ -88,7 +97,7 @@ std::string pr_csv(const LocalisationResult& r, const LocalisationOptions& o,
     int accepted = 0, correct = 0;
     for (std::size_t i = 0; i < queries.size(); ++i) {
       ++accepted;
-      correct += queries[i]->error_m <= kTrueMatchM;
+      correct += queries[i]->within(kTrueMatchM);
       if (i + 1 < queries.size() && queries[i + 1]->probability == queries[i]->probability)
         continue;
       const double precision = static_cast<double>(correct) / accepted;
@@ -106,17 +115,27 @@ std::string summary_markdown(const nlohmann::ordered_json& s) {
   std::string out = fmt::format("# Localisation: {}\n\n{} map images, {} queries.\n\n",
                                 s["input"].get<std::string>(), s["map_images"].get<int>(),
                                 s["query_images"].get<int>());
+  const bool floors = s.contains("other_floor_images");
+  if (floors) {
+    out += fmt::format(
+        "{} of the map images are of another floor; a query that chooses one is on the wrong "
+        "floor, within no distance.\n\n",
+        s["other_floor_images"].get<int>());
+  }
   out +=
       "| method | within 1 m | 2 m | 4 m | 5 m | (queries with a map image within 2 m:) 1 m | "
-      "2 m | 4 m | 5 m | median time per query (ms) |\n| --- |";
-  for (int column = 0; column < 9; ++column) out += " ---: |";
+      "2 m | 4 m | 5 m | median time per query (ms) |";
+  out += floors ? " wrong floor |\n| --- |" : "\n| --- |";
+  for (int column = 0; column < (floors ? 10 : 9); ++column) out += " ---: |";
   out += "\n";
   for (const auto& m : s["methods"]) {
     out += "| " + m["method"].get<std::string>() + " |";
     for (const char* set : {"all", "map_within_2m"}) {
       for (const auto& v : m[set]) out += fmt::format(" {:.1f} % |", 100.0 * v.get<double>());
     }
-    out += fmt::format(" {:.2f} |\n", 1e3 * m["median_time_s"].get<double>());
+    out += fmt::format(" {:.2f} |", 1e3 * m["median_time_s"].get<double>());
+    if (floors) out += fmt::format(" {:.1f} % |", 100.0 * m["wrong_floor"].get<double>());
+    out += "\n";
   }
   return out;
 }
@@ -141,12 +160,20 @@ nlohmann::ordered_json localisation_summary(const LocalisationResult& result,
                        {"all", all},
                        {"map_within_2m", near},
                        {"median_time_s", median(times)}});
+    if (result.other_floor_images > 0) {
+      const auto wrong = std::count_if(queries.begin(), queries.end(),
+                                       [](const QueryResult* q) { return q->wrong_floor; });
+      methods.back()["wrong_floor"] =
+          queries.empty() ? 0.0 : static_cast<double>(wrong) / static_cast<double>(queries.size());
+    }
   }
-  return {{"input", result.description},
-          {"map_images", result.map_images},
-          {"query_images", result.query_images},
-          {"map_share", options.map_share},
-          {"methods", methods}};
+  nlohmann::ordered_json summary = {{"input", result.description},
+                                    {"map_images", result.map_images},
+                                    {"query_images", result.query_images},
+                                    {"map_share", options.map_share},
+                                    {"methods", methods}};
+  if (result.other_floor_images > 0) summary["other_floor_images"] = result.other_floor_images;
+  return summary;
 }
 
 void write_localisation_report(const std::filesystem::path& dir, const LocalisationResult& result,

@@ -28,7 +28,7 @@ using namespace wifislam;
 
 struct LocalizeArgs {
   std::string input, output, methods = "fabmap,wifi-fabmap,wifi-clusters";
-  std::string vocabulary, training, wifi_words = "presence", route;
+  std::string vocabulary, training, wifi_words = "presence", route, other_floor;
   double image_interval_s = 2.0, moving_scan_interval_s = 10.0, map_share = 0.4;
   std::optional<std::uint64_t> seed;
   std::uint64_t fabmap_seed = 1;
@@ -110,7 +110,9 @@ void run(const LocalizeArgs& args, bool route_given) {
     throw ParseError("--route", args.route,
                      "a dataset's route is fixed; --route applies to scenes");
   }
-  const bool replace = check_output_folder({args.output, args.force, {}, {args.input}});
+  std::vector<fs::path> inputs = {args.input};
+  if (!args.other_floor.empty()) inputs.push_back(args.other_floor);
+  const bool replace = check_output_folder({args.output, args.force, {}, inputs});
   const study::LocalisationOptions options = localisation_options(args);
   const auto vocabulary = slam::bow::load_vocabulary(args.vocabulary);
   const slam::place::FabMapTraining training = load_training(args);
@@ -121,10 +123,19 @@ void run(const LocalizeArgs& args, bool route_given) {
   data_options.verify_checksums = !args.no_verify;
   data_options.wifi = options.wifi;
   const auto start = std::chrono::steady_clock::now();
-  const study::LocalisationData data =
+  study::LocalisationData data =
       fs::is_directory(args.input)
           ? study::localisation_data_from_dataset(args.input, data_options)
           : study::localisation_data_from_scene(scene_with_route(args, route_given), data_options);
+  if (!args.other_floor.empty()) {
+    study::add_other_floor(
+        data,
+        fs::is_directory(args.other_floor)
+            ? study::localisation_data_from_dataset(args.other_floor, data_options)
+            : study::localisation_data_from_scene(sim::load_scene_file(args.other_floor),
+                                                  data_options),
+        args.other_floor);
+  }
   if (!args.quiet) {
     fmt::print(stderr, "localize: {}: {} images, {} pause scans, {} moving scans ({:.0f} s)\n",
                data.description, data.images.size(), data.pause_scans.size(),
@@ -175,6 +186,11 @@ WIFISLAM_COMMAND(localize, 67) {
       "--route", args->route,
       "Scenes: the route's nodes, comma-separated, replacing the scene's (e.g. two laps\n"
       "A,B,C,D,A,B,C,D,A so that the queries revisit the map)");
+  app->add_option(
+      "--other-floor", args->other_floor,
+      "Scene or dataset of the same building (scene key levels:) with its route on another\n"
+      "level: its images and scans join the map, so a query can choose a place on the wrong\n"
+      "floor (summary.md's last column)");
   app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
   app->add_flag("--no-verify", args->no_verify, "Datasets: do not check their SHA-256 sums");
   app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)");

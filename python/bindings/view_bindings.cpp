@@ -19,8 +19,10 @@
 #include "sim/render/depth_png.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/site/radio_map_over_plan.hpp"
 #include "sim/site/site.hpp"
+#include "sim/site/site_pictures.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace wifislam::python {
@@ -82,11 +84,13 @@ class Renderer {
 };
 
 py::dict radio_map(const sim::Scene& scene, double resolution_m, std::optional<int> ap_id,
-                   const std::string& band, std::optional<double> height_m) {
+                   const std::string& band, std::optional<double> height_m,
+                   const std::string& level) {
   if (band != "2.4" && band != "5" && band != "best") {
     throw InvalidInputError("band '" + band + "': expected '2.4', '5' or 'best'");
   }
   if (height_m) check_height("height_m", *height_m, scene.building.wall_height_m);
+  sim::require_level(scene, level, "level");
   std::optional<sim::Site> site;
   radio_model::RadioMap map;
   {
@@ -99,7 +103,7 @@ py::dict radio_map(const sim::Scene& scene, double resolution_m, std::optional<i
     options.band = band == "2.4" ? radio_model::RadioMapBand::k2_4GHz
                    : band == "5" ? radio_model::RadioMapBand::k5GHz
                                  : radio_model::RadioMapBand::kBest;
-    map = sim::compute_radio_map(site->radio(), site->world().plan, options);
+    map = sim::compute_site_radio_map(*site, options, level);
   }
   py::array_t<float> rssi({map.rows, map.cols});
   py::array_t<std::int32_t> best({map.rows, map.cols});
@@ -140,7 +144,7 @@ void bind_views(py::module_& m) {
       .def("planar_pose", &Renderer::planar_pose, py::arg("x_m"), py::arg("y_m"),
            py::arg("yaw_deg"), py::arg("height_m"));
   m.def("_radio_map", &radio_map, py::arg("scene"), py::arg("resolution_m"), py::arg("ap"),
-        py::arg("band"), py::arg("height_m"));
+        py::arg("band"), py::arg("height_m"), py::arg("level"));
   m.def(
       "_encode_rgb_png",
       [](const py::array& rgb) { return png_bytes(sim::encode_png(bgr_mat(rgb, "rgb"))); },

@@ -291,11 +291,13 @@ class RadioMap:
 
 def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
               ap: Optional[int] = None, band: str = "best",
-              height_m: Optional[float] = None) -> RadioMap:
+              height_m: Optional[float] = None, level: str = "") -> RadioMap:
     """The mean RSSI (ITU-R P.1238, walls, shadowing) at every free cell: of access point
     ``ap``, or of the strongest one (``ap=None``); ``band`` is "2.4", "5" or "best"; the
-    receiver at ``height_m`` (default: the camera's height, where datasets scan)."""
-    raw = _wifislam._radio_map(_scene(scene), resolution_m, ap, str(band), height_m)
+    receiver at ``height_m`` (default: the camera's height, where datasets scan) above the floor
+    of ``level`` (a scene with ``levels:``; default: the route's level), hearing every level's
+    access points."""
+    raw = _wifislam._radio_map(_scene(scene), resolution_m, ap, str(band), height_m, str(level))
     return RadioMap(raw["rssi_dbm"], raw["best_ap_id"], tuple(raw["origin_m"]),
                     raw["resolution_m"], tuple(raw["access_points"]))
 

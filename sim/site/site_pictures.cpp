@@ -73,13 +73,19 @@ void draw_site_plan(const Site& site, const std::filesystem::path& path, const s
   draw_floor_plan(level_only, path, options);
 }
 
+radio_model::RadioMap compute_site_radio_map(const Site& site,
+                                             const radio_model::RadioMapOptions& options,
+                                             const std::string& level) {
+  const LevelView view = level_view(site, level);
+  return compute_radio_map(site.radio(), *view.plan, options, view.elevation_m);
+}
+
 radio_model::RadioMap draw_site_radio_map(const Site& site,
                                           const radio_model::RadioMapOptions& options,
                                           const std::filesystem::path& path,
                                           const std::string& level) {
   const LevelView view = level_view(site, level);
-  const radio_model::RadioMap map =
-      compute_radio_map(site.radio(), *view.plan, options, view.elevation_m);
+  const radio_model::RadioMap map = compute_site_radio_map(site, options, level);
   const double floor_dbm = wifi_scanner_options(site.scene().sensors.wifi).sensitivity_dbm;
   write_radio_map_png(map, *view.plan, access_points_on(site, view), path, floor_dbm);
   return map;

@@ -24,6 +24,12 @@ std::vector<std::string> site_level_ids(const Site& site);
 void draw_site_plan(const Site& site, const std::filesystem::path& path,
                     const std::string& level = "");
 
+/// The site's radio map on `level` (empty: the route's) with `options`, the receiver height above
+/// that level's floor. Throws InvalidInputError for a level the scene does not have.
+radio_model::RadioMap compute_site_radio_map(const Site& site,
+                                             const radio_model::RadioMapOptions& options,
+                                             const std::string& level = "");
+
 /// Computes the site's radio map on `level` with `options` (receiver height above that level's
 /// floor) and draws it as a PNG at `path`; returns the map.
 radio_model::RadioMap draw_site_radio_map(const Site& site,

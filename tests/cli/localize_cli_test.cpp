@@ -7,7 +7,9 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -96,6 +98,63 @@ TEST(LocalizeCli, AOneFpsDatasetLocalisesAndEmptyListsAreRefused) {
         "localize " + scene.string() + " " + bad + " -o " + (scratch / "bad").string(), scratch);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
     EXPECT_FALSE(fs::exists(scratch / "bad")) << bad;
+  }
+  fs::remove_all(scratch);
+}
+
+// Issue 46: another floor of the same building in the map. The two storeys of
+// two_storey_office look alike (one corridor, one appearance seed), so visual FAB-MAP often takes
+// the place upstairs; our Wi-Fi clusters, whose candidates are the map places of similar
+// signatures, hear that the APs of the query's floor are the strong ones and choose it more often.
+TEST(LocalizeCli, AnotherFloorInTheMapIsTheWrongFloorAndWifiClustersChooseItLess) {
+  const fs::path scratch = test::scratch_folder();
+  const std::string ground = std::string(WIFISLAM_SCENES_DIR) + "/two_storey_office.yaml";
+  std::string upstairs = read_file(ground);
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"  nodes: [A, B]\n", "  nodes: [A1, B1]\n"},
+        {"  level: ground\n", "  level: first\n"}}) {
+    ASSERT_NE(upstairs.find(from), std::string::npos) << from;
+    upstairs.replace(upstairs.find(from), from.size(), to);
+  }
+  test::write_file(scratch / "upstairs.yaml", upstairs);
+  // There and back on the ground floor: the way back revisits the map's first 40 %.
+  const test::CliResult r = test::run_wifislam(
+      "localize " + ground + " --route A,B,A --other-floor " +
+          (scratch / "upstairs.yaml").string() + " -q -o " + (scratch / "out").string(),
+      scratch);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json summary =
+      nlohmann::json::parse(test::read_file(scratch / "out" / "summary.json"));
+  const int upstairs_images = summary.at("other_floor_images").get<int>();
+  EXPECT_GT(upstairs_images, 30);
+  EXPECT_GT(summary.at("map_images").get<int>(), upstairs_images);
+  std::map<std::string, double> wrong_floor;
+  for (const auto& m : summary.at("methods"))
+    wrong_floor[m.at("method").get<std::string>()] = m.at("wrong_floor").get<double>();
+  ASSERT_EQ(wrong_floor.size(), 3u);
+  EXPECT_GT(wrong_floor["fabmap"], 0.15) << "the floors look alike";
+  EXPECT_LT(wrong_floor["wifi-clusters"], 0.5 * wrong_floor["fabmap"]);
+  // queries.csv says which queries chose upstairs; their shares agree with the summary's.
+  const std::string queries = read_file(scratch / "out" / "queries.csv");
+  EXPECT_NE(queries.find(",time_s,wrong_floor\n"), std::string::npos);
+  int fabmap_rows = 0, fabmap_wrong = 0;
+  for (std::size_t at = queries.find('\n') + 1; at < queries.size();) {
+    const std::size_t end = queries.find('\n', at);
+    const std::string row = queries.substr(at, end - at);
+    if (row.rfind("fabmap,", 0) == 0) ++fabmap_rows, fabmap_wrong += row.back() == '1';
+    at = end + 1;
+  }
+  ASSERT_GT(fabmap_rows, 0);
+  EXPECT_NEAR(static_cast<double>(fabmap_wrong) / fabmap_rows, wrong_floor["fabmap"], 1e-9);
+
+  // The same level twice, and a building of one level, are refused before anything is written.
+  for (const std::string& other : {ground, std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml"}) {
+    const test::CliResult refused = test::run_wifislam(
+        "localize " + ground + " --other-floor " + other + " -q -o " + (scratch / "no").string(),
+        scratch);
+    EXPECT_EQ(refused.exit_code, 2) << refused.err;
+    EXPECT_NE(refused.err.find("--other-floor " + other), std::string::npos) << refused.err;
+    EXPECT_FALSE(fs::exists(scratch / "no"));
   }
   fs::remove_all(scratch);
 }

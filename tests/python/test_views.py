@@ -63,3 +63,24 @@ def test_radio_map_bad_arguments_are_value_errors(c_hall):
         wifislam.radio_map(c_hall, band="60")
     with pytest.raises(ValueError):
         wifislam.radio_map(c_hall, ap=999)
+
+
+def test_radio_map_of_a_level_equals_the_radiomap_command(tmp_path, wifislam_binary, scenes_dir):
+    two_storeys = os.path.join(scenes_dir, "two_storey_office.yaml")
+    csv_path = tmp_path / "first.csv"
+    subprocess.run([wifislam_binary, "radiomap", two_storeys, "--ap", "0", "--res", "1.0",
+                    "--level", "first", "-o", str(tmp_path / "first.png"), "--csv", str(csv_path)],
+                   check=True, stdout=subprocess.DEVNULL)
+    upstairs = wifislam.radio_map(two_storeys, resolution_m=1.0, ap=0, level="first")
+    ground = wifislam.radio_map(two_storeys, resolution_m=1.0, ap=0)
+    with open(csv_path) as f:
+        rows = [r for r in csv.DictReader(f)]
+    assert rows
+    for row in rows:
+        col = int(math.floor((float(row["x_m"]) - upstairs.origin_m[0]) / upstairs.resolution_m))
+        r = int(math.floor((float(row["y_m"]) - upstairs.origin_m[1]) / upstairs.resolution_m))
+        assert float(upstairs.rssi_dbm[r, col]) == pytest.approx(float(row["rssi_dbm"]), abs=0.01)
+    # AP 0 stands on the ground floor: upstairs hears it through the slab, weaker.
+    assert np.nanmax(upstairs.rssi_dbm) < np.nanmax(ground.rssi_dbm)
+    with pytest.raises(ValueError, match="no such level"):
+        wifislam.radio_map(two_storeys, level="roof")
