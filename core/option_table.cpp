@@ -3,6 +3,8 @@
 #include <charconv>
 #include <limits>
 
+#include "core/text_lines.hpp"
+
 namespace wifislam::options {
 
 namespace {
@@ -46,6 +48,37 @@ bool parse_number(std::string_view text, double& out, Infinity infinity) {
   if (!parse_whole(text, value) || !std::isfinite(value)) return false;
   out = value;
   return true;
+}
+
+bool parse_number_list(std::string_view text, std::vector<double>& out, std::string& bad_entry) {
+  std::vector<double> values;
+  if (text != "none") {
+    std::size_t start = 0;
+    while (true) {
+      const std::size_t comma = text.find(',', start);
+      std::string_view entry = text.substr(
+          start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+      while (!entry.empty() && entry.front() == ' ') entry.remove_prefix(1);
+      while (!entry.empty() && entry.back() == ' ') entry.remove_suffix(1);
+      double value = 0;
+      if (!parse_number(entry, value, Infinity::kRefused)) {
+        bad_entry = std::string(entry);
+        return false;
+      }
+      values.push_back(value);
+      if (comma == std::string_view::npos) break;
+      start = comma + 1;
+    }
+  }
+  out = std::move(values);
+  return true;
+}
+
+std::string number_list_text(const std::vector<double>& values) {
+  if (values.empty()) return "none";
+  std::string out;
+  for (double v : values) out += (out.empty() ? "" : ",") + format_double_exact(v);
+  return out;
 }
 
 std::pair<std::string, std::string> split_assignment(const std::string& source,

@@ -9,15 +9,16 @@
 //   v.integer(key, int&, help)           v.uint64(key, std::uint64_t&, help)
 //   v.number(key, double&, help[, Infinity::kAllowed])
 //   v.boolean(key, bool&, help)          v.text(key, std::string&, help)
-//   v.choice(key, E&, Choices<E>, help)
+//   v.choice(key, E&, Choices<E>, help)  v.number_list(key, std::vector<double>&, help)
 // and the generic visitors here set one option from text and list the keys and their help;
 // core/option_table_json.hpp writes the options as JSON and prints the reference (apart because
 // nlohmann/json.hpp costs a second of compile time in each of the ~50 files that include this).
 //
 // Text rules, the same for every option: a boolean is true/false, 1/0 or on/off; an integer is a
 // whole decimal number (no fraction, no exponent); a number is a finite decimal number, and "inf"
-// or "infinity" only where an option means "off" by it; a choice is one of its names. An unknown
-// key is refused naming the closest known one.
+// or "infinity" only where an option means "off" by it; a choice is one of its names; a number
+// list is numbers separated by commas (spaces around them allowed), or "none" for an empty list.
+// An unknown key is refused naming the closest known one.
 
 #include <cmath>
 #include <cstdint>
@@ -46,6 +47,11 @@ bool parse_integer(std::string_view text, int& out);
 bool parse_int64(std::string_view text, std::int64_t& out);
 bool parse_uint64(std::string_view text, std::uint64_t& out);
 bool parse_number(std::string_view text, double& out, Infinity infinity);
+/// "a,b,c" (finite numbers, spaces around each allowed) or "none": the list. False, with the
+/// entry that is not a number in `bad_entry`, otherwise.
+bool parse_number_list(std::string_view text, std::vector<double>& out, std::string& bad_entry);
+/// The list as parse_number_list reads it: "449.2,89.84,22.46", "none" when empty.
+std::string number_list_text(const std::vector<double>& values);
 
 /// "a, b, c" of the names of `choices`.
 template <class E>
@@ -81,6 +87,14 @@ class TextSetter {
   }
   void text(const char* key, std::string& field, const char*) {
     if (mine(key)) field = text_;
+  }
+  void number_list(const char* key, std::vector<double>& field, const char*) {
+    if (!mine(key)) return;
+    std::string bad_entry;
+    if (!parse_number_list(text_, field, bad_entry)) {
+      throw bad(
+          fmt::format("numbers separated by commas, or none ('{}' is not a number)", bad_entry));
+    }
   }
   template <class E>
   void choice(const char* key, E& field, const Choices<E>& choices, const char*) {
@@ -135,6 +149,10 @@ class KeyLister {
   void choice(const char* key, Rest&&...) {
     keys.emplace_back(key);
   }
+  template <class... Rest>
+  void number_list(const char* key, Rest&&...) {
+    keys.emplace_back(key);
+  }
 };
 
 /// (key, help) of every option, in visiting order.
@@ -150,6 +168,9 @@ class HelpLister {
   }
   void boolean(const char* key, bool&, const char* help) { entries.emplace_back(key, help); }
   void text(const char* key, std::string&, const char* help) { entries.emplace_back(key, help); }
+  void number_list(const char* key, std::vector<double>&, const char* help) {
+    entries.emplace_back(key, help);
+  }
   template <class E>
   void choice(const char* key, E&, const Choices<E>&, const char* help) {
     entries.emplace_back(key, help);

@@ -31,6 +31,10 @@ class JsonWriter {
   }
   void boolean(const char* key, bool& field, const char*) { out[key] = field; }
   void text(const char* key, std::string& field, const char*) { out[key] = field; }
+  /// As the text it is set from, so a run.json's value can be given back to --set.
+  void number_list(const char* key, std::vector<double>& field, const char*) {
+    out[key] = number_list_text(field);
+  }
   template <class E>
   void choice(const char* key, E& field, const Choices<E>& choices, const char*) {
     for (const auto& [value, name] : choices)

@@ -6,7 +6,6 @@
 
 #include "core/error.hpp"
 #include "core/option_table_json.hpp"
-#include "slam/optimize/edge_pruning.hpp"
 
 namespace wifislam::slam {
 
@@ -73,7 +72,8 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.wifi_long_term_candidates >= -1, "wifi_long_term_candidates must be >= -1");
   require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
           "robust_kernel_chi2 must be a positive number");
-  parse_chi2_thresholds("prune_chi2", o.rgbdslam.prune_chi2);  // throws naming the entry
+  for (double chi2 : o.rgbdslam.prune_chi2)
+    require(chi2 > 0 && std::isfinite(chi2), "prune_chi2 must list positive chi^2 thresholds");
   require(o.orbslam.local_keyframes >= 0, "local_keyframes must be >= 0");
   require(o.orbslam.covisibility_min_weight >= 1, "covisibility_min_weight must be >= 1");
   require(o.orbslam.covisibility_group_size >= 0, "covisibility_group_size must be >= 0");

@@ -144,7 +144,7 @@ void visit_options(V& v, SlamOptions& o) {
       "rgbdslam: each incremental optimisation runs rounds of 5 iterations until chi^2 improves "
       "by less than this fraction (RGBDSLAMv2's optimizer_iterations 0.01; capped at "
       "optimizer_iterations); 0 = at most optimizer_incremental_iterations");
-  v.text("prune_chi2", o.rgbdslam.prune_chi2,
+  v.number_list("prune_chi2", o.rgbdslam.prune_chi2,
          "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
          "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge");
   v.number("detection_rate_hz", o.rtabmap.detection_rate_hz,

@@ -331,8 +331,8 @@ def slam(dataset: PathLike, output: PathLike, frontend: str = "rgbdslam", wifi: 
 def _setting_text(value: Any) -> str:
     if isinstance(value, bool):
         return "true" if value else "false"
-    if isinstance(value, (list, tuple)):
-        return ",".join(_setting_text(v) for v in value)
+    if isinstance(value, (list, tuple)):  # a number list (prune_chi2); empty is "none"
+        return ",".join(_setting_text(v) for v in value) if value else "none"
     return str(value)
 
 

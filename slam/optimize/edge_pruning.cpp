@@ -94,28 +94,4 @@ std::vector<PruningStage> prune_inconsistent_edges(
   return stages;
 }
 
-std::vector<double> parse_chi2_thresholds(const std::string& key, const std::string& text) {
-  std::vector<double> out;
-  if (text.empty() || text == "none") return out;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-      value = std::stod(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    while (used < item.size() && item[used] == ' ') ++used;
-    if (used == 0 || used != item.size() || !(value > 0.0) || !std::isfinite(value)) {
-      throw InvalidInputError(key + ": '" + item +
-                              "' is not a positive chi^2 threshold (expected e.g. 449,90,22.5 or "
-                              "none)");
-    }
-    out.push_back(value);
-  }
-  return out;
-}
-
 }  // namespace wifislam::slam

@@ -45,8 +45,4 @@ std::vector<PruningStage> prune_inconsistent_edges(
     PoseGraph& graph, const PruningSchedule& schedule,
     const std::function<OptimisationSummary(PoseGraph&)>& reoptimise);
 
-/// Parses a comma-separated list of positive chi^2 thresholds ("449,90,22.5"); "" or "none" is
-/// the empty schedule. Throws InvalidInputError naming `key` and the offending entry.
-std::vector<double> parse_chi2_thresholds(const std::string& key, const std::string& text);
-
 }  // namespace wifislam::slam

@@ -6,6 +6,7 @@
 
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace wifislam::options {
 namespace {
@@ -20,6 +21,7 @@ struct ToyOptions {
   bool enabled = false;
   std::string name = "toy";
   Colour colour = Colour::kRed;
+  std::vector<double> stages = {449.2, 89.84, 22.46};
 };
 
 template <class V>
@@ -32,6 +34,7 @@ void visit_options(V& v, ToyOptions& o) {
   v.text("name", o.name, "what it is called");
   v.choice("colour", o.colour, Choices<Colour>{{Colour::kRed, "red"}, {Colour::kBlue, "blue"}},
            "which colour");
+  v.number_list("stages", o.stages, "thresholds in order; none = no stage");
 }
 
 std::string error_of(ToyOptions& o, const std::string& key, const std::string& text) {
@@ -92,17 +95,40 @@ TEST(OptionTable, ChoicesByNameAndUnknownKeysNameTheClosest) {
   EXPECT_NE(unknown.find("known: count, seed, size_m"), std::string::npos) << unknown;
 }
 
+TEST(OptionTable, NumberListsAreParsedOnceAndReadBackAsTheyWereWritten) {
+  ToyOptions o;
+  set_from_text(o, "--set", "toy option", "stages", " 30, 10 ,2.5");
+  EXPECT_EQ(o.stages, (std::vector<double>{30.0, 10.0, 2.5}));
+  set_from_text(o, "--set", "toy option", "stages", "none");
+  EXPECT_TRUE(o.stages.empty());
+  EXPECT_EQ(to_json<nlohmann::ordered_json>(o).at("stages"), "none");
+  set_from_text(o, "--set", "toy option", "stages", "7");
+  EXPECT_EQ(o.stages, (std::vector<double>{7.0}));
+  // JSON's text is the text that sets it again: a run.json value can go back to --set.
+  ToyOptions again;
+  set_from_text(again, "--set", "toy option", "stages",
+                to_json<nlohmann::ordered_json>(ToyOptions{}).at("stages").get<std::string>());
+  EXPECT_EQ(again.stages, ToyOptions{}.stages);
+  for (const char* bad : {"5,,1", "", "1e999", "inf", "5;1", "x", "5,"}) {
+    ToyOptions kept;
+    const std::string error = error_of(kept, "stages", bad);
+    EXPECT_NE(error.find("expected numbers separated by commas, or none"), std::string::npos)
+        << bad << ": " << error;
+    EXPECT_EQ(kept.stages, ToyOptions{}.stages) << "a refused list leaves the option as it was";
+  }
+}
+
 TEST(OptionTable, JsonAndReferenceReadBack) {
   ToyOptions o;
   const nlohmann::ordered_json j = to_json<nlohmann::ordered_json>(o);
   EXPECT_EQ(j.dump(),
             R"({"count":3,"seed":7,"size_m":1.5,"budget_ms":"inf","enabled":false,"name":"toy",)"
-            R"("colour":"red"})");
+            R"("colour":"red","stages":"449.2,89.84,22.46"})");
   const std::string reference = options::reference<ToyOptions>();
   EXPECT_NE(reference.find("  budget_ms=inf\n      time budget (ms); inf = off\n"),
             std::string::npos)
       << reference;
-  EXPECT_EQ(option_keys<ToyOptions>().size(), 7u);
+  EXPECT_EQ(option_keys<ToyOptions>().size(), 8u);
   EXPECT_THROW(split_assignment("--set", "count"), ParseError);
   EXPECT_THROW(split_assignment("--set", "=3"), ParseError);
   EXPECT_EQ(split_assignment("--set", "name=a=b").second, "a=b");

@@ -171,7 +171,7 @@ GraphRobustness RgbdslamFrontEnd::graph_robustness() const {
   robustness.kernel.kind = options_.robust_kernel;
   robustness.kernel.width_chi2 = options_.robust_kernel_chi2;
   robustness.kernel.every_edge = true;
-  robustness.pruning.chi2_thresholds = parse_chi2_thresholds("prune_chi2", options_.prune_chi2);
+  robustness.pruning.chi2_thresholds = options_.prune_chi2;
   return robustness;
 }
 

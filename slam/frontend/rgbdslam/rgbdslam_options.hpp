@@ -4,6 +4,7 @@
 // no front end.
 
 #include <string>
+#include <vector>
 
 #include "slam/optimize/robust_kernel.hpp"
 
@@ -40,7 +41,8 @@ struct RgbdslamOptions {
   /// edge measured as well as it claims is pruned with probability 0.1 %.
   RobustKernel::Kind robust_kernel = RobustKernel::Kind::kHuber;
   double robust_kernel_chi2 = 4 * 22.46;         // where the kernel leaves the quadratic
-  std::string prune_chi2 = "449.2,89.84,22.46";  // stages, comma-separated; "none": no pruning
+  /// After-run pruning stages, chi^2 thresholds in order; empty: no pruning ("none").
+  std::vector<double> prune_chi2 = {449.2, 89.84, 22.46};
 
   /// Incremental optimisation after every n-th keyframe, besides after each keyframe that brought
   /// a loop closure (RGBDSLAMv2's `optimizer_skip_step`, default 1). 0: after loop closures only.

@@ -186,16 +186,6 @@ TEST(EdgePruning, NothingOverTheThresholdMeansNoReoptimisation) {
   for (const GraphEdge& e : graph.edges()) EXPECT_FALSE(e.pruned);
 }
 
-TEST(EdgePruning, ParsesScheduleListsAndRefusesBadEntriesByKey) {
-  EXPECT_EQ(parse_chi2_thresholds("prune_chi2", "449.2,89.84, 22.46"),
-            (std::vector<double>{449.2, 89.84, 22.46}));
-  EXPECT_TRUE(parse_chi2_thresholds("prune_chi2", "none").empty());
-  EXPECT_TRUE(parse_chi2_thresholds("prune_chi2", "").empty());
-  for (const char* bad : {"5,,1", "0", "-1", "1e999", "inf", "5;1", "x"}) {
-    EXPECT_THROW(parse_chi2_thresholds("prune_chi2", bad), InvalidInputError) << bad;
-  }
-}
-
 TEST(PoseGraphOptimiser, KeepsThePosesWhenCeresCannotUseItsSolution) {
   PoseGraph graph;
   for (int i = 0; i < 3; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
