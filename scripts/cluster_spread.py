@@ -17,17 +17,7 @@ import statistics
 import sys
 from pathlib import Path
 
-
-def read_tum(path):
-    stamps, xy = [], []
-    with open(path) as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            p = line.split()
-            stamps.append(float(p[0]))
-            xy.append((float(p[1]), float(p[2])))
-    return stamps, xy
+from tum_text import read_tum_xy as read_tum
 
 
 def main():

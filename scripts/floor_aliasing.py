@@ -25,6 +25,8 @@ from pathlib import Path
 
 import numpy as np
 
+from tum_text import read_tum_xy
+
 FLOOR_DBM = -100.0
 BINS_M = [0.0, 2.0, 4.0, 8.0, 16.0, float("inf")]
 
@@ -34,14 +36,7 @@ def read_scans(dataset):
     with open(dataset / "wifi.csv", newline="") as f:
         for row in csv.DictReader(f):
             scans[int(row["timestamp"])][row["mac_addr"]] = float(row["rssi_dbm"])
-    stamps, xy = [], []
-    with open(dataset / "groundtruth.txt") as f:
-        for line in f:
-            if line.startswith("#") or not line.strip():
-                continue
-            p = line.split()
-            stamps.append(float(p[0]))
-            xy.append((float(p[1]), float(p[2])))
+    stamps, xy = read_tum_xy(dataset / "groundtruth.txt")
     positions = []
     for t_us in sorted(scans):
         i = bisect.bisect_left(stamps, t_us * 1e-6)

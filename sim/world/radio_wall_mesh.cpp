@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/world/plan_queries.hpp"
+
 namespace wifislam::sim {
 
 radio_model::WallMesh radio_wall_mesh(const Mesh& mesh) {
@@ -37,14 +39,6 @@ void append(radio_model::WallMesh& into, const radio_model::WallMesh& part, int&
   next_wall_id += top + 1;
 }
 
-double distance_to_segment_m(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                             const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0.0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - p).norm();
-}
-
 /// The tops of the storey's walls, as faces of the walls they close. In one storey no link
 /// passes through a wall's top (access points and receivers stand below it), so the mesh's
 /// walls are open there; between storeys a link from below leaves a wall through its top, and
@@ -59,13 +53,11 @@ void add_wall_tops(const Storey& storey, radio_model::WallMesh& walls) {
     if (std::abs(p0.z() - top_z) > 1e-3f) continue;  // the bottom caps lie on the slab
     const Eigen::Vector3f centre =
         (p0 + mesh.positions_m[tri.v[1]] + mesh.positions_m[tri.v[2]]) / 3.0f;
-    const WallFace2* nearest = nullptr;
-    double best_m = 0.0;
-    for (const WallFace2& f : storey.plan.wall_faces) {
-      const double d = distance_to_segment_m(centre.head<2>().cast<double>(), f.a_m, f.b_m);
-      if (!nearest || d < best_m) nearest = &f, best_m = d;
-    }
-    if (!nearest || nearest->wall_id < 0) continue;
+    int face_index = -1;
+    nearest_wall_distance_m(storey.plan, centre.head<2>().cast<double>(), &face_index);
+    if (face_index < 0) continue;
+    const WallFace2* nearest = &storey.plan.wall_faces[static_cast<std::size_t>(face_index)];
+    if (nearest->wall_id < 0) continue;
     radio_model::WallMesh::Face face;
     face.v = {tri.v[0], tri.v[1], tri.v[2]};
     face.wall_id = nearest->wall_id;

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "tests/sim/scene/scene_text.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -24,23 +25,11 @@ route:
   nodes: [A, B, C]
 )";
 
-/// Loads `yaml` and returns the ParseError it must raise.
 ParseError expect_parse_error(const std::string& yaml) {
-  try {
-    load_scene_yaml(yaml, "bad.yaml");
-  } catch (const ParseError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no ParseError for:\n" << yaml;
-  return ParseError("", "", "");
+  return test::expect_parse_error(yaml, "bad.yaml");
 }
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replace;
 
 TEST(SceneErrors, ValidBaseSceneLoads) { EXPECT_NO_THROW(load_scene_yaml(kValidBody, "ok.yaml")); }
 

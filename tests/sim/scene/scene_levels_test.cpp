@@ -7,6 +7,7 @@
 #include "core/error.hpp"
 #include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "tests/sim/scene/scene_text.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -35,21 +36,10 @@ route:
 )";
 
 ParseError expect_parse_error(const std::string& yaml) {
-  try {
-    load_scene_yaml(yaml, "levels.yaml");
-  } catch (const ParseError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "no ParseError for:\n" << yaml;
-  return ParseError("", "", "");
+  return test::expect_parse_error(yaml, "levels.yaml");
 }
 
-std::string replace(std::string text, const std::string& from, const std::string& to) {
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
+using test::replace;
 
 bool mentions(const ParseError& e, const std::string& part) {
   return std::string(e.what()).find(part) != std::string::npos;
