@@ -87,7 +87,8 @@ std::vector<PauseReadings> simulate_candidates(const sim::Site& site, const Plac
   all.explicit_list.clear();
   for (const Eigen::Vector3d& position_m : result.candidates) {
     sim::AccessPointSpec spec;
-    spec.position_m = position_m;
+    spec.position_m = position_m;  // z above the level's floor
+    spec.level = result.level;
     all.explicit_list.push_back(spec);
   }
   all.count = static_cast<int>(result.candidates.size());
@@ -179,6 +180,7 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
   result.scene_access_points = static_cast<int>(site->access_points().size());
   const std::vector<Eigen::Vector2d> spots = candidate_spots(*site, options);
   result.plan = site->world().plan;
+  result.level = site->world().level_id;  // candidates on the route's level, as its pauses
   for (const Eigen::Vector2d& s : spots)
     result.candidates.emplace_back(s.x(), s.y(), scene.access_points.height_m);
   progress(

@@ -75,6 +75,8 @@ struct PlacementResult {
   RadioResolution scene_own;
   std::vector<Eigen::Vector2d> pause_positions_m;
   sim::FloorPlan plan;  // for drawing
+  /// The level the candidates stand on, the route's (scene `levels:`; empty for one level).
+  std::string level;
 };
 
 /// The chosen positions over the floor plan (candidates grey, pauses blue, access points numbered

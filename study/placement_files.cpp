@@ -42,7 +42,8 @@ std::string access_points_yaml(const PlacementResult& result, const PlacementOpt
       result.steps.size(), scene_path, options.candidate_spacing_m, options.wifi.similarity);
   for (const PlacementStep& step : result.steps) {
     const Eigen::Vector3d& p = result.candidates[static_cast<std::size_t>(step.candidate)];
-    yaml += fmt::format("    - {{position_m: [{:.2f}, {:.2f}, {:.2f}]}}\n", p.x(), p.y(), p.z());
+    yaml += fmt::format("    - {{position_m: [{:.2f}, {:.2f}, {:.2f}]{}}}\n", p.x(), p.y(), p.z(),
+                        result.level.empty() ? "" : ", level: " + result.level);
   }
   return yaml;
 }

@@ -11,8 +11,11 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <utility>
 
+#include "radio_model/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/site/site.hpp"
 #include "study/result_store.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
@@ -215,6 +218,37 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
   EXPECT_EQ(no_pauses.exit_code, 2) << no_pauses.err;
   EXPECT_NE(no_pauses.err.find("route.pause"), std::string::npos) << no_pauses.err;
   EXPECT_FALSE(fs::exists(dir / "none"));
+  fs::remove_all(dir);
+}
+
+// A building of several levels: the candidates stand on the route's level (the one its pauses
+// hear them from), and the block the study writes names it, so that pasted into the scene the
+// chosen APs are where they were simulated.
+TEST(StudyPlace, OnAnUpperLevelTheCandidatesAndTheirBlockAreOnTheRoutesLevel) {
+  const fs::path dir = test::scratch_folder();
+  std::string upstairs = test::read_file(kScenes + "/two_storey_office.yaml");
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"  nodes: [A, B]\n", "  nodes: [A1, B1]\n"},
+        {"  level: ground\n", "  level: first\n"}}) {
+    ASSERT_NE(upstairs.find(from), std::string::npos) << from;
+    upstairs.replace(upstairs.find(from), from.size(), to);
+  }
+  test::write_file(dir / "upstairs.yaml", upstairs);
+  const auto r = test::run_wifislam("study place " + (dir / "upstairs.yaml").string() +
+                                        " --budget 2 -q -o " + (dir / "place").string(),
+                                    dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::string block = test::read_file(dir / "place" / "access_points.yaml");
+  const std::string own = "access_points: {placement: rooms, count: 4, height_m: 2.5}\n";
+  ASSERT_NE(upstairs.find(own), std::string::npos);
+  upstairs.replace(upstairs.find(own), own.size(), block);
+  const sim::Scene loaded = sim::load_scene_yaml(upstairs, "upstairs with the placed APs");
+  ASSERT_EQ(loaded.access_points.explicit_list.size(), 2u);
+  for (const sim::AccessPointSpec& ap : loaded.access_points.explicit_list)
+    EXPECT_EQ(ap.level, "first") << block;
+  // Placed on the upper storey: 2.5 m above its floor at 3.1 m.
+  const sim::Site site(loaded);
+  for (const auto& ap : site.access_points()) EXPECT_NEAR(ap.position_m.z(), 3.1 + 2.5, 1e-9);
   fs::remove_all(dir);
 }
 
