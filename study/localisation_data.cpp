@@ -199,8 +199,8 @@ void add_other_floor(LocalisationData& data, LocalisationData other,
     }
   }
   data.other_floor_images = static_cast<int>(other.images.size());
-  data.description +=
-      fmt::format("; the map also holds level {} ({})", other.level, other.description);
+  data.description += fmt::format("; the map also holds level {}'s route ({} images)", other.level,
+                                  data.other_floor_images);
 }
 
 }  // namespace wifislam::study

@@ -44,5 +44,9 @@ done
 "$wifislam" localize fei_building.yaml --other-floor fei_building_l2.yaml -o loc_fei_cross -q --force >/dev/null
 "$wifislam" localize fei_building_l2.yaml --other-floor fei_building.yaml -o loc_fei_cross_l2 -q --force >/dev/null
 "$wifislam" localize wh_building.yaml --other-floor wh_building_l3.yaml -o loc_wh_cross -q --force >/dev/null
-for s in loc_fei_cross loc_fei_cross_l2 loc_wh_cross; do tail -n 3 $s/summary.md; done
+"$wifislam" localize fei_building.yaml --other-floor fei_building_l2.yaml --method wifi-fabmap \
+  --wifi-words thermometer -o loc_fei_cross_thermometer -q --force >/dev/null
+for s in loc_fei_cross loc_fei_cross_l2 loc_wh_cross loc_fei_cross_thermometer; do
+  tail -n 3 $s/summary.md
+done
 echo "results: $out"
