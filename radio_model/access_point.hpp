@@ -54,6 +54,8 @@ class MacAllocator {
   /// The base MAC for access point `ap_id`: drawn from the sub-stream "access_points/mac/<id>"
   /// (so it does not depend on the other APs unless they collide), redrawn on collision.
   MacAddress allocate(int ap_id);
+  /// Marks a base MAC as taken (an AP made by another allocator of the same seed).
+  void reserve(MacAddress base) { used_.insert(base.value); }
 
  private:
   std::uint64_t seed_;

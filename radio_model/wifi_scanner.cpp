@@ -38,18 +38,19 @@ WifiScanner::WifiScanner(const PropagationModel& model, WifiScannerOptions optio
 
 bool WifiScanner::beacon_in_dwell(double offset_s, std::int64_t dwell_start_ns) const {
   const double interval_s = options_.beacon_interval_s;
-  if (options_.dwell_per_channel_s >= interval_s) return true;
+  if (options_.device.dwell_per_channel_s >= interval_s) return true;
   // Time from the dwell's start to the BSSID's next beacon (target beacon transmission time).
   const double start_s = static_cast<double>(dwell_start_ns) * 1e-9;
   double wait_s = std::fmod(offset_s - start_s, interval_s);
   if (wait_s < 0.0) wait_s += interval_s;
-  return wait_s < options_.dwell_per_channel_s;
+  return wait_s < options_.device.dwell_per_channel_s;
 }
 
 std::int64_t WifiScanner::scan_duration_ns() const {
-  const std::size_t channels =
-      scan_channels(RadioBand::k2_4GHz).size() + scan_channels(RadioBand::k5GHz).size();
-  return static_cast<std::int64_t>(std::llround(options_.dwell_per_channel_s * 1e9)) *
+  std::size_t channels = 0;
+  for (RadioBand band : {RadioBand::k2_4GHz, RadioBand::k5GHz})
+    if (options_.device.scans(band)) channels += scan_channels(band).size();
+  return static_cast<std::int64_t>(std::llround(options_.device.dwell_per_channel_s * 1e9)) *
          static_cast<std::int64_t>(channels);
 }
 
@@ -73,7 +74,7 @@ WifiScan WifiScanner::scan(Timestamp start,
   }
 
   const std::int64_t dwell_ns =
-      static_cast<std::int64_t>(std::llround(options_.dwell_per_channel_s * 1e9));
+      static_cast<std::int64_t>(std::llround(options_.device.dwell_per_channel_s * 1e9));
   WifiScan out;
   out.sensor_id = options_.sensor_id;
   out.start_time = start;
@@ -89,7 +90,9 @@ WifiScan WifiScanner::scan(Timestamp start,
   std::vector<std::optional<LinkAt>> links(aps.size());
 
   std::int64_t slot = 0;
+  const ReceiverDevice& device = options_.device;
   for (RadioBand band : {RadioBand::k2_4GHz, RadioBand::k5GHz}) {
+    if (!device.scans(band)) continue;
     for (int channel : scan_channels(band)) {
       const std::int64_t dwell_start_ns = start.ns + slot * dwell_ns;
       const Timestamp mid = Timestamp::from_ns(dwell_start_ns + dwell_ns / 2);
@@ -114,21 +117,23 @@ WifiScan WifiScanner::scan(Timestamp start,
           if (!beacon_in_dwell(beacon_offsets_s_[a][k], dwell_start_ns)) continue;
           const double mean_dbm = model_.mean_rssi_dbm(a, b, *link);
           // Not heard whatever the fading: skip its 64 cosines. The bound is evaluated as the
-          // sample below with the fading replaced by a value at least as large, and rounding is
-          // monotonic, so it is never below the sample (fading_process.hpp, max_abs_db).
-          if (mean_dbm + fading.max_abs_db() + spread - people_db[a] - options_.sensitivity_dbm <
+          // level below with the fading replaced by a value at least as large, and rounding and
+          // the device's map (gain > 0) are monotonic, so it is never below the level
+          // (fading_process.hpp, max_abs_db).
+          if (device.reported_dbm(mean_dbm + fading.max_abs_db() + spread - people_db[a]) -
+                  device.sensitivity_dbm <
               0.0)
             continue;
           if (!fading_db) fading_db = fading.at_db(mid.seconds(), where->head<2>());
-          const double sample = mean_dbm + *fading_db + spread - people_db[a];
-          const double margin = sample - options_.sensitivity_dbm;
+          const double reported =
+              device.reported_dbm(mean_dbm + *fading_db + spread - people_db[a]);
+          const double margin = reported - device.sensitivity_dbm;
           if (margin < 0.0) continue;
           if (u >= 1.0 - std::exp(-margin / options_.detection_width_db)) continue;
           // A receiver saturates: it never reports more than kMaxRssiDbm, however strong the
           // shadowing and fading draws are.
           out.readings.push_back(
-              {b.mac, b.frequency_khz,
-               static_cast<int>(std::lround(std::min<double>(sample, kMaxRssiDbm))), b.ssid});
+              {b.mac, b.frequency_khz, device.quantised_dbm(reported, kMaxRssiDbm), b.ssid});
         }
       }
     }

@@ -1,11 +1,13 @@
 #pragma once
-// The receiver: one scan sweeps the channels of scan_channels() in order, dwelling
-// `dwell_per_channel_s` on each, and reports every BSSID it heard with an integer RSSI.
+// The receiver: one scan sweeps the channels of scan_channels() that its device scans (both
+// bands, or one: receiver_device.hpp), in order, dwelling the device's `dwell_per_channel_s` on
+// each, and reports every BSSID it heard with an integer RSSI.
 //
 // Per BSSID and scan, heard on its channel at time t (the middle of the channel's dwell) and
 // receiver position p:
 //   RSSI sample = mean RSSI (propagation_model.hpp) + F_radio(t, p) + N(0, bssid_spread_db)
 //                 - people,
+// then as the device reads it: reported = device.reported_dbm(sample) (its offset and gain),
 // F_radio the fading of the BSSID's radio (fading_process.hpp: shared by the radio's BSSIDs,
 // correlated over `fading_coherence_s` at a still receiver, independent a few centimetres
 // away), and with probability `people_probability` someone stands in the path of that AP during
@@ -20,10 +22,11 @@
 //     Offsets are per BSSID (drivers stagger the beacons of an AP's virtual BSSs over the
 //     interval), so one radio's BSSIDs are missed independently. Probe responses (active
 //     scanning) are not modelled.
-//  2. Sensitivity: a sample below `sensitivity_dbm` is never heard.
+//  2. Sensitivity: a reported level below the device's `sensitivity_dbm` is never heard.
 //  3. Decoding: above it, the beacon is decoded with probability
-//     1 - exp(-(sample - sensitivity) / detection_width_db), so APs near the floor come and go
+//     1 - exp(-(reported - sensitivity) / detection_width_db), so APs near the floor come and go
 //     between scans (as real cards report them).
+// The RSSI written is the reported level rounded to the device's quantisation step.
 // A beacon must pass all three, so near the floor the miss rates multiply:
 // P(heard) = P(beacon in dwell) x P(decoded | sample).
 //
@@ -44,12 +47,12 @@
 #include "radio_model/fading_process.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/radio_defaults.hpp"
+#include "radio_model/receiver_device.hpp"
 
 namespace wifislam::radio_model {
 
 struct WifiScannerOptions {
-  double sensitivity_dbm = defaults::kSensitivityDbm;
-  double dwell_per_channel_s = defaults::kDwellPerChannelS;
+  ReceiverDevice device;              // the reference receiver unless the scene names another
   double detection_width_db = 3.0;    // how far above the floor detection becomes near-certain
   double beacon_interval_s = 0.1024;  // 802.11 default: 100 TU of 1.024 ms
   std::string sensor_id = "wifi0";

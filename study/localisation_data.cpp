@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <variant>
 
 #include <fmt/format.h>
@@ -201,6 +202,43 @@ void add_other_floor(LocalisationData& data, LocalisationData other,
   data.other_floor_images = static_cast<int>(other.images.size());
   data.description += fmt::format("; the map also holds level {}'s route ({} images)", other.level,
                                   data.other_floor_images);
+}
+
+void add_query_session(LocalisationData& data, LocalisationData queries,
+                       const std::string& queries_name) {
+  const auto refuse = [&](const std::string& why) {
+    throw InvalidInputError(fmt::format("--queries {}: {}", queries_name, why));
+  };
+  if (queries.images.empty()) refuse("it gives no image");
+  if (data.level != queries.level)
+    refuse(fmt::format("its route is on level '{}', the map's on level '{}'", queries.level,
+                       data.level));
+  std::vector<double> nearest_m;
+  for (const LocalisationImage& q : queries.images) {
+    double best = std::numeric_limits<double>::infinity();
+    for (const LocalisationImage& m : data.images)
+      if (m.floor == 0) best = std::min(best, (m.position_m - q.position_m).norm());
+    nearest_m.push_back(best);
+  }
+  std::nth_element(nearest_m.begin(), nearest_m.begin() + nearest_m.size() / 2, nearest_m.end());
+  const double median_m = nearest_m[nearest_m.size() / 2];
+  if (!(median_m <= kSameRouteMedianM))
+    refuse(fmt::format("not the map's route: its images lie {:.1f} m (median) from the nearest "
+                       "map image, more than {:g} m",
+                       median_m, kSameRouteMedianM));
+  for (LocalisationImage& image : queries.images) {
+    image.query_session = true;
+    data.images.push_back(std::move(image));
+  }
+  for (auto [scans, others] : {std::pair{&data.pause_scans, &queries.pause_scans},
+                               std::pair{&data.moving_scans, &queries.moving_scans}}) {
+    for (PositionedScan& scan : *others) {
+      scan.query_session = true;
+      scans->push_back(std::move(scan));
+    }
+  }
+  data.query_session_images = static_cast<int>(queries.images.size());
+  data.description += fmt::format("; queries: {}", queries.description);
 }
 
 }  // namespace wifislam::study

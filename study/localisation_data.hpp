@@ -36,12 +36,15 @@ struct LocalisationImage {
   /// 0: on the route's level; 1: from the route on another floor joined to the map
   /// (add_other_floor), whose images are all map and never queries.
   int floor = 0;
+  /// From the query session joined with add_query_session: a query, never map.
+  bool query_session = false;
 };
 
 struct PositionedScan {
   WifiScan scan;
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // true receiver position
   int floor = 0;                                         // as LocalisationImage::floor
+  bool query_session = false;                            // as LocalisationImage::query_session
 };
 
 struct LocalisationData {
@@ -54,6 +57,7 @@ struct LocalisationData {
   std::string level;
   std::vector<std::string> building_levels;
   int other_floor_images = 0;  // images joined from another floor (add_other_floor)
+  int query_session_images = 0;  // images of a query session (add_query_session): the queries
 };
 
 struct LocalisationDataOptions {
@@ -79,5 +83,17 @@ LocalisationData localisation_data_from_dataset(const std::filesystem::path& dat
 /// floors look alike. Throws InvalidInputError naming `other_name` when either input is not of a
 /// building of several levels, the buildings' levels differ, or both routes are on one level.
 void add_other_floor(LocalisationData& data, LocalisationData other, const std::string& other_name);
+
+/// Makes `queries`, another visit of the same route (another session, device or day), the
+/// queries, and every image of `data` the map: the map and the queries then come from two runs
+/// instead of one run's first part and the rest (localization's --queries). Throws
+/// InvalidInputError naming `queries_name` when the two are not of the same route: on other
+/// levels, or with its images' median distance to the nearest map image above
+/// kSameRouteMedianM.
+void add_query_session(LocalisationData& data, LocalisationData queries,
+                       const std::string& queries_name);
+/// Two runs of one route put their images well within this of each other (images every 2 s at
+/// 0.5 m/s are 1 m apart); runs of other routes do not.
+inline constexpr double kSameRouteMedianM = 2.0;
 
 }  // namespace wifislam::study

@@ -24,25 +24,33 @@ using slam::place::FabMap;
 struct Split {
   std::vector<int> map, queries;
   Timestamp split_time;
+  bool by_session = false;  // a query session: map and queries are two runs
 };
 
-/// Whether an image or scan of the route's floor (0) lies before the split; another floor's are
-/// all map.
-bool in_map(int floor, Timestamp time, Timestamp split_time) {
-  return floor != 0 || time < split_time;
+/// Whether an image or scan is of the map. With a query session (add_query_session) the map is
+/// everything but that session; else the route's floor (0) before the split, and another floor
+/// all of it.
+Timestamp time_of(const LocalisationImage& image) { return image.time; }
+Timestamp time_of(const PositionedScan& scan) { return scan.scan.time; }
+
+template <class Item>
+bool in_map(const Item& item, const Split& split) {
+  if (split.by_session) return !item.query_session;
+  return item.floor != 0 || time_of(item) < split.split_time;
 }
 
 Split split_images(const LocalisationData& data, double map_share) {
+  Split s;
+  s.by_session = data.query_session_images > 0;
   std::vector<std::int64_t> route_ns;
   for (const LocalisationImage& image : data.images)
-    if (image.floor == 0) route_ns.push_back(image.time.ns);
+    if (image.floor == 0 && !image.query_session) route_ns.push_back(image.time.ns);
   if (route_ns.size() < 2) throw InvalidInputError("localize: fewer than two images");
   const std::int64_t t0 = route_ns.front(), t1 = route_ns.back();
-  Split s;
   s.split_time = Timestamp::from_ns(t0 + std::llround(map_share * static_cast<double>(t1 - t0)));
   for (int i = 0; i < static_cast<int>(data.images.size()); ++i) {
     const LocalisationImage& image = data.images[static_cast<std::size_t>(i)];
-    (in_map(image.floor, image.time, s.split_time) ? s.map : s.queries).push_back(i);
+    (in_map(image, s) ? s.map : s.queries).push_back(i);
   }
   if (s.map.empty() || s.queries.empty()) {
     throw InvalidInputError("localize: the route gives no map image or no query image");
@@ -92,11 +100,11 @@ class WifiWords {
 /// The scan among `scans` on the image's floor (restricted to the map's or the queries')
 /// closest to the image.
 const PositionedScan* closest_scan(const std::vector<PositionedScan>& scans,
-                                   const LocalisationImage& image, Timestamp split, bool map) {
+                                   const LocalisationImage& image, const Split& split, bool map) {
   const PositionedScan* best = nullptr;
   double best_m = std::numeric_limits<double>::infinity();
   for (const PositionedScan& s : scans) {
-    if (s.floor != image.floor || in_map(s.floor, s.scan.time, split) != map) continue;
+    if (s.floor != image.floor || in_map(s, split) != map) continue;
     const double d = (s.position_m - image.position_m).norm();
     if (d < best_m) {
       best_m = d;
@@ -158,14 +166,14 @@ void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
   const std::vector<PositionedScan>& scans = c.data.moving_scans;
   std::vector<PositionedScan> map_scans;  // the words are the access points the map heard
   for (const PositionedScan& s : scans) {
-    if (in_map(s.floor, s.scan.time, c.split.split_time)) map_scans.push_back(s);
+    if (in_map(s, c.split)) map_scans.push_back(s);
   }
   const WifiWords words(map_scans, c.options.wifi_words);
   const int visual_words = c.training.tree.word_count();
   std::vector<BinaryObservation> map_wifi;
   for (int m : c.split.map) {
     const auto& image = c.data.images[static_cast<std::size_t>(m)];
-    const PositionedScan* scan = closest_scan(scans, image, c.split.split_time, true);
+    const PositionedScan* scan = closest_scan(scans, image, c.split, true);
     map_wifi.push_back(scan ? words.of(scan->scan) : BinaryObservation{});
   }
   // Wi-Fi words are independent in the tree, with their marginals over the map images.
@@ -191,7 +199,7 @@ void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
   for (int q : c.split.queries) {
     const auto start = WallClock::now();
     const auto& image = c.data.images[static_cast<std::size_t>(q)];
-    const PositionedScan* scan = closest_scan(scans, image, c.split.split_time, false);
+    const PositionedScan* scan = closest_scan(scans, image, c.split, false);
     const BinaryObservation query =
         slam::place::concatenate(c.visual[static_cast<std::size_t>(q)],
                                  scan ? words.of(scan->scan) : BinaryObservation{}, visual_words);
@@ -286,6 +294,7 @@ LocalisationResult run_localisation(const LocalisationData& data,
   out.map_images = static_cast<int>(split.map.size());
   out.query_images = static_cast<int>(split.queries.size());
   out.other_floor_images = data.other_floor_images;
+  out.queries_from_another_run = split.by_session;
   const Context context{data, split, visual, training, options};
   FabMap fabmap(training.tree, options.fabmap, training.observations);
   for (int m : split.map) fabmap.add_place(visual[static_cast<std::size_t>(m)]);

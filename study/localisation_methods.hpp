@@ -70,6 +70,7 @@ struct LocalisationResult {
   std::string description;
   int map_images = 0, query_images = 0;
   int other_floor_images = 0;        // of the map images, those of another floor
+  bool queries_from_another_run = false;  // add_query_session: the input is all map
   std::vector<QueryResult> queries;  // per method, in query order
 };
 

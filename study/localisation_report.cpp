@@ -115,6 +115,8 @@ std::string summary_markdown(const nlohmann::ordered_json& s) {
   std::string out = fmt::format("# Localisation: {}\n\n{} map images, {} queries.\n\n",
                                 s["input"].get<std::string>(), s["map_images"].get<int>(),
                                 s["query_images"].get<int>());
+  if (s.contains("queries_from_another_run"))
+    out += "The map is the whole input; the queries are another run of its route.\n\n";
   const bool floors = s.contains("other_floor_images");
   if (floors) {
     out += fmt::format(
@@ -169,9 +171,13 @@ nlohmann::ordered_json localisation_summary(const LocalisationResult& result,
   }
   nlohmann::ordered_json summary = {{"input", result.description},
                                     {"map_images", result.map_images},
-                                    {"query_images", result.query_images},
-                                    {"map_share", options.map_share},
-                                    {"methods", methods}};
+                                    {"query_images", result.query_images}};
+  // One run split in time, or the queries of another run (add_query_session).
+  if (result.queries_from_another_run)
+    summary["queries_from_another_run"] = true;
+  else
+    summary["map_share"] = options.map_share;
+  summary["methods"] = methods;
   if (result.other_floor_images > 0) summary["other_floor_images"] = result.other_floor_images;
   return summary;
 }

@@ -5,12 +5,16 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
+#include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "radio_model/receiver_device.hpp"
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/scene/scene_loader.hpp"
 
@@ -21,6 +25,8 @@ struct GenerateArgs {
   std::string output;
   std::optional<std::uint64_t> seed;
   std::optional<double> fps;
+  std::string device;
+  std::optional<std::uint64_t> session;
   std::int64_t max_frames = -1;
   bool no_images = false;
   int threads = 0;
@@ -42,8 +48,18 @@ void draw_progress(const wifislam::sim::GenerateProgress& p) {
 
 void run_generate(const GenerateArgs& args) {
   using namespace wifislam;
-  const bool replace = check_output_folder({args.output, args.force, {}, {args.scene_path}});
-  const sim::Scene scene = sim::load_scene_file(args.scene_path);
+  std::vector<std::filesystem::path> inputs{args.scene_path};
+  if (std::filesystem::exists(args.device)) inputs.push_back(args.device);
+  const bool replace = check_output_folder({args.output, args.force, {}, inputs});
+  sim::Scene scene = sim::load_scene_file(args.scene_path);
+  if (args.session) scene.session = *args.session;
+  if (!args.device.empty()) {
+    try {
+      scene.sensors.wifi.device = sim::load_receiver_device(args.device);
+    } catch (const InvalidInputError& e) {
+      throw InvalidInputError(fmt::format("--device: {}", e.what()));
+    }
+  }
   sim::GenerateOptions options;
   options.seed = args.seed;
   options.fps = args.fps;
@@ -95,6 +111,19 @@ WIFISLAM_COMMAND(generate, 50) {
       ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
       ->check(CLI::NonNegativeNumber);
+  std::string shipped;
+  for (const auto& device : wifislam::radio_model::shipped_devices())
+    shipped += (shipped.empty() ? "" : ", ") + device.name;
+  app->add_option("--device", args->device,
+                  "The Wi-Fi receiver, in place of the scene's sensors.wifi.device: a shipped\n"
+                  "device (" + shipped + ")\n"
+                  "or a device file (*.yaml; scenes/README.md lists its keys)");
+  app->add_option("--session", args->session,
+                  "Which visit of the building to render (default: the scene's `session`, else\n"
+                  "0): the same building, route and appearance, with the scene's\n"
+                  "access_points.changes up to this session applied; the robot's pauses, the\n"
+                  "sensors' noise and the Wi-Fi draws are the session's own")
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
   app->add_flag("--no-images", args->no_images, "Write poses, odometry and Wi-Fi only");
   app->add_option("--threads", args->threads,
                   "PNG encoding threads (default: one per core; at most 4 per core, fewer if the\n"

@@ -29,6 +29,8 @@ using namespace wifislam;
 struct LocalizeArgs {
   std::string input, output, methods = "fabmap,wifi-fabmap,wifi-clusters";
   std::string vocabulary, training, wifi_words = "presence", route, other_floor;
+  std::string queries, queries_device;
+  std::optional<std::uint64_t> queries_session;
   double image_interval_s = 2.0, moving_scan_interval_s = 10.0, map_share = 0.4;
   std::optional<std::uint64_t> seed;
   std::uint64_t fabmap_seed = 1;
@@ -105,13 +107,46 @@ sim::Scene scene_with_route(const LocalizeArgs& args, bool route_given) {
   return scene;
 }
 
-void run(const LocalizeArgs& args, bool route_given) {
+/// The query run of --queries-session (and --queries-device): the input scene in that session.
+sim::Scene query_session_scene(const LocalizeArgs& args, bool route_given) {
+  sim::Scene scene = scene_with_route(args, route_given);
+  scene.session = *args.queries_session;
+  if (!args.queries_device.empty()) {
+    try {
+      scene.sensors.wifi.device = sim::load_receiver_device(args.queries_device);
+    } catch (const InvalidInputError& e) {
+      throw InvalidInputError(fmt::format("--queries-device: {}", e.what()));
+    }
+  }
+  return scene;
+}
+
+void check_query_options(const LocalizeArgs& args, bool map_share_given) {
+  if (!args.queries.empty() && args.queries_session)
+    throw ParseError("--queries-session", std::to_string(*args.queries_session),
+                     "give --queries or --queries-session, not both");
+  if (args.queries_session && fs::is_directory(args.input))
+    throw ParseError("--queries-session", std::to_string(*args.queries_session),
+                     "a dataset is one session; generate another with generate --session and "
+                     "give it with --queries");
+  if (!args.queries_device.empty() && !args.queries_session)
+    throw ParseError("--queries-device", args.queries_device,
+                     "applies to the queries of --queries-session (a dataset's device is fixed)");
+  if (map_share_given && (!args.queries.empty() || args.queries_session))
+    throw ParseError("--map-share", std::to_string(args.map_share),
+                     "with a query run the whole input is the map; --map-share splits one run");
+}
+
+void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {
   if (route_given && fs::is_directory(args.input)) {
     throw ParseError("--route", args.route,
                      "a dataset's route is fixed; --route applies to scenes");
   }
+  check_query_options(args, map_share_given);
   std::vector<fs::path> inputs = {args.input};
   if (!args.other_floor.empty()) inputs.push_back(args.other_floor);
+  if (!args.queries.empty()) inputs.push_back(args.queries);
+  if (fs::exists(args.queries_device)) inputs.push_back(args.queries_device);
   const bool replace = check_output_folder({args.output, args.force, {}, inputs});
   const study::LocalisationOptions options = localisation_options(args);
   const auto vocabulary = slam::bow::load_vocabulary(args.vocabulary);
@@ -135,6 +170,20 @@ void run(const LocalizeArgs& args, bool route_given) {
             : study::localisation_data_from_scene(sim::load_scene_file(args.other_floor),
                                                   data_options),
         args.other_floor);
+  }
+  if (!args.queries.empty()) {
+    study::add_query_session(
+        data,
+        fs::is_directory(args.queries)
+            ? study::localisation_data_from_dataset(args.queries, data_options)
+            : study::localisation_data_from_scene(sim::load_scene_file(args.queries),
+                                                  data_options),
+        args.queries);
+  } else if (args.queries_session) {
+    study::add_query_session(
+        data, study::localisation_data_from_scene(query_session_scene(args, route_given),
+                                                  data_options),
+        fmt::format("session {}", *args.queries_session));
   }
   if (!args.quiet) {
     fmt::print(stderr, "localize: {}: {} images, {} pause scans, {} moving scans ({:.0f} s)\n",
@@ -191,6 +240,20 @@ WIFISLAM_COMMAND(localize, 67) {
       "Scene or dataset of the same building (scene key levels:) with its route on another\n"
       "level: its images and scans join the map, so a query can choose a place on the wrong\n"
       "floor (summary.md's last column)");
+  app->add_option(
+      "--queries", args->queries,
+      "Scene or dataset of another run of the same route (another session, device or day):\n"
+      "its images are the queries and the whole input is the map, in place of --map-share's\n"
+      "split of one run");
+  app->add_option("--queries-session", args->queries_session,
+                  "Scenes: the queries are the input scene's session K (generate --session): the\n"
+                  "same building with its access-point changes by then, the robot's pauses,\n"
+                  "sensor noise and Wi-Fi draws of that session; the input (session 0, or its\n"
+                  "`session`) is the map")
+      ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
+  app->add_option("--queries-device", args->queries_device,
+                  "With --queries-session: the Wi-Fi device of the query run, a shipped name or\n"
+                  "a device file (scenes/README.md, Receiver devices)");
   app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
   app->add_flag("--no-verify", args->no_verify, "Datasets: do not check their SHA-256 sums");
   app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)");
@@ -203,5 +266,7 @@ WIFISLAM_COMMAND(localize, 67) {
       ->check(cli::kSeedValidator);
   app->add_flag("--force", args->force, "Replace an existing output folder");
   app->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-  app->callback([args, app] { run(*args, app->count("--route") > 0); });
+  app->callback([args, app] {
+    run(*args, app->count("--route") > 0, app->count("--map-share") > 0);
+  });
 }

@@ -125,12 +125,21 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
   c.sensor_model.push_back(
       {"render", {{"near_m", num(options.render.near_m)}, {"far_m", num(options.render.far_m)}}});
   const WifiScannerSpec& w = s.sensors.wifi;
-  c.sensor_model.push_back({"wifi_scanner",
-                            {{"sensitivity_dbm", num(w.sensitivity_dbm)},
-                             {"dwell_per_channel_s", num(w.dwell_per_channel_s)},
-                             {"scan_interval_s", num(w.scan_interval_s)},
-                             {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
-                             {"antenna_height_m", num(s.sensors.camera.height_m)}}});
+  const radio_model::ReceiverDevice device = receiver_device(w);
+  c.sensor_model.push_back(
+      {"wifi_scanner",
+       {{"device", device.name},
+        {"sensitivity_dbm", num(device.sensitivity_dbm)},
+        {"dwell_per_channel_s", num(device.dwell_per_channel_s)},
+        {"rss_offset_db", num(device.rss_offset_db)},
+        {"rss_gain", num(device.rss_gain)},
+        {"rss_gain_pivot_dbm", num(radio_model::kGainPivotDbm)},
+        {"quantisation_db", std::to_string(device.quantisation_db)},
+        {"bands", std::string(to_string(device.bands))},
+        {"scan_throttle", std::string(to_string(device.scan_throttle))},
+        {"scan_interval_s", num(w.scan_interval_s)},
+        {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
+        {"antenna_height_m", num(s.sensors.camera.height_m)}}});
   const World& world = pipeline.site().world();
   if (!world.storeys.empty()) {
     // A building of several levels: access_points.csv's z is the building's, the poses' the
@@ -150,7 +159,7 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
   if (imu.enabled) {
     ImuCalibration i;
     i.rate_hz = imu.rate_hz;
-    i.imu_in_base = ImuModel(pipeline.motion(), imu, s.seed).imu_in_base();
+    i.imu_in_base = ImuModel(pipeline.motion(), imu, session_seed(s)).imu_in_base();
     i.gyroscope_noise_density = imu.gyroscope_noise_density;
     i.gyroscope_random_walk = imu.gyroscope_random_walk;
     i.accelerometer_noise_density = imu.accelerometer_noise_density;
@@ -178,8 +187,11 @@ std::string parameters_json(const Scene& scene, const GenerateOptions& options) 
   nlohmann::ordered_json p;
   p["scene"] = scene.name;
   p["seed"] = scene.seed;
+  if (scene.session) p["session"] = *scene.session;
   p["fps"] = scene.sensors.camera.fps;
   p["time_origin_s"] = scene.sensors.time_origin_s;
+  const radio_model::ReceiverDevice device = receiver_device(scene.sensors.wifi);
+  p["wifi_device"] = {{"name", device.name}, {"source", device.source}};
   p["max_frames"] = options.max_frames;
   p["images"] = options.images();
   if (options.camera == CameraOutput::kDepthOnly)
@@ -228,6 +240,8 @@ class DatasetWriter {
     write_imu();
     for (const RobotPause& p : pipeline_.motion().pauses())
       summary_.pauses += p.start <= pipeline_.schedule().end_time();
+    summary_.wifi_requests_throttled = pipeline_.schedule().throttled_requests();
+    summary_.wifi_device = pipeline_.scanner().options().device.name;
     finish();
     return summary_;
   }
@@ -309,7 +323,7 @@ class DatasetWriter {
     const Scene& scene = pipeline_.scene();
     if (!scene.sensors.imu.enabled) return;
     const auto t_io = WallClock::now();
-    ImuModel imu(pipeline_.motion(), scene.sensors.imu, scene.seed);
+    ImuModel imu(pipeline_.motion(), scene.sensors.imu, session_seed(scene));
     TextOutput out(dir_ / dataset::kImu, imu_csv_header() + "\n");
     TextOutput truth(dir_ / dataset::kImuGroundTruth, imu_groundtruth_csv_header() + "\n");
     const SensorSchedule& schedule = pipeline_.schedule();
@@ -458,6 +472,7 @@ class DatasetWriter {
                        {"imu_samples", summary_.imu_samples},
                        {"wifi_scans", summary_.wifi_scans},
                        {"wifi_scans_that_heard_nothing", summary_.wifi_scans_empty},
+                       {"wifi_scan_requests_throttled", summary_.wifi_requests_throttled},
                        {"wifi_readings", summary_.wifi_readings},
                        {"pauses", summary_.pauses},
                        {"access_points", summary_.access_points},
@@ -548,9 +563,13 @@ std::string GenerateSummary::full_report() const {
   r += fmt::format("time origin       {} s Unix time (sensors.time_origin_s); stamps {} .. {}\n",
                    time_origin_s, first_time.to_tum_string(), last_time.to_tum_string());
   r += fmt::format("pauses            {}\n", pauses);
-  r += fmt::format("wifi scans        {} ({} readings){}\n", wifi_scans, wifi_readings,
+  r += fmt::format("wifi scans        {} ({} readings){}{}\n", wifi_scans, wifi_readings,
                    wifi_scans_empty > 0
                        ? fmt::format("; {} more heard no access point", wifi_scans_empty)
+                       : std::string(),
+                   wifi_requests_throttled > 0
+                       ? fmt::format("; {} requests refused by {}'s throttle",
+                                     wifi_requests_throttled, wifi_device)
                        : std::string());
   r += fmt::format(
       "access points     {} ({} BSSIDs); heard per pause: mean {:.1f}, min {}, max {}\n",

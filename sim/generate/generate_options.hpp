@@ -87,6 +87,8 @@ struct GenerateSummary {
   std::int64_t imu_samples = 0;
   std::int64_t wifi_scans = 0;        // scans with at least one reading (wifi.csv's scans)
   std::int64_t wifi_scans_empty = 0;  // scans that heard no access point (no row in wifi.csv)
+  std::int64_t wifi_requests_throttled = 0;  // scan requests the device's throttle refused
+  std::string wifi_device;                   // the receiver's name (radio_model/receiver_device)
   std::int64_t wifi_readings = 0;
   std::int64_t pauses = 0;
   std::int64_t access_points = 0;

@@ -50,7 +50,7 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
   scanner_ = std::make_unique<radio_model::WifiScanner>(
-      site_->radio(), wifi_scanner_options(scene_.sensors.wifi), scene_.seed);
+      site_->radio(), wifi_scanner_options(scene_.sensors.wifi), session_seed(scene_));
 
   SensorScheduleOptions schedule;
   schedule.fps = scene_.sensors.camera.fps;
@@ -58,18 +58,22 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   schedule.scan_interval_s = scene_.sensors.wifi.scan_interval_s;
   schedule.scan_duration_ns = scanner_->scan_duration_ns();
   schedule.scan_while_moving = scene_.route.pause.scan_while_moving;
+  const radio_model::ThrottleLimit throttle =
+      radio_model::throttle_limit(scanner_->options().device.scan_throttle);
+  schedule.throttle_max_scans = throttle.max_scans;
+  schedule.throttle_window_s = throttle.window_s;
   schedule.max_frames = options.max_frames;
   schedule_ = std::make_unique<SensorSchedule>(site_->motion(), schedule);
-  odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, scene_.seed);
+  odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, session_seed(scene_));
 
   frames_ = options.frames();
   if (options.images()) {
     renderer_ = std::make_unique<RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
     renderer_->set_world(site_->world(), scene_);
     depth_model_ = std::make_unique<DepthSensorModel>(
-        scene_.sensors.depth, scene_.sensors.camera.intrinsics, scene_.seed);
+        scene_.sensors.depth, scene_.sensors.camera.intrinsics, session_seed(scene_));
     color_model_ = std::make_unique<ColorSensorModel>(scene_.sensors.color,
-                                                      scene_.sensors.camera.fps, scene_.seed);
+                                                      scene_.sensors.camera.fps, session_seed(scene_));
   }
   timings_.setup_s = site_build_s_ + seconds_since(t0);
 }

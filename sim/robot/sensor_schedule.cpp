@@ -27,6 +27,8 @@ SensorSchedule::SensorSchedule(const MotionProfile& motion, const SensorSchedule
     throw InvalidInputError("sensor schedule: odometry rate must be positive");
   if (!(options_.scan_interval_s > 0.0))
     throw InvalidInputError("sensor schedule: scan_interval_s must be positive");
+  if (options_.throttle_max_scans > 0 && !(options_.throttle_window_s > 0.0))
+    throw InvalidInputError("sensor schedule: a scan throttle needs a positive window");
   if (options_.scan_duration_ns < 0)
     throw InvalidInputError("sensor schedule: scan duration must not be negative");
 
@@ -40,9 +42,23 @@ SensorSchedule::SensorSchedule(const MotionProfile& motion, const SensorSchedule
 
   const std::int64_t interval_ns = std::llround(options_.scan_interval_s * 1e6) * 1000;
   const std::int64_t duration_ns = options_.scan_duration_ns;
+  const std::int64_t throttle_window_ns = std::llround(options_.throttle_window_s * 1e9);
+  // Granted requests are in time order, so the ones inside a window are the last few.
+  auto granted = [&](std::int64_t start) {
+    if (options_.throttle_max_scans <= 0) return true;
+    std::int64_t in_window = 0;
+    for (auto it = scans_.rbegin(); it != scans_.rend(); ++it) {
+      if (start - it->start.ns > throttle_window_ns) break;
+      ++in_window;
+    }
+    if (in_window < options_.throttle_max_scans) return true;
+    ++throttled_requests_;
+    return false;
+  };
   auto add_scans = [&](std::int64_t from_ns, std::int64_t to_ns, int pause_index) {
     to_ns = std::min(to_ns, end_.ns);
     for (std::int64_t start = from_ns; start + duration_ns <= to_ns; start += interval_ns) {
+      if (!granted(start)) continue;
       scans_.push_back(
           {Timestamp::from_ns(start), Timestamp::from_ns(start + duration_ns), pause_index});
     }

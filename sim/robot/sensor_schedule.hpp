@@ -8,6 +8,13 @@
 // as long as it ends within the pause. With `scan_while_moving` the scanner instead runs
 // throughout the run, one scan every `scan_interval_s` from time 0.
 //
+// A throttled scanner (a phone's operating system: radio_model/receiver_device.hpp) grants at most
+// `throttle_max_scans` requests in any `throttle_window_s`: a request is refused when that many
+// were granted in the window ending at it (Android's WifiScanRequestProxy counts the requests of
+// the last two minutes the same way). A refused request scans nothing: an app then reads the
+// previous scan's results again, which a dataset does not repeat; `throttled_requests()` counts
+// them.
+//
 // `max_frames` shortens the run: it then ends at the last frame's time, and scans and odometry
 // stop there too.
 
@@ -25,6 +32,8 @@ struct SensorScheduleOptions {
   double scan_interval_s = 2.0;       // from one scan's start to the next's
   std::int64_t scan_duration_ns = 0;  // from the scanner: dwell x channels
   bool scan_while_moving = false;
+  int throttle_max_scans = 0;  // 0: every request is granted
+  double throttle_window_s = 0.0;
   std::int64_t max_frames = -1;  // < 0: as many as the route takes
 };
 
@@ -44,6 +53,8 @@ class SensorSchedule {
   std::int64_t odometry_count() const { return odometry_count_; }
   Timestamp odometry_time(std::int64_t j) const;
   const std::vector<ScanWindow>& scans() const { return scans_; }
+  /// Scan requests the throttle refused (none without one).
+  std::int64_t throttled_requests() const { return throttled_requests_; }
   /// The end of the run (the route's end, or the last frame's time with max_frames).
   Timestamp end_time() const { return end_; }
   const SensorScheduleOptions& options() const { return options_; }
@@ -51,7 +62,7 @@ class SensorSchedule {
  private:
   SensorScheduleOptions options_;
   Timestamp end_;
-  std::int64_t frame_count_ = 0, odometry_count_ = 0;
+  std::int64_t frame_count_ = 0, odometry_count_ = 0, throttled_requests_ = 0;
   std::vector<ScanWindow> scans_;
 };
 

@@ -1,6 +1,7 @@
 #include "sim/scene/scene.hpp"
 
 #include "core/error.hpp"
+#include "core/rng.hpp"
 
 namespace wifislam::sim {
 
@@ -78,6 +79,36 @@ void Scene::reject(const std::string& key_path, const std::string& message) cons
     throw InvalidInputError("scene: key '" + key + "': " + message);
   }
   throw ParseError(where(key_path), key, message);
+}
+
+radio_model::ReceiverDevice receiver_device(const WifiScannerSpec& spec) {
+  if (spec.device) return *spec.device;
+  radio_model::ReceiverDevice reference;
+  reference.sensitivity_dbm = spec.sensitivity_dbm;
+  reference.dwell_per_channel_s = spec.dwell_per_channel_s;
+  return reference;
+}
+
+const char* to_string(AccessPointChangeKind kind) {
+  switch (kind) {
+    case AccessPointChangeKind::kOff:
+      return "off";
+    case AccessPointChangeKind::kMoved:
+      return "moved";
+    case AccessPointChangeKind::kPower:
+      return "power";
+    case AccessPointChangeKind::kNew:
+      return "new";
+  }
+  return "unknown";
+}
+
+int session_of(const Scene& scene) { return static_cast<int>(scene.session.value_or(0)); }
+
+std::uint64_t session_seed(const Scene& scene) {
+  const int session = session_of(scene);
+  if (session == 0) return scene.seed;
+  return Rng::stream(scene.seed, "session/" + std::to_string(session)).next_u64();
 }
 
 }  // namespace wifislam::sim

@@ -17,6 +17,7 @@
 #include "core/dataset_format.hpp"
 #include "radio_model/path_loss_choice.hpp"
 #include "radio_model/radio_defaults.hpp"
+#include "radio_model/receiver_device.hpp"
 #include "radio_model/wall_material.hpp"
 
 namespace wifislam::sim {
@@ -183,6 +184,23 @@ struct AccessPointSpec {
 
 /// Generated placements (all but explicit) place `count` access points on every level, each
 /// level's from its own plan and its own stream (sim/site/ap_placement.hpp).
+enum class AccessPointChangeKind { kOff, kMoved, kPower, kNew };
+const char* to_string(AccessPointChangeKind kind);
+
+/// A change to the building's access points from one session on (sim/site/ap_changes.hpp): the
+/// AP `ap` (its id, access_points.csv's ap_id) is switched off, moved to `position_m` or stepped
+/// by `tx_power_step_db`, or a new AP is installed at `position_m`. It holds in session `session`
+/// and every later one.
+struct AccessPointChange {
+  int session = 1;
+  AccessPointChangeKind change = AccessPointChangeKind::kOff;
+  std::optional<std::uint64_t> ap;               // off, moved, power
+  std::optional<Eigen::Vector3d> position_m;     // moved, new (z above the AP's level's floor)
+  double tx_power_step_db = 0.0;                 // power
+  std::optional<double> tx_power_dbm;            // new; default access_points.tx_power_dbm
+  std::string level = {};                        // new, in a building of several levels
+};
+
 struct AccessPoints {
   ApPlacement placement = ApPlacement::kRooms;
   int count = 0;
@@ -195,6 +213,8 @@ struct AccessPoints {
   // placement: colinear — APs evenly spaced on the segment from `line_from_m` to `line_to_m`
   Eigen::Vector2d line_from_m = Eigen::Vector2d::Zero();
   Eigen::Vector2d line_to_m = Eigen::Vector2d::Zero();
+  /// Changes by session (the building as it is in later sessions), in the order they happen.
+  std::vector<AccessPointChange> changes;
 };
 
 struct PauseSpec {
@@ -261,11 +281,20 @@ struct ColorSensorSpec {
   double exposure_min_gain = 0.25, exposure_max_gain = 4.0;  // +-2 stops
 };
 
+/// The Wi-Fi scanner: the device that scans and how often the app asks it to.
 struct WifiScannerSpec {
+  /// The receiver (radio_model/receiver_device.hpp): a shipped device by name, a device file or
+  /// an inline mapping. None: the reference receiver with the two keys below, which a scene that
+  /// names a device must leave to its device.
+  std::optional<radio_model::ReceiverDevice> device;
   double sensitivity_dbm = radio_model::defaults::kSensitivityDbm;
   double dwell_per_channel_s = radio_model::defaults::kDwellPerChannelS;
-  double scan_interval_s = 2.0;  // time from one scan's start to the next's
+  double scan_interval_s = 2.0;  // time from one scan request's start to the next's
 };
+
+/// The device a scene's scanner is: its named device, or the reference receiver with the
+/// block's sensitivity and dwell.
+radio_model::ReceiverDevice receiver_device(const WifiScannerSpec& spec);
 
 struct OdometrySpec {
   double rate_hz = 50.0;
@@ -329,6 +358,11 @@ struct Scene {
   std::string name;
   std::string description;
   std::uint64_t seed = 1;
+  /// Which visit of the building this is (`generate --session K`): the building (walls,
+  /// appearance, access points as changed by then, shadowing) is the same in every session; the
+  /// robot's pauses, every sensor's noise and the Wi-Fi draws are a session's own (session_seed).
+  /// Unset: session 0.
+  std::optional<std::uint64_t> session;
   Building building;
   std::vector<Level> levels;  // empty: one level at 0 m (sim/scene/scene_levels.hpp)
   std::vector<SceneNode> nodes;
@@ -366,5 +400,11 @@ struct Scene {
   /// The corridor joining nodes a and b (either direction), or nullptr.
   const Corridor* corridor_between(const std::string& a, const std::string& b) const;
 };
+
+/// The seed of what differs between sessions (the robot's pauses, sensor noise, Wi-Fi draws):
+/// the scene's seed in session 0, so a scene without `session` is what it always was; a stream
+/// of its own for each later session, independent of the others.
+std::uint64_t session_seed(const Scene& scene);
+int session_of(const Scene& scene);
 
 }  // namespace wifislam::sim

@@ -38,6 +38,9 @@ class KeyCollector {
   }
   void vec2(const char* key, Eigen::Vector2d&, Limits) { add(key); }
   void vec3(const char* key, Eigen::Vector3d&, Limits, Limits) { add(key); }
+  void optional_vec3(const char* key, std::optional<Eigen::Vector3d>&, Limits, Limits) {
+    add(key);
+  }
   void polygon(const char* key, std::vector<Eigen::Vector2d>&, Limits) { add(key); }
   void points_if_any(const char* key, std::vector<Eigen::Vector2d>&, Limits) { add(key); }
   void text_list(const char* key, std::vector<std::string>&) { add(key); }
@@ -46,6 +49,12 @@ class KeyCollector {
   void object(const char* key, T& value) {
     KeyCollector inner(out_, path(key) + ".");
     schema::visit(inner, value);
+  }
+  /// The device itself (a shipped name) and each key of an inline one.
+  void device(const char* key, std::optional<radio_model::ReceiverDevice>&) {
+    add(key);
+    radio_model::ReceiverDevice inline_device;
+    object(key, inline_device);
   }
   template <class T>
   void list(const char* key, std::vector<T>&) {

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <map>
@@ -11,6 +12,7 @@
 #include <tuple>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/did_you_mean.hpp"
 #include "core/error.hpp"
@@ -156,6 +158,9 @@ class YamlReader {
   void vec3(const char* key, Eigen::Vector3d& out, Limits xy, Limits z) {
     if (auto n = fetch(key)) out = to_vector<3>(*n, key, {xy, xy, z});
   }
+  void optional_vec3(const char* key, std::optional<Eigen::Vector3d>& out, Limits xy, Limits z) {
+    if (auto n = fetch(key)) out = to_vector<3>(*n, key, {xy, xy, z});
+  }
   void polygon(const char* key, std::vector<Eigen::Vector2d>& out, Limits limits) {
     if (auto n = fetch(key)) {
       if (!n->IsSequence() || n->size() < 3) {
@@ -211,6 +216,45 @@ class YamlReader {
       YamlReader child(*n, child_path(key), sources_);
       schema::visit(child, out);
       child.finish();
+    }
+  }
+  /// A device: a shipped name or a device file (relative to the scene's folder), or a mapping.
+  void device(const char* key, std::optional<radio_model::ReceiverDevice>& out) {
+    if (auto n = fetch(key)) {
+      if (n->IsMap()) {
+        radio_model::ReceiverDevice inline_device;
+        object(key, inline_device);
+        out = inline_device;
+        return;
+      }
+      if (!n->IsScalar() || n->Scalar().empty()) {
+        fail(*n, key,
+             "expected a shipped device's name, a device file or a mapping, got " + describe(*n));
+      }
+      const std::string folder = std::filesystem::path(sources_.file).parent_path().string();
+      try {
+        out = load_receiver_device(n->Scalar(), folder);
+      } catch (const InvalidInputError& e) {
+        fail(*n, key, e.what());
+      }
+    }
+  }
+  /// The wifi block: the receiver keys belong to the device when the block names one.
+  void object(const char* key, WifiScannerSpec& out) {
+    if (auto n = fetch(key)) {
+      YamlReader child(*n, child_path(key), sources_);
+      schema::visit(child, out);
+      child.finish();
+      if (!out.device) return;
+      for (const char* receiver_key : {"sensitivity_dbm", "dwell_per_channel_s"}) {
+        const YAML::Node set = (*n)[receiver_key];
+        if (set.IsDefined()) {
+          throw ParseError(sources_.where(set.Mark()), child_path(key) + "." + receiver_key,
+                           fmt::format("the device '{}' sets the receiver: set {} in the "
+                                       "device, or drop `device`",
+                                       out.device->name, receiver_key));
+        }
+      }
     }
   }
   template <class T>
@@ -354,6 +398,10 @@ class YamlWriter {
     out_ << YAML::Key << key << YAML::Value;
     write_vector(v);
   }
+  void optional_vec3(const char* key, const std::optional<Eigen::Vector3d>& v, Limits xy,
+                     Limits z) {
+    if (v) vec3(key, *v, xy, z);
+  }
   void polygon(const char* key, const std::vector<Eigen::Vector2d>& points, Limits) {
     out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
     for (const auto& p : points) write_vector(p);
@@ -388,6 +436,20 @@ class YamlWriter {
   template <class T>
   void list_if_any(const char* key, std::vector<T>& items) {
     if (!items.empty()) list(key, items);
+  }
+  void device(const char* key, std::optional<radio_model::ReceiverDevice>& value) {
+    if (value) object(key, *value);
+  }
+  /// The wifi block without the reference receiver's keys when a device sets the receiver.
+  void object(const char* key, WifiScannerSpec& value) {
+    out_ << YAML::Key << key << YAML::Value << YAML::BeginMap;
+    if (value.device) {
+      device("device", value.device);
+      number("scan_interval_s", value.scan_interval_s, {});
+    } else {
+      schema::visit(*this, value);
+    }
+    out_ << YAML::EndMap;
   }
   /// radio.wall_loss_db only when it sets a loss: resolved scenes without one stay as they were.
   void object(const char* key, WallLossOverrides& value) {
@@ -812,6 +874,36 @@ Scene load_scene_yaml(const std::string& yaml_text, const std::string& source_na
 
 Scene load_scene_file(const std::string& path) {
   return load_scene_node(load_yaml_file(path), path);
+}
+
+radio_model::ReceiverDevice load_receiver_device(const std::string& name_or_file,
+                                                 const std::string& folder) {
+  const auto ends_with = [&](std::string_view tail) {
+    return name_or_file.size() >= tail.size() &&
+           name_or_file.compare(name_or_file.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  const bool is_file = ends_with(".yaml") || ends_with(".yml") ||
+                       name_or_file.find('/') != std::string::npos;
+  if (!is_file) {
+    if (auto device = radio_model::shipped_device(name_or_file)) return *device;
+    std::vector<std::string> names;
+    for (const radio_model::ReceiverDevice& d : radio_model::shipped_devices())
+      names.push_back(d.name);
+    throw InvalidInputError(fmt::format(
+        "no shipped device '{}'{} (shipped: {}; a device file's name ends in .yaml)", name_or_file,
+        did_you_mean(name_or_file, names), fmt::join(names, ", ")));
+  }
+  std::filesystem::path path(name_or_file);
+  if (path.is_relative() && !folder.empty()) path = std::filesystem::path(folder) / path;
+  if (!std::filesystem::is_regular_file(path))
+    throw InvalidInputError(fmt::format("no device file {}", path.string()));
+  SourceMap sources{path.string(), {}};
+  const YAML::Node root = load_yaml_file(path.string());
+  YamlReader reader(root, "", sources);
+  radio_model::ReceiverDevice device;
+  schema::visit(reader, device);
+  reader.finish();
+  return device;
 }
 
 void validate_scene(const Scene& scene) { validate_scene_impl(scene, nullptr); }

@@ -8,9 +8,11 @@
 //   boolean(key, bool&), text(key, std::string&), optional_number(key, std::optional<double>&,
 //   Limits), optional_uint64(key, std::optional<uint64_t>&), choice(key, Enum&, names),
 //   vec2(key, Eigen::Vector2d&, Limits), vec3(key, Eigen::Vector3d&, Limits xy, Limits z),
+//   optional_vec3(key, std::optional<Eigen::Vector3d>&, Limits xy, Limits z),
 //   polygon(key, vector<Vector2d>&, Limits),
 //   text_list(key, vector<string>&), interval(key, double& lo, double& hi, Limits),
-//   object(key, T&), list(key, vector<T>&), and `required(key)` to mark the next key mandatory;
+//   object(key, T&), list(key, vector<T>&), device(key, std::optional<ReceiverDevice>&), and
+//   `required(key)` to mark the next key mandatory;
 //   list_if_any(key, vector<T>&) and points_if_any(key, vector<Vector2d>&, Limits) are a list and
 //   a list of at least two points that the writer leaves out when empty (keys added after
 //   scenes were first written, so resolved scenes without them stay byte for byte as they were).
@@ -201,6 +203,23 @@ void visit(V& v, AccessPointSpec& s) {
 }
 
 template <class V>
+void visit(V& v, AccessPointChange& c) {
+  v.required();
+  v.integer("session", c.session, Limits{1, 1000000});
+  v.required();
+  v.choice("change", c.change,
+           Names<AccessPointChangeKind>{{AccessPointChangeKind::kOff, "off"},
+                                        {AccessPointChangeKind::kMoved, "moved"},
+                                        {AccessPointChangeKind::kPower, "power"},
+                                        {AccessPointChangeKind::kNew, "new"}});
+  v.optional_uint64("ap", c.ap);
+  v.optional_vec3("position_m", c.position_m, kCoordinateM, kHeightM);
+  v.number("tx_power_step_db", c.tx_power_step_db, Limits{-60.0, 60.0});
+  v.optional_number("tx_power_dbm", c.tx_power_dbm, kTxPowerDbm);
+  v.text("level", c.level);
+}
+
+template <class V>
 void visit(V& v, AccessPoints& a) {
   v.choice("placement", a.placement,
            Names<ApPlacement>{{ApPlacement::kExplicit, "explicit"},
@@ -218,6 +237,7 @@ void visit(V& v, AccessPoints& a) {
   v.list("list", a.explicit_list);
   v.vec2("line_from_m", a.line_from_m, kCoordinateM);
   v.vec2("line_to_m", a.line_to_m, kCoordinateM);
+  v.list_if_any("changes", a.changes);
 }
 
 template <class V>
@@ -280,10 +300,41 @@ void visit(V& v, ColorSensorSpec& c) {
   v.interval("exposure_gain_range", c.exposure_min_gain, c.exposure_max_gain, Limits{0.01, 100.0});
 }
 
+inline constexpr Limits kSensitivityDbm{-120.0, -40.0};
+inline constexpr Limits kDwellPerChannelS{0.001, 1.0};
+
+/// A receiver device, inline in a scene (sensors.wifi.device) or in a device file of its own.
+template <class V>
+void visit(V& v, radio_model::ReceiverDevice& d) {
+  using radio_model::DeviceBands;
+  using radio_model::ScanThrottle;
+  v.required();
+  v.text("name", d.name);
+  v.text("source", d.source);
+  v.number("rss_offset_db", d.rss_offset_db, Limits{-40.0, 40.0});
+  // A gain far from 1 folds the range over itself; measured device maps stay near 1.
+  v.number("rss_gain", d.rss_gain, Limits{0.5, 1.5});
+  v.number("sensitivity_dbm", d.sensitivity_dbm, kSensitivityDbm);
+  v.integer("quantisation_db", d.quantisation_db, Limits{1.0, 10.0});
+  v.number("dwell_per_channel_s", d.dwell_per_channel_s, kDwellPerChannelS);
+  v.choice("bands", d.bands,
+           Names<DeviceBands>{{DeviceBands::kBoth, to_string(DeviceBands::kBoth)},
+                              {DeviceBands::k2_4GHzOnly, to_string(DeviceBands::k2_4GHzOnly)},
+                              {DeviceBands::k5GHzOnly, to_string(DeviceBands::k5GHzOnly)}});
+  v.choice("scan_throttle", d.scan_throttle,
+           Names<ScanThrottle>{
+               {ScanThrottle::kNone, to_string(ScanThrottle::kNone)},
+               {ScanThrottle::kAndroidForeground, to_string(ScanThrottle::kAndroidForeground)},
+               {ScanThrottle::kAndroidBackground, to_string(ScanThrottle::kAndroidBackground)}});
+}
+
+/// `device` is a visitor call of its own: the reader takes a shipped name or a file path as well
+/// as a mapping, and the writer writes the device in full (a resolved scene needs no file).
 template <class V>
 void visit(V& v, WifiScannerSpec& w) {
-  v.number("sensitivity_dbm", w.sensitivity_dbm, Limits{-120.0, -40.0});
-  v.number("dwell_per_channel_s", w.dwell_per_channel_s, Limits{0.001, 1.0});
+  v.device("device", w.device);
+  v.number("sensitivity_dbm", w.sensitivity_dbm, kSensitivityDbm);
+  v.number("dwell_per_channel_s", w.dwell_per_channel_s, kDwellPerChannelS);
   v.number("scan_interval_s", w.scan_interval_s, Limits{0.1, 60.0});
 }
 
@@ -354,6 +405,7 @@ void visit(V& v, Scene& s) {
   v.text("name", s.name);
   v.text("description", s.description);
   v.uint64("seed", s.seed);
+  v.optional_uint64("session", s.session);
   v.object("building", s.building);
   v.list_if_any("levels", s.levels);
   // A scene has corridors (on nodes) or spaces, or both (validate_scene checks).

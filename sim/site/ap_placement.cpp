@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "sim/scene/scene_levels.hpp"
+#include "sim/site/ap_changes.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
@@ -313,6 +314,10 @@ std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene,
 }
 
 std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene, const World& world) {
+  return apply_access_point_changes(placed_access_points(scene, world), scene, world);
+}
+
+std::vector<radio_model::AccessPoint> placed_access_points(const Scene& scene, const World& world) {
   if (world.storeys.empty()) return make_access_points(scene, world.plan);
   const std::uint64_t seed = access_point_seed(scene);
   radio_model::MacAllocator macs(seed);

@@ -37,9 +37,13 @@ std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan,
 /// cannot be done is rejected at the scene's `access_points` key (Scene::reject).
 std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene, const FloorPlan& plan);
 
-/// The building's access points: make_access_points(scene, world.plan) for a one-level world;
-/// else each storey's, lowest first, placed on its own plan (generated placements put `count` on
-/// every level) and raised to its elevation: z is in the building's frame. Ids run on.
+/// The building's access points as placed: make_access_points(scene, world.plan) for a one-level
+/// world; else each storey's, lowest first, placed on its own plan (generated placements put
+/// `count` on every level) and raised to its elevation: z is in the building's frame. Ids run on.
+std::vector<radio_model::AccessPoint> placed_access_points(const Scene& scene, const World& world);
+
+/// The building's access points in the scene's session: placed_access_points with the changes
+/// up to that session applied (sim/site/ap_changes.hpp).
 std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene, const World& world);
 
 /// The seed the access points derive from: `access_points.seed`, else the scene seed.

@@ -33,8 +33,7 @@ radio_model::PropagationOptions propagation_options(const Scene& scene) {
 
 radio_model::WifiScannerOptions wifi_scanner_options(const WifiScannerSpec& spec) {
   radio_model::WifiScannerOptions o;
-  o.sensitivity_dbm = spec.sensitivity_dbm;
-  o.dwell_per_channel_s = spec.dwell_per_channel_s;
+  o.device = receiver_device(spec);
   return o;
 }
 

@@ -26,7 +26,7 @@ Site::Site(const Scene& scene) : scene_(scene) {
   validate_scene(scene_);
   world_ = std::make_shared<const World>(generate_world(scene_));
   motion_ = std::make_shared<const MotionProfile>(
-      world_->route, RobotMotionOptions::from_route(scene_.route), scene_.seed);
+      world_->route, RobotMotionOptions::from_route(scene_.route), session_seed(scene_));
   radio_ = make_radio(scene_, *world_);
 }
 

@@ -86,7 +86,7 @@ radio_model::RadioMap draw_site_radio_map(const Site& site,
                                           const std::string& level) {
   const LevelView view = level_view(site, level);
   const radio_model::RadioMap map = compute_site_radio_map(site, options, level);
-  const double floor_dbm = wifi_scanner_options(site.scene().sensors.wifi).sensitivity_dbm;
+  const double floor_dbm = receiver_device(site.scene().sensors.wifi).sensitivity_dbm;
   write_radio_map_png(map, *view.plan, access_points_on(site, view), path, floor_dbm);
   return map;
 }

@@ -159,5 +159,66 @@ TEST(LocalizeCli, AnotherFloorInTheMapIsTheWrongFloorAndWifiClustersChooseItLess
   fs::remove_all(scratch);
 }
 
+// The map from one run and the queries from another of the same route: a later session of the
+// scene (its own pauses and Wi-Fi draws), read by another device, or a dataset generated as one.
+TEST(LocalizeCli, QueriesFromAnotherSessionOrDatasetAreMatchedToTheWholeFirstRun) {
+  const fs::path scratch = test::scratch_folder();
+  const std::string scene =
+      test::tiny_loop_with(scratch, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml").string();
+  const auto summary_of = [&](const std::string& out) {
+    return nlohmann::json::parse(test::read_file(scratch / out / "summary.json"));
+  };
+  test::CliResult r = test::run_wifislam(
+      "localize " + scene + " --queries-session 1 --queries-device weaker_phone -q -o " +
+          (scratch / "session").string(),
+      scratch);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json s = summary_of("session");
+  EXPECT_TRUE(s.at("queries_from_another_run").get<bool>());
+  EXPECT_FALSE(s.contains("map_share"));
+  const int map_images = s.at("map_images").get<int>(), queries = s.at("query_images").get<int>();
+  EXPECT_GT(map_images, 15);
+  EXPECT_NEAR(queries, map_images, 0.2 * map_images);  // one lap each
+  EXPECT_NE(read_file(scratch / "session" / "summary.md").find("another run of its route"),
+            std::string::npos);
+
+  // The same as a dataset of session 1, given with --queries.
+  const std::string generate = std::string(WIFISLAM_BINARY) + " generate " + scene +
+                               " --session 1 --fps 2 -q -o " + (scratch / "s1").string();
+  ASSERT_EQ(std::system(generate.c_str()), 0);
+  r = test::run_wifislam("localize " + scene + " --queries " + (scratch / "s1").string() +
+                             " --no-verify -q -o " + (scratch / "dataset").string(),
+                         scratch);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(summary_of("dataset").at("map_images").get<int>(), map_images);
+
+  // Options that do not go together, and a run of another route, are refused: exit 2, nothing
+  // written.
+  // The same loop 40 m east: another route (another building, too).
+  std::string far = test::kTinyLoopYaml;
+  for (const auto& [from, to] : {std::pair{"[0, 0]", "[40, 0]"}, std::pair{"[7, 0]", "[47, 0]"},
+                                 std::pair{"[7, 5]", "[47, 5]"}, std::pair{"[0, 5]", "[40, 5]"}})
+    far.replace(far.find(from), std::string(from).size(), to);
+  far.replace(far.find("duration_s: 1.0"), 15, "duration_s: 4.0");
+  test::write_file(scratch / "far.yaml", far);
+  const std::string other_route = (scratch / "far.yaml").string();
+  for (const std::string& bad :
+       {std::string("--queries-session 1 --map-share 0.5"),
+        std::string("--queries-device weaker_phone"),
+        std::string("--queries-session 1 --queries ") + other_route,
+        std::string("--queries ") + other_route,
+        std::string("--queries-session 1 --queries-device no_such_phone")}) {
+    r = test::run_wifislam("localize " + scene + " " + bad + " -q -o " + (scratch / "bad").string(),
+                           scratch);
+    EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
+    EXPECT_FALSE(fs::exists(scratch / "bad")) << bad;
+  }
+  r = test::run_wifislam("localize " + (scratch / "s1").string() +
+                             " --queries-session 2 -q -o " + (scratch / "bad").string(),
+                         scratch);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  fs::remove_all(scratch);
+}
+
 }  // namespace
 }  // namespace wifislam

@@ -58,7 +58,7 @@ TEST(WifiScanner, SameSeedGivesIdenticalScansAndDifferentSeedDifferentShadowing)
 TEST(WifiScanner, ScansTakeDwellTimesChannelsAndReportIntegerRssiAboveTheFloor) {
   PropagationModel model(WallMesh{}, {0, -5}, {100, 5}, aps_along_x(10, 2), {}, 7);
   WifiScannerOptions o;
-  o.dwell_per_channel_s = 0.1;
+  o.device.dwell_per_channel_s = 0.1;
   WifiScanner scanner(model, o, 7);
   EXPECT_EQ(scanner.scan_duration_ns(), 2'000'000'000);  // 20 channels x 0.1 s
   const WifiScan s = scanner.scan(Timestamp::from_seconds(5.0), {0, 0, 1});
@@ -233,7 +233,7 @@ TEST(WifiScanner, ShortDwellsMissBeaconsAtTheIntervalRatio) {
   PropagationModel model(WallMesh{}, {-5, -5}, {50, 5}, aps_along_x(3, 8), opt, 8);
   for (const double dwell_s : {0.05, 0.1, 0.11}) {
     WifiScannerOptions o;
-    o.dwell_per_channel_s = dwell_s;
+    o.device.dwell_per_channel_s = dwell_s;
     WifiScanner scanner(model, o, 8);
     int heard = 0, possible = 0;
     for (int k = 0; k < 300; ++k) {

@@ -105,5 +105,44 @@ TEST(SensorSchedule, TickCountMatchesTickTimes) {
   }
 }
 
+TEST(SensorSchedule, AThrottledScannerGrantsAtMostItsRequestsInAnyWindowAndTheRestInOrder) {
+  const MotionProfile motion(test::rounded_rectangle_route(20.0, 12.0, 0.6), motion_options(), 4);
+  const SensorSchedule free_running(motion, schedule_options());
+  SensorScheduleOptions throttled_options = schedule_options();
+  throttled_options.throttle_max_scans = 4;  // Android 9+ foreground: 4 in any 120 s
+  throttled_options.throttle_window_s = 120.0;
+  const SensorSchedule throttled(motion, throttled_options);
+  const auto& all = free_running.scans();
+  const auto& kept = throttled.scans();
+  ASSERT_GT(all.size(), 20u);
+  // Every request is either granted or counted as refused, and the granted ones are requests.
+  EXPECT_EQ(kept.size() + static_cast<std::size_t>(throttled.throttled_requests()), all.size());
+  EXPECT_GT(throttled.throttled_requests(), 0);
+  std::size_t j = 0;
+  for (const ScanWindow& w : kept) {
+    while (j < all.size() && all[j].start != w.start) ++j;
+    ASSERT_LT(j, all.size()) << "a granted scan at " << w.start.seconds() << " s was not asked for";
+    EXPECT_EQ(all[j].pause_index, w.pause_index);
+  }
+  // No window of 120 s holds more than four granted requests ...
+  for (std::size_t a = 0; a < kept.size(); ++a) {
+    std::size_t in_window = 0;
+    for (std::size_t b = a; b < kept.size() && kept[b].start.ns - kept[a].start.ns <= 120'000'000'000;
+         ++b)
+      ++in_window;
+    EXPECT_LE(in_window, 4u) << "from " << kept[a].start.seconds() << " s";
+  }
+  // ... and a refused request had four granted in the 120 s before it.
+  std::size_t k = 0;
+  for (const ScanWindow& request : all) {
+    while (k < kept.size() && kept[k].start < request.start) ++k;
+    if (k < kept.size() && kept[k].start == request.start) continue;
+    std::size_t before = 0;
+    for (const ScanWindow& g : kept)
+      before += g.start < request.start && request.start.ns - g.start.ns <= 120'000'000'000;
+    EXPECT_EQ(before, 4u) << "refused at " << request.start.seconds() << " s";
+  }
+}
+
 }  // namespace
 }  // namespace wifislam::sim
