@@ -1,11 +1,13 @@
 // `wifislam radio calibrate`: fit the itu_walls model's constants (N, wall losses by material,
 // shadowing sigma and decorrelation, fast fading, each AP's tx power) to RSS measured at known
 // positions, counting walls exactly as the simulator does (radio_model/calibrate/).
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
@@ -33,6 +35,8 @@ struct CalibrateArgs {
   std::optional<double> receiver_height_m;
   std::string output = "fit.yaml";
   std::string report, json;
+  std::string reference_device, held_out_device;
+  int held_out_positions = 5;
 };
 
 std::vector<cal::SurveyAccessPoint> scene_access_points(const wifislam::sim::Site& site) {
@@ -78,11 +82,35 @@ void run_calibrate(const CalibrateArgs& args) {
   c.test_path = args.test_path;
   c.frequency_mhz = args.frequency_mhz;
   const cal::SurveySite survey_site = sim::survey_site(site);
-  c.train =
-      cal::survey_links(cal::read_survey(args.survey_path, format, height_m), aps, survey_site);
+  cal::Survey survey = cal::read_survey(args.survey_path, format, height_m);
+  // A held-out device is left out of the fit and scored after it.
+  cal::Survey held = survey;
+  if (!args.held_out_device.empty()) {
+    const std::vector<std::string> devices = survey.devices();
+    if (std::find(devices.begin(), devices.end(), args.held_out_device) == devices.end())
+      throw InvalidInputError(fmt::format("--held-out-device: {} has no device '{}' (devices: {})",
+                                          args.survey_path, args.held_out_device,
+                                          fmt::join(devices, ", ")));
+    if (args.held_out_device == args.reference_device)
+      throw InvalidInputError(fmt::format(
+          "--held-out-device: '{}' is the reference device (--reference-device); it cannot be "
+          "held out",
+          args.held_out_device));
+    std::erase_if(survey.samples, [&](const cal::SurveySample& s) {
+      return s.device == args.held_out_device;
+    });
+    std::erase_if(held.samples, [&](const cal::SurveySample& s) {
+      return s.device != args.held_out_device;
+    });
+    if (survey.samples.empty())
+      throw InvalidInputError(fmt::format(
+          "--held-out-device: {} has no other device to fit", args.survey_path));
+  }
+  c.train = cal::survey_links(survey, aps, survey_site,
+                              cal::devices_reference_first(survey, args.reference_device));
   if (!args.test_path.empty())
-    c.test =
-        cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps, survey_site);
+    c.test = cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps,
+                               survey_site, c.train.devices);
   const radio_model::PropagationOptions& options = survey_site.options;
   c.before = cal::scene_model(c.train, options.wall_losses, scene.radio.distance_coefficient,
                               scene.access_points.tx_power_dbm, args.frequency_mhz);
@@ -90,6 +118,10 @@ void run_calibrate(const CalibrateArgs& args) {
   c.baseline = cal::fit_log_distance(c.train);
   c.shadowing = cal::shadowing_statistics(c.train, c.fit.model, c.fit.parameters);
   cal::widen_for_correlated_shadowing(c.fit, c.train, c.shadowing);
+  if (!args.held_out_device.empty())
+    c.held_out = cal::score_held_out_device(
+        cal::survey_links(held, aps, survey_site, {args.held_out_device}), c.fit.model,
+        c.baseline, args.held_out_positions);
 
   const std::string markdown = cal::calibration_report_markdown(c);
   const std::string scene_blocks = cal::calibration_scene_yaml(c);
@@ -110,7 +142,8 @@ void add_calibrate_command(CLI::App* parent) {
       "Fit N, per-material wall losses, shadowing sigma and decorrelation, fast fading and each\n"
       "AP's tx power to an RSS survey by least squares, counting walls as the simulator does.\n"
       "Writes radio: and access_points: scene blocks (-o) and prints residuals per AP before and\n"
-      "after. Survey CSV: x_m,y_m[,z_m],ap_id,rss_dbm (one row per AP heard per scan).");
+      "after. Survey CSV: x_m,y_m[,z_m],ap_id,rss_dbm[,device] (one row per AP heard per scan;\n"
+      "columns in any order; device names the receiver: one RSS offset is fitted per device).");
   app->add_option("survey", args->survey_path, "Survey CSV")->required();
   app->add_option("--scene", args->scene_path, "Scene file (YAML) of the surveyed building")
       ->required();
@@ -133,6 +166,17 @@ void add_calibrate_command(CLI::App* parent) {
       ->check(wifislam::cli::kPositiveFinite);
   app->add_option("-o,--output", args->output, "Scene blocks to write (YAML)")
       ->capture_default_str();
+  app->add_option("--reference-device", args->reference_device,
+                  "Survey with a device column: the device whose offset is 0 (default: the first\n"
+                  "in the survey). Every other device gets an RSS offset against it, with its\n"
+                  "95 % interval");
+  app->add_option("--held-out-device", args->held_out_device,
+                  "Leave this device out of the fit and score it on its own samples, without\n"
+                  "and with an offset fitted from its first --held-out-positions positions");
+  app->add_option("--held-out-positions", args->held_out_positions,
+                  "Positions of the held-out device its offset is fitted from (scored on the rest)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
   app->add_option("--report", args->report, "Also write the report (markdown)");
   app->add_option("--json", args->json, "Also write the report as JSON");
   app->callback([args] { run_calibrate(*args); });

@@ -41,6 +41,22 @@ nlohmann::json residuals_json(const SurveyLinks& links, const LinearRadioModel& 
   return out;
 }
 
+std::vector<int> samples_per_device(const SurveyLinks& links) {
+  std::vector<int> n(links.devices.size(), 0);
+  for (const LinkGroup& g : links.groups) n[g.device_index] += static_cast<int>(g.rss_dbm.size());
+  return n;
+}
+
+/// Whether the report has a devices section: several devices, or one held out.
+bool reports_devices(const Calibration& c) { return c.train.devices.size() > 1 || c.held_out; }
+
+double offset_of(const PropagationFit& f, std::size_t d) {
+  return d < f.model.device_offset_db.size() ? f.model.device_offset_db[d] : 0.0;
+}
+double offset_ci_of(const PropagationFit& f, std::size_t d) {
+  return d < f.device_offset_ci95_db.size() ? f.device_offset_ci95_db[d] : 0.0;
+}
+
 }  // namespace
 
 std::string calibration_scene_yaml(const Calibration& c) {
@@ -73,6 +89,15 @@ std::string calibration_scene_yaml(const Calibration& c) {
     note.clear();
   }
   if (!walls.empty()) y += "  wall_loss_db:\n" + walls;
+  if (c.train.devices.size() > 1) {
+    // The intercepts are the reference device's; the others read these offsets from it, as a
+    // device's rss_offset_db (scenes/README.md, "Receiver devices").
+    y += fmt::format("# Tx powers below are as device '{}' reads them. Offsets of the others:\n",
+                     c.train.devices.front());
+    for (std::size_t d = 1; d < c.train.devices.size(); ++d)
+      y += fmt::format("#   {}: rss_offset_db {:.2f} (95 % CI +-{:.2f})\n", c.train.devices[d],
+                       offset_of(f, d), offset_ci_of(f, d));
+  }
   y += "access_points:\n  placement: explicit\n  list:\n";
   for (std::size_t i = 0; i < c.train.aps.size(); ++i) {
     const SurveyAccessPoint& ap = c.train.aps[i];
@@ -129,6 +154,30 @@ std::string calibration_report_markdown(const Calibration& c) {
       "| shadowing decorrelation (m) | | {:.2f} | not estimated |\n"
       "| fast fading sigma (dB, within-position scatter) | | {:.2f} | |\n\n",
       s.shadowing_sigma_db, s.mean_residual_sigma_db, s.decorrelation_m, s.fast_fading_sigma_db);
+  if (reports_devices(c)) {
+    const std::vector<int> samples = samples_per_device(c.train);
+    md += fmt::format(
+        "## Devices\n\nOne RSS offset per device (what it reads minus what the reference `{}` "
+        "reads at the same spot, dB), fitted with the rest; the tx powers above are the "
+        "reference's.\n\n| device | samples | offset (dB) | 95 % CI |\n| --- | --- | --- | --- |\n",
+        c.train.devices.front());
+    for (std::size_t d = 0; d < c.train.devices.size(); ++d) {
+      md += d == 0 ? fmt::format("| {} (reference) | {} | 0 | |\n", c.train.devices[d], samples[d])
+                   : fmt::format("| {} | {} | {:+.2f} | +-{:.2f} |\n", c.train.devices[d],
+                                 samples[d], offset_of(f, d), offset_ci_of(f, d));
+    }
+    md += "\n";
+    if (c.held_out) {
+      const HeldOutDeviceScore& h = *c.held_out;
+      md += fmt::format(
+          "Held-out device `{}`, left out of the fit: its offset from its first {} positions is "
+          "{:+.2f} dB. Residual rms on its {} samples at its other positions:\n\n"
+          "| model | without its offset (dB) | with its offset (dB) |\n| --- | --- | --- |\n"
+          "| the fit | {:.2f} | {:.2f} |\n| plain log-distance | {:.2f} | {:.2f} |\n\n",
+          h.device, h.offset_positions, h.offset_db, h.scored_samples, h.rms_without_offset_db,
+          h.rms_with_offset_db, h.log_distance_rms_db, h.log_distance_rms_with_offset_db);
+    }
+  }
   md += fmt::format(
       "Plain log-distance fit (one intercept, no walls): RSS = {:.2f} - {:.2f} "
       "log10(d), n = {:.2f}.\n\n",
@@ -201,6 +250,28 @@ std::string calibration_report_json(const Calibration& c) {
         {"ci95_db", f.intercept_ci95_db[i]}});
   }
   j["access_points"] = aps;
+  if (reports_devices(c)) {
+    const std::vector<int> samples = samples_per_device(c.train);
+    nlohmann::json devices = nlohmann::json::array();
+    for (std::size_t d = 0; d < c.train.devices.size(); ++d)
+      devices.push_back({{"device", c.train.devices[d]},
+                         {"reference", d == 0},
+                         {"samples", samples[d]},
+                         {"offset_db", offset_of(f, d)},
+                         {"ci95_db", offset_ci_of(f, d)}});
+    j["devices"] = devices;
+    if (c.held_out) {
+      const HeldOutDeviceScore& h = *c.held_out;
+      j["held_out_device"] = {{"device", h.device},
+                              {"offset_positions", h.offset_positions},
+                              {"offset_db", h.offset_db},
+                              {"scored_samples", h.scored_samples},
+                              {"rms_without_offset_db", h.rms_without_offset_db},
+                              {"rms_with_offset_db", h.rms_with_offset_db},
+                              {"log_distance_rms_db", h.log_distance_rms_db},
+                              {"log_distance_rms_with_offset_db", h.log_distance_rms_with_offset_db}};
+    }
+  }
   j["shadowing_sigma_db"] = c.shadowing.shadowing_sigma_db;
   j["mean_residual_sigma_db"] = c.shadowing.mean_residual_sigma_db;
   j["shadowing_decorrelation_m"] = c.shadowing.decorrelation_m;

@@ -22,6 +22,7 @@ struct Calibration {
   PropagationFit fit;         // after
   LinearRadioModel baseline;  // plain log-distance, one intercept
   ShadowingStatistics shadowing;
+  std::optional<HeldOutDeviceScore> held_out;  // --held-out-device
 };
 
 /// The `radio:` and `access_points:` blocks (YAML). Values are clamped to the scene schema's

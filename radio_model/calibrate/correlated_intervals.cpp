@@ -45,6 +45,8 @@ void widen_for_correlated_shadowing(PropagationFit& fit, const SurveyLinks& link
     if (fit.intercept_column[i] >= 0) fit.intercept_ci95_db[i] = ci(fit.intercept_column[i]);
   for (int m = 0; m < radio_model::kWallMaterialCount; ++m)
     if (fit.material_column[m] >= 0) fit.materials[m].ci95_db = ci(fit.material_column[m]);
+  for (std::size_t d = 0; d < fit.device_column.size(); ++d)
+    if (fit.device_column[d] >= 0) fit.device_offset_ci95_db[d] = ci(fit.device_column[d]);
   fit.correlated_intervals = true;
 }
 

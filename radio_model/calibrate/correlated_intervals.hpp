@@ -18,7 +18,8 @@
 
 namespace wifislam::radio_model::calibrate {
 
-/// Replaces `fit`'s 95 % half widths (N, intercepts, fitted wall losses) by the sandwich's.
+/// Replaces the 95 % half widths of `fit` (N, intercepts, fitted wall losses, device offsets) by
+/// the sandwich's.
 void widen_for_correlated_shadowing(PropagationFit& fit, const SurveyLinks& links,
                                     const ShadowingStatistics& shadowing);
 

@@ -20,6 +20,7 @@ double LinearRadioModel::predict_dbm(const LinkGroup& g) const {
   double rss = intercept_dbm[g.ap_index] - distance_coefficient * log_distance(g);
   for (int m = 0; m < radio_model::kWallMaterialCount; ++m)
     rss -= wall_loss_db[m] * g.walls_per_material[m];
+  if (g.device_index < device_offset_db.size()) rss += device_offset_db[g.device_index];
   return rss;
 }
 
@@ -56,6 +57,11 @@ PropagationFit fit_propagation(
   for (const LinkGroup& g : links.groups)
     if (column_of_ap[g.ap_index] < 0) column_of_ap[g.ap_index] = columns++;
   const int n_column = columns++;
+  // An offset per device with data, but the reference.
+  std::vector<int> column_of_device(links.devices.size(), -1);
+  for (const LinkGroup& g : links.groups)
+    if (g.device_index > 0 && column_of_device[g.device_index] < 0)
+      column_of_device[g.device_index] = columns++;
 
   auto design = [&](const std::vector<int>& materials) {
     Eigen::MatrixXd a = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(rows),
@@ -64,6 +70,7 @@ PropagationFit fit_propagation(
       const LinkGroup& g = links.groups[r];
       a(r, column_of_ap[g.ap_index]) = 1.0;
       a(r, n_column) = -log_distance(g);
+      if (column_of_device[g.device_index] >= 0) a(r, column_of_device[g.device_index]) = 1.0;
       for (std::size_t k = 0; k < materials.size(); ++k)
         a(r, columns + static_cast<int>(k)) = -g.walls_per_material[materials[k]];
     }
@@ -78,8 +85,9 @@ PropagationFit fit_propagation(
   if (rank_of(design({})) < columns || static_cast<int>(rows) <= columns) {
     throw InvalidInputError(fmt::format(
         "the survey cannot determine the distance coefficient: {} position-AP links for {} "
-        "unknowns (an intercept per AP and N), or all links of one length per AP; survey more "
-        "positions at different distances",
+        "unknowns (an intercept per AP, N and an offset per device but the first), or all links "
+        "of one length per AP, or devices that never measured an AP another device did; survey "
+        "more positions at different distances",
         rows, columns));
   }
 
@@ -172,6 +180,14 @@ PropagationFit fit_propagation(
     fit.intercept_ci95_db[i] = ci(column_of_ap[i]);
   }
   fit.model.wall_loss_db = known_db;
+  fit.device_column = column_of_device;
+  fit.model.device_offset_db.assign(links.devices.size(), 0.0);
+  fit.device_offset_ci95_db.assign(links.devices.size(), 0.0);
+  for (std::size_t d = 0; d < links.devices.size(); ++d) {
+    if (column_of_device[d] < 0) continue;
+    fit.model.device_offset_db[d] = x(column_of_device[d]);
+    fit.device_offset_ci95_db[d] = ci(column_of_device[d]);
+  }
   for (std::size_t k = 0; k < fitted.size(); ++k) {
     const int c = columns + static_cast<int>(k);
     MaterialFit& mf = fit.materials[fitted[k]];
@@ -199,6 +215,69 @@ LinearRadioModel fit_log_distance(const SurveyLinks& links) {
   m.distance_coefficient = x(1);
   m.intercept_dbm.assign(links.aps.size(), x(0));
   return m;
+}
+
+HeldOutDeviceScore score_held_out_device(const SurveyLinks& held, const LinearRadioModel& fitted,
+                                         const LinearRadioModel& log_distance,
+                                         int offset_positions) {
+  HeldOutDeviceScore out;
+  out.device = held.devices.empty() ? std::string() : held.devices.front();
+  out.offset_positions = offset_positions;
+  // The fitted models without offsets: the held-out device has none of its own in them.
+  LinearRadioModel fit = fitted, plain = log_distance;
+  fit.device_offset_db.clear();
+  plain.device_offset_db.clear();
+  // Positions in survey order (groups are in order of first appearance).
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<std::size_t> position_of(held.groups.size());
+  for (std::size_t i = 0; i < held.groups.size(); ++i) {
+    const Eigen::Vector3d& p = held.groups[i].position_m;
+    auto it = std::find_if(positions.begin(), positions.end(),
+                           [&](const Eigen::Vector3d& q) { return (p - q).norm() < 1e-3; });
+    position_of[i] = static_cast<std::size_t>(it - positions.begin());
+    if (it == positions.end()) positions.push_back(p);
+  }
+  if (static_cast<int>(positions.size()) <= offset_positions)
+    throw InvalidInputError(fmt::format(
+        "the held-out device '{}' was surveyed at {} positions: more than the {} its offset is "
+        "fitted from are needed to score it",
+        out.device, positions.size(), offset_positions));
+  auto mean_residual = [&](const LinearRadioModel& m) {
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < held.groups.size(); ++i) {
+      if (static_cast<int>(position_of[i]) >= offset_positions) continue;
+      const double predicted = m.predict_dbm(held.groups[i]);
+      if (!std::isfinite(predicted)) continue;
+      for (double r : held.groups[i].rss_dbm) {
+        sum += r - predicted;
+        ++n;
+      }
+    }
+    return n > 0 ? sum / n : 0.0;
+  };
+  auto rms = [&](const LinearRadioModel& m, double offset_db, int* samples) {
+    double sum2 = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < held.groups.size(); ++i) {
+      if (static_cast<int>(position_of[i]) < offset_positions) continue;
+      const double predicted = m.predict_dbm(held.groups[i]);
+      if (!std::isfinite(predicted)) continue;  // an AP the fit had no data for
+      for (double r : held.groups[i].rss_dbm) {
+        const double e = r - predicted - offset_db;
+        sum2 += e * e;
+        ++n;
+      }
+    }
+    if (samples) *samples = n;
+    return n > 0 ? std::sqrt(sum2 / n) : std::numeric_limits<double>::quiet_NaN();
+  };
+  out.offset_db = mean_residual(fit);
+  out.rms_without_offset_db = rms(fit, 0.0, &out.scored_samples);
+  out.rms_with_offset_db = rms(fit, out.offset_db, nullptr);
+  out.log_distance_rms_db = rms(plain, 0.0, nullptr);
+  out.log_distance_rms_with_offset_db = rms(plain, mean_residual(plain), nullptr);
+  return out;
 }
 
 std::vector<ApResiduals> residuals_per_ap(const SurveyLinks& links, const LinearRadioModel& model) {

@@ -21,6 +21,12 @@
 // makes these about four times too narrow; the command replaces them by intervals that allow
 // for it (correlated_intervals.hpp).
 //
+// Devices: a survey measured by several receivers (its `device` column) gets one RSS offset per
+// device but the reference (SurveyLinks::devices' first), a column of ones on that device's rows:
+//   RSS = P_ap + o_device - N log10(max(d, 1 m)) - sum_m L_m walls_m + ...
+// the offset of receiver_device.hpp's map at unit gain. Groups are per device, so two phones at
+// one spot are two rows sharing a position (and their shadowing, in correlated_intervals.hpp).
+//
 // Materials: a material is fitted when at least kMinLinksPerMaterial links cross it and its
 // column adds rank to the design (else it is confounded with the intercepts or N, e.g. every
 // link of an AP crossing the same one wall); the others keep the scene's loss at the survey
@@ -49,6 +55,7 @@ struct LinearRadioModel {
   double distance_coefficient = 22.0;  // N
   std::vector<double> intercept_dbm;   // P_ap, per SurveyLinks::aps index
   std::array<double, radio_model::kWallMaterialCount> wall_loss_db{};
+  std::vector<double> device_offset_db;  // per SurveyLinks::devices index; none: all 0
   double predict_dbm(const LinkGroup& g) const;
 };
 
@@ -76,6 +83,7 @@ struct PropagationFit {
   double distance_coefficient_ci95 = 0.0;  // half widths
   std::vector<double> intercept_ci95_db;
   std::array<MaterialFit, radio_model::kWallMaterialCount> materials;
+  std::vector<double> device_offset_ci95_db;  // per device; 0 for the reference
   int rows = 0, parameters = 0;
   double residual_sigma_db = 0.0;  // of the position means, dof-corrected
   /// The final design matrix (one row per link group) and where each unknown sits in it (-1:
@@ -84,6 +92,7 @@ struct PropagationFit {
   int distance_column = -1;
   std::vector<int> intercept_column;
   std::array<int, radio_model::kWallMaterialCount> material_column{-1, -1, -1, -1, -1};
+  std::vector<int> device_column;  // -1 for the reference
   bool correlated_intervals = false;  // true once correlated_intervals.hpp widened them
 };
 
@@ -97,6 +106,26 @@ PropagationFit fit_propagation(
 /// RSS = A - 10 n log10(d), one A for all APs, least squares over every sample (the baseline
 /// of the dataset's notes). Returned as a LinearRadioModel (N = 10 n, no walls).
 LinearRadioModel fit_log_distance(const SurveyLinks& links);
+
+/// A device left out of the fit, scored on its own samples: the way a map made with some phones
+/// serves another. Its offset is the mean residual of its samples at its first
+/// `offset_positions` surveyed positions (what a user can measure on arrival); every score is
+/// over its samples at the other positions, so the offset is never scored on its own data.
+struct HeldOutDeviceScore {
+  std::string device;
+  int offset_positions = 0;
+  int scored_samples = 0;
+  double offset_db = 0.0;              // fitted from the first positions
+  double rms_without_offset_db = 0.0;  // the fit as it is
+  double rms_with_offset_db = 0.0;
+  double log_distance_rms_db = 0.0;  // the plain log-distance fit, without and with its offset
+  double log_distance_rms_with_offset_db = 0.0;
+};
+/// `held` holds that device's links only. Throws InvalidInputError when it was surveyed at no
+/// more than `offset_positions` positions (nothing left to score).
+HeldOutDeviceScore score_held_out_device(const SurveyLinks& held, const LinearRadioModel& fitted,
+                                         const LinearRadioModel& log_distance,
+                                         int offset_positions);
 
 struct ApResiduals {
   int samples = 0;

@@ -1,6 +1,8 @@
 #include "radio_model/calibrate/rss_survey.hpp"
 
+#include <algorithm>
 #include <array>
+#include <optional>
 #include <cmath>
 #include <map>
 
@@ -68,40 +70,77 @@ double rss(std::string_view field, const std::string& where, const char* column)
   return v;
 }
 
+/// Column positions of a long-format header, by name.
+struct LongColumns {
+  std::size_t count = 0;
+  std::optional<std::size_t> x, y, z, ap, rss, device;
+};
+
+LongColumns long_columns(const std::vector<std::string_view>& header, const std::string& where) {
+  LongColumns c;
+  c.count = header.size();
+  const std::pair<const char*, std::optional<std::size_t>*> known[] = {
+      {"x_m", &c.x},       {"y_m", &c.y},         {"z_m", &c.z},
+      {"ap_id", &c.ap},    {"rss_dbm", &c.rss},   {"device", &c.device}};
+  for (std::size_t i = 0; i < header.size(); ++i) {
+    bool found = false;
+    for (const auto& [name, slot] : known) {
+      if (header[i] != name) continue;
+      if (*slot)
+        throw ParseError(where, name, fmt::format("column '{}' appears twice in the header", name));
+      *slot = i;
+      found = true;
+    }
+    if (!found)
+      throw ParseError(where, std::string(header[i]),
+                       fmt::format("unknown column '{}' (the columns are x_m, y_m, z_m, ap_id, "
+                                   "rss_dbm and device; for the Royal Holloway files use --format "
+                                   "royal-holloway)",
+                                   header[i]));
+  }
+  for (const auto& [name, slot] : {std::pair{"x_m", c.x}, std::pair{"y_m", c.y},
+                                   std::pair{"ap_id", c.ap}, std::pair{"rss_dbm", c.rss}}) {
+    if (!slot)
+      throw ParseError(where, name,
+                       fmt::format("the header '{}' lacks the column '{}' (expected e.g. "
+                                   "'x_m,y_m,ap_id,rss_dbm' or 'x_m,y_m,z_m,ap_id,rss_dbm,device')",
+                                   joined(header), name));
+  }
+  return c;
+}
+
+std::string device_name(std::string_view field, const std::string& where) {
+  const auto first = field.find_first_not_of(' ');
+  const auto last = field.find_last_not_of(' ');
+  if (first == std::string_view::npos)
+    throw ParseError(where, "device", "expected a device name, got an empty field");
+  return std::string(field.substr(first, last - first + 1));
+}
+
 Survey read_long(const std::string& path, double receiver_height_m) {
   Survey survey{path, {}};
-  bool header_seen = false, with_z = false;
+  std::optional<LongColumns> columns;
   for (const TextLine& line : read_text_lines(path)) {
     if (skipped(line.text)) continue;
     const std::string where = survey.where(line.number);
     const auto f = fields_of(line);
-    if (!header_seen) {
-      const std::string header = joined(f);
-      if (header == "x_m,y_m,z_m,ap_id,rss_dbm") {
-        with_z = true;
-      } else if (header != "x_m,y_m,ap_id,rss_dbm") {
-        throw ParseError(where, "",
-                         fmt::format("expected the header 'x_m,y_m,ap_id,rss_dbm' or "
-                                     "'x_m,y_m,z_m,ap_id,rss_dbm', got '{}' (for the Royal "
-                                     "Holloway files use --format royal-holloway)",
-                                     header));
-      }
-      header_seen = true;
+    if (!columns) {
+      columns = long_columns(f, where);
       continue;
     }
-    const std::size_t expected = with_z ? 5 : 4;
-    if (f.size() != expected)
-      throw ParseError(where, "", fmt::format("expected {} fields, got {}", expected, f.size()));
+    const LongColumns& c = *columns;
+    if (f.size() != c.count)
+      throw ParseError(where, "", fmt::format("expected {} fields, got {}", c.count, f.size()));
     SurveySample s;
     s.line = line.number;
-    s.position_m = {coordinate(f[0], where, "x_m"), coordinate(f[1], where, "y_m"),
-                    with_z ? number(f[2], where, "z_m") : receiver_height_m};
-    const std::size_t k = with_z ? 3 : 2;
-    s.ap_id = ap_id(f[k], where, "ap_id");
-    s.rss_dbm = rss(f[k + 1], where, "rss_dbm");
+    s.position_m = {coordinate(f[*c.x], where, "x_m"), coordinate(f[*c.y], where, "y_m"),
+                    c.z ? number(f[*c.z], where, "z_m") : receiver_height_m};
+    s.ap_id = ap_id(f[*c.ap], where, "ap_id");
+    s.rss_dbm = rss(f[*c.rss], where, "rss_dbm");
+    if (c.device) s.device = device_name(f[*c.device], where);
     survey.samples.push_back(s);
   }
-  if (!header_seen) throw ParseError(path, "", "empty survey: no header and no rows");
+  if (!columns) throw ParseError(path, "", "empty survey: no header and no rows");
   if (survey.samples.empty()) throw ParseError(path, "", "no survey rows after the header");
   return survey;
 }
@@ -157,6 +196,13 @@ Survey read_royal_holloway(const std::string& path, double receiver_height_m) {
 }
 
 }  // namespace
+
+std::vector<std::string> Survey::devices() const {
+  std::vector<std::string> out;
+  for (const SurveySample& s : samples)
+    if (std::find(out.begin(), out.end(), s.device) == out.end()) out.push_back(s.device);
+  return out;
+}
 
 Survey read_survey(const std::string& path, SurveyFormat format, double receiver_height_m) {
   return format == SurveyFormat::kRoyalHolloway ? read_royal_holloway(path, receiver_height_m)

@@ -2,9 +2,11 @@
 // Measured RSS at known positions, and the access points they come from.
 //
 // Our survey CSV (long format, one row per AP heard in one scan at one spot; other tools can
-// write it without knowing our scene format):
-//   x_m,y_m,ap_id,rss_dbm          receiver at the height the caller gives (the scene's)
-//   x_m,y_m,z_m,ap_id,rss_dbm      receiver height per row
+// write it without knowing our scene format). The header names the columns, in any order:
+//   x_m, y_m, ap_id, rss_dbm   required
+//   z_m                        receiver height per row (else the height the caller gives)
+//   device                     the receiver that measured the row (a name; a survey by several
+//                              phones gets one RSS offset per device: propagation_fit.hpp)
 // An AP not heard in a scan has no row (no sentinel values). '#' lines and blank lines are
 // skipped.
 //
@@ -32,12 +34,16 @@ struct SurveySample {
   /// Whether the survey says the AP is in line of sight (the Royal Holloway "LOS APs" column);
   /// unknown in our format. Used only to check a scene's walls against the survey.
   std::optional<bool> line_of_sight;
+  std::string device = {};  // empty when the survey has no device column
 };
 
 struct Survey {
   std::string path;
   std::vector<SurveySample> samples;
   std::string where(int line) const { return path + ":" + std::to_string(line); }
+  /// The devices of the samples, in order of first appearance (one empty name without a device
+  /// column).
+  std::vector<std::string> devices() const;
 };
 
 enum class SurveyFormat { kLong, kRoyalHolloway };

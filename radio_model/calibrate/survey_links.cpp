@@ -1,10 +1,12 @@
 #include "radio_model/calibrate/survey_links.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <tuple>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/error.hpp"
 #include "radio_model/propagation_model.hpp"
@@ -63,10 +65,25 @@ void check_inside(const SurveySite& site, const Eigen::Vector3d& p, const std::s
 
 }  // namespace
 
+std::vector<std::string> devices_reference_first(const Survey& survey,
+                                                 const std::string& reference) {
+  std::vector<std::string> devices = survey.devices();
+  if (reference.empty()) return devices;
+  const auto it = std::find(devices.begin(), devices.end(), reference);
+  if (it == devices.end())
+    throw InvalidInputError(fmt::format("{}: no sample of the reference device '{}' (devices: {})",
+                                        survey.path, reference, fmt::join(devices, ", ")));
+  std::rotate(devices.begin(), it, it + 1);
+  return devices;
+}
+
 SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoint>& aps,
-                         const SurveySite& site) {
+                         const SurveySite& site, std::vector<std::string> devices) {
   SurveyLinks out;
   out.aps = aps;
+  out.devices = devices.empty() ? devices_reference_first(survey) : std::move(devices);
+  std::map<std::string, std::size_t> index_of_device;
+  for (std::size_t d = 0; d < out.devices.size(); ++d) index_of_device[out.devices[d]] = d;
   std::map<int, std::size_t> index_of_id;
   std::vector<radio_model::AccessPoint> model_aps;
   for (std::size_t i = 0; i < aps.size(); ++i) {
@@ -79,8 +96,9 @@ SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoi
     model_aps.push_back(ap);
   }
 
-  // Group by millimetre position and AP, in order of first appearance.
-  std::map<std::tuple<long long, long long, long long, std::size_t>, std::size_t> group_of;
+  // Group by millimetre position, AP and device, in order of first appearance.
+  std::map<std::tuple<long long, long long, long long, std::size_t, std::size_t>, std::size_t>
+      group_of;
   for (const SurveySample& s : survey.samples) {
     const std::string where = survey.where(s.line);
     const auto ap = index_of_id.find(s.ap_id);
@@ -90,15 +108,22 @@ SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoi
                                    "with --aps FILE or the scene's access_points)",
                                    s.ap_id, id_list(aps)));
     }
+    const auto device = index_of_device.find(s.device);
+    if (device == index_of_device.end()) {
+      throw ParseError(where, "device",
+                       fmt::format("device '{}' is not among the fitted survey's ({})", s.device,
+                                   fmt::join(out.devices, ", ")));
+    }
     const auto key =
         std::make_tuple(std::llround(s.position_m.x() * 1e3), std::llround(s.position_m.y() * 1e3),
-                        std::llround(s.position_m.z() * 1e3), ap->second);
+                        std::llround(s.position_m.z() * 1e3), ap->second, device->second);
     auto [it, fresh] = group_of.emplace(key, out.groups.size());
     if (fresh) {
       check_inside(site, s.position_m, where, "x_m", "the survey position");
       LinkGroup g;
       g.position_m = s.position_m;
       g.ap_index = ap->second;
+      g.device_index = device->second;
       g.first_line = s.line;
       g.line_of_sight = s.line_of_sight;
       out.groups.push_back(g);

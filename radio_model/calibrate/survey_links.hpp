@@ -22,7 +22,8 @@ namespace wifislam::radio_model::calibrate {
 
 struct LinkGroup {
   Eigen::Vector3d position_m = Eigen::Vector3d::Zero();
-  std::size_t ap_index = 0;  // into SurveyLinks::aps
+  std::size_t ap_index = 0;      // into SurveyLinks::aps
+  std::size_t device_index = 0;  // into SurveyLinks::devices
   std::vector<double> rss_dbm;
   double mean_dbm = 0.0;
   double distance_m = 0.0;
@@ -40,6 +41,8 @@ struct LineOfSightAgreement {
 
 struct SurveyLinks {
   std::vector<SurveyAccessPoint> aps;
+  /// The receivers, the reference (offset 0) first; one empty name for a survey of one device.
+  std::vector<std::string> devices;
   std::vector<LinkGroup> groups;  // by first appearance in the survey
   std::size_t sample_count() const;
   LineOfSightAgreement line_of_sight_agreement() const;
@@ -60,11 +63,18 @@ struct SurveySite {
   std::uint64_t seed = 0;
 };
 
-/// Groups `survey` by position (to the millimetre) and AP and counts each link's walls in
-/// `site`. Throws ParseError located in the survey for a sample from an AP not in `aps`, or at a
-/// position outside the scene's free space or above its ceiling, and located at the AP (its
-/// aps.csv line, else the scene's `access_points`) for an AP outside the free space.
+/// The survey's devices in order of first appearance with `reference` (when named) moved first.
+/// Throws InvalidInputError when the survey has no device of that name.
+std::vector<std::string> devices_reference_first(const Survey& survey,
+                                                 const std::string& reference = "");
+
+/// Groups `survey` by position (to the millimetre), AP and device and counts each link's walls in
+/// `site`. `devices` fixes the device order (a test survey scored against a fit takes the fit's);
+/// empty: devices_reference_first(survey). Throws ParseError located in the survey for a sample
+/// from an AP not in `aps` or a device not in `devices`, or at a position outside the scene's
+/// free space or above its ceiling, and located at the AP (its aps.csv line, else the scene's
+/// `access_points`) for an AP outside the free space.
 SurveyLinks survey_links(const Survey& survey, const std::vector<SurveyAccessPoint>& aps,
-                         const SurveySite& site);
+                         const SurveySite& site, std::vector<std::string> devices = {});
 
 }  // namespace wifislam::radio_model::calibrate

@@ -125,6 +125,74 @@ TEST_F(CalibrateCli, BadAccessPointFileIsLocated) {
   expect_rejected("survey.csv", "aps.csv:2", "not a Wi-Fi transmit power");
 }
 
+/// good_survey() measured by three phones at every spot: phone2 reads 6 dB below phone1 and
+/// phone3 2 dB above it.
+std::string three_phone_survey() {
+  std::string csv = "x_m,y_m,ap_id,rss_dbm,device\n";
+  const std::string one = good_survey();
+  std::size_t at = one.find("x_m,y_m");
+  at = one.find('\n', at) + 1;
+  while (at < one.size()) {
+    const std::size_t end = one.find('\n', at);
+    const std::string row = one.substr(at, end - at);
+    const std::size_t cut = row.rfind(',');
+    const double rss = std::stod(row.substr(cut + 1));
+    const std::string head = row.substr(0, cut + 1);
+    csv += fmt::format("{}{:.1f},phone1\n{}{:.1f},phone2\n{}{:.1f},phone3\n", head, rss, head,
+                       rss - 6.0, head, rss + 2.0);
+    at = end + 1;
+  }
+  return csv;
+}
+
+TEST_F(CalibrateCli, ASurveyOfSeveralPhonesGetsAnOffsetPerPhoneAndScoresAHeldOutOne) {
+  test::write_file(work_ / "phones.csv", three_phone_survey());
+  const auto r = calibrate("phones.csv", "--held-out-device phone3 --held-out-positions 4 "
+                                         "--json fit.json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(test::read_file(work_ / "fit.json"));
+  ASSERT_EQ(j["devices"].size(), 2u);
+  EXPECT_EQ(j["devices"][0]["device"], "phone1");
+  EXPECT_EQ(j["devices"][0]["offset_db"], 0.0);
+  EXPECT_EQ(j["devices"][1]["device"], "phone2");
+  EXPECT_NEAR(j["devices"][1]["offset_db"].get<double>(), -6.0, 1e-6);  // paired: exact
+  const nlohmann::json& h = j["held_out_device"];
+  EXPECT_EQ(h["device"], "phone3");
+  EXPECT_NEAR(h["offset_db"].get<double>(), 2.0, 1.0);
+  EXPECT_LT(h["rms_with_offset_db"].get<double>(), h["rms_without_offset_db"].get<double>());
+  EXPECT_EQ(h["scored_samples"], 20 * 3);  // 24 positions, 4 used for the offset, 3 APs
+  EXPECT_NE(test::read_file(work_ / "fit.md").find("Held-out device `phone3`"), std::string::npos);
+  EXPECT_NE(test::read_file(work_ / "fit.yaml").find("#   phone2: rss_offset_db -6.00"),
+            std::string::npos);
+
+  // phone2 as the reference: phone1 reads 6 dB above it.
+  ASSERT_EQ(calibrate("phones.csv", "--reference-device phone2 --json fit.json").exit_code, 0);
+  const nlohmann::json k = nlohmann::json::parse(test::read_file(work_ / "fit.json"));
+  EXPECT_EQ(k["devices"][0]["device"], "phone2");
+  EXPECT_NEAR(k["devices"][1]["offset_db"].get<double>(), 6.0, 1e-6);
+}
+
+TEST_F(CalibrateCli, BadDevicesAreRefused) {
+  test::write_file(work_ / "phones.csv", three_phone_survey());
+  test::write_file(work_ / "blank.csv", "x_m,y_m,ap_id,rss_dbm,device\n1.0,0.3,10,-50, \n");
+  expect_rejected("blank.csv", "blank.csv:2", "device");
+  test::write_file(work_ / "twice.csv", "x_m,y_m,device,ap_id,rss_dbm,device\n");
+  expect_rejected("twice.csv", "twice.csv:1", "appears twice");
+  test::write_file(work_ / "lacking.csv", "x_m,y_m,rss_dbm,device\n1,0.3,-50,p\n");
+  expect_rejected("lacking.csv", "lacking.csv:1", "ap_id");
+  for (const char* extra : {"--held-out-device phone9", "--reference-device phone9",
+                            "--held-out-device phone1 --reference-device phone1"}) {
+    const auto before = test::listing(work_);
+    const auto r = calibrate("phones.csv", extra);
+    EXPECT_EQ(r.exit_code, 2) << extra << ": " << r.err;
+    EXPECT_NE(r.err.find("phone"), std::string::npos) << r.err;
+    EXPECT_EQ(test::listing(work_), before) << extra;
+  }
+  // A test survey of a device the fit has not seen.
+  test::write_file(work_ / "other.csv", "x_m,y_m,ap_id,rss_dbm,device\n1.0,0.3,10,-50,tablet\n");
+  expect_rejected("phones.csv", "other.csv:2", "tablet", "--test other.csv");
+}
+
 TEST_F(CalibrateCli, OtherFormatIsRefusedAtItsHeader) {
   expect_rejected("survey.csv", "survey.csv:2", "Royal Holloway header", "--format royal-holloway");
   test::write_file(work_ / "rh.csv", "X,Y,AP1 RSS(dBm)\n0,1,-50\n");
