@@ -83,7 +83,7 @@ void Scene::reject(const std::string& key_path, const std::string& message) cons
 
 radio_model::ReceiverDevice receiver_device(const WifiScannerSpec& spec) {
   if (spec.device) return *spec.device;
-  radio_model::ReceiverDevice reference;
+  radio_model::ReceiverDevice reference = *radio_model::shipped_device("reference");
   reference.sensitivity_dbm = spec.sensitivity_dbm;
   reference.dwell_per_channel_s = spec.dwell_per_channel_s;
   return reference;

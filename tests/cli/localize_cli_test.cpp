@@ -16,6 +16,7 @@
 
 #include "tests/cli/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/upstairs_scene.hpp"
 
 namespace wifislam {
 namespace {
@@ -109,14 +110,7 @@ TEST(LocalizeCli, AOneFpsDatasetLocalisesAndEmptyListsAreRefused) {
 TEST(LocalizeCli, AnotherFloorInTheMapIsTheWrongFloorAndWifiClustersChooseItLess) {
   const fs::path scratch = test::scratch_folder();
   const std::string ground = std::string(WIFISLAM_SCENES_DIR) + "/two_storey_office.yaml";
-  std::string upstairs = read_file(ground);
-  for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"  nodes: [A, B]\n", "  nodes: [A1, B1]\n"},
-        {"  level: ground\n", "  level: first\n"}}) {
-    ASSERT_NE(upstairs.find(from), std::string::npos) << from;
-    upstairs.replace(upstairs.find(from), from.size(), to);
-  }
-  test::write_file(scratch / "upstairs.yaml", upstairs);
+  test::write_upstairs_two_storey_office(scratch);
   // There and back on the ground floor: the way back revisits the map's first 40 %.
   const test::CliResult r = test::run_wifislam(
       "localize " + ground + " --route A,B,A --other-floor " +

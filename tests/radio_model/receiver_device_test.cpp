@@ -9,18 +9,13 @@
 
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/wifi_scanner.hpp"
+#include "tests/radio_model/test_access_points.hpp"
 #include "tests/radio_model/test_walls.hpp"
 
 namespace wifislam::radio_model {
 namespace {
 
-std::vector<AccessPoint> aps_along_x(int count, std::uint64_t seed) {
-  MacAllocator macs(seed);
-  std::vector<AccessPoint> aps;
-  for (int i = 0; i < count; ++i)
-    aps.push_back(make_access_point(i, Eigen::Vector3d(12.0 * i, 3.0, 2.5), 20.0, 3, seed, macs));
-  return aps;
-}
+using test::aps_along_x;
 
 WallMesh brick_walls() {
   WallMesh mesh;
@@ -48,7 +43,7 @@ Readings survey(const PropagationModel& model, const ReceiverDevice& device) {
 class ReceiverDeviceTest : public ::testing::Test {
  protected:
   ReceiverDeviceTest()
-      : model_(brick_walls(), {-5, -15}, {70, 15}, aps_along_x(6, 5), PropagationOptions{}, 5),
+      : model_(brick_walls(), {-5, -15}, {70, 15}, aps_along_x(6, 5, 12.0), PropagationOptions{}, 5),
         reference_(survey(model_, ReceiverDevice{})) {}
   PropagationModel model_;
   Readings reference_;

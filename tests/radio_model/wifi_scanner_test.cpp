@@ -6,18 +6,13 @@
 
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/wifi_scanner.hpp"
+#include "tests/radio_model/test_access_points.hpp"
 #include "tests/radio_model/test_walls.hpp"
 
 namespace wifislam::radio_model {
 namespace {
 
-std::vector<AccessPoint> aps_along_x(int count, std::uint64_t seed) {
-  MacAllocator macs(seed);
-  std::vector<AccessPoint> aps;
-  for (int i = 0; i < count; ++i)
-    aps.push_back(make_access_point(i, Eigen::Vector3d(10.0 * i, 3.0, 2.5), 20.0, 3, seed, macs));
-  return aps;
-}
+using test::aps_along_x;
 
 WallMesh some_walls() {
   WallMesh mesh;

@@ -21,6 +21,7 @@
 #include "study/study_runner.hpp"
 #include "tests/cli/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/upstairs_scene.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -226,15 +227,9 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
 // chosen APs are where they were simulated.
 TEST(StudyPlace, OnAnUpperLevelTheCandidatesAndTheirBlockAreOnTheRoutesLevel) {
   const fs::path dir = test::scratch_folder();
-  std::string upstairs = test::read_file(kScenes + "/two_storey_office.yaml");
-  for (const auto& [from, to] :
-       {std::pair<std::string, std::string>{"  nodes: [A, B]\n", "  nodes: [A1, B1]\n"},
-        {"  level: ground\n", "  level: first\n"}}) {
-    ASSERT_NE(upstairs.find(from), std::string::npos) << from;
-    upstairs.replace(upstairs.find(from), from.size(), to);
-  }
-  test::write_file(dir / "upstairs.yaml", upstairs);
-  const auto r = test::run_wifislam("study place " + (dir / "upstairs.yaml").string() +
+  const fs::path upstairs_path = test::write_upstairs_two_storey_office(dir);
+  std::string upstairs = test::read_file(upstairs_path);
+  const auto r = test::run_wifislam("study place " + upstairs_path.string() +
                                         " --budget 2 -q -o " + (dir / "place").string(),
                                     dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
