@@ -223,9 +223,10 @@ void add_query_session(LocalisationData& data, LocalisationData queries,
   std::nth_element(nearest_m.begin(), nearest_m.begin() + nearest_m.size() / 2, nearest_m.end());
   const double median_m = nearest_m[nearest_m.size() / 2];
   if (!(median_m <= kSameRouteMedianM))
-    refuse(fmt::format("not the map's route: its images lie {:.1f} m (median) from the nearest "
-                       "map image, more than {:g} m",
-                       median_m, kSameRouteMedianM));
+    refuse(
+        fmt::format("not the map's route: its images lie {:.1f} m (median) from the nearest "
+                    "map image, more than {:g} m",
+                    median_m, kSameRouteMedianM));
   for (LocalisationImage& image : queries.images) {
     image.query_session = true;
     data.images.push_back(std::move(image));

@@ -56,7 +56,7 @@ struct LocalisationData {
   /// ids; both empty for a one-level scene or a dataset without scene.yaml.
   std::string level;
   std::vector<std::string> building_levels;
-  int other_floor_images = 0;  // images joined from another floor (add_other_floor)
+  int other_floor_images = 0;    // images joined from another floor (add_other_floor)
   int query_session_images = 0;  // images of a query session (add_query_session): the queries
 };
 

@@ -69,9 +69,9 @@ struct QueryResult {
 struct LocalisationResult {
   std::string description;
   int map_images = 0, query_images = 0;
-  int other_floor_images = 0;        // of the map images, those of another floor
+  int other_floor_images = 0;             // of the map images, those of another floor
   bool queries_from_another_run = false;  // add_query_session: the input is all map
-  std::vector<QueryResult> queries;  // per method, in query order
+  std::vector<QueryResult> queries;       // per method, in query order
 };
 
 /// Runs every method of `options` on `data`. Throws InvalidInputError when a Wi-Fi method has no

@@ -116,8 +116,10 @@ WIFISLAM_COMMAND(generate, 50) {
     shipped += (shipped.empty() ? "" : ", ") + device.name;
   app->add_option("--device", args->device,
                   "The Wi-Fi receiver, in place of the scene's sensors.wifi.device: a shipped\n"
-                  "device (" + shipped + ")\n"
-                  "or a device file (*.yaml; scenes/README.md lists its keys)");
+                  "device (" +
+                      shipped +
+                      ")\n"
+                      "or a device file (*.yaml; scenes/README.md lists its keys)");
   app->add_option("--session", args->session,
                   "Which visit of the building to render (default: the scene's `session`, else\n"
                   "0): the same building, route and appearance, with the scene's\n"

@@ -176,13 +176,12 @@ void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {
         data,
         fs::is_directory(args.queries)
             ? study::localisation_data_from_dataset(args.queries, data_options)
-            : study::localisation_data_from_scene(sim::load_scene_file(args.queries),
-                                                  data_options),
+            : study::localisation_data_from_scene(sim::load_scene_file(args.queries), data_options),
         args.queries);
   } else if (args.queries_session) {
     study::add_query_session(
-        data, study::localisation_data_from_scene(query_session_scene(args, route_given),
-                                                  data_options),
+        data,
+        study::localisation_data_from_scene(query_session_scene(args, route_given), data_options),
         fmt::format("session {}", *args.queries_session));
   }
   if (!args.quiet) {
@@ -266,7 +265,6 @@ WIFISLAM_COMMAND(localize, 67) {
       ->check(cli::kSeedValidator);
   app->add_flag("--force", args->force, "Replace an existing output folder");
   app->add_flag("-q,--quiet", args->quiet, "No progress on stderr");
-  app->callback([args, app] {
-    run(*args, app->count("--route") > 0, app->count("--map-share") > 0);
-  });
+  app->callback(
+      [args, app] { run(*args, app->count("--route") > 0, app->count("--map-share") > 0); });
 }

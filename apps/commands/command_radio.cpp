@@ -96,21 +96,19 @@ void run_calibrate(const CalibrateArgs& args) {
           "--held-out-device: '{}' is the reference device (--reference-device); it cannot be "
           "held out",
           args.held_out_device));
-    std::erase_if(survey.samples, [&](const cal::SurveySample& s) {
-      return s.device == args.held_out_device;
-    });
-    std::erase_if(held.samples, [&](const cal::SurveySample& s) {
-      return s.device != args.held_out_device;
-    });
+    std::erase_if(survey.samples,
+                  [&](const cal::SurveySample& s) { return s.device == args.held_out_device; });
+    std::erase_if(held.samples,
+                  [&](const cal::SurveySample& s) { return s.device != args.held_out_device; });
     if (survey.samples.empty())
-      throw InvalidInputError(fmt::format(
-          "--held-out-device: {} has no other device to fit", args.survey_path));
+      throw InvalidInputError(
+          fmt::format("--held-out-device: {} has no other device to fit", args.survey_path));
   }
   c.train = cal::survey_links(survey, aps, survey_site,
                               cal::devices_reference_first(survey, args.reference_device));
   if (!args.test_path.empty())
-    c.test = cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps,
-                               survey_site, c.train.devices);
+    c.test = cal::survey_links(cal::read_survey(args.test_path, format, height_m), aps, survey_site,
+                               c.train.devices);
   const radio_model::PropagationOptions& options = survey_site.options;
   c.before = cal::scene_model(c.train, options.wall_losses, scene.radio.distance_coefficient,
                               scene.access_points.tx_power_dbm, args.frequency_mhz);
@@ -120,8 +118,8 @@ void run_calibrate(const CalibrateArgs& args) {
   cal::widen_for_correlated_shadowing(c.fit, c.train, c.shadowing);
   if (!args.held_out_device.empty())
     c.held_out = cal::score_held_out_device(
-        cal::survey_links(held, aps, survey_site, {args.held_out_device}), c.fit.model,
-        c.baseline, args.held_out_positions);
+        cal::survey_links(held, aps, survey_site, {args.held_out_device}), c.fit.model, c.baseline,
+        args.held_out_positions);
 
   const std::string markdown = cal::calibration_report_markdown(c);
   const std::string scene_blocks = cal::calibration_scene_yaml(c);

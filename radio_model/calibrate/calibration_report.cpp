@@ -262,14 +262,15 @@ std::string calibration_report_json(const Calibration& c) {
     j["devices"] = devices;
     if (c.held_out) {
       const HeldOutDeviceScore& h = *c.held_out;
-      j["held_out_device"] = {{"device", h.device},
-                              {"offset_positions", h.offset_positions},
-                              {"offset_db", h.offset_db},
-                              {"scored_samples", h.scored_samples},
-                              {"rms_without_offset_db", h.rms_without_offset_db},
-                              {"rms_with_offset_db", h.rms_with_offset_db},
-                              {"log_distance_rms_db", h.log_distance_rms_db},
-                              {"log_distance_rms_with_offset_db", h.log_distance_rms_with_offset_db}};
+      j["held_out_device"] = {
+          {"device", h.device},
+          {"offset_positions", h.offset_positions},
+          {"offset_db", h.offset_db},
+          {"scored_samples", h.scored_samples},
+          {"rms_without_offset_db", h.rms_without_offset_db},
+          {"rms_with_offset_db", h.rms_with_offset_db},
+          {"log_distance_rms_db", h.log_distance_rms_db},
+          {"log_distance_rms_with_offset_db", h.log_distance_rms_with_offset_db}};
     }
   }
   j["shadowing_sigma_db"] = c.shadowing.shadowing_sigma_db;

@@ -92,7 +92,7 @@ struct PropagationFit {
   int distance_column = -1;
   std::vector<int> intercept_column;
   std::array<int, radio_model::kWallMaterialCount> material_column{-1, -1, -1, -1, -1};
-  std::vector<int> device_column;  // -1 for the reference
+  std::vector<int> device_column;     // -1 for the reference
   bool correlated_intervals = false;  // true once correlated_intervals.hpp widened them
 };
 

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -80,8 +80,8 @@ LongColumns long_columns(const std::vector<std::string_view>& header, const std:
   LongColumns c;
   c.count = header.size();
   const std::pair<const char*, std::optional<std::size_t>*> known[] = {
-      {"x_m", &c.x},       {"y_m", &c.y},         {"z_m", &c.z},
-      {"ap_id", &c.ap},    {"rss_dbm", &c.rss},   {"device", &c.device}};
+      {"x_m", &c.x},    {"y_m", &c.y},       {"z_m", &c.z},
+      {"ap_id", &c.ap}, {"rss_dbm", &c.rss}, {"device", &c.device}};
   for (std::size_t i = 0; i < header.size(); ++i) {
     bool found = false;
     for (const auto& [name, slot] : known) {

@@ -126,20 +126,19 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
       {"render", {{"near_m", num(options.render.near_m)}, {"far_m", num(options.render.far_m)}}});
   const WifiScannerSpec& w = s.sensors.wifi;
   const radio_model::ReceiverDevice device = receiver_device(w);
-  c.sensor_model.push_back(
-      {"wifi_scanner",
-       {{"device", device.name},
-        {"sensitivity_dbm", num(device.sensitivity_dbm)},
-        {"dwell_per_channel_s", num(device.dwell_per_channel_s)},
-        {"rss_offset_db", num(device.rss_offset_db)},
-        {"rss_gain", num(device.rss_gain)},
-        {"rss_gain_pivot_dbm", num(radio_model::kGainPivotDbm)},
-        {"quantisation_db", std::to_string(device.quantisation_db)},
-        {"bands", std::string(to_string(device.bands))},
-        {"scan_throttle", std::string(to_string(device.scan_throttle))},
-        {"scan_interval_s", num(w.scan_interval_s)},
-        {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
-        {"antenna_height_m", num(s.sensors.camera.height_m)}}});
+  c.sensor_model.push_back({"wifi_scanner",
+                            {{"device", device.name},
+                             {"sensitivity_dbm", num(device.sensitivity_dbm)},
+                             {"dwell_per_channel_s", num(device.dwell_per_channel_s)},
+                             {"rss_offset_db", num(device.rss_offset_db)},
+                             {"rss_gain", num(device.rss_gain)},
+                             {"rss_gain_pivot_dbm", num(radio_model::kGainPivotDbm)},
+                             {"quantisation_db", std::to_string(device.quantisation_db)},
+                             {"bands", std::string(to_string(device.bands))},
+                             {"scan_throttle", std::string(to_string(device.scan_throttle))},
+                             {"scan_interval_s", num(w.scan_interval_s)},
+                             {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
+                             {"antenna_height_m", num(s.sensors.camera.height_m)}}});
   const World& world = pipeline.site().world();
   if (!world.storeys.empty()) {
     // A building of several levels: access_points.csv's z is the building's, the poses' the
@@ -563,14 +562,13 @@ std::string GenerateSummary::full_report() const {
   r += fmt::format("time origin       {} s Unix time (sensors.time_origin_s); stamps {} .. {}\n",
                    time_origin_s, first_time.to_tum_string(), last_time.to_tum_string());
   r += fmt::format("pauses            {}\n", pauses);
-  r += fmt::format("wifi scans        {} ({} readings){}{}\n", wifi_scans, wifi_readings,
-                   wifi_scans_empty > 0
-                       ? fmt::format("; {} more heard no access point", wifi_scans_empty)
-                       : std::string(),
-                   wifi_requests_throttled > 0
-                       ? fmt::format("; {} requests refused by {}'s throttle",
-                                     wifi_requests_throttled, wifi_device)
-                       : std::string());
+  r += fmt::format(
+      "wifi scans        {} ({} readings){}{}\n", wifi_scans, wifi_readings,
+      wifi_scans_empty > 0 ? fmt::format("; {} more heard no access point", wifi_scans_empty)
+                           : std::string(),
+      wifi_requests_throttled > 0 ? fmt::format("; {} requests refused by {}'s throttle",
+                                                wifi_requests_throttled, wifi_device)
+                                  : std::string());
   r += fmt::format(
       "access points     {} ({} BSSIDs); heard per pause: mean {:.1f}, min {}, max {}\n",
       access_points, bssids, aps_heard_per_pause_mean, aps_heard_per_pause_min,

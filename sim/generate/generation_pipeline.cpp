@@ -72,8 +72,8 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
     renderer_->set_world(site_->world(), scene_);
     depth_model_ = std::make_unique<DepthSensorModel>(
         scene_.sensors.depth, scene_.sensors.camera.intrinsics, session_seed(scene_));
-    color_model_ = std::make_unique<ColorSensorModel>(scene_.sensors.color,
-                                                      scene_.sensors.camera.fps, session_seed(scene_));
+    color_model_ = std::make_unique<ColorSensorModel>(
+        scene_.sensors.color, scene_.sensors.camera.fps, session_seed(scene_));
   }
   timings_.setup_s = site_build_s_ + seconds_since(t0);
 }

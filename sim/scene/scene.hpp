@@ -194,11 +194,11 @@ const char* to_string(AccessPointChangeKind kind);
 struct AccessPointChange {
   int session = 1;
   AccessPointChangeKind change = AccessPointChangeKind::kOff;
-  std::optional<std::uint64_t> ap;               // off, moved, power
-  std::optional<Eigen::Vector3d> position_m;     // moved, new (z above the AP's level's floor)
-  double tx_power_step_db = 0.0;                 // power
-  std::optional<double> tx_power_dbm;            // new; default access_points.tx_power_dbm
-  std::string level = {};                        // new, in a building of several levels
+  std::optional<std::uint64_t> ap;            // off, moved, power
+  std::optional<Eigen::Vector3d> position_m;  // moved, new (z above the AP's level's floor)
+  double tx_power_step_db = 0.0;              // power
+  std::optional<double> tx_power_dbm;         // new; default access_points.tx_power_dbm
+  std::string level = {};                     // new, in a building of several levels
 };
 
 struct AccessPoints {

@@ -38,9 +38,7 @@ class KeyCollector {
   }
   void vec2(const char* key, Eigen::Vector2d&, Limits) { add(key); }
   void vec3(const char* key, Eigen::Vector3d&, Limits, Limits) { add(key); }
-  void optional_vec3(const char* key, std::optional<Eigen::Vector3d>&, Limits, Limits) {
-    add(key);
-  }
+  void optional_vec3(const char* key, std::optional<Eigen::Vector3d>&, Limits, Limits) { add(key); }
   void polygon(const char* key, std::vector<Eigen::Vector2d>&, Limits) { add(key); }
   void points_if_any(const char* key, std::vector<Eigen::Vector2d>&, Limits) { add(key); }
   void text_list(const char* key, std::vector<std::string>&) { add(key); }

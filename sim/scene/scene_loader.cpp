@@ -882,16 +882,16 @@ radio_model::ReceiverDevice load_receiver_device(const std::string& name_or_file
     return name_or_file.size() >= tail.size() &&
            name_or_file.compare(name_or_file.size() - tail.size(), tail.size(), tail) == 0;
   };
-  const bool is_file = ends_with(".yaml") || ends_with(".yml") ||
-                       name_or_file.find('/') != std::string::npos;
+  const bool is_file =
+      ends_with(".yaml") || ends_with(".yml") || name_or_file.find('/') != std::string::npos;
   if (!is_file) {
     if (auto device = radio_model::shipped_device(name_or_file)) return *device;
     std::vector<std::string> names;
     for (const radio_model::ReceiverDevice& d : radio_model::shipped_devices())
       names.push_back(d.name);
-    throw InvalidInputError(fmt::format(
-        "no shipped device '{}'{} (shipped: {}; a device file's name ends in .yaml)", name_or_file,
-        did_you_mean(name_or_file, names), fmt::join(names, ", ")));
+    throw InvalidInputError(
+        fmt::format("no shipped device '{}'{} (shipped: {}; a device file's name ends in .yaml)",
+                    name_or_file, did_you_mean(name_or_file, names), fmt::join(names, ", ")));
   }
   std::filesystem::path path(name_or_file);
   if (path.is_relative() && !folder.empty()) path = std::filesystem::path(folder) / path;

@@ -54,8 +54,9 @@ std::vector<radio_model::AccessPoint> apply_access_point_changes(
         c.change == AccessPointChangeKind::kMoved || c.change == AccessPointChangeKind::kNew;
     if (placed_somewhere != c.position_m.has_value())
       scene.reject(key + (placed_somewhere ? "" : ".position_m"),
-                   placed_somewhere ? fmt::format("`{}` needs `position_m`", to_string(c.change))
-                                    : fmt::format("`{}` takes no `position_m`", to_string(c.change)));
+                   placed_somewhere
+                       ? fmt::format("`{}` needs `position_m`", to_string(c.change))
+                       : fmt::format("`{}` takes no `position_m`", to_string(c.change)));
     if (c.position_m) {
       const Eigen::Vector2d xy = c.position_m->head<2>();
       if ((xy.array() < min_m.array()).any() || (xy.array() > max_m.array()).any())
@@ -65,9 +66,9 @@ std::vector<radio_model::AccessPoint> apply_access_point_changes(
                                  xy.x(), xy.y(), min_m.x(), min_m.y(), max_m.x(), max_m.y()));
     }
     if (c.ap && static_cast<int>(*c.ap) >= placed + new_index)
-      scene.reject(key + ".ap", fmt::format("no access point {} (ids 0 to {}{})", *c.ap,
-                                            placed + new_index - 1,
-                                            new_index > 0 ? ", new ones included" : ""));
+      scene.reject(key + ".ap",
+                   fmt::format("no access point {} (ids 0 to {}{})", *c.ap, placed + new_index - 1,
+                               new_index > 0 ? ", new ones included" : ""));
     if (c.session > session) continue;
     if (is_new) {
       Eigen::Vector3d at = *c.position_m;
@@ -82,8 +83,8 @@ std::vector<radio_model::AccessPoint> apply_access_point_changes(
     });
     if (it == aps.end())
       scene.reject(key + ".ap",
-                   fmt::format("access point {} is off from an earlier change by session {}",
-                               *c.ap, c.session));
+                   fmt::format("access point {} is off from an earlier change by session {}", *c.ap,
+                               c.session));
     switch (c.change) {
       case AccessPointChangeKind::kOff:
         aps.erase(it);
@@ -92,7 +93,8 @@ std::vector<radio_model::AccessPoint> apply_access_point_changes(
         // Moved within its level: z above the floor of the storey it stands on.
         double floor_m = 0.0;
         for (const Storey& storey : world.storeys)
-          if (storey.elevation_m <= it->position_m.z()) floor_m = std::max(floor_m, storey.elevation_m);
+          if (storey.elevation_m <= it->position_m.z())
+            floor_m = std::max(floor_m, storey.elevation_m);
         it->position_m = {c.position_m->x(), c.position_m->y(), floor_m + c.position_m->z()};
         break;
       }

@@ -32,16 +32,17 @@ class DeviceCli : public ::testing::Test {
   /// Generates the scene with `device` ("" for the scene's own) and returns the dataset folder.
   fs::path generate(const std::string& device, const std::string& name) {
     const fs::path out = scratch_ / name;
-    const auto r = test::run_wifislam("generate " + scene_.string() + " --no-images -q -o " +
-                                          out.string() +
-                                          (device.empty() ? "" : " --device " + device),
-                                      scratch_);
+    const auto r =
+        test::run_wifislam("generate " + scene_.string() + " --no-images -q -o " + out.string() +
+                               (device.empty() ? "" : " --device " + device),
+                           scratch_);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return out;
   }
   static std::map<std::string, std::string> scanner_calibration(const fs::path& dataset) {
     std::map<std::string, std::string> out;
-    for (const CalibrationGroup& g : read_calibration_yaml(dataset / "calibration.yaml").sensor_model)
+    for (const CalibrationGroup& g :
+         read_calibration_yaml(dataset / "calibration.yaml").sensor_model)
       if (g.name == "wifi_scanner")
         for (const auto& [key, value] : g.values) out[key] = value;
     return out;

@@ -207,8 +207,8 @@ TEST(LocalizeCli, QueriesFromAnotherSessionOrDatasetAreMatchedToTheWholeFirstRun
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
     EXPECT_FALSE(fs::exists(scratch / "bad")) << bad;
   }
-  r = test::run_wifislam("localize " + (scratch / "s1").string() +
-                             " --queries-session 2 -q -o " + (scratch / "bad").string(),
+  r = test::run_wifislam("localize " + (scratch / "s1").string() + " --queries-session 2 -q -o " +
+                             (scratch / "bad").string(),
                          scratch);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   fs::remove_all(scratch);

@@ -43,7 +43,8 @@ Readings survey(const PropagationModel& model, const ReceiverDevice& device) {
 class ReceiverDeviceTest : public ::testing::Test {
  protected:
   ReceiverDeviceTest()
-      : model_(brick_walls(), {-5, -15}, {70, 15}, aps_along_x(6, 5, 12.0), PropagationOptions{}, 5),
+      : model_(brick_walls(), {-5, -15}, {70, 15}, aps_along_x(6, 5, 12.0), PropagationOptions{},
+               5),
         reference_(survey(model_, ReceiverDevice{})) {}
   PropagationModel model_;
   Readings reference_;

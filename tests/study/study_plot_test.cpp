@@ -229,9 +229,9 @@ TEST(StudyPlace, OnAnUpperLevelTheCandidatesAndTheirBlockAreOnTheRoutesLevel) {
   const fs::path dir = test::scratch_folder();
   const fs::path upstairs_path = test::write_upstairs_two_storey_office(dir);
   std::string upstairs = test::read_file(upstairs_path);
-  const auto r = test::run_wifislam("study place " + upstairs_path.string() +
-                                        " --budget 2 -q -o " + (dir / "place").string(),
-                                    dir);
+  const auto r = test::run_wifislam(
+      "study place " + upstairs_path.string() + " --budget 2 -q -o " + (dir / "place").string(),
+      dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::string block = test::read_file(dir / "place" / "access_points.yaml");
   const std::string own = "access_points: {placement: rooms, count: 4, height_m: 2.5}\n";

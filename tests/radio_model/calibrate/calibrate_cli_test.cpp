@@ -147,8 +147,9 @@ std::string three_phone_survey() {
 
 TEST_F(CalibrateCli, ASurveyOfSeveralPhonesGetsAnOffsetPerPhoneAndScoresAHeldOutOne) {
   test::write_file(work_ / "phones.csv", three_phone_survey());
-  const auto r = calibrate("phones.csv", "--held-out-device phone3 --held-out-positions 4 "
-                                         "--json fit.json");
+  const auto r = calibrate("phones.csv",
+                           "--held-out-device phone3 --held-out-positions 4 "
+                           "--json fit.json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(test::read_file(work_ / "fit.json"));
   ASSERT_EQ(j["devices"].size(), 2u);

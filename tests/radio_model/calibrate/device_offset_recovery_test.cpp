@@ -118,8 +118,7 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
   ASSERT_EQ(links.devices, (std::vector<std::string>{"phone_a", "phone_b"}));  // first seen first
 
   const WallLossTable defaults(scene.building.wall_thickness_m);
-  const LinearRadioModel before =
-      scene_model(links, defaults, std::nullopt, 20.0, kFrequencyMhz);
+  const LinearRadioModel before = scene_model(links, defaults, std::nullopt, 20.0, kFrequencyMhz);
   PropagationFit fit = fit_propagation(links, before.wall_loss_db);
   const ShadowingStatistics s = shadowing_statistics(links, fit.model, fit.parameters);
   widen_for_correlated_shadowing(fit, links, s);
@@ -133,8 +132,8 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
   EXPECT_NEAR(from_b.model.device_offset_db[1], -b, 1e-6);  // the same fit, seen from phone_b
 
   const LinearRadioModel baseline = fit_log_distance(links);
-  const HeldOutDeviceScore h = score_held_out_device(
-      survey_links(held, aps, where, {"phone_c"}), fit.model, baseline, 5);
+  const HeldOutDeviceScore h =
+      score_held_out_device(survey_links(held, aps, where, {"phone_c"}), fit.model, baseline, 5);
   EXPECT_EQ(h.device, "phone_c");
   EXPECT_GT(h.scored_samples, 500);
   EXPECT_NEAR(h.offset_db, kOffsetCDb, 1.5);

@@ -127,8 +127,8 @@ TEST(SensorSchedule, AThrottledScannerGrantsAtMostItsRequestsInAnyWindowAndTheRe
   // No window of 120 s holds more than four granted requests ...
   for (std::size_t a = 0; a < kept.size(); ++a) {
     std::size_t in_window = 0;
-    for (std::size_t b = a; b < kept.size() && kept[b].start.ns - kept[a].start.ns <= 120'000'000'000;
-         ++b)
+    for (std::size_t b = a;
+         b < kept.size() && kept[b].start.ns - kept[a].start.ns <= 120'000'000'000; ++b)
       ++in_window;
     EXPECT_LE(in_window, 4u) << "from " << kept[a].start.seconds() << " s";
   }

@@ -2,10 +2,10 @@
 // device is a located error, and a resolved scene carries its device in full.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -64,8 +64,8 @@ TEST(SceneDevice, WithoutADeviceTheReceiverIsTheReferenceWithTheBlocksKeys) {
 }
 
 TEST(SceneDevice, AShippedNameLoadsThatDeviceAndTheResolvedSceneWritesItInFull) {
-  const Scene s = load_scene_yaml(with_wifi("wifi: {device: weaker_phone, scan_interval_s: 3}"),
-                                  "named.yaml");
+  const Scene s =
+      load_scene_yaml(with_wifi("wifi: {device: weaker_phone, scan_interval_s: 3}"), "named.yaml");
   ASSERT_TRUE(s.sensors.wifi.device);
   EXPECT_EQ(s.sensors.wifi.device->name, "weaker_phone");
   EXPECT_EQ(s.sensors.wifi.device->rss_offset_db, -5.0);
@@ -146,8 +146,8 @@ TEST(SceneDevice, BadDevicesAreLocatedInTheScene) {
   EXPECT_EQ(both.key_path(), "sensors.wifi.sensitivity_dbm");
   EXPECT_NE(std::string(both.what()).find("esp32"), std::string::npos);
 
-  const auto band = test::expect_parse_error(
-      with_wifi("wifi: {device: {name: x, bands: 6GHz}}"), "scene.yaml");
+  const auto band =
+      test::expect_parse_error(with_wifi("wifi: {device: {name: x, bands: 6GHz}}"), "scene.yaml");
   EXPECT_EQ(band.key_path(), "sensors.wifi.device.bands");
 
   const auto step = test::expect_parse_error(

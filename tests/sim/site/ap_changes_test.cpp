@@ -72,9 +72,7 @@ TEST(ApChanges, EachChangeHoldsFromItsSessionOnAndTheRestIsTheBuildingAsPlaced) 
   EXPECT_EQ(find(s2, 0)->tx_power_dbm, placed[0].tx_power_dbm - 6.0);
   // Real rays: AP 0's mean RSSI at a spot falls by exactly its power step.
   const Eigen::Vector3d spot(10.0, 0.3, 0.5);
-  const auto index_of = [](const Site& site, int id) {
-    return *site.radio().index_of(id);
-  };
+  const auto index_of = [](const Site& site, int id) { return *site.radio().index_of(id); };
   const radio_model::Bssid& b0 = placed[0].bssids.front();
   EXPECT_NEAR(sessions[2].radio().mean_rssi_dbm(index_of(sessions[2], 0), b0, spot),
               plain.radio().mean_rssi_dbm(index_of(plain, 0), b0, spot) - 6.0, 1e-9);
