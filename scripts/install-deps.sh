@@ -21,6 +21,7 @@ packages=(
   libssl-dev                             # SHA-256 for dataset manifests
   libgtest-dev libgmock-dev libbenchmark-dev
   python3-numpy                          # reference port of TUM evaluate_ate.py (eval tests)
+  python3-yaml                           # scripts/ap_changes.py (bench/localize)
   python3-opencv                         # systems/opencv_rgbd_odometry (cv2.rgbd), an external system
   librosbag-dev libsensor-msgs-dev libnav-msgs-dev libtf2-msgs-dev libgeometry-msgs-dev
                                          # export --for rosbag: ROS 1 bags and message types
