@@ -90,8 +90,9 @@ std::vector<radio_model::AccessPoint> apply_access_point_changes(
         aps.erase(it);
         break;
       case AccessPointChangeKind::kMoved: {
-        // Moved within its level: z above the floor of the storey it stands on.
-        double floor_m = 0.0;
+        // Moved within its level: z above the floor of the storey it stands on (the highest
+        // at or below it; storeys are lowest first, and a basement's elevation is negative).
+        double floor_m = world.storeys.empty() ? 0.0 : world.storeys.front().elevation_m;
         for (const Storey& storey : world.storeys)
           if (storey.elevation_m <= it->position_m.z())
             floor_m = std::max(floor_m, storey.elevation_m);

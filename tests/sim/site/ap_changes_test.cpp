@@ -161,5 +161,30 @@ TEST(ApChanges, AResolvedSceneKeepsItsSessionAndChanges) {
   EXPECT_EQ(resolved_scene_yaml(no_session).find("changes"), std::string::npos);
 }
 
+// A moved AP stays on its level: its z is above that level's floor, a basement's included.
+TEST(ApChanges, AMovedApKeepsItsLevelsFloorBelowGround) {
+  const std::string yaml = R"(version: 1
+levels:
+  - {id: basement, elevation_m: -3.1}
+nodes:
+  - {id: A, position_m: [0, 0]}
+  - {id: B, position_m: [24, 0]}
+corridors:
+  - {id: ab, from: A, to: B}
+access_points:
+  placement: explicit
+  list: [{position_m: [4, 0, 2.5]}]
+  changes: [{session: 1, change: moved, ap: 0, position_m: [20, 0, 2.0]}]
+route:
+  nodes: [A, B]
+)";
+  Scene scene = load_scene_yaml(yaml, "basement.yaml");
+  EXPECT_NEAR(Site(scene).access_points().front().position_m.z(), -3.1 + 2.5, 1e-9);
+  scene.session = 1;
+  const Eigen::Vector3d moved = Site(scene).access_points().front().position_m;
+  EXPECT_NEAR(moved.x(), 20.0, 1e-9);
+  EXPECT_NEAR(moved.z(), -3.1 + 2.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace wifislam::sim
