@@ -1,7 +1,7 @@
 #pragma once
 // A file another program wrote, checked before anything of ours reads it: it must lie below a
 // folder with no symbolic link anywhere on its path (the folder itself included), and be a regular
-// file. An external system's declared outputs are read this way (peers/external_outputs.hpp): a
+// file. An external system's declared outputs are read this way (interop/external_outputs.hpp): a
 // link to /etc/passwd or to the dataset's ground truth must not be imported as the system's
 // output. Read it by its path only while nothing can change it (the program has ended).
 

@@ -41,7 +41,7 @@ inline constexpr const char* kWifiClusters = "wifi_clusters.csv";
 inline constexpr const char* kTiming = "timing.json";
 inline constexpr const char* kRun = "run.json";
 
-/// run.json's "frontend" of a run made by an external program (peers/external_system.hpp):
+/// run.json's "frontend" of a run made by an external program (interop/external_system.hpp):
 /// "external:<system name>". Such a run writes only the files its system declares.
 inline constexpr const char* kExternalFrontendPrefix = "external:";
 

@@ -16,7 +16,7 @@
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
 #include "eval/run_divergence.hpp"
-#include "peers/external_run.hpp"
+#include "interop/external_run.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "study/front_end_choice.hpp"
 #include "study/streamed_runs.hpp"
@@ -373,7 +373,7 @@ struct RunJob {
 /// that reads no Wi-Fi (its system file says so; resolving it here also refuses a missing or
 /// malformed system file before any dataset is generated).
 std::vector<bool> variants_of(const slam::SlamOptions& o) {
-  if (peers::is_external_frontend(o.frontend) && !peers::resolve_external_system(o.frontend).wifi) {
+  if (interop::is_external_frontend(o.frontend) && !interop::resolve_external_system(o.frontend).wifi) {
     return {false};
   }
   return {false, true};
@@ -403,7 +403,7 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
   std::vector<std::size_t> run_job_of;
   bool any_external = false;
   for (std::size_t j = first; j < jobs.size(); ++j) {
-    if (peers::is_external_frontend(jobs[j].slam.frontend)) {
+    if (interop::is_external_frontend(jobs[j].slam.frontend)) {
       any_external = true;
       continue;
     }
@@ -486,11 +486,11 @@ void evaluate_job(const RunJob& job, const ComparisonOptions& options,
 void run_external_job(const RunJob& job, const ComparisonOptions& options,
                       const std::filesystem::path& out_dir, ComparisonCase& c,
                       const std::function<void(const std::string&)>& progress) {
-  peers::ExternalRunRequest request = peers::external_run_request(
+  interop::ExternalRunRequest request = interop::external_run_request(
       job.slam.frontend, c.wifi, out_dir / job.dataset, out_dir / c.run_dir);
   request.seed = job.slam.seed;
   request.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}};
-  const peers::ExternalRunResult result = peers::run_external_system(request);
+  const interop::ExternalRunResult result = interop::run_external_system(request);
   c.status = result.status;
   if (result.ok) {
     try {
@@ -516,7 +516,7 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
 void run_job(const RunJob& job, const ComparisonOptions& options,
              const std::filesystem::path& out_dir, ComparisonCase& c,
              const std::function<void(const std::string&)>& progress) {
-  if (peers::is_external_frontend(job.slam.frontend)) {
+  if (interop::is_external_frontend(job.slam.frontend)) {
     run_external_job(job, options, out_dir, c, progress);
     return;
   }
@@ -533,7 +533,7 @@ std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& 
                                              const std::filesystem::path& out_dir) {
   std::vector<PairDivergence> out;
   for (const ComparisonCase& w : cases) {
-    if (!w.wifi || peers::is_external_frontend(w.evaluation.frontend) || w.status != "ok") continue;
+    if (!w.wifi || interop::is_external_frontend(w.evaluation.frontend) || w.status != "ok") continue;
     for (const ComparisonCase& v : cases) {
       if (v.wifi || v.scene != w.scene || v.seed != w.seed || v.setting != w.setting) continue;
       const std::optional<eval::RunDivergence> d =

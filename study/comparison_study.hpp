@@ -79,7 +79,7 @@ struct ComparisonCase {
   std::string setting;  // options set by --set and --sweep ("min_matches=10 ...") or "defaults"
   bool wifi = false;
   std::filesystem::path run_dir;  // relative to the output folder
-  /// "ok", or why an external system's run gave no evaluation (peers/external_run.hpp): such a
+  /// "ok", or why an external system's run gave no evaluation (interop/external_run.hpp): such a
   /// case is listed with its status and counts in no table.
   std::string status = "ok";
   eval::RunEvaluation evaluation;

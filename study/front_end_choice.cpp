@@ -7,24 +7,24 @@
 #include <fmt/ranges.h>
 
 #include "core/error.hpp"
-#include "peers/external_system.hpp"
+#include "interop/external_system.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 
 namespace wifislam::study {
 
 std::string system_front_end(const std::string& value) {
   const std::vector<std::string> names = slam::front_end_names();
-  if (peers::is_external_frontend(value) ||
+  if (interop::is_external_frontend(value) ||
       std::find(names.begin(), names.end(), value) != names.end()) {
     return value;
   }
-  return peers::kExternalPrefix + value;
+  return interop::kExternalPrefix + value;
 }
 
 std::optional<std::string> front_end_problem(const std::string& frontend) {
-  if (peers::is_external_frontend(frontend)) {
+  if (interop::is_external_frontend(frontend)) {
     try {
-      peers::resolve_external_system(frontend);
+      interop::resolve_external_system(frontend);
       return std::nullopt;
     } catch (const Error& e) {
       return std::string(e.what());
@@ -34,7 +34,7 @@ std::optional<std::string> front_end_problem(const std::string& frontend) {
   if (std::find(names.begin(), names.end(), frontend) != names.end()) return std::nullopt;
   return fmt::format("unknown front end '{}' (known: {}; or external:NAME|FILE, shipped: {})",
                      frontend, slam::front_end_name_list(),
-                     fmt::join(peers::shipped_system_names(), ", "));
+                     fmt::join(interop::shipped_system_names(), ", "));
 }
 
 }  // namespace wifislam::study

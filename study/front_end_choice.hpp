@@ -1,6 +1,6 @@
 #pragma once
 // Which front ends a comparison or a study may name: ours (slam/frontend/front_end_registry.hpp)
-// and external systems ("external:NAME|FILE", peers/external_system.hpp). Checked before any
+// and external systems ("external:NAME|FILE", interop/external_system.hpp). Checked before any
 // dataset is generated, so a typo or a broken system file costs nothing.
 
 #include <optional>

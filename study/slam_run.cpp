@@ -30,12 +30,12 @@ SlamRunResult run_external_to_folder(const SlamRunRequest& request, bool replace
                      "--max-frames, --fps and --seed apply to our front ends; an external system "
                      "reads the whole dataset (its seed is --set seed=N)");
   }
-  peers::ExternalRunRequest external = peers::external_run_request(
+  interop::ExternalRunRequest external = interop::external_run_request(
       options.frontend, options.wifi.enabled, request.input, request.output);
   external.overwrite = replace;
   external.seed = options.seed;
   external.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", request.input.string()}}}};
-  result.external = peers::run_external_system(external);
+  result.external = interop::run_external_system(external);
   result.external_system_file = external.system.file.string();
   if (!result.external->ok) {
     throw ExternalSystemError(fmt::format(
@@ -52,7 +52,7 @@ SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   const bool replace = check_output_folder({request.output, request.force, {}, {request.input}});
   SlamRunResult result;
   result.run_dir = fs::absolute(request.output).lexically_normal();
-  if (peers::is_external_frontend(request.options.frontend)) {
+  if (interop::is_external_frontend(request.options.frontend)) {
     return run_external_to_folder(request, replace, std::move(result));
   }
   sim::SensorInputOptions input_options;

@@ -2,7 +2,7 @@
 // A SLAM run of a dataset folder or a scene file into a run folder: what `wifislam slam` does,
 // in one place for the command line and the Python module (python/). Our front ends read the
 // input through sim::open_sensor_input; an external system (`external:X`) is run on a dataset
-// folder from its system file (peers/external_run.hpp).
+// folder from its system file (interop/external_run.hpp).
 
 #include <cstdint>
 #include <filesystem>
@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-#include "peers/external_run.hpp"
+#include "interop/external_run.hpp"
 #include "slam/slam_options.hpp"
 #include "slam/system/run_summary.hpp"
 
@@ -33,7 +33,7 @@ struct SlamRunRequest {
 struct SlamRunResult {
   std::filesystem::path run_dir;                     // absolute, normalised
   std::optional<slam::RunSummary> summary;           // our front ends
-  std::optional<peers::ExternalRunResult> external;  // an external system (always ok: see below)
+  std::optional<interop::ExternalRunResult> external;  // an external system (always ok: see below)
   std::string external_system_file;                  // the system file an external run used
 };
 

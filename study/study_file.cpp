@@ -14,7 +14,7 @@
 #include "core/error.hpp"
 #include "core/option_table.hpp"
 #include "core/yaml_document.hpp"
-#include "peers/external_system.hpp"
+#include "interop/external_system.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/slam_options.hpp"
@@ -155,12 +155,12 @@ void read_scene_set(const Reader& r, const YAML::Node& set, StudyFile& study) {
 
 /// "external:X" with X a relative system file path made relative to `dir`; anything else as is.
 std::string front_end_from(const fs::path& dir, const std::string& frontend) {
-  if (!peers::is_external_frontend(frontend)) return frontend;
-  const std::string x = frontend.substr(std::string(peers::kExternalPrefix).size());
+  if (!interop::is_external_frontend(frontend)) return frontend;
+  const std::string x = frontend.substr(std::string(interop::kExternalPrefix).size());
   const fs::path file(x);
   const bool is_path = x.find('/') != std::string::npos || file.extension() == ".yaml";
   if (!is_path || file.is_absolute()) return frontend;
-  return std::string(peers::kExternalPrefix) + (dir / file).lexically_normal().string();
+  return std::string(interop::kExternalPrefix) + (dir / file).lexically_normal().string();
 }
 
 StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Node& values,

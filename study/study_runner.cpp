@@ -13,7 +13,7 @@
 #include "core/wall_clock.hpp"
 #include "core/worker_pool.hpp"
 #include "core/yaml_document.hpp"
-#include "peers/external_system.hpp"
+#include "interop/external_system.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
@@ -105,11 +105,11 @@ void check_cases(const StudyFile& study) {
 }
 
 bool runs_external_system(const StudyFile& study) {
-  if (peers::is_external_frontend(study.slam.frontend)) return true;
+  if (interop::is_external_frontend(study.slam.frontend)) return true;
   for (const StudyAxis& axis : study.axes) {
     for (const std::string& v : axis.values) {
       if ((axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) &&
-          peers::is_external_frontend(axis.kind == AxisKind::kSystem ? system_front_end(v) : v)) {
+          interop::is_external_frontend(axis.kind == AxisKind::kSystem ? system_front_end(v) : v)) {
         return true;
       }
     }

@@ -57,7 +57,7 @@ void check_cases(const StudyFile& study);
 /// "status": in a study that runs an external system, the first metric column: "ok", or why the
 /// run gave no evaluation (its metrics are then NULL).
 inline constexpr const char* kStatusColumn = "status";
-/// Whether any case of `study` runs an external system (peers/external_system.hpp).
+/// Whether any case of `study` runs an external system (interop/external_system.hpp).
 bool runs_external_system(const StudyFile& study);
 std::vector<std::string> metric_columns(const StudyFile& study);
 std::vector<std::string> timing_columns(StudyLevel level);

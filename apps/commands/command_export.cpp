@@ -1,6 +1,6 @@
 // `wifislam export <dataset> --for rtabmap|orbslam2|euroc|kapture|rosbag -o <dir>`: lay a dataset
 // out the way another SLAM system's own dataset tool reads one, with links to the dataset's images
-// (peers/).
+// (interop/).
 #include <memory>
 #include <string>
 
@@ -8,7 +8,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/output_folder.hpp"
-#include "peers/peer_export.hpp"
+#include "interop/peer_export.hpp"
 
 namespace {
 
@@ -24,12 +24,12 @@ struct ExportArgs {
 void run_export(const ExportArgs& args) {
   using namespace wifislam;
   const bool replace = check_output_folder({args.output, args.force, {}, {args.dataset}});
-  peers::PeerExportOptions options;
-  options.peer = *peers::peer_from_string(args.peer);  // CLI11 checked the name
+  interop::PeerExportOptions options;
+  options.peer = *interop::peer_from_string(args.peer);  // CLI11 checked the name
   options.verify_checksums = !args.no_verify;
   options.overwrite = replace;
-  const peers::PeerExportSummary summary =
-      peers::export_for_peer(args.dataset, args.output, options);
+  const interop::PeerExportSummary summary =
+      interop::export_for_peer(args.dataset, args.output, options);
   if (!args.quiet) fmt::print("{}", summary.full_report());
   for (const std::string& w : summary.warnings) fmt::print(stderr, "wifislam: warning: {}\n", w);
 }
@@ -100,7 +100,7 @@ WIFISLAM_COMMAND(export, 58) {
   app->add_option("dataset", args->dataset, "Dataset folder")->required();
   app->add_option("--for", args->peer, "The peer whose dataset tool reads the export")
       ->required()
-      ->check(CLI::IsMember(wifislam::peers::peer_names()));
+      ->check(CLI::IsMember(wifislam::interop::peer_names()));
   app->add_option("-o,--output", args->output, "Folder to create")->required();
   app->add_flag("--force", args->force,
                 "Replace the output folder if it holds this tool's output (a previous export,\n"

@@ -12,7 +12,7 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
-#include "peers/external_run.hpp"
+#include "interop/external_run.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/slam_options.hpp"
 #include "study/slam_run.hpp"
@@ -52,7 +52,7 @@ void run(const SlamArgs& args) {
   };
   const study::SlamRunResult result = study::run_slam_to_folder(request);
   if (result.external) {
-    const peers::ExternalRunResult& external = *result.external;
+    const interop::ExternalRunResult& external = *result.external;
     fmt::print("{}: {}, {:.1f} s wall-clock, {:.1f} s CPU\n", request.options.frontend,
                external.status, external.process.wall_s, external.process.cpu_s);
   } else {
@@ -78,7 +78,7 @@ WIFISLAM_COMMAND(slam, 60) {
                       wifislam::slam::front_end_name_list() +
                       "), or external:NAME|FILE, another program run from its system file\n"
                       "on a dataset folder (shipped: " +
-                      fmt::format("{}", fmt::join(wifislam::peers::shipped_system_names(), ", ")) +
+                      fmt::format("{}", fmt::join(wifislam::interop::shipped_system_names(), ", ")) +
                       "; docs/external_systems.md)")
       ->capture_default_str();
   app->add_flag(

@@ -1,4 +1,4 @@
-// `wifislam export --for euroc|kapture` (rosbag: tests/peers/rosbag_export_test.py), read back by
+// `wifislam export --for euroc|kapture` (rosbag: tests/interop/rosbag_export_test.py), read back by
 // each format's documented rules (neither has a reader Debian packages): EuRoC's ASL folder
 // (data.csv headers and nanosecond stamps, links to the dataset's own images, imu0 equal to
 // imu.csv, the ground truth equal to imu_groundtruth.csv, sensor.yaml's T_BS the inverse of

@@ -1,5 +1,5 @@
 // An external system is contained (issue 44): nothing it starts outlives its run, whether the run
-// ends by itself, or wifislam is stopped by SIGINT, SIGTERM or SIGKILL (peers/process_runner.hpp:
+// ends by itself, or wifislam is stopped by SIGINT, SIGTERM or SIGKILL (interop/process_runner.hpp:
 // a supervisor that is a child subreaper and hears wifislam's death); its declared outputs are
 // never followed out of its folder by a symbolic link; what it does around its folder ends in a
 // failed run (exit 5, a run folder, run.json naming paths that exist), never an internal error;

@@ -1,4 +1,4 @@
-// External systems (peers/external_system.hpp) run as a user runs them: the shipped OpenCV RGB-D
+// External systems (interop/external_system.hpp) run as a user runs them: the shipped OpenCV RGB-D
 // odometry (a real third-party program, python3-opencv) through `compare` beside our front end,
 // scored with a finite ATE and no Wi-Fi variant; a broken program as a failed row, never a crash;
 // this binary's rgbdslam through the contract scoring exactly as the built-in front end; a system

@@ -190,7 +190,7 @@ class TheCheckCanFail(unittest.TestCase):
         self.assertNotIn("slam", table["eval"])
         self.assertIn("core", table["slam"])
         self.assertEqual(library_of("radio_model/radio_map.hpp", table), "radio_model")
-        self.assertEqual(library_of("peers/rosbag/rosbag_writer.hpp", table), "peers/rosbag")
+        self.assertEqual(library_of("interop/rosbag/rosbag_writer.hpp", table), "interop/rosbag")
 
     def test_public_headers_are_read(self):
         public = layering_table(SOURCE_DIR, "<!-- public headers")
