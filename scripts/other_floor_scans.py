@@ -3,7 +3,7 @@
 
 Usage: scripts/other_floor_scans.py DATASET [DATASET ...]
 
-For each dataset of a scene with `levels:` (docs/real_buildings/README.md, "Several storeys"),
+For each dataset of a scene with `levels:` (docs/results/real_buildings/README.md, "Several storeys"),
 reads scene.yaml (the levels, the route's level, the wall height), access_points.csv (each AP's z
 in the building's frame) and wifi.csv (the scans), and prints one Markdown table row: scans,
 BSSIDs heard per scan (median and mean), how many of them are from APs on other levels (median,

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# docs/devices/README.md's tables: on a twin (c_hall; SCENE=aliasing_ladder for the look-alike
+# docs/results/devices/README.md's tables: on a twin (c_hall; SCENE=aliasing_ladder for the look-alike
 # corridors), the map from session 0 and the
 # queries from session 1 (its own pauses and Wi-Fi draws), for localize's three methods:
 #   - devices: queries read by the reference receiver, by a phone 5 dB low with a 5 dB higher

@@ -3,7 +3,7 @@
 # twins (A, B, C and J hall): visual FAB-MAP, Wi-Fi FAB-MAP (presence words, and the thermometer
 # code) and ours, an image every 2 s, the first 40 % of each route the map (A hall: two laps). Prints each twin's
 # table; the CDFs are <out>/<scene>/cdf.png. Measured on 2 cores: about 1 minute in all
-# (docs/fabmap/README.md has the numbers and reads them against the paper).
+# (docs/results/fabmap/README.md has the numbers and reads them against the paper).
 #
 #   bench/localize/paper_fabmap.sh [build-dir] [output-dir]
 #   (defaults: build/release, a temp dir)

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproduces the table of docs/real_buildings/calibration.md: `wifislam radio calibrate` on the
+# Reproduces the table of docs/results/real_buildings/calibration.md: `wifislam radio calibrate` on the
 # three Royal Holloway rooms (scenes/real/, assets/surveys/royal_holloway/), fitted on each room's
 # train file and evaluated on its test file (different reference points), next to a plain
 # log-distance fit. Prints the markdown table; fits and reports go to $OUT (default: a temporary

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# docs/real_buildings/README.md's pictures and tables: imports the two shipped real plans (and
+# docs/results/real_buildings/README.md's pictures and tables: imports the two shipped real plans (and
 # checks that the result equals the shipped scenes/real/*.yaml), draws their plans and strongest-AP
 # radio maps, and runs greedy-against-random AP placement on each (8 APs). About a minute on one
 # core.

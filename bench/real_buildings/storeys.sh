@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# docs/real_buildings/README.md's "Several storeys" tables and pictures: imports FEI and Westport
+# docs/results/real_buildings/README.md's "Several storeys" tables and pictures: imports FEI and Westport
 # House whole (import --all-levels) with the route on two levels each, generates their scans
 # (--no-images) beside the one-level imports, counts what scans hear from other floors, compares
 # signatures across floors, runs RGBD-SLAM's Wi-Fi clustering on FEI level 1 with and without

@@ -4,7 +4,7 @@
 # cost model, calibrated in slam/frontend/rtabmap/rtabmap_options.hpp): trajectory error, false
 # negative %, loop-closure time (Wi-Fi / vanilla ratio, same run), Wi-Fi overhead; WM size over
 # time is in each run's rtabmap_memory.csv. One run at a time (--jobs 1) so the time columns are
-# comparable. 31 min on 2 idle cores at 3 fps (32 runs; results: docs/rtabmap/README.md).
+# comparable. 31 min on 2 idle cores at 3 fps (32 runs; results: docs/results/rtabmap/README.md).
 #
 #   bench/slam/rtabmap_thresholds.sh [build-dir] [fps] [output-dir]
 #   (defaults: build/release, 3, a temp dir)
