@@ -5,9 +5,17 @@
 // front end
 //   memory       which keyframes may be compared at all (searchable)
 //   candidates   which to verify, in what order, and why (select -> roles)
-//   classify     whether a verified match is a loop closure or an ordinary visual edge
 //   acceptance   which verified hypotheses become edges (an EdgeAcceptance policy)
 // and tells it afterwards what came of them (on_verified).
+//
+// A front end is put together from small parts, one concern each:
+//   CandidatePolicy  memory and candidates, the one concern every front end implements
+//   EdgeAcceptance   an object the front end hands over (slam/frontend/edge_acceptance.hpp)
+//   FrontEndSchedule data: keyframe making, robust kernel, pruning, optimisation schedule
+//   FrontEndEvents   optional: Wi-Fi module attached, a keyframe's verification done
+//   FrontEndOutputs  optional: its own run-folder files and run.json summary
+// Whether a verified match is a loop closure or an ordinary visual edge is the pipeline's
+// LoopRule for every family.
 //
 // The Wi-Fi module is not a kind of front end: a front end *holds* one when the run asks for
 // Wi-Fi (attach_wifi), sees it through wifi(), and calls it at the paper's points. The base class
@@ -16,7 +24,6 @@
 
 #include <filesystem>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,76 +32,50 @@
 #include "core/sensor_stream.hpp"
 #include "core/wifi_scan.hpp"
 #include "slam/frontend/candidate.hpp"
+#include "slam/frontend/candidate_policy.hpp"
 #include "slam/frontend/edge_acceptance.hpp"
-#include "slam/frontend/keyframe_schedule.hpp"
-#include "slam/optimize/edge_pruning.hpp"
-#include "slam/optimize/robust_kernel.hpp"
+#include "slam/frontend/front_end_events.hpp"
+#include "slam/frontend/front_end_outputs.hpp"
+#include "slam/frontend/front_end_schedule.hpp"
 #include "slam/wifi/wifi_module.hpp"
 
 namespace wifislam::slam {
 
-/// How a family's back end copes with wrong edges: a robust kernel in every optimisation and a
-/// pruning schedule at the end of the run. The default is plain least squares, no pruning.
-struct GraphRobustness {
-  RobustKernel kernel;
-  PruningSchedule pruning;
-};
-
-class FrontEnd {
+class FrontEnd : public CandidatePolicy, protected FrontEndEvents, protected FrontEndOutputs {
  public:
-  /// `acceptance`: the front end's policy for turning verified hypotheses into edges.
-  explicit FrontEnd(std::unique_ptr<EdgeAcceptance> acceptance);
-  virtual ~FrontEnd();
+  /// `name`: as given on the command line ("rgbdslam"). `acceptance`: the front end's policy
+  /// for turning verified hypotheses into edges. `schedule`: its keyframe and back-end constants.
+  FrontEnd(std::string name, std::unique_ptr<EdgeAcceptance> acceptance,
+           FrontEndSchedule schedule = {});
+  ~FrontEnd() override;
   FrontEnd(const FrontEnd&) = delete;
   FrontEnd& operator=(const FrontEnd&) = delete;
 
-  /// The front end's name as given on the command line ("rgbdslam").
-  virtual std::string name() const = 0;
+  const std::string& name() const { return name_; }
   /// name(), plus "+wifi" when a Wi-Fi module is attached (for reports).
   std::string label() const;
+  const EdgeAcceptance& acceptance() const { return *acceptance_; }
+  const FrontEndSchedule& schedule() const { return schedule_; }
 
   /// Gives the front end its Wi-Fi module (once, before the first event).
   void attach_wifi(std::unique_ptr<WifiModule> module);
   WifiModule* wifi() { return wifi_.get(); }
   const WifiModule* wifi() const { return wifi_.get(); }
 
-  /// Sensor events other than frames, in stream order, before any later frame is processed.
+  /// Sensor events other than frames, in stream order, before any later frame is processed: the
+  /// Wi-Fi module (when attached) hears them.
   void observe_wifi_scan(const WifiScan& scan);
   void observe_odometry(const OdometryReading& reading);
 
-  /// Memory: whether `keyframe` may be compared with a new keyframe at all (relocalisation
-  /// candidates are filtered by it). Default: every keyframe.
-  virtual bool searchable(KeyframeId /*keyframe*/) const { return true; }
-
   /// Candidates for a new keyframe, in the order they should be verified. Signs the keyframe
-  /// with the Wi-Fi module first (Wi-Fi clustering; unless the front end assigns its own
-  /// places), so every keyframe is clustered and the module's queries speak of it, then asks
-  /// select().
+  /// with the Wi-Fi module first (Wi-Fi clustering), so every keyframe is clustered and the
+  /// module's queries speak of it, then asks select().
   std::vector<Candidate> candidates_for(const SelectionQuery& query);
 
-  /// Edge type of a verified match of `candidate` with the new keyframe. Default: the pipeline's
-  /// loop rule (kLoop when the candidate is far enough back in keyframes and path).
-  virtual EdgeType classify(const Candidate& candidate, KeyframeId keyframe,
-                            const LoopRule& rule) const;
-
-  /// When the family makes keyframes by time and motion (RTAB-Map's nodes); nullopt: the
-  /// pipeline's tracking-quality rule (TrackingOptions).
-  virtual std::optional<KeyframeSchedule> keyframe_schedule() const { return std::nullopt; }
-
-  const EdgeAcceptance& acceptance() const { return *acceptance_; }
-  /// The family's robust kernel and after-run pruning (the shared optimiser applies them).
-  virtual GraphRobustness graph_robustness() const { return {}; }
-  /// Incremental optimisation schedule: besides after every keyframe that brought a loop closure
-  /// (always), after every n-th keyframe (RGBDSLAMv2's `optimizer_skip_step`); 0: only after loop
-  /// closures.
-  virtual int optimise_every_keyframes() const { return 0; }
-  /// How an incremental optimisation stops: 0, after the pipeline's fixed iteration budget
-  /// (PoseGraphOptions::incremental_max_iterations); > 0, in rounds until chi^2 improves by less
-  /// than this fraction (RGBDSLAMv2's schedule: slam/optimize/pose_graph_optimizer.hpp).
-  virtual double optimisation_convergence() const { return 0.0; }
-
   /// Called once per new keyframe after its hypotheses were accepted or not. Runs Wi-Fi cluster
-  /// management for it (unless the front end assigns its own places), then after_verification().
+  /// management for it, then after_verification(). The keyframes it counts as connected are its
+  /// visual and loop edges (paper, "General approach"); for the ORB-SLAM family these are also
+  /// its covisible keyframes, since covisibility here is weighted by those edges' inliers.
   void on_verified(const VerificationReport& report);
 
   /// Extra files for the run folder (wifi_clusters.csv, the front end's own) and the front end's
@@ -102,27 +83,10 @@ class FrontEnd {
   void write_outputs(const std::filesystem::path& run_dir) const;
   nlohmann::json summary() const;
 
- protected:
-  /// The front end's candidate selection (memory and candidate policy) for a new keyframe.
-  virtual std::vector<Candidate> select(const SelectionQuery& query) = 0;
-  /// True for a front end whose places are not the pipeline's keyframes (RTAB-Map's nodes): it
-  /// signs and assigns its own places, and the base class leaves the module alone.
-  virtual bool assigns_wifi_clusters_itself() const { return false; }
-  /// The keyframes a verified keyframe counts as connected to for cluster management. Default:
-  /// its visual and loop edges (paper, "General approach"); an ORB-SLAM-style front end adds its
-  /// covisible keyframes (paper, "ORB-SLAM", "Cluster Management").
-  virtual std::vector<KeyframeId> wifi_connections(const VerificationReport& report) const {
-    return report.visually_connected();
-  }
-  /// Called once when attach_wifi() gave the front end its module (e.g. to subscribe to it).
-  virtual void on_wifi_attached() {}
-  virtual void on_odometry(const OdometryReading& /*reading*/) {}
-  virtual void after_verification(const VerificationReport& /*report*/) {}
-  virtual void write_own_outputs(const std::filesystem::path& /*run_dir*/) const {}
-  virtual nlohmann::json own_summary() const;
-
  private:
+  std::string name_;
   std::unique_ptr<EdgeAcceptance> acceptance_;
+  FrontEndSchedule schedule_;
   std::unique_ptr<WifiModule> wifi_;
 };
 

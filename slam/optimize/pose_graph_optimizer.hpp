@@ -34,7 +34,7 @@ struct OptimisationSummary {
 };
 
 /// Optimises the poses of `graph` in place, with node `fixed_node` held constant. The robust
-/// kernel is the front end's choice (FrontEnd::graph_robustness).
+/// kernel is the front end's choice (FrontEndSchedule::robustness).
 ///
 /// `convergence` 0: one solve of at most `max_iterations` Levenberg-Marquardt iterations (Ceres'
 /// own tolerances may stop it sooner). `convergence` > 0: RGBDSLAMv2's schedule

@@ -34,8 +34,8 @@ SlamSystem::SlamSystem(const SlamOptions& options, const StreamInfo& stream)
   context.stream_has_wifi = stream_.has_wifi;
   context.stream_has_odometry = stream_.has_odometry;
   front_end_ = make_front_end(context);
-  robustness_ = front_end_->graph_robustness();
-  keyframe_schedule_ = front_end_->keyframe_schedule();
+  robustness_ = front_end_->schedule().robustness;
+  keyframe_schedule_ = front_end_->schedule().keyframes;
 }
 
 SlamSystem::~SlamSystem() = default;
@@ -242,7 +242,8 @@ SlamSystem::Verification SlamSystem::verify_candidates(
                 to_string(candidate.role));
     ComparisonOutcome outcome{candidate, t.accepted, false, t.inliers, EdgeType::kVisual};
     if (t.accepted) {
-      outcome.edge_type = front_end_->classify(candidate, id, loop_rule_);
+      outcome.edge_type =
+          loop_rule_.is_loop(candidate.keyframe, id) ? EdgeType::kLoop : EdgeType::kVisual;
       v.outcome_of_hypothesis.push_back(v.report.comparisons.size());
       v.hypotheses.push_back({candidate, t, outcome.edge_type});
     }
@@ -331,12 +332,12 @@ void SlamSystem::attach_if_unconnected(KeyframeId id, KeyframeId previous,
 }
 
 void SlamSystem::optimise_if_due(KeyframeId id, bool loop_found) {
-  const int every = front_end_->optimise_every_keyframes();
+  const int every = front_end_->schedule().optimise_every_keyframes;
   // Every n-th keyframe after the first (a graph of one node has nothing to optimise).
   const bool scheduled = every > 0 && id > 0 && id % every == 0;
   if ((loop_found || scheduled) && options_.graph.incremental_max_iterations > 0) {
     ScopedTimer timer(instrumentation_, module::kOptimisation);
-    const double convergence = front_end_->optimisation_convergence();
+    const double convergence = front_end_->schedule().optimisation_convergence;
     // Rounds until converged are capped by the final optimisation's budget instead.
     optimise(convergence > 0.0 ? options_.graph.max_iterations
                                : options_.graph.incremental_max_iterations,

@@ -189,8 +189,8 @@ TEST(RgbdslamEndToEnd, OptimizerSkipStepOptimisesAfterEveryNthKeyframe) {
 /// qualifying keyframe of the similar Wi-Fi clusters, only the best loop hypothesis accepted.
 class WifiOnlyFrontEnd final : public slam::FrontEnd {
  public:
-  WifiOnlyFrontEnd() : FrontEnd(std::make_unique<slam::AcceptBestLoopHypothesis>()) {}
-  std::string name() const override { return "wifi_only_test"; }
+  WifiOnlyFrontEnd()
+      : FrontEnd("wifi_only_test", std::make_unique<slam::AcceptBestLoopHypothesis>()) {}
   std::vector<slam::Candidate> select(const slam::SelectionQuery& query) override {
     std::vector<slam::Candidate> out;
     if (query.keyframe >= 2) out.push_back({query.keyframe - 2, slam::CandidateRole::kPredecessor});

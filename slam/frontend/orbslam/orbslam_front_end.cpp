@@ -23,7 +23,7 @@ double elapsed_ms(std::chrono::steady_clock::time_point since) {
 }  // namespace
 
 OrbslamFrontEnd::OrbslamFrontEnd(const OrbslamOptions& options)
-    : FrontEnd(std::make_unique<AcceptBestLoopHypothesis>()),
+    : FrontEnd("orbslam", std::make_unique<AcceptBestLoopHypothesis>()),
       options_(options),
       vocabulary_(bow::load_vocabulary(options.vocabulary)),
       covisibility_(options.covisibility_min_weight),

@@ -75,7 +75,6 @@ class OrbslamFrontEnd final : public FrontEnd {
  public:
   explicit OrbslamFrontEnd(const OrbslamOptions& options);
 
-  std::string name() const override { return "orbslam"; }
   std::vector<Candidate> select(const SelectionQuery& query) override;
 
   const OrbslamOptions& options() const { return options_; }

@@ -53,8 +53,25 @@ std::vector<KeyframeId> sample_weighted_without_replacement(const std::vector<Ke
   return out;
 }
 
+namespace {
+
+/// RGBDSLAMv2's back end: a robust kernel on every edge in every optimisation, pruning by chi^2
+/// after the run, an optimisation every `optimizer_skip_step` keyframes until converged.
+FrontEndSchedule rgbdslam_schedule(const RgbdslamOptions& options) {
+  FrontEndSchedule schedule;
+  schedule.robustness.kernel.kind = options.robust_kernel;
+  schedule.robustness.kernel.width_chi2 = options.robust_kernel_chi2;
+  schedule.robustness.kernel.every_edge = true;
+  schedule.robustness.pruning.chi2_thresholds = options.prune_chi2;
+  schedule.optimise_every_keyframes = options.optimizer_skip_step;
+  schedule.optimisation_convergence = options.optimizer_convergence;
+  return schedule;
+}
+
+}  // namespace
+
 RgbdslamFrontEnd::RgbdslamFrontEnd(const RgbdslamOptions& options, std::uint64_t seed)
-    : FrontEnd(std::make_unique<AcceptAllHypotheses>()),
+    : FrontEnd("rgbdslam", std::make_unique<AcceptAllHypotheses>(), rgbdslam_schedule(options)),
       options_(options),
       wifi_long_term_candidates_(options.wifi_long_term_candidates < 0
                                      ? options.min_sampled_candidates
@@ -164,15 +181,6 @@ std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
   std::vector<KeyframeId> out;
   for (std::size_t i = 0; i < budget; ++i) out.push_back(ranked[i].keyframe);
   return out;
-}
-
-GraphRobustness RgbdslamFrontEnd::graph_robustness() const {
-  GraphRobustness robustness;
-  robustness.kernel.kind = options_.robust_kernel;
-  robustness.kernel.width_chi2 = options_.robust_kernel_chi2;
-  robustness.kernel.every_edge = true;
-  robustness.pruning.chi2_thresholds = options_.prune_chi2;
-  return robustness;
 }
 
 nlohmann::json RgbdslamFrontEnd::own_summary() const {

@@ -39,11 +39,7 @@ class RgbdslamFrontEnd final : public FrontEnd {
  public:
   RgbdslamFrontEnd(const RgbdslamOptions& options, std::uint64_t seed);
 
-  std::string name() const override { return "rgbdslam"; }
   std::vector<Candidate> select(const SelectionQuery& query) override;
-  GraphRobustness graph_robustness() const override;
-  int optimise_every_keyframes() const override { return options_.optimizer_skip_step; }
-  double optimisation_convergence() const override { return options_.optimizer_convergence; }
 
   const RgbdslamOptions& options() const { return options_; }
 

@@ -28,21 +28,31 @@ double thread_cpu_ms() {
 
 }  // namespace
 
+namespace {
+
+/// Nodes as RTAB-Map makes them: Rtabmap/DetectionRate, RGBD/LinearUpdate, RGBD/AngularUpdate.
+FrontEndSchedule rtabmap_schedule(const RtabmapOptions& options) {
+  FrontEndSchedule schedule;
+  schedule.keyframes =
+      KeyframeSchedule{options.detection_rate_hz > 0 ? 1.0 / options.detection_rate_hz : 0.0,
+                       options.linear_update_m, options.angular_update_rad};
+  return schedule;
+}
+
+}  // namespace
+
 RtabmapFrontEnd::RtabmapFrontEnd(const RtabmapOptions& options,
                                  const PoseGraphOptions& graph_options)
-    : FrontEnd(std::make_unique<AcceptGraphConsistentHypotheses>(
-          std::make_unique<AcceptBestLoopHypothesis>(), options.optimize_max_error, graph_options,
-          graph_options.incremental_max_iterations)),
+    : FrontEnd("rtabmap",
+               std::make_unique<AcceptGraphConsistentHypotheses>(
+                   std::make_unique<AcceptBestLoopHypothesis>(), options.optimize_max_error,
+                   graph_options, graph_options.incremental_max_iterations),
+               rtabmap_schedule(options)),
       options_(options),
       vocabulary_(options.nndr_ratio),
       memory_(options.stm_size),
       filter_(rtabmap::parse_prediction_lc("bayes_prediction_lc", options.prediction_lc),
               options.virtual_place_prior) {}
-
-std::optional<KeyframeSchedule> RtabmapFrontEnd::keyframe_schedule() const {
-  return KeyframeSchedule{options_.detection_rate_hz > 0 ? 1.0 / options_.detection_rate_hz : 0.0,
-                          options_.linear_update_m, options_.angular_update_rad};
-}
 
 bool RtabmapFrontEnd::searchable(KeyframeId keyframe) const {
   const rtabmap::MemoryPlace place = memory_.place(keyframe);

@@ -119,11 +119,8 @@ class RtabmapFrontEnd final : public FrontEnd {
  public:
   RtabmapFrontEnd(const RtabmapOptions& options, const PoseGraphOptions& graph_options);
 
-  std::string name() const override { return "rtabmap"; }
   /// STM and WM nodes may be compared (STM: predecessors, relocalisation); LTM nodes may not.
   bool searchable(KeyframeId keyframe) const override;
-  /// Nodes as RTAB-Map makes them: Rtabmap/DetectionRate, RGBD/LinearUpdate, RGBD/AngularUpdate.
-  std::optional<KeyframeSchedule> keyframe_schedule() const override;
   std::vector<Candidate> select(const SelectionQuery& query) override;
 
   const RtabmapOptions& options() const { return options_; }

@@ -140,8 +140,8 @@ TEST(RgbdslamSelection, FirstKeyframesGetWhatExists) {
 /// A front end defined outside the library: the seam admits it without touching the pipeline.
 class EveryKeyframeSelector : public FrontEnd {
  public:
-  EveryKeyframeSelector() : FrontEnd(std::make_unique<AcceptAllHypotheses>()) {}
-  std::string name() const override { return "every_keyframe_test"; }
+  EveryKeyframeSelector()
+      : FrontEnd("every_keyframe_test", std::make_unique<AcceptAllHypotheses>()) {}
   std::vector<Candidate> select(const SelectionQuery& q) override {
     std::vector<Candidate> out;
     for (KeyframeId k = 0; k < q.keyframe; ++k) out.push_back({k, CandidateRole::kLongTerm});

@@ -101,7 +101,7 @@ TEST(EdgePruning, RgbdslamScheduleRemovesAPlantedFalseLoopKeepsTrueEdgesAndTheGr
   graph.add_edge({30, 110, EdgeType::kLoop, truth[30].inverse() * truth[70],
                   information(kSigmaM, kSigmaRad), 60});
 
-  const GraphRobustness robustness = RgbdslamFrontEnd({}, 1).graph_robustness();
+  const GraphRobustness robustness = RgbdslamFrontEnd({}, 1).schedule().robustness;
   ASSERT_EQ(robustness.kernel.kind, RobustKernel::Kind::kHuber);
   ASSERT_TRUE(robustness.kernel.every_edge);
   ASSERT_EQ(robustness.pruning.chi2_thresholds.size(), 3u);

@@ -25,8 +25,8 @@ using test::scan_of;
 /// candidate (exhaustive bounded search), only the best loop hypothesis is accepted.
 class BoundedExhaustiveFrontEnd final : public FrontEnd {
  public:
-  BoundedExhaustiveFrontEnd() : FrontEnd(std::make_unique<AcceptBestLoopHypothesis>()) {}
-  std::string name() const override { return "bounded_exhaustive_test"; }
+  BoundedExhaustiveFrontEnd()
+      : FrontEnd("bounded_exhaustive_test", std::make_unique<AcceptBestLoopHypothesis>()) {}
   std::vector<Candidate> select(const SelectionQuery& query) override {
     std::vector<KeyframeId> earlier;
     for (KeyframeId k = 0; k < query.keyframe; ++k) earlier.push_back(k);
