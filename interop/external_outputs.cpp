@@ -245,7 +245,8 @@ ImportedOutputs import_external_outputs(const ExternalSystem& system, const fs::
         (run_dir / run_folder::kKeyframes).string(), keyframes,
         {"keyframes of external system " + system.name, "timestamp tx ty tz qx qy qz qw"});
   }
-  if (!system.loop_closures.empty()) write_file_atomic(run_dir / run_folder::kLoopClosures, closures);
+  if (!system.loop_closures.empty())
+    write_file_atomic(run_dir / run_folder::kLoopClosures, closures);
   if (!graph.empty()) {
     fs::copy_file(graph, run_dir / run_folder::kGraph);
     imported.graph = true;

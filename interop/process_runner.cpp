@@ -302,8 +302,7 @@ ProcessResult run_process(const ProcessRequest& request) {
   const pid_t supervisor = ::fork();
   if (supervisor == 0) {
     ::close(report_pipe[0]);
-    supervise(request, program.c_str(), argv.data(), in_fd, out_fd, err_fd, report_pipe[1],
-              caller);
+    supervise(request, program.c_str(), argv.data(), in_fd, out_fd, err_fd, report_pipe[1], caller);
   }
   ::close(report_pipe[1]);
   report_pipe[1] = -1;

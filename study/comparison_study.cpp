@@ -373,7 +373,8 @@ struct RunJob {
 /// that reads no Wi-Fi (its system file says so; resolving it here also refuses a missing or
 /// malformed system file before any dataset is generated).
 std::vector<bool> variants_of(const slam::SlamOptions& o) {
-  if (interop::is_external_frontend(o.frontend) && !interop::resolve_external_system(o.frontend).wifi) {
+  if (interop::is_external_frontend(o.frontend) &&
+      !interop::resolve_external_system(o.frontend).wifi) {
     return {false};
   }
   return {false, true};
@@ -533,7 +534,8 @@ std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& 
                                              const std::filesystem::path& out_dir) {
   std::vector<PairDivergence> out;
   for (const ComparisonCase& w : cases) {
-    if (!w.wifi || interop::is_external_frontend(w.evaluation.frontend) || w.status != "ok") continue;
+    if (!w.wifi || interop::is_external_frontend(w.evaluation.frontend) || w.status != "ok")
+      continue;
     for (const ComparisonCase& v : cases) {
       if (v.wifi || v.scene != w.scene || v.seed != w.seed || v.setting != w.setting) continue;
       const std::optional<eval::RunDivergence> d =

@@ -31,10 +31,10 @@ struct SlamRunRequest {
 };
 
 struct SlamRunResult {
-  std::filesystem::path run_dir;                     // absolute, normalised
-  std::optional<slam::RunSummary> summary;           // our front ends
+  std::filesystem::path run_dir;                       // absolute, normalised
+  std::optional<slam::RunSummary> summary;             // our front ends
   std::optional<interop::ExternalRunResult> external;  // an external system (always ok: see below)
-  std::string external_system_file;                  // the system file an external run used
+  std::string external_system_file;                    // the system file an external run used
 };
 
 /// Runs and writes the run folder. Throws the option, input and output errors the CLI reports

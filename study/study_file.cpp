@@ -183,8 +183,8 @@ StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Nod
   }
   if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
     for (const std::string& v : axis.values) {
-      const std::string frontend = front_end_from(
-          study_dir, axis.kind == AxisKind::kSystem ? system_front_end(v) : v);
+      const std::string frontend =
+          front_end_from(study_dir, axis.kind == AxisKind::kSystem ? system_front_end(v) : v);
       if (const std::optional<std::string> problem = front_end_problem(frontend)) {
         r.fail(values, key_path, *problem);
       }

@@ -73,13 +73,14 @@ WIFISLAM_COMMAND(slam, 60) {
       "loop_closures.csv, timing.json with per-role comparison counters, run.json, and\n"
       "wifi_clusters.csv with --wifi; layout in core/run_format.hpp).");
   app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
-  app->add_option("--frontend", args->frontend,
-                  "SLAM front end: memory, loop-closure candidates and acceptance (" +
-                      wifislam::slam::front_end_name_list() +
-                      "), or external:NAME|FILE, another program run from its system file\n"
-                      "on a dataset folder (shipped: " +
-                      fmt::format("{}", fmt::join(wifislam::interop::shipped_system_names(), ", ")) +
-                      "; docs/external_systems.md)")
+  app->add_option(
+         "--frontend", args->frontend,
+         "SLAM front end: memory, loop-closure candidates and acceptance (" +
+             wifislam::slam::front_end_name_list() +
+             "), or external:NAME|FILE, another program run from its system file\n"
+             "on a dataset folder (shipped: " +
+             fmt::format("{}", fmt::join(wifislam::interop::shipped_system_names(), ", ")) +
+             "; docs/external_systems.md)")
       ->capture_default_str();
   app->add_flag(
       "--wifi", args->wifi,

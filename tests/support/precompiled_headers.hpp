@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include <Eigen/Core>
-#include <Eigen/Geometry>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>

@@ -208,9 +208,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The shipped Royal Holloway rooms calibrate as docs/results/real_buildings/calibration.md reports: fitted
-// on train, the model predicts the held-out points at least as well as a plain log-distance fit
-// (within 0.05 dB rms), and its N is the documented one.
+// The shipped Royal Holloway rooms calibrate as docs/results/real_buildings/calibration.md reports:
+// fitted on train, the model predicts the held-out points at least as well as a plain log-distance
+// fit (within 0.05 dB rms), and its N is the documented one.
 TEST(CalibrateRoyalHolloway, ShippedRoomsFitAndPredictHeldOutPoints) {
   const fs::path root = fs::path(WIFISLAM_SCENES_DIR).parent_path();
   const fs::path data = root / "assets" / "surveys" / "royal_holloway";
