@@ -53,7 +53,7 @@ struct SlamOptions {
   /// slam/frontend/front_end_registry.hpp.
   std::string frontend = "rgbdslam";
   /// The Wi-Fi module, held by whichever front end runs (off = the vanilla front end).
-  WifiOptions wifi;
+  wifi::WifiOptions wifi;
   /// Seed of every random draw of the run (e.g. RGBD-SLAM's random keyframes).
   std::uint64_t seed = 1;
   FeatureOptions features;
@@ -144,9 +144,10 @@ void visit_options(V& v, SlamOptions& o) {
       "rgbdslam: each incremental optimisation runs rounds of 5 iterations until chi^2 improves "
       "by less than this fraction (RGBDSLAMv2's optimizer_iterations 0.01; capped at "
       "optimizer_iterations); 0 = at most optimizer_incremental_iterations");
-  v.number_list("prune_chi2", o.rgbdslam.prune_chi2,
-         "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
-         "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge");
+  v.number_list(
+      "prune_chi2", o.rgbdslam.prune_chi2,
+      "rgbdslam: after-run pruning stages, chi^2 thresholds (RGBDSLAMv2's 5,1,0.25 rescaled to "
+      "calibrated information: last = chi^2(6) 99.9 %); none = keep every edge");
   v.number("detection_rate_hz", o.rtabmap.detection_rate_hz,
            "rtabmap: Rtabmap/DetectionRate, most nodes per second; 0 = no time limit (1)");
   v.number("linear_update_m", o.rtabmap.linear_update_m,

@@ -30,16 +30,16 @@ struct PauseReadings {
 
 /// The pauses of a placement: each pause's signature restricted to the chosen candidates.
 std::vector<PauseSample> restrict_to(const std::vector<PauseReadings>& pauses,
-                                     const std::vector<slam::AccessPointKey>& keys,
+                                     const std::vector<slam::wifi::AccessPointKey>& keys,
                                      const std::vector<bool>& chosen) {
   std::vector<PauseSample> out;
   out.reserve(pauses.size());
   for (const PauseReadings& p : pauses) {
-    std::vector<slam::ApStrength> strengths;
+    std::vector<slam::wifi::ApStrength> strengths;
     for (const auto& [candidate, rssi] : p.rssi_dbm)
       if (chosen[static_cast<std::size_t>(candidate)])
         strengths.push_back({keys[static_cast<std::size_t>(candidate)], rssi});
-    out.push_back({p.position_m, slam::WifiSignature(std::move(strengths))});
+    out.push_back({p.position_m, slam::wifi::WifiSignature(std::move(strengths))});
   }
   return out;
 }
@@ -81,7 +81,7 @@ std::vector<Eigen::Vector2d> candidate_spots(const sim::Site& site,
 /// building and route (`keys` receives each candidate's signature key, in candidate order).
 std::vector<PauseReadings> simulate_candidates(const sim::Site& site, const PlacementResult& result,
                                                const PlacementOptions& options,
-                                               std::vector<slam::AccessPointKey>& keys) {
+                                               std::vector<slam::wifi::AccessPointKey>& keys) {
   sim::AccessPoints all = site.scene().access_points;
   all.placement = sim::ApPlacement::kExplicit;
   all.explicit_list.clear();
@@ -94,12 +94,12 @@ std::vector<PauseReadings> simulate_candidates(const sim::Site& site, const Plac
   all.count = static_cast<int>(result.candidates.size());
   const std::vector<PauseSample> every = simulate_pauses(
       std::make_shared<const sim::Site>(site.with_access_points(all)), options.wifi, &keys);
-  std::map<slam::AccessPointKey, int> candidate_of;
+  std::map<slam::wifi::AccessPointKey, int> candidate_of;
   for (std::size_t i = 0; i < keys.size(); ++i) candidate_of[keys[i]] = static_cast<int>(i);
   std::vector<PauseReadings> pauses;
   for (const PauseSample& p : every) {
     PauseReadings r{p.position_m, {}};
-    for (const slam::ApStrength& s : p.signature.strengths())
+    for (const slam::wifi::ApStrength& s : p.signature.strengths())
       r.rssi_dbm.emplace_back(candidate_of.at(s.ap), s.rssi_dbm);
     std::sort(r.rssi_dbm.begin(), r.rssi_dbm.end());
     pauses.push_back(std::move(r));
@@ -110,7 +110,7 @@ std::vector<PauseReadings> simulate_candidates(const sim::Site& site, const Plac
 /// The medians of `random_draws` placements of k candidates drawn uniformly without replacement
 /// (stream "study/place/random/<k>/<draw>"), into `step`.
 void random_baseline(const std::vector<PauseReadings>& pauses,
-                     const std::vector<slam::AccessPointKey>& keys, int k,
+                     const std::vector<slam::wifi::AccessPointKey>& keys, int k,
                      const PlacementOptions& options, PlacementStep& step) {
   const std::size_t n = keys.size();
   std::vector<double> error, resolution, far, near;
@@ -140,7 +140,7 @@ void random_baseline(const std::vector<PauseReadings>& pauses,
 
 /// The unchosen candidate whose addition resolves best (lowest index among equals).
 std::pair<int, RadioResolution> best_addition(const std::vector<PauseReadings>& pauses,
-                                              const std::vector<slam::AccessPointKey>& keys,
+                                              const std::vector<slam::wifi::AccessPointKey>& keys,
                                               std::vector<bool>& chosen,
                                               const PlacementOptions& options) {
   int best = -1;
@@ -185,7 +185,7 @@ PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions
     result.candidates.emplace_back(s.x(), s.y(), scene.access_points.height_m);
   progress(
       fmt::format("simulating the route's scans with {} candidate access points", spots.size()));
-  std::vector<slam::AccessPointKey> keys;
+  std::vector<slam::wifi::AccessPointKey> keys;
   const std::vector<PauseReadings> pauses = simulate_candidates(*site, result, options, keys);
 
   // Greedy: add the candidate whose addition resolves best.

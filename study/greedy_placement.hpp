@@ -49,7 +49,7 @@ struct PlacementOptions {
   double candidate_spacing_m = 3.0;  // finer: more candidates, slower, little gain below ~2 m
   int random_draws = 5;              // random placements per count
   std::uint64_t seed = 1;            // of the random baseline only
-  slam::WifiOptions wifi;            // wifi_similarity and the RSSI floor, as the SLAM's
+  slam::wifi::WifiOptions wifi;      // wifi_similarity and the RSSI floor, as the SLAM's
   std::function<void(const std::string&)> on_progress;
 };
 

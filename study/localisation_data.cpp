@@ -54,7 +54,7 @@ class ImageCollector {
   std::int64_t interval_ns_;
   std::optional<std::int64_t> last_ns_;
   slam::OrbFeatureExtractor orb_;
-  slam::PauseSignatureTracker tracker_;
+  slam::wifi::PauseSignatureTracker tracker_;
 };
 
 /// The moving protocol's scans: the same scene scanning every `interval_s` throughout the run,

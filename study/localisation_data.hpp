@@ -32,7 +32,7 @@ struct LocalisationImage {
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // true camera position on the floor
   cv::Mat descriptors;                                   // ORB, one row each
   /// The signature of the last pause before the image (null before the first scan).
-  std::shared_ptr<const slam::WifiSignature> pause_signature;
+  std::shared_ptr<const slam::wifi::WifiSignature> pause_signature;
   /// 0: on the route's level; 1: from the route on another floor joined to the map
   /// (add_other_floor), whose images are all map and never queries.
   int floor = 0;
@@ -66,7 +66,7 @@ struct LocalisationDataOptions {
   int max_keypoints = 1000;
   std::optional<std::uint64_t> seed;  // scenes only: replaces the scene's seed
   bool verify_checksums = true;       // datasets: check manifest.json's SHA-256 sums
-  slam::WifiOptions wifi;             // pause recognition
+  slam::wifi::WifiOptions wifi;       // pause recognition
 };
 
 /// Both protocols simulated from `scene` (images rendered only at the image interval).

@@ -209,12 +209,12 @@ void run_wifi_fabmap(const Context& c, LocalisationResult& out) {
 }
 
 void run_wifi_clusters(const Context& c, const FabMap& fabmap, LocalisationResult& out) {
-  slam::WifiClusterMap clusters(c.options.wifi.similarity, c.options.wifi.floor_dbm);
-  std::map<const slam::WifiSignature*, slam::ClusterId> cluster_of_pause;
-  std::vector<slam::ClusterId> cluster_of_place;  // per map place
+  slam::wifi::WifiClusterMap clusters(c.options.wifi.similarity, c.options.wifi.floor_dbm);
+  std::map<const slam::wifi::WifiSignature*, slam::wifi::ClusterId> cluster_of_pause;
+  std::vector<slam::wifi::ClusterId> cluster_of_place;  // per map place
   for (std::size_t i = 0; i < c.split.map.size(); ++i) {
     const auto& signature = c.data.images[static_cast<std::size_t>(c.split.map[i])].pause_signature;
-    slam::ClusterId id = -1;
+    slam::wifi::ClusterId id = -1;
     if (signature) {
       const auto known = cluster_of_pause.find(signature.get());
       if (known != cluster_of_pause.end()) {
@@ -230,9 +230,9 @@ void run_wifi_clusters(const Context& c, const FabMap& fabmap, LocalisationResul
   for (int q : c.split.queries) {
     const auto start = WallClock::now();
     const auto& signature = c.data.images[static_cast<std::size_t>(q)].pause_signature;
-    std::set<slam::ClusterId> similar;
+    std::set<slam::wifi::ClusterId> similar;
     if (signature) {
-      for (const slam::SimilarCluster& s : clusters.similar_clusters(*signature))
+      for (const slam::wifi::SimilarCluster& s : clusters.similar_clusters(*signature))
         similar.insert(s.cluster);
     }
     std::vector<int> candidates;

@@ -47,7 +47,7 @@ struct LocalisationOptions {
   double map_share = 0.4;  // the paper: the first 40 % of the route is the map
   slam::place::FabMapOptions fabmap;
   WifiWordEncoding wifi_words = WifiWordEncoding::kPresence;
-  slam::WifiOptions wifi;  // similarity and floor of our clusters
+  slam::wifi::WifiOptions wifi;  // similarity and floor of our clusters
 };
 
 struct QueryResult {

@@ -14,8 +14,8 @@
 namespace wifislam::study {
 
 std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
-                                         const slam::WifiOptions& wifi,
-                                         std::vector<slam::AccessPointKey>* ap_keys) {
+                                         const slam::wifi::WifiOptions& wifi,
+                                         std::vector<slam::wifi::AccessPointKey>* ap_keys) {
   sim::GenerateOptions options;
   options.camera = sim::CameraOutput::kNoFrames;  // the pauses need odometry and scans only
   sim::GenerationPipeline pipeline(std::move(site), options);
@@ -24,7 +24,7 @@ std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
     for (const radio_model::AccessPoint& ap : pipeline.site().access_points())
       ap_keys->push_back(ap.base_mac().value);
   }
-  slam::PauseSignatureTracker tracker(wifi);
+  slam::wifi::PauseSignatureTracker tracker(wifi);
   std::vector<PauseSample> out;
   int pause = 0;
   while (auto generated = pipeline.next()) {
@@ -47,7 +47,7 @@ std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
 }
 
 RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
-                                 const slam::WifiOptions& wifi) {
+                                 const slam::wifi::WifiOptions& wifi) {
   RadioResolution r;
   r.pauses = static_cast<int>(pauses.size());
   std::map<int, std::vector<double>> bins;  // 1 m bins of true distance
@@ -58,7 +58,7 @@ RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
     for (std::size_t j = i + 1; j < pauses.size(); ++j) {
       const double d_m = (pauses[i].position_m - pauses[j].position_m).norm();
       const double s =
-          slam::cosine_similarity(pauses[i].signature, pauses[j].signature, wifi.floor_dbm);
+          slam::wifi::cosine_similarity(pauses[i].signature, pauses[j].signature, wifi.floor_dbm);
       const bool similar = s >= wifi.similarity;
       bins[static_cast<int>(d_m)].push_back(s);
       ++r.pairs;
@@ -87,9 +87,9 @@ RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
     r.resolution_m = above_m + t * (below_m - above_m);
   }
 
-  slam::WifiClusterMap clusters(wifi.similarity, wifi.floor_dbm);
+  slam::wifi::WifiClusterMap clusters(wifi.similarity, wifi.floor_dbm);
   for (std::size_t k = 0; k < pauses.size(); ++k) {
-    auto signature = std::make_shared<const slam::WifiSignature>(pauses[k].signature);
+    auto signature = std::make_shared<const slam::wifi::WifiSignature>(pauses[k].signature);
     const auto similar = clusters.similar_clusters(*signature);
     std::vector<slam::KeyframeId> connected;
     if (k > 0) connected.push_back(static_cast<slam::KeyframeId>(k - 1));

@@ -40,15 +40,15 @@ inline constexpr int kMinPairsPerBin = 3;
 
 struct PauseSample {
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();  // true position at the pause's end
-  slam::WifiSignature signature;
+  slam::wifi::WifiSignature signature;
 };
 
 /// The route's pauses with their signatures, simulated in memory on the site (no images).
 /// `ap_keys`, when given, receives each access point's signature key in the site's AP order
 /// (ids 0..n-1).
-std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
-                                         const slam::WifiOptions& wifi,
-                                         std::vector<slam::AccessPointKey>* ap_keys = nullptr);
+std::vector<PauseSample> simulate_pauses(
+    std::shared_ptr<const sim::Site> site, const slam::wifi::WifiOptions& wifi,
+    std::vector<slam::wifi::AccessPointKey>* ap_keys = nullptr);
 
 struct RadioResolution {
   int pauses = 0;
@@ -61,6 +61,6 @@ struct RadioResolution {
 };
 
 RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
-                                 const slam::WifiOptions& wifi);
+                                 const slam::wifi::WifiOptions& wifi);
 
 }  // namespace wifislam::study

@@ -28,7 +28,7 @@ using namespace wifislam::slam;
 
 struct PauseSample {
   Eigen::Vector3d position_m;
-  WifiSignature signature;
+  wifi::WifiSignature signature;
 };
 
 std::vector<PauseSample> pause_samples(const sim::Scene& scene, const std::filesystem::path& tmp) {
@@ -39,7 +39,7 @@ std::vector<PauseSample> pause_samples(const sim::Scene& scene, const std::files
   const std::vector<WifiScan> scans = read_wifi_csv((tmp / "wifi.csv").string());
   const Trajectory truth = read_tum_trajectory((tmp / "groundtruth.txt").string());
   std::vector<PauseSample> out;
-  PauseSignatureTracker tracker(WifiOptions{});
+  wifi::PauseSignatureTracker tracker(wifi::WifiOptions{});
   int pause = 0;
   for (const WifiScan& scan : scans) {
     tracker.observe_scan(scan);
@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
       scenes.push_back(std::filesystem::path(WIFISLAM_SCENES_DIR) / (std::string(name) + ".yaml"));
     }
   }
-  const WifiOptions defaults;
+  const wifi::WifiOptions defaults;
   const auto tmp = std::filesystem::temp_directory_path() / "wifislam_similarity_curve";
   for (const auto& path : scenes) {
     const sim::Scene scene = sim::load_scene_file(path.string());
@@ -84,7 +84,7 @@ int main(int argc, char** argv) {
       for (std::size_t j = i + 1; j < pauses.size(); ++j) {
         const double d = (pauses[i].position_m - pauses[j].position_m).norm();
         const double s =
-            cosine_similarity(pauses[i].signature, pauses[j].signature, defaults.floor_dbm);
+            wifi::cosine_similarity(pauses[i].signature, pauses[j].signature, defaults.floor_dbm);
         bins[std::min(15, static_cast<int>(d / 2.0))].push_back(s);
         const bool similar = s >= defaults.similarity;
         if (d < 4.0) near += 1, near_similar += similar;
@@ -107,11 +107,11 @@ int main(int argc, char** argv) {
 
   // Clustering cost: one query against N representatives of 70 APs (j_hall's count).
   for (int clusters : {10, 100, 1000}) {
-    SignatureSimilarityIndex index(defaults.floor_dbm);
-    std::vector<ApStrength> s;
+    wifi::SignatureSimilarityIndex index(defaults.floor_dbm);
+    std::vector<wifi::ApStrength> s;
     for (int ap = 0; ap < 70; ++ap)
-      s.push_back({static_cast<AccessPointKey>(ap * 16), -60.0 - ap % 30});
-    const WifiSignature signature(s);
+      s.push_back({static_cast<wifi::AccessPointKey>(ap * 16), -60.0 - ap % 30});
+    const wifi::WifiSignature signature(s);
     for (int c = 0; c < clusters; ++c) index.add(signature);
     const int repeats = 2000;
     double sum = 0;

@@ -19,7 +19,7 @@ FrontEnd::~FrontEnd() = default;
 
 std::string FrontEnd::label() const { return name_ + (wifi_ ? "+wifi" : ""); }
 
-void FrontEnd::attach_wifi(std::unique_ptr<WifiModule> module) {
+void FrontEnd::attach_wifi(std::unique_ptr<wifi::WifiModule> module) {
   if (wifi_) throw std::logic_error("FrontEnd: a Wi-Fi module is already attached");
   wifi_ = std::move(module);
   on_wifi_attached();

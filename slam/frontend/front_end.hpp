@@ -58,9 +58,9 @@ class FrontEnd : public CandidatePolicy, protected FrontEndEvents, protected Fro
   const FrontEndSchedule& schedule() const { return schedule_; }
 
   /// Gives the front end its Wi-Fi module (once, before the first event).
-  void attach_wifi(std::unique_ptr<WifiModule> module);
-  WifiModule* wifi() { return wifi_.get(); }
-  const WifiModule* wifi() const { return wifi_.get(); }
+  void attach_wifi(std::unique_ptr<wifi::WifiModule> module);
+  wifi::WifiModule* wifi() { return wifi_.get(); }
+  const wifi::WifiModule* wifi() const { return wifi_.get(); }
 
   /// Sensor events other than frames, in stream order, before any later frame is processed: the
   /// Wi-Fi module (when attached) hears them.
@@ -87,7 +87,7 @@ class FrontEnd : public CandidatePolicy, protected FrontEndEvents, protected Fro
   std::string name_;
   std::unique_ptr<EdgeAcceptance> acceptance_;
   FrontEndSchedule schedule_;
-  std::unique_ptr<WifiModule> wifi_;
+  std::unique_ptr<wifi::WifiModule> wifi_;
 };
 
 }  // namespace wifislam::slam

@@ -77,7 +77,8 @@ std::unique_ptr<FrontEnd> make_front_end(const FrontEndContext& context) {
   }
   std::unique_ptr<FrontEnd> front_end = factory(context);
   if (options.wifi.enabled) {
-    front_end->attach_wifi(std::make_unique<WifiModule>(options.wifi, *context.instrumentation));
+    front_end->attach_wifi(
+        std::make_unique<wifi::WifiModule>(options.wifi, *context.instrumentation));
   }
   return front_end;
 }

@@ -1,6 +1,6 @@
 #include "slam/wifi/pause_signature_tracker.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 void PauseSignatureTracker::observe_odometry(const OdometryReading& reading) {
   base_position_m_ = reading.base_in_odom.translation().head<2>();
@@ -25,4 +25,4 @@ void PauseSignatureTracker::observe_scan(const WifiScan& scan) {
   current_ = std::make_shared<const WifiSignature>(aggregate_scans(pause_scans_));
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -21,7 +21,7 @@
 #include "slam/wifi/wifi_options.hpp"
 #include "slam/wifi/wifi_signature.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 class PauseSignatureTracker {
  public:
@@ -45,4 +45,4 @@ class PauseSignatureTracker {
   int pause_count_ = 0;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

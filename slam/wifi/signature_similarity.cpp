@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 namespace {
 
@@ -74,4 +74,4 @@ Eigen::VectorXd SignatureSimilarityIndex::similarities(const WifiSignature& quer
   return weights_.topLeftCorner(rows_, used_columns) * q;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -12,7 +12,7 @@
 
 #include "slam/wifi/wifi_signature.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 /// Reference form for two signatures (merge over the sorted AP lists).
 double cosine_similarity(const WifiSignature& a, const WifiSignature& b, double floor_dbm);
@@ -41,4 +41,4 @@ class SignatureSimilarityIndex {
   int rows_ = 0;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

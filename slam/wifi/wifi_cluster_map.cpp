@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 WifiClusterMap::WifiClusterMap(double similarity_threshold, double floor_dbm)
     : threshold_(similarity_threshold), representatives_(floor_dbm) {}
@@ -69,4 +69,4 @@ std::string WifiClusterMap::to_csv() const {
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -18,7 +18,7 @@
 #include "slam/wifi/wifi_options.hpp"
 #include "slam/wifi/wifi_signature.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 using ClusterId = int;
 
@@ -65,4 +65,4 @@ class WifiClusterMap {
   std::vector<ClusterId> cluster_of_keyframe_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "core/run_format.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 WifiModule::WifiModule(const WifiOptions& options, Instrumentation& instrumentation)
     : options_(options),
@@ -123,4 +123,4 @@ nlohmann::json WifiModule::summary() const {
           {"wifi_floor_dbm", options_.floor_dbm}};
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -37,7 +37,7 @@
 #include "slam/wifi/wifi_cluster_map.hpp"
 #include "slam/wifi/wifi_options.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 /// A cluster was founded (by `keyframe`, which is also its first member) or `keyframe` joined it.
 struct ClusterEvent {
@@ -111,4 +111,4 @@ class WifiModule {
   std::vector<ClusterListener> listeners_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -2,7 +2,7 @@
 // Options of the Wi-Fi module (paper, "General approach"; docs/frontends.md). Each
 // field says what it trades off; the flat `--set` keys are listed in slam_options.cpp.
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 struct WifiOptions {
   /// Run the front end's Wi-Fi variant (clustering, bounded loop-closure search, cluster
@@ -28,4 +28,4 @@ struct WifiOptions {
   double pause_motion_m = 0.05;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

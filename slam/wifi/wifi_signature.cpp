@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 WifiSignature::WifiSignature(std::vector<ApStrength> strengths) : strengths_(std::move(strengths)) {
   std::sort(strengths_.begin(), strengths_.end(),
@@ -48,4 +48,4 @@ WifiSignature aggregate_scans(std::span<const WifiScan> scans) {
   return WifiSignature(std::move(strengths));
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

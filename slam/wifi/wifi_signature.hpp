@@ -11,7 +11,7 @@
 #include "core/mac_address.hpp"
 #include "core/wifi_scan.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::wifi {
 
 /// One access point: the BSSID with its last nibble cleared.
 using AccessPointKey = std::uint64_t;
@@ -51,4 +51,4 @@ class WifiSignature {
 /// BSSID of the AP like one that heard four; the plain mean keeps every reading equal.)
 WifiSignature aggregate_scans(std::span<const WifiScan> scans);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::wifi

@@ -217,7 +217,7 @@ class GroupRunner {
   /// similarity threshold): the measured side of the paper's cluster counts.
   void write_dataset_facts(const std::shared_ptr<const sim::Site>& site,
                            const sim::GenerateSummary& g, const std::string& group) {
-    const slam::WifiOptions wifi;
+    const slam::wifi::WifiOptions wifi;
     const RadioResolution radio = radio_resolution(simulate_pauses(site, wifi), wifi);
     nlohmann::json facts = {
         {"twin", site->scene().name},

@@ -218,10 +218,10 @@ TEST(RgbdslamEndToEnd, AnotherFrontEndRunsWithTheWifiModule) {
   const slam::SlamSystem& system = *run.system;
   ASSERT_NE(system.front_end().wifi(), nullptr);
   EXPECT_GT(system.front_end().wifi()->pause_count(), 3);
-  const slam::WifiClusterMap& clusters = system.front_end().wifi()->clusters();
+  const slam::wifi::WifiClusterMap& clusters = system.front_end().wifi()->clusters();
   EXPECT_GE(clusters.clusters().size(), 2u);
   std::size_t clustered = 0;
-  for (const slam::WifiCluster& c : clusters.clusters()) clustered += c.keyframes.size();
+  for (const slam::wifi::WifiCluster& c : clusters.clusters()) clustered += c.keyframes.size();
   EXPECT_GT(clustered, system.graph().node_count() / 2);
 
   const slam::Instrumentation& inst = system.instrumentation();

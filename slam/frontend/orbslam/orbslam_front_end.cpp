@@ -38,7 +38,7 @@ OrbslamFrontEnd::OrbslamFrontEnd(const OrbslamOptions& options)
 void OrbslamFrontEnd::on_wifi_attached() {
   // The paper's per-cluster dictionaries: a keyframe enters the index of the cluster cluster
   // management gives it.
-  wifi()->subscribe([this](const ClusterEvent& event) {
+  wifi()->subscribe([this](const wifi::ClusterEvent& event) {
     by_cluster_[event.cluster].add(event.keyframe, bow_.at(event.keyframe));
   });
 }
@@ -51,7 +51,7 @@ std::vector<const bow::KeyframeDatabase*> OrbslamFrontEnd::databases_to_search()
     for (const auto& [cluster, database] : by_cluster_) out.push_back(&database);
     return out;
   }
-  for (const SimilarCluster& similar : wifi()->similar_clusters()) {
+  for (const wifi::SimilarCluster& similar : wifi()->similar_clusters()) {
     const auto it = by_cluster_.find(similar.cluster);
     if (it != by_cluster_.end()) out.push_back(&it->second);
   }

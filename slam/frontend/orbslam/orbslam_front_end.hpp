@@ -67,8 +67,8 @@ struct OrbslamQueryRecord {
   int consistent = 0;  // after temporal consistency
   int bow_passed = 0;  // after the SearchByBoW gate: verified
   KeyframeId accepted_loop = -1;
-  ClusterId cluster = -1;  // the Wi-Fi cluster the keyframe joined (-1: none / vanilla)
-  double query_ms = 0.0;   // steps 1 and 3 (BoW transform, detection, BoW matching)
+  wifi::ClusterId cluster = -1;  // the Wi-Fi cluster the keyframe joined (-1: none / vanilla)
+  double query_ms = 0.0;         // steps 1 and 3 (BoW transform, detection, BoW matching)
 };
 
 class OrbslamFrontEnd final : public FrontEnd {
@@ -84,7 +84,7 @@ class OrbslamFrontEnd final : public FrontEnd {
   /// The inverted index of every keyframe (vanilla), of a Wi-Fi cluster, or of the keyframes
   /// without a cluster (cluster -1).
   const bow::KeyframeDatabase& database() const { return all_; }
-  const std::map<ClusterId, bow::KeyframeDatabase>& cluster_databases() const {
+  const std::map<wifi::ClusterId, bow::KeyframeDatabase>& cluster_databases() const {
     return by_cluster_;
   }
   const bow::BowVector& bow_of(KeyframeId keyframe) const { return bow_.at(keyframe); }
@@ -106,8 +106,8 @@ class OrbslamFrontEnd final : public FrontEnd {
   int direct_index_levels_up_ = 1;
   orbslam::CovisibilityGraph covisibility_;
   bow::LoopConsistency consistency_;
-  bow::KeyframeDatabase all_;                              // vanilla
-  std::map<ClusterId, bow::KeyframeDatabase> by_cluster_;  // Wi-Fi; -1: without a cluster
+  bow::KeyframeDatabase all_;                                    // vanilla
+  std::map<wifi::ClusterId, bow::KeyframeDatabase> by_cluster_;  // Wi-Fi; -1: without a cluster
   std::map<KeyframeId, bow::BowVector> bow_;
   std::map<KeyframeId, bow::BowKeyframe> bow_keyframes_;
   const PoseGraph* graph_ = nullptr;

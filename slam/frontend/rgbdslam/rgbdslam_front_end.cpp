@@ -155,8 +155,8 @@ std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
   const std::vector<KeyframeId> pool = wifi()->bound(qualifying);
   // Ranking: similarity of each keyframe's own signature (shared by the keyframes of a pause, so
   // computed once per signature), then a seeded tie-break key.
-  const WifiSignature& current = *wifi()->signature_of(query.keyframe);
-  std::map<const WifiSignature*, double> similarity_of;
+  const wifi::WifiSignature& current = *wifi()->signature_of(query.keyframe);
+  std::map<const wifi::WifiSignature*, double> similarity_of;
   struct Ranked {
     KeyframeId keyframe;
     double similarity;
@@ -167,7 +167,8 @@ std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
   for (KeyframeId id : pool) {
     const auto signature = wifi()->signature_of(id);
     auto [it, inserted] = similarity_of.try_emplace(signature.get(), 0.0);
-    if (inserted) it->second = cosine_similarity(current, *signature, wifi()->options().floor_dbm);
+    if (inserted)
+      it->second = wifi::cosine_similarity(current, *signature, wifi()->options().floor_dbm);
     ranked.push_back({id, it->second, rng.next_u64()});
   }
   std::sort(ranked.begin(), ranked.end(), [](const Ranked& a, const Ranked& b) {

@@ -334,8 +334,8 @@ std::vector<KeyframeId> RtabmapFrontEnd::wifi_immune_nodes() const {
   const auto cap = static_cast<std::size_t>(std::max(0, options_.wifi_max_immune));
   // Most similar cluster first; within a cluster the newest nodes first, since transfers take
   // the oldest first and a cap should keep what the unbounded rule would keep longest.
-  for (const SimilarCluster& similar : wifi()->similar_clusters()) {
-    const WifiCluster& cluster = wifi()->clusters().clusters().at(similar.cluster);
+  for (const wifi::SimilarCluster& similar : wifi()->similar_clusters()) {
+    const wifi::WifiCluster& cluster = wifi()->clusters().clusters().at(similar.cluster);
     for (auto it = cluster.keyframes.rbegin(); it != cluster.keyframes.rend(); ++it) {
       if (cap > 0 && out.size() >= cap) return out;
       const rtabmap::MemoryPlace place = memory_.place(*it);

@@ -103,13 +103,13 @@ TEST(OrbslamFrontEnd, WithWifiEachKeyframeIsInItsOwnClustersIndexOnly) {
   // one splits it into clusters that are not all similar, so bounding shows.
   const auto system = run_orbslam(test::small_loop_with_wifi_scene(), true, 0.995);
   const slam::OrbslamFrontEnd& orb = front_end_of(*system);
-  const slam::WifiModule& wifi = *orb.wifi();
+  const slam::wifi::WifiModule& wifi = *orb.wifi();
   const auto keyframes = static_cast<slam::KeyframeId>(system->graph().node_count());
   EXPECT_EQ(orb.database().size(), 0u);  // no shared index
   ASSERT_GE(orb.cluster_databases().size(), 3u);
   int clustered = 0;
   for (slam::KeyframeId k = 0; k < keyframes; ++k) {
-    const slam::ClusterId own = wifi.cluster_of(k);
+    const slam::wifi::ClusterId own = wifi.cluster_of(k);
     if (own >= 0) ++clustered;
     int indexes_holding = 0;
     for (const auto& [cluster, database] : orb.cluster_databases()) {

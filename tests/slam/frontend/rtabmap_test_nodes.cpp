@@ -45,9 +45,9 @@ RtabmapDriver::RtabmapDriver(slam::RtabmapOptions options, bool wifi)
     : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
   front_end_ = std::make_unique<slam::RtabmapFrontEnd>(options, slam::PoseGraphOptions{});
   if (wifi) {
-    slam::WifiOptions w;
+    slam::wifi::WifiOptions w;
     w.enabled = true;
-    front_end_->attach_wifi(std::make_unique<slam::WifiModule>(w, instrumentation_));
+    front_end_->attach_wifi(std::make_unique<slam::wifi::WifiModule>(w, instrumentation_));
   }
 }
 

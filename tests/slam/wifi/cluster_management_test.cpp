@@ -13,8 +13,8 @@ namespace {
 constexpr double kThreshold = 0.9;
 constexpr double kFloor = -100.0;
 
-std::shared_ptr<const WifiSignature> sig(std::vector<ApStrength> s) {
-  return std::make_shared<const WifiSignature>(std::move(s));
+std::shared_ptr<const wifi::WifiSignature> sig(std::vector<wifi::ApStrength> s) {
+  return std::make_shared<const wifi::WifiSignature>(std::move(s));
 }
 
 // Three places: A and A2 close (similar), B far from both.
@@ -23,7 +23,7 @@ const auto kPlaceA2 = sig({{0x10, -42}, {0x20, -58}, {0x30, -88}});
 const auto kPlaceB = sig({{0x10, -90}, {0x20, -60}, {0x30, -40}});
 
 TEST(WifiClusters, NoSimilarClusterFoundsANewOne) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   EXPECT_TRUE(map.similar_clusters(*kPlaceA).empty());
   EXPECT_EQ(map.assign(0, kPlaceA, {}, {}), 0);
   const auto similar = map.similar_clusters(*kPlaceB);
@@ -35,7 +35,7 @@ TEST(WifiClusters, NoSimilarClusterFoundsANewOne) {
 }
 
 TEST(WifiClusters, SimilarClusterWithAVisualEdgeIsJoined) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   map.assign(0, kPlaceA, {}, {});
   const auto similar = map.similar_clusters(*kPlaceA2);
   ASSERT_EQ(similar.size(), 1u);
@@ -46,7 +46,7 @@ TEST(WifiClusters, SimilarClusterWithAVisualEdgeIsJoined) {
 }
 
 TEST(WifiClusters, SimilarButNoVisualEdgeFoundsANewCluster) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   map.assign(0, kPlaceA, {}, {});
   const auto similar = map.similar_clusters(*kPlaceA2);
   ASSERT_EQ(similar.size(), 1u);
@@ -55,7 +55,7 @@ TEST(WifiClusters, SimilarButNoVisualEdgeFoundsANewCluster) {
 }
 
 TEST(WifiClusters, SeveralSimilarClustersWithEdgesTheMostSimilarWins) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   // Two clusters founded at nearby places (no visual edge between them).
   map.assign(0, kPlaceA, {}, {});
   map.assign(1, kPlaceA2, map.similar_clusters(*kPlaceA2), {});
@@ -71,7 +71,7 @@ TEST(WifiClusters, SeveralSimilarClustersWithEdgesTheMostSimilarWins) {
 }
 
 TEST(WifiClusters, AKeyframeWithoutSignatureJoinsNone) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   EXPECT_EQ(map.assign(0, nullptr, {}, {}), -1);
   EXPECT_EQ(map.cluster_of(0), -1);
   EXPECT_TRUE(map.clusters().empty());
@@ -79,13 +79,13 @@ TEST(WifiClusters, AKeyframeWithoutSignatureJoinsNone) {
 }
 
 TEST(WifiClusters, KeyframesMustArriveInOrder) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   map.assign(3, kPlaceA, {}, {});
   EXPECT_THROW(map.assign(2, kPlaceA, {}, {}), InvalidInputError);
 }
 
 TEST(WifiClusters, CsvListsRepresentativeAndKeyframes) {
-  WifiClusterMap map(kThreshold, kFloor);
+  wifi::WifiClusterMap map(kThreshold, kFloor);
   map.assign(0, kPlaceA, {}, {});
   map.assign(1, kPlaceA2, map.similar_clusters(*kPlaceA2), {0});
   map.assign(2, kPlaceB, map.similar_clusters(*kPlaceB), {1});

@@ -21,11 +21,11 @@ using test::scan_of;
 /// previous one.
 class Driver {
  public:
-  explicit Driver(RgbdslamOptions rgbdslam = {}, WifiOptions wifi = {})
+  explicit Driver(RgbdslamOptions rgbdslam = {}, wifi::WifiOptions wifi = {})
       : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
     wifi.enabled = true;
     selector_ = std::make_unique<RgbdslamFrontEnd>(rgbdslam, /*seed=*/5);
-    selector_->attach_wifi(std::make_unique<WifiModule>(wifi, instrumentation_));
+    selector_->attach_wifi(std::make_unique<wifi::WifiModule>(wifi, instrumentation_));
   }
   std::vector<Candidate> add_keyframe() {
     const KeyframeId id = graph_.add_node(Timestamp::from_ns(graph_.node_count()),
@@ -45,7 +45,7 @@ class Driver {
     return c;
   }
   RgbdslamFrontEnd& selector() { return *selector_; }
-  const WifiClusterMap& clusters() const { return selector_->wifi()->clusters(); }
+  const wifi::WifiClusterMap& clusters() const { return selector_->wifi()->clusters(); }
   Instrumentation& instrumentation() { return instrumentation_; }
 
  private:

@@ -29,7 +29,7 @@ TEST(WifiSignature, BssidsDifferingInTheLastNibbleMergeIntoOneAccessPoint) {
                                                 {"02:00:00:00:00:a2", -70},
                                                 {"02:00:00:00:00:a3", -80},
                                                 {"02:00:00:00:00:b0", -40}})};
-  const WifiSignature s = aggregate_scans(scans);
+  const wifi::WifiSignature s = wifi::aggregate_scans(scans);
   ASSERT_EQ(s.size(), 2u);
   EXPECT_EQ(s.strengths()[0].ap, mac("02:00:00:00:00:a0").value);
   EXPECT_DOUBLE_EQ(s.strengths()[0].rssi_dbm, -65.0);  // (-50 - 60 - 70 - 80) / 4
@@ -41,7 +41,7 @@ TEST(WifiSignature, AveragesEveryReadingOverTheScansOfAPause) {
   const std::vector<WifiScan> scans = {
       scan_at(0, 1, {{"02:00:00:00:00:a0", -50}, {"02:00:00:00:00:a1", -54}}),
       scan_at(2, 3, {{"02:00:00:00:00:a0", -56}}), scan_at(4, 5, {{"02:00:00:00:00:c4", -90}})};
-  const WifiSignature s = aggregate_scans(scans);
+  const wifi::WifiSignature s = wifi::aggregate_scans(scans);
   ASSERT_EQ(s.size(), 2u);
   EXPECT_DOUBLE_EQ(s.strengths()[0].rssi_dbm, -160.0 / 3.0);
   EXPECT_DOUBLE_EQ(s.strengths()[1].rssi_dbm, -90.0);
@@ -49,11 +49,11 @@ TEST(WifiSignature, AveragesEveryReadingOverTheScansOfAPause) {
 }
 
 TEST(WifiSignature, RejectsADuplicateAccessPoint) {
-  EXPECT_THROW(WifiSignature({{1, -50}, {1, -60}}), InvalidInputError);
+  EXPECT_THROW(wifi::WifiSignature({{1, -50}, {1, -60}}), InvalidInputError);
 }
 
 TEST(PauseSignatureTracker, NoSignatureBeforeTheFirstScan) {
-  PauseSignatureTracker tracker(WifiOptions{});
+  wifi::PauseSignatureTracker tracker(wifi::WifiOptions{});
   EXPECT_EQ(tracker.current(), nullptr);
   tracker.observe_scan(scan_at(0, 1, {{"02:00:00:00:00:a0", -50}}));
   ASSERT_NE(tracker.current(), nullptr);
@@ -61,7 +61,7 @@ TEST(PauseSignatureTracker, NoSignatureBeforeTheFirstScan) {
 }
 
 TEST(PauseSignatureTracker, ATimeGapStartsANewPause) {
-  PauseSignatureTracker tracker(WifiOptions{});  // pause_gap_s 3
+  wifi::PauseSignatureTracker tracker(wifi::WifiOptions{});  // pause_gap_s 3
   tracker.observe_scan(scan_at(0, 1, {{"02:00:00:00:00:a0", -50}}));
   tracker.observe_scan(scan_at(2, 3, {{"02:00:00:00:00:a0", -60}}));
   EXPECT_EQ(tracker.pause_count(), 1);
@@ -72,7 +72,7 @@ TEST(PauseSignatureTracker, ATimeGapStartsANewPause) {
 }
 
 TEST(PauseSignatureTracker, OdometryMotionStartsANewPauseEvenWithoutAGap) {
-  PauseSignatureTracker tracker(WifiOptions{});  // pause_motion_m 0.05
+  wifi::PauseSignatureTracker tracker(wifi::WifiOptions{});  // pause_motion_m 0.05
   OdometryReading odometry;
   tracker.observe_odometry(odometry);
   tracker.observe_scan(scan_at(0, 1, {{"02:00:00:00:00:a0", -50}}));

@@ -13,67 +13,69 @@ namespace {
 
 constexpr double kFloor = -100.0;
 
-WifiSignature sig(std::vector<ApStrength> s) { return WifiSignature(std::move(s)); }
+wifi::WifiSignature sig(std::vector<wifi::ApStrength> s) {
+  return wifi::WifiSignature(std::move(s));
+}
 
 TEST(WifiSimilarity, IdenticalSignaturesScoreOne) {
-  const WifiSignature a = sig({{1, -40}, {2, -70}, {3, -85}});
-  EXPECT_NEAR(cosine_similarity(a, a, kFloor), 1.0, 1e-12);
+  const wifi::WifiSignature a = sig({{1, -40}, {2, -70}, {3, -85}});
+  EXPECT_NEAR(wifi::cosine_similarity(a, a, kFloor), 1.0, 1e-12);
 }
 
 TEST(WifiSimilarity, InvariantToScalingTheWeights) {
   // Weights (60, 30, 15) and (40, 20, 10): one is 2/3 of the other.
-  const WifiSignature a = sig({{1, -40}, {2, -70}, {3, -85}});
-  const WifiSignature b = sig({{1, -60}, {2, -80}, {3, -90}});
-  EXPECT_NEAR(cosine_similarity(a, b, kFloor), 1.0, 1e-12);
+  const wifi::WifiSignature a = sig({{1, -40}, {2, -70}, {3, -85}});
+  const wifi::WifiSignature b = sig({{1, -60}, {2, -80}, {3, -90}});
+  EXPECT_NEAR(wifi::cosine_similarity(a, b, kFloor), 1.0, 1e-12);
 }
 
 TEST(WifiSimilarity, MissingAccessPointsCountZero) {
   // a = (60, 30, 0), b = (60, 0, 30): cos = 3600 / (sqrt(4500) * sqrt(4500)) = 0.8.
-  const WifiSignature a = sig({{1, -40}, {2, -70}});
-  const WifiSignature b = sig({{1, -40}, {3, -70}});
-  EXPECT_NEAR(cosine_similarity(a, b, kFloor), 0.8, 1e-12);
+  const wifi::WifiSignature a = sig({{1, -40}, {2, -70}});
+  const wifi::WifiSignature b = sig({{1, -40}, {3, -70}});
+  EXPECT_NEAR(wifi::cosine_similarity(a, b, kFloor), 0.8, 1e-12);
   // No AP in common: orthogonal.
-  EXPECT_NEAR(cosine_similarity(sig({{1, -40}}), sig({{2, -40}}), kFloor), 0.0, 1e-12);
+  EXPECT_NEAR(wifi::cosine_similarity(sig({{1, -40}}), sig({{2, -40}}), kFloor), 0.0, 1e-12);
 }
 
 TEST(WifiSimilarity, ReadingsAtOrBelowTheFloorWeighNothing) {
-  const WifiSignature a = sig({{1, -40}, {2, -105}});
-  const WifiSignature b = sig({{1, -50}});
-  EXPECT_NEAR(cosine_similarity(a, b, kFloor), 1.0, 1e-12);
+  const wifi::WifiSignature a = sig({{1, -40}, {2, -105}});
+  const wifi::WifiSignature b = sig({{1, -50}});
+  EXPECT_NEAR(wifi::cosine_similarity(a, b, kFloor), 1.0, 1e-12);
 }
 
 TEST(WifiSimilarity, EmptySignaturesAreSimilarToNothing) {
-  const WifiSignature empty;
-  const WifiSignature a = sig({{1, -40}});
-  EXPECT_EQ(cosine_similarity(empty, a, kFloor), 0.0);
-  EXPECT_EQ(cosine_similarity(empty, empty, kFloor), 0.0);
-  EXPECT_EQ(cosine_similarity(sig({{1, -120}}), a, kFloor), 0.0);
+  const wifi::WifiSignature empty;
+  const wifi::WifiSignature a = sig({{1, -40}});
+  EXPECT_EQ(wifi::cosine_similarity(empty, a, kFloor), 0.0);
+  EXPECT_EQ(wifi::cosine_similarity(empty, empty, kFloor), 0.0);
+  EXPECT_EQ(wifi::cosine_similarity(sig({{1, -120}}), a, kFloor), 0.0);
 }
 
 TEST(WifiSimilarity, IndexAgreesWithTheReferenceForManyRandomSignatures) {
   Rng rng = Rng::stream(3, "test/wifi/similarity");
   auto random_signature = [&] {
-    std::vector<ApStrength> s;
-    for (AccessPointKey ap = 0; ap < 150; ++ap) {
+    std::vector<wifi::ApStrength> s;
+    for (wifi::AccessPointKey ap = 0; ap < 150; ++ap) {
       if (rng.uniform() < 0.3) s.push_back({ap * 16, rng.uniform(-98.0, -30.0)});
     }
-    return WifiSignature(std::move(s));
+    return wifi::WifiSignature(std::move(s));
   };
-  std::vector<WifiSignature> stored;
-  SignatureSimilarityIndex index(kFloor);
+  std::vector<wifi::WifiSignature> stored;
+  wifi::SignatureSimilarityIndex index(kFloor);
   for (int i = 0; i < 70; ++i) {  // grows past the initial row and column capacity
     stored.push_back(random_signature());
     EXPECT_EQ(index.add(stored.back()), i);
   }
-  stored.push_back(WifiSignature());
+  stored.push_back(wifi::WifiSignature());
   index.add(stored.back());
   for (int q = 0; q < 5; ++q) {
-    const WifiSignature query = random_signature();
+    const wifi::WifiSignature query = random_signature();
     const Eigen::VectorXd s = index.similarities(query);
     ASSERT_EQ(s.size(), static_cast<Eigen::Index>(stored.size()));
     for (std::size_t i = 0; i < stored.size(); ++i) {
-      EXPECT_NEAR(s(static_cast<Eigen::Index>(i)), cosine_similarity(query, stored[i], kFloor),
-                  1e-12);
+      EXPECT_NEAR(s(static_cast<Eigen::Index>(i)),
+                  wifi::cosine_similarity(query, stored[i], kFloor), 1e-12);
     }
   }
 }

@@ -87,14 +87,14 @@ std::string run_walk(FrontEnd& front_end, const Walk& walk) {
 
 TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
   Instrumentation inst_a, inst_b;
-  WifiOptions options;
+  wifi::WifiOptions options;
   options.enabled = true;
   RgbdslamFrontEnd rgbdslam(RgbdslamOptions{}, 3);
-  rgbdslam.attach_wifi(std::make_unique<WifiModule>(options, inst_a));
+  rgbdslam.attach_wifi(std::make_unique<wifi::WifiModule>(options, inst_a));
   BoundedExhaustiveFrontEnd other;
-  other.attach_wifi(std::make_unique<WifiModule>(options, inst_b));
-  std::vector<ClusterEvent> events;
-  other.wifi()->subscribe([&](const ClusterEvent& e) { events.push_back(e); });
+  other.attach_wifi(std::make_unique<wifi::WifiModule>(options, inst_b));
+  std::vector<wifi::ClusterEvent> events;
+  other.wifi()->subscribe([&](const wifi::ClusterEvent& e) { events.push_back(e); });
 
   const Walk walk = scripted_walk();
   const std::string a = run_walk(rgbdslam, walk);
@@ -104,7 +104,7 @@ TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
   // has no edge into cluster 0, so it founds cluster 2; 41..44 join it, and 45, with a loop
   // edge into cluster 0 and tracking edge into cluster 2, joins the more similar (cluster 0 is
   // represented by the same signature, similarity 1; ties go to the lower id).
-  const WifiClusterMap& clusters = other.wifi()->clusters();
+  const wifi::WifiClusterMap& clusters = other.wifi()->clusters();
   ASSERT_EQ(clusters.clusters().size(), 3u);
   EXPECT_EQ(clusters.cluster_of(19), 0);
   EXPECT_EQ(clusters.cluster_of(20), 1);
@@ -112,17 +112,18 @@ TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
   EXPECT_EQ(clusters.cluster_of(45), 0);
   // One event per clustered keyframe, three of them foundings.
   EXPECT_EQ(events.size(), 50u);
-  EXPECT_EQ(
-      std::count_if(events.begin(), events.end(),
-                    [](const ClusterEvent& e) { return e.kind == ClusterEvent::Kind::kFounded; }),
-      3);
+  EXPECT_EQ(std::count_if(events.begin(), events.end(),
+                          [](const wifi::ClusterEvent& e) {
+                            return e.kind == wifi::ClusterEvent::Kind::kFounded;
+                          }),
+            3);
   EXPECT_EQ(inst_b.counter(counter::kWifiClustersFounded), 3);
   EXPECT_EQ(inst_b.counter(counter::kWifiClusterJoins), 47);
 }
 
 TEST(WifiModule, BoundingImmunisationAndRetrievalAnswerFromTheSimilarClusters) {
   Instrumentation inst;
-  WifiModule wifi(WifiOptions{}, inst);
+  wifi::WifiModule wifi(wifi::WifiOptions{}, inst);
   wifi.observe_scan(scan_of(0, kPlaceA));
   for (KeyframeId k = 0; k < 10; ++k) {
     wifi.sign(k);
@@ -152,7 +153,7 @@ TEST(WifiModule, BoundingImmunisationAndRetrievalAnswerFromTheSimilarClusters) {
 
 TEST(WifiModule, AKeyframeBeforeTheFirstScanIsUnboundedAndJoinsNoCluster) {
   Instrumentation inst;
-  WifiModule wifi(WifiOptions{}, inst);
+  wifi::WifiModule wifi(wifi::WifiOptions{}, inst);
   wifi.sign(0);
   EXPECT_FALSE(wifi.has_signature());
   EXPECT_EQ(wifi.bound({}), std::vector<KeyframeId>{});
@@ -165,7 +166,7 @@ TEST(WifiModule, AKeyframeBeforeTheFirstScanIsUnboundedAndJoinsNoCluster) {
 
 TEST(WifiModule, KeyframesAreSignedInOrderAndAssignedOnce) {
   Instrumentation inst;
-  WifiModule wifi(WifiOptions{}, inst);
+  wifi::WifiModule wifi(wifi::WifiOptions{}, inst);
   wifi.observe_scan(scan_of(0, kPlaceA));
   wifi.sign(3);
   EXPECT_THROW(wifi.sign(2), InvalidInputError);
