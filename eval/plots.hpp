@@ -11,13 +11,13 @@
 namespace wifislam::eval {
 
 /// The canvas of the plan plots: the plan's bounds (when given) and every point drawn.
-plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::FloorPlan* plan);
+plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::world::FloorPlan* plan);
 
 /// Ground truth and the aligned estimate over the floor plan, with the detected loop closures
 /// drawn between their keyframes' ground-truth positions: green correct, red false (a long red
 /// edge is a closure between two different places).
 void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
-                     const sim::FloorPlan* plan);
+                     const sim::world::FloorPlan* plan);
 
 /// ATE (after alignment) along the ground-truth path length, with its RMSE.
 void plot_error_along_path(const std::filesystem::path& path, const RunEvaluation& ev);
@@ -25,6 +25,6 @@ void plot_error_along_path(const std::filesystem::path& path, const RunEvaluatio
 /// Keyframes at their ground-truth positions coloured by Wi-Fi cluster (founders ringed and
 /// labelled with the cluster id) over the floor plan.
 void plot_wifi_clusters(const std::filesystem::path& path, const RunEvaluation& ev,
-                        const sim::FloorPlan* plan);
+                        const sim::world::FloorPlan* plan);
 
 }  // namespace wifislam::eval

@@ -21,7 +21,7 @@ extern const char* const kAssociationRule;
 /// from the dataset's scene.yaml: sim::dataset_world), else nothing, with the reason, which
 /// report.md notes.
 struct PlanBackdrop {
-  const sim::FloorPlan* plan = nullptr;
+  const sim::world::FloorPlan* plan = nullptr;
   std::string missing_reason;
 };
 

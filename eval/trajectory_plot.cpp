@@ -26,7 +26,7 @@ plot::Colour verdict_colour(LoopClosureVerdict v) {
 }
 }  // namespace
 
-plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::FloorPlan* plan) {
+plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::world::FloorPlan* plan) {
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300), hi = Eigen::Vector2d::Constant(-1e300);
   auto include = [&](const Eigen::Vector2d& p) { lo = lo.cwiseMin(p), hi = hi.cwiseMax(p); };
   if (plan) include(plan->bounds_min_m), include(plan->bounds_max_m);
@@ -40,10 +40,10 @@ plot::MetricCanvas plan_canvas(const RunEvaluation& ev, const sim::FloorPlan* pl
 }
 
 void plot_trajectory(const std::filesystem::path& path, const RunEvaluation& ev,
-                     const sim::FloorPlan* plan) {
+                     const sim::world::FloorPlan* plan) {
   const plot::MetricCanvas canvas = plan_canvas(ev, plan);
   plot::write_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
-    if (plan) sim::draw_plan_backdrop(cr, canvas, *plan);
+    if (plan) sim::world::draw_plan_backdrop(cr, canvas, *plan);
     std::vector<Eigen::Vector2d> gt, est;
     for (const PathSample& s : ev.path) {
       gt.push_back(s.ground_truth_m.head<2>());

@@ -7,10 +7,10 @@
 namespace wifislam::eval {
 
 void plot_wifi_clusters(const std::filesystem::path& path, const RunEvaluation& ev,
-                        const sim::FloorPlan* plan) {
+                        const sim::world::FloorPlan* plan) {
   const plot::MetricCanvas canvas = plan_canvas(ev, plan);
   plot::write_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
-    if (plan) sim::draw_plan_backdrop(cr, canvas, *plan);
+    if (plan) sim::world::draw_plan_backdrop(cr, canvas, *plan);
     std::vector<Eigen::Vector2d> gt;
     for (const PathSample& s : ev.path) gt.push_back(s.ground_truth_m.head<2>());
     plot::set_colour(cr, {0.6, 0.6, 0.6}, 0.8);

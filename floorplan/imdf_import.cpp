@@ -35,7 +35,7 @@ std::string label(const std::string& text) {
 
 enum class UnitUse { kSpace, kSolid, kVoid };
 
-UnitUse unit_use(const std::string& category, sim::SpaceKind& kind) {
+UnitUse unit_use(const std::string& category, sim::scene::SpaceKind& kind) {
   static const std::set<std::string> solid = {"brick", "concrete", "drywall",  "glass",
                                               "wood",  "column",   "structure"};
   static const std::set<std::string> voids = {"opentobelow", "elevator", "stairs",
@@ -44,16 +44,16 @@ UnitUse unit_use(const std::string& category, sim::SpaceKind& kind) {
   static const std::set<std::string> areas = {"lobby", "unenclosedarea", "platform", "footbridge"};
   if (solid.count(category)) return UnitUse::kSolid;
   if (voids.count(category)) return UnitUse::kVoid;
-  kind = category == "walkway" || category == "walkway.island" ? sim::SpaceKind::kCorridor
-         : areas.count(category)                               ? sim::SpaceKind::kArea
-                                                               : sim::SpaceKind::kRoom;
+  kind = category == "walkway" || category == "walkway.island" ? sim::scene::SpaceKind::kCorridor
+         : areas.count(category)                               ? sim::scene::SpaceKind::kArea
+                                                               : sim::scene::SpaceKind::kRoom;
   return UnitUse::kSpace;
 }
 
-sim::WallMaterial default_material(sim::SpaceKind kind) {
-  return kind == sim::SpaceKind::kCorridor ? sim::WallMaterial::kPlasterboard
-         : kind == sim::SpaceKind::kArea   ? sim::WallMaterial::kConcrete
-                                           : sim::WallMaterial::kBrick;
+radio_model::WallMaterial default_material(sim::scene::SpaceKind kind) {
+  return kind == sim::scene::SpaceKind::kCorridor ? radio_model::WallMaterial::kPlasterboard
+         : kind == sim::scene::SpaceKind::kArea   ? radio_model::WallMaterial::kConcrete
+                                                  : radio_model::WallMaterial::kBrick;
 }
 
 struct Level {
@@ -109,9 +109,9 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
   } else {
     for (const Level& l : levels) {
       const bool walkable = std::any_of(given_units.begin(), given_units.end(), [&](const auto& u) {
-        sim::SpaceKind kind;
+        sim::scene::SpaceKind kind;
         return u.tag("level_id") == l.id && unit_use(u.tag("category"), kind) == UnitUse::kSpace &&
-               kind != sim::SpaceKind::kRoom;
+               kind != sim::scene::SpaceKind::kRoom;
       });
       if (walkable) {
         level_id = l.id, plan.level = l.name;
@@ -132,7 +132,7 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
 
   std::vector<SpaceInput> inputs;
   for (const PlanFeature& u : units) {
-    sim::SpaceKind kind = sim::SpaceKind::kRoom;
+    sim::scene::SpaceKind kind = sim::scene::SpaceKind::kRoom;
     const UnitUse use = unit_use(u.tag("category"), kind);
     std::vector<PolygonRings> polygons = projected_polygons(geos, u, projection);
     if (use == UnitUse::kSolid) ++plan.counts.walls;
@@ -140,14 +140,14 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
       plan.counts.skipped += use == UnitUse::kVoid;
       continue;
     }
-    (kind == sim::SpaceKind::kRoom       ? plan.counts.rooms
-     : kind == sim::SpaceKind::kCorridor ? plan.counts.corridors
-                                         : plan.counts.areas)++;
+    (kind == sim::scene::SpaceKind::kRoom       ? plan.counts.rooms
+     : kind == sim::scene::SpaceKind::kCorridor ? plan.counts.corridors
+                                                : plan.counts.areas)++;
     for (PolygonRings& p : polygons) {
       for (Ring& hole : p.holes) plan.obstacles.push_back({std::move(hole)});
       p.holes.clear();
       SpaceInput in;
-      in.id = fmt::format("{}-{}", sim::to_string(kind), inputs.size());
+      in.id = fmt::format("{}-{}", sim::scene::to_string(kind), inputs.size());
       in.name = label(u.tag("name"));
       in.kind = kind;
       in.material = default_material(kind);

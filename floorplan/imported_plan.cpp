@@ -40,11 +40,11 @@ double ring_area_m2(const Ring& r) {
 }
 
 /// Walkable inputs outside the largest group joined by open doors are demoted to rooms.
-std::vector<sim::SpaceKind> connected_kinds(const std::vector<SpaceInput>& inputs,
-                                            const Partition& partition,
-                                            const std::vector<PlacedDoor>& doors,
-                                            std::vector<std::string>& notes) {
-  std::vector<sim::SpaceKind> kinds;
+std::vector<sim::scene::SpaceKind> connected_kinds(const std::vector<SpaceInput>& inputs,
+                                                   const Partition& partition,
+                                                   const std::vector<PlacedDoor>& doors,
+                                                   std::vector<std::string>& notes) {
+  std::vector<sim::scene::SpaceKind> kinds;
   for (const SpaceInput& in : inputs) kinds.push_back(in.kind);
   std::vector<int> pieces_of(inputs.size(), 0);
   std::vector<double> area(inputs.size(), 0.0);
@@ -54,21 +54,22 @@ std::vector<sim::SpaceKind> connected_kinds(const std::vector<SpaceInput>& input
   }
   Groups groups(inputs.size());
   for (const PlacedDoor& d : doors)
-    if (d.door.open && kinds[d.a] != sim::SpaceKind::kRoom && kinds[d.b] != sim::SpaceKind::kRoom)
+    if (d.door.open && kinds[d.a] != sim::scene::SpaceKind::kRoom &&
+        kinds[d.b] != sim::scene::SpaceKind::kRoom)
       groups.unite(d.a, d.b);
   std::map<int, double> group_area;
   for (std::size_t i = 0; i < inputs.size(); ++i)
-    if (kinds[i] != sim::SpaceKind::kRoom && pieces_of[i] == 1)
+    if (kinds[i] != sim::scene::SpaceKind::kRoom && pieces_of[i] == 1)
       group_area[groups.find(static_cast<int>(i))] += area[i];
   int best = -1;
   for (const auto& [root, a] : group_area)
     if (best < 0 || a > group_area[best]) best = root;
   int demoted = 0;
   for (std::size_t i = 0; i < inputs.size(); ++i) {
-    if (kinds[i] == sim::SpaceKind::kRoom || pieces_of[i] == 0) continue;
+    if (kinds[i] == sim::scene::SpaceKind::kRoom || pieces_of[i] == 0) continue;
     // A space split into pieces has no door between them: only a single piece can be walked.
     if (pieces_of[i] > 1 || groups.find(static_cast<int>(i)) != best) {
-      kinds[i] = sim::SpaceKind::kRoom;
+      kinds[i] = sim::scene::SpaceKind::kRoom;
       ++demoted;
     }
   }
@@ -85,11 +86,12 @@ std::vector<sim::SpaceKind> connected_kinds(const std::vector<SpaceInput>& input
 
 void finish_plan(const std::vector<SpaceInput>& inputs, const Partition& partition,
                  const std::vector<PlacedDoor>& doors, ImportedPlan& plan) {
-  const std::vector<sim::SpaceKind> kinds = connected_kinds(inputs, partition, doors, plan.notes);
+  const std::vector<sim::scene::SpaceKind> kinds =
+      connected_kinds(inputs, partition, doors, plan.notes);
   std::vector<int> piece_number(inputs.size(), 0);
   for (const SpacePiece& p : partition.pieces) {
     const SpaceInput& in = inputs[p.input];
-    sim::Space space;
+    sim::scene::Space space;
     const int k = piece_number[p.input]++;
     space.id = k == 0 ? in.id : fmt::format("{}-{}", in.id, k + 1);
     space.name = in.name;

@@ -44,9 +44,9 @@ struct ImportedPlan {
   Eigen::Vector2d centre_lon_lat_deg = Eigen::Vector2d::Zero();
   std::string projection;  // PROJ definition of the local frame
   double wall_thickness_m = 0.15;
-  std::vector<sim::Space> spaces;
-  std::vector<sim::SpaceDoor> doors;
-  std::vector<sim::Obstacle> obstacles;
+  std::vector<sim::scene::Space> spaces;
+  std::vector<sim::scene::SpaceDoor> doors;
+  std::vector<sim::scene::Obstacle> obstacles;
   std::vector<Ring> paths_m;  // navigation paths on the level, if the plan has any
   ImportCounts counts;
   std::vector<std::string> notes;  // choices made, for the scene's header and the report
@@ -58,7 +58,7 @@ struct ImportedPlan {
 /// A door for the partition's inputs `a` and `b`, with what it joins.
 struct PlacedDoor {
   int a = -1, b = -1;
-  sim::SpaceDoor door;
+  sim::scene::SpaceDoor door;
 };
 
 /// Writes the partition's pieces as spaces (holes as obstacles) and the doors into `plan`;

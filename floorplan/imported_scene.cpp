@@ -27,8 +27,8 @@ std::string default_name(const ImportedPlan& plan) {
 
 }  // namespace
 
-sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options) {
-  sim::Scene scene;
+sim::scene::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options) {
+  sim::scene::Scene scene;
   scene.name = options.name.empty() ? default_name(plan) : options.name;
   scene.description =
       fmt::format("Level {} of {} ({} plan), imported by wifislam import.", plan.level,
@@ -43,9 +43,9 @@ sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options)
   scene.route.turn_radius_m = 0.3;
   scene.route.min_wall_clearance_m = 0.3;
 
-  const sim::FloorPlan floor_plan = sim::build_floor_plan(scene);
-  const double free_m2 = sim::regions_area_m2(floor_plan.free_space);
-  scene.access_points.placement = sim::ApPlacement::kRooms;
+  const sim::world::FloorPlan floor_plan = sim::world::build_floor_plan(scene);
+  const double free_m2 = sim::world::regions_area_m2(floor_plan.free_space);
+  scene.access_points.placement = sim::scene::ApPlacement::kRooms;
   scene.access_points.count =
       options.access_points.value_or(std::max(4, static_cast<int>(std::lround(free_m2 / 100.0))));
 
@@ -56,18 +56,19 @@ sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options)
   if (!keep_order)
     for (const Ring& path : plan.paths_m) visit.insert(visit.end(), path.begin(), path.end());
   scene.route.waypoints_m = plan_tour(floor_plan, visit, tour, keep_order);
-  sim::build_route(scene, floor_plan);  // the same check generate makes
+  sim::world::build_route(scene, floor_plan);  // the same check generate makes
   return scene;
 }
 
-sim::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
-                                   const std::string& route_level, const SceneOptions& options) {
+sim::scene::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
+                                          const std::string& route_level,
+                                          const SceneOptions& options) {
   const auto route_plan = std::find_if(
       levels.begin(), levels.end(), [&](const ImportedPlan& p) { return p.level == route_level; });
   if (route_plan == levels.end())
     throw InvalidInputError("import: the route's level '" + route_level + "' was not imported");
   // The route level's scene as a one-level import makes it: route, access point count, defaults.
-  sim::Scene scene = imported_scene(*route_plan, options);
+  sim::scene::Scene scene = imported_scene(*route_plan, options);
   scene.name = options.name.empty() ? default_name(*route_plan) + "_building" : options.name;
   std::string names;
   for (const ImportedPlan& p : levels) names += (names.empty() ? "" : ", ") + p.level;
@@ -83,23 +84,23 @@ sim::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
   const double storey_m = micrometres(options.wall_height_m + kImportedSlabThicknessM);
   for (std::size_t k = 0; k < levels.size(); ++k) {
     const ImportedPlan& plan = levels[k];
-    sim::Level level;
+    sim::scene::Level level;
     level.id = plan.level;
     level.elevation_m = micrometres(static_cast<double>(k) * storey_m);
     level.storey_height_m = storey_m;
     level.slab_thickness_m = kImportedSlabThicknessM;
-    level.slab_material = sim::WallMaterial::kConcrete;
+    level.slab_material = radio_model::WallMaterial::kConcrete;
     scene.levels.push_back(level);
-    for (sim::Space space : plan.spaces) {
+    for (sim::scene::Space space : plan.spaces) {
       space.id = plan.level + "/" + space.id;
       space.level = plan.level;
       scene.spaces.push_back(std::move(space));
     }
-    for (sim::SpaceDoor door : plan.doors) {
+    for (sim::scene::SpaceDoor door : plan.doors) {
       door.level = plan.level;
       scene.doors.push_back(door);
     }
-    for (sim::Obstacle obstacle : plan.obstacles) {
+    for (sim::scene::Obstacle obstacle : plan.obstacles) {
       obstacle.level = plan.level;
       scene.obstacles.push_back(std::move(obstacle));
     }
@@ -108,7 +109,7 @@ sim::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
   return scene;
 }
 
-std::string imported_scene_yaml(const ImportedPlan& plan, const sim::Scene& scene,
+std::string imported_scene_yaml(const ImportedPlan& plan, const sim::scene::Scene& scene,
                                 const std::vector<std::string>& attribution_lines) {
   std::ostringstream out;
   out << fmt::format("# {}: level {} of {}\n", scene.name, plan.level, plan.source);
@@ -125,7 +126,7 @@ std::string imported_scene_yaml(const ImportedPlan& plan, const sim::Scene& scen
     out << "#\n# Source data attribution (keep it with this file and anything derived from it):\n";
     for (const std::string& line : attribution_lines) out << "#   " << line << "\n";
   }
-  out << sim::resolved_scene_yaml(scene);
+  out << sim::scene::resolved_scene_yaml(scene);
   return out.str();
 }
 

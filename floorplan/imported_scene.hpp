@@ -26,7 +26,7 @@ struct SceneOptions {
 
 /// The scene, with its route planned through the plan's walkable space and checked by the same
 /// route builder `generate` uses. Throws InvalidInputError when no route fits.
-sim::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options);
+sim::scene::Scene imported_scene(const ImportedPlan& plan, const SceneOptions& options);
 
 /// Storeys of an imported building stand this far apart when the plan gives no heights (none of
 /// the shipped formats does): the scene's wall height plus a 0.3 m slab, written into the scene.
@@ -38,12 +38,13 @@ inline constexpr double kImportedSlabThicknessM = 0.3;
 /// planned on `route_level` as imported_scene plans it; the access points are placed by rooms on
 /// every level, `options.access_points` each (default: one per 100 m^2 of the route level's free
 /// space, at least 4). Space ids are prefixed with their level ("<level>/<id>") to stay unique.
-sim::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
-                                   const std::string& route_level, const SceneOptions& options);
+sim::scene::Scene imported_building_scene(const std::vector<ImportedPlan>& levels,
+                                          const std::string& route_level,
+                                          const SceneOptions& options);
 
 /// The scene file's text: a comment header (source, level, projection, notes, attribution),
 /// then the resolved scene.
-std::string imported_scene_yaml(const ImportedPlan& plan, const sim::Scene& scene,
+std::string imported_scene_yaml(const ImportedPlan& plan, const sim::scene::Scene& scene,
                                 const std::vector<std::string>& attribution_lines);
 
 }  // namespace wifislam::floorplan

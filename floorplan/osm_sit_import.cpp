@@ -21,29 +21,29 @@ namespace wifislam::floorplan {
 
 namespace {
 
-std::optional<sim::SpaceKind> space_kind(const std::string& indoor) {
-  if (indoor == "room") return sim::SpaceKind::kRoom;
-  if (indoor == "corridor") return sim::SpaceKind::kCorridor;
-  if (indoor == "area") return sim::SpaceKind::kArea;
+std::optional<sim::scene::SpaceKind> space_kind(const std::string& indoor) {
+  if (indoor == "room") return sim::scene::SpaceKind::kRoom;
+  if (indoor == "corridor") return sim::scene::SpaceKind::kCorridor;
+  if (indoor == "area") return sim::scene::SpaceKind::kArea;
   return std::nullopt;
 }
 
-sim::WallMaterial material_of(const PlanFeature& f, sim::SpaceKind kind) {
+radio_model::WallMaterial material_of(const PlanFeature& f, sim::scene::SpaceKind kind) {
   const std::string m = f.tag("material");
-  if (m == "concrete" || m == "reinforced_concrete") return sim::WallMaterial::kConcrete;
-  if (m == "brick" || m == "stone") return sim::WallMaterial::kBrick;
-  if (m == "glass") return sim::WallMaterial::kGlass;
+  if (m == "concrete" || m == "reinforced_concrete") return radio_model::WallMaterial::kConcrete;
+  if (m == "brick" || m == "stone") return radio_model::WallMaterial::kBrick;
+  if (m == "glass") return radio_model::WallMaterial::kGlass;
   if (m == "plaster" || m == "plasterboard" || m == "drywall")
-    return sim::WallMaterial::kPlasterboard;
+    return radio_model::WallMaterial::kPlasterboard;
   switch (kind) {
-    case sim::SpaceKind::kCorridor:
-      return sim::WallMaterial::kPlasterboard;
-    case sim::SpaceKind::kArea:
-      return sim::WallMaterial::kConcrete;
-    case sim::SpaceKind::kRoom:
-      return sim::WallMaterial::kBrick;
+    case sim::scene::SpaceKind::kCorridor:
+      return radio_model::WallMaterial::kPlasterboard;
+    case sim::scene::SpaceKind::kArea:
+      return radio_model::WallMaterial::kConcrete;
+    case sim::scene::SpaceKind::kRoom:
+      return radio_model::WallMaterial::kBrick;
   }
-  return sim::WallMaterial::kBrick;
+  return radio_model::WallMaterial::kBrick;
 }
 
 /// The feature's levels: `level=1`, `level=1;2`.
@@ -76,7 +76,7 @@ std::vector<std::string> levels_with_spaces(const std::vector<PlanFeature>& feat
     if (!kind || f.polygons_lon_lat.empty()) continue;
     for (const std::string& l : levels_of(f)) {
       all.insert(l);
-      if (*kind != sim::SpaceKind::kRoom) walkable.insert(l);
+      if (*kind != sim::scene::SpaceKind::kRoom) walkable.insert(l);
     }
   }
   auto numeric_order = [](std::vector<std::string> v) {
@@ -96,7 +96,7 @@ std::vector<std::string> levels_with_spaces(const std::vector<PlanFeature>& feat
 /// One door for the input `r` on its longest shared wall with an input of a kind in `with`.
 std::optional<PlacedDoor> door_on_longest_wall(int r, const std::vector<SpaceInput>& inputs,
                                                const Partition& partition,
-                                               const std::set<sim::SpaceKind>& with,
+                                               const std::set<sim::scene::SpaceKind>& with,
                                                double max_width_m, bool open) {
   const SharedWall* best = nullptr;
   int other = -1;
@@ -162,16 +162,16 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
       ++plan.counts.skipped;
       continue;
     }
-    (*kind == sim::SpaceKind::kRoom       ? plan.counts.rooms
-     : *kind == sim::SpaceKind::kCorridor ? plan.counts.corridors
-                                          : plan.counts.areas)++;
+    (*kind == sim::scene::SpaceKind::kRoom       ? plan.counts.rooms
+     : *kind == sim::scene::SpaceKind::kCorridor ? plan.counts.corridors
+                                                 : plan.counts.areas)++;
     for (PolygonRings& p : projected_polygons(geos, f, projection)) {
       // Inner rings (a planter in a courtyard) are solid blocks in the space.
       for (Ring& hole : p.holes) plan.obstacles.push_back({std::move(hole)});
       p.holes.clear();
       SpaceInput in;
       const std::string ref = !f.tag("ref").empty() ? f.tag("ref") : f.tag("@id");
-      in.id = fmt::format("{}-{}", sim::to_string(*kind), inputs.size());
+      in.id = fmt::format("{}-{}", sim::scene::to_string(*kind), inputs.size());
       in.name = !f.tag("name").empty() ? f.tag("name") : ref;
       in.kind = *kind;
       in.material = material_of(f, *kind);
@@ -189,7 +189,7 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
   std::vector<Geometry> corridor_parts;
   std::vector<const Geometry*> corridor_ptrs;
   for (const SpaceInput& in : inputs) {
-    if (in.kind == sim::SpaceKind::kCorridor) {
+    if (in.kind == sim::scene::SpaceKind::kCorridor) {
       corridor_parts.push_back(geos.polygon(in.polygon_m));
     } else {
       joined.push_back(in);
@@ -202,8 +202,8 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
     p.holes.clear();
     SpaceInput in;
     in.id = fmt::format("corridor-{}", corridor_index++);
-    in.kind = sim::SpaceKind::kCorridor;
-    in.material = sim::WallMaterial::kPlasterboard;
+    in.kind = sim::scene::SpaceKind::kCorridor;
+    in.material = radio_model::WallMaterial::kPlasterboard;
     in.polygon_m = std::move(p);
     joined.insert(joined.begin() + (corridor_index - 1), std::move(in));
   }
@@ -218,19 +218,19 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
   std::vector<PlacedDoor> doors;
   for (std::size_t i = 0; i < joined.size(); ++i) {
     const int r = static_cast<int>(i);
-    if (joined[i].kind == sim::SpaceKind::kRoom) {
-      auto door = door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kCorridor},
+    if (joined[i].kind == sim::scene::SpaceKind::kRoom) {
+      auto door = door_on_longest_wall(r, joined, partition, {sim::scene::SpaceKind::kCorridor},
                                        options.door_width_m, false);
       if (!door)
-        door = door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kArea},
+        door = door_on_longest_wall(r, joined, partition, {sim::scene::SpaceKind::kArea},
                                     options.door_width_m, false);
       if (door)
         doors.push_back(*door);
       else
         ++plan.counts.rooms_without_door;
-    } else if (joined[i].kind == sim::SpaceKind::kArea) {
-      if (auto door =
-              door_on_longest_wall(r, joined, partition, {sim::SpaceKind::kCorridor}, 1.8, true))
+    } else if (joined[i].kind == sim::scene::SpaceKind::kArea) {
+      if (auto door = door_on_longest_wall(r, joined, partition, {sim::scene::SpaceKind::kCorridor},
+                                           1.8, true))
         doors.push_back(*door);
     }
   }

@@ -112,15 +112,15 @@ ImportedPlan import_plan(const std::filesystem::path& given, const ImportOptions
   // here, before the scene is built: a plan spread over more (a stray feature far away, a
   // building across the antimeridian) would otherwise take minutes and gigabytes first.
   double farthest_m = 0.0;
-  for (const sim::Space& s : plan.spaces)
+  for (const sim::scene::Space& s : plan.spaces)
     for (const Eigen::Vector2d& p : s.polygon_m)
       farthest_m = std::max(farthest_m, p.cwiseAbs().maxCoeff());
-  if (!(farthest_m <= sim::schema::kCoordinateM.hi))
+  if (!(farthest_m <= sim::scene::schema::kCoordinateM.hi))
     throw ParseError(plan_file.string(), "",
                      fmt::format("level '{}' reaches {:.0f} m from the plan's centre; a scene "
                                  "keeps within {:.0f} m (is a feature far from the rest, or does "
                                  "the plan cross longitude 180?)",
-                                 plan.level, farthest_m, sim::schema::kCoordinateM.hi));
+                                 plan.level, farthest_m, sim::scene::schema::kCoordinateM.hi));
   return plan;
 }
 

@@ -36,7 +36,7 @@ struct Grid {
   float clearance(int index) const { return clearance_m(index / width, index % width); }
 };
 
-std::vector<cv::Point> to_pixels(const sim::Polygon2& ring, const Grid& g) {
+std::vector<cv::Point> to_pixels(const sim::world::Polygon2& ring, const Grid& g) {
   std::vector<cv::Point> out;
   for (const auto& p : ring) {
     const Eigen::Vector2d q = (p - g.origin_m) / g.cell_m;
@@ -56,7 +56,7 @@ constexpr double kMaxKeptCostCells = 40e6;
 // seconds); see plan_tour.
 constexpr double kMaxExactWalkCells = 2e7;
 
-Grid make_grid(const sim::FloorPlan& plan, const TourOptions& options) {
+Grid make_grid(const sim::world::FloorPlan& plan, const TourOptions& options) {
   Grid g;
   g.origin_m = plan.bounds_min_m - Eigen::Vector2d::Constant(1.0);
   const Eigen::Vector2d size = plan.bounds_max_m - g.origin_m + Eigen::Vector2d::Constant(1.0);
@@ -77,7 +77,7 @@ Grid make_grid(const sim::FloorPlan& plan, const TourOptions& options) {
   // The raster knows walkable space; the wall faces (door leaves, wall ends the raster rounds
   // off) are measured exactly, as the route builder will.
   const double reach_m = options.clearance_m + 0.5;
-  const sim::WallFaceGrid faces(plan, reach_m);
+  const sim::world::WallFaceGrid faces(plan, reach_m);
   for (int y = 0; y < g.height; ++y)
     for (int x = 0; x < g.width; ++x) {
       float& c = g.clearance_m(y, x);
@@ -492,7 +492,7 @@ class SparseWalks final : public TargetWalks {
 
 }  // namespace
 
-std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
+std::vector<Eigen::Vector2d> plan_tour(const sim::world::FloorPlan& plan,
                                        const std::vector<Eigen::Vector2d>& must_visit,
                                        const TourOptions& options, bool keep_order) {
   const Grid g = make_grid(plan, options);

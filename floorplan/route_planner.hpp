@@ -30,7 +30,7 @@ struct TourOptions {
 /// are visited in the order given (the user's route), else in the planned tour order (a plan's
 /// navigation paths). Throws InvalidInputError when the walkable space has no room for the robot
 /// at that clearance.
-std::vector<Eigen::Vector2d> plan_tour(const sim::FloorPlan& plan,
+std::vector<Eigen::Vector2d> plan_tour(const sim::world::FloorPlan& plan,
                                        const std::vector<Eigen::Vector2d>& must_visit,
                                        const TourOptions& options, bool keep_order);
 

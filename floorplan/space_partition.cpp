@@ -10,13 +10,13 @@ namespace wifislam::floorplan {
 
 namespace {
 
-int kind_rank(sim::SpaceKind kind) {
+int kind_rank(sim::scene::SpaceKind kind) {
   switch (kind) {
-    case sim::SpaceKind::kCorridor:
+    case sim::scene::SpaceKind::kCorridor:
       return 0;
-    case sim::SpaceKind::kArea:
+    case sim::scene::SpaceKind::kArea:
       return 1;
-    case sim::SpaceKind::kRoom:
+    case sim::scene::SpaceKind::kRoom:
       return 2;
   }
   return 3;
@@ -83,7 +83,7 @@ void cut_into_tiles(const GeosContext& geos, Geometry g, const Box& box,
 void subtract_near_earlier(const GeosContext& geos, const std::vector<Geometry>& drawn,
                            const std::vector<int>& order, std::vector<Geometry>& grown) {
   const Eigen::Vector2d margin = Eigen::Vector2d::Constant(0.01);
-  sim::BoxGrid placed(8.0);
+  sim::world::BoxGrid placed(8.0);
   const Geometry nothing = geos.empty_polygon();
   for (int i : order) {
     const Box box = box_of(drawn[i]);
@@ -107,7 +107,7 @@ void grow_into_tiles(const GeosContext& geos, const std::vector<int>& order, int
   Box all = box_of(unclaimed);  // grown a little so that the first cuts hold every vertex
   all.lo -= Eigen::Vector2d::Constant(1.0), all.hi += Eigen::Vector2d::Constant(1.0);
   cut_into_tiles(geos, unclaimed.clone(), all, tiles);
-  sim::BoxGrid grid(8.0);
+  sim::world::BoxGrid grid(8.0);
   std::vector<Box> tile_boxes;  // as cut (a tile only shrinks after)
   for (std::size_t t = 0; t < tiles.size(); ++t) {
     tile_boxes.push_back(box_of(tiles[t]));

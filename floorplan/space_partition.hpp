@@ -27,8 +27,8 @@ namespace wifislam::floorplan {
 
 struct SpaceInput {
   std::string id, name;
-  sim::SpaceKind kind = sim::SpaceKind::kRoom;
-  sim::WallMaterial material = sim::WallMaterial::kBrick;
+  sim::scene::SpaceKind kind = sim::scene::SpaceKind::kRoom;
+  radio_model::WallMaterial material = radio_model::WallMaterial::kBrick;
   PolygonRings polygon_m;
 };
 

@@ -173,9 +173,9 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
     SpaceInput in;
     const double area = geos.polygon(p).area_m2();
     if (area < 0.5) continue;
-    in.kind = area >= 4.0 ? sim::SpaceKind::kArea : sim::SpaceKind::kRoom;
+    in.kind = area >= 4.0 ? sim::scene::SpaceKind::kArea : sim::scene::SpaceKind::kRoom;
     in.id = fmt::format("space-{}", inputs.size());
-    in.material = sim::WallMaterial::kBrick;
+    in.material = radio_model::WallMaterial::kBrick;
     in.polygon_m = std::move(p);
     inputs.push_back(std::move(in));
   }
@@ -189,8 +189,10 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
     else
       ++plan.counts.doors_not_placed;
   }
-  plan.counts.areas = static_cast<int>(std::count_if(
-      inputs.begin(), inputs.end(), [](const auto& i) { return i.kind == sim::SpaceKind::kArea; }));
+  plan.counts.areas =
+      static_cast<int>(std::count_if(inputs.begin(), inputs.end(), [](const auto& i) {
+        return i.kind == sim::scene::SpaceKind::kArea;
+      }));
   plan.counts.rooms = static_cast<int>(inputs.size()) - plan.counts.areas;
   plan.notes.push_back(fmt::format(
       "walls {:.2f} m thick (the median of the level's {} wall polygons); {} of {} door polygons "

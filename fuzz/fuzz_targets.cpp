@@ -163,14 +163,16 @@ void read_every_event(const fs::path& folder, bool verify_checksums) {
 
 void run_scene(const std::uint8_t* data, std::size_t size) {
   refusing_with_our_errors([&] {
-    const sim::Scene scene = sim::load_scene_yaml(std::string(as_text(data, size)), "fuzz.yaml");
-    const std::string resolved = sim::resolved_scene_yaml(scene);
-    check(sim::resolved_scene_yaml(sim::load_scene_yaml(resolved, "resolved.yaml")) == resolved,
+    const sim::scene::Scene scene =
+        sim::scene::load_scene_yaml(std::string(as_text(data, size)), "fuzz.yaml");
+    const std::string resolved = sim::scene::resolved_scene_yaml(scene);
+    check(sim::scene::resolved_scene_yaml(sim::scene::load_scene_yaml(resolved, "resolved.yaml")) ==
+              resolved,
           "scene: resolved YAML does not load back to the same scene");
-    sim::GenerateOptions options;
-    options.camera = sim::CameraOutput::kNoImages;
+    sim::generate::GenerateOptions options;
+    options.camera = sim::generate::CameraOutput::kNoImages;
     options.max_frames = kSceneFrameBudget;
-    sim::GenerationPipeline pipeline(scene, options);
+    sim::generate::GenerationPipeline pipeline(scene, options);
     for (int i = 0; i < kSceneEventBudget && pipeline.next(); ++i) {
     }
   });

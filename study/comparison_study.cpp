@@ -361,7 +361,7 @@ namespace {
 /// was generated from, whose plan the plots draw) and its options.
 struct RunJob {
   std::filesystem::path dataset;
-  std::shared_ptr<const sim::Site> site;
+  std::shared_ptr<const sim::site::Site> site;
   slam::SlamOptions slam;
   std::size_t case_index = 0;
   /// Our front ends run while the dataset is generated (study/streamed_runs.hpp): their wall
@@ -380,13 +380,13 @@ std::vector<bool> variants_of(const slam::SlamOptions& o) {
   return {false, true};
 }
 
-void check_comparison_input(const std::vector<sim::Scene>& scenes,
+void check_comparison_input(const std::vector<sim::scene::Scene>& scenes,
                             const ComparisonOptions& options) {
   if (scenes.empty()) throw InvalidInputError("compare: no scene given");
   if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
   if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
   std::map<std::string, int> names;
-  for (const sim::Scene& scene : scenes) {
+  for (const sim::scene::Scene& scene : scenes) {
     if (++names[scene.name] > 1) {
       throw InvalidInputError("compare: scene name '" + scene.name + "' given twice");
     }
@@ -415,13 +415,14 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
     runs.push_back(std::move(run));
     run_job_of.push_back(j);
   }
-  sim::GenerateOptions generate;
+  sim::generate::GenerateOptions generate;
   generate.max_frames = options.max_frames;
   // An external system reads the images from disk; otherwise colour only when the caller keeps
   // the dataset (the evaluation reads depth alone).
-  generate.camera = options.dataset_colour || any_external ? sim::CameraOutput::kColourAndDepth
-                                                           : sim::CameraOutput::kDepthOnly;
-  const sim::GenerateSummary g =
+  generate.camera = options.dataset_colour || any_external
+                        ? sim::generate::CameraOutput::kColourAndDepth
+                        : sim::generate::CameraOutput::kDepthOnly;
+  const sim::generate::GenerateSummary g =
       generate_with_runs(any.site, out_dir / any.dataset, generate, runs, options.jobs);
   progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s){}", any.dataset.string(),
                        g.frames, g.wifi_scans, g.total_s,
@@ -434,23 +435,24 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
 /// out the runs on it: every setting, vanilla and Wi-Fi. Our front ends' runs are run here, fed
 /// while the dataset is generated (`options.jobs` side by side); external systems' runs are
 /// left for run_job.
-std::vector<RunJob> generate_datasets(const std::vector<sim::Scene>& scenes,
+std::vector<RunJob> generate_datasets(const std::vector<sim::scene::Scene>& scenes,
                                       const ComparisonOptions& options,
                                       const std::vector<Setting>& settings,
                                       const std::filesystem::path& out_dir,
                                       const std::function<void(const std::string&)>& progress,
                                       ComparisonResult& result) {
   std::vector<RunJob> jobs;
-  for (const sim::Scene& scene : scenes) {
+  for (const sim::scene::Scene& scene : scenes) {
     result.scenes.push_back(scene.name);
     for (int k = 0; k < options.seeds; ++k) {
       const std::uint64_t seed = scene.seed + static_cast<std::uint64_t>(k);
       const std::string tag = fmt::format("{}-seed{}", scene.name, seed);
       const std::filesystem::path dataset = std::filesystem::path("datasets") / tag;
-      sim::GenerateOptions overrides;
+      sim::generate::GenerateOptions overrides;
       overrides.seed = seed;
       overrides.fps = options.fps;
-      auto site = std::make_shared<const sim::Site>(sim::resolve_scene(scene, overrides));
+      auto site =
+          std::make_shared<const sim::site::Site>(sim::generate::resolve_scene(scene, overrides));
       result.sites.push_back(site);
       const std::size_t first_job = jobs.size();
       for (std::size_t s = 0; s < settings.size(); ++s) {
@@ -548,7 +550,7 @@ std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& 
 
 }  // namespace
 
-ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
+ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
                                 const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir) {
   check_comparison_input(scenes, options);

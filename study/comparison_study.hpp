@@ -103,7 +103,7 @@ struct ComparisonResult {
   std::vector<PairDivergence> divergences;
   /// The site each dataset was generated from, per scene and seed in row order (scene's own seed
   /// first): callers draw its plan or radio map without building it again.
-  std::vector<std::shared_ptr<const sim::Site>> sites;
+  std::vector<std::shared_ptr<const sim::site::Site>> sites;
 
   /// The paper-style tables (one per metric) in Markdown; metrics averaged over seeds, counts
   /// summed.
@@ -118,7 +118,7 @@ bool assigns_slam_seed(const std::vector<std::string>& assignments);
 
 /// Runs the whole comparison, writing into `out_dir` (which must exist). Throws on bad input
 /// before any heavy work (unknown option key, bad value).
-ComparisonResult run_comparison(const std::vector<sim::Scene>& scenes,
+ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
                                 const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir);
 

@@ -59,10 +59,10 @@ namespace {
 
 /// The candidate positions of the site's plan; InvalidInputError when there are too many or
 /// fewer than the budget.
-std::vector<Eigen::Vector2d> candidate_spots(const sim::Site& site,
+std::vector<Eigen::Vector2d> candidate_spots(const sim::site::Site& site,
                                              const PlacementOptions& options) {
   const std::vector<Eigen::Vector2d> spots =
-      sim::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
+      sim::site::access_point_candidate_spots(site.world().plan, options.candidate_spacing_m);
   if (static_cast<int>(spots.size()) > kMaxPlacementCandidates) {
     throw InvalidInputError(
         fmt::format("{} candidate positions at {} m spacing (at most {}): give a larger --spacing",
@@ -79,21 +79,22 @@ std::vector<Eigen::Vector2d> candidate_spots(const sim::Site& site,
 
 /// Every pause's readings of an access point at every candidate: one simulation on the same
 /// building and route (`keys` receives each candidate's signature key, in candidate order).
-std::vector<PauseReadings> simulate_candidates(const sim::Site& site, const PlacementResult& result,
+std::vector<PauseReadings> simulate_candidates(const sim::site::Site& site,
+                                               const PlacementResult& result,
                                                const PlacementOptions& options,
                                                std::vector<slam::wifi::AccessPointKey>& keys) {
-  sim::AccessPoints all = site.scene().access_points;
-  all.placement = sim::ApPlacement::kExplicit;
+  sim::scene::AccessPoints all = site.scene().access_points;
+  all.placement = sim::scene::ApPlacement::kExplicit;
   all.explicit_list.clear();
   for (const Eigen::Vector3d& position_m : result.candidates) {
-    sim::AccessPointSpec spec;
+    sim::scene::AccessPointSpec spec;
     spec.position_m = position_m;  // z above the level's floor
     spec.level = result.level;
     all.explicit_list.push_back(spec);
   }
   all.count = static_cast<int>(result.candidates.size());
   const std::vector<PauseSample> every = simulate_pauses(
-      std::make_shared<const sim::Site>(site.with_access_points(all)), options.wifi, &keys);
+      std::make_shared<const sim::site::Site>(site.with_access_points(all)), options.wifi, &keys);
   std::map<slam::wifi::AccessPointKey, int> candidate_of;
   for (std::size_t i = 0; i < keys.size(); ++i) candidate_of[keys[i]] = static_cast<int>(i);
   std::vector<PauseReadings> pauses;
@@ -160,14 +161,14 @@ std::pair<int, RadioResolution> best_addition(const std::vector<PauseReadings>& 
 
 }  // namespace
 
-PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions& options) {
+PlacementResult greedy_placement(const sim::scene::Scene& scene, const PlacementOptions& options) {
   const auto progress = [&](const std::string& line) {
     if (options.on_progress) options.on_progress(line);
   };
   PlacementResult result;
 
   // The scene's own placement, for reference, and the plan the candidates stand in.
-  const auto site = std::make_shared<const sim::Site>(scene);
+  const auto site = std::make_shared<const sim::site::Site>(scene);
   const std::vector<PauseSample> own = simulate_pauses(site, options.wifi);
   result.scene_own = radio_resolution(own, options.wifi);
   for (const PauseSample& p : own) result.pause_positions_m.push_back(p.position_m);

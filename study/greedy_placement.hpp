@@ -74,7 +74,7 @@ struct PlacementResult {
   int scene_access_points = 0;
   RadioResolution scene_own;
   std::vector<Eigen::Vector2d> pause_positions_m;
-  sim::FloorPlan plan;  // for drawing
+  sim::world::FloorPlan plan;  // for drawing
   /// The level the candidates stand on, the route's (scene `levels:`; empty for one level).
   std::string level;
 };
@@ -88,7 +88,7 @@ std::vector<std::filesystem::path> plot_placement(const PlacementResult& result,
 
 /// Throws InvalidInputError when the route has fewer than two Wi-Fi pauses, or the budget exceeds
 /// the candidates, or the plan has too many.
-PlacementResult greedy_placement(const sim::Scene& scene, const PlacementOptions& options);
+PlacementResult greedy_placement(const sim::scene::Scene& scene, const PlacementOptions& options);
 
 /// (1 - near_similar_share) + far_similar_share: 0 when every pair under 4 m is similar and no
 /// pair over 12 m is; 2 at worst.

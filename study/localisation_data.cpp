@@ -59,13 +59,13 @@ class ImageCollector {
 
 /// The moving protocol's scans: the same scene scanning every `interval_s` throughout the run,
 /// without rendering (the scanner is part of the scene, so this pipeline builds its own site).
-std::vector<PositionedScan> moving_scans(const sim::Scene& resolved, double interval_s) {
-  sim::Scene moving = resolved;
+std::vector<PositionedScan> moving_scans(const sim::scene::Scene& resolved, double interval_s) {
+  sim::scene::Scene moving = resolved;
   moving.route.pause.scan_while_moving = true;
   moving.sensors.wifi.scan_interval_s = interval_s;
-  sim::GenerateOptions no_images;
-  no_images.camera = sim::CameraOutput::kNoImages;
-  sim::GenerationPipeline pipeline(moving, no_images);
+  sim::generate::GenerateOptions no_images;
+  no_images.camera = sim::generate::CameraOutput::kNoImages;
+  sim::generate::GenerationPipeline pipeline(moving, no_images);
   std::vector<PositionedScan> out;
   while (auto generated = pipeline.next()) {
     if (const auto* scan = std::get_if<WifiScan>(&generated->event)) {
@@ -98,26 +98,26 @@ Eigen::Vector2d position_at(const Trajectory& truth, Timestamp t, const fs::path
 }
 
 /// The route's level and the building's levels of a scene (empty for one level).
-void set_levels(const sim::Scene& scene, LocalisationData& data) {
-  if (!sim::has_levels(scene)) return;
-  data.level = sim::route_level(scene);
-  for (const sim::Level& level : scene.levels) data.building_levels.push_back(level.id);
+void set_levels(const sim::scene::Scene& scene, LocalisationData& data) {
+  if (!sim::scene::has_levels(scene)) return;
+  data.level = sim::scene::route_level(scene);
+  for (const sim::scene::Level& level : scene.levels) data.building_levels.push_back(level.id);
 }
 
 }  // namespace
 
-LocalisationData localisation_data_from_scene(const sim::Scene& scene,
+LocalisationData localisation_data_from_scene(const sim::scene::Scene& scene,
                                               const LocalisationDataOptions& options) {
-  sim::GenerateOptions overrides;
+  sim::generate::GenerateOptions overrides;
   overrides.seed = options.seed;
   overrides.fps = 1.0 / options.image_interval_s;  // render only the images the protocol takes
-  const sim::Scene resolved = sim::resolve_scene(scene, overrides);
+  const sim::scene::Scene resolved = sim::generate::resolve_scene(scene, overrides);
   LocalisationData data;
   data.description = fmt::format(
       "scene {} (seed {}), an image every {:g} s, pause scans and a "
       "scan every {:g} s while moving",
       resolved.name, resolved.seed, options.image_interval_s, options.moving_scan_interval_s);
-  sim::GenerationPipeline pipeline(std::make_shared<const sim::Site>(resolved), {});
+  sim::generate::GenerationPipeline pipeline(std::make_shared<const sim::site::Site>(resolved), {});
   ImageCollector images(options, resolved.sensors.camera.intrinsics);
   while (auto generated = pipeline.next()) {
     if (const auto* frame = std::get_if<RgbdFrame>(&generated->event)) {
@@ -149,9 +149,9 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
     throw InvalidInputError(truth_file.string() + ": missing (localisation is scored against it)");
   }
   const Trajectory truth = read_tum_trajectory(truth_file.string());
-  sim::SensorInputOptions input_options;
+  sim::generate::SensorInputOptions input_options;
   input_options.verify_checksums = options.verify_checksums;
-  sim::SensorInput input = sim::open_sensor_input(dataset, input_options);
+  sim::generate::SensorInput input = sim::generate::open_sensor_input(dataset, input_options);
   LocalisationData data;
   data.description = fmt::format(
       "dataset {}, an image every {:g} s, its wifi.csv for both "
@@ -172,7 +172,7 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
   data.moving_scans = data.pause_scans;
   data.wifi_source = (dataset / dataset::kWifi).string();
   if (fs::exists(dataset / dataset::kScene))
-    set_levels(sim::load_scene_file((dataset / dataset::kScene).string()), data);
+    set_levels(sim::scene::load_scene_file((dataset / dataset::kScene).string()), data);
   return data;
 }
 

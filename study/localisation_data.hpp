@@ -70,7 +70,7 @@ struct LocalisationDataOptions {
 };
 
 /// Both protocols simulated from `scene` (images rendered only at the image interval).
-LocalisationData localisation_data_from_scene(const sim::Scene& scene,
+LocalisationData localisation_data_from_scene(const sim::scene::Scene& scene,
                                               const LocalisationDataOptions& options);
 
 /// A dataset folder: every image at least `image_interval_s` after the last one taken, its

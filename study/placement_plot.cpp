@@ -26,7 +26,7 @@ void draw_positions(const fs::path& path, const PlacementResult& result,
   }
   const plot::MetricCanvas canvas(lo, hi, 900);
   plot::write_figure(path, canvas.width_px(), canvas.height_px(), [&](cairo_t* cr) {
-    sim::draw_plan_backdrop(cr, canvas, result.plan);
+    sim::world::draw_plan_backdrop(cr, canvas, result.plan);
     const plot::Colour candidate{0.70, 0.70, 0.70}, pause{0.12, 0.47, 0.71},
         chosen{0.84, 0.15, 0.16};
     plot::set_colour(cr, candidate);

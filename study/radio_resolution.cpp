@@ -13,12 +13,13 @@
 
 namespace wifislam::study {
 
-std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
+std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::site::Site> site,
                                          const slam::wifi::WifiOptions& wifi,
                                          std::vector<slam::wifi::AccessPointKey>* ap_keys) {
-  sim::GenerateOptions options;
-  options.camera = sim::CameraOutput::kNoFrames;  // the pauses need odometry and scans only
-  sim::GenerationPipeline pipeline(std::move(site), options);
+  sim::generate::GenerateOptions options;
+  options.camera =
+      sim::generate::CameraOutput::kNoFrames;  // the pauses need odometry and scans only
+  sim::generate::GenerationPipeline pipeline(std::move(site), options);
   if (ap_keys) {
     ap_keys->clear();
     for (const radio_model::AccessPoint& ap : pipeline.site().access_points())
@@ -35,7 +36,8 @@ std::vector<PauseSample> simulate_pauses(std::shared_ptr<const sim::Site> site,
     const auto* scan = std::get_if<WifiScan>(&generated->event);
     if (!scan) continue;
     tracker.observe_scan(*scan);
-    const sim::RobotState state = pipeline.motion().state_at(pipeline.route_time(scan->end_time));
+    const sim::robot::RobotState state =
+        pipeline.motion().state_at(pipeline.route_time(scan->end_time));
     if (tracker.pause_count() != pause) {
       pause = tracker.pause_count();
       out.push_back({state.position_m, *tracker.current()});

@@ -47,7 +47,7 @@ struct PauseSample {
 /// `ap_keys`, when given, receives each access point's signature key in the site's AP order
 /// (ids 0..n-1).
 std::vector<PauseSample> simulate_pauses(
-    std::shared_ptr<const sim::Site> site, const slam::wifi::WifiOptions& wifi,
+    std::shared_ptr<const sim::site::Site> site, const slam::wifi::WifiOptions& wifi,
     std::vector<slam::wifi::AccessPointKey>* ap_keys = nullptr);
 
 struct RadioResolution {

@@ -32,12 +32,12 @@ class RecordedDataset::Replay final : public SensorStream {
   std::size_t next_ = 0;
 };
 
-RecordedDataset::RecordedDataset(std::shared_ptr<const sim::Site> site,
+RecordedDataset::RecordedDataset(std::shared_ptr<const sim::site::Site> site,
                                  const std::filesystem::path& dataset_dir,
-                                 sim::GenerateOptions generate,
+                                 sim::generate::GenerateOptions generate,
                                  std::vector<slam::FeatureOptions> features, int threads)
     : dataset_dir_(dataset_dir),
-      facts_(sim::generated_stream_facts(
+      facts_(sim::generate::generated_stream_facts(
           *site, fmt::format("dataset {} (frames recorded as it was generated, features "
                              "extracted once)",
                              dataset_dir.filename().string()))) {
@@ -68,7 +68,7 @@ RecordedDataset::RecordedDataset(std::shared_ptr<const sim::Site> site,
     events_.push_back(std::move(event));
   };
   try {
-    summary_ = sim::generate_dataset(site, dataset_dir, generate);
+    summary_ = sim::generate::generate_dataset(site, dataset_dir, generate);
   } catch (...) {
     for (auto& f : in_flight) f.wait();
     throw;
@@ -106,8 +106,8 @@ void run_recorded(const RecordedDataset& dataset, std::vector<StreamedRun>& runs
     try {
       StreamedRun& run = runs[i];
       const auto stream = dataset.stream();
-      const auto system = slam::run_slam(*stream, run.slam, run.summary, {},
-                                         dataset.features(run.slam.features));
+      const auto system =
+          slam::run_slam(*stream, run.slam, run.summary, {}, dataset.features(run.slam.features));
       slam::write_run_folder(run.run_dir, *system, run.summary, /*overwrite=*/false, run.run_info);
       if (on_run_done) on_run_done(i);
     } catch (...) {

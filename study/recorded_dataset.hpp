@@ -31,14 +31,14 @@ class RecordedDataset {
   /// Generates `site`'s dataset into `dataset_dir` (`generate.on_event` must be unset) and
   /// records its events, extracting each frame's features for every entry of `features` on up to
   /// `threads` threads while the generation goes on. Rethrows the generation's failure.
-  RecordedDataset(std::shared_ptr<const sim::Site> site, const std::filesystem::path& dataset_dir,
-                  sim::GenerateOptions generate, std::vector<slam::FeatureOptions> features,
-                  int threads);
+  RecordedDataset(std::shared_ptr<const sim::site::Site> site,
+                  const std::filesystem::path& dataset_dir, sim::generate::GenerateOptions generate,
+                  std::vector<slam::FeatureOptions> features, int threads);
   ~RecordedDataset();
   RecordedDataset(const RecordedDataset&) = delete;
   RecordedDataset& operator=(const RecordedDataset&) = delete;
 
-  const sim::GenerateSummary& summary() const { return summary_; }
+  const sim::generate::GenerateSummary& summary() const { return summary_; }
   const std::filesystem::path& dataset_dir() const { return dataset_dir_; }
   /// A stream of the recorded events, for one run (frames carry no images).
   std::unique_ptr<SensorStream> stream() const;
@@ -51,7 +51,7 @@ class RecordedDataset {
   SensorStreamFacts facts_;
   std::vector<SensorEvent> events_;
   std::vector<std::unique_ptr<slam::FeatureStore>> stores_;
-  sim::GenerateSummary summary_;
+  sim::generate::GenerateSummary summary_;
 };
 
 /// Runs every run of `runs` on `dataset`'s recorded events, `jobs` at a time; each run's

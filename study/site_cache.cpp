@@ -14,7 +14,8 @@ namespace {
 
 struct Cache {
   std::mutex mutex;
-  std::list<std::pair<std::string, std::shared_ptr<const sim::Site>>> entries;  // recent first
+  std::list<std::pair<std::string, std::shared_ptr<const sim::site::Site>>>
+      entries;  // recent first
 };
 
 Cache& cache() {
@@ -22,18 +23,18 @@ Cache& cache() {
   return c;
 }
 
-std::string building_key(const sim::Scene& scene) {
-  sim::Scene without_aps = scene;
-  without_aps.access_points = sim::AccessPoints{};
-  return sha256_hex(sim::resolved_scene_yaml(without_aps));
+std::string building_key(const sim::scene::Scene& scene) {
+  sim::scene::Scene without_aps = scene;
+  without_aps.access_points = sim::scene::AccessPoints{};
+  return sha256_hex(sim::scene::resolved_scene_yaml(without_aps));
 }
 
 }  // namespace
 
-std::shared_ptr<const sim::Site> shared_site(const sim::Scene& scene) {
+std::shared_ptr<const sim::site::Site> shared_site(const sim::scene::Scene& scene) {
   const std::string key = building_key(scene);
   Cache& c = cache();
-  std::shared_ptr<const sim::Site> base;
+  std::shared_ptr<const sim::site::Site> base;
   {
     std::lock_guard lock(c.mutex);
     for (auto it = c.entries.begin(); it != c.entries.end(); ++it) {
@@ -43,8 +44,9 @@ std::shared_ptr<const sim::Site> shared_site(const sim::Scene& scene) {
       break;
     }
   }
-  if (base) return std::make_shared<const sim::Site>(base->with_access_points(scene.access_points));
-  auto site = std::make_shared<const sim::Site>(scene);
+  if (base)
+    return std::make_shared<const sim::site::Site>(base->with_access_points(scene.access_points));
+  auto site = std::make_shared<const sim::site::Site>(scene);
   std::lock_guard lock(c.mutex);
   c.entries.emplace_front(key, site);
   if (c.entries.size() > kSiteCacheSize) c.entries.pop_back();

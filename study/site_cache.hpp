@@ -22,6 +22,6 @@ inline constexpr std::size_t kSiteCacheSize = 8;
 
 /// The site of `scene`, built on a cached world and motion when an earlier scene had the same
 /// building, route and seed.
-std::shared_ptr<const sim::Site> shared_site(const sim::Scene& scene);
+std::shared_ptr<const sim::site::Site> shared_site(const sim::scene::Scene& scene);
 
 }  // namespace wifislam::study

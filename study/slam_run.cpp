@@ -55,12 +55,12 @@ SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   if (interop::is_external_frontend(request.options.frontend)) {
     return run_external_to_folder(request, replace, std::move(result));
   }
-  sim::SensorInputOptions input_options;
+  sim::generate::SensorInputOptions input_options;
   input_options.verify_checksums = request.verify_checksums;
   input_options.max_frames = request.max_frames;
   input_options.fps = request.fps;
   input_options.scene_seed = request.scene_seed;
-  sim::SensorInput input = sim::open_sensor_input(request.input, input_options);
+  sim::generate::SensorInput input = sim::generate::open_sensor_input(request.input, input_options);
   slam::RunSummary summary;
   const std::unique_ptr<slam::SlamSystem> system =
       slam::run_slam(*input.stream, request.options, summary, request.on_frame);

@@ -96,18 +96,17 @@ std::vector<std::size_t> take_group(std::vector<std::size_t>& waiting, int jobs)
 
 }  // namespace
 
-sim::GenerateSummary generate_with_runs(std::shared_ptr<const sim::Site> site,
-                                        const std::filesystem::path& dataset_dir,
-                                        sim::GenerateOptions generate,
-                                        std::vector<StreamedRun>& runs, int jobs,
-                                        const std::function<void(std::size_t)>& on_run_done) {
+sim::generate::GenerateSummary generate_with_runs(
+    std::shared_ptr<const sim::site::Site> site, const std::filesystem::path& dataset_dir,
+    sim::generate::GenerateOptions generate, std::vector<StreamedRun>& runs, int jobs,
+    const std::function<void(std::size_t)>& on_run_done) {
   if (generate.on_event) throw std::invalid_argument("generate_with_runs sets on_event itself");
   std::vector<std::size_t> waiting(runs.size());
   for (std::size_t i = 0; i < runs.size(); ++i) waiting[i] = i;
 
-  sim::GenerateSummary summary;
+  sim::generate::GenerateSummary summary;
   {
-    const SensorStreamFacts facts = sim::generated_stream_facts(
+    const SensorStreamFacts facts = sim::generate::generated_stream_facts(
         *site, fmt::format("dataset {} (frames streamed as it was generated)",
                            dataset_dir.filename().string()));
     RunGroup group(runs, take_group(waiting, jobs), facts, on_run_done);
@@ -115,7 +114,7 @@ sim::GenerateSummary generate_with_runs(std::shared_ptr<const sim::Site> site,
     waiting.insert(waiting.begin(), unstarted.begin(), unstarted.end());
     generate.on_event = [&group](SensorEvent event) { group.fanout().push(std::move(event)); };
     try {
-      summary = sim::generate_dataset(site, dataset_dir, generate);
+      summary = sim::generate::generate_dataset(site, dataset_dir, generate);
     } catch (const std::exception& e) {
       group.fanout().abort(e.what());
       throw;  // the group's destructor joins its threads
@@ -124,11 +123,11 @@ sim::GenerateSummary generate_with_runs(std::shared_ptr<const sim::Site> site,
     group.finish();
   }
   // More runs than jobs: render again in memory for each further group.
-  sim::GenerateOptions rerender;
+  sim::generate::GenerateOptions rerender;
   rerender.max_frames = generate.max_frames;
   rerender.render = generate.render;
   while (!waiting.empty()) {
-    sim::GeneratorStream stream(site, rerender);
+    sim::generate::GeneratorStream stream(site, rerender);
     RunGroup group(runs, take_group(waiting, jobs), SensorStreamFacts::of(stream), on_run_done);
     const std::vector<std::size_t> unstarted = group.start();
     waiting.insert(waiting.begin(), unstarted.begin(), unstarted.end());

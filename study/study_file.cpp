@@ -56,14 +56,14 @@ AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::strin
     }
     return AxisKind::kSlamOption;
   }
-  if (!sim::is_scene_key_path(key)) {
-    std::vector<std::string> known = sim::scene_key_paths();
+  if (!sim::scene::is_scene_key_path(key)) {
+    std::vector<std::string> known = sim::scene::scene_key_paths();
     for (const std::string& k : slam_option_keys()) known.push_back(k);
     known.push_back("frontend");
     known.push_back("system");
     r.fail(key_node, "axes." + key,
            "not a scene key, a SLAM option (slam.<option>), 'frontend' or 'system'" +
-               did_you_mean(sim::generic_key_path(key), known));
+               did_you_mean(sim::scene::generic_key_path(key), known));
   }
   return AxisKind::kSceneKey;
 }
@@ -140,9 +140,10 @@ void read_scene_set(const Reader& r, const YAML::Node& set, StudyFile& study) {
   if (!set.IsMap()) r.fail(set, "set", "expected a mapping of scene keys to values");
   for (const auto& kv : set) {
     const std::string key = kv.first.Scalar();
-    if (!sim::is_scene_key_path(key)) {
+    if (!sim::scene::is_scene_key_path(key)) {
       r.fail(kv.first, "set." + key,
-             "not a scene key" + did_you_mean(sim::generic_key_path(key), sim::scene_key_paths()));
+             "not a scene key" +
+                 did_you_mean(sim::scene::generic_key_path(key), sim::scene::scene_key_paths()));
     }
     if (!kv.second.IsScalar() && !kv.second.IsSequence()) {
       r.fail(kv.second, "set." + key, "expected a value or a list (e.g. a point [x, y])");

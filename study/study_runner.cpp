@@ -50,7 +50,7 @@ const YAML::Node& base_scene_yaml(const StudyFile& study) {
 
 }  // namespace
 
-sim::Scene case_scene(const StudyFile& study, const StudyCase& c) {
+sim::scene::Scene case_scene(const StudyFile& study, const StudyCase& c) {
   YAML::Node root;
   {
     const YAML::Node& base = base_scene_yaml(study);
@@ -63,14 +63,14 @@ sim::Scene case_scene(const StudyFile& study, const StudyCase& c) {
                                          c.id, study.path.string(), case_label(study, c));
   try {
     for (const auto& [key, value] : study.scene_set)
-      sim::set_scene_key(root, key, YAML::Load(value));
+      sim::scene::set_scene_key(root, key, YAML::Load(value));
     for (std::size_t a = 0; a < study.axes.size(); ++a) {
       if (study.axes[a].kind != AxisKind::kSceneKey) continue;
-      sim::set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
+      sim::scene::set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
     }
     YAML::Emitter out;
     out << root;
-    return sim::load_scene_yaml(out.c_str(), source);
+    return sim::scene::load_scene_yaml(out.c_str(), source);
   } catch (const YAML::Exception& e) {
     throw ParseError(study.path.string(), "case " + c.id,
                      fmt::format("{}: {}", case_label(study, c), e.what()));
@@ -193,9 +193,9 @@ ResultRow slam_run_row(const StudyFile& study, bool wifi, const std::string& sta
 std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
                                 const fs::path& scratch_dir, int jobs) {
   const auto start = Clock::now();
-  const sim::Scene scene = case_scene(study, c);
+  const sim::scene::Scene scene = case_scene(study, c);
   const slam::SlamOptions slam_options = case_slam_options(study, c);
-  const std::string scene_hash = sha256_hex(sim::resolved_scene_yaml(scene));
+  const std::string scene_hash = sha256_hex(sim::scene::resolved_scene_yaml(scene));
   if (study.level == StudyLevel::kRadio) {
     const RadioResolution r =
         radio_resolution(simulate_pauses(shared_site(scene), slam_options.wifi), slam_options.wifi);

@@ -45,7 +45,7 @@ struct StudyRunSummary {
 
 /// The base scene with the case's scene axes applied. Throws ParseError naming the study file,
 /// the case and the axis when a value does not make a valid scene.
-sim::Scene case_scene(const StudyFile& study, const StudyCase& c);
+sim::scene::Scene case_scene(const StudyFile& study, const StudyCase& c);
 /// The case's SLAM options: the study's slam.settings, then its slam.* and frontend axes.
 slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c);
 

@@ -42,7 +42,7 @@ struct CompareArgs {
 /// on our c_hall twin: min_matches 50 and 70, 5 seeds, 3 fps (the robot's 30 fps make one run
 /// ten times longer; the route, pauses and scans are the same). Options given explicitly win.
 void apply_preset(CompareArgs& args, const CLI::App& app,
-                  std::vector<wifislam::sim::Scene>& scenes) {
+                  std::vector<wifislam::sim::scene::Scene>& scenes) {
   using namespace wifislam;
   if (args.preset.empty()) return;
   if (args.preset != "paper-rgbdslam") {
@@ -59,8 +59,8 @@ void run(CompareArgs args, const CLI::App& app) {
   OutputFolderRequest output{args.output, args.force, {}, {}};
   for (const std::string& path : args.scenes) output.inputs.emplace_back(path);
   const bool replace = check_output_folder(output);
-  std::vector<sim::Scene> scenes;
-  for (const std::string& path : args.scenes) scenes.push_back(sim::load_scene_file(path));
+  std::vector<sim::scene::Scene> scenes;
+  for (const std::string& path : args.scenes) scenes.push_back(sim::scene::load_scene_file(path));
   apply_preset(args, app, scenes);
   if (scenes.empty()) {
     throw ParseError("compare", "scenes", "give scene files, or --preset paper-rgbdslam");

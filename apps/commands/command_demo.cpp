@@ -28,24 +28,25 @@ struct DemoArgs {
 };
 
 /// The plan and radio map of the site the comparison generated its dataset from.
-void draw_scene_pictures(const wifislam::sim::Site& site, const std::filesystem::path& dir) {
+void draw_scene_pictures(const wifislam::sim::site::Site& site, const std::filesystem::path& dir) {
   using namespace wifislam;
-  sim::draw_site_plan(site, dir / "plan.png");
+  sim::site::draw_site_plan(site, dir / "plan.png");
   // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
   // and with the shadowing of the dataset's scans.
   radio_model::RadioMapOptions map_options;
   map_options.receiver_height_m = site.receiver_height_m();
-  sim::draw_site_radio_map(site, map_options, dir / "radio_map.png");
-  write_file_atomic(dir / "scene.yaml", sim::resolved_scene_yaml(site.scene()));
+  sim::site::draw_site_radio_map(site, map_options, dir / "radio_map.png");
+  write_file_atomic(dir / "scene.yaml", sim::scene::resolved_scene_yaml(site.scene()));
 }
 
 void run_demo(const DemoArgs& args) {
   using namespace wifislam;
   const bool replace =
       check_output_folder({args.output_dir, args.force, kDefaultOutput, {args.scene_path}});
-  const sim::Scene scene = args.scene_path.empty()
-                               ? sim::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
-                               : sim::load_scene_file(args.scene_path);
+  const sim::scene::Scene scene =
+      args.scene_path.empty()
+          ? sim::scene::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
+          : sim::scene::load_scene_file(args.scene_path);
   AtomicDirectory out(args.output_dir, replace);
 
   // rgbdslam, one seed, min_matches 10: the low end of the paper's sweep, where vanilla RGBD-SLAM

@@ -82,9 +82,9 @@ void run(const EvalArgs& args) {
   const nlohmann::ordered_json flat = ev.flat_metrics();
   eval::check_metric_names(requirements, flat);
   eval::PlanBackdrop backdrop;
-  std::optional<sim::World> world;
+  std::optional<sim::world::World> world;
   if (!args.no_plots) {
-    world = sim::dataset_world(args.dataset_dir, backdrop.missing_reason);
+    world = sim::world::dataset_world(args.dataset_dir, backdrop.missing_reason);
     if (world) backdrop.plan = &world->plan;
   }
   eval::write_evaluation(out, ev, !args.no_plots, backdrop);

@@ -35,7 +35,7 @@ struct GenerateArgs {
 };
 
 // A one-line bar redrawn in place; only used when stderr is a terminal.
-void draw_progress(const wifislam::sim::GenerateProgress& p) {
+void draw_progress(const wifislam::sim::generate::GenerateProgress& p) {
   const int width = 30;
   const double f = p.frames_total > 0 ? static_cast<double>(p.frames_done) / p.frames_total : 1.0;
   const int filled = static_cast<int>(f * width);
@@ -51,26 +51,26 @@ void run_generate(const GenerateArgs& args) {
   std::vector<std::filesystem::path> inputs{args.scene_path};
   if (std::filesystem::exists(args.device)) inputs.push_back(args.device);
   const bool replace = check_output_folder({args.output, args.force, {}, inputs});
-  sim::Scene scene = sim::load_scene_file(args.scene_path);
+  sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   if (args.session) scene.session = *args.session;
   if (!args.device.empty()) {
     try {
-      scene.sensors.wifi.device = sim::load_receiver_device(args.device);
+      scene.sensors.wifi.device = sim::scene::load_receiver_device(args.device);
     } catch (const InvalidInputError& e) {
       throw InvalidInputError(fmt::format("--device: {}", e.what()));
     }
   }
-  sim::GenerateOptions options;
+  sim::generate::GenerateOptions options;
   options.seed = args.seed;
   options.fps = args.fps;
   options.max_frames = args.max_frames;
-  options.camera =
-      args.no_images ? sim::CameraOutput::kNoImages : sim::CameraOutput::kColourAndDepth;
+  options.camera = args.no_images ? sim::generate::CameraOutput::kNoImages
+                                  : sim::generate::CameraOutput::kColourAndDepth;
   options.threads = args.threads;
   options.overwrite = replace;
   if (cli::stderr_is_tty() && !args.quiet) {
     std::int64_t last_drawn = -1;
-    options.on_progress = [last_drawn](const sim::GenerateProgress& p) mutable {
+    options.on_progress = [last_drawn](const sim::generate::GenerateProgress& p) mutable {
       // Redraw at most ~200 times per run.
       const std::int64_t step = std::max<std::int64_t>(1, p.frames_total / 200);
       if (p.frames_done == p.frames_total || p.frames_done - last_drawn >= step) {
@@ -79,7 +79,8 @@ void run_generate(const GenerateArgs& args) {
       }
     };
   }
-  const sim::GenerateSummary summary = sim::generate_dataset(scene, args.output, options);
+  const sim::generate::GenerateSummary summary =
+      sim::generate::generate_dataset(scene, args.output, options);
   if (!args.quiet) fmt::print("{}", summary.full_report());
 }
 

@@ -82,7 +82,7 @@ void run_import(const ImportArgs& args) {
   if (args.access_points > 0) scene_options.access_points = args.access_points;
   if (!args.route.empty()) scene_options.route_m = parse_route(args.route);
   std::vector<std::filesystem::path> inputs = plan.input_files;
-  sim::Scene scene;
+  sim::scene::Scene scene;
   if (!args.all_levels) {
     scene = floorplan::imported_scene(plan, scene_options);
   } else {
@@ -113,7 +113,7 @@ void run_import(const ImportArgs& args) {
         scene_options.wall_height_m, floorplan::kImportedSlabThicknessM));
   }
   const std::string text = floorplan::imported_scene_yaml(plan, scene, attribution_lines(args));
-  sim::load_scene_yaml(text, args.output_path);  // what we write, our loader reads
+  sim::scene::load_scene_yaml(text, args.output_path);  // what we write, our loader reads
   // Now that the import knows every file it read (main.json, level and paths files beside the
   // plan, an IMDF folder's files, the attribution), none of them may be the output.
   if (args.attribution.empty()) inputs.push_back(attribution_file(args));

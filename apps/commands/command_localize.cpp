@@ -89,8 +89,8 @@ slam::place::FabMapTraining load_training(const LocalizeArgs& args) {
 }
 
 /// The scene, with --route's node sequence (e.g. two laps, so the queries revisit the map).
-sim::Scene scene_with_route(const LocalizeArgs& args, bool route_given) {
-  sim::Scene scene = sim::load_scene_file(args.input);
+sim::scene::Scene scene_with_route(const LocalizeArgs& args, bool route_given) {
+  sim::scene::Scene scene = sim::scene::load_scene_file(args.input);
   if (!route_given) return scene;
   if (args.route.empty() || args.route.front() == ',' || args.route.back() == ',' ||
       args.route.find(",,") != std::string::npos) {
@@ -100,7 +100,7 @@ sim::Scene scene_with_route(const LocalizeArgs& args, bool route_given) {
   std::stringstream in(args.route);
   for (std::string node; std::getline(in, node, ',');) scene.route.nodes.push_back(node);
   try {
-    sim::validate_scene(scene);
+    sim::scene::validate_scene(scene);
   } catch (const Error& e) {
     throw ParseError("--route", args.route, e.what());
   }
@@ -108,12 +108,12 @@ sim::Scene scene_with_route(const LocalizeArgs& args, bool route_given) {
 }
 
 /// The query run of --queries-session (and --queries-device): the input scene in that session.
-sim::Scene query_session_scene(const LocalizeArgs& args, bool route_given) {
-  sim::Scene scene = scene_with_route(args, route_given);
+sim::scene::Scene query_session_scene(const LocalizeArgs& args, bool route_given) {
+  sim::scene::Scene scene = scene_with_route(args, route_given);
   scene.session = *args.queries_session;
   if (!args.queries_device.empty()) {
     try {
-      scene.sensors.wifi.device = sim::load_receiver_device(args.queries_device);
+      scene.sensors.wifi.device = sim::scene::load_receiver_device(args.queries_device);
     } catch (const InvalidInputError& e) {
       throw InvalidInputError(fmt::format("--queries-device: {}", e.what()));
     }
@@ -167,17 +167,17 @@ void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {
         data,
         fs::is_directory(args.other_floor)
             ? study::localisation_data_from_dataset(args.other_floor, data_options)
-            : study::localisation_data_from_scene(sim::load_scene_file(args.other_floor),
+            : study::localisation_data_from_scene(sim::scene::load_scene_file(args.other_floor),
                                                   data_options),
         args.other_floor);
   }
   if (!args.queries.empty()) {
-    study::add_query_session(
-        data,
-        fs::is_directory(args.queries)
-            ? study::localisation_data_from_dataset(args.queries, data_options)
-            : study::localisation_data_from_scene(sim::load_scene_file(args.queries), data_options),
-        args.queries);
+    study::add_query_session(data,
+                             fs::is_directory(args.queries)
+                                 ? study::localisation_data_from_dataset(args.queries, data_options)
+                                 : study::localisation_data_from_scene(
+                                       sim::scene::load_scene_file(args.queries), data_options),
+                             args.queries);
   } else if (args.queries_session) {
     study::add_query_session(
         data,

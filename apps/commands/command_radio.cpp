@@ -39,7 +39,7 @@ struct CalibrateArgs {
   int held_out_positions = 5;
 };
 
-std::vector<cal::SurveyAccessPoint> scene_access_points(const wifislam::sim::Site& site) {
+std::vector<cal::SurveyAccessPoint> scene_access_points(const wifislam::sim::site::Site& site) {
   std::vector<cal::SurveyAccessPoint> aps;
   for (const auto& ap : site.access_points())
     aps.push_back({ap.id, ap.position_m, ap.tx_power_dbm, ""});
@@ -60,14 +60,14 @@ void run_calibrate(const CalibrateArgs& args) {
     inputs.push_back(extra);
   }
 
-  const sim::Scene scene = sim::load_scene_file(args.scene_path);
-  if (scene.radio.model != sim::PathLossModel::kItuWalls) {
+  const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
+  if (scene.radio.model != radio_model::PathLossModel::kItuWalls) {
     scene.reject("radio.model",
                  fmt::format("radio calibrate fits the itu_walls model; this scene uses {} (its N "
                              "and sigma come from the ITU tables)",
                              to_string(scene.radio.model)));
   }
-  const sim::Site site(scene);
+  const sim::site::Site site(scene);
   const double height_m = args.receiver_height_m.value_or(site.receiver_height_m());
   const auto format = args.format == "royal-holloway" ? cal::SurveyFormat::kRoyalHolloway
                                                       : cal::SurveyFormat::kLong;
@@ -81,7 +81,7 @@ void run_calibrate(const CalibrateArgs& args) {
   c.survey_path = args.survey_path;
   c.test_path = args.test_path;
   c.frequency_mhz = args.frequency_mhz;
-  const cal::SurveySite survey_site = sim::survey_site(site);
+  const cal::SurveySite survey_site = sim::site::survey_site(site);
   cal::Survey survey = cal::read_survey(args.survey_path, format, height_m);
   // A held-out device is left out of the fit and scored after it.
   cal::Survey held = survey;

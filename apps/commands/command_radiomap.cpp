@@ -32,8 +32,8 @@ void run_radiomap(const RadiomapArgs& args) {
   using namespace wifislam;
   check_output_file(args.output, {args.scene_path});
   if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
-  const sim::Scene scene = sim::load_scene_file(args.scene_path);
-  sim::require_level(scene, args.level, "--level");
+  const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
+  sim::scene::require_level(scene, args.level, "--level");
   const double ceiling_m = scene.building.wall_height_m;
   if (args.height_m && !(*args.height_m > 0.0 && *args.height_m < ceiling_m)) {
     throw InvalidInputError(fmt::format(
@@ -41,7 +41,7 @@ void run_radiomap(const RadiomapArgs& args) {
         "building.wall_height_m)",
         *args.height_m, ceiling_m));
   }
-  const sim::Site site(scene);
+  const sim::site::Site site(scene);
   radio_model::RadioMapOptions options;
   options.resolution_m = args.resolution_m;
   options.receiver_height_m = args.height_m.value_or(site.receiver_height_m());
@@ -50,7 +50,7 @@ void run_radiomap(const RadiomapArgs& args) {
                  : args.band == "5" ? radio_model::RadioMapBand::k5GHz
                                     : radio_model::RadioMapBand::kBest;
   const radio_model::RadioMap map =
-      sim::draw_site_radio_map(site, options, args.output, args.level);
+      sim::site::draw_site_radio_map(site, options, args.output, args.level);
   fmt::print("wrote {} ({} x {} cells at {} m, {} access points)\n", args.output, map.cols,
              map.rows, map.resolution_m, site.access_points().size());
   if (!args.csv.empty()) {

@@ -67,9 +67,9 @@ void run_render(const RenderArgs& args) {
   for (const std::string& path : {rgb_path, depth_path, color_path}) {
     check_output_file(path, {args.scene_path});
   }
-  const sim::Scene scene = sim::load_scene_file(args.scene_path);
-  const sim::World world = sim::generate_world(scene);
-  const sim::CameraSpec& camera = scene.sensors.camera;
+  const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
+  const sim::world::World world = sim::world::generate_world(scene);
+  const sim::scene::CameraSpec& camera = scene.sensors.camera;
   const double height_m = args.height_m.value_or(camera.height_m);
   if (!(height_m > 0.0 && height_m < world.plan.wall_height_m)) {
     throw InvalidInputError(
@@ -81,18 +81,18 @@ void run_render(const RenderArgs& args) {
       camera_pose_from_planar(planar.x_m, planar.y_m, planar.yaw_deg * std::numbers::pi / 180.0,
                               height_m, camera.pitch_deg * std::numbers::pi / 180.0);
 
-  sim::RgbdRenderer renderer(camera.intrinsics);
+  sim::render::RgbdRenderer renderer(camera.intrinsics);
   renderer.set_world(world, scene);
-  const sim::RenderedView view = renderer.render(pose);
-  sim::DepthSensorSpec depth_spec = scene.sensors.depth;
+  const sim::render::RenderedView view = renderer.render(pose);
+  sim::scene::DepthSensorSpec depth_spec = scene.sensors.depth;
   if (args.no_noise) depth_spec.noise = depth_spec.quantisation = depth_spec.dropouts = false;
-  const sim::DepthSensorModel sensor(depth_spec, camera.intrinsics, scene.seed);
+  const sim::render::DepthSensorModel sensor(depth_spec, camera.intrinsics, scene.seed);
   const cv::Mat depth_m = sensor.measure(view, args.frame_index);
 
-  sim::write_color_png(rgb_path, view.color_bgr);
-  sim::write_depth_png(depth_path, depth_m);
-  sim::write_depth_false_color_png(color_path, depth_m, depth_spec.min_range_m,
-                                   depth_spec.max_range_m);
+  sim::render::write_color_png(rgb_path, view.color_bgr);
+  sim::render::write_depth_png(depth_path, depth_m);
+  sim::render::write_depth_false_color_png(color_path, depth_m, depth_spec.min_range_m,
+                                           depth_spec.max_range_m);
 
   double lo = 0, hi = 0;
   const int readings = cv::countNonZero(depth_m > 0.0f);

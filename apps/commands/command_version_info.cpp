@@ -27,7 +27,7 @@ namespace {
 /// OpenGL through OSMesa, as the renderer gets it; why not, when it cannot.
 std::string opengl_version() {
   try {
-    const wifislam::sim::OsmesaContext context;
+    const wifislam::sim::render::OsmesaContext context;
     return context.gl_version() + " (" + context.gl_renderer() + ")";
   } catch (const wifislam::EnvironmentError& error) {
     return std::string("unavailable: ") + error.what();

@@ -39,11 +39,11 @@ struct TrainArgs {
 };
 
 /// A scene is rendered at --fps; a folder is read, every --every-th frame.
-sim::SensorInput open_input(const TrainArgs& args, const fs::path& input) {
-  sim::SensorInputOptions options;
+sim::generate::SensorInput open_input(const TrainArgs& args, const fs::path& input) {
+  sim::generate::SensorInputOptions options;
   options.fps = args.fps;
   options.refuse_scene_options_for_datasets = false;  // --fps is the scenes' rate
-  return sim::open_sensor_input(input, options);
+  return sim::generate::open_sensor_input(input, options);
 }
 
 /// ORB descriptors of every training frame of `inputs`: scenes rendered at --fps, folders read
@@ -54,7 +54,7 @@ std::vector<cv::Mat> training_descriptors(const TrainArgs& args,
   features.max_keypoints = args.max_keypoints;
   std::vector<cv::Mat> images;
   for (const fs::path& input : inputs) {
-    const sim::SensorInput opened = open_input(args, input);
+    const sim::generate::SensorInput opened = open_input(args, input);
     SensorStream* stream = opened.stream.get();
     const int every = opened.is_scene ? 1 : args.every;
     const slam::OrbFeatureExtractor orb(features, stream->intrinsics());

@@ -25,32 +25,32 @@ struct WorldArgs {
 void run_world(const WorldArgs& args) {
   using namespace wifislam;
   if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
-  const sim::Scene scene = sim::load_scene_file(args.scene_path);
-  sim::require_level(scene, args.level, "--level");
+  const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
+  sim::scene::require_level(scene, args.level, "--level");
   // The site as `generate` builds it: a route `world` accepts is one `generate` can drive, and
   // the access points are the ones the dataset's scans hear.
-  const sim::Site site(scene);
-  const sim::World& world = site.world();
-  const sim::MotionProfile& motion = site.motion();
+  const sim::site::Site site(scene);
+  const sim::world::World& world = site.world();
+  const sim::robot::MotionProfile& motion = site.motion();
   const std::vector<radio_model::AccessPoint>& access_points = site.access_points();
   if (!args.plan_path.empty()) {
     const std::filesystem::path png = args.plan_path;
-    sim::draw_site_plan(site, png, args.level);
+    sim::site::draw_site_plan(site, png, args.level);
     fmt::print("wrote {}\n", png.string());
     if (args.svg && png.extension() != ".svg") {
       const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
       check_output_file(svg, {args.scene_path});
-      sim::draw_site_plan(site, svg, args.level);
+      sim::site::draw_site_plan(site, svg, args.level);
       fmt::print("wrote {}\n", svg.string());
     }
   }
   fmt::print("scene: {}\n{}route time: {:.1f} s ({} pauses)\naccess points: {}\n", scene.name,
-             sim::summarize_world(world).to_text(), motion.end_time().seconds(),
+             sim::world::summarize_world(world).to_text(), motion.end_time().seconds(),
              motion.pauses().size(), access_points.size());
   if (!world.storeys.empty()) {
     // The summary above is of the route's level; the others are in the radio's building.
     std::string levels;
-    for (const sim::Storey& storey : world.storeys)
+    for (const sim::world::Storey& storey : world.storeys)
       levels +=
           fmt::format("{}{} at {:g} m{}", levels.empty() ? "" : ", ", storey.level_id,
                       storey.elevation_m, storey.level_id == world.level_id ? " (route)" : "");

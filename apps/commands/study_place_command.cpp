@@ -30,7 +30,7 @@ struct PlaceArgs {
 };
 
 void place_command(const PlaceArgs& args) {
-  const sim::Scene scene = sim::load_scene_file(args.scene);
+  const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene);
   slam::SlamOptions slam_options;
   for (const std::string& s : args.settings) slam::set_option_assignment(slam_options, s);
   slam::validate(slam_options);

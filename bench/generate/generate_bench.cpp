@@ -48,23 +48,24 @@ fs::path bench_folder() {
   return fs::path(dir ? dir : fs::temp_directory_path().string()) / "wifislam_generate_bench";
 }
 
-const sim::Scene& c_hall() {
-  static const sim::Scene scene =
-      sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+const sim::scene::Scene& c_hall() {
+  static const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   return scene;
 }
 
 void BM_Generate(benchmark::State& state) {
   const std::int64_t frames = state.range(0);
   const bool images = state.range(1) != 0;
-  sim::GenerateOptions options;
+  sim::generate::GenerateOptions options;
   options.max_frames = frames;
-  options.camera = images ? sim::CameraOutput::kColourAndDepth : sim::CameraOutput::kNoImages;
+  options.camera = images ? sim::generate::CameraOutput::kColourAndDepth
+                          : sim::generate::CameraOutput::kNoImages;
   options.overwrite = true;
-  sim::GenerateSummary summary;
+  sim::generate::GenerateSummary summary;
   for (auto _ : state) {
     reset_peak_memory();
-    summary = sim::generate_dataset(c_hall(), bench_folder(), options);
+    summary = sim::generate::generate_dataset(c_hall(), bench_folder(), options);
     state.SetIterationTime(summary.total_s);
   }
   const double peak_mb = peak_memory_mb();
@@ -83,11 +84,11 @@ void BM_Generate(benchmark::State& state) {
   state.counters["threads"] = summary.threads;
   if (images && summary.frames > 0) {
     // Baseline: the renderer alone on the first 200 frame poses.
-    sim::GenerateOptions bare_options = options;
+    sim::generate::GenerateOptions bare_options = options;
     bare_options.max_frames = std::min<std::int64_t>(frames, 200);
-    sim::GenerationPipeline pipeline(c_hall(), bare_options);
-    sim::RgbdRenderer& renderer = *pipeline.renderer();
-    sim::RenderedView view;
+    sim::generate::GenerationPipeline pipeline(c_hall(), bare_options);
+    sim::render::RgbdRenderer& renderer = *pipeline.renderer();
+    sim::render::RenderedView view;
     std::int64_t n = 0;
     const auto t0 = std::chrono::steady_clock::now();
     for (std::int64_t k = 0; k < pipeline.schedule().frame_count(); ++k, ++n) {

@@ -33,7 +33,7 @@ double thread_cpu_s() {
 }
 
 struct JHall {
-  std::unique_ptr<sim::Site> site;
+  std::unique_ptr<sim::site::Site> site;
   std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> segments;  // 30 m each
 };
 
@@ -42,7 +42,7 @@ const JHall& j_hall() {
     auto* h = new JHall;
     // WIFISLAM_BENCH_SCENE picks another scene file (e.g. to compare halls).
     const char* other = std::getenv("WIFISLAM_BENCH_SCENE");
-    h->site = std::make_unique<sim::Site>(sim::load_scene_file(
+    h->site = std::make_unique<sim::site::Site>(sim::scene::load_scene_file(
         other ? std::string(other) : std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml"));
     Rng rng = Rng::stream(1, "bench/segments");
     const auto& lo = h->site->world().plan.bounds_min_m;
@@ -105,7 +105,7 @@ void BM_WallCrossingRowsVsBareEmbree(benchmark::State& state) {
       for (double x = plan.bounds_min_m.x() + 0.125; x < plan.bounds_max_m.x(); x += 0.25) {
         const Eigen::Vector3d cell(x, y, 1.0);
         if ((cell - ap.position_m).norm() <= 30.0 &&
-            sim::regions_contain(plan.free_space, cell.head<2>()))
+            sim::world::regions_contain(plan.free_space, cell.head<2>()))
           segments.emplace_back(ap.position_m, cell);
       }
   std::vector<radio_model::WallCrossing> out;
@@ -143,7 +143,7 @@ void BM_RadioMapJHallAllAps(benchmark::State& state) {
   std::size_t cells = 0;
   for (auto _ : state) {
     const radio_model::RadioMap map =
-        sim::compute_radio_map(h.site->radio(), h.site->world().plan, options);
+        sim::site::compute_radio_map(h.site->radio(), h.site->world().plan, options);
     cells = 0;
     for (float v : map.rssi_dbm) cells += std::isfinite(v);
     benchmark::DoNotOptimize(map.rssi_dbm.data());

@@ -46,8 +46,8 @@ int main(int argc, char** argv) {
   }
   constexpr int kSegments = 200000;
   for (const std::string& file : files) {
-    const sim::World world = sim::generate_world(sim::load_scene_file(file));
-    const radio_model::EmbreeWallScene walls(sim::radio_wall_mesh(world.mesh));
+    const sim::world::World world = sim::world::generate_world(sim::scene::load_scene_file(file));
+    const radio_model::EmbreeWallScene walls(sim::world::radio_wall_mesh(world.mesh));
     const Eigen::Vector2d lo = world.plan.bounds_min_m, hi = world.plan.bounds_max_m;
     Rng rng = Rng::stream(7, "bench/wall_crossing_digest");
     std::string bytes;

@@ -47,8 +47,8 @@ namespace {
 // The workload: a shipped scene's generated world (Arg 0) or the hand-built corridor of the
 // tests (Arg 1), seen from poses along the route.
 struct Workload {
-  sim::Mesh mesh;
-  std::vector<sim::CeilingLight> lights;
+  sim::world::Mesh mesh;
+  std::vector<sim::world::CeilingLight> lights;
   std::uint64_t seed = 3;
   std::vector<Pose> poses;
 };
@@ -56,9 +56,9 @@ struct Workload {
 const Workload& workload(int which) {
   static const Workload scene_workload = [] {
     Workload w;
-    const sim::Scene scene =
-        sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
-    const sim::World world = sim::generate_world(scene);
+    const sim::scene::Scene scene =
+        sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
+    const sim::world::World world = sim::world::generate_world(scene);
     w.mesh = world.mesh;
     w.lights = world.plan.lights;
     w.seed = scene.seed;
@@ -111,18 +111,20 @@ class BareRenderer {
  public:
   explicit BareRenderer(const Workload& work) : k_(CameraIntrinsics::kinect_v1()) {
     context_.make_current();
-    const sim::ProceduralTextures generator(work.seed, sim::AppearanceThemes{});
-    std::map<sim::TextureKey, sim::TextureImage> images;
-    for (const sim::Triangle& t : work.mesh.triangles) {
-      if (!images.contains(sim::texture_key_of(t)))
-        images.emplace(sim::texture_key_of(t), generator.make(sim::texture_key_of(t)));
+    const sim::render::ProceduralTextures generator(work.seed, sim::scene::AppearanceThemes{});
+    std::map<sim::render::TextureKey, sim::render::TextureImage> images;
+    for (const sim::world::Triangle& t : work.mesh.triangles) {
+      if (!images.contains(sim::render::texture_key_of(t)))
+        images.emplace(sim::render::texture_key_of(t),
+                       generator.make(sim::render::texture_key_of(t)));
     }
     for (const auto& [key, image] : images)
-      textures_.emplace(key, std::make_unique<sim::GlTexture>(image));
-    mesh_ = std::make_unique<sim::GlMesh>(sim::batch_mesh(
-        work.mesh,
-        [&](const sim::TextureKey& key) -> const sim::TextureImage& { return images.at(key); }));
-    program_ = std::make_unique<sim::GlProgram>(kBareVertex, kBareFragment);
+      textures_.emplace(key, std::make_unique<sim::render::GlTexture>(image));
+    mesh_ = std::make_unique<sim::render::GlMesh>(sim::render::batch_mesh(
+        work.mesh, [&](const sim::render::TextureKey& key) -> const sim::render::TextureImage& {
+          return images.at(key);
+        }));
+    program_ = std::make_unique<sim::render::GlProgram>(kBareVertex, kBareFragment);
     glGenFramebuffers(1, &framebuffer_);
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
     glGenRenderbuffers(2, targets_);
@@ -148,12 +150,13 @@ class BareRenderer {
 
   void frame(const Pose& camera_to_world) {
     context_.make_current();
-    const Eigen::Matrix4f world_to_clip = sim::RgbdRenderer::projection_matrix(k_, 0.05, 40.0) *
-                                          camera_to_world.inverse().matrix().cast<float>();
+    const Eigen::Matrix4f world_to_clip =
+        sim::render::RgbdRenderer::projection_matrix(k_, 0.05, 40.0) *
+        camera_to_world.inverse().matrix().cast<float>();
     glUniformMatrix4fv(world_to_clip_location_, 1, GL_FALSE, world_to_clip.data());
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     mesh_->bind();
-    for (const sim::MeshBatch& batch : mesh_->batches()) {
+    for (const sim::render::MeshBatch& batch : mesh_->batches()) {
       textures_.at(batch.key)->bind();
       mesh_->draw(batch);
     }
@@ -165,10 +168,10 @@ class BareRenderer {
 
  private:
   CameraIntrinsics k_;
-  sim::OsmesaContext context_;
-  std::map<sim::TextureKey, std::unique_ptr<sim::GlTexture>> textures_;
-  std::unique_ptr<sim::GlMesh> mesh_;
-  std::unique_ptr<sim::GlProgram> program_;
+  sim::render::OsmesaContext context_;
+  std::map<sim::render::TextureKey, std::unique_ptr<sim::render::GlTexture>> textures_;
+  std::unique_ptr<sim::render::GlMesh> mesh_;
+  std::unique_ptr<sim::render::GlProgram> program_;
   unsigned framebuffer_ = 0, targets_[2] = {0, 0};
   GLint world_to_clip_location_ = -1;
   std::vector<unsigned char> color_;
@@ -187,11 +190,11 @@ struct HarnessAndBare {
       : work(workload(which)),
         bare(work),
         renderer(k, options_from_environment()),
-        sensor(sim::DepthSensorSpec{}, k, work.seed) {
-    renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
+        sensor(sim::scene::DepthSensorSpec{}, k, work.seed) {
+    renderer.set_world(work.mesh, work.lights, work.seed, sim::scene::AppearanceThemes{});
   }
-  static sim::RenderOptions options_from_environment() {
-    sim::RenderOptions options;
+  static sim::render::RenderOptions options_from_environment() {
+    sim::render::RenderOptions options;
     if (const char* lights = std::getenv("WIFISLAM_BENCH_LIGHTS"))
       options.max_lights = std::atoi(lights);
     return options;
@@ -203,9 +206,9 @@ struct HarnessAndBare {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work;
   BareRenderer bare;
-  sim::RgbdRenderer renderer;
-  const sim::DepthSensorModel sensor;
-  sim::RenderedView view;
+  sim::render::RgbdRenderer renderer;
+  const sim::render::DepthSensorModel sensor;
+  sim::render::RenderedView view;
   cv::Mat measured;
 };
 
@@ -289,12 +292,12 @@ void BM_PipelinedVsBare(benchmark::State& state) {
 void BM_SensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work = workload(0);
-  sim::RgbdRenderer renderer(k);
-  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
-  sim::DepthSensorSpec spec;
+  sim::render::RgbdRenderer renderer(k);
+  renderer.set_world(work.mesh, work.lights, work.seed, sim::scene::AppearanceThemes{});
+  sim::scene::DepthSensorSpec spec;
   spec.lateral_noise = state.range(0) == 1;
-  const sim::DepthSensorModel sensor(spec, k, work.seed);
-  const sim::RenderedView view = renderer.render(work.poses[5]);
+  const sim::render::DepthSensorModel sensor(spec, k, work.seed);
+  const sim::render::RenderedView view = renderer.render(work.poses[5]);
   cv::Mat measured;
   std::int64_t frame = 0;
   for (auto _ : state) {
@@ -308,13 +311,13 @@ void BM_SensorModelOnly(benchmark::State& state) {
 void BM_ColorSensorModelOnly(benchmark::State& state) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const Workload& work = workload(0);
-  sim::RgbdRenderer renderer(k);
-  renderer.set_world(work.mesh, work.lights, work.seed, sim::AppearanceThemes{});
-  sim::ColorSensorSpec spec;
+  sim::render::RgbdRenderer renderer(k);
+  renderer.set_world(work.mesh, work.lights, work.seed, sim::scene::AppearanceThemes{});
+  sim::scene::ColorSensorSpec spec;
   spec.noise = (state.range(0) & 1) != 0;
   spec.auto_exposure = (state.range(0) & 2) != 0;
-  sim::ColorSensorModel sensor(spec, 30.0, work.seed);
-  const sim::RenderedView view = renderer.render(work.poses[5]);
+  sim::render::ColorSensorModel sensor(spec, 30.0, work.seed);
+  const sim::render::RenderedView view = renderer.render(work.poses[5]);
   cv::Mat measured;
   std::int64_t frame = 0;
   for (auto _ : state) {

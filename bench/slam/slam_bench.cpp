@@ -40,14 +40,14 @@ void BM_RgbdslamVersusBareOrb(benchmark::State& state) {
   for (std::string item; std::getline(settings, item, ',');) {
     if (!item.empty()) slam::set_option_assignment(options, item);
   }
-  const sim::Scene scene =
-      sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + scene_name + ".yaml");
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + scene_name + ".yaml");
 
   for (auto _ : state) {
-    sim::GenerateOptions generate;
+    sim::generate::GenerateOptions generate;
     generate.fps = fps;
     generate.max_frames = max_frames;
-    sim::GeneratorStream stream(scene, generate);
+    sim::generate::GeneratorStream stream(scene, generate);
     slam::SlamSystem system(options, {stream.intrinsics(), stream.camera_in_base(),
                                       stream.has_wifi(), stream.has_odometry()});
     const cv::Ptr<cv::ORB> orb = cv::ORB::create(

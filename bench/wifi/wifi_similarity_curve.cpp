@@ -31,11 +31,12 @@ struct PauseSample {
   wifi::WifiSignature signature;
 };
 
-std::vector<PauseSample> pause_samples(const sim::Scene& scene, const std::filesystem::path& tmp) {
-  sim::GenerateOptions options;
-  options.camera = sim::CameraOutput::kNoImages;
+std::vector<PauseSample> pause_samples(const sim::scene::Scene& scene,
+                                       const std::filesystem::path& tmp) {
+  sim::generate::GenerateOptions options;
+  options.camera = sim::generate::CameraOutput::kNoImages;
   options.overwrite = true;
-  sim::generate_dataset(scene, tmp, options);
+  sim::generate::generate_dataset(scene, tmp, options);
   const std::vector<WifiScan> scans = read_wifi_csv((tmp / "wifi.csv").string());
   const Trajectory truth = read_tum_trajectory((tmp / "groundtruth.txt").string());
   std::vector<PauseSample> out;
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
   const wifi::WifiOptions defaults;
   const auto tmp = std::filesystem::temp_directory_path() / "wifislam_similarity_curve";
   for (const auto& path : scenes) {
-    const sim::Scene scene = sim::load_scene_file(path.string());
+    const sim::scene::Scene scene = sim::scene::load_scene_file(path.string());
     const std::vector<PauseSample> pauses = pause_samples(scene, tmp);
     std::map<int, std::vector<double>> bins;
     int near = 0, near_similar = 0, far = 0, far_similar = 0;

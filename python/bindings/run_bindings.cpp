@@ -42,7 +42,7 @@ py::object to_python(const nlohmann::ordered_json& json) {
   return py::module_::import("json").attr("loads")(json.dump());
 }
 
-py::dict generate_summary_dict(const sim::GenerateSummary& s) {
+py::dict generate_summary_dict(const sim::generate::GenerateSummary& s) {
   py::dict out;
   out["dataset"] = fs::absolute(s.output).lexically_normal().string();
   out["scene"] = s.scene_name;
@@ -67,22 +67,23 @@ py::dict generate_summary_dict(const sim::GenerateSummary& s) {
 
 /// `generate`: `scene_path` is the file the scene came from (an input that must not be
 /// replaced), empty for a scene built from a dict.
-py::dict generate(const sim::Scene& scene, const fs::path& output,
+py::dict generate(const sim::scene::Scene& scene, const fs::path& output,
                   std::optional<std::uint64_t> seed, std::optional<double> fps,
                   std::int64_t max_frames, bool images, int threads, bool force) {
   std::vector<fs::path> inputs;
   if (!scene.source_path.empty()) inputs.push_back(scene.source_path);
-  sim::GenerateOptions options;
+  sim::generate::GenerateOptions options;
   options.seed = seed;
   options.fps = fps;
   options.max_frames = max_frames;
-  options.camera = images ? sim::CameraOutput::kColourAndDepth : sim::CameraOutput::kNoImages;
+  options.camera = images ? sim::generate::CameraOutput::kColourAndDepth
+                          : sim::generate::CameraOutput::kNoImages;
   options.threads = threads;
-  sim::GenerateSummary summary;
+  sim::generate::GenerateSummary summary;
   {
     py::gil_scoped_release release;
     options.overwrite = check_output_folder({output, force, {}, inputs});
-    summary = sim::generate_dataset(scene, output, options);
+    summary = sim::generate::generate_dataset(scene, output, options);
   }
   return generate_summary_dict(summary);
 }

@@ -63,7 +63,7 @@ py::object yaml_to_python(const YAML::Node& node) {
 }  // namespace
 
 void bind_scene(py::module_& m) {
-  py::class_<sim::Scene, std::shared_ptr<sim::Scene>>(
+  py::class_<sim::scene::Scene, std::shared_ptr<sim::scene::Scene>>(
       m, "Scene",
       "A scene: building, appearance, access points, route and sensors (scenes/README.md).\n\n"
       "Scene.load(path) reads a scene file, Scene.from_dict(d) takes a dict of the same schema\n"
@@ -74,25 +74,28 @@ void bind_scene(py::module_& m) {
       .def_static(
           "load",
           [](const std::string& path) {
-            return std::make_shared<sim::Scene>(sim::load_scene_file(path));
+            return std::make_shared<sim::scene::Scene>(sim::scene::load_scene_file(path));
           },
           py::arg("path"))
       .def_static(
           "from_yaml",
           [](const std::string& text, const std::string& source_name) {
-            return std::make_shared<sim::Scene>(sim::load_scene_yaml(text, source_name));
+            return std::make_shared<sim::scene::Scene>(
+                sim::scene::load_scene_yaml(text, source_name));
           },
           py::arg("text"), py::arg("source_name") = "<yaml>")
-      .def("to_yaml", [](const sim::Scene& scene) { return sim::resolved_scene_yaml(scene); })
+      .def("to_yaml",
+           [](const sim::scene::Scene& scene) { return sim::scene::resolved_scene_yaml(scene); })
       .def("to_dict",
-           [](const sim::Scene& scene) {
-             return yaml_to_python(YAML::Load(sim::resolved_scene_yaml(scene)));
+           [](const sim::scene::Scene& scene) {
+             return yaml_to_python(YAML::Load(sim::scene::resolved_scene_yaml(scene)));
            })
-      .def_property_readonly("name", [](const sim::Scene& s) { return s.name; })
-      .def_property_readonly("seed", [](const sim::Scene& s) { return s.seed; })
-      .def_property_readonly("fps", [](const sim::Scene& s) { return s.sensors.camera.fps; })
-      .def_property_readonly("source_path", [](const sim::Scene& s) { return s.source_path; })
-      .def("__repr__", [](const sim::Scene& s) {
+      .def_property_readonly("name", [](const sim::scene::Scene& s) { return s.name; })
+      .def_property_readonly("seed", [](const sim::scene::Scene& s) { return s.seed; })
+      .def_property_readonly("fps", [](const sim::scene::Scene& s) { return s.sensors.camera.fps; })
+      .def_property_readonly("source_path",
+                             [](const sim::scene::Scene& s) { return s.source_path; })
+      .def("__repr__", [](const sim::scene::Scene& s) {
         return "<wifislam.Scene '" + s.name + "' seed " + std::to_string(s.seed) +
                (s.source_path.empty() ? "" : " from " + s.source_path) + ">";
       });

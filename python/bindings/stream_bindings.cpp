@@ -110,17 +110,17 @@ class FrameSource {
 
 class SimulatorSource final : public FrameSource {
  public:
-  SimulatorSource(const sim::Scene& scene, const sim::GenerateOptions& options)
+  SimulatorSource(const sim::scene::Scene& scene, const sim::generate::GenerateOptions& options)
       : stream_(scene, options) {}
   SensorStream& stream() override { return stream_; }
   std::optional<Pose> ground_truth(const RgbdFrame&) const override {
     return stream_.last_frame_ground_truth();
   }
-  const sim::Scene& scene() const { return stream_.pipeline().scene(); }
+  const sim::scene::Scene& scene() const { return stream_.pipeline().scene(); }
   std::int64_t frame_count() const { return stream_.pipeline().schedule().frame_count(); }
 
  private:
-  sim::GeneratorStream stream_;
+  sim::generate::GeneratorStream stream_;
 };
 
 class DatasetSource final : public FrameSource {
@@ -178,14 +178,14 @@ void bind_streams(py::module_& m) {
   py::class_<FrameSource>(m, "_FrameSource");
   auto simulator =
       py::class_<SimulatorSource, FrameSource>(m, "_Simulator")
-          .def(py::init([](const sim::Scene& scene, std::optional<std::uint64_t> seed,
+          .def(py::init([](const sim::scene::Scene& scene, std::optional<std::uint64_t> seed,
                            std::optional<double> fps, std::int64_t max_frames, bool images) {
-                 sim::GenerateOptions options;
+                 sim::generate::GenerateOptions options;
                  options.seed = seed;
                  options.fps = fps;
                  options.max_frames = max_frames;
-                 options.camera =
-                     images ? sim::CameraOutput::kColourAndDepth : sim::CameraOutput::kNoImages;
+                 options.camera = images ? sim::generate::CameraOutput::kColourAndDepth
+                                         : sim::generate::CameraOutput::kNoImages;
                  py::gil_scoped_release release;  // builds the world and renderer
                  return std::make_unique<SimulatorSource>(scene, options);
                }),
@@ -193,7 +193,7 @@ void bind_streams(py::module_& m) {
                py::arg("images"))
           .def_property_readonly("frame_count", &SimulatorSource::frame_count)
           .def_property_readonly("scene", [](const SimulatorSource& s) {
-            return std::make_shared<sim::Scene>(s.scene());
+            return std::make_shared<sim::scene::Scene>(s.scene());
           });
   bind_stream_facts<SimulatorSource>(simulator);
 

@@ -44,9 +44,9 @@ void check_height(const std::string& option, double height_m, double ceiling_m) 
 /// A scene's world on an OSMesa renderer, built once for many views.
 class Renderer {
  public:
-  explicit Renderer(const sim::Scene& scene)
+  explicit Renderer(const sim::scene::Scene& scene)
       : scene_(scene),
-        world_(sim::generate_world(scene)),
+        world_(sim::world::generate_world(scene)),
         renderer_(scene.sensors.camera.intrinsics) {
     renderer_.set_world(world_, scene_);
   }
@@ -55,22 +55,24 @@ class Renderer {
   /// `noise` false) as a dataset stores it: in 1/5000 m steps.
   py::tuple render(const py::array& pose_array_in, bool noise, std::int64_t frame_index) {
     const Pose pose = pose_from_array(pose_array_in, "pose");
-    sim::RenderedView view;
+    sim::render::RenderedView view;
     cv::Mat depth_m;
     {
       py::gil_scoped_release release;
       view = renderer_.render(pose);
-      sim::DepthSensorSpec spec = scene_.sensors.depth;
+      sim::scene::DepthSensorSpec spec = scene_.sensors.depth;
       if (!noise) spec.noise = spec.quantisation = spec.dropouts = false;
-      const sim::DepthSensorModel sensor(spec, scene_.sensors.camera.intrinsics, scene_.seed);
-      depth_m = sim::depth_as_stored(depth_to_png_units(sensor.measure(view, frame_index)));
+      const sim::render::DepthSensorModel sensor(spec, scene_.sensors.camera.intrinsics,
+                                                 scene_.seed);
+      depth_m =
+          sim::generate::depth_as_stored(depth_to_png_units(sensor.measure(view, frame_index)));
     }
     return py::make_tuple(rgb_array(view.color_bgr), depth_array(depth_m));
   }
 
   py::array_t<double> planar_pose(double x_m, double y_m, double yaw_deg,
                                   std::optional<double> height_m) const {
-    const sim::CameraSpec& camera = scene_.sensors.camera;
+    const sim::scene::CameraSpec& camera = scene_.sensors.camera;
     const double h = height_m.value_or(camera.height_m);
     check_height("height_m", h, world_.plan.wall_height_m);
     return pose_array(camera_pose_from_planar(x_m, y_m, yaw_deg * std::numbers::pi / 180.0, h,
@@ -78,20 +80,20 @@ class Renderer {
   }
 
  private:
-  sim::Scene scene_;
-  sim::World world_;
-  sim::RgbdRenderer renderer_;
+  sim::scene::Scene scene_;
+  sim::world::World world_;
+  sim::render::RgbdRenderer renderer_;
 };
 
-py::dict radio_map(const sim::Scene& scene, double resolution_m, std::optional<int> ap_id,
+py::dict radio_map(const sim::scene::Scene& scene, double resolution_m, std::optional<int> ap_id,
                    const std::string& band, std::optional<double> height_m,
                    const std::string& level) {
   if (band != "2.4" && band != "5" && band != "best") {
     throw InvalidInputError("band '" + band + "': expected '2.4', '5' or 'best'");
   }
   if (height_m) check_height("height_m", *height_m, scene.building.wall_height_m);
-  sim::require_level(scene, level, "level");
-  std::optional<sim::Site> site;
+  sim::scene::require_level(scene, level, "level");
+  std::optional<sim::site::Site> site;
   radio_model::RadioMap map;
   {
     py::gil_scoped_release release;
@@ -103,7 +105,7 @@ py::dict radio_map(const sim::Scene& scene, double resolution_m, std::optional<i
     options.band = band == "2.4" ? radio_model::RadioMapBand::k2_4GHz
                    : band == "5" ? radio_model::RadioMapBand::k5GHz
                                  : radio_model::RadioMapBand::kBest;
-    map = sim::compute_site_radio_map(*site, options, level);
+    map = sim::site::compute_site_radio_map(*site, options, level);
   }
   py::array_t<float> rssi({map.rows, map.cols});
   py::array_t<std::int32_t> best({map.rows, map.cols});
@@ -135,7 +137,7 @@ py::bytes png_bytes(const std::vector<unsigned char>& png) {
 
 void bind_views(py::module_& m) {
   py::class_<Renderer>(m, "_Renderer")
-      .def(py::init([](const sim::Scene& scene) {
+      .def(py::init([](const sim::scene::Scene& scene) {
              py::gil_scoped_release release;  // builds the world's mesh
              return std::make_unique<Renderer>(scene);
            }),
@@ -147,12 +149,12 @@ void bind_views(py::module_& m) {
         py::arg("band"), py::arg("height_m"), py::arg("level"));
   m.def(
       "_encode_rgb_png",
-      [](const py::array& rgb) { return png_bytes(sim::encode_png(bgr_mat(rgb, "rgb"))); },
+      [](const py::array& rgb) { return png_bytes(sim::render::encode_png(bgr_mat(rgb, "rgb"))); },
       py::arg("rgb"));
   m.def(
       "_encode_depth_png",
       [](const py::array& depth) {
-        return png_bytes(sim::encode_png(depth_to_png_units(depth_mat(depth, "depth"))));
+        return png_bytes(sim::render::encode_png(depth_to_png_units(depth_mat(depth, "depth"))));
       },
       py::arg("depth"));
 }

@@ -15,7 +15,7 @@
 
 #include "core/sensor_stream.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 /// The metres a reader decodes from depth's PNG units (CV_16UC1, sim/render/depth_png.hpp).
 cv::Mat depth_as_stored(const cv::Mat& depth_units);
@@ -23,4 +23,4 @@ cv::Mat depth_as_stored(const cv::Mat& depth_units);
 /// The reading as the dataset reader returns it from odometry.txt.
 OdometryReading odometry_as_stored(const OdometryReading& reading);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

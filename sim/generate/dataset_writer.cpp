@@ -35,7 +35,7 @@
 #include "sim/robot/imu_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 namespace fs = std::filesystem;
 
@@ -77,9 +77,9 @@ WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_pat
   WrittenFrame out;
   auto t0 = WallClock::now();
   const std::vector<unsigned char> rgb_png =
-      rgb.empty() ? std::vector<unsigned char>{} : encode_png(rgb);
+      rgb.empty() ? std::vector<unsigned char>{} : render::encode_png(rgb);
   const std::vector<unsigned char> depth_png =
-      encode_png(depth.type() == CV_16UC1 ? depth : depth_to_png_units(depth));
+      render::encode_png(depth.type() == CV_16UC1 ? depth : depth_to_png_units(depth));
   out.encode_s = seconds_since(t0);
   t0 = WallClock::now();
   for (const auto& [relative, bytes, sha] :
@@ -102,14 +102,14 @@ std::string bool_text(bool b) { return b ? "true" : "false"; }
 
 DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
                                     const GenerateOptions& options) {
-  const Scene& s = pipeline.scene();
+  const scene::Scene& s = pipeline.scene();
   DatasetCalibration c;
   c.intrinsics = s.sensors.camera.intrinsics;
   c.camera_fps = s.sensors.camera.fps;
   c.depth_units_per_metre = dataset::kDepthUnitsPerMetre;
   c.camera_in_base = pipeline.mount().camera_in_base();
   c.odometry_rate_hz = s.sensors.odometry.rate_hz;
-  const DepthSensorSpec& d = s.sensors.depth;
+  const scene::DepthSensorSpec& d = s.sensors.depth;
   const auto num = format_double_exact;
   c.sensor_model.push_back({"depth_sensor",
                             {{"min_range_m", num(d.min_range_m)},
@@ -124,8 +124,8 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
                              {"edge_jump_fraction", num(d.edge_jump_fraction)}}});
   c.sensor_model.push_back(
       {"render", {{"near_m", num(options.render.near_m)}, {"far_m", num(options.render.far_m)}}});
-  const WifiScannerSpec& w = s.sensors.wifi;
-  const radio_model::ReceiverDevice device = receiver_device(w);
+  const scene::WifiScannerSpec& w = s.sensors.wifi;
+  const radio_model::ReceiverDevice device = scene::receiver_device(w);
   c.sensor_model.push_back({"wifi_scanner",
                             {{"device", device.name},
                              {"sensitivity_dbm", num(device.sensitivity_dbm)},
@@ -139,7 +139,7 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
                              {"scan_interval_s", num(w.scan_interval_s)},
                              {"scan_duration_s", num(pipeline.scanner().scan_duration_ns() * 1e-9)},
                              {"antenna_height_m", num(s.sensors.camera.height_m)}}});
-  const World& world = pipeline.site().world();
+  const world::World& world = pipeline.site().world();
   if (!world.storeys.empty()) {
     // A building of several levels: access_points.csv's z is the building's, the poses' the
     // route level's, whose floor stands at this elevation.
@@ -148,17 +148,17 @@ DatasetCalibration make_calibration(const GenerationPipeline& pipeline,
                                {"floor_elevation_m", num(world.elevation_m)},
                                {"levels", std::to_string(world.storeys.size())}}});
   }
-  const OdometrySpec& o = s.sensors.odometry;
+  const scene::OdometrySpec& o = s.sensors.odometry;
   c.sensor_model.push_back({"wheel_odometry",
                             {{"noise_per_m", num(o.noise_per_m)},
                              {"noise_per_rad", num(o.noise_per_rad)},
                              {"scale_error", num(o.scale_error)},
                              {"yaw_bias_radpm", num(o.yaw_bias_radpm)}}});
-  const ImuSpec& imu = s.sensors.imu;
+  const scene::ImuSpec& imu = s.sensors.imu;
   if (imu.enabled) {
     ImuCalibration i;
     i.rate_hz = imu.rate_hz;
-    i.imu_in_base = ImuModel(pipeline.motion(), imu, session_seed(s)).imu_in_base();
+    i.imu_in_base = robot::ImuModel(pipeline.motion(), imu, scene::session_seed(s)).imu_in_base();
     i.gyroscope_noise_density = imu.gyroscope_noise_density;
     i.gyroscope_random_walk = imu.gyroscope_random_walk;
     i.accelerometer_noise_density = imu.accelerometer_noise_density;
@@ -182,14 +182,14 @@ std::string access_points_csv(const radio_model::PropagationModel& radio) {
   return out;
 }
 
-std::string parameters_json(const Scene& scene, const GenerateOptions& options) {
+std::string parameters_json(const scene::Scene& scene, const GenerateOptions& options) {
   nlohmann::ordered_json p;
   p["scene"] = scene.name;
   p["seed"] = scene.seed;
   if (scene.session) p["session"] = *scene.session;
   p["fps"] = scene.sensors.camera.fps;
   p["time_origin_s"] = scene.sensors.time_origin_s;
-  const radio_model::ReceiverDevice device = receiver_device(scene.sensors.wifi);
+  const radio_model::ReceiverDevice device = scene::receiver_device(scene.sensors.wifi);
   p["wifi_device"] = {{"name", device.name}, {"source", device.source}};
   p["max_frames"] = options.max_frames;
   p["images"] = options.images();
@@ -237,7 +237,7 @@ class DatasetWriter {
     while (!pending_.empty()) collect_oldest();
     pool_.reset();
     write_imu();
-    for (const RobotPause& p : pipeline_.motion().pauses())
+    for (const robot::RobotPause& p : pipeline_.motion().pauses())
       summary_.pauses += p.start <= pipeline_.schedule().end_time();
     summary_.wifi_requests_throttled = pipeline_.schedule().throttled_requests();
     summary_.wifi_device = pipeline_.scanner().options().device.name;
@@ -253,7 +253,7 @@ class DatasetWriter {
   };
 
   void describe_scene() {
-    const Scene& scene = pipeline_.scene();
+    const scene::Scene& scene = pipeline_.scene();
     summary_.output = folder_.final_path();
     summary_.scene_name = scene.name;
     summary_.seed = scene.seed;
@@ -266,8 +266,8 @@ class DatasetWriter {
   }
 
   void write_scene_files() {
-    const Scene& scene = pipeline_.scene();
-    write_file_atomic(dir_ / dataset::kScene, resolved_scene_yaml(scene));
+    const scene::Scene& scene = pipeline_.scene();
+    write_file_atomic(dir_ / dataset::kScene, scene::resolved_scene_yaml(scene));
     write_file_atomic(dir_ / dataset::kCalibration,
                       calibration_to_yaml(make_calibration(pipeline_, options_)));
     write_file_atomic(dir_ / dataset::kAccessPoints, access_points_csv(pipeline_.radio()));
@@ -319,13 +319,13 @@ class DatasetWriter {
   /// imu.csv: every IMU sample up to the run's end, on the events' clock. Not an event of the
   /// stream: nothing we run reads it, and 200 rows a second would only slow the stream down.
   void write_imu() {
-    const Scene& scene = pipeline_.scene();
+    const scene::Scene& scene = pipeline_.scene();
     if (!scene.sensors.imu.enabled) return;
     const auto t_io = WallClock::now();
-    ImuModel imu(pipeline_.motion(), scene.sensors.imu, session_seed(scene));
+    robot::ImuModel imu(pipeline_.motion(), scene.sensors.imu, scene::session_seed(scene));
     TextOutput out(dir_ / dataset::kImu, imu_csv_header() + "\n");
     TextOutput truth(dir_ / dataset::kImuGroundTruth, imu_groundtruth_csv_header() + "\n");
-    const SensorSchedule& schedule = pipeline_.schedule();
+    const robot::SensorSchedule& schedule = pipeline_.schedule();
     const std::int64_t n = imu.sample_count(schedule.end_time());
     const auto on_clock = [&](Timestamp route_time) {
       return Timestamp::from_ns(route_time.ns + pipeline_.time_origin().ns);
@@ -335,7 +335,7 @@ class DatasetWriter {
     const auto state_rows_up_to = [&](Timestamp before) {
       for (; frame < schedule.frame_count() && schedule.frame_time(frame) < before; ++frame) {
         const Timestamp t = schedule.frame_time(frame);
-        const ImuState state = imu.true_state(t);
+        const robot::ImuState state = imu.true_state(t);
         truth.write(
             format_imu_groundtruth_csv_row({on_clock(t), state.imu_to_world, state.velocity_mps,
                                             imu.gyro_bias_radps(), imu.accel_bias_mps2()}));
@@ -534,7 +534,7 @@ void check_image_options(const GenerateOptions& options) {
 
 }  // namespace
 
-GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
+GenerateSummary generate_dataset(const scene::Scene& scene, const fs::path& output,
                                  const GenerateOptions& options) {
   check_image_options(options);
   const auto start = WallClock::now();
@@ -543,7 +543,7 @@ GenerateSummary generate_dataset(const Scene& scene, const fs::path& output,
   return DatasetWriter(pipeline, folder, options, start).write();
 }
 
-GenerateSummary generate_dataset(std::shared_ptr<const Site> site, const fs::path& output,
+GenerateSummary generate_dataset(std::shared_ptr<const site::Site> site, const fs::path& output,
                                  const GenerateOptions& options) {
   check_image_options(options);
   const auto start = WallClock::now();
@@ -587,4 +587,4 @@ std::string GenerateSummary::full_report() const {
   return r;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

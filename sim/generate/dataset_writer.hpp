@@ -15,20 +15,20 @@
 #include "sim/scene/scene.hpp"
 #include "sim/site/site.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 /// Generates the dataset of `scene` (with the options' overrides) into `output`. Throws
 /// InvalidInputError when `output` exists and `options.overwrite` is false, or when it may not be
 /// replaced at all (AtomicDirectory, core/output_folder.hpp); IoError on write errors; the
 /// scene's and the renderer's errors pass through.
-GenerateSummary generate_dataset(const Scene& scene, const std::filesystem::path& output,
+GenerateSummary generate_dataset(const scene::Scene& scene, const std::filesystem::path& output,
                                  const GenerateOptions& options = {});
 
 /// The same on a site built already, which the caller keeps using (its world for plots, its
 /// radio for studies). Its scene is the dataset's: the seed and fps overrides belong in the
 /// site's scene (resolve_scene), and `options` must not set them (std::invalid_argument).
-GenerateSummary generate_dataset(std::shared_ptr<const Site> site,
+GenerateSummary generate_dataset(std::shared_ptr<const site::Site> site,
                                  const std::filesystem::path& output,
                                  const GenerateOptions& options = {});
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

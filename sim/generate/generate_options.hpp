@@ -12,7 +12,7 @@
 #include "core/timestamp.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 /// What a generation keeps of the camera: one choice where three linked booleans (images, frames,
 /// colour images) used to allow combinations that meant nothing.
@@ -67,7 +67,7 @@ struct GenerateOptions {
   /// `/`, the current directory or the home folder: core/output_folder.hpp).
   bool overwrite = false;
   /// Renderer settings (near/far planes, lighting).
-  RenderOptions render;
+  render::RenderOptions render;
   /// Called after each frame is written, from the calling thread (progress bars).
   std::function<void(const GenerateProgress&)> on_progress;
 };
@@ -116,4 +116,4 @@ struct GenerateSummary {
   std::string full_report() const;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

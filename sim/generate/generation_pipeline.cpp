@@ -6,34 +6,34 @@
 #include "core/wall_clock.hpp"
 #include "sim/site/radio_options.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 namespace {
 
-std::shared_ptr<const Site> timed_site(const Scene& scene, double& seconds) {
+std::shared_ptr<const site::Site> timed_site(const scene::Scene& scene, double& seconds) {
   const auto t0 = WallClock::now();
-  auto site = std::make_shared<const Site>(scene);  // validates the scene
+  auto site = std::make_shared<const site::Site>(scene);  // validates the scene
   seconds = seconds_since(t0);
   return site;
 }
 
 }  // namespace
 
-Scene resolve_scene(const Scene& scene, const GenerateOptions& options) {
-  Scene out = scene;
+scene::Scene resolve_scene(const scene::Scene& scene, const GenerateOptions& options) {
+  scene::Scene out = scene;
   if (options.seed) out.seed = *options.seed;
   if (options.fps) out.sensors.camera.fps = *options.fps;
   return out;
 }
 
-GenerationPipeline::GenerationPipeline(const Scene& scene, const GenerateOptions& options)
+GenerationPipeline::GenerationPipeline(const scene::Scene& scene, const GenerateOptions& options)
     : site_(timed_site(scene, site_build_s_)),
       scene_(site_->scene()),
       mount_(scene_.sensors.camera) {
   set_up(options);
 }
 
-GenerationPipeline::GenerationPipeline(std::shared_ptr<const Site> site,
+GenerationPipeline::GenerationPipeline(std::shared_ptr<const site::Site> site,
                                        const GenerateOptions& options)
     : site_(std::move(site)), scene_(site_->scene()), mount_(scene_.sensors.camera) {
   if (options.seed || options.fps) {
@@ -50,9 +50,9 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   time_origin_ =
       Timestamp::from_ns(static_cast<std::int64_t>(scene_.sensors.time_origin_s) * 1'000'000'000);
   scanner_ = std::make_unique<radio_model::WifiScanner>(
-      site_->radio(), wifi_scanner_options(scene_.sensors.wifi), session_seed(scene_));
+      site_->radio(), site::wifi_scanner_options(scene_.sensors.wifi), scene::session_seed(scene_));
 
-  SensorScheduleOptions schedule;
+  robot::SensorScheduleOptions schedule;
   schedule.fps = scene_.sensors.camera.fps;
   schedule.odometry_rate_hz = scene_.sensors.odometry.rate_hz;
   schedule.scan_interval_s = scene_.sensors.wifi.scan_interval_s;
@@ -63,17 +63,19 @@ void GenerationPipeline::set_up(const GenerateOptions& options) {
   schedule.throttle_max_scans = throttle.max_scans;
   schedule.throttle_window_s = throttle.window_s;
   schedule.max_frames = options.max_frames;
-  schedule_ = std::make_unique<SensorSchedule>(site_->motion(), schedule);
-  odometry_ = std::make_unique<WheelOdometry>(scene_.sensors.odometry, session_seed(scene_));
+  schedule_ = std::make_unique<robot::SensorSchedule>(site_->motion(), schedule);
+  odometry_ =
+      std::make_unique<robot::WheelOdometry>(scene_.sensors.odometry, scene::session_seed(scene_));
 
   frames_ = options.frames();
   if (options.images()) {
-    renderer_ = std::make_unique<RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
+    renderer_ =
+        std::make_unique<render::RgbdRenderer>(scene_.sensors.camera.intrinsics, options.render);
     renderer_->set_world(site_->world(), scene_);
-    depth_model_ = std::make_unique<DepthSensorModel>(
-        scene_.sensors.depth, scene_.sensors.camera.intrinsics, session_seed(scene_));
-    color_model_ = std::make_unique<ColorSensorModel>(
-        scene_.sensors.color, scene_.sensors.camera.fps, session_seed(scene_));
+    depth_model_ = std::make_unique<render::DepthSensorModel>(
+        scene_.sensors.depth, scene_.sensors.camera.intrinsics, scene::session_seed(scene_));
+    color_model_ = std::make_unique<render::ColorSensorModel>(
+        scene_.sensors.color, scene_.sensors.camera.fps, scene::session_seed(scene_));
   }
   timings_.setup_s = site_build_s_ + seconds_since(t0);
 }
@@ -142,12 +144,12 @@ Pose GenerationPipeline::camera_pose(std::int64_t k) const {
   return mount_.camera_to_world(site_->motion().state_at(schedule_->frame_time(k)));
 }
 
-WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
+WifiScan GenerationPipeline::make_scan(const robot::ScanWindow& window) {
   const auto t0 = WallClock::now();
   // The radio works in the building's frame: the route level's floor is at its elevation.
   const double antenna_z_m = site_->world().elevation_m + site_->receiver_height_m();
   auto position_at = [&](Timestamp t) {
-    const RobotState s = site_->motion().state_at(t);
+    const robot::RobotState s = site_->motion().state_at(t);
     return Eigen::Vector3d(s.position_m.x(), s.position_m.y(), antenna_z_m);
   };
   WifiScan scan = window.pause_index >= 0 && scene_.route.pause.scan_while_moving == false
@@ -157,4 +159,4 @@ WifiScan GenerationPipeline::make_scan(const ScanWindow& window) {
   return scan;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

@@ -41,7 +41,7 @@
 #include "sim/site/site.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 /// An event and, for frames, the ground truth that goes with it (never given to SLAM).
 struct GeneratedEvent {
@@ -58,25 +58,25 @@ class GenerationPipeline {
  public:
   /// `scene` is used as given (apply seed/fps overrides first: resolve_scene()). With
   /// `options.images` false there is no renderer and frames come without images.
-  GenerationPipeline(const Scene& scene, const GenerateOptions& options);
+  GenerationPipeline(const scene::Scene& scene, const GenerateOptions& options);
   /// On a site built already (its scene is used as given, overrides applied); several pipelines
   /// and the caller may share one site.
-  GenerationPipeline(std::shared_ptr<const Site> site, const GenerateOptions& options);
+  GenerationPipeline(std::shared_ptr<const site::Site> site, const GenerateOptions& options);
   ~GenerationPipeline();
 
   std::optional<GeneratedEvent> next();
 
-  const Scene& scene() const { return scene_; }
-  const Site& site() const { return *site_; }
-  const World& world() const { return site_->world(); }
-  const MotionProfile& motion() const { return site_->motion(); }
-  const SensorSchedule& schedule() const { return *schedule_; }
-  const CameraMount& mount() const { return mount_; }
+  const scene::Scene& scene() const { return scene_; }
+  const site::Site& site() const { return *site_; }
+  const world::World& world() const { return site_->world(); }
+  const robot::MotionProfile& motion() const { return site_->motion(); }
+  const robot::SensorSchedule& schedule() const { return *schedule_; }
+  const robot::CameraMount& mount() const { return mount_; }
   const radio_model::PropagationModel& radio() const { return site_->radio(); }
   const radio_model::WifiScanner& scanner() const { return *scanner_; }
   bool images() const { return renderer_ != nullptr; }
   /// The renderer (null without images); benchmarks time it alone as a baseline.
-  RgbdRenderer* renderer() { return renderer_.get(); }
+  render::RgbdRenderer* renderer() { return renderer_.get(); }
   const PipelineTimings& timings() const { return timings_; }
   /// Added to route time in every event next() returns (sensors.time_origin_s).
   Timestamp time_origin() const { return time_origin_; }
@@ -88,7 +88,7 @@ class GenerationPipeline {
  private:
   GeneratedEvent make_frame(std::int64_t k);
   Pose camera_pose(std::int64_t frame_index) const;
-  WifiScan make_scan(const ScanWindow& window);
+  WifiScan make_scan(const robot::ScanWindow& window);
   Timestamp on_event_clock(Timestamp route_time) const {
     return Timestamp::from_ns(route_time.ns + time_origin_.ns);
   }
@@ -96,16 +96,16 @@ class GenerationPipeline {
   void set_up(const GenerateOptions& options);
 
   double site_build_s_ = 0.0;  // building the site, when this pipeline built it (setup_s)
-  std::shared_ptr<const Site> site_;
-  const Scene& scene_;
-  std::unique_ptr<SensorSchedule> schedule_;
-  CameraMount mount_;
-  std::unique_ptr<RgbdRenderer> renderer_;
-  std::unique_ptr<DepthSensorModel> depth_model_;
-  std::unique_ptr<ColorSensorModel> color_model_;
+  std::shared_ptr<const site::Site> site_;
+  const scene::Scene& scene_;
+  std::unique_ptr<robot::SensorSchedule> schedule_;
+  robot::CameraMount mount_;
+  std::unique_ptr<render::RgbdRenderer> renderer_;
+  std::unique_ptr<render::DepthSensorModel> depth_model_;
+  std::unique_ptr<render::ColorSensorModel> color_model_;
   std::unique_ptr<radio_model::WifiScanner> scanner_;
-  std::unique_ptr<WheelOdometry> odometry_;
-  RenderedView view_;
+  std::unique_ptr<robot::WheelOdometry> odometry_;
+  render::RenderedView view_;
   std::int64_t submitted_frame_ = -1;       // the frame the renderer is working on ahead, if any
   Pose submitted_pose_ = Pose::Identity();  // and its camera pose
   std::int64_t next_frame_ = 0, next_odometry_ = 0;
@@ -116,6 +116,6 @@ class GenerationPipeline {
 };
 
 /// The scene with the options' seed and fps overrides applied (what scene.yaml records).
-Scene resolve_scene(const Scene& scene, const GenerateOptions& options);
+scene::Scene resolve_scene(const scene::Scene& scene, const GenerateOptions& options);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

@@ -7,12 +7,13 @@
 #include "sim/render/depth_png.hpp"
 #include "sim/robot/camera_mount.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
-GeneratorStream::GeneratorStream(const Scene& scene, const GenerateOptions& options)
+GeneratorStream::GeneratorStream(const scene::Scene& scene, const GenerateOptions& options)
     : pipeline_(std::make_unique<GenerationPipeline>(resolve_scene(scene, options), options)) {}
 
-GeneratorStream::GeneratorStream(std::shared_ptr<const Site> site, const GenerateOptions& options)
+GeneratorStream::GeneratorStream(std::shared_ptr<const site::Site> site,
+                                 const GenerateOptions& options)
     : pipeline_(std::make_unique<GenerationPipeline>(std::move(site), options)) {}
 
 GeneratorStream::~GeneratorStream() = default;
@@ -39,17 +40,18 @@ const CameraIntrinsics& GeneratorStream::intrinsics() const {
 Pose GeneratorStream::camera_in_base() const { return pipeline_->mount().camera_in_base(); }
 
 std::string GeneratorStream::description() const {
-  const Scene& s = pipeline_->scene();
+  const scene::Scene& s = pipeline_->scene();
   return fmt::format("generated scene {} (seed {}, {} frames at {} fps{}, {} Wi-Fi scans)", s.name,
                      s.seed, pipeline_->schedule().frame_count(), s.sensors.camera.fps,
                      pipeline_->images() ? "" : ", no images",
                      pipeline_->schedule().scans().size());
 }
 
-SensorStreamFacts generated_stream_facts(const Site& site, const std::string& description) {
-  const Scene& scene = site.scene();
-  return {scene.sensors.camera.intrinsics, CameraMount(scene.sensors.camera).camera_in_base(),
+SensorStreamFacts generated_stream_facts(const site::Site& site, const std::string& description) {
+  const scene::Scene& scene = site.scene();
+  return {scene.sensors.camera.intrinsics,
+          robot::CameraMount(scene.sensors.camera).camera_in_base(),
           !site.radio().access_points().empty(), /*has_odometry=*/true, description};
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

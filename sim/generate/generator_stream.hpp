@@ -12,7 +12,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/site/site.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 class GenerationPipeline;
 
@@ -20,9 +20,9 @@ class GeneratorStream final : public SensorStream {
  public:
   /// Builds the world, renderer and radio model (seconds for big scenes). The seed and fps
   /// overrides, max_frames and images of `options` apply; threads/overwrite do not.
-  GeneratorStream(const Scene& scene, const GenerateOptions& options = {});
+  GeneratorStream(const scene::Scene& scene, const GenerateOptions& options = {});
   /// On a site built already (its scene used as given: the overrides belong in it).
-  GeneratorStream(std::shared_ptr<const Site> site, const GenerateOptions& options = {});
+  GeneratorStream(std::shared_ptr<const site::Site> site, const GenerateOptions& options = {});
   ~GeneratorStream() override;
 
   std::optional<SensorEvent> next() override;
@@ -46,6 +46,6 @@ class GeneratorStream final : public SensorStream {
 
 /// What a stream of `site`'s events says of itself (camera, mount, Wi-Fi, odometry), as a
 /// GeneratorStream on it would; for streams fed from a dataset's generation (on_event).
-SensorStreamFacts generated_stream_facts(const Site& site, const std::string& description);
+SensorStreamFacts generated_stream_facts(const site::Site& site, const std::string& description);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

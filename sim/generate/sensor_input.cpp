@@ -9,7 +9,7 @@
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 namespace {
 
@@ -42,7 +42,7 @@ SensorInput open_dataset(const fs::path& input, const SensorInputOptions& option
 }
 
 SensorInput open_scene(const fs::path& input, const SensorInputOptions& options) {
-  const Scene scene = load_scene_file(input.string());
+  const scene::Scene scene = scene::load_scene_file(input.string());
   GenerateOptions generate;
   generate.seed = options.scene_seed;
   generate.fps = options.fps;
@@ -69,4 +69,4 @@ SensorInput open_sensor_input(const fs::path& path, const SensorInputOptions& op
   return open_scene(path, options);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

@@ -13,7 +13,7 @@
 
 #include "core/sensor_stream.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::generate {
 
 struct SensorInputOptions {
   /// Datasets: check the files against manifest.json's SHA-256 sums (off also reads what an
@@ -42,4 +42,4 @@ struct SensorInput {
 /// that is neither; the readers' and the scene loader's errors pass through.
 SensorInput open_sensor_input(const std::filesystem::path& path, const SensorInputOptions& options);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::generate

@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 AutoExposure::AutoExposure(double target_dn, double time_constant_s, double frame_interval_s,
                            double min_gain, double max_gain)
@@ -42,4 +42,4 @@ void AutoExposure::update(double metered_mean_dn) {
   gain_ = std::clamp(std::exp(next), min_gain_, max_gain_);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

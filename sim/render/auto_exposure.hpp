@@ -14,7 +14,7 @@
 // frames in order (GenerationPipeline produces them in order), and the same sequence always gives
 // the same gains. No randomness.
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class AutoExposure {
  public:
@@ -38,4 +38,4 @@ class AutoExposure {
   double gain_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

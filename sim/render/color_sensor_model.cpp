@@ -11,9 +11,10 @@
 #include "core/rng.hpp"
 #include "sim/render/normal_deviates.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
-ColorSensorModel::ColorSensorModel(const ColorSensorSpec& spec, double fps, std::uint64_t seed)
+ColorSensorModel::ColorSensorModel(const scene::ColorSensorSpec& spec, double fps,
+                                   std::uint64_t seed)
     : spec_(spec), seed_(seed) {
   if (spec.noise && !(spec.conversion_gain_dn_per_e >= 0.0 && spec.read_noise_dn >= 0.0)) {
     throw InvalidInputError(fmt::format(
@@ -94,4 +95,4 @@ void ColorSensorModel::measure(const cv::Mat& rendered_bgr, std::int64_t frame_i
   }
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -32,13 +32,13 @@
 #include "sim/render/auto_exposure.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class ColorSensorModel {
  public:
   /// `fps`: the camera's frame rate (auto-exposure's time step). Throws InvalidInputError for
   /// bad parameters (negative noise, an empty gain range, ...).
-  ColorSensorModel(const ColorSensorSpec& spec, double fps, std::uint64_t seed);
+  ColorSensorModel(const scene::ColorSensorSpec& spec, double fps, std::uint64_t seed);
 
   /// The sensor's image of frame `frame_index` from the rendered one (CV_8UC3). With
   /// auto-exposure on, frames must come in order from 0 (std::logic_error otherwise). `out` may
@@ -49,13 +49,13 @@ class ColorSensorModel {
   double noise_variance_dn2(double intensity_dn) const;
   /// The gain the next frame gets (1 without auto-exposure).
   double gain() const { return auto_exposure_ ? auto_exposure_->gain() : 1.0; }
-  const ColorSensorSpec& spec() const { return spec_; }
+  const scene::ColorSensorSpec& spec() const { return spec_; }
 
  private:
-  ColorSensorSpec spec_;
+  scene::ColorSensorSpec spec_;
   std::uint64_t seed_;
   std::optional<AutoExposure> auto_exposure_;
   std::int64_t next_frame_ = 0;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

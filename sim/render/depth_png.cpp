@@ -10,7 +10,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 std::vector<unsigned char> encode_png(const cv::Mat& image) {
   std::vector<unsigned char> bytes;
@@ -72,4 +72,4 @@ void write_depth_false_color_png(const std::filesystem::path& path, const cv::Ma
   write_png(path, depth_false_color(depth_m, min_m, max_m));
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

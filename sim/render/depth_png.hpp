@@ -12,7 +12,7 @@
 
 #include "core/depth_png.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 /// PNG bytes of an 8-bit (1 or 3 channel, BGR) or 16-bit image; throws IoError on failure.
 std::vector<unsigned char> encode_png(const cv::Mat& image);
@@ -30,4 +30,4 @@ cv::Mat depth_false_color(const cv::Mat& depth_m, double min_m, double max_m);
 void write_depth_false_color_png(const std::filesystem::path& path, const cv::Mat& depth_m,
                                  double min_m, double max_m);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -16,7 +16,7 @@
 #include "core/rng.hpp"
 #include "sim/render/normal_deviates.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 #if defined(__x86_64__) && defined(__GNUC__)
 namespace {
@@ -74,8 +74,8 @@ __attribute__((target("avx2"))) int sense_row_avx2(const SenseParameters& p, con
 }  // namespace
 #endif
 
-DepthSensorModel::DepthSensorModel(const DepthSensorSpec& spec, const CameraIntrinsics& intrinsics,
-                                   std::uint64_t seed)
+DepthSensorModel::DepthSensorModel(const scene::DepthSensorSpec& spec,
+                                   const CameraIntrinsics& intrinsics, std::uint64_t seed)
     : spec_(spec),
       focal_baseline_px_m_(intrinsics.fx_px * spec.baseline_m),
       cos_grazing_(
@@ -234,4 +234,4 @@ cv::Mat DepthSensorModel::measure(const RenderedView& view, std::int64_t frame_i
   return out;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -33,12 +33,12 @@
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class DepthSensorModel {
  public:
   /// Throws InvalidInputError for inconsistent parameters (e.g. min_range_m >= max_range_m).
-  DepthSensorModel(const DepthSensorSpec& spec, const CameraIntrinsics& intrinsics,
+  DepthSensorModel(const scene::DepthSensorSpec& spec, const CameraIntrinsics& intrinsics,
                    std::uint64_t seed);
 
   /// Measured depth (CV_32FC1, metres, 0 = no reading) of frame `frame_index` from an ideal
@@ -52,7 +52,7 @@ class DepthSensorModel {
   /// The depth on the disparity grid nearest to z (what quantisation returns for z).
   double quantised_depth_m(double z_m) const;
 
-  const DepthSensorSpec& spec() const { return spec_; }
+  const scene::DepthSensorSpec& spec() const { return spec_; }
   /// The lateral noise model, when spec().lateral_noise is on.
   const std::optional<LateralDepthNoise>& lateral_noise() const { return lateral_; }
 
@@ -61,11 +61,11 @@ class DepthSensorModel {
   void sense(const cv::Mat& ideal_depth_m, const cv::Mat& incidence_cos, std::int64_t frame_index,
              cv::Mat& out) const;
 
-  DepthSensorSpec spec_;
+  scene::DepthSensorSpec spec_;
   double focal_baseline_px_m_;  // f b
   float cos_grazing_;
   std::uint64_t seed_;
   std::optional<LateralDepthNoise> lateral_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -17,7 +17,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 namespace {
 
@@ -46,13 +46,13 @@ std::uint64_t position_key(const Eigen::Vector3f& p) {
   return h;
 }
 
-Eigen::Vector3f face_normal(const Mesh& mesh, const Triangle& t) {
+Eigen::Vector3f face_normal(const world::Mesh& mesh, const world::Triangle& t) {
   const Eigen::Vector3f& a = mesh.positions_m[t.v[0]];
   return (mesh.positions_m[t.v[1]] - a).cross(mesh.positions_m[t.v[2]] - a).normalized();
 }
 
 // Per-triangle uv offset and scale so that each planar face of a fit-to-face texture spans [0,1].
-std::vector<Eigen::Vector4f> fit_to_face_transforms(const Mesh& mesh,
+std::vector<Eigen::Vector4f> fit_to_face_transforms(const world::Mesh& mesh,
                                                     const std::vector<TextureKey>& keys,
                                                     const std::vector<bool>& fit) {
   const std::size_t n = mesh.triangles.size();
@@ -67,8 +67,8 @@ std::vector<Eigen::Vector4f> fit_to_face_transforms(const Mesh& mesh,
   for (const auto& [position, triangles] : by_position) {
     for (std::size_t a = 0; a < triangles.size(); ++a) {
       for (std::size_t b = a + 1; b < triangles.size(); ++b) {
-        const Triangle& ta = mesh.triangles[triangles[a]];
-        const Triangle& tb = mesh.triangles[triangles[b]];
+        const world::Triangle& ta = mesh.triangles[triangles[a]];
+        const world::Triangle& tb = mesh.triangles[triangles[b]];
         if (keys[triangles[a]] == keys[triangles[b]] &&
             face_normal(mesh, ta).dot(face_normal(mesh, tb)) > 0.999f) {
           faces.join(triangles[a], triangles[b]);
@@ -94,7 +94,7 @@ std::vector<Eigen::Vector4f> fit_to_face_transforms(const Mesh& mesh,
 
 }  // namespace
 
-BatchedMesh batch_mesh(const Mesh& mesh, const TextureLayoutLookup& layout) {
+BatchedMesh batch_mesh(const world::Mesh& mesh, const TextureLayoutLookup& layout) {
   const std::size_t n = mesh.triangles.size();
   std::vector<TextureKey> keys(n);
   std::vector<bool> fit(n);
@@ -111,7 +111,7 @@ BatchedMesh batch_mesh(const Mesh& mesh, const TextureLayoutLookup& layout) {
   BatchedMesh out;
   out.vertices.reserve(3 * n);
   for (int i : order) {
-    const Triangle& t = mesh.triangles[i];
+    const world::Triangle& t = mesh.triangles[i];
     if (out.batches.empty() || !(out.batches.back().key == keys[i])) {
       MeshBatch batch;
       batch.key = keys[i];
@@ -211,4 +211,4 @@ void GlMesh::draw(const MeshBatch& batch) const {
   glDrawArrays(GL_TRIANGLES, batch.first_vertex, batch.vertex_count);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

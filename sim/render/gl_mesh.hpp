@@ -12,7 +12,7 @@
 #include "sim/render/procedural_textures.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 struct MeshVertex {
   float position_m[3];
@@ -38,7 +38,7 @@ struct BatchedMesh {
 /// Expands and sorts the mesh. Texture coordinates of tiling textures are uv / period; for
 /// fit-to-face textures each planar face (triangles of one key joined by shared vertex positions
 /// and with the same normal) gets its uv bounding box mapped onto [0, 1]^2.
-BatchedMesh batch_mesh(const Mesh& mesh, const TextureLayoutLookup& layout);
+BatchedMesh batch_mesh(const world::Mesh& mesh, const TextureLayoutLookup& layout);
 
 /// Cuts every batch into square chunks of the floor plan (`chunk_m` on a side, by triangle
 /// centroid), so that frustum culling skips what is out of view: a floor or wall texture
@@ -63,4 +63,4 @@ class GlMesh {
   std::vector<MeshBatch> batches_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 namespace {
 
@@ -67,4 +67,4 @@ int GlProgram::uniform(const char* name) const {
   return location;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

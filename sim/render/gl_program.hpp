@@ -3,7 +3,7 @@
 
 #include <string>
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class GlProgram {
  public:
@@ -22,4 +22,4 @@ class GlProgram {
   unsigned id_ = 0;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

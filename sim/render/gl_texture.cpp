@@ -6,7 +6,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 GlTexture::GlTexture(const TextureImage& image) : emissive_(image.emissive) {
   // Image row 0 is the top; texture coordinate t = 0 is the bottom (v grows upwards).
@@ -33,4 +33,4 @@ void GlTexture::bind() const {
   glBindTexture(GL_TEXTURE_2D, id_);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

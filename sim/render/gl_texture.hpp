@@ -3,7 +3,7 @@
 
 #include "sim/render/procedural_textures.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class GlTexture {
  public:
@@ -20,4 +20,4 @@ class GlTexture {
   bool emissive_ = false;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -11,7 +11,7 @@
 #include "core/rng.hpp"
 #include "sim/render/normal_deviates.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 namespace {
 
@@ -111,4 +111,4 @@ void LateralDepthNoise::apply(const cv::Mat& depth_m, const cv::Mat& incidence_c
   }
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

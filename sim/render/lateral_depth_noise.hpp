@@ -28,7 +28,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class LateralDepthNoise {
  public:
@@ -55,4 +55,4 @@ class LateralDepthNoise {
   std::uint64_t seed_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

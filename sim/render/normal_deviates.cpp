@@ -6,7 +6,7 @@
 
 #include <boost/math/special_functions/erf.hpp>
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 const NormalQuantileTable& normal_quantiles() {
   static const NormalQuantileTable table = [] {
@@ -44,4 +44,4 @@ void fill_normals(Rng& rng, float* out, int count) {
   }
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

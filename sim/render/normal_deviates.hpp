@@ -12,7 +12,7 @@
 
 #include "core/rng.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 inline constexpr int kNormalQuantileBits = 12;
 using NormalQuantileTable = std::array<float, 1 << kNormalQuantileBits>;
@@ -25,4 +25,4 @@ const NormalQuantileTable& normal_quantiles();
 /// one more draw for the rest (made even when nothing is left: pinned outputs rely on it).
 void fill_normals(Rng& rng, float* out, int count);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

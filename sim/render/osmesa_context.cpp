@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 namespace {
 constexpr int kPlaceholderSize = 4;
@@ -71,4 +71,4 @@ void OsmesaContext::make_current() {
   }
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

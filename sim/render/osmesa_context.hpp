@@ -12,7 +12,7 @@
 
 struct osmesa_context;
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class OsmesaContext {
  public:
@@ -36,4 +36,4 @@ class OsmesaContext {
   std::string gl_version_, gl_renderer_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 namespace {
 
@@ -430,12 +430,12 @@ void check_theme(const std::string& what, const std::string& name,
 
 }  // namespace
 
-TextureKey texture_key_of(const Triangle& triangle) {
+TextureKey texture_key_of(const world::Triangle& triangle) {
   switch (triangle.surface) {
-    case SurfaceKind::kPoster:
+    case world::SurfaceKind::kPoster:
       return {triangle.surface, triangle.appearance_variant, triangle.decoration};
-    case SurfaceKind::kLight:
-    case SurfaceKind::kWallTop:
+    case world::SurfaceKind::kLight:
+    case world::SurfaceKind::kWallTop:
       return {triangle.surface, 0, -1};
     default:
       return {triangle.surface, triangle.appearance_variant, -1};
@@ -459,7 +459,7 @@ const std::vector<std::string>& ProceduralTextures::ceiling_themes() {
   return names;
 }
 
-ProceduralTextures::ProceduralTextures(std::uint64_t seed, const AppearanceThemes& themes)
+ProceduralTextures::ProceduralTextures(std::uint64_t seed, const scene::AppearanceThemes& themes)
     : seed_(seed), themes_(themes) {
   check_theme("wall", themes.wall, wall_themes());
   check_theme("door", themes.door, door_themes());
@@ -472,33 +472,33 @@ TextureImage ProceduralTextures::make(const TextureKey& key) const {
     return Rng::stream(seed_, fmt::format("texture/{}/v{}/d{}", what, key.variant, key.decoration));
   };
   switch (key.surface) {
-    case SurfaceKind::kWall: {
+    case world::SurfaceKind::kWall: {
       Rng rng = stream("wall/" + themes_.wall);
       return make_wall(themes_.wall, rng);
     }
-    case SurfaceKind::kFloor: {
+    case world::SurfaceKind::kFloor: {
       Rng rng = stream("floor/" + themes_.floor);
       return make_floor(themes_.floor, rng);
     }
-    case SurfaceKind::kCeiling: {
+    case world::SurfaceKind::kCeiling: {
       Rng rng = stream("ceiling/" + themes_.ceiling);
       return make_ceiling(themes_.ceiling, rng);
     }
-    case SurfaceKind::kDoor: {
+    case world::SurfaceKind::kDoor: {
       Rng rng = stream("door/" + themes_.door);
       return make_door(themes_.door, rng);
     }
-    case SurfaceKind::kPoster: {
+    case world::SurfaceKind::kPoster: {
       Rng rng = stream("poster");
       return make_poster(rng);
     }
-    case SurfaceKind::kDoorFrame: {
+    case world::SurfaceKind::kDoorFrame: {
       Rng rng = stream("door_frame");
       return make_plain(jitter(rgb(120, 112, 104), 10.0, rng), 1.0, 4.0, rng);
     }
-    case SurfaceKind::kLight:
+    case world::SurfaceKind::kLight:
       return make_light();
-    case SurfaceKind::kWallTop:
+    case world::SurfaceKind::kWallTop:
     default: {
       Rng rng = stream("wall_top");
       return make_plain(rgb(150, 150, 150), 1.0, 3.0, rng);
@@ -506,4 +506,4 @@ TextureImage ProceduralTextures::make(const TextureKey& key) const {
   }
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -19,11 +19,11 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 /// Which texture a triangle uses.
 struct TextureKey {
-  SurfaceKind surface = SurfaceKind::kWall;
+  world::SurfaceKind surface = world::SurfaceKind::kWall;
   int variant = 0;
   int decoration = -1;  // posters only
   friend auto operator<=>(const TextureKey&, const TextureKey&) = default;
@@ -31,7 +31,7 @@ struct TextureKey {
 
 /// The key of a mesh triangle: folds the attributes a surface kind ignores, so that e.g. all
 /// lights share one texture.
-TextureKey texture_key_of(const Triangle& triangle);
+TextureKey texture_key_of(const world::Triangle& triangle);
 
 struct TextureImage {
   cv::Mat bgr;  // CV_8UC3, row 0 = top of the image
@@ -47,7 +47,7 @@ class ProceduralTextures {
  public:
   /// Throws InvalidInputError when a theme name is unknown (known: wall painted|brick,
   /// door wood|painted, floor tiles|carpet, ceiling panels|plain).
-  ProceduralTextures(std::uint64_t seed, const AppearanceThemes& themes);
+  ProceduralTextures(std::uint64_t seed, const scene::AppearanceThemes& themes);
 
   TextureImage make(const TextureKey& key) const;
 
@@ -58,7 +58,7 @@ class ProceduralTextures {
 
  private:
   std::uint64_t seed_;
-  AppearanceThemes themes_;
+  scene::AppearanceThemes themes_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

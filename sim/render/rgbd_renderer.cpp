@@ -22,7 +22,7 @@
 #include "sim/render/gl_texture.hpp"
 #include "sim/render/osmesa_context.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 namespace {
 
@@ -227,12 +227,13 @@ RgbdRenderer::~RgbdRenderer() {
   glDeleteFramebuffers(1, &framebuffer_);
 }
 
-void RgbdRenderer::set_world(const Mesh& mesh, const std::vector<CeilingLight>& lights,
-                             std::uint64_t seed, const AppearanceThemes& themes) {
+void RgbdRenderer::set_world(const world::Mesh& mesh,
+                             const std::vector<world::CeilingLight>& lights, std::uint64_t seed,
+                             const scene::AppearanceThemes& themes) {
   context_->make_current();
   const ProceduralTextures generator(seed, themes);
   std::vector<TextureKey> keys;
-  for (const Triangle& t : mesh.triangles) keys.push_back(texture_key_of(t));
+  for (const world::Triangle& t : mesh.triangles) keys.push_back(texture_key_of(t));
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   // Each texture draws from its own random stream, so generating them in parallel gives the
@@ -255,7 +256,7 @@ void RgbdRenderer::set_world(const Mesh& mesh, const std::vector<CeilingLight>& 
   lights_ = lights;
 }
 
-void RgbdRenderer::set_world(const World& world, const Scene& scene) {
+void RgbdRenderer::set_world(const world::World& world, const scene::Scene& scene) {
   set_world(world.mesh, world.plan.lights, scene.seed, scene.appearance.themes);
 }
 
@@ -411,4 +412,4 @@ RenderedView RgbdRenderer::render(const Pose& camera_to_world) {
   return view;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -24,7 +24,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::render {
 
 class OsmesaContext;
 class GlMesh;
@@ -62,10 +62,10 @@ class RgbdRenderer {
 
   /// Uploads a world: its mesh, ceiling lights, and textures generated from the seed and themes
   /// (one per distinct texture key in the mesh). Replaces any previous world.
-  void set_world(const Mesh& mesh, const std::vector<CeilingLight>& lights, std::uint64_t seed,
-                 const AppearanceThemes& themes);
+  void set_world(const world::Mesh& mesh, const std::vector<world::CeilingLight>& lights,
+                 std::uint64_t seed, const scene::AppearanceThemes& themes);
   /// The same for a generated world and its scene (seed, themes).
-  void set_world(const World& world, const Scene& scene);
+  void set_world(const world::World& world, const scene::Scene& scene);
 
   /// Renders the view of a camera-to-world pose (optical frame). Reuses `out`'s buffers.
   /// The same as submit() then collect().
@@ -104,7 +104,7 @@ class RgbdRenderer {
   std::unique_ptr<GlProgram> program_;
   std::unique_ptr<GlMesh> mesh_;
   std::map<TextureKey, std::unique_ptr<GlTexture>> textures_;
-  std::vector<CeilingLight> lights_;
+  std::vector<world::CeilingLight> lights_;
   unsigned framebuffer_ = 0, color_target_ = 0, z_buffer_ = 0;
   int last_draw_count_ = 0;
   bool submitted_ = false;
@@ -113,4 +113,4 @@ class RgbdRenderer {
   } uniforms_{};
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::render

@@ -2,9 +2,9 @@
 
 #include <numbers>
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
-CameraMount::CameraMount(const CameraSpec& spec)
+CameraMount::CameraMount(const scene::CameraSpec& spec)
     : height_m_(spec.height_m), pitch_rad_(spec.pitch_deg * std::numbers::pi / 180.0) {}
 
 Pose CameraMount::camera_in_base() const {
@@ -16,4 +16,4 @@ Pose CameraMount::camera_to_world(const RobotState& state) const {
                                  height_m_, pitch_rad_);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -6,11 +6,11 @@
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 class CameraMount {
  public:
-  explicit CameraMount(const CameraSpec& spec);
+  explicit CameraMount(const scene::CameraSpec& spec);
   CameraMount(double height_m, double pitch_rad) : height_m_(height_m), pitch_rad_(pitch_rad) {}
 
   /// Camera (optical frame) in the robot base frame.
@@ -26,4 +26,4 @@ class CameraMount {
   double pitch_rad_ = 0.0;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

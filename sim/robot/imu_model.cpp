@@ -9,7 +9,7 @@
 #include "core/error.hpp"
 #include "sim/robot/sensor_schedule.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 namespace {
 
@@ -19,7 +19,7 @@ Eigen::Matrix3d yaw_rotation(double yaw_rad) {
 
 }  // namespace
 
-ImuModel::ImuModel(const MotionProfile& motion, const ImuSpec& spec, std::uint64_t seed)
+ImuModel::ImuModel(const MotionProfile& motion, const scene::ImuSpec& spec, std::uint64_t seed)
     : motion_(motion), spec_(spec), rng_(Rng::stream(seed, "robot/imu")) {
   if (!(spec.rate_hz > 0.0) || !std::isfinite(spec.rate_hz)) {
     throw InvalidInputError(
@@ -98,4 +98,4 @@ ImuReading ImuModel::measure(std::int64_t k) {
   return sample;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -32,7 +32,7 @@
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 /// Standard gravity (m/s^2), the value Kalibr and the EuRoC tools use.
 inline constexpr double kStandardGravityMps2 = 9.80665;
@@ -46,7 +46,7 @@ struct ImuState {
 class ImuModel {
  public:
   /// Throws InvalidInputError for a rate that is not positive.
-  ImuModel(const MotionProfile& motion, const ImuSpec& spec, std::uint64_t seed);
+  ImuModel(const MotionProfile& motion, const scene::ImuSpec& spec, std::uint64_t seed);
 
   /// The IMU frame in the robot base frame.
   Pose imu_in_base() const;
@@ -62,14 +62,14 @@ class ImuModel {
   ImuReading measure(std::int64_t k);
 
   ImuState true_state(Timestamp t) const;
-  const ImuSpec& spec() const { return spec_; }
+  const scene::ImuSpec& spec() const { return spec_; }
   /// The biases after the last measure() (for tests and diagnostics).
   const Eigen::Vector3d& gyro_bias_radps() const { return gyro_bias_; }
   const Eigen::Vector3d& accel_bias_mps2() const { return accel_bias_; }
 
  private:
   const MotionProfile& motion_;
-  ImuSpec spec_;
+  scene::ImuSpec spec_;
   std::int64_t period_ns_ = 0;  // nominal sample period, whole microseconds
   Rng rng_;
   std::int64_t next_k_ = 0;
@@ -77,4 +77,4 @@ class ImuModel {
   Eigen::Vector3d accel_bias_ = Eigen::Vector3d::Zero();
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -7,7 +7,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 namespace {
 
@@ -22,7 +22,7 @@ std::int64_t to_knot_ns(double t_s) { return std::llround(t_s * 1e6) * 1000; }
 
 }  // namespace
 
-RobotMotionOptions RobotMotionOptions::from_route(const Route& route) {
+RobotMotionOptions RobotMotionOptions::from_route(const scene::Route& route) {
   RobotMotionOptions o;
   o.speed_mps = route.speed_mps;
   o.max_yaw_rate_radps = route.max_yaw_rate_radps;
@@ -37,7 +37,7 @@ Pose RobotState::base_to_world() const {
   return pose;
 }
 
-MotionProfile::MotionProfile(const RoutePath& path, const RobotMotionOptions& options,
+MotionProfile::MotionProfile(const world::RoutePath& path, const RobotMotionOptions& options,
                              std::uint64_t seed)
     : path_(path), options_(options) {
   const std::size_t n = path_.points_m.size();
@@ -64,7 +64,7 @@ MotionProfile::MotionProfile(const RoutePath& path, const RobotMotionOptions& op
   if (!(options_.speed_mps > 0.0) || !(options_.max_yaw_rate_radps > 0.0)) {
     throw InvalidInputError("robot: speed_mps and max_yaw_rate_radps must be positive");
   }
-  const PauseSpec& pause = options_.pause;
+  const scene::PauseSpec& pause = options_.pause;
   if (!(pause.spacing_min_m > 0.0) || pause.spacing_max_m < pause.spacing_min_m ||
       pause.duration_s < 0.0) {
     throw InvalidInputError(
@@ -218,4 +218,4 @@ double MotionProfile::moving_time_s() const {
   return static_cast<double>(knot_ns_.back() - paused_ns) * 1e-9;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -26,15 +26,15 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 struct RobotMotionOptions {
   double speed_mps = 0.5;           // cruise speed (TurtleBot 2 default driving speed)
   double max_yaw_rate_radps = 0.6;  // turns slow the robot down to stay below this
-  PauseSpec pause;                  // spacing range, duration, scanning while moving
+  scene::PauseSpec pause;           // spacing range, duration, scanning while moving
   bool pause_at_start = true;       // stand and scan before moving (the first frames get a
                                     // signature of their own place)
-  static RobotMotionOptions from_route(const Route& route);
+  static RobotMotionOptions from_route(const scene::Route& route);
 };
 
 /// One pause: the robot stands at `arc_length_m` during [start, end) (whole microseconds).
@@ -47,9 +47,9 @@ struct RobotPause {
 /// The robot base at one instant. The base frame: x forward, y left, z up, on the floor.
 struct RobotState {
   Eigen::Vector2d position_m = Eigen::Vector2d::Zero();
-  double heading_rad = 0.0;     // direction of travel, counter-clockwise from +x, in (-pi, pi]
-  double arc_length_m = 0.0;    // distance travelled along the route
-  double speed_mps = 0.0;       // 0 during pauses
+  double heading_rad = 0.0;   // direction of travel, counter-clockwise from +x, in (-pi, pi]
+  double arc_length_m = 0.0;  // distance travelled along the route
+  double speed_mps = 0.0;     // 0 during pauses
   // The base's velocity in the world: along the route segment it is on (route points are close
   // together, so the base follows the chords while its heading turns smoothly).
   Eigen::Vector2d velocity_mps = Eigen::Vector2d::Zero();
@@ -65,7 +65,8 @@ class MotionProfile {
  public:
   /// Throws InvalidInputError for a route with fewer than two points, decreasing arc length, or
   /// neither length nor turn.
-  MotionProfile(const RoutePath& path, const RobotMotionOptions& options, std::uint64_t seed);
+  MotionProfile(const world::RoutePath& path, const RobotMotionOptions& options,
+                std::uint64_t seed);
 
   /// The state at time t; times before 0 give the start, after end_time() the end.
   RobotState state_at(Timestamp t) const;
@@ -87,7 +88,7 @@ class MotionProfile {
   // The same for progress u (progress_[i] <= u < progress_[i + 1], clamped).
   std::size_t progress_segment(double u) const;
 
-  RoutePath path_;
+  world::RoutePath path_;
   RobotMotionOptions options_;
   // Progress along the route at each route point: arc length plus the radians turned on the spot
   // up to it (turned_rad_); strictly increases wherever the robot moves or turns.
@@ -99,4 +100,4 @@ class MotionProfile {
   std::vector<RobotPause> pauses_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

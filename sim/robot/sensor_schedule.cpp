@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 Timestamp tick_time(std::int64_t k, double rate_hz) {
   return Timestamp::from_ns(std::llround(static_cast<double>(k) * 1e6 / rate_hz) * 1000);
@@ -87,4 +87,4 @@ Timestamp SensorSchedule::odometry_time(std::int64_t j) const {
   return tick_time(j, options_.odometry_rate_hz);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -24,7 +24,7 @@
 #include "core/timestamp.hpp"
 #include "sim/robot/motion_profile.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 struct SensorScheduleOptions {
   double fps = 30.0;                  // Kinect v1 rate; lower it to make shorter datasets
@@ -71,4 +71,4 @@ Timestamp tick_time(std::int64_t k, double rate_hz);
 /// Number of ticks k >= 0 with tick_time(k) <= end.
 std::int64_t tick_count(Timestamp end, double rate_hz);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numbers>
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
-WheelOdometry::WheelOdometry(const OdometrySpec& spec, std::uint64_t seed)
+WheelOdometry::WheelOdometry(const scene::OdometrySpec& spec, std::uint64_t seed)
     : spec_(spec), rng_(Rng::stream(seed, "odometry")) {}
 
 OdometryReading WheelOdometry::measure(Timestamp t, const RobotState& truth) {
@@ -33,4 +33,4 @@ OdometryReading WheelOdometry::measure(Timestamp t, const RobotState& truth) {
   return reading;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

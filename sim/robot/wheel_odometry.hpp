@@ -20,23 +20,23 @@
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::robot {
 
 class WheelOdometry {
  public:
-  WheelOdometry(const OdometrySpec& spec, std::uint64_t seed);
+  WheelOdometry(const scene::OdometrySpec& spec, std::uint64_t seed);
 
   /// The reading at time `t`, given the true robot state then. Call with non-decreasing times;
   /// the first call defines the odometry frame (identity at the first state).
   OdometryReading measure(Timestamp t, const RobotState& truth);
 
-  const OdometrySpec& spec() const { return spec_; }
+  const scene::OdometrySpec& spec() const { return spec_; }
 
  private:
-  OdometrySpec spec_;
+  scene::OdometrySpec spec_;
   Rng rng_;
   std::optional<RobotState> previous_truth_;
   double x_m_ = 0.0, y_m_ = 0.0, theta_rad_ = 0.0;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::robot

@@ -3,7 +3,7 @@
 #include "core/error.hpp"
 #include "core/rng.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 const char* to_string(SpaceKind kind) {
   switch (kind) {
@@ -111,4 +111,4 @@ std::uint64_t session_seed(const Scene& scene) {
   return Rng::stream(scene.seed, "session/" + std::to_string(session)).next_u64();
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

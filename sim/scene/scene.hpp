@@ -20,7 +20,7 @@
 #include "radio_model/receiver_device.hpp"
 #include "radio_model/wall_material.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 /// The radio model's vocabulary, as the scene file names it.
 using radio_model::PathLossModel;
@@ -407,4 +407,4 @@ struct Scene {
 std::uint64_t session_seed(const Scene& scene);
 int session_of(const Scene& scene);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

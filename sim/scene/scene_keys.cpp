@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "sim/scene/scene_schema.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 namespace {
 
@@ -176,4 +176,4 @@ void set_scene_key(YAML::Node root, const std::string& path, const YAML::Node& v
   set_at(root, steps_of(path), 0, value, path);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

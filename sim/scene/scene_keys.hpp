@@ -12,7 +12,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 /// Every key path of the scene schema, list elements written "[*]", in schema order.
 const std::vector<std::string>& scene_key_paths();
@@ -28,4 +28,4 @@ bool is_scene_key_path(const std::string& path);
 /// InvalidInputError when a list in the path is missing or too short for the index.
 void set_scene_key(YAML::Node root, const std::string& path, const YAML::Node& value);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

@@ -6,7 +6,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 std::vector<ResolvedLevel> resolved_levels(const Scene& scene) {
   if (scene.levels.empty()) {
@@ -129,4 +129,4 @@ Scene scene_on_level(const Scene& scene, const std::string& level_id) {
   return part;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

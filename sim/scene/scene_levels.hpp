@@ -9,7 +9,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 /// A level as the world uses it: every default resolved.
 struct ResolvedLevel {
@@ -50,4 +50,4 @@ void require_level(const Scene& scene, const std::string& level, const std::stri
 /// returned whole.
 Scene scene_on_level(const Scene& scene, const std::string& level_id);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

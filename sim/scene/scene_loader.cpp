@@ -21,7 +21,7 @@
 #include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_schema.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 namespace {
 
@@ -918,4 +918,4 @@ std::string resolved_scene_yaml(const Scene& scene) {
   return std::string(out.c_str()) + "\n";
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

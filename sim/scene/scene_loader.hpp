@@ -10,7 +10,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::scene {
 
 /// Loads a scene file. Throws IoError (cannot read) or ParseError (anything wrong inside).
 Scene load_scene_file(const std::string& path);
@@ -34,4 +34,4 @@ void validate_scene(const Scene& scene);
 /// datasets). Loading the output gives back an equal scene.
 std::string resolved_scene_yaml(const Scene& scene);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::scene

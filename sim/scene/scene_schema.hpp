@@ -27,7 +27,7 @@
 #include "radio_model/access_point.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim::schema {
+namespace wifislam::sim::scene::schema {
 
 /// Allowed range of a number; `open_low` excludes the lower bound (for "must be > 0").
 struct Limits {
@@ -423,4 +423,4 @@ void visit(V& v, Scene& s) {
   v.object("radio", s.radio);
 }
 
-}  // namespace wifislam::sim::schema
+}  // namespace wifislam::sim::scene::schema

@@ -21,10 +21,11 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 /// `aps`, the building's APs as placed (ids 0..n-1), as they are in the scene's session.
 std::vector<radio_model::AccessPoint> apply_access_point_changes(
-    std::vector<radio_model::AccessPoint> aps, const Scene& scene, const World& world);
+    std::vector<radio_model::AccessPoint> aps, const scene::Scene& scene,
+    const world::World& world);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

@@ -16,7 +16,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 namespace {
 
@@ -32,8 +32,9 @@ constexpr Lattice kNarrowLattice{0.1, 0.1};
 constexpr double kClearanceM = kLattice.clearance_m;
 
 // Free-space spots on a lattice over the plan bounds, optionally restricted to one polygon.
-std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFaceGrid& walls,
-                                             const Polygon2* inside,
+std::vector<Eigen::Vector2d> candidate_spots(const world::FloorPlan& plan,
+                                             const world::WallFaceGrid& walls,
+                                             const world::Polygon2* inside,
                                              const Lattice& lattice = kLattice) {
   const double spacing_m = lattice.spacing_m;
   std::vector<Eigen::Vector2d> spots;
@@ -55,8 +56,8 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
     // regions_contain, so only spots within spans are tested. A big sparse plan (a 10 km L) then
     // costs a test per free spot, not per lattice point of its bounding box.
     spans.clear();
-    for (const PolygonWithHoles2& region : plan.free_space) {
-      const Polygon2& ring = region.outer;
+    for (const world::PolygonWithHoles2& region : plan.free_space) {
+      const world::Polygon2& ring = region.outer;
       crossings.clear();
       for (std::size_t i = 0, n = ring.size(), j = n - 1; i < n; j = i++) {
         const Eigen::Vector2d& a = ring[i];
@@ -90,8 +91,8 @@ std::vector<Eigen::Vector2d> candidate_spots(const FloorPlan& plan, const WallFa
         continue;
       }
       const Eigen::Vector2d p(x, y);
-      if (inside && !ring_contains(*inside, p)) continue;
-      if (!regions_contain(plan.free_space, p)) continue;
+      if (inside && !world::ring_contains(*inside, p)) continue;
+      if (!world::regions_contain(plan.free_space, p)) continue;
       if (walls.nearest_within_m(p, lattice.clearance_m) < lattice.clearance_m) continue;
       spots.push_back(p);
     }
@@ -136,7 +137,7 @@ std::vector<Eigen::Vector3d> at_height(const std::vector<Eigen::Vector2d>& xy, d
 }
 
 /// kColinear: `count` points evenly from line_from_m to line_to_m (one point: the middle).
-std::vector<Eigen::Vector2d> colinear_spots(const AccessPoints& spec) {
+std::vector<Eigen::Vector2d> colinear_spots(const scene::AccessPoints& spec) {
   const Eigen::Vector2d a = spec.line_from_m, b = spec.line_to_m;
   if ((b - a).norm() < 1e-9 && spec.count > 1)
     throw InvalidInputError("colinear placement needs line_from_m and line_to_m to differ");
@@ -150,7 +151,8 @@ std::vector<Eigen::Vector2d> colinear_spots(const AccessPoints& spec) {
 
 /// Candidate spots of the whole plan: the usual lattice, or the narrow one when the usual has
 /// none.
-std::vector<Eigen::Vector2d> lattice_spots(const FloorPlan& plan, const WallFaceGrid& walls) {
+std::vector<Eigen::Vector2d> lattice_spots(const world::FloorPlan& plan,
+                                           const world::WallFaceGrid& walls) {
   std::vector<Eigen::Vector2d> spots = candidate_spots(plan, walls, nullptr);
   if (spots.empty()) spots = candidate_spots(plan, walls, nullptr, kNarrowLattice);
   return spots;
@@ -158,7 +160,8 @@ std::vector<Eigen::Vector2d> lattice_spots(const FloorPlan& plan, const WallFace
 
 /// kGrid: a cols x rows grid over the plan bounds, shaped like them; each grid point takes the
 /// nearest free spot not taken yet.
-std::vector<Eigen::Vector2d> grid_spots(const AccessPoints& spec, const FloorPlan& plan,
+std::vector<Eigen::Vector2d> grid_spots(const scene::AccessPoints& spec,
+                                        const world::FloorPlan& plan,
                                         const std::vector<Eigen::Vector2d>& free_spots) {
   std::vector<Eigen::Vector2d> chosen;
   const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
@@ -190,7 +193,7 @@ std::vector<Eigen::Vector2d> grid_spots(const AccessPoints& spec, const FloorPla
 }
 
 /// The room indices in a random order (a Fisher-Yates shuffle drawn from `rng`).
-std::vector<std::size_t> shuffled_rooms(const FloorPlan& plan, Rng& rng) {
+std::vector<std::size_t> shuffled_rooms(const world::FloorPlan& plan, Rng& rng) {
   std::vector<std::size_t> order(plan.rooms.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   for (std::size_t i = order.size(); i > 1; --i)
@@ -202,8 +205,9 @@ std::vector<std::size_t> shuffled_rooms(const FloorPlan& plan, Rng& rng) {
 
 /// kRooms: all but a quarter (rounded down) of the access points in rooms, at most one per room,
 /// rooms in random order; the rest (and whatever the rooms could not take) in corridors and halls.
-std::vector<Eigen::Vector2d> room_spots(const AccessPoints& spec, const FloorPlan& plan,
-                                        const WallFaceGrid& walls,
+std::vector<Eigen::Vector2d> room_spots(const scene::AccessPoints& spec,
+                                        const world::FloorPlan& plan,
+                                        const world::WallFaceGrid& walls,
                                         const std::vector<Eigen::Vector2d>& free_spots, Rng& rng) {
   std::vector<Eigen::Vector2d> chosen;
   const int in_rooms_wanted = spec.count - spec.count / 4;
@@ -220,7 +224,7 @@ std::vector<Eigen::Vector2d> room_spots(const AccessPoints& spec, const FloorPla
   }
   std::vector<Eigen::Vector2d> walkable;
   for (const auto& p : free_spots)
-    if (regions_contain(plan.walkable, p)) walkable.push_back(p);
+    if (world::regions_contain(plan.walkable, p)) walkable.push_back(p);
   if (walkable.empty()) walkable = free_spots;
   shuffle(walkable, rng);
   take_spaced(walkable, spec.count - static_cast<int>(chosen.size()), spec.min_spacing_m, chosen);
@@ -228,10 +232,10 @@ std::vector<Eigen::Vector2d> room_spots(const AccessPoints& spec, const FloorPla
 }
 
 /// kGrid, kRandom and kRooms: spots picked from the plan's free lattice spots.
-std::vector<Eigen::Vector2d> spots_from_lattice(const AccessPoints& spec, const FloorPlan& plan,
-                                                std::uint64_t seed) {
+std::vector<Eigen::Vector2d> spots_from_lattice(const scene::AccessPoints& spec,
+                                                const world::FloorPlan& plan, std::uint64_t seed) {
   Rng rng = Rng::stream(seed, fmt::format("access_points/placement/{}", to_string(spec.placement)));
-  const WallFaceGrid walls(plan, kClearanceM);
+  const world::WallFaceGrid walls(plan, kClearanceM);
   std::vector<Eigen::Vector2d> free_spots = lattice_spots(plan, walls);
   if (free_spots.empty())
     throw InvalidInputError(fmt::format(
@@ -240,18 +244,18 @@ std::vector<Eigen::Vector2d> spots_from_lattice(const AccessPoints& spec, const 
         kNarrowLattice.clearance_m, to_string(spec.placement)));
   std::vector<Eigen::Vector2d> chosen;
   switch (spec.placement) {
-    case ApPlacement::kGrid:
+    case scene::ApPlacement::kGrid:
       chosen = grid_spots(spec, plan, free_spots);
       break;
-    case ApPlacement::kRandom:
+    case scene::ApPlacement::kRandom:
       shuffle(free_spots, rng);
       take_spaced(free_spots, spec.count, spec.min_spacing_m, chosen);
       break;
-    case ApPlacement::kRooms:
+    case scene::ApPlacement::kRooms:
       chosen = room_spots(spec, plan, walls, free_spots, rng);
       break;
-    case ApPlacement::kExplicit:
-    case ApPlacement::kColinear:
+    case scene::ApPlacement::kExplicit:
+    case scene::ApPlacement::kColinear:
       break;
   }
   if (static_cast<int>(chosen.size()) < spec.count)
@@ -262,14 +266,14 @@ std::vector<Eigen::Vector2d> spots_from_lattice(const AccessPoints& spec, const 
 
 }  // namespace
 
-std::uint64_t access_point_seed(const Scene& scene) {
+std::uint64_t access_point_seed(const scene::Scene& scene) {
   return scene.access_points.seed.value_or(scene.seed);
 }
 
-std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& spec,
-                                                          const FloorPlan& plan,
+std::vector<Eigen::Vector3d> place_access_point_positions(const scene::AccessPoints& spec,
+                                                          const world::FloorPlan& plan,
                                                           std::uint64_t seed) {
-  if (spec.placement == ApPlacement::kExplicit) {
+  if (spec.placement == scene::ApPlacement::kExplicit) {
     std::vector<Eigen::Vector3d> out;
     for (const auto& e : spec.explicit_list) out.push_back(e.position_m);
     return out;
@@ -277,13 +281,14 @@ std::vector<Eigen::Vector3d> place_access_point_positions(const AccessPoints& sp
   if (spec.count < 0)
     throw InvalidInputError(fmt::format("access_points.count must be >= 0 (got {})", spec.count));
   if (spec.count == 0) return {};
-  if (spec.placement == ApPlacement::kColinear)
+  if (spec.placement == scene::ApPlacement::kColinear)
     return at_height(colinear_spots(spec), spec.height_m);
   return at_height(spots_from_lattice(spec, plan, seed), spec.height_m);
 }
 
-std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan, double spacing_m) {
-  const WallFaceGrid walls(plan, kClearanceM);
+std::vector<Eigen::Vector2d> access_point_candidate_spots(const world::FloorPlan& plan,
+                                                          double spacing_m) {
+  const world::WallFaceGrid walls(plan, kClearanceM);
   const std::vector<Eigen::Vector2d> spots = lattice_spots(plan, walls);
   std::vector<Eigen::Vector2d> kept;
   for (const Eigen::Vector2d& p : spots)
@@ -291,9 +296,9 @@ std::vector<Eigen::Vector2d> access_point_candidate_spots(const FloorPlan& plan,
   return kept;
 }
 
-std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene,
-                                                         const FloorPlan& plan) {
-  const AccessPoints& spec = scene.access_points;
+std::vector<radio_model::AccessPoint> make_access_points(const scene::Scene& scene,
+                                                         const world::FloorPlan& plan) {
+  const scene::AccessPoints& spec = scene.access_points;
   const std::uint64_t seed = access_point_seed(scene);
   std::vector<Eigen::Vector3d> positions;
   try {
@@ -305,7 +310,7 @@ std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene,
   std::vector<radio_model::AccessPoint> aps;
   for (std::size_t i = 0; i < positions.size(); ++i) {
     double tx = spec.tx_power_dbm;
-    if (spec.placement == ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
+    if (spec.placement == scene::ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
       tx = *spec.explicit_list[i].tx_power_dbm;
     aps.push_back(radio_model::make_access_point(static_cast<int>(i), positions[i], tx,
                                                  spec.ssids_per_radio, seed, macs));
@@ -313,19 +318,21 @@ std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene,
   return aps;
 }
 
-std::vector<radio_model::AccessPoint> make_access_points(const Scene& scene, const World& world) {
+std::vector<radio_model::AccessPoint> make_access_points(const scene::Scene& scene,
+                                                         const world::World& world) {
   return apply_access_point_changes(placed_access_points(scene, world), scene, world);
 }
 
-std::vector<radio_model::AccessPoint> placed_access_points(const Scene& scene, const World& world) {
+std::vector<radio_model::AccessPoint> placed_access_points(const scene::Scene& scene,
+                                                           const world::World& world) {
   if (world.storeys.empty()) return make_access_points(scene, world.plan);
   const std::uint64_t seed = access_point_seed(scene);
   radio_model::MacAllocator macs(seed);
   std::vector<radio_model::AccessPoint> aps;
   for (std::size_t k = 0; k < world.storeys.size(); ++k) {
-    const Storey& storey = world.storeys[k];
-    const Scene part = scene_on_level(scene, storey.level_id);
-    const AccessPoints& spec = part.access_points;
+    const world::Storey& storey = world.storeys[k];
+    const scene::Scene part = scene::scene_on_level(scene, storey.level_id);
+    const scene::AccessPoints& spec = part.access_points;
     // The lowest storey places from the scene's seed, as a one-level building does; every other
     // from a stream of its own, so adding a level moves no AP of another.
     const std::uint64_t level_seed =
@@ -338,7 +345,7 @@ std::vector<radio_model::AccessPoint> placed_access_points(const Scene& scene, c
     }
     for (std::size_t i = 0; i < positions.size(); ++i) {
       double tx = spec.tx_power_dbm;
-      if (spec.placement == ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
+      if (spec.placement == scene::ApPlacement::kExplicit && spec.explicit_list[i].tx_power_dbm)
         tx = *spec.explicit_list[i].tx_power_dbm;
       Eigen::Vector3d at = positions[i];
       at.z() += storey.elevation_m;  // heights are above the level's floor
@@ -349,4 +356,4 @@ std::vector<radio_model::AccessPoint> placed_access_points(const Scene& scene, c
   return aps;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

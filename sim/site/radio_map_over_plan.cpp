@@ -9,13 +9,13 @@
 
 #include "plot/canvas.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 namespace {
 
 // Which cells have their centre in free space: the plan rasterised by cairo (no antialiasing,
 // so a pixel is set exactly when its centre is inside), one pixel per cell.
-std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& origin_m,
+std::vector<bool> free_space_mask(const world::FloorPlan& plan, const Eigen::Vector2d& origin_m,
                                   double resolution_m, int cols, int rows) {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_A8, cols, rows);
   cairo_t* cr = cairo_create(surface);
@@ -42,7 +42,7 @@ std::vector<bool> free_space_mask(const FloorPlan& plan, const Eigen::Vector2d& 
 
 }  // namespace
 
-radio_model::RadioMapArea radio_map_area(const FloorPlan& plan, double floor_elevation_m) {
+radio_model::RadioMapArea radio_map_area(const world::FloorPlan& plan, double floor_elevation_m) {
   radio_model::RadioMapArea area;
   area.floor_elevation_m = floor_elevation_m;
   area.bounds_min_m = plan.bounds_min_m;
@@ -57,13 +57,13 @@ radio_model::RadioMapArea radio_map_area(const FloorPlan& plan, double floor_ele
 }
 
 radio_model::RadioMap compute_radio_map(const radio_model::PropagationModel& model,
-                                        const FloorPlan& plan,
+                                        const world::FloorPlan& plan,
                                         const radio_model::RadioMapOptions& options,
                                         double floor_elevation_m) {
   return radio_model::compute_radio_map(model, radio_map_area(plan, floor_elevation_m), options);
 }
 
-void write_radio_map_png(const radio_model::RadioMap& map, const FloorPlan& plan,
+void write_radio_map_png(const radio_model::RadioMap& map, const world::FloorPlan& plan,
                          const std::vector<radio_model::AccessPoint>& access_points,
                          const std::filesystem::path& path, double floor_dbm) {
   const Eigen::Vector2d extent = plan.bounds_max_m - plan.bounds_min_m;
@@ -161,4 +161,4 @@ void write_radio_map_png(const radio_model::RadioMap& map, const FloorPlan& plan
   plot::write_figure(path, width, height, draw, plot::PixelFormat::kRgb24);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

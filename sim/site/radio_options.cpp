@@ -4,10 +4,10 @@
 
 #include "sim/scene/scene_levels.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
-radio_model::PropagationOptions propagation_options(const Scene& scene) {
-  const RadioSpec& radio = scene.radio;
+radio_model::PropagationOptions propagation_options(const scene::Scene& scene) {
+  const scene::RadioSpec& radio = scene.radio;
   radio_model::PropagationOptions o;
   o.wall_losses = radio_model::WallLossTable(scene.building.wall_thickness_m);
   o.model = radio.model;
@@ -19,8 +19,8 @@ radio_model::PropagationOptions propagation_options(const Scene& scene) {
   o.fading_coherence_s = radio.fading_coherence_s;
   o.bssid_spread_db = radio.bssid_spread_db;
   o.people_disturbance_db = radio.people_disturbance_db;
-  if (has_levels(scene)) {
-    for (const ResolvedLevel& level : resolved_levels(scene))
+  if (scene::has_levels(scene)) {
+    for (const scene::ResolvedLevel& level : scene::resolved_levels(scene))
       o.storey_elevations_m.push_back(level.elevation_m);
     std::sort(o.storey_elevations_m.begin(), o.storey_elevations_m.end());
   }
@@ -31,10 +31,10 @@ radio_model::PropagationOptions propagation_options(const Scene& scene) {
   return o;
 }
 
-radio_model::WifiScannerOptions wifi_scanner_options(const WifiScannerSpec& spec) {
+radio_model::WifiScannerOptions wifi_scanner_options(const scene::WifiScannerSpec& spec) {
   radio_model::WifiScannerOptions o;
-  o.device = receiver_device(spec);
+  o.device = scene::receiver_device(spec);
   return o;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

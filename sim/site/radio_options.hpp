@@ -8,12 +8,12 @@
 #include "radio_model/wifi_scanner.hpp"
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 /// The scene's radio keys, and wall losses for its building's wall thickness (a measured
 /// `radio.wall_loss_db` replaces that material's law by a loss flat in frequency).
-radio_model::PropagationOptions propagation_options(const Scene& scene);
+radio_model::PropagationOptions propagation_options(const scene::Scene& scene);
 
-radio_model::WifiScannerOptions wifi_scanner_options(const WifiScannerSpec& spec);
+radio_model::WifiScannerOptions wifi_scanner_options(const scene::WifiScannerSpec& spec);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

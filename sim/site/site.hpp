@@ -19,16 +19,20 @@ namespace wifislam::radio_model {
 class PropagationModel;
 }
 
-namespace wifislam::sim {
-
+namespace wifislam::sim::world {
 struct World;
+}
+namespace wifislam::sim::robot {
 class MotionProfile;
+}
+
+namespace wifislam::sim::site {
 
 class Site {
  public:
   /// Validates the scene and builds everything. Throws InvalidInputError for a scene whose world,
   /// route or access points cannot be built (each message names the part).
-  explicit Site(const Scene& scene);
+  explicit Site(const scene::Scene& scene);
   ~Site();
   Site(Site&&) noexcept;
   Site& operator=(Site&&) noexcept;
@@ -36,11 +40,11 @@ class Site {
   /// The same building and route with other access points (`access_points` replaces the scene's
   /// block): the world and the motion are shared, not rebuilt; the radio model is built for the
   /// new access points exactly as Site(scene with that block) would build it.
-  Site with_access_points(const AccessPoints& access_points) const;
+  Site with_access_points(const scene::AccessPoints& access_points) const;
 
-  const Scene& scene() const { return scene_; }
-  const World& world() const { return *world_; }
-  const MotionProfile& motion() const { return *motion_; }
+  const scene::Scene& scene() const { return scene_; }
+  const world::World& world() const { return *world_; }
+  const robot::MotionProfile& motion() const { return *motion_; }
   const radio_model::PropagationModel& radio() const { return *radio_; }
   const std::vector<radio_model::AccessPoint>& access_points() const;
   /// Height of the Wi-Fi receiver above the floor. It rides with the camera: datasets scan there,
@@ -48,13 +52,13 @@ class Site {
   double receiver_height_m() const { return scene_.sensors.camera.height_m; }
 
  private:
-  Site(const Scene& scene, std::shared_ptr<const World> world,
-       std::shared_ptr<const MotionProfile> motion);
+  Site(const scene::Scene& scene, std::shared_ptr<const world::World> world,
+       std::shared_ptr<const robot::MotionProfile> motion);
 
-  Scene scene_;
-  std::shared_ptr<const World> world_;
-  std::shared_ptr<const MotionProfile> motion_;
+  scene::Scene scene_;
+  std::shared_ptr<const world::World> world_;
+  std::shared_ptr<const robot::MotionProfile> motion_;
   std::unique_ptr<radio_model::PropagationModel> radio_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

@@ -8,23 +8,23 @@
 #include "sim/site/radio_options.hpp"
 #include "sim/world/plan_drawing.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 namespace {
 
 /// One level of the site as a picture shows it.
 struct LevelView {
-  const FloorPlan* plan = nullptr;
+  const world::FloorPlan* plan = nullptr;
   double elevation_m = 0.0;
   bool route_level = true;
   std::string id;
 };
 
 LevelView level_view(const Site& site, const std::string& level) {
-  const World& world = site.world();
+  const world::World& world = site.world();
   if (level.empty() || level == world.level_id)
     return {&world.plan, world.elevation_m, true, world.level_id};
-  const Storey* storey = world.storey(level);
+  const world::Storey* storey = world.storey(level);
   if (!storey) {
     std::string ids;
     for (const std::string& id : site_level_ids(site)) ids += (ids.empty() ? "" : ", ") + id;
@@ -50,13 +50,13 @@ std::vector<radio_model::AccessPoint> access_points_on(const Site& site, const L
 
 std::vector<std::string> site_level_ids(const Site& site) {
   std::vector<std::string> ids;
-  for (const Storey& storey : site.world().storeys) ids.push_back(storey.level_id);
+  for (const world::Storey& storey : site.world().storeys) ids.push_back(storey.level_id);
   return ids;
 }
 
 void draw_site_plan(const Site& site, const std::filesystem::path& path, const std::string& level) {
   const LevelView view = level_view(site, level);
-  PlanDrawingOptions options;
+  world::PlanDrawingOptions options;
   options.title =
       view.id.empty()
           ? fmt::format("{} (seed {})", site.scene().name, site.scene().seed)
@@ -64,13 +64,13 @@ void draw_site_plan(const Site& site, const std::filesystem::path& path, const s
   for (const radio_model::AccessPoint& ap : access_points_on(site, view))
     options.access_points_m.push_back(ap.position_m);
   if (view.route_level) {
-    draw_floor_plan(site.world(), path, options);
+    world::draw_floor_plan(site.world(), path, options);
     return;
   }
-  World level_only;  // the level's plan, without the route (it runs on another level)
+  world::World level_only;  // the level's plan, without the route (it runs on another level)
   level_only.plan = *view.plan;
   options.draw_route = false;
-  draw_floor_plan(level_only, path, options);
+  world::draw_floor_plan(level_only, path, options);
 }
 
 radio_model::RadioMap compute_site_radio_map(const Site& site,
@@ -86,9 +86,9 @@ radio_model::RadioMap draw_site_radio_map(const Site& site,
                                           const std::string& level) {
   const LevelView view = level_view(site, level);
   const radio_model::RadioMap map = compute_site_radio_map(site, options, level);
-  const double floor_dbm = receiver_device(site.scene().sensors.wifi).sensitivity_dbm;
+  const double floor_dbm = scene::receiver_device(site.scene().sensors.wifi).sensitivity_dbm;
   write_radio_map_png(map, *view.plan, access_points_on(site, view), path, floor_dbm);
   return map;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

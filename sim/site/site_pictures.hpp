@@ -14,7 +14,7 @@
 #include "radio_model/radio_map.hpp"
 #include "sim/site/site.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 /// The ids of the site's levels, lowest first (empty for a one-level scene).
 std::vector<std::string> site_level_ids(const Site& site);
@@ -37,4 +37,4 @@ radio_model::RadioMap draw_site_radio_map(const Site& site,
                                           const std::filesystem::path& path,
                                           const std::string& level = "");
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

@@ -5,24 +5,24 @@
 #include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 radio_model::calibrate::SurveySite survey_site(const Site& site) {
-  const Scene& scene = site.scene();
-  const FloorPlan& plan = site.world().plan;
+  const scene::Scene& scene = site.scene();
+  const world::FloorPlan& plan = site.world().plan;
   radio_model::calibrate::SurveySite out;
   out.name = scene.name;
   out.access_points_where = scene.where("access_points");
-  out.walls = radio_wall_mesh(site.world().mesh);
+  out.walls = world::radio_wall_mesh(site.world().mesh);
   out.bounds_min_m = plan.bounds_min_m;
   out.bounds_max_m = plan.bounds_max_m;
   out.ceiling_m = scene.building.wall_height_m;
   out.in_free_space = [&plan](const Eigen::Vector2d& p) {
-    return regions_contain(plan.free_space, p);
+    return world::regions_contain(plan.free_space, p);
   };
   out.options = propagation_options(scene);
   out.seed = scene.seed;
   return out;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

@@ -5,9 +5,9 @@
 #include "radio_model/calibrate/survey_links.hpp"
 #include "sim/site/site.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::site {
 
 /// Holds a reference to `site`'s world: `site` must outlive the result.
 radio_model::calibrate::SurveySite survey_site(const Site& site);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::site

@@ -14,7 +14,7 @@
 
 #include <Eigen/Core>
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 class BoxGrid {
  public:
@@ -56,4 +56,4 @@ class BoxGrid {
   std::unordered_map<std::int64_t, std::vector<int>> cells_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

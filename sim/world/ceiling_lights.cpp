@@ -8,9 +8,9 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/region_locator.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
-std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLayout& layout,
+std::vector<CeilingLight> place_ceiling_lights(const scene::Scene& scene, const PlanLayout& layout,
                                                const FloorPlan& plan) {
   const double spacing = std::max(0.5, scene.appearance.light_spacing_m);
   const double z = plan.wall_height_m - 0.01;
@@ -45,7 +45,7 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
       try_add(c.rect.point((k + 0.5 + shift) * c.length_m / n, 0.0), 0.5 * spacing);
     }
   }
-  for (const OpenArea& area : scene.open_areas) {
+  for (const scene::OpenArea& area : scene.open_areas) {
     Eigen::Vector2d lo = area.polygon_m[0], hi = area.polygon_m[0];
     for (const auto& v : area.polygon_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     for (double y = lo.y() + 0.5 * spacing; y < hi.y(); y += spacing)
@@ -54,8 +54,8 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
   }
   // Walkable spaces of imported plans: candidates on a grid of a third of the spacing, centred
   // on the space's box, kept a spacing apart (a narrow corridor of any shape still gets a row).
-  for (const Space& space : scene.spaces) {
-    if (space.kind == SpaceKind::kRoom) continue;
+  for (const scene::Space& space : scene.spaces) {
+    if (space.kind == scene::SpaceKind::kRoom) continue;
     Eigen::Vector2d lo = space.polygon_m[0], hi = space.polygon_m[0];
     for (const auto& v : space.polygon_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     const Eigen::Vector2d mid = 0.5 * (lo + hi);
@@ -77,4 +77,4 @@ std::vector<CeilingLight> place_ceiling_lights(const Scene& scene, const PlanLay
   return lights;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -19,7 +19,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/wall_faces.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
@@ -145,7 +145,7 @@ Box box_of(const Polygon& p) {
   return {b.xmin(), b.ymin(), b.xmax(), b.ymax()};
 }
 
-void check_building(const Scene& scene) {
+void check_building(const scene::Scene& scene) {
   if (!(scene.building.wall_thickness_m > 0))
     throw InvalidInputError("building.wall_thickness_m must be positive");
   if (!(scene.building.wall_height_m > 0))
@@ -164,9 +164,9 @@ struct ExactPieces {
 
 /// Open area `i`: its outline (counter-clockwise), its dilation and its pillars. Rejects an
 /// outline that is not a simple polygon with an area.
-void add_open_area(const Scene& scene, std::size_t i, double wall_thickness_m,
+void add_open_area(const scene::Scene& scene, std::size_t i, double wall_thickness_m,
                    ExactPieces& pieces) {
-  const OpenArea& area = scene.open_areas[i];
+  const scene::OpenArea& area = scene.open_areas[i];
   Polygon p = exact_polygon(area.polygon_m);
   if (area.polygon_m.size() < 3 || !p.is_simple() || p.area() == 0) {
     scene.reject(fmt::format("open_areas[{}].polygon_m", i),
@@ -179,7 +179,7 @@ void add_open_area(const Scene& scene, std::size_t i, double wall_thickness_m,
       CGAL::minkowski_sum_2(p, dilation_kernel(wall_thickness_m, is_axis_aligned(area.polygon_m)));
   pieces.dilated.push_back(grown.outer_boundary());
   pieces.open_areas.push_back(p);
-  for (const OpenArea::Pillar& pillar : area.pillars) {
+  for (const scene::OpenArea::Pillar& pillar : area.pillars) {
     OrientedRect r;
     r.origin_m = pillar.center_m;
     r.s0 = r.l0 = -0.5 * pillar.size_m;
@@ -189,7 +189,7 @@ void add_open_area(const Scene& scene, std::size_t i, double wall_thickness_m,
 }
 
 /// A simple polygon with an area, counter-clockwise, else rejected at `key`.
-Polygon checked_polygon(const Scene& scene, const Polygon2& ring, const std::string& key,
+Polygon checked_polygon(const scene::Scene& scene, const Polygon2& ring, const std::string& key,
                         const std::string& what) {
   Polygon p = exact_polygon(ring);
   if (ring.size() < 3 || !p.is_simple() || p.area() == 0) {
@@ -202,31 +202,31 @@ Polygon checked_polygon(const Scene& scene, const Polygon2& ring, const std::str
 }
 
 /// Whether p lies in a walkable space (corridor or area kind).
-bool in_walkable_space(const Scene& scene, const Eigen::Vector2d& p) {
-  for (const Space& s : scene.spaces)
-    if (s.kind != SpaceKind::kRoom && ring_contains(s.polygon_m, p)) return true;
+bool in_walkable_space(const scene::Scene& scene, const Eigen::Vector2d& p) {
+  for (const scene::Space& s : scene.spaces)
+    if (s.kind != scene::SpaceKind::kRoom && ring_contains(s.polygon_m, p)) return true;
   return false;
 }
 
 /// Spaces (walls grown around each like around an open area), obstacles (like pillars) and the
 /// doorways of open doors (one wall thickness to either side of the door's centre line, so they
 /// overlap the spaces on both sides).
-void add_spaces(const Scene& scene, double wall_thickness_m, ExactPieces& pieces) {
+void add_spaces(const scene::Scene& scene, double wall_thickness_m, ExactPieces& pieces) {
   for (std::size_t i = 0; i < scene.spaces.size(); ++i) {
-    const Space& space = scene.spaces[i];
+    const scene::Space& space = scene.spaces[i];
     const Polygon p =
         checked_polygon(scene, space.polygon_m, fmt::format("spaces[{}].polygon_m", i),
                         fmt::format("space '{}'", space.id));
     const PolygonWH grown = CGAL::minkowski_sum_2(
         p, dilation_kernel(wall_thickness_m, is_axis_aligned(space.polygon_m)));
     pieces.dilated.push_back(grown.outer_boundary());
-    (space.kind == SpaceKind::kRoom ? pieces.space_rooms : pieces.open_areas).push_back(p);
+    (space.kind == scene::SpaceKind::kRoom ? pieces.space_rooms : pieces.open_areas).push_back(p);
   }
   for (std::size_t i = 0; i < scene.obstacles.size(); ++i)
     pieces.pillars.push_back(checked_polygon(scene, scene.obstacles[i].polygon_m,
                                              fmt::format("obstacles[{}].polygon_m", i),
                                              fmt::format("obstacle {}", i)));
-  for (const SpaceDoor& door : scene.doors) {
+  for (const scene::SpaceDoor& door : scene.doors) {
     if (!door.open) continue;
     const OrientedRect r = space_door_rect(door, wall_thickness_m);
     const Eigen::Vector2d n = r.left() * (0.5 * wall_thickness_m + 0.05);
@@ -237,7 +237,8 @@ void add_spaces(const Scene& scene, double wall_thickness_m, ExactPieces& pieces
 }
 
 /// Corridors, then open areas, then spaces, in scene order.
-ExactPieces exact_pieces(const Scene& scene, const PlanLayout& layout, double wall_thickness_m) {
+ExactPieces exact_pieces(const scene::Scene& scene, const PlanLayout& layout,
+                         double wall_thickness_m) {
   ExactPieces pieces;
   for (const CorridorLayout& c : layout.corridors) {
     pieces.corridors.push_back(exact_rect(c.rect));
@@ -334,7 +335,7 @@ void check_walkable_connected(const FloorPlan& plan) {
 }
 
 /// A room and its door for each kept candidate, in candidate order.
-void add_rooms_and_doors(const Scene& scene, const PlanLayout& layout,
+void add_rooms_and_doors(const scene::Scene& scene, const PlanLayout& layout,
                          const std::vector<int>& kept_candidates, FloorPlan& plan) {
   const double door_height_m = std::min(2.1, scene.building.wall_height_m - 0.2);
   for (int index : kept_candidates) {
@@ -358,11 +359,11 @@ void add_rooms_and_doors(const Scene& scene, const PlanLayout& layout,
 }
 
 /// The nearest room space within one wall thickness of p (a door's centre), or -1.
-int room_space_near(const Scene& scene, const Eigen::Vector2d& p, double wall_thickness_m) {
+int room_space_near(const scene::Scene& scene, const Eigen::Vector2d& p, double wall_thickness_m) {
   int best = -1, room = 0;
   double best_d = wall_thickness_m + 1e-6;
-  for (const Space& s : scene.spaces) {
-    if (s.kind != SpaceKind::kRoom) continue;
+  for (const scene::Space& s : scene.spaces) {
+    if (s.kind != scene::SpaceKind::kRoom) continue;
     double d = ring_contains(s.polygon_m, p) ? 0.0 : 1e300;
     for (std::size_t k = 0, n = s.polygon_m.size(); k < n; ++k)
       d = std::min(d, segment_distance_m(p, s.polygon_m[k], s.polygon_m[(k + 1) % n]));
@@ -374,10 +375,10 @@ int room_space_near(const Scene& scene, const Eigen::Vector2d& p, double wall_th
 
 /// Rooms of the spaces of kind room, then the space doors, after the corridors' rooms: a door
 /// belongs to the room space it opens into (if any), a room to its first door.
-void add_space_rooms_and_doors(const Scene& scene, FloorPlan& plan) {
+void add_space_rooms_and_doors(const scene::Scene& scene, FloorPlan& plan) {
   const int first_room = static_cast<int>(plan.rooms.size());
-  for (const Space& s : scene.spaces) {
-    if (s.kind != SpaceKind::kRoom) continue;
+  for (const scene::Space& s : scene.spaces) {
+    if (s.kind != scene::SpaceKind::kRoom) continue;
     Room room;
     room.polygon_m = s.polygon_m;
     if (ring_signed_area_m2(room.polygon_m) < 0)
@@ -386,7 +387,7 @@ void add_space_rooms_and_doors(const Scene& scene, FloorPlan& plan) {
     plan.rooms.push_back(std::move(room));
   }
   const double door_height_m = std::min(2.1, scene.building.wall_height_m - 0.2);
-  for (const SpaceDoor& d : scene.doors) {
+  for (const scene::SpaceDoor& d : scene.doors) {
     const OrientedRect r = space_door_rect(d, plan.wall_thickness_m);
     Door door;
     door.center_m = r.center();
@@ -417,7 +418,7 @@ void set_bounds(FloorPlan& plan) {
 
 }  // namespace
 
-FloorPlan build_floor_plan(const Scene& scene, bool robot_space) {
+FloorPlan build_floor_plan(const scene::Scene& scene, bool robot_space) {
   check_building(scene);
   const double t = scene.building.wall_thickness_m;
   const PlanLayout layout = lay_out_scene(scene);
@@ -437,4 +438,4 @@ FloorPlan build_floor_plan(const Scene& scene, bool robot_space) {
   return plan;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -4,7 +4,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 /// Builds the floor plan with exact polygon booleans (CGAL Polygon_set_2 over an exact kernel),
 /// converted to double at the end.
@@ -27,6 +27,6 @@ namespace wifislam::sim {
 /// (only where the robot drives: `robot_space` false for a storey the route is not on, which the
 /// radio alone sees), or when the scene's geometry is unusable (degenerate open-area polygon, door
 /// not fitting ...).
-FloorPlan build_floor_plan(const Scene& scene, bool robot_space = true);
+FloorPlan build_floor_plan(const scene::Scene& scene, bool robot_space = true);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -15,7 +15,7 @@
 
 #include "sim/world/poster_layout.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
@@ -92,7 +92,7 @@ std::vector<std::array<Eigen::Vector2d, 3>> triangulate(
 
 struct Attributes {
   SurfaceKind surface = SurfaceKind::kWall;
-  WallMaterial material = WallMaterial::kPlasterboard;
+  radio_model::WallMaterial material = radio_model::WallMaterial::kPlasterboard;
   int wall_id = -1;
   int variant = 0;
   int decoration = -1;
@@ -253,7 +253,7 @@ void add_wall_face(MeshWriter& writer, const FloorPlan& plan, const WallFace2& f
   const Door& door = plan.doors[f.door_index];
   Attributes leaf = attr;
   leaf.surface = SurfaceKind::kDoor;
-  leaf.material = WallMaterial::kWoodDoor;
+  leaf.material = radio_model::WallMaterial::kWoodDoor;
   add_wall_strip(writer, f.a_m, f.b_m, ha, hb, 0.0, door.height_m, leaf);
   Attributes lintel = attr;
   lintel.material = plan.rooms[door.room_index].material;
@@ -289,7 +289,7 @@ void add_floor_and_ceiling(MeshWriter& writer, const FloorPlan& plan) {
   const auto tris = triangulate(free_space_edges(plan));
   Attributes floor;
   floor.surface = SurfaceKind::kFloor;
-  floor.material = WallMaterial::kConcrete;
+  floor.material = radio_model::WallMaterial::kConcrete;
   // Floor and ceiling textures tile (12 m and 9.6 m, see procedural_textures.cpp). Laid at an
   // angle to the plan axes, a shift along a corridor (x or y) maps the tiling onto itself only
   // after hundreds of metres, so no two places of a corridor share a floor or ceiling pattern.
@@ -317,7 +317,7 @@ void add_door_frame(MeshWriter& writer, const Door& door, double wall_height_m) 
   const double top = std::min(h + kFrameWidthM, wall_height_m);
   Attributes frame;
   frame.surface = SurfaceKind::kDoorFrame;
-  frame.material = WallMaterial::kWoodDoor;
+  frame.material = radio_model::WallMaterial::kWoodDoor;
   for (double side : {1.0, -1.0}) {
     const Eigen::Vector2d facing = side * n;
     const Eigen::Vector2d base = door.center_m + (ht + kFrameOffsetM) * facing;
@@ -371,7 +371,7 @@ void add_ceiling_lights(MeshWriter& writer, const FloorPlan& plan) {
 }
 
 /// Posters and landmarks, just off the wall face they hang on.
-void add_posters(MeshWriter& writer, const Scene& scene, const FloorPlan& plan) {
+void add_posters(MeshWriter& writer, const scene::Scene& scene, const FloorPlan& plan) {
   for (const PosterPlacement& p : place_posters(scene, plan)) {
     Attributes attr;
     attr.surface = SurfaceKind::kPoster;
@@ -388,7 +388,7 @@ void add_posters(MeshWriter& writer, const Scene& scene, const FloorPlan& plan) 
 
 }  // namespace
 
-Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
+Mesh build_mesh(const scene::Scene& scene, const FloorPlan& plan) {
   Mesh mesh;
   MeshWriter writer(mesh);
   const CornerHeights corners = corner_heights(plan);
@@ -401,4 +401,4 @@ Mesh build_mesh(const Scene& scene, const FloorPlan& plan) {
   return mesh;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

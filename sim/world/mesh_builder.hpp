@@ -18,8 +18,8 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
-Mesh build_mesh(const Scene& scene, const FloorPlan& plan);
+Mesh build_mesh(const scene::Scene& scene, const FloorPlan& plan);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -4,24 +4,24 @@
 #include <cmath>
 #include <set>
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
 using plot::Colour;
 using plot::MetricCanvas;
 
-Colour material_colour(WallMaterial m) {
+Colour material_colour(radio_model::WallMaterial m) {
   switch (m) {
-    case WallMaterial::kPlasterboard:
+    case radio_model::WallMaterial::kPlasterboard:
       return {0.55, 0.60, 0.68};
-    case WallMaterial::kBrick:
+    case radio_model::WallMaterial::kBrick:
       return {0.72, 0.30, 0.20};
-    case WallMaterial::kConcrete:
+    case radio_model::WallMaterial::kConcrete:
       return {0.35, 0.35, 0.35};
-    case WallMaterial::kGlass:
+    case radio_model::WallMaterial::kGlass:
       return {0.30, 0.70, 0.85};
-    case WallMaterial::kWoodDoor:
+    case radio_model::WallMaterial::kWoodDoor:
       return {0.55, 0.36, 0.12};
   }
   return {0, 0, 0};
@@ -86,7 +86,8 @@ void draw_route(cairo_t* cr, const MetricCanvas& c, const RoutePath& route) {
     const double h = route.heading_rad[i];
     const Eigen::Vector2d f(std::cos(h), -std::sin(h)), s(std::sin(h), std::cos(h));
     const double size = 7.0;
-    plot::ring_path(cr, {p + size * f, p - size * f + 0.7 * size * s, p - size * f - 0.7 * size * s},
+    plot::ring_path(cr,
+                    {p + size * f, p - size * f + 0.7 * size * s, p - size * f - 0.7 * size * s},
                     plot::as_is);
     cairo_fill(cr);
   }
@@ -127,14 +128,15 @@ void draw_access_points(cairo_t* cr, const MetricCanvas& c,
 
 void draw_legend(cairo_t* cr, const FloorPlan& plan, const PlanDrawingOptions& options, double x,
                  double y) {
-  std::set<WallMaterial> materials;
+  std::set<radio_model::WallMaterial> materials;
   for (const WallFace2& f : plan.wall_faces) materials.insert(f.material);
   plot::set_colour(cr, {0, 0, 0});
   plot::draw_text(cr, x, y, "walls", 14, true);
   y += 22;
-  for (WallMaterial m : materials)
-    y = plot::legend_box(cr, x, y, material_colour(m),
-                         m == WallMaterial::kWoodDoor ? "closed door (wood)" : to_string(m));
+  for (radio_model::WallMaterial m : materials)
+    y = plot::legend_box(
+        cr, x, y, material_colour(m),
+        m == radio_model::WallMaterial::kWoodDoor ? "closed door (wood)" : to_string(m));
   y += 8;
   plot::set_colour(cr, {0, 0, 0});
   plot::draw_text(cr, x, y, "plan", 14, true);
@@ -201,4 +203,4 @@ void draw_floor_plan(const World& world, const std::filesystem::path& path,
   });
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

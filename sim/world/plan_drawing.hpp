@@ -13,7 +13,7 @@
 #include "plot/canvas.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 struct PlanDrawingOptions {
   std::string title;
@@ -31,4 +31,4 @@ void draw_plan_backdrop(cairo_t* cr, const plot::MetricCanvas& canvas, const Flo
 void draw_floor_plan(const World& world, const std::filesystem::path& path,
                      const PlanDrawingOptions& options = {});
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

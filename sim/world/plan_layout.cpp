@@ -7,7 +7,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 Polygon2 OrientedRect::corners() const {
   return {point(s0, l0), point(s1, l0), point(s1, l1), point(s0, l1)};
@@ -35,10 +35,10 @@ bool OrientedRect::contains(const Eigen::Vector2d& p, double tolerance_m) const 
 
 namespace {
 
-void lay_out_room_row(const Scene& scene, const CorridorLayout& corridor, int row_index,
+void lay_out_room_row(const scene::Scene& scene, const CorridorLayout& corridor, int row_index,
                       double side_sign, PlanLayout& layout) {
-  const Corridor& c = scene.corridors[corridor.corridor_index];
-  const RoomRow& row = c.rooms[row_index];
+  const scene::Corridor& c = scene.corridors[corridor.corridor_index];
+  const scene::RoomRow& row = c.rooms[row_index];
   const double t = scene.building.wall_thickness_m;
   const double half_w = 0.5 * c.width_m;
   const double from = row.from_m;
@@ -96,12 +96,12 @@ void lay_out_room_row(const Scene& scene, const CorridorLayout& corridor, int ro
 
 }  // namespace
 
-PlanLayout lay_out_scene(const Scene& scene) {
+PlanLayout lay_out_scene(const scene::Scene& scene) {
   PlanLayout layout;
   for (std::size_t i = 0; i < scene.corridors.size(); ++i) {
-    const Corridor& c = scene.corridors[i];
-    const SceneNode* a = scene.find_node(c.from);
-    const SceneNode* b = scene.find_node(c.to);
+    const scene::Corridor& c = scene.corridors[i];
+    const scene::SceneNode* a = scene.find_node(c.from);
+    const scene::SceneNode* b = scene.find_node(c.to);
     if (a == nullptr || b == nullptr)
       throw InvalidInputError(fmt::format("corridor '{}': node '{}' does not exist", c.id,
                                           a == nullptr ? c.from : c.to));
@@ -131,19 +131,19 @@ PlanLayout lay_out_scene(const Scene& scene) {
     layout.corridors.push_back(cl);
   }
   for (const CorridorLayout& cl : layout.corridors) {
-    const Corridor& c = scene.corridors[cl.corridor_index];
+    const scene::Corridor& c = scene.corridors[cl.corridor_index];
     for (std::size_t r = 0; r < c.rooms.size(); ++r) {
-      const RoomRow::Side side = c.rooms[r].side;
-      if (side == RoomRow::Side::kLeft || side == RoomRow::Side::kBoth)
+      const scene::RoomRow::Side side = c.rooms[r].side;
+      if (side == scene::RoomRow::Side::kLeft || side == scene::RoomRow::Side::kBoth)
         lay_out_room_row(scene, cl, static_cast<int>(r), +1.0, layout);
-      if (side == RoomRow::Side::kRight || side == RoomRow::Side::kBoth)
+      if (side == scene::RoomRow::Side::kRight || side == scene::RoomRow::Side::kBoth)
         lay_out_room_row(scene, cl, static_cast<int>(r), -1.0, layout);
     }
   }
   return layout;
 }
 
-OrientedRect space_door_rect(const SpaceDoor& door, double wall_thickness_m) {
+OrientedRect space_door_rect(const scene::SpaceDoor& door, double wall_thickness_m) {
   OrientedRect r;
   r.origin_m = door.from_m;
   const Eigen::Vector2d d = door.to_m - door.from_m;
@@ -155,4 +155,4 @@ OrientedRect space_door_rect(const SpaceDoor& door, double wall_thickness_m) {
   return r;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -11,7 +11,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 /// A rectangle in a corridor's own frame: points origin + s * along + l * left for s in
 /// [s0, s1] and l in [l0, l1]. `left` is `along` turned by +90 degrees.
@@ -46,7 +46,7 @@ struct RoomCandidate {
   OrientedRect door;  // the opening through the wall between corridor and room
   double door_width_m = 0.9;
   bool door_open = false;
-  WallMaterial material = WallMaterial::kBrick;
+  radio_model::WallMaterial material = radio_model::WallMaterial::kBrick;
 };
 
 struct PlanLayout {
@@ -56,10 +56,10 @@ struct PlanLayout {
 
 /// A space door's opening: along the door from its `from_m` jamb, `wall_thickness_m` to either
 /// side of its centre line (deeper than the wall, so it overlaps the spaces on both sides).
-OrientedRect space_door_rect(const SpaceDoor& door, double wall_thickness_m);
+OrientedRect space_door_rect(const scene::SpaceDoor& door, double wall_thickness_m);
 
 /// Lays out corridors and candidate rooms. Throws InvalidInputError for a corridor that names a
 /// missing node or has zero length, or a room row whose door does not fit in its rooms.
-PlanLayout lay_out_scene(const Scene& scene);
+PlanLayout lay_out_scene(const scene::Scene& scene);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <limits>
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 double ring_signed_area_m2(const Polygon2& ring) {
   double twice = 0;
@@ -72,4 +72,4 @@ double nearest_wall_distance_m(const FloorPlan& plan, const Eigen::Vector2d& p, 
   return best;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

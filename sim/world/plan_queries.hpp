@@ -8,7 +8,7 @@
 
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 /// Signed area (positive for counter-clockwise rings).
 double ring_signed_area_m2(const Polygon2& ring);
@@ -32,4 +32,4 @@ double segment_distance_m(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
 double nearest_wall_distance_m(const FloorPlan& plan, const Eigen::Vector2d& p,
                                int* nearest_face = nullptr);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

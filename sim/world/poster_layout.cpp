@@ -8,7 +8,7 @@
 #include "core/rng.hpp"
 #include "sim/world/plan_queries.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
@@ -33,7 +33,7 @@ PosterPlacement on_face(const FloorPlan& plan, int face_index, double along_m) {
 
 }  // namespace
 
-std::vector<PosterPlacement> place_posters(const Scene& scene, const FloorPlan& plan) {
+std::vector<PosterPlacement> place_posters(const scene::Scene& scene, const FloorPlan& plan) {
   std::vector<PosterPlacement> posters;
   const double expected =
       std::max(0.0, scene.appearance.posters_per_10m) * scene.appearance.segment_length_m / 10.0;
@@ -70,7 +70,7 @@ std::vector<PosterPlacement> place_posters(const Scene& scene, const FloorPlan& 
     }
   }
   for (std::size_t k = 0; k < scene.appearance.landmarks.size(); ++k) {
-    const Landmark& mark = scene.appearance.landmarks[k];
+    const scene::Landmark& mark = scene.appearance.landmarks[k];
     int best = -1;
     double best_d = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < plan.wall_faces.size(); ++i) {
@@ -97,4 +97,4 @@ std::vector<PosterPlacement> place_posters(const Scene& scene, const FloorPlan& 
   return posters;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

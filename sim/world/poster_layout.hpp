@@ -16,7 +16,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 struct PosterPlacement {
   int face_index = -1;                                 // into FloorPlan::wall_faces
@@ -31,6 +31,6 @@ struct PosterPlacement {
   bool landmark = false;
 };
 
-std::vector<PosterPlacement> place_posters(const Scene& scene, const FloorPlan& plan);
+std::vector<PosterPlacement> place_posters(const scene::Scene& scene, const FloorPlan& plan);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -5,7 +5,7 @@
 
 #include "sim/world/plan_queries.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 radio_model::WallMesh radio_wall_mesh(const Mesh& mesh) {
   radio_model::WallMesh walls;
@@ -126,4 +126,4 @@ void building_bounds(const World& world, Eigen::Vector2d& min_m, Eigen::Vector2d
   }
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

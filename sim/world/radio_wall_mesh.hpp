@@ -15,7 +15,7 @@
 #include "radio_model/wall_mesh.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 radio_model::WallMesh radio_wall_mesh(const Mesh& mesh);
 
@@ -26,4 +26,4 @@ radio_model::WallMesh radio_wall_mesh(const World& world);
 /// The building's extent in (x, y): the route level's plan bounds, or every storey's together.
 void building_bounds(const World& world, Eigen::Vector2d& min_m, Eigen::Vector2d& max_m);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -16,7 +16,7 @@
 
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 class RegionLocator {
  public:
@@ -87,4 +87,4 @@ class RegionLocator {
   std::unordered_map<std::int64_t, std::vector<Edge>> bands_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -11,7 +11,7 @@
 #include "sim/world/region_locator.hpp"
 #include "sim/world/wall_face_grid.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
@@ -67,8 +67,8 @@ struct Sampler {
 double wrap_angle(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
 /// The route's corner points: its nodes' positions, or its waypoints.
-std::vector<Eigen::Vector2d> route_points(const Scene& scene) {
-  const Route& route = scene.route;
+std::vector<Eigen::Vector2d> route_points(const scene::Scene& scene) {
+  const scene::Route& route = scene.route;
   if (!route.waypoints_m.empty()) {
     if (route.waypoints_m.size() < 2)
       throw InvalidInputError("route.waypoints_m: a route needs at least two waypoints");
@@ -82,7 +82,7 @@ std::vector<Eigen::Vector2d> route_points(const Scene& scene) {
     throw InvalidInputError("route.nodes: a route needs at least two nodes");
   std::vector<Eigen::Vector2d> pts;
   for (std::size_t i = 0; i < route.nodes.size(); ++i) {
-    const SceneNode* node = scene.find_node(route.nodes[i]);
+    const scene::SceneNode* node = scene.find_node(route.nodes[i]);
     if (node == nullptr)
       throw InvalidInputError(
           fmt::format("route.nodes[{}]: node '{}' does not exist", i, route.nodes[i]));
@@ -97,8 +97,8 @@ std::vector<Eigen::Vector2d> route_points(const Scene& scene) {
 
 }  // namespace
 
-RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
-  const Route& route = scene.route;
+RoutePath build_route(const scene::Scene& scene, const FloorPlan& plan) {
+  const scene::Route& route = scene.route;
   const std::vector<Eigen::Vector2d> pts = route_points(scene);
   const bool by_waypoints = !route.waypoints_m.empty();
 
@@ -176,4 +176,4 @@ RoutePath build_route(const Scene& scene, const FloorPlan& plan) {
   return sampler.path;
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -4,7 +4,7 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 /// The route's node sequence as a polyline whose corners are rounded by circular arcs of
 /// `turn_radius_m` (smaller where the legs are too short for it; a full reversal at a dead end
@@ -17,6 +17,6 @@ namespace wifislam::sim {
 /// space or comes closer than `min_wall_clearance_m` to a wall face (naming the leg, the position
 /// and the clearance found). The clearance is the exact point-to-segment distance to every wall
 /// face of the plan.
-RoutePath build_route(const Scene& scene, const FloorPlan& plan);
+RoutePath build_route(const scene::Scene& scene, const FloorPlan& plan);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -17,7 +17,7 @@
 
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 class WallFaceGrid {
  public:
@@ -82,4 +82,4 @@ class WallFaceGrid {
   std::unordered_map<std::int64_t, std::vector<int>> cells_;
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

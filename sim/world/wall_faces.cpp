@@ -13,7 +13,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/region_locator.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
@@ -97,7 +97,7 @@ struct UnionFind {
 /// What bounds a face on its free side, ranked: rooms win over corridors over open areas.
 struct Bounding {
   int rank = 0;  // 3 room, 2 corridor, 1 open area, 0 nothing (outside)
-  WallMaterial material = WallMaterial::kPlasterboard;
+  radio_model::WallMaterial material = radio_model::WallMaterial::kPlasterboard;
 };
 
 template <class Points>
@@ -113,7 +113,7 @@ void add_box(BoxGrid& grid, int index, const Points& points, double margin_m = 1
 /// in the building's size), tried in the order and with the tests of a scan.
 class BoundingLocator {
  public:
-  BoundingLocator(const Scene& scene, const PlanLayout& layout, const FloorPlan& plan)
+  BoundingLocator(const scene::Scene& scene, const PlanLayout& layout, const FloorPlan& plan)
       : scene_(scene), layout_(layout), plan_(plan) {
     for (std::size_t i = 0; i < plan.doors.size(); ++i) {
       const Door& d = plan.doors[i];
@@ -149,21 +149,23 @@ class BoundingLocator {
     }
     const std::vector<int> spaces = spaces_.at(p);
     for (const int i : spaces) {
-      const Space& s = scene_.spaces[i];
-      if (s.kind == SpaceKind::kCorridor && ring_contains(s.polygon_m, p)) return {2, s.material};
+      const scene::Space& s = scene_.spaces[i];
+      if (s.kind == scene::SpaceKind::kCorridor && ring_contains(s.polygon_m, p))
+        return {2, s.material};
     }
     for (const int i : open_areas_.at(p))
       if (ring_contains(scene_.open_areas[i].polygon_m, p))
         return {1, scene_.open_areas[i].material};
     for (const int i : spaces) {
-      const Space& s = scene_.spaces[i];
-      if (s.kind == SpaceKind::kArea && ring_contains(s.polygon_m, p)) return {1, s.material};
+      const scene::Space& s = scene_.spaces[i];
+      if (s.kind == scene::SpaceKind::kArea && ring_contains(s.polygon_m, p))
+        return {1, s.material};
     }
     return {};
   }
 
  private:
-  const Scene& scene_;
+  const scene::Scene& scene_;
   const PlanLayout& layout_;
   const FloorPlan& plan_;
   BoxGrid doors_{4.0}, rooms_{4.0}, corridors_{4.0}, spaces_{4.0}, open_areas_{4.0};
@@ -354,8 +356,9 @@ struct FaceSides {
 };
 
 /// Step 5: probes just off each face's free side.
-FaceSides classify_face_sides(const Scene& scene, const PlanLayout& layout, const FloorPlan& plan,
-                              const std::vector<Piece>& pieces, UnionFind& walls) {
+FaceSides classify_face_sides(const scene::Scene& scene, const PlanLayout& layout,
+                              const FloorPlan& plan, const std::vector<Piece>& pieces,
+                              UnionFind& walls) {
   FaceSides sides{std::vector<bool>(pieces.size()), std::vector<Bounding>(pieces.size())};
   const RegionLocator free_space(plan.free_space);
   const BoundingLocator bounding(scene, layout, plan);
@@ -400,7 +403,7 @@ std::map<LineKey, std::pair<double, double>> interior_line_extents(
 class SegmentVariants {
  public:
   /// `exterior` says which faces are outside (they get no segments).
-  SegmentVariants(const Scene& scene, const std::vector<Piece>& pieces,
+  SegmentVariants(const scene::Scene& scene, const std::vector<Piece>& pieces,
                   const std::vector<bool>& exterior, UnionFind& walls, double segment_m)
       : scene_(scene),
         pieces_(pieces),
@@ -419,7 +422,7 @@ class SegmentVariants {
   /// 0.1 m), same look; keying by length too keeps walls of different lengths (a rail and a rung)
   /// from aliasing with each other.
   int shared(std::size_t piece, const Eigen::Vector2d& mid) {
-    if (scene_.appearance.aliasing_scope == AliasingScope::kSegment) return 0;
+    if (scene_.appearance.aliasing_scope == scene::AliasingScope::kSegment) return 0;
     const auto [start_m, end_m] = line_extent_.at(line_key(pieces_, piece, walls_));
     const int position =
         static_cast<int>(std::floor((mid.dot(pieces_[piece].dir()) - start_m) / segment_m_));
@@ -429,7 +432,7 @@ class SegmentVariants {
     return it->second;
   }
 
-  const Scene& scene_;
+  const scene::Scene& scene_;
   const std::vector<Piece>& pieces_;
   UnionFind& walls_;
   double segment_m_;
@@ -475,7 +478,8 @@ void add_wall_faces(const std::vector<Piece>& pieces, const FaceSides& sides, do
     face.wall_id = wall_id[root];
     face.exterior = sides.exterior[i];
     face.door_index = p.door;
-    face.material = p.door >= 0 ? WallMaterial::kWoodDoor : sides.wall_bounding[root].material;
+    face.material =
+        p.door >= 0 ? radio_model::WallMaterial::kWoodDoor : sides.wall_bounding[root].material;
     if (sides.exterior[i]) {
       face.a_m = p.a;
       face.b_m = p.b;
@@ -489,7 +493,7 @@ void add_wall_faces(const std::vector<Piece>& pieces, const FaceSides& sides, do
 
 }  // namespace
 
-void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& plan) {
+void build_wall_faces(const scene::Scene& scene, const PlanLayout& layout, FloorPlan& plan) {
   // Faces at most two wall thicknesses apart face each other across one wall.
   const double max_gap_m = 2 * scene.building.wall_thickness_m;
   std::vector<Piece> pieces = boundary_pieces(plan);
@@ -507,4 +511,4 @@ void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& p
   add_wall_faces(pieces, sides, segment_m, walls, variants, plan);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -20,10 +20,10 @@
 #include "sim/world/plan_layout.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 /// Fills plan.wall_faces, plan.appearance_segments and plan.wall_count from plan.walls,
 /// plan.free_space, plan.rooms and plan.doors.
-void build_wall_faces(const Scene& scene, const PlanLayout& layout, FloorPlan& plan);
+void build_wall_faces(const scene::Scene& scene, const PlanLayout& layout, FloorPlan& plan);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -14,7 +14,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/route_builder.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 namespace {
 
@@ -25,10 +25,10 @@ Mesh raised_by(Mesh mesh, double dz_m) {
 
 }  // namespace
 
-World generate_world(const Scene& scene) {
+World generate_world(const scene::Scene& scene) {
   World world;
   world.seed = scene.seed;
-  if (!has_levels(scene)) {
+  if (!scene::has_levels(scene)) {
     world.plan = build_floor_plan(scene);
     world.route = build_route(scene, world.plan);
     world.mesh = build_mesh(scene, world.plan);
@@ -36,13 +36,14 @@ World generate_world(const Scene& scene) {
   }
   // Every level is built as a one-level scene of its own pieces (scene_on_level); the route's
   // level also gets the route. Lowest first: the radio model takes storeys in that order.
-  std::vector<ResolvedLevel> levels = resolved_levels(scene);
-  std::stable_sort(
-      levels.begin(), levels.end(),
-      [](const ResolvedLevel& a, const ResolvedLevel& b) { return a.elevation_m < b.elevation_m; });
-  world.level_id = route_level(scene);
-  for (const ResolvedLevel& level : levels) {
-    const Scene part = scene_on_level(scene, level.id);
+  std::vector<scene::ResolvedLevel> levels = scene::resolved_levels(scene);
+  std::stable_sort(levels.begin(), levels.end(),
+                   [](const scene::ResolvedLevel& a, const scene::ResolvedLevel& b) {
+                     return a.elevation_m < b.elevation_m;
+                   });
+  world.level_id = scene::route_level(scene);
+  for (const scene::ResolvedLevel& level : levels) {
+    const scene::Scene part = scene::scene_on_level(scene, level.id);
     Storey storey;
     storey.level_id = level.id;
     storey.elevation_m = level.elevation_m;
@@ -69,7 +70,7 @@ std::optional<World> dataset_world(const std::filesystem::path& dataset_dir, std
     return std::nullopt;
   }
   try {
-    return generate_world(load_scene_file(scene.string()));
+    return generate_world(scene::load_scene_file(scene.string()));
   } catch (const Error& e) {
     why_not = e.what();
     return std::nullopt;
@@ -140,4 +141,4 @@ std::string WorldSummary::to_text() const {
       free_area_m2, walkable_area_m2, wall_length_m, triangles, rooms, doors, route_length_m);
 }
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -9,12 +9,12 @@
 #include "sim/scene/scene.hpp"
 #include "sim/world/world_types.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 /// Builds the world of a validated scene. Deterministic: the same scene (seed included) gives a
 /// bit-identical world. Throws InvalidInputError for a scene that cannot be built (e.g. a route
 /// that cannot keep `min_wall_clearance_m` from the walls, disconnected free space).
-World generate_world(const Scene& scene);
+World generate_world(const scene::Scene& scene);
 
 /// The world of a dataset, from its scene.yaml (the resolved scene, seed included), for pictures
 /// over its plan. nullopt, with the reason in `why_not`, when the dataset has no scene.yaml or it
@@ -36,4 +36,4 @@ struct WorldSummary {
 };
 WorldSummary summarize_world(const World& world);
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

@@ -11,7 +11,7 @@
 
 #include "sim/scene/scene.hpp"
 
-namespace wifislam::sim {
+namespace wifislam::sim::world {
 
 using Polygon2 = std::vector<Eigen::Vector2d>;  // simple polygon, counter-clockwise outer ring
 
@@ -25,7 +25,7 @@ struct PolygonWithHoles2 {
 /// `wall_id`; the radio model counts each physical wall crossed once.
 struct WallFace2 {
   Eigen::Vector2d a_m, b_m;
-  WallMaterial material = WallMaterial::kPlasterboard;
+  radio_model::WallMaterial material = radio_model::WallMaterial::kPlasterboard;
   int wall_id = -1;
   int appearance_segment = -1;  // index into FloorPlan::appearance_segments
   /// True for the outside face of an outer wall: its left side is outside the building, not free
@@ -49,7 +49,7 @@ struct Room {
   Polygon2 polygon_m;  // counter-clockwise, free space inside the room
   std::string corridor_id;
   int door_index = -1;
-  WallMaterial material = WallMaterial::kBrick;
+  radio_model::WallMaterial material = radio_model::WallMaterial::kBrick;
 };
 
 /// A piece of wall (appearance unit): its look is the shared one or its own (scene aliasing).
@@ -97,7 +97,8 @@ struct Triangle {
   std::uint32_t v[3] = {0, 0, 0};  // indices into Mesh::positions_m (counter-clockwise seen from
                                    // the side the normal points to)
   SurfaceKind surface = SurfaceKind::kWall;
-  WallMaterial material = WallMaterial::kPlasterboard;  // physical material (radio)
+  radio_model::WallMaterial material =
+      radio_model::WallMaterial::kPlasterboard;  // physical material (radio)
   int wall_id = -1;            // physical wall (radio counts crossings per wall); -1 = none
   int appearance_variant = 0;  // 0 = shared look; k > 0 unique (see Appearance::aliasing)
   int decoration = -1;         // poster/landmark design index for kPoster, else -1
@@ -128,7 +129,7 @@ struct Storey {
   std::string level_id;
   double elevation_m = 0.0;
   double slab_thickness_m = 0.0;
-  WallMaterial slab_material = WallMaterial::kConcrete;
+  radio_model::WallMaterial slab_material = radio_model::WallMaterial::kConcrete;
   FloorPlan plan;
   Mesh mesh;
 };
@@ -155,4 +156,4 @@ struct World {
   }
 };
 
-}  // namespace wifislam::sim
+}  // namespace wifislam::sim::world

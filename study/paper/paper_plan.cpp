@@ -22,8 +22,8 @@ const char* twin_scene_yaml(const std::string& twin) {
       fmt::format("'{}' is not one of the paper's twins (c_hall, b_hall, j_hall, a_hall)", twin));
 }
 
-sim::Scene twin_scene(const std::string& twin) {
-  return sim::load_scene_yaml(twin_scene_yaml(twin), "<" + twin + " twin>");
+sim::scene::Scene twin_scene(const std::string& twin) {
+  return sim::scene::load_scene_yaml(twin_scene_yaml(twin), "<" + twin + " twin>");
 }
 
 const std::vector<Experiment>& experiments() {

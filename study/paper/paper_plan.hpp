@@ -31,7 +31,7 @@ const std::vector<std::string>& twin_names();
 /// A twin's scene file as built into this program (scenes/<twin>.yaml at build time); throws
 /// InvalidInputError naming the known twins otherwise.
 const char* twin_scene_yaml(const std::string& twin);
-sim::Scene twin_scene(const std::string& twin);
+sim::scene::Scene twin_scene(const std::string& twin);
 
 /// One of the paper's SLAM experiments.
 struct Experiment {

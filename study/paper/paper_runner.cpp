@@ -161,11 +161,12 @@ class GroupRunner {
     // One scene for the whole group: every study of it sets only the seed on the same twin.
     std::size_t first = 0;
     while (todo[first].empty()) ++first;
-    const sim::Scene scene = case_scene(files[first], todo[first].front());
-    const std::string scene_hash = sha256_hex(sim::resolved_scene_yaml(scene));
-    sim::GenerateOptions overrides;
+    const sim::scene::Scene scene = case_scene(files[first], todo[first].front());
+    const std::string scene_hash = sha256_hex(sim::scene::resolved_scene_yaml(scene));
+    sim::generate::GenerateOptions overrides;
     overrides.fps = options_.settings.fps;
-    const auto site = std::make_shared<const sim::Site>(sim::resolve_scene(scene, overrides));
+    const auto site =
+        std::make_shared<const sim::site::Site>(sim::generate::resolve_scene(scene, overrides));
 
     std::vector<slam::FeatureOptions> features;
     for (std::size_t s = 0; s < files.size(); ++s)
@@ -173,9 +174,9 @@ class GroupRunner {
         features.push_back(case_slam_options(files[s], c).features);
 
     const auto start = Clock::now();
-    sim::GenerateOptions generate;
-    generate.camera = sim::CameraOutput::kDepthOnly;  // the evaluation reads depth; the runs replay
-                                                      // features
+    sim::generate::GenerateOptions generate;
+    generate.camera = sim::generate::CameraOutput::kDepthOnly;  // the evaluation reads depth; the
+                                                                // runs replay features
     const RecordedDataset dataset(site, work / "dataset", generate, features, options_.jobs);
     times["shared rendering and feature extraction"] += seconds_since(start);
     write_dataset_facts(site, dataset.summary(), group);
@@ -215,8 +216,8 @@ class GroupRunner {
   /// What the twin's dataset held, and what its Wi-Fi can tell apart along the route
   /// (radio_resolution.hpp: the pauses' signatures against their true distances, the SLAM's
   /// similarity threshold): the measured side of the paper's cluster counts.
-  void write_dataset_facts(const std::shared_ptr<const sim::Site>& site,
-                           const sim::GenerateSummary& g, const std::string& group) {
+  void write_dataset_facts(const std::shared_ptr<const sim::site::Site>& site,
+                           const sim::generate::GenerateSummary& g, const std::string& group) {
     const slam::wifi::WifiOptions wifi;
     const RadioResolution radio = radio_resolution(simulate_pauses(site, wifi), wifi);
     nlohmann::json facts = {
@@ -305,14 +306,15 @@ class GroupRunner {
                            {&site_for_figures(planned)->world().plan, ""});
   }
 
-  std::shared_ptr<const sim::Site> site_for_figures(const PlannedStudy& planned) {
+  std::shared_ptr<const sim::site::Site> site_for_figures(const PlannedStudy& planned) {
     std::lock_guard lock(site_mutex_);
     if (!figure_site_) {
-      sim::Scene scene = twin_scene(planned.twin);
+      sim::scene::Scene scene = twin_scene(planned.twin);
       scene.seed = planned.seed;
-      sim::GenerateOptions overrides;
+      sim::generate::GenerateOptions overrides;
       overrides.fps = options_.settings.fps;
-      figure_site_ = std::make_shared<const sim::Site>(sim::resolve_scene(scene, overrides));
+      figure_site_ =
+          std::make_shared<const sim::site::Site>(sim::generate::resolve_scene(scene, overrides));
     }
     return figure_site_;
   }
@@ -320,7 +322,7 @@ class GroupRunner {
   const PaperRunOptions& options_;
   std::vector<PlannedStudy> planned_;
   std::mutex site_mutex_;
-  std::shared_ptr<const sim::Site> figure_site_;
+  std::shared_ptr<const sim::site::Site> figure_site_;
 };
 
 /// FAB-MAP, Wi-Fi FAB-MAP and ours on one twin and seed (`wifislam localize`'s defaults and

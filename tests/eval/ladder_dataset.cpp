@@ -128,19 +128,20 @@ void pick_keyframes(const Trajectory& ground_truth, const std::vector<std::strin
 
 /// Rendered depth of every keyframe (for view overlap), as a dataset's depth list and PNGs.
 void render_keyframe_depth(const DatasetCalibration& calibration, LadderRun& run) {
-  const sim::Scene scene = sim::load_scene_file((run.dataset_dir / "scene.yaml").string());
-  const sim::World world = sim::generate_world(scene);
-  sim::RgbdRenderer renderer(calibration.intrinsics);
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file((run.dataset_dir / "scene.yaml").string());
+  const sim::world::World world = sim::world::generate_world(scene);
+  sim::render::RgbdRenderer renderer(calibration.intrinsics);
   renderer.set_world(world, scene);
   std::ofstream list(run.dataset_dir / "depth.txt");
   list << "# depth maps of the keyframes\n";
-  sim::RenderedView view;
+  sim::render::RenderedView view;
   for (std::size_t k = 0; k < run.keyframe_poses.size(); ++k) {
     renderer.render(run.keyframe_poses[k], view);
     cv::Mat depth_m = view.depth_m.clone();
     depth_m.setTo(0.0f, depth_m > kSensorMaxRangeM);
     const std::string name = "depth/" + run.keyframe_times[k].to_string(6) + ".png";
-    sim::write_depth_png(run.dataset_dir / name, depth_m);
+    sim::render::write_depth_png(run.dataset_dir / name, depth_m);
     list << run.keyframe_times[k].to_string(6) << " " << name << "\n";
   }
 }

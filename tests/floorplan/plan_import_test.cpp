@@ -27,15 +27,15 @@ const fs::path kPlans = fs::path(WIFISLAM_SCENES_DIR).parent_path() / "assets" /
 
 /// The route's waypoints come back to where the loop started, and the robot passes the start
 /// again after the first lap (more than once through the same place).
-void expect_route_revisits(const sim::Scene& scene) {
+void expect_route_revisits(const sim::scene::Scene& scene) {
   const auto& w = scene.route.waypoints_m;
   ASSERT_GE(w.size(), 4u);
   EXPECT_LT((w.front() - w.back()).norm(), 1e-9);
   int passes = 0;
   for (std::size_t i = 1; i < w.size(); ++i) passes += (w[i] - w.front()).norm() < 1e-9;
   EXPECT_GE(passes, 2) << "two laps pass the start twice";
-  const sim::World world =
-      sim::generate_world(sim::load_scene_yaml(sim::resolved_scene_yaml(scene), "scene"));
+  const sim::world::World world = sim::world::generate_world(
+      sim::scene::load_scene_yaml(sim::scene::resolved_scene_yaml(scene), "scene"));
   EXPECT_GT(world.route.length_m(), 2 * (w.front() - w[w.size() / 4]).norm());
 }
 
@@ -54,7 +54,7 @@ TEST(PlanImport, OsmSitLevelOneMatchesTheFilesCounts) {
   EXPECT_LE(plan.counts.spaces, 45 + 3 + 6);
   // Doors are inferred: one per room that touches a corridor or area, one per area.
   EXPECT_GE(plan.counts.space_doors, 30);
-  const sim::Scene scene = floorplan::imported_scene(plan, {});
+  const sim::scene::Scene scene = floorplan::imported_scene(plan, {});
   expect_route_revisits(scene);
 }
 
@@ -76,9 +76,9 @@ TEST(PlanImport, WrldLevelTwoMatchesTheFilesCounts) {
 
 TEST(PlanImport, ShippedScenesLoadAndBuild) {
   for (const char* name : {"fei_level_1.yaml", "westport_house_level_2.yaml"}) {
-    const sim::Scene scene =
-        sim::load_scene_file((fs::path(WIFISLAM_SCENES_DIR) / "real" / name).string());
-    const sim::World world = sim::generate_world(scene);
+    const sim::scene::Scene scene =
+        sim::scene::load_scene_file((fs::path(WIFISLAM_SCENES_DIR) / "real" / name).string());
+    const sim::world::World world = sim::world::generate_world(scene);
     EXPECT_FALSE(scene.spaces.empty()) << name;
     EXPECT_GT(world.plan.doors.size(), 10u) << name;
     EXPECT_GT(world.route.length_m(), 100.0) << name;
@@ -139,7 +139,8 @@ TEST(PlanImport, ImdfFolderImportsUnitsAndOpenings) {
   EXPECT_EQ(plan.counts.skipped, 1) << "the stairs are no free space";
   EXPECT_EQ(plan.counts.doors, 3);
   EXPECT_EQ(plan.counts.space_doors, 3) << "every opening lies on a wall between two units";
-  for (const sim::SpaceDoor& d : plan.doors) EXPECT_NEAR((d.to_m - d.from_m).norm(), 1.0, 0.02);
+  for (const sim::scene::SpaceDoor& d : plan.doors)
+    EXPECT_NEAR((d.to_m - d.from_m).norm(), 1.0, 0.02);
   EXPECT_EQ(plan.spaces.size(), 4u);
   expect_route_revisits(floorplan::imported_scene(plan, {}));
 }
@@ -152,8 +153,8 @@ TEST(PlanImport, UserRouteWaypointOutsideThePlanIsAnErrorNotDropped) {
   floorplan::SceneOptions options;
   // Both points lie in the plan's local frame; the second is kilometres outside the building.
   Eigen::Vector2d inside = Eigen::Vector2d::Zero();  // the walkway's centre
-  for (const sim::Space& space : plan.spaces)
-    if (space.kind == sim::SpaceKind::kCorridor) {
+  for (const sim::scene::Space& space : plan.spaces)
+    if (space.kind == sim::scene::SpaceKind::kCorridor) {
       for (const Eigen::Vector2d& p : space.polygon_m) inside += p;
       inside /= static_cast<double>(space.polygon_m.size());
     }
@@ -213,9 +214,9 @@ TEST(PlanImport, AThousandRoomCombGetsATourThatReachesTheEndOfEveryBranch) {
   EXPECT_GE(plan.counts.space_doors, 50 * 2 * branches) << "every room has a door";
   floorplan::SceneOptions options;
   options.access_points = 10;
-  const sim::Scene scene = floorplan::imported_scene(plan, options);
+  const sim::scene::Scene scene = floorplan::imported_scene(plan, options);
   Eigen::Vector2d lo = Eigen::Vector2d::Constant(1e300);
-  for (const sim::Space& space : plan.spaces)
+  for (const sim::scene::Space& space : plan.spaces)
     for (const Eigen::Vector2d& p : space.polygon_m) lo = lo.cwiseMin(p);
   for (int b = 0; b < branches; ++b) {
     const Eigen::Vector2d end = lo + Eigen::Vector2d(b * 12.0 + 5.0, 201.0);

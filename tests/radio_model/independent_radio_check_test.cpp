@@ -26,7 +26,7 @@ namespace {
 
 using V2 = Eigen::Vector2d;
 
-bool in_ring(const sim::Polygon2& ring, const V2& p) {
+bool in_ring(const sim::world::Polygon2& ring, const V2& p) {
   bool inside = false;
   for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
     const V2 &a = ring[i], &b = ring[j];
@@ -38,11 +38,11 @@ bool in_ring(const sim::Polygon2& ring, const V2& p) {
   return inside;
 }
 
-bool in_walls(const sim::FloorPlan& plan, const V2& p) {
-  for (const sim::PolygonWithHoles2& solid : plan.walls) {
+bool in_walls(const sim::world::FloorPlan& plan, const V2& p) {
+  for (const sim::world::PolygonWithHoles2& solid : plan.walls) {
     if (!in_ring(solid.outer, p)) continue;
     if (std::none_of(solid.holes.begin(), solid.holes.end(),
-                     [&](const sim::Polygon2& hole) { return in_ring(hole, p); })) {
+                     [&](const sim::world::Polygon2& hole) { return in_ring(hole, p); })) {
       return true;
     }
   }
@@ -50,7 +50,8 @@ bool in_walls(const sim::FloorPlan& plan, const V2& p) {
 }
 
 // Parameters t in (0, 1) where p + t (q - p) crosses an edge of a wall solid.
-void edge_crossings(const sim::Polygon2& ring, const V2& p, const V2& q, std::vector<double>& t) {
+void edge_crossings(const sim::world::Polygon2& ring, const V2& p, const V2& q,
+                    std::vector<double>& t) {
   const V2 r = q - p;
   for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
     const V2 a = ring[j], s = ring[i] - ring[j];
@@ -64,10 +65,10 @@ void edge_crossings(const sim::Polygon2& ring, const V2& p, const V2& q, std::ve
 }
 
 // The material of the plan face through point x (the face the segment crosses there).
-sim::WallMaterial material_at(const sim::FloorPlan& plan, const V2& x) {
+radio_model::WallMaterial material_at(const sim::world::FloorPlan& plan, const V2& x) {
   double best = 1e9;
-  sim::WallMaterial material = sim::WallMaterial::kPlasterboard;
-  for (const sim::WallFace2& f : plan.wall_faces) {
+  radio_model::WallMaterial material = radio_model::WallMaterial::kPlasterboard;
+  for (const sim::world::WallFace2& f : plan.wall_faces) {
     const V2 ab = f.b_m - f.a_m;
     const double s = std::clamp((x - f.a_m).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
     const double d = (f.a_m + s * ab - x).norm();
@@ -89,7 +90,7 @@ double absorption_db(double eta_real, double sigma_spm, double thickness_m, doub
 
 // 3GPP TR 38.901 V16.1.0 Table 7.4.3-1 (concrete, glass, wood); COST 231 at 1.8 GHz with the
 // ITU-R P.2040-3 material's absorption added (brick of the wall's thickness, two 12.5 mm boards).
-double wall_loss_db(sim::WallMaterial m, double f_ghz, double wall_thickness_m) {
+double wall_loss_db(radio_model::WallMaterial m, double f_ghz, double wall_thickness_m) {
   auto brick = [&](double f) {
     return absorption_db(3.91, 0.0238 * std::pow(f, 0.16), wall_thickness_m, f);
   };
@@ -97,15 +98,15 @@ double wall_loss_db(sim::WallMaterial m, double f_ghz, double wall_thickness_m) 
     return absorption_db(2.73, 0.0085 * std::pow(f, 0.9395), 0.025, f);
   };
   switch (m) {
-    case sim::WallMaterial::kPlasterboard:
+    case radio_model::WallMaterial::kPlasterboard:
       return 3.4 + boards(f_ghz) - boards(1.8);
-    case sim::WallMaterial::kBrick:
+    case radio_model::WallMaterial::kBrick:
       return 6.9 + brick(f_ghz) - brick(1.8);
-    case sim::WallMaterial::kConcrete:
+    case radio_model::WallMaterial::kConcrete:
       return 5.0 + 4.0 * f_ghz;
-    case sim::WallMaterial::kGlass:
+    case radio_model::WallMaterial::kGlass:
       return 2.0 + 0.2 * f_ghz;
-    case sim::WallMaterial::kWoodDoor:
+    case radio_model::WallMaterial::kWoodDoor:
       return 4.85 + 0.12 * f_ghz;
   }
   return 0.0;
@@ -113,14 +114,14 @@ double wall_loss_db(sim::WallMaterial m, double f_ghz, double wall_thickness_m) 
 
 // Walls on the segment by the stated rule, in 2-D: stretches inside the wall solids, joined over
 // gaps under 0.1 mm, dropped under 1 mm, half a wall of each material where entry and exit differ.
-double walls_loss_db(const sim::FloorPlan& plan, const Eigen::Vector3d& from,
+double walls_loss_db(const sim::world::FloorPlan& plan, const Eigen::Vector3d& from,
                      const Eigen::Vector3d& to, double f_ghz) {
   const V2 p = from.head<2>(), q = to.head<2>();
   const double length_3d = (to - from).norm();
   std::vector<double> t = {0.0, 1.0};
-  for (const sim::PolygonWithHoles2& solid : plan.walls) {
+  for (const sim::world::PolygonWithHoles2& solid : plan.walls) {
     edge_crossings(solid.outer, p, q, t);
-    for (const sim::Polygon2& hole : solid.holes) edge_crossings(hole, p, q, t);
+    for (const sim::world::Polygon2& hole : solid.holes) edge_crossings(hole, p, q, t);
   }
   std::sort(t.begin(), t.end());
   double loss = 0.0;
@@ -128,8 +129,8 @@ double walls_loss_db(const sim::FloorPlan& plan, const Eigen::Vector3d& from,
   auto finish = [&] {
     if (start < 0.0) return;
     if ((end - start) * length_3d >= 1e-3) {
-      const sim::WallMaterial in = material_at(plan, p + start * (q - p));
-      const sim::WallMaterial out = material_at(plan, p + end * (q - p));
+      const radio_model::WallMaterial in = material_at(plan, p + start * (q - p));
+      const radio_model::WallMaterial out = material_at(plan, p + end * (q - p));
       loss += 0.5 * (wall_loss_db(in, f_ghz, plan.wall_thickness_m) +
                      wall_loss_db(out, f_ghz, plan.wall_thickness_m));
     }
@@ -150,14 +151,15 @@ double walls_loss_db(const sim::FloorPlan& plan, const Eigen::Vector3d& from,
 }
 
 TEST(IndependentRadioCheck, MeanRssiOnJHallAgreesWithA2DCalculationFromThePlan) {
-  sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
+  sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   scene.access_points.height_m = 1.5;  // below the doors (2.1 m)
-  const sim::World world = generate_world(scene);
-  PropagationOptions options = sim::propagation_options(scene);
+  const sim::world::World world = sim::world::generate_world(scene);
+  PropagationOptions options = sim::site::propagation_options(scene);
   options.shadowing_sigma_db = 0.0;
-  const PropagationModel model(sim::radio_wall_mesh(world.mesh), world.plan.bounds_min_m,
-                               world.plan.bounds_max_m, sim::make_access_points(scene, world.plan),
-                               options, scene.seed);
+  const PropagationModel model(
+      sim::world::radio_wall_mesh(world.mesh), world.plan.bounds_min_m, world.plan.bounds_max_m,
+      sim::site::make_access_points(scene, world.plan), options, scene.seed);
   const double receiver_z_m = 0.5;
 
   std::vector<double> diffs;
@@ -171,10 +173,10 @@ TEST(IndependentRadioCheck, MeanRssiOnJHallAgreesWithA2DCalculationFromThePlan) 
            y += 0.5) {
         const V2 cell(x, y);
         bool free = false;
-        for (const sim::PolygonWithHoles2& region : world.plan.free_space) {
+        for (const sim::world::PolygonWithHoles2& region : world.plan.free_space) {
           free |= in_ring(region.outer, cell) &&
                   std::none_of(region.holes.begin(), region.holes.end(),
-                               [&](const sim::Polygon2& h) { return in_ring(h, cell); });
+                               [&](const sim::world::Polygon2& h) { return in_ring(h, cell); });
         }
         if (!free) continue;
         const Eigen::Vector3d rx(x, y, receiver_z_m);

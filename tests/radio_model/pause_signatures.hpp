@@ -20,7 +20,7 @@ struct Pause {
   std::map<std::uint64_t, double> signature;  // AP (base MAC) -> mean RSSI
 };
 
-inline std::vector<Pause> pauses_along_route(const sim::RoutePath& route,
+inline std::vector<Pause> pauses_along_route(const sim::world::RoutePath& route,
                                              const radio_model::WifiScanner& scanner,
                                              double spacing_m, int scans_per_pause,
                                              double receiver_height_m) {

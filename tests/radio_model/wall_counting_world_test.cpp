@@ -16,11 +16,12 @@ namespace wifislam::radio_model {
 namespace {
 
 TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThroughItsEdge) {
-  const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
-  const sim::World world = generate_world(scene);
-  const EmbreeWallScene walls(sim::radio_wall_mesh(world.mesh));
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
+  const sim::world::World world = sim::world::generate_world(scene);
+  const EmbreeWallScene walls(sim::world::radio_wall_mesh(world.mesh));
   int closed = 0;
-  for (const sim::Door& door : world.plan.doors) {
+  for (const sim::world::Door& door : world.plan.doors) {
     if (door.open) continue;
     ++closed;
     const Eigen::Vector2d u = door.along_wall, n(-u.y(), u.x());
@@ -30,8 +31,8 @@ TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThrou
     const auto leaf =
         walls.walls_crossed(at(door.center_m - 1.5 * n, 1.0), at(door.center_m + 1.5 * n, 1.0));
     ASSERT_EQ(leaf.size(), 1u) << "door at " << door.center_m.transpose();
-    EXPECT_EQ(leaf[0].material, sim::WallMaterial::kWoodDoor);
-    EXPECT_EQ(leaf[0].exit_material, sim::WallMaterial::kWoodDoor);
+    EXPECT_EQ(leaf[0].material, radio_model::WallMaterial::kWoodDoor);
+    EXPECT_EQ(leaf[0].exit_material, radio_model::WallMaterial::kWoodDoor);
     EXPECT_NEAR(leaf[0].length_m, door.wall_thickness_m, 1e-3);
     // Into the leaf 5 cm from its edge, out of the wall 5 cm beyond it: one wall of two
     // materials. The line runs on 1 m either side, so it starts and ends in free space.
@@ -40,8 +41,8 @@ TEST(WallCountingOnAWorld, EveryClosedDoorOfJHallIsOneWallThroughTheLeafAndThrou
     const Eigen::Vector2d step = (out - in).normalized();
     const auto edge = walls.walls_crossed(at(in - step, 1.0), at(out + step, 1.0));
     ASSERT_EQ(edge.size(), 1u) << "door at " << door.center_m.transpose();
-    const std::set<sim::WallMaterial> materials = {edge[0].material, edge[0].exit_material};
-    EXPECT_TRUE(materials.count(sim::WallMaterial::kWoodDoor)) << door.center_m.transpose();
+    const std::set<radio_model::WallMaterial> materials = {edge[0].material, edge[0].exit_material};
+    EXPECT_TRUE(materials.count(radio_model::WallMaterial::kWoodDoor)) << door.center_m.transpose();
     EXPECT_EQ(materials.size(), 2u) << door.center_m.transpose();
   }
   EXPECT_GT(closed, 20);

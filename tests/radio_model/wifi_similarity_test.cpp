@@ -25,12 +25,13 @@ constexpr double kPauseSpacingM = 3.5;
 constexpr int kScansPerPause = 5;  // ~10 s pause at one scan per 2 s
 
 double scene_spearman(const std::string& file, std::size_t* pause_count = nullptr) {
-  const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + file);
-  const sim::World world = generate_world(scene);
-  PropagationModel model(sim::radio_wall_mesh(world.mesh), world.plan.bounds_min_m,
-                         world.plan.bounds_max_m, sim::make_access_points(scene, world.plan),
-                         sim::propagation_options(scene), scene.seed);
-  WifiScanner scanner(model, sim::wifi_scanner_options(scene.sensors.wifi), scene.seed);
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + file);
+  const sim::world::World world = sim::world::generate_world(scene);
+  PropagationModel model(sim::world::radio_wall_mesh(world.mesh), world.plan.bounds_min_m,
+                         world.plan.bounds_max_m, sim::site::make_access_points(scene, world.plan),
+                         sim::site::propagation_options(scene), scene.seed);
+  WifiScanner scanner(model, sim::site::wifi_scanner_options(scene.sensors.wifi), scene.seed);
   const auto pauses = test::pauses_along_route(world.route, scanner, kPauseSpacingM, kScansPerPause,
                                                scene.sensors.camera.height_m);
   if (pause_count) *pause_count = pauses.size();
@@ -47,16 +48,17 @@ TEST(WifiSimilarity, SimilarityFallsWithDistanceOnCHallAsInThePapersFigure2) {
 }
 
 TEST(RadioMapOnCHall, PrunedStrongestMapEqualsTheFullOne) {
-  const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
-  const sim::World world = generate_world(scene);
-  PropagationModel model(sim::radio_wall_mesh(world.mesh), world.plan.bounds_min_m,
-                         world.plan.bounds_max_m, sim::make_access_points(scene, world.plan),
-                         sim::propagation_options(scene), scene.seed);
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  const sim::world::World world = sim::world::generate_world(scene);
+  PropagationModel model(sim::world::radio_wall_mesh(world.mesh), world.plan.bounds_min_m,
+                         world.plan.bounds_max_m, sim::site::make_access_points(scene, world.plan),
+                         sim::site::propagation_options(scene), scene.seed);
   RadioMapOptions o;
   o.resolution_m = 0.5;
-  const RadioMap pruned = sim::compute_radio_map(model, world.plan, o);
+  const RadioMap pruned = sim::site::compute_radio_map(model, world.plan, o);
   o.prune = false;
-  const RadioMap full = sim::compute_radio_map(model, world.plan, o);
+  const RadioMap full = sim::site::compute_radio_map(model, world.plan, o);
   ASSERT_EQ(pruned.rssi_dbm.size(), full.rssi_dbm.size());
   EXPECT_EQ(std::memcmp(pruned.rssi_dbm.data(), full.rssi_dbm.data(),
                         full.rssi_dbm.size() * sizeof(float)),

@@ -34,12 +34,12 @@ struct RunResult {
 };
 
 /// SLAM over the generator's stream, keeping the ground truth aside (SLAM never sees it).
-RunResult run_on_generated(const sim::Scene& scene, double fps, std::int64_t max_frames,
+RunResult run_on_generated(const sim::scene::Scene& scene, double fps, std::int64_t max_frames,
                            const slam::SlamOptions& options) {
-  sim::GenerateOptions generate;
+  sim::generate::GenerateOptions generate;
   generate.fps = fps;
   generate.max_frames = max_frames;
-  sim::GeneratorStream stream(scene, generate);
+  sim::generate::GeneratorStream stream(scene, generate);
   slam::StreamInfo info{stream.intrinsics(), stream.camera_in_base(), stream.has_wifi(),
                         stream.has_odometry()};
   RunResult result;
@@ -87,7 +87,8 @@ radio: {environment: office}
 )";
 
 TEST(RgbdslamEndToEnd, OdometryOnAStraightCorridorDriftsLessThanTwoPercent) {
-  const sim::Scene scene = sim::load_scene_yaml(kStraightCorridorYaml, "<straight corridor>");
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_yaml(kStraightCorridorYaml, "<straight corridor>");
   const RunResult run = run_on_generated(scene, 5.0, -1, slam::SlamOptions{});
   EXPECT_EQ(run.system->loop_closures().size(), 0u);
   const Trajectory estimate = run.system->trajectory();
@@ -147,7 +148,7 @@ TEST(RgbdslamEndToEnd, ClosesTheLoopOnASmallLowAliasingLoop) {
 }
 
 TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
-  const sim::Scene scene = test::small_loop_scene();
+  const sim::scene::Scene scene = test::small_loop_scene();
   const RunResult a = run_on_generated(scene, 5.0, 80, test_options());
   const RunResult b = run_on_generated(scene, 5.0, 80, test_options());
   const Trajectory ta = a.system->trajectory(), tb = b.system->trajectory();
@@ -164,7 +165,8 @@ TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
 // every n-th keyframe. On a straight corridor (no loop to close) the only other optimisations are
 // the ones at the end of the run, so the count is exactly (keyframes - 1) / n more than without.
 TEST(RgbdslamEndToEnd, OptimizerSkipStepOptimisesAfterEveryNthKeyframe) {
-  const sim::Scene scene = sim::load_scene_yaml(kStraightCorridorYaml, "<straight corridor>");
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_yaml(kStraightCorridorYaml, "<straight corridor>");
   std::map<int, std::pair<std::int64_t, std::size_t>> optimisations_and_keyframes;
   for (int step : {0, 1, 3}) {
     slam::SlamOptions options = test_options();
@@ -254,11 +256,11 @@ TEST(RgbdslamEndToEnd, RunsOnAPlainTumFolderWithoutWifi) {
   const fs::path root = fs::temp_directory_path() / "wifislam_slam_tum_test";
   fs::remove_all(root);
   const fs::path generated = root / "generated";
-  sim::GenerateOptions generate;
+  sim::generate::GenerateOptions generate;
   generate.fps = 5.0;
   generate.max_frames = 40;
   generate.threads = 1;
-  sim::generate_dataset(test::small_loop_scene(), generated, generate);
+  sim::generate::generate_dataset(test::small_loop_scene(), generated, generate);
   // A plain TUM RGB-D layout: images and their lists only (no wifi.csv, odometry, calibration,
   // manifest).
   const fs::path tum = root / "tum";

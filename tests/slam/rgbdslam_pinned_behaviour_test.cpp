@@ -69,7 +69,6 @@ constexpr const char* kVanillaDigest =
 constexpr const char* kWifiDigest =
     "86062e240301db6b47181755015237560a8eb6ef07575242b17c6c5665fb8f22";
 
-
 std::string without_sixth_field(const std::string& csv) {
   std::string out;
   std::size_t begin = 0;
@@ -144,7 +143,7 @@ class RgbdslamPinnedBehaviour : public ::testing::Test {
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     const std::string measured = run_digest(run);
     if (images != kImagesDigest) {
-      const sim::OsmesaContext gl;
+      const sim::render::OsmesaContext gl;
       FAIL() << "this machine renders other pixels than the pinned ones, so the pinned SLAM "
                 "digests cannot be compared. OpenGL here: "
              << gl.gl_version() << " (" << gl.gl_renderer()

@@ -32,8 +32,8 @@ radio: {environment: office}
 )";
 }
 
-sim::Scene small_loop_scene() {
-  return sim::load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop");
+sim::scene::Scene small_loop_scene() {
+  return sim::scene::load_scene_yaml(small_loop_scene_yaml(), "slam_small_loop");
 }
 
 std::string small_loop_with_wifi_scene_yaml() {
@@ -43,8 +43,9 @@ std::string small_loop_with_wifi_scene_yaml() {
   return yaml;
 }
 
-sim::Scene small_loop_with_wifi_scene() {
-  return sim::load_scene_yaml(small_loop_with_wifi_scene_yaml(), "slam_small_loop_with_wifi");
+sim::scene::Scene small_loop_with_wifi_scene() {
+  return sim::scene::load_scene_yaml(small_loop_with_wifi_scene_yaml(),
+                                     "slam_small_loop_with_wifi");
 }
 
 }  // namespace wifislam::test

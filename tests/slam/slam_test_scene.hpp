@@ -11,10 +11,10 @@ namespace wifislam::test {
 
 /// The YAML text of the scene (route: once around the loop and a few metres further).
 std::string small_loop_scene_yaml();
-sim::Scene small_loop_scene();
+sim::scene::Scene small_loop_scene();
 /// The same loop with 6 s pauses: long enough for a few Wi-Fi scans each (the plain one pauses
 /// 1 s, shorter than one scan, so it has no Wi-Fi at all).
 std::string small_loop_with_wifi_scene_yaml();
-sim::Scene small_loop_with_wifi_scene();
+sim::scene::Scene small_loop_with_wifi_scene();
 
 }  // namespace wifislam::test

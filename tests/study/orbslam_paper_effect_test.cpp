@@ -30,8 +30,8 @@ TEST(OrbslamPaperEffect, OnTheBHallTwinWifiAcceptsNoFarWrongPlaceClosure) {
   options.fps = 2.0;
   options.jobs = 2;
   options.plots = false;
-  const std::vector<sim::Scene> scenes = {
-      sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/b_hall.yaml")};
+  const std::vector<sim::scene::Scene> scenes = {
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/b_hall.yaml")};
   const ComparisonResult result = run_comparison(scenes, options, out);
   ASSERT_EQ(result.cases.size(), 2u);
   std::map<std::string, std::int64_t> vanilla_far, wifi_far;

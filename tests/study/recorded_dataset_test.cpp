@@ -34,11 +34,11 @@ TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
       fs::temp_directory_path() / ("wifislam_recorded_" + std::to_string(::getpid()));
   fs::remove_all(scratch);
   fs::create_directories(scratch);
-  sim::GenerateOptions overrides;
+  sim::generate::GenerateOptions overrides;
   overrides.fps = 3;
-  const auto site = std::make_shared<const sim::Site>(sim::resolve_scene(
-      sim::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>"), overrides));
-  sim::GenerateOptions generate;
+  const auto site = std::make_shared<const sim::site::Site>(sim::generate::resolve_scene(
+      sim::scene::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>"), overrides));
+  sim::generate::GenerateOptions generate;
   generate.max_frames = 150;
 
   std::vector<StreamedRun> runs;
@@ -69,7 +69,8 @@ TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
 
   for (StreamedRun& run : runs) {
     SCOPED_TRACE(run.run_dir.filename().string());
-    const sim::SensorInput reader = sim::open_sensor_input(scratch / "dataset", {});
+    const sim::generate::SensorInput reader =
+        sim::generate::open_sensor_input(scratch / "dataset", {});
     slam::RunSummary summary;
     const auto system = slam::run_slam(*reader.stream, run.slam, summary);
     const fs::path by_reader = run.run_dir.string() + "_reader";

@@ -24,7 +24,8 @@ TEST(RtabmapPaperEffect, UnderTheTimeThresholdVanillaMissesTheRevisitAndWifiClos
                                     ("wifislam_rtabmap_effect_" + std::to_string(::getpid()));
   std::filesystem::remove_all(out);
   std::filesystem::create_directories(out);
-  const sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   ASSERT_EQ(scene.route.nodes, (std::vector<std::string>{"E", "B", "C", "D", "A", "B", "C"}));
   ComparisonOptions options("rtabmap", {});
   options.sweeps = {parse_sweep("time_threshold_ms=inf,70")};

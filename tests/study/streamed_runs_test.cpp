@@ -26,7 +26,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-
 /// "" when equal, else the first line where they differ (the files are long).
 std::string first_difference(const std::string& a, const std::string& b) {
   std::istringstream in_a(a), in_b(b);
@@ -60,8 +59,8 @@ class StreamedRuns : public ::testing::Test {
     options.plots = false;
     options.dataset_colour = colour;
     fs::create_directories(scratch_ / name);
-    return run_comparison({sim::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>")}, options,
-                          scratch_ / name);
+    return run_comparison({sim::scene::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>")},
+                          options, scratch_ / name);
   }
 
   fs::path scratch_;
@@ -73,10 +72,11 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
   ASSERT_EQ(one.cases.size(), 2u);
   for (const ComparisonCase& c : one.cases) {
     SCOPED_TRACE(c.run_dir.string());
-    sim::SensorInputOptions input;
+    sim::generate::SensorInputOptions input;
     const fs::path dataset =
         scratch_ / "jobs1" / "datasets" / c.run_dir.parent_path().parent_path().filename();
-    const sim::SensorInput reader = sim::open_sensor_input(dataset, input);  // checksums verified
+    const sim::generate::SensorInput reader =
+        sim::generate::open_sensor_input(dataset, input);  // checksums verified
     slam::SlamOptions options;
     slam::set_option(options, "min_matches", "10");
     options.seed = c.seed;
@@ -92,9 +92,10 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
       EXPECT_EQ(first_difference(streamed, test::read_file(by_reader / file)), "") << file;
     }
     if (c.wifi) {
-      EXPECT_EQ(first_difference(test::read_file(scratch_ / "jobs1" / c.run_dir / "wifi_clusters.csv"),
-                                 test::read_file(by_reader / "wifi_clusters.csv")),
-                "");
+      EXPECT_EQ(
+          first_difference(test::read_file(scratch_ / "jobs1" / c.run_dir / "wifi_clusters.csv"),
+                           test::read_file(by_reader / "wifi_clusters.csv")),
+          "");
     }
   }
 
@@ -128,7 +129,7 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
   EXPECT_NE(test::read_file(depth_only / "manifest.json").find("\"colour_images\": false"),
             std::string::npos);
   try {
-    (void)sim::open_sensor_input(depth_only, {});
+    (void)sim::generate::open_sensor_input(depth_only, {});
     FAIL() << "SLAM input opened a depth-only dataset";
   } catch (const InvalidInputError& e) {
     EXPECT_NE(std::string(e.what()).find("depth images only"), std::string::npos) << e.what();

@@ -124,9 +124,9 @@ TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
   // A wildcard over a list sets every element; a bad slam.* value is refused too.
   const StudyFile materials =
       load_study_yaml(study_yaml("  corridors[*].material: [concrete]\n"), "s.yaml");
-  const sim::Scene scene = case_scene(materials, materials.cases[0]);
-  for (const sim::Corridor& c : scene.corridors)
-    EXPECT_EQ(c.material, sim::WallMaterial::kConcrete);
+  const sim::scene::Scene scene = case_scene(materials, materials.cases[0]);
+  for (const sim::scene::Corridor& c : scene.corridors)
+    EXPECT_EQ(c.material, radio_model::WallMaterial::kConcrete);
   const StudyFile bad_option = load_study_yaml(study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
   EXPECT_THROW(check_cases(bad_option), ParseError);
 }
@@ -140,7 +140,7 @@ TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
           axes,
       "s.yaml");
   ASSERT_EQ(s.cases.size(), 2u);
-  const sim::Scene scene = case_scene(s, s.cases[1]);
+  const sim::scene::Scene scene = case_scene(s, s.cases[1]);
   EXPECT_EQ(scene.access_points.line_from_m, Eigen::Vector2d(2, 0));
   EXPECT_EQ(scene.access_points.line_to_m, Eigen::Vector2d(18, 0));
   EXPECT_EQ(scene.access_points.count, 8);  // the axis wins over `set`

@@ -193,7 +193,7 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
   ASSERT_NE(at, std::string::npos);
   std::string block = test::read_file(out / "access_points.yaml");
   scene.replace(at, own.size(), block);
-  const sim::Scene loaded = sim::load_scene_yaml(scene, "c_hall with the placed APs");
+  const sim::scene::Scene loaded = sim::scene::load_scene_yaml(scene, "c_hall with the placed APs");
   ASSERT_EQ(loaded.access_points.explicit_list.size(), static_cast<std::size_t>(budget));
   for (int i = 0; i < budget; ++i) {
     const auto& row = csv[static_cast<std::size_t>(i + 1)];
@@ -237,12 +237,13 @@ TEST(StudyPlace, OnAnUpperLevelTheCandidatesAndTheirBlockAreOnTheRoutesLevel) {
   const std::string own = "access_points: {placement: rooms, count: 4, height_m: 2.5}\n";
   ASSERT_NE(upstairs.find(own), std::string::npos);
   upstairs.replace(upstairs.find(own), own.size(), block);
-  const sim::Scene loaded = sim::load_scene_yaml(upstairs, "upstairs with the placed APs");
+  const sim::scene::Scene loaded =
+      sim::scene::load_scene_yaml(upstairs, "upstairs with the placed APs");
   ASSERT_EQ(loaded.access_points.explicit_list.size(), 2u);
-  for (const sim::AccessPointSpec& ap : loaded.access_points.explicit_list)
+  for (const sim::scene::AccessPointSpec& ap : loaded.access_points.explicit_list)
     EXPECT_EQ(ap.level, "first") << block;
   // Placed on the upper storey: 2.5 m above its floor at 3.1 m.
-  const sim::Site site(loaded);
+  const sim::site::Site site(loaded);
   for (const auto& ap : site.access_points()) EXPECT_NEAR(ap.position_m.z(), 3.1 + 2.5, 1e-9);
   fs::remove_all(dir);
 }

@@ -31,7 +31,6 @@
 namespace wifislam::study {
 namespace {
 
-
 /// One comparison run (2 seeds x {vanilla, wifi}) checked in one test: ctest runs every test in a
 /// process of its own, so splitting the checks would run the whole comparison once per check.
 TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorridors) {
@@ -43,7 +42,7 @@ TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorr
   options.seeds = 2;
   options.jobs = 2;
   options.plots = false;
-  sim::Scene scene = sim::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>");
+  sim::scene::Scene scene = sim::scene::load_scene_yaml(cli::kDemoSceneYaml, "<demo scene>");
   scene.seed = 7;  // seeds 7 and 8 (the demo's)
   const ComparisonResult result = run_comparison({scene}, options, out);
 
@@ -103,7 +102,8 @@ TEST(WifiBoundingClaim, OnTheCHallTwinWifiCutsFarFalseLoopClosuresComparisonsAnd
   options.jobs = 2;
   options.plots = false;
   options.sweeps = {parse_sweep("frontend=rgbdslam,orbslam")};
-  sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   scene.seed = 1001;
   const ComparisonResult result = run_comparison({scene}, options, out);
   ASSERT_EQ(result.cases.size(), 4u);

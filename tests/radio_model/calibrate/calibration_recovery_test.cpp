@@ -56,7 +56,7 @@ class CalibrationRecovery : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     scene_path_ = std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml";
-    sim::Scene scene = sim::load_scene_file(scene_path_);
+    sim::scene::Scene scene = sim::scene::load_scene_file(scene_path_);
     scene.radio.distance_coefficient = kTrueN;
     scene.radio.shadowing_sigma_db = kTrueSigmaDb;
     scene.radio.shadowing_decorrelation_m = kTrueDecorrelationM;
@@ -65,7 +65,7 @@ class CalibrationRecovery : public ::testing::Test {
     // their own so that a material mixed up with brick shows.
     const double losses_db[] = {4.0, kTrueBrickDb, 12.0, 2.5, 5.5};  // WallMaterial order
     for (int m = 0; m < 5; ++m) scene.radio.wall_loss_db.by_material_db[m] = losses_db[m];
-    site_ = new sim::Site(scene);
+    site_ = new sim::site::Site(scene);
     const radio_model::PropagationModel& model = site_->radio();
 
     // The survey: every free lattice spot, 10 scans of every AP heard there.
@@ -73,14 +73,14 @@ class CalibrationRecovery : public ::testing::Test {
         fs::temp_directory_path() / fmt::format("wifislam_calibration_{}.csv", ::getpid());
     std::ofstream out(survey_path_);
     out << "x_m,y_m,ap_id,rss_dbm\n";
-    const sim::FloorPlan& plan = site_->world().plan;
+    const sim::world::FloorPlan& plan = site_->world().plan;
     Rng fading = Rng::stream(7, "test/fading");
     // Spots off the whole metres, where walls of the scene lie.
     for (double y = std::floor(plan.bounds_min_m.y()) + 0.25; y <= plan.bounds_max_m.y();
          y += 1.0) {
       for (double x = std::floor(plan.bounds_min_m.x()) + 0.25; x <= plan.bounds_max_m.x();
            x += 1.0) {
-        if (!sim::regions_contain(plan.free_space, {x, y})) continue;
+        if (!sim::world::regions_contain(plan.free_space, {x, y})) continue;
         const Eigen::Vector3d p(x, y, kReceiverHeightM);
         for (std::size_t i = 0; i < model.access_points().size(); ++i) {
           const radio_model::RadioLink link = model.link(i, p);
@@ -103,19 +103,19 @@ class CalibrationRecovery : public ::testing::Test {
 
   static std::string scene_path_;
   static fs::path survey_path_;
-  static sim::Site* site_;
+  static sim::site::Site* site_;
 };
 
 std::string CalibrationRecovery::scene_path_;
 fs::path CalibrationRecovery::survey_path_;
-sim::Site* CalibrationRecovery::site_ = nullptr;
+sim::site::Site* CalibrationRecovery::site_ = nullptr;
 
 TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
-  const sim::Scene& scene = site_->scene();
+  const sim::scene::Scene& scene = site_->scene();
   std::vector<SurveyAccessPoint> aps;
   for (const auto& ap : site_->access_points()) aps.push_back({ap.id, ap.position_m, {}, ""});
   const Survey survey = read_survey(survey_path_, SurveyFormat::kLong, kReceiverHeightM);
-  const SurveyLinks links = survey_links(survey, aps, sim::survey_site(*site_));
+  const SurveyLinks links = survey_links(survey, aps, sim::site::survey_site(*site_));
   ASSERT_GT(links.groups.size(), 5000u);
 
   // Fitted against the default laws (what a user's scene has), not the truth.
@@ -130,7 +130,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   EXPECT_GT(fit.distance_coefficient_ci95, 2.5 * independent_ci95);
   EXPECT_LT(fit.distance_coefficient_ci95, 3.0);
 
-  const MaterialFit& brick = fit.materials[static_cast<int>(sim::WallMaterial::kBrick)];
+  const MaterialFit& brick = fit.materials[static_cast<int>(radio_model::WallMaterial::kBrick)];
   ASSERT_TRUE(brick.fitted) << brick.reason;
   EXPECT_NEAR(fit.model.distance_coefficient, kTrueN, 2.0);
   EXPECT_NEAR(brick.loss_db, kTrueBrickDb, 1.0);
@@ -168,17 +168,19 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
     yaml += line + "\n";
   }
   if (::testing::Test::HasFailure()) std::cerr << calibration_report_markdown(c);
-  const sim::Scene fitted = sim::load_scene_yaml(yaml + calibration_scene_yaml(c), "fitted c_hall");
+  const sim::scene::Scene fitted =
+      sim::scene::load_scene_yaml(yaml + calibration_scene_yaml(c), "fitted c_hall");
   ASSERT_TRUE(fitted.radio.distance_coefficient.has_value());
   EXPECT_NEAR(*fitted.radio.distance_coefficient, fit.model.distance_coefficient, 0.01);
   const auto& brick_db =
-      fitted.radio.wall_loss_db.by_material_db[static_cast<int>(sim::WallMaterial::kBrick)];
+      fitted.radio.wall_loss_db.by_material_db[static_cast<int>(radio_model::WallMaterial::kBrick)];
   ASSERT_TRUE(brick_db.has_value());
   EXPECT_NEAR(*brick_db, brick.loss_db, 0.01);
   EXPECT_EQ(fitted.access_points.explicit_list.size(), aps.size());
   // The fitted loss reaches the radio model: flat in frequency.
-  const auto options = sim::propagation_options(fitted);
-  EXPECT_NEAR(options.wall_losses.loss_db(sim::WallMaterial::kBrick, 5200.0), *brick_db, 1e-9);
+  const auto options = sim::site::propagation_options(fitted);
+  EXPECT_NEAR(options.wall_losses.loss_db(radio_model::WallMaterial::kBrick, 5200.0), *brick_db,
+              1e-9);
 }
 
 }  // namespace

@@ -52,12 +52,13 @@ constexpr double kFrequencyMhz = 2437.0, kReceiverHeightM = 1.0;
 constexpr double kOffsetBDb = -5.5, kOffsetCDb = 3.0;
 
 TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromItsOwn) {
-  sim::Scene scene = sim::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
   scene.radio.distance_coefficient = 30.0;
   scene.radio.shadowing_sigma_db = 4.0;
   scene.radio.shadowing_decorrelation_m = 3.0;
   scene.access_points.tx_power_dbm = 20.0;
-  const sim::Site site(scene);
+  const sim::site::Site site(scene);
   const PropagationModel& model = site.radio();
 
   ReceiverDevice phone_b, phone_c;
@@ -68,14 +69,14 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
   {
     std::ofstream out(path);
     out << "device,x_m,y_m,ap_id,rss_dbm\n";  // columns in another order than usual
-    const sim::FloorPlan& plan = site.world().plan;
+    const sim::world::FloorPlan& plan = site.world().plan;
     Rng fading = Rng::stream(11, "test/fading");
     int spot = 0, row = 0;
     for (double y = std::floor(plan.bounds_min_m.y()) + 0.25; y <= plan.bounds_max_m.y();
          y += 1.5, ++row) {
       for (double x = std::floor(plan.bounds_min_m.x()) + 0.25; x <= plan.bounds_max_m.x();
            x += 1.5) {
-        if (!sim::regions_contain(plan.free_space, {x, y})) continue;
+        if (!sim::world::regions_contain(plan.free_space, {x, y})) continue;
         ++spot;
         const Eigen::Vector3d p(x, y, kReceiverHeightM);
         for (std::size_t i = 0; i < model.access_points().size(); ++i) {
@@ -109,7 +110,7 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
 
   std::vector<SurveyAccessPoint> aps;
   for (const auto& ap : site.access_points()) aps.push_back({ap.id, ap.position_m, {}, ""});
-  const SurveySite where = sim::survey_site(site);
+  const SurveySite where = sim::site::survey_site(site);
   // phone_b as the reference: phone_a's offset is then +5.5.
   const SurveyLinks b_first =
       survey_links(survey, aps, where, devices_reference_first(survey, "phone_b"));

@@ -25,14 +25,14 @@ double median(std::vector<double> v) {
 }
 
 TEST(GenerateConsistency, NoiseFreeDepthBackProjectsOntoTheWorldsWalls) {
-  Scene scene = test::small_scene();
+  scene::Scene scene = test::small_scene();
   scene.sensors.depth.noise = false;
   scene.sensors.depth.quantisation = false;
   scene.sensors.depth.dropouts = false;
-  GenerateOptions options;
+  generate::GenerateOptions options;
   options.fps = 0.5;  // one frame every 2 s: views from all along the route
-  GeneratorStream stream(scene, options);
-  const World& world = stream.pipeline().world();
+  generate::GeneratorStream stream(scene, options);
+  const world::World& world = stream.pipeline().world();
   const double wall_height_m = world.plan.wall_height_m;
   const CameraIntrinsics& k = stream.intrinsics();
 
@@ -52,7 +52,7 @@ TEST(GenerateConsistency, NoiseFreeDepthBackProjectsOntoTheWorldsWalls) {
           floor_heights_m.push_back(std::abs(p.z()));
         } else if (p.z() > 0.1 && p.z() < wall_height_m - 0.1) {
           double best = 1e9;
-          for (const WallFace2& f : world.plan.wall_faces)
+          for (const world::WallFace2& f : world.plan.wall_faces)
             best = std::min(best, distance_to_segment(p.head<2>(), f.a_m, f.b_m));
           wall_distances_m.push_back(best);
         }

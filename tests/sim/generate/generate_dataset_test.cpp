@@ -29,8 +29,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-GenerateOptions short_run(int threads) {
-  GenerateOptions o;
+generate::GenerateOptions short_run(int threads) {
+  generate::GenerateOptions o;
   o.max_frames = 30;
   o.fps = 5.0;  // 6 s: the first pause (two scans) and a little driving
   o.threads = threads;
@@ -38,12 +38,12 @@ GenerateOptions short_run(int threads) {
 }
 
 TEST(GenerateDataset, SameSeedGivesIdenticalDatasetsWhateverTheThreadCount) {
-  const Scene scene = test::small_scene();
+  const scene::Scene scene = test::small_scene();
   const fs::path a = test::fresh_folder("a"), b = test::fresh_folder("b"),
                  c = test::fresh_folder("c"), d = test::fresh_folder("d");
-  const GenerateSummary sa = generate_dataset(scene, a, short_run(1));
-  generate_dataset(scene, b, short_run(1));
-  const GenerateSummary sc = generate_dataset(scene, c, short_run(2));
+  const generate::GenerateSummary sa = generate::generate_dataset(scene, a, short_run(1));
+  generate::generate_dataset(scene, b, short_run(1));
+  const generate::GenerateSummary sc = generate::generate_dataset(scene, c, short_run(2));
   EXPECT_EQ(sa.frames, 30);
   EXPECT_EQ(sc.threads, 2);
   const std::string manifest = test::read_file(a / dataset::kManifest);
@@ -53,9 +53,9 @@ TEST(GenerateDataset, SameSeedGivesIdenticalDatasetsWhateverTheThreadCount) {
   // The manifest covers the images through images.sha256; check that too.
   EXPECT_EQ(test::read_file(a / dataset::kImageChecksums),
             test::read_file(c / dataset::kImageChecksums));
-  GenerateOptions other_seed = short_run(2);
+  generate::GenerateOptions other_seed = short_run(2);
   other_seed.seed = 78;
-  generate_dataset(scene, d, other_seed);
+  generate::generate_dataset(scene, d, other_seed);
   EXPECT_NE(manifest, test::read_file(d / dataset::kManifest));
   for (const auto& dir : {a, b, c, d}) {
     EXPECT_FALSE(fs::exists(dir.string() + ".partial"));
@@ -64,13 +64,13 @@ TEST(GenerateDataset, SameSeedGivesIdenticalDatasetsWhateverTheThreadCount) {
 }
 
 TEST(GenerateDataset, WrittenDatasetReadsBackEqualToTheInMemoryStream) {
-  const Scene scene = test::small_scene();
+  const scene::Scene scene = test::small_scene();
   const fs::path dir = test::fresh_folder("roundtrip");
-  GenerateOptions options = short_run(2);
-  generate_dataset(scene, dir, options);
+  generate::GenerateOptions options = short_run(2);
+  generate::generate_dataset(scene, dir, options);
 
   DatasetReader reader(dir);
-  GeneratorStream stream(scene, options);
+  generate::GeneratorStream stream(scene, options);
   EXPECT_TRUE(reader.has_wifi());
   EXPECT_TRUE(reader.has_odometry());
   EXPECT_EQ(reader.intrinsics(), stream.intrinsics());
@@ -121,12 +121,13 @@ TEST(GenerateDataset, WrittenDatasetReadsBackEqualToTheInMemoryStream) {
 // switched on, the frames still depend only on the scene and seed (auto-exposure carries state
 // from frame to frame, and the pipeline makes frames in order), and only the images move.
 TEST(GenerateDataset, SensorNoisePartsAreDeterministicAndMoveOnlyTheImages) {
-  const Scene plain = test::small_scene();
-  Scene noisy = plain;
+  const scene::Scene plain = test::small_scene();
+  scene::Scene noisy = plain;
   noisy.sensors.depth.lateral_noise = true;
   noisy.sensors.color.noise = true;
   noisy.sensors.color.auto_exposure = true;
-  GeneratorStream a(noisy, short_run(1)), b(noisy, short_run(1)), off(plain, short_run(1));
+  generate::GeneratorStream a(noisy, short_run(1)), b(noisy, short_run(1)),
+      off(plain, short_run(1));
   std::size_t frames = 0;
   double rgb_moved = 0.0, depth_moved = 0.0;
   while (true) {
@@ -154,7 +155,7 @@ TEST(GenerateDataset, SensorNoisePartsAreDeterministicAndMoveOnlyTheImages) {
 
 TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
   const fs::path dir = test::fresh_folder("assoc");
-  generate_dataset(test::small_scene(), dir, short_run(2));
+  generate::generate_dataset(test::small_scene(), dir, short_run(2));
   const auto rgb = read_tum_file_list((dir / dataset::kRgbList).string());
   const auto depth = read_tum_file_list((dir / dataset::kDepthList).string());
   ASSERT_EQ(rgb.size(), 30u);
@@ -179,9 +180,10 @@ TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
 
 TEST(GenerateDataset, NoImagesWritesPosesOdometryAndWifiOnly) {
   const fs::path dir = test::fresh_folder("noimg");
-  GenerateOptions options;
-  options.camera = sim::CameraOutput::kNoImages;
-  const GenerateSummary summary = generate_dataset(test::small_scene(), dir, options);
+  generate::GenerateOptions options;
+  options.camera = sim::generate::CameraOutput::kNoImages;
+  const generate::GenerateSummary summary =
+      generate::generate_dataset(test::small_scene(), dir, options);
   EXPECT_FALSE(fs::exists(dir / dataset::kRgbDir));
   EXPECT_FALSE(fs::exists(dir / dataset::kAssociations));
   EXPECT_GT(summary.frames, 1000);
@@ -195,11 +197,11 @@ TEST(GenerateDataset, NoImagesWritesPosesOdometryAndWifiOnly) {
 
 TEST(GenerateDataset, ScansHappenOnlyWhileTheRobotPauses) {
   const fs::path dir = test::fresh_folder("pauses");
-  GenerateOptions options;
-  options.camera = sim::CameraOutput::kNoImages;
-  const Scene scene = test::small_scene();
-  const GenerateSummary summary = generate_dataset(scene, dir, options);
-  const GenerationPipeline truth(scene, options);
+  generate::GenerateOptions options;
+  options.camera = sim::generate::CameraOutput::kNoImages;
+  const scene::Scene scene = test::small_scene();
+  const generate::GenerateSummary summary = generate::generate_dataset(scene, dir, options);
+  const generate::GenerationPipeline truth(scene, options);
   const auto& pauses = truth.motion().pauses();
   EXPECT_EQ(summary.pauses, static_cast<std::int64_t>(pauses.size()));
   const auto scans = read_wifi_csv((dir / dataset::kWifi).string());
@@ -226,10 +228,10 @@ TEST(GenerateDataset, ScansHappenOnlyWhileTheRobotPauses) {
   EXPECT_LE(summary.aps_heard_per_pause_max, 6);
 
   // With scan_while_moving the scanner runs throughout.
-  Scene moving = scene;
+  scene::Scene moving = scene;
   moving.route.pause.scan_while_moving = true;
   const fs::path dir2 = test::fresh_folder("moving");
-  generate_dataset(moving, dir2, options);
+  generate::generate_dataset(moving, dir2, options);
   int while_moving = 0;
   for (const WifiScan& s : read_wifi_csv((dir2 / dataset::kWifi).string()))
     while_moving += truth.motion().state_at(truth.route_time(s.start_time)).speed_mps > 0.0;
@@ -256,16 +258,16 @@ std::vector<std::pair<Timestamp, std::string>> stamped_lines(const fs::path& fil
 // Every stamp a dataset holds is route time plus the scene's sensors.time_origin_s, exactly; the
 // origin changes nothing else (images, poses, odometry, RSSI are those of origin 0).
 TEST(GenerateDataset, EveryStampIsRouteTimePlusTheSceneTimeOrigin) {
-  const Scene scene = test::small_scene();
+  const scene::Scene scene = test::small_scene();
   EXPECT_EQ(scene.sensors.time_origin_s, 1'700'000'000u);  // the default
-  Scene at_zero = scene, overridden = scene;
+  scene::Scene at_zero = scene, overridden = scene;
   at_zero.sensors.time_origin_s = 0;
   overridden.sensors.time_origin_s = 1'234'567'890;
   const fs::path d0 = test::fresh_folder("origin0"), dd = test::fresh_folder("origin_default"),
                  d1 = test::fresh_folder("origin_override");
-  generate_dataset(at_zero, d0, short_run(2));
-  const GenerateSummary summary = generate_dataset(scene, dd, short_run(2));
-  generate_dataset(overridden, d1, short_run(2));
+  generate::generate_dataset(at_zero, d0, short_run(2));
+  const generate::GenerateSummary summary = generate::generate_dataset(scene, dd, short_run(2));
+  generate::generate_dataset(overridden, d1, short_run(2));
   EXPECT_EQ(summary.time_origin_s, 1'700'000'000u);
   EXPECT_EQ(summary.first_time, Timestamp::from_ns(1'700'000'000'000'000'000LL));
 
@@ -317,9 +319,9 @@ TEST(GenerateDataset, EveryStampIsRouteTimePlusTheSceneTimeOrigin) {
 }
 
 TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheImu) {
-  const Scene scene = test::small_scene();
+  const scene::Scene scene = test::small_scene();
   const fs::path dir = test::fresh_folder("imu");
-  const GenerateSummary summary = generate_dataset(scene, dir, short_run(2));
+  const generate::GenerateSummary summary = generate::generate_dataset(scene, dir, short_run(2));
   const std::vector<ImuReading> imu = read_imu_csv((dir / dataset::kImu).string());
   // 200 Hz over the run (30 frames at 5 fps: its end is the last frame's time).
   ASSERT_EQ(static_cast<std::int64_t>(imu.size()), summary.imu_samples);
@@ -331,7 +333,7 @@ TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheIm
   // The robot stands through its first pause: gravity up, within the noise (sigma ~0.03 m/s^2
   // white at 200 Hz, plus the bias walk).
   const ImuReading& first = imu.front();
-  EXPECT_NEAR(first.specific_force_mps2.z(), kStandardGravityMps2, 0.2);
+  EXPECT_NEAR(first.specific_force_mps2.z(), robot::kStandardGravityMps2, 0.2);
   EXPECT_NEAR(first.specific_force_mps2.head<2>().norm(), 0.0, 0.2);
   const auto manifest = nlohmann::json::parse(test::read_file(dir / dataset::kManifest));
   EXPECT_EQ(manifest.at("counts").at("imu_samples"), summary.imu_samples);
@@ -360,10 +362,10 @@ TEST(GenerateDataset, ImuCsvHoldsEverySampleOfTheRunAndCalibrationDescribesTheIm
     EXPECT_LT((truth[i].imu_to_world.matrix() - expected.matrix()).norm(), 1e-9) << "frame " << i;
   }
 
-  Scene without = scene;
+  scene::Scene without = scene;
   without.sensors.imu.enabled = false;
   const fs::path none = test::fresh_folder("no_imu");
-  generate_dataset(without, none, short_run(2));
+  generate::generate_dataset(without, none, short_run(2));
   EXPECT_FALSE(fs::exists(none / dataset::kImu));
   EXPECT_FALSE(fs::exists(none / dataset::kImuGroundTruth));
   EXPECT_FALSE(read_calibration_yaml(none / dataset::kCalibration).imu.has_value());

@@ -37,7 +37,9 @@ route:
   pause: {spacing_m: [3.0, 4.0], duration_s: 6.0}
 )";
 
-inline sim::Scene small_scene() { return sim::load_scene_yaml(kSmallSceneYaml, "small_loop.yaml"); }
+inline sim::scene::Scene small_scene() {
+  return sim::scene::load_scene_yaml(kSmallSceneYaml, "small_loop.yaml");
+}
 
 inline std::filesystem::path fresh_folder(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();

@@ -45,8 +45,8 @@ int consistent_orb_matches(const cv::Mat& a_bgr, const cv::Mat& b_bgr) {
 
 int matches_between_segments(int variant_a, int variant_b) {
   const test::HandCorridor wall = test::two_segment_wall(variant_a, variant_b);
-  RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
-  renderer.set_world(wall.mesh, wall.lights, 2024, AppearanceThemes{});
+  render::RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
+  renderer.set_world(wall.mesh, wall.lights, 2024, scene::AppearanceThemes{});
   // The same place relative to each 4 m segment, 1.6 m from the wall, looking at it.
   const double yaw = std::numbers::pi / 2;
   const cv::Mat a = renderer.render(camera_pose_from_planar(1.9, -0.6, yaw, 1.2)).color_bgr;

@@ -17,8 +17,8 @@ namespace {
 
 constexpr int kWidth = 640, kHeight = 480;
 
-ColorSensorSpec noise_only(double conversion_gain_dn_per_e, double read_noise_dn) {
-  ColorSensorSpec spec;
+scene::ColorSensorSpec noise_only(double conversion_gain_dn_per_e, double read_noise_dn) {
+  scene::ColorSensorSpec spec;
   spec.noise = true;
   spec.conversion_gain_dn_per_e = conversion_gain_dn_per_e;
   spec.read_noise_dn = read_noise_dn;
@@ -39,7 +39,7 @@ TEST(ColorSensorModel, NoiseVarianceIsShotPlusReadNoise) {
   // The defaults, and a sensor with 4x the shot noise and 4 DN read noise (where the read term
   // dominates at low intensity).
   for (const auto& [gain_dn_per_e, read_dn] : {std::pair{0.05, 0.5}, std::pair{0.2, 2.0}}) {
-    ColorSensorModel model(noise_only(gain_dn_per_e, read_dn), 30.0, 17);
+    render::ColorSensorModel model(noise_only(gain_dn_per_e, read_dn), 30.0, 17);
     for (const int intensity : {16, 64, 128, 200}) {
       const cv::Mat flat(kHeight, kWidth, CV_8UC3, cv::Scalar::all(intensity));
       cv::Mat out;
@@ -63,7 +63,7 @@ TEST(ColorSensorModel, NoiseVarianceIsShotPlusReadNoise) {
 
 TEST(ColorSensorModel, NoiseDependsOnSeedAndFrameOnly) {
   const cv::Mat image = ramp_image(30, 220);
-  ColorSensorModel a(noise_only(0.05, 0.5), 30.0, 5), b(noise_only(0.05, 0.5), 30.0, 5);
+  render::ColorSensorModel a(noise_only(0.05, 0.5), 30.0, 5), b(noise_only(0.05, 0.5), 30.0, 5);
   cv::Mat a3, b3, a4;
   a.measure(image, 3, a3);
   b.measure(image, 3, b3);
@@ -73,12 +73,12 @@ TEST(ColorSensorModel, NoiseDependsOnSeedAndFrameOnly) {
 }
 
 TEST(ColorSensorModel, AutoExposureApproachesTargetWithItsTimeConstant) {
-  ColorSensorSpec spec;
+  scene::ColorSensorSpec spec;
   spec.auto_exposure = true;
   spec.exposure_target_dn = 118.0;
   spec.exposure_time_constant_s = 0.5;
   constexpr double kFps = 30.0;
-  ColorSensorModel model(spec, kFps, 1);
+  render::ColorSensorModel model(spec, kFps, 1);
   // A dark, still scene (mean 40 DN): the log error log(T / mean) must fall as exp(-t / tau).
   const cv::Mat scene = ramp_image(20, 60);
   const double rendered_mean = cv::mean(scene)[0];
@@ -102,7 +102,7 @@ TEST(ColorSensorModel, AutoExposureApproachesTargetWithItsTimeConstant) {
 }
 
 TEST(ColorSensorModel, AutoExposureIsTheSameForTheSameFrameSequence) {
-  ColorSensorSpec spec;
+  scene::ColorSensorSpec spec;
   spec.auto_exposure = true;
   spec.noise = true;
   // A sequence whose brightness changes: dark (mean 40 DN), bright (200 DN), dark again.
@@ -110,7 +110,7 @@ TEST(ColorSensorModel, AutoExposureIsTheSameForTheSameFrameSequence) {
   auto frame_at = [](int k) {
     return k < 10 || k >= 35 ? ramp_image(10, 70) : ramp_image(150, 250);
   };
-  ColorSensorModel first(spec, 30.0, 8), second(spec, 30.0, 8);
+  render::ColorSensorModel first(spec, 30.0, 8), second(spec, 30.0, 8);
   std::vector<double> gains;
   for (int k = 0; k < kFrames; ++k) {
     const cv::Mat rendered = frame_at(k);
@@ -133,10 +133,10 @@ TEST(ColorSensorModel, AutoExposureIsTheSameForTheSameFrameSequence) {
 TEST(ColorSensorModel, BothOffGivesTheRenderedImage) {
   cv::Mat image(kHeight, kWidth, CV_8UC3);
   cv::randu(image, 0, 256);
-  ColorSensorSpec spec;  // the defaults: both off
+  scene::ColorSensorSpec spec;  // the defaults: both off
   spec.conversion_gain_dn_per_e = 3.0;
   spec.exposure_target_dn = 200.0;
-  ColorSensorModel model(spec, 30.0, 4);
+  render::ColorSensorModel model(spec, 30.0, 4);
   for (int k : {0, 7, 3}) {  // no state, so any order
     cv::Mat out;
     model.measure(image, k, out);
@@ -145,20 +145,20 @@ TEST(ColorSensorModel, BothOffGivesTheRenderedImage) {
 }
 
 TEST(ColorSensorModel, RejectsBadParameters) {
-  ColorSensorSpec spec = noise_only(-0.1, 0.5);
-  EXPECT_THROW(ColorSensorModel(spec, 30.0, 1), InvalidInputError);
-  spec = ColorSensorSpec{};
+  scene::ColorSensorSpec spec = noise_only(-0.1, 0.5);
+  EXPECT_THROW(render::ColorSensorModel(spec, 30.0, 1), InvalidInputError);
+  spec = scene::ColorSensorSpec{};
   spec.auto_exposure = true;
   spec.exposure_min_gain = 2.0;
   spec.exposure_max_gain = 1.0;
-  EXPECT_THROW(ColorSensorModel(spec, 30.0, 1), InvalidInputError);
-  spec = ColorSensorSpec{};
+  EXPECT_THROW(render::ColorSensorModel(spec, 30.0, 1), InvalidInputError);
+  spec = scene::ColorSensorSpec{};
   spec.auto_exposure = true;
   spec.exposure_time_constant_s = 0.0;
-  EXPECT_THROW(ColorSensorModel(spec, 30.0, 1), InvalidInputError);
+  EXPECT_THROW(render::ColorSensorModel(spec, 30.0, 1), InvalidInputError);
   spec.exposure_time_constant_s = 0.5;
   spec.exposure_target_dn = 255.0;
-  EXPECT_THROW(ColorSensorModel(spec, 30.0, 1), InvalidInputError);
+  EXPECT_THROW(render::ColorSensorModel(spec, 30.0, 1), InvalidInputError);
 }
 
 }  // namespace

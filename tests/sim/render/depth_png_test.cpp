@@ -25,7 +25,7 @@ TEST(DepthPng, RoundTripsAtFiveThousandUnitsPerMetre) {
   depth.at<float>(1, 2) = -1.0f;     // invalid
   const fs::path path =
       fs::temp_directory_path() / ("wifislam_depth_png_" + std::to_string(::getpid()) + ".png");
-  write_depth_png(path, depth);
+  render::write_depth_png(path, depth);
   const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(raw.type(), CV_16UC1);
   EXPECT_EQ(raw.at<std::uint16_t>(0, 0), 5000);
@@ -34,7 +34,7 @@ TEST(DepthPng, RoundTripsAtFiveThousandUnitsPerMetre) {
   EXPECT_EQ(raw.at<std::uint16_t>(1, 0), 65535);
   EXPECT_EQ(raw.at<std::uint16_t>(1, 1), 0);
   EXPECT_EQ(raw.at<std::uint16_t>(1, 2), 0);
-  const cv::Mat back = read_depth_png(path);
+  const cv::Mat back = render::read_depth_png(path);
   EXPECT_FLOAT_EQ(back.at<float>(0, 2), 3.2502f);  // 16251 / 5000
   EXPECT_FALSE(fs::exists(path.string() + ".partial"));
   fs::remove(path);
@@ -42,14 +42,14 @@ TEST(DepthPng, RoundTripsAtFiveThousandUnitsPerMetre) {
 
 TEST(DepthPng, ReadingAColourImageAsDepthIsAClearError) {
   const fs::path path = fs::temp_directory_path() / "wifislam_depth_png_colour.png";
-  write_color_png(path, cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)));
+  render::write_color_png(path, cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)));
   try {
-    read_depth_png(path);
+    render::read_depth_png(path);
     FAIL() << "expected IoError";
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("16-bit"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(read_depth_png(path.string() + ".missing"), IoError);
+  EXPECT_THROW(render::read_depth_png(path.string() + ".missing"), IoError);
   fs::remove(path);
 }
 
@@ -58,7 +58,7 @@ TEST(DepthPng, FalseColourIsBlackWithoutReadingAndDiffersNearToFar) {
   depth.at<float>(0, 0) = 0.0f;
   depth.at<float>(0, 1) = 0.9f;
   depth.at<float>(0, 2) = 3.9f;
-  const cv::Mat colour = depth_false_color(depth, 0.8, 4.0);
+  const cv::Mat colour = render::depth_false_color(depth, 0.8, 4.0);
   ASSERT_EQ(colour.type(), CV_8UC3);
   EXPECT_EQ(colour.at<cv::Vec3b>(0, 0), cv::Vec3b(0, 0, 0));
   const cv::Vec3b near = colour.at<cv::Vec3b>(0, 1), far = colour.at<cv::Vec3b>(0, 2);

@@ -22,24 +22,24 @@
 namespace wifislam::sim {
 namespace {
 
-DepthSensorSpec only(bool noise, bool quantisation, bool dropouts) {
-  DepthSensorSpec spec;
+scene::DepthSensorSpec only(bool noise, bool quantisation, bool dropouts) {
+  scene::DepthSensorSpec spec;
   spec.noise = noise;
   spec.quantisation = quantisation;
   spec.dropouts = dropouts;
   return spec;
 }
 
-RenderedView wall_view(RgbdRenderer& renderer, double distance_m) {
-  renderer.set_world(test::wall_facing_minus_x(distance_m), {}, 1, AppearanceThemes{});
+render::RenderedView wall_view(render::RgbdRenderer& renderer, double distance_m) {
+  renderer.set_world(test::wall_facing_minus_x(distance_m), {}, 1, scene::AppearanceThemes{});
   return renderer.render(camera_pose_from_planar(0.0, 0.0, 0.0, 0.0));
 }
 
 TEST(DepthSensorModel, AxialNoiseAtThreeMetresMatchesKhoshelhamElberink) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
-  const RenderedView view = wall_view(renderer, 3.0);
-  const DepthSensorModel model(only(true, false, true), k, 42);
+  render::RgbdRenderer renderer(k);
+  const render::RenderedView view = wall_view(renderer, 3.0);
+  const render::DepthSensorModel model(only(true, false, true), k, 42);
   // Per-pixel spread over many frames, pooled over a central patch.
   constexpr int kFrames = 60;
   const cv::Rect patch(220, 140, 200, 200);
@@ -63,8 +63,8 @@ TEST(DepthSensorModel, AxialNoiseAtThreeMetresMatchesKhoshelhamElberink) {
 
 TEST(DepthSensorModel, NothingOutsideTheValidRangeSurvives) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
-  const DepthSensorModel model(DepthSensorSpec{}, k, 7);
+  render::RgbdRenderer renderer(k);
+  const render::DepthSensorModel model(scene::DepthSensorSpec{}, k, 7);
   // Near the far limit, noise pushes about half the readings past 4 m: they must be dropped.
   const cv::Mat far = model.measure(wall_view(renderer, 3.98), 0);
   double lo = 0, hi = 0;
@@ -78,19 +78,19 @@ TEST(DepthSensorModel, NothingOutsideTheValidRangeSurvives) {
   EXPECT_EQ(cv::countNonZero(model.measure(wall_view(renderer, 0.6), 0)), 0);
   EXPECT_EQ(cv::countNonZero(model.measure(wall_view(renderer, 4.5), 0)), 0);
   // Every part off but the range: readings equal the ideal depth.
-  const DepthSensorModel ideal(only(false, false, false), k, 7);
-  const RenderedView mid = wall_view(renderer, 2.0);
+  const render::DepthSensorModel ideal(only(false, false, false), k, 7);
+  const render::RenderedView mid = wall_view(renderer, 2.0);
   EXPECT_EQ(cv::norm(ideal.measure(mid, 0), mid.depth_m, cv::NORM_INF), 0.0);
 }
 
 TEST(DepthSensorModel, QuantisationPutsReadingsOnTheDisparityGrid) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
-  renderer.set_world(test::wall_facing_minus_x(3.0), {}, 1, AppearanceThemes{});
+  render::RgbdRenderer renderer(k);
+  renderer.set_world(test::wall_facing_minus_x(3.0), {}, 1, scene::AppearanceThemes{});
   // Oblique view: a continuum of true depths between ~1.5 m and 4 m.
-  const RenderedView view = renderer.render(camera_pose_from_planar(0.0, 0.0, 0.9, 0.0));
-  const DepthSensorSpec spec = only(false, true, false);
-  const DepthSensorModel model(spec, k, 3);
+  const render::RenderedView view = renderer.render(camera_pose_from_planar(0.0, 0.0, 0.9, 0.0));
+  const scene::DepthSensorSpec spec = only(false, true, false);
+  const render::DepthSensorModel model(spec, k, 3);
   const cv::Mat z = model.measure(view, 0);
   const double fb = k.fx_px * spec.baseline_m;
   int checked = 0;
@@ -114,12 +114,12 @@ TEST(DepthSensorModel, QuantisationPutsReadingsOnTheDisparityGrid) {
 
 TEST(DepthSensorModel, GrazingAnglesGiveNoReading) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
+  render::RgbdRenderer renderer(k);
   // A wall 0.35 m away, looked at almost along it: rays meet it at 44 to 90 deg from its
   // normal, and those beyond 82 deg still hit it within the 4 m range.
-  renderer.set_world(test::wall_facing_minus_x(0.35), {}, 1, AppearanceThemes{});
-  const RenderedView view = renderer.render(camera_pose_from_planar(0.0, 0.0, 1.3, 0.0));
-  const DepthSensorModel model(only(false, false, true), k, 3);
+  renderer.set_world(test::wall_facing_minus_x(0.35), {}, 1, scene::AppearanceThemes{});
+  const render::RenderedView view = renderer.render(camera_pose_from_planar(0.0, 0.0, 1.3, 0.0));
+  const render::DepthSensorModel model(only(false, false, true), k, 3);
   const cv::Mat z = model.measure(view, 0);
   const double cos_limit = std::cos(82.0 * std::numbers::pi / 180.0);
   int dropped = 0, kept = 0;
@@ -142,15 +142,15 @@ TEST(DepthSensorModel, GrazingAnglesGiveNoReading) {
 
 TEST(DepthSensorModel, FarSideOfDepthEdgesIsDropped) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
+  render::RgbdRenderer renderer(k);
   const test::HandCorridor corridor = test::hand_corridor();
-  renderer.set_world(corridor.mesh, corridor.lights, 1, AppearanceThemes{});
+  renderer.set_world(corridor.mesh, corridor.lights, 1, scene::AppearanceThemes{});
   // Facing the pillar (x 13.0-13.4) from 2.5 m, with the end wall 9.5 m behind it; the range
   // limit is lifted so the far side of the edge would otherwise have a reading.
-  const RenderedView view = renderer.render(camera_pose_from_planar(10.5, 0.0, 0.0, 1.0));
-  DepthSensorSpec spec = only(false, false, true);
+  const render::RenderedView view = renderer.render(camera_pose_from_planar(10.5, 0.0, 0.0, 1.0));
+  scene::DepthSensorSpec spec = only(false, false, true);
   spec.max_range_m = 30.0;
-  const DepthSensorModel model(spec, k, 3);
+  const render::DepthSensorModel model(spec, k, 3);
   const cv::Mat z = model.measure(view, 0);
   int edges = 0;
   for (int v = 0; v < z.rows; ++v) {
@@ -172,9 +172,9 @@ TEST(DepthSensorModel, FarSideOfDepthEdgesIsDropped) {
 
 TEST(DepthSensorModel, SameFrameSameNoiseOtherFrameOtherNoise) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
-  const RenderedView view = wall_view(renderer, 2.0);
-  const DepthSensorModel model(DepthSensorSpec{}, k, 11);
+  render::RgbdRenderer renderer(k);
+  const render::RenderedView view = wall_view(renderer, 2.0);
+  const render::DepthSensorModel model(scene::DepthSensorSpec{}, k, 11);
   EXPECT_EQ(cv::norm(model.measure(view, 4), model.measure(view, 4), cv::NORM_INF), 0.0);
   EXPECT_GT(cv::norm(model.measure(view, 4), model.measure(view, 5), cv::NORM_INF), 0.0);
   // The same numbers whatever the thread count.
@@ -184,7 +184,7 @@ TEST(DepthSensorModel, SameFrameSameNoiseOtherFrameOtherNoise) {
   const cv::Mat serial = model.measure(view, 4);
   cv::setNumThreads(threads);
   EXPECT_EQ(cv::norm(parallel, serial, cv::NORM_INF), 0.0);
-  const DepthSensorModel other_seed(DepthSensorSpec{}, k, 12);
+  const render::DepthSensorModel other_seed(scene::DepthSensorSpec{}, k, 12);
   EXPECT_GT(cv::norm(model.measure(view, 4), other_seed.measure(view, 4), cv::NORM_INF), 0.0);
 }
 
@@ -223,17 +223,17 @@ std::string digest_of(const cv::Mat& m) {
 TEST(DepthSensorModel, DefaultOutputIsPinned) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
   const SyntheticView view = synthetic_view();
-  const DepthSensorModel model(DepthSensorSpec{}, k, 2024);
+  const render::DepthSensorModel model(scene::DepthSensorSpec{}, k, 2024);
   cv::Mat out;
   model.measure(view.depth_m, view.incidence_cos, 7, out);
   EXPECT_EQ(digest_of(out), "92ed6bc2986e6ab5f5ed882a85b2c46db9ce252794bd3c513bbe413292c3e2f7")
       << "the default depth model's output moved";
   // Lateral noise off means off, whatever its parameters say.
-  DepthSensorSpec off;
+  scene::DepthSensorSpec off;
   off.lateral_noise_base_px = 3.0;
   off.lateral_noise_angle_coeff_px = 1.0;
   cv::Mat off_out;
-  DepthSensorModel(off, k, 2024).measure(view.depth_m, view.incidence_cos, 7, off_out);
+  render::DepthSensorModel(off, k, 2024).measure(view.depth_m, view.incidence_cos, 7, off_out);
   EXPECT_EQ(cv::norm(off_out, out, cv::NORM_INF), 0.0);
   EXPECT_EQ(digest_of(view.depth_m),
             "73a9639305c0d4c327ad4269e8d2d5edc3bd968860632db3a90bb7de409a3e82")
@@ -266,15 +266,15 @@ double nguyen_sigma_l_px(double theta_rad) {
   return 0.8 + 0.035 * theta_rad / (std::numbers::pi / 2 - theta_rad);
 }
 
-DepthSensorSpec only_lateral() {
-  DepthSensorSpec spec = only(false, false, false);
+scene::DepthSensorSpec only_lateral() {
+  scene::DepthSensorSpec spec = only(false, false, false);
   spec.lateral_noise = true;
   return spec;
 }
 
 TEST(DepthSensorModel, LateralShiftSpreadMatchesNguyenAtEachAngle) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  const DepthSensorModel model(only_lateral(), k, 5);
+  const render::DepthSensorModel model(only_lateral(), k, 5);
   // 0, 60, 75 and 80 deg (cos on the 1/255 grid); sigma_L from 0.80 to 1.08 px.
   for (const int code : {255, 128, 66, 44}) {
     const double theta = std::acos(code / 255.0);
@@ -316,8 +316,8 @@ TEST(DepthSensorModel, LateralShiftMakesDepthEdgesRaggedBySigmaL) {
   cv::Mat depth(k.height_px, k.width_px, CV_32FC1);
   for (int u = 0; u < k.width_px; ++u) depth.col(u).setTo((u / kStripe) % 2 ? 3.0f : 1.5f);
   const cv::Mat cos(k.height_px, k.width_px, CV_32FC1, cv::Scalar(kCode / 255.0f));
-  const DepthSensorModel model(only_lateral(), k, 9);
-  const DepthSensorModel straight(only(false, false, false), k, 9);
+  const render::DepthSensorModel model(only_lateral(), k, 9);
+  const render::DepthSensorModel straight(only(false, false, false), k, 9);
   // swapped[k - 1][side]: pixels k columns left of an edge (side 0) or k - 1 right of it
   // (side 1) that read the other side's depth.
   std::array<std::array<double, 2>, 4> swapped{};
@@ -366,9 +366,9 @@ TEST(DepthSensorModel, LateralShiftIsItsOwnStreamAndIgnoresThreads) {
   // noise must be exactly what it was without it (its own random stream).
   const cv::Mat flat(k.height_px, k.width_px, CV_32FC1, cv::Scalar(2.0f));
   const cv::Mat facing(k.height_px, k.width_px, CV_32FC1, cv::Scalar(1.0f));
-  DepthSensorSpec with = DepthSensorSpec{};
+  scene::DepthSensorSpec with = scene::DepthSensorSpec{};
   with.lateral_noise = true;
-  const DepthSensorModel lateral(with, k, 21), plain(DepthSensorSpec{}, k, 21);
+  const render::DepthSensorModel lateral(with, k, 21), plain(scene::DepthSensorSpec{}, k, 21);
   cv::Mat a, b;
   lateral.measure(flat, facing, 4, a);
   plain.measure(flat, facing, 4, b);
@@ -387,19 +387,19 @@ TEST(DepthSensorModel, LateralShiftIsItsOwnStreamAndIgnoresThreads) {
 }
 
 TEST(DepthSensorModel, RejectsInconsistentParameters) {
-  DepthSensorSpec spec;
+  scene::DepthSensorSpec spec;
   spec.min_range_m = 5.0;
-  EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
-  spec = DepthSensorSpec{};
+  EXPECT_THROW(render::DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
+  spec = scene::DepthSensorSpec{};
   spec.disparity_step_px = 0.0;
-  EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
-  spec = DepthSensorSpec{};
+  EXPECT_THROW(render::DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
+  spec = scene::DepthSensorSpec{};
   spec.lateral_noise = true;
   spec.lateral_noise_base_px = -0.1;
-  EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
+  EXPECT_THROW(render::DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
   spec.lateral_noise_base_px = 0.8;
   spec.grazing_dropout_deg = 90.0;  // the cap on theta: sigma_L is infinite there
-  EXPECT_THROW(DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
+  EXPECT_THROW(render::DepthSensorModel(spec, CameraIntrinsics::kinect_v1(), 1), InvalidInputError);
 }
 
 }  // namespace

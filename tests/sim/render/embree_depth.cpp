@@ -6,7 +6,7 @@
 
 namespace wifislam::test {
 
-EmbreeDepth::EmbreeDepth(const sim::Mesh& mesh) {
+EmbreeDepth::EmbreeDepth(const sim::world::Mesh& mesh) {
   device_ = rtcNewDevice(nullptr);
   if (device_ == nullptr) throw std::runtime_error("Embree device creation failed");
   scene_ = rtcNewScene(device_);

@@ -15,7 +15,7 @@ namespace wifislam::test {
 
 class EmbreeDepth {
  public:
-  explicit EmbreeDepth(const sim::Mesh& mesh);
+  explicit EmbreeDepth(const sim::world::Mesh& mesh);
   ~EmbreeDepth();
   EmbreeDepth(const EmbreeDepth&) = delete;
   EmbreeDepth& operator=(const EmbreeDepth&) = delete;

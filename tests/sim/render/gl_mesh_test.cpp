@@ -21,7 +21,7 @@ namespace {
 
 using TriangleCorners = std::array<float, 9>;
 
-std::vector<TriangleCorners> triangles_of(const BatchedMesh& mesh) {
+std::vector<TriangleCorners> triangles_of(const render::BatchedMesh& mesh) {
   std::vector<TriangleCorners> out;
   for (std::size_t v = 0; v < mesh.vertices.size(); v += 3) {
     TriangleCorners t{};
@@ -35,22 +35,23 @@ std::vector<TriangleCorners> triangles_of(const BatchedMesh& mesh) {
 
 TEST(ChunkMesh, KeepsEveryTriangleOnceInTheChunkOfItsCentroid) {
   const test::HandCorridor corridor = test::hand_corridor();
-  const ProceduralTextures textures(3, AppearanceThemes{});
-  std::map<TextureKey, TextureImage> images;
-  for (const Triangle& t : corridor.mesh.triangles) {
-    if (!images.contains(texture_key_of(t)))
-      images.emplace(texture_key_of(t), textures.make(texture_key_of(t)));
+  const render::ProceduralTextures textures(3, scene::AppearanceThemes{});
+  std::map<render::TextureKey, render::TextureImage> images;
+  for (const world::Triangle& t : corridor.mesh.triangles) {
+    if (!images.contains(render::texture_key_of(t)))
+      images.emplace(render::texture_key_of(t), textures.make(render::texture_key_of(t)));
   }
-  const BatchedMesh whole = batch_mesh(
-      corridor.mesh, [&](const TextureKey& key) -> const TextureImage& { return images.at(key); });
+  const render::BatchedMesh whole = render::batch_mesh(
+      corridor.mesh,
+      [&](const render::TextureKey& key) -> const render::TextureImage& { return images.at(key); });
   constexpr double kChunkM = 4.0;
-  const BatchedMesh chunked = chunk_mesh(whole, kChunkM);
+  const render::BatchedMesh chunked = render::chunk_mesh(whole, kChunkM);
 
   EXPECT_EQ(triangles_of(chunked), triangles_of(whole));
   EXPECT_GT(chunked.batches.size(), whole.batches.size());  // the 20 m corridor spans chunks
   int covered = 0;
   for (std::size_t b = 0; b < chunked.batches.size(); ++b) {
-    const MeshBatch& batch = chunked.batches[b];
+    const render::MeshBatch& batch = chunked.batches[b];
     if (b > 0) {
       EXPECT_FALSE(batch.key < chunked.batches[b - 1].key) << "batch " << b;
     }
@@ -60,7 +61,7 @@ TEST(ChunkMesh, KeepsEveryTriangleOnceInTheChunkOfItsCentroid) {
     for (int v = batch.first_vertex; v < batch.first_vertex + batch.vertex_count; v += 3) {
       double cx = 0.0, cy = 0.0;
       for (int q = v; q < v + 3; ++q) {
-        const MeshVertex& vertex = chunked.vertices[q];
+        const render::MeshVertex& vertex = chunked.vertices[q];
         EXPECT_TRUE(batch.bounds_m.contains(
             Eigen::Vector3f(vertex.position_m[0], vertex.position_m[1], vertex.position_m[2])));
         cx += vertex.position_m[0] / 3.0;
@@ -71,7 +72,7 @@ TEST(ChunkMesh, KeepsEveryTriangleOnceInTheChunkOfItsCentroid) {
     EXPECT_EQ(cells.size(), 1u) << "batch " << b << " mixes chunks";
   }
   EXPECT_EQ(covered, static_cast<int>(chunked.vertices.size()));
-  EXPECT_THROW(chunk_mesh(whole, 0.0), InvalidInputError);
+  EXPECT_THROW(render::chunk_mesh(whole, 0.0), InvalidInputError);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ Agreement compare_depth(const cv::Mat& rendered, const cv::Mat& ray_cast, double
 }
 
 TEST(RenderGeometry, ContextIsOpenGl33CoreOnLlvmpipe) {
-  RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
+  render::RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
   const std::string& version = renderer.context().gl_version();
   ASSERT_GE(version.size(), 3u);
   EXPECT_GE(std::stod(version.substr(0, 3)), 3.3) << version;
@@ -45,10 +45,10 @@ TEST(RenderGeometry, ContextIsOpenGl33CoreOnLlvmpipe) {
 }
 
 TEST(RenderGeometry, WallFacingTheCameraReadsItsDistanceEverywhere) {
-  RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
+  render::RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
   for (const double distance_m : {1.0, 2.0, 3.5}) {
-    renderer.set_world(test::wall_facing_minus_x(distance_m), {}, 1, AppearanceThemes{});
-    const RenderedView view = renderer.render(camera_pose_from_planar(0.0, 0.0, 0.0, 0.0));
+    renderer.set_world(test::wall_facing_minus_x(distance_m), {}, 1, scene::AppearanceThemes{});
+    const render::RenderedView view = renderer.render(camera_pose_from_planar(0.0, 0.0, 0.0, 0.0));
     EXPECT_NEAR(view.depth_m.at<float>(240, 320), distance_m, 1e-3) << distance_m;
     double worst_m = 0.0;
     for (int v = 0; v < view.depth_m.rows; ++v) {
@@ -64,12 +64,12 @@ TEST(RenderGeometry, WallFacingTheCameraReadsItsDistanceEverywhere) {
 
 TEST(RenderGeometry, TiltedWallBackProjectsOntoItsPlane) {
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
-  renderer.set_world(test::wall_facing_minus_x(2.5), {}, 1, AppearanceThemes{});
+  render::RgbdRenderer renderer(k);
+  renderer.set_world(test::wall_facing_minus_x(2.5), {}, 1, scene::AppearanceThemes{});
   // Camera yawed by 35 deg and pitched by 10 deg: depth varies across the image.
   const Pose pose = camera_pose_from_planar(0.0, 0.0, 35.0 * std::numbers::pi / 180.0, 0.3,
                                             10.0 * std::numbers::pi / 180.0);
-  const RenderedView view = renderer.render(pose);
+  const render::RenderedView view = renderer.render(pose);
   double worst_m = 0.0, worst_cos = 0.0;
   int pixels = 0;
   for (int v = 0; v < k.height_px; v += 3) {
@@ -94,8 +94,8 @@ TEST(RenderGeometry, RenderedDepthAgreesWithEmbreeInHandBuiltCorridor) {
   const test::HandCorridor corridor = test::hand_corridor();
   const test::EmbreeDepth ray_caster(corridor.mesh);
   const CameraIntrinsics k = CameraIntrinsics::kinect_v1();
-  RgbdRenderer renderer(k);
-  renderer.set_world(corridor.mesh, corridor.lights, 5, AppearanceThemes{});
+  render::RgbdRenderer renderer(k);
+  renderer.set_world(corridor.mesh, corridor.lights, 5, scene::AppearanceThemes{});
   Rng rng = Rng::stream(5, "test/corridor_poses");
   Agreement total;
   for (int i = 0; i < 12; ++i) {
@@ -126,8 +126,8 @@ TEST(RenderGeometry, OffCentreIntrinsicsAgreeWithEmbree) {
   k.cy_px = 110.75;
   const test::HandCorridor corridor = test::hand_corridor();
   const test::EmbreeDepth ray_caster(corridor.mesh);
-  RgbdRenderer renderer(k);
-  renderer.set_world(corridor.mesh, corridor.lights, 5, AppearanceThemes{});
+  render::RgbdRenderer renderer(k);
+  renderer.set_world(corridor.mesh, corridor.lights, 5, scene::AppearanceThemes{});
   const Pose pose = camera_pose_from_planar(11.0, 0.4, -0.2, 1.0, 0.1);
   const Agreement a =
       compare_depth(renderer.render(pose).depth_m, ray_caster.depth(k, pose, 0.05, 40.0), 0.01);
@@ -137,9 +137,9 @@ TEST(RenderGeometry, OffCentreIntrinsicsAgreeWithEmbree) {
 
 TEST(RenderGeometry, ColourShowsTexturedLitSurfaces) {
   const test::HandCorridor corridor = test::hand_corridor();
-  RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
-  renderer.set_world(corridor.mesh, corridor.lights, 5, AppearanceThemes{});
-  const RenderedView view = renderer.render(camera_pose_from_planar(2.0, 0.0, 0.0, 1.2));
+  render::RgbdRenderer renderer(CameraIntrinsics::kinect_v1());
+  renderer.set_world(corridor.mesh, corridor.lights, 5, scene::AppearanceThemes{});
+  const render::RenderedView view = renderer.render(camera_pose_from_planar(2.0, 0.0, 0.0, 1.2));
   cv::Scalar mean, stddev;
   cv::meanStdDev(view.color_bgr, mean, stddev);
   EXPECT_GT(mean[1], 60.0);    // lit, not black

@@ -41,11 +41,11 @@ TEST(SceneRender, EveryShippedSceneMatchesEmbreeFromRandomRoutePoses) {
   const std::vector<fs::path> scenes = shipped_scenes();
   ASSERT_GE(scenes.size(), 1u);
   for (const fs::path& path : scenes) {
-    const Scene scene = load_scene_file(path.string());
-    const World world = generate_world(scene);
+    const scene::Scene scene = scene::load_scene_file(path.string());
+    const world::World world = world::generate_world(scene);
     ASSERT_FALSE(world.route.points_m.empty()) << path;
     const CameraIntrinsics k = scene.sensors.camera.intrinsics;
-    RgbdRenderer renderer(k);
+    render::RgbdRenderer renderer(k);
     renderer.set_world(world, scene);
     const test::EmbreeDepth ray_caster(world.mesh);
     Rng rng = Rng::stream(scene.seed, "test/render_poses");
@@ -84,8 +84,8 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path scene_path = fs::path(WIFISLAM_SCENES_DIR) / "aliasing_ladder.yaml";
-  const Scene scene = load_scene_file(scene_path.string());
-  const World world = generate_world(scene);
+  const scene::Scene scene = scene::load_scene_file(scene_path.string());
+  const world::World world = world::generate_world(scene);
   const Eigen::Vector2d p = world.route.points_m[world.route.points_m.size() / 3];
   const double yaw_deg =
       world.route.heading_rad[world.route.points_m.size() / 3] * 180.0 / std::numbers::pi;
@@ -101,7 +101,7 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
     EXPECT_TRUE(a == test::read_file(dir.string() + "/b" + suffix)) << suffix;
   }
   // The depth file is a TUM depth image with readings in the sensor's range.
-  const cv::Mat depth = read_depth_png(dir / "a_depth.png");
+  const cv::Mat depth = render::read_depth_png(dir / "a_depth.png");
   EXPECT_EQ(depth.cols, scene.sensors.camera.intrinsics.width_px);
   double lo = 0, hi = 0;
   cv::minMaxLoc(depth, &lo, &hi, nullptr, nullptr, depth > 0.0f);

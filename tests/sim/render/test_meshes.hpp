@@ -10,7 +10,7 @@
 namespace wifislam::test {
 
 struct QuadLook {
-  sim::SurfaceKind surface = sim::SurfaceKind::kWall;
+  sim::world::SurfaceKind surface = sim::world::SurfaceKind::kWall;
   int variant = 0;
   int decoration = -1;
   Eigen::Vector2f uv_origin_m = Eigen::Vector2f::Zero();
@@ -18,18 +18,18 @@ struct QuadLook {
 
 /// Appends the quad corner, corner + along, corner + along + up, corner + up (two triangles,
 /// normal along x up), with uv in metres from `uv_origin_m`.
-void add_quad(sim::Mesh& mesh, const Eigen::Vector3f& corner, const Eigen::Vector3f& along,
+void add_quad(sim::world::Mesh& mesh, const Eigen::Vector3f& corner, const Eigen::Vector3f& along,
               const Eigen::Vector3f& up, const QuadLook& look);
 
 /// A plane x = distance_m (normal towards -x), 40 m x 40 m, centred on (distance_m, 0, 0).
-sim::Mesh wall_facing_minus_x(double distance_m);
+sim::world::Mesh wall_facing_minus_x(double distance_m);
 
 /// A corridor along +x from x = 0 to 20 m, y in [-1, 1], 2.8 m high: floor, ceiling, walls in
 /// 4 m appearance segments (variants 1..5 left, 6..10 right), posters 1 cm off the walls, a door
 /// recess, a pillar in the middle (depth edges) and end walls. Lights every 3 m.
 struct HandCorridor {
-  sim::Mesh mesh;
-  std::vector<sim::CeilingLight> lights;
+  sim::world::Mesh mesh;
+  std::vector<sim::world::CeilingLight> lights;
 };
 HandCorridor hand_corridor();
 

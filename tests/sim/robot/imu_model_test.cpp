@@ -18,8 +18,8 @@
 namespace wifislam::sim {
 namespace {
 
-RobotMotionOptions motion_options() {
-  RobotMotionOptions o;
+robot::RobotMotionOptions motion_options() {
+  robot::RobotMotionOptions o;
   o.speed_mps = 0.5;
   o.max_yaw_rate_radps = 0.6;
   o.pause.spacing_min_m = 3.0;
@@ -28,8 +28,8 @@ RobotMotionOptions motion_options() {
   return o;
 }
 
-ImuSpec noise_free(double rate_hz) {
-  ImuSpec spec;
+scene::ImuSpec noise_free(double rate_hz) {
+  scene::ImuSpec spec;
   spec.rate_hz = rate_hz;
   spec.position_m = {0.12, -0.05, 0.3};  // a lever arm, so turning moves the IMU too
   spec.gyroscope_noise_density = spec.gyroscope_random_walk = 0.0;
@@ -44,13 +44,13 @@ struct IntegrationError {
 /// Integrates every sample after the first from the true state at the first sample's time:
 /// rotation by gyro * dt, velocity by (R_mid accel + g) dt, position by the trapezoid rule; the
 /// largest errors against the true state at every sample time.
-IntegrationError integrate(const MotionProfile& motion, const ImuSpec& spec) {
-  const ImuModel imu(motion, spec, 11);
+IntegrationError integrate(const robot::MotionProfile& motion, const scene::ImuSpec& spec) {
+  const robot::ImuModel imu(motion, spec, 11);
   const std::int64_t n = imu.sample_count(motion.end_time());
-  ImuState start = imu.true_state(imu.sample_time(0));
+  robot::ImuState start = imu.true_state(imu.sample_time(0));
   Eigen::Matrix3d r = start.imu_to_world.linear();
   Eigen::Vector3d v = start.velocity_mps, p = start.imu_to_world.translation();
-  const Eigen::Vector3d g(0.0, 0.0, -kStandardGravityMps2);
+  const Eigen::Vector3d g(0.0, 0.0, -robot::kStandardGravityMps2);
   IntegrationError e;
   for (std::int64_t k = 1; k < n; ++k) {
     const ImuReading s = imu.ideal(k);
@@ -66,7 +66,7 @@ IntegrationError integrate(const MotionProfile& motion, const ImuSpec& spec) {
     p += 0.5 * (v + v_next) * dt;
     v = v_next;
     r = r * exp(dt);
-    const ImuState truth = imu.true_state(s.time);
+    const robot::ImuState truth = imu.true_state(s.time);
     e.position_m = std::max(e.position_m, (p - truth.imu_to_world.translation()).norm());
     e.velocity_mps = std::max(e.velocity_mps, (v - truth.velocity_mps).norm());
     e.rotation_rad = std::max(
@@ -76,9 +76,9 @@ IntegrationError integrate(const MotionProfile& motion, const ImuSpec& spec) {
 }
 
 TEST(ImuModel, IntegratingTheNoiseFreeImuReproducesGroundTruthToTheIntegratorsOrder) {
-  for (const RoutePath& route :
+  for (const world::RoutePath& route :
        {test::rounded_rectangle_route(12.0, 8.0, 0.6), test::there_and_back_route(6.0)}) {
-    const MotionProfile motion(route, motion_options(), 7);
+    const robot::MotionProfile motion(route, motion_options(), 7);
     const IntegrationError at200 = integrate(motion, noise_free(200.0));
     const IntegrationError at800 = integrate(motion, noise_free(800.0));
     // Velocity and heading telescope: exact up to rounding, whatever the rate.
@@ -95,10 +95,10 @@ TEST(ImuModel, IntegratingTheNoiseFreeImuReproducesGroundTruthToTheIntegratorsOr
 }
 
 TEST(ImuModel, AtRestItReadsGravityUpAndNoRotation) {
-  const MotionProfile motion(test::straight_route(2.0), motion_options(), 7);
-  ImuModel imu(motion, noise_free(200.0), 3);
+  const robot::MotionProfile motion(test::straight_route(2.0), motion_options(), 7);
+  robot::ImuModel imu(motion, noise_free(200.0), 3);
   const ImuReading r = imu.measure(0);  // the robot stands at the start
-  EXPECT_NEAR(r.specific_force_mps2.z(), kStandardGravityMps2, 1e-12);
+  EXPECT_NEAR(r.specific_force_mps2.z(), robot::kStandardGravityMps2, 1e-12);
   EXPECT_NEAR(r.specific_force_mps2.head<2>().norm(), 0.0, 1e-12);
   EXPECT_NEAR(r.angular_velocity_radps.norm(), 0.0, 1e-12);
 }
@@ -151,11 +151,11 @@ std::pair<double, double> fit_allan(const std::vector<std::vector<double>>& samp
 TEST(ImuModel, AllanDeviationAtRestRecoversTheConfiguredNoise) {
   // The robot stands through its first pause: 6 hours at rest, long enough to see the gyro's
   // bias walk (its Allan deviation turns up after ~15 s) over more than 1000 of its crossings.
-  RobotMotionOptions options = motion_options();
+  robot::RobotMotionOptions options = motion_options();
   options.pause.duration_s = 6 * 3600.0;
-  const MotionProfile motion(test::straight_route(1.0), options, 7);
-  const ImuSpec spec;  // the defaults: EuRoC's ADIS16448
-  ImuModel imu(motion, spec, 11);
+  const robot::MotionProfile motion(test::straight_route(1.0), options, 7);
+  const scene::ImuSpec spec;  // the defaults: EuRoC's ADIS16448
+  robot::ImuModel imu(motion, spec, 11);
   const double dt = 1.0 / spec.rate_hz;
   const std::int64_t n = imu.sample_count(motion.pauses().front().end) - 1;
   std::vector<std::vector<double>> gyro(3), accel(3);
@@ -182,9 +182,9 @@ TEST(ImuModel, AllanDeviationAtRestRecoversTheConfiguredNoise) {
 }
 
 TEST(ImuModel, NoiseComesFromTheSeedsOwnStream) {
-  const MotionProfile motion(test::straight_route(3.0), motion_options(), 7);
-  const ImuSpec spec;
-  ImuModel a(motion, spec, 5), b(motion, spec, 5), c(motion, spec, 6);
+  const robot::MotionProfile motion(test::straight_route(3.0), motion_options(), 7);
+  const scene::ImuSpec spec;
+  robot::ImuModel a(motion, spec, 5), b(motion, spec, 5), c(motion, spec, 6);
   for (std::int64_t k = 0; k < 50; ++k) {
     const ImuReading ra = a.measure(k), rb = b.measure(k), rc = c.measure(k);
     EXPECT_EQ(ra.specific_force_mps2, rb.specific_force_mps2);

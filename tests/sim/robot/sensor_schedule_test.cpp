@@ -7,8 +7,8 @@
 namespace wifislam::sim {
 namespace {
 
-RobotMotionOptions motion_options(bool scan_while_moving = false) {
-  RobotMotionOptions o;
+robot::RobotMotionOptions motion_options(bool scan_while_moving = false) {
+  robot::RobotMotionOptions o;
   o.pause.spacing_min_m = 3.0;
   o.pause.spacing_max_m = 4.0;
   o.pause.duration_s = 10.0;
@@ -16,8 +16,8 @@ RobotMotionOptions motion_options(bool scan_while_moving = false) {
   return o;
 }
 
-SensorScheduleOptions schedule_options(bool scan_while_moving = false) {
-  SensorScheduleOptions o;
+robot::SensorScheduleOptions schedule_options(bool scan_while_moving = false) {
+  robot::SensorScheduleOptions o;
   o.fps = 30.0;
   o.scan_interval_s = 2.0;
   o.scan_duration_ns = 3'500'000'000;  // 35 channels x 0.1 s
@@ -26,8 +26,8 @@ SensorScheduleOptions schedule_options(bool scan_while_moving = false) {
 }
 
 TEST(SensorSchedule, FrameTimesAreWholeMicrosecondsAtTheFrameRate) {
-  const MotionProfile motion(test::straight_route(20.0), motion_options(), 2);
-  const SensorSchedule schedule(motion, schedule_options());
+  const robot::MotionProfile motion(test::straight_route(20.0), motion_options(), 2);
+  const robot::SensorSchedule schedule(motion, schedule_options());
   ASSERT_GT(schedule.frame_count(), 100);
   EXPECT_EQ(schedule.frame_time(0).ns, 0);
   for (std::int64_t k = 1; k < schedule.frame_count(); ++k) {
@@ -40,7 +40,7 @@ TEST(SensorSchedule, FrameTimesAreWholeMicrosecondsAtTheFrameRate) {
   EXPECT_LE(schedule.frame_time(schedule.frame_count() - 1), motion.end_time());
   EXPECT_GT(schedule.frame_time(schedule.frame_count()), motion.end_time());
   // Frames keep coming during pauses, as from a real camera.
-  const RobotPause& pause = motion.pauses()[1];
+  const robot::RobotPause& pause = motion.pauses()[1];
   int frames_in_pause = 0;
   for (std::int64_t k = 0; k < schedule.frame_count(); ++k) {
     const Timestamp t = schedule.frame_time(k);
@@ -50,18 +50,19 @@ TEST(SensorSchedule, FrameTimesAreWholeMicrosecondsAtTheFrameRate) {
 }
 
 TEST(SensorSchedule, ScansHappenOnlyDuringPauses) {
-  const MotionProfile motion(test::rounded_rectangle_route(20.0, 12.0, 0.6), motion_options(), 4);
-  const SensorSchedule schedule(motion, schedule_options());
+  const robot::MotionProfile motion(test::rounded_rectangle_route(20.0, 12.0, 0.6),
+                                    motion_options(), 4);
+  const robot::SensorSchedule schedule(motion, schedule_options());
   // 10 s pause, 3.5 s sweeps every 2 s: sweeps starting at 0, 2, 4 and 6 s fit.
   ASSERT_EQ(schedule.scans().size(), 4 * motion.pauses().size());
-  for (const ScanWindow& w : schedule.scans()) {
+  for (const robot::ScanWindow& w : schedule.scans()) {
     ASSERT_GE(w.pause_index, 0);
-    const RobotPause& p = motion.pauses()[w.pause_index];
+    const robot::RobotPause& p = motion.pauses()[w.pause_index];
     EXPECT_GE(w.start, p.start);
     EXPECT_LE(w.end, p.end);
     EXPECT_EQ(w.end.ns - w.start.ns, 3'500'000'000);
     for (const Timestamp t : {w.start, w.end}) {
-      const RobotState s = motion.state_at(t);
+      const robot::RobotState s = motion.state_at(t);
       EXPECT_EQ(s.pause_index, w.pause_index);
       EXPECT_EQ(s.speed_mps, 0.0);
     }
@@ -69,8 +70,8 @@ TEST(SensorSchedule, ScansHappenOnlyDuringPauses) {
 }
 
 TEST(SensorSchedule, ScanningWhileMovingCoversTheWholeRun) {
-  const MotionProfile motion(test::straight_route(30.0), motion_options(true), 4);
-  const SensorSchedule schedule(motion, schedule_options(true));
+  const robot::MotionProfile motion(test::straight_route(30.0), motion_options(true), 4);
+  const robot::SensorSchedule schedule(motion, schedule_options(true));
   const auto& scans = schedule.scans();
   ASSERT_GT(scans.size(), 10u);
   int while_moving = 0;
@@ -83,35 +84,36 @@ TEST(SensorSchedule, ScanningWhileMovingCoversTheWholeRun) {
 }
 
 TEST(SensorSchedule, MaxFramesEndsTheRunAtTheLastFrame) {
-  const MotionProfile motion(test::straight_route(30.0), motion_options(), 4);
-  SensorScheduleOptions options = schedule_options();
+  const robot::MotionProfile motion(test::straight_route(30.0), motion_options(), 4);
+  robot::SensorScheduleOptions options = schedule_options();
   options.max_frames = 450;  // 15 s: the first pause and 5 s of driving
-  const SensorSchedule schedule(motion, options);
+  const robot::SensorSchedule schedule(motion, options);
   EXPECT_EQ(schedule.frame_count(), 450);
   EXPECT_EQ(schedule.end_time(), schedule.frame_time(449));
-  EXPECT_EQ(schedule.odometry_count(), tick_count(schedule.end_time(), 50.0));
+  EXPECT_EQ(schedule.odometry_count(), robot::tick_count(schedule.end_time(), 50.0));
   EXPECT_EQ(schedule.scans().size(), 4u);  // only the first pause's
-  for (const ScanWindow& w : schedule.scans()) EXPECT_LE(w.end, schedule.end_time());
+  for (const robot::ScanWindow& w : schedule.scans()) EXPECT_LE(w.end, schedule.end_time());
 }
 
 TEST(SensorSchedule, TickCountMatchesTickTimes) {
   for (double rate : {30.0, 29.97, 7.0, 50.0, 0.5}) {
     for (std::int64_t end_us : {0LL, 1LL, 33333LL, 33334LL, 1000000LL, 123456789LL}) {
       const Timestamp end = Timestamp::from_ns(end_us * 1000);
-      const std::int64_t n = tick_count(end, rate);
-      EXPECT_LE(tick_time(n - 1, rate), end);
-      EXPECT_GT(tick_time(n, rate), end);
+      const std::int64_t n = robot::tick_count(end, rate);
+      EXPECT_LE(robot::tick_time(n - 1, rate), end);
+      EXPECT_GT(robot::tick_time(n, rate), end);
     }
   }
 }
 
 TEST(SensorSchedule, AThrottledScannerGrantsAtMostItsRequestsInAnyWindowAndTheRestInOrder) {
-  const MotionProfile motion(test::rounded_rectangle_route(20.0, 12.0, 0.6), motion_options(), 4);
-  const SensorSchedule free_running(motion, schedule_options());
-  SensorScheduleOptions throttled_options = schedule_options();
+  const robot::MotionProfile motion(test::rounded_rectangle_route(20.0, 12.0, 0.6),
+                                    motion_options(), 4);
+  const robot::SensorSchedule free_running(motion, schedule_options());
+  robot::SensorScheduleOptions throttled_options = schedule_options();
   throttled_options.throttle_max_scans = 4;  // Android 9+ foreground: 4 in any 120 s
   throttled_options.throttle_window_s = 120.0;
-  const SensorSchedule throttled(motion, throttled_options);
+  const robot::SensorSchedule throttled(motion, throttled_options);
   const auto& all = free_running.scans();
   const auto& kept = throttled.scans();
   ASSERT_GT(all.size(), 20u);
@@ -119,7 +121,7 @@ TEST(SensorSchedule, AThrottledScannerGrantsAtMostItsRequestsInAnyWindowAndTheRe
   EXPECT_EQ(kept.size() + static_cast<std::size_t>(throttled.throttled_requests()), all.size());
   EXPECT_GT(throttled.throttled_requests(), 0);
   std::size_t j = 0;
-  for (const ScanWindow& w : kept) {
+  for (const robot::ScanWindow& w : kept) {
     while (j < all.size() && all[j].start != w.start) ++j;
     ASSERT_LT(j, all.size()) << "a granted scan at " << w.start.seconds() << " s was not asked for";
     EXPECT_EQ(all[j].pause_index, w.pause_index);
@@ -134,11 +136,11 @@ TEST(SensorSchedule, AThrottledScannerGrantsAtMostItsRequestsInAnyWindowAndTheRe
   }
   // ... and a refused request had four granted in the 120 s before it.
   std::size_t k = 0;
-  for (const ScanWindow& request : all) {
+  for (const robot::ScanWindow& request : all) {
     while (k < kept.size() && kept[k].start < request.start) ++k;
     if (k < kept.size() && kept[k].start == request.start) continue;
     std::size_t before = 0;
-    for (const ScanWindow& g : kept)
+    for (const robot::ScanWindow& g : kept)
       before += g.start < request.start && request.start.ns - g.start.ns <= 120'000'000'000;
     EXPECT_EQ(before, 4u) << "refused at " << request.start.seconds() << " s";
   }

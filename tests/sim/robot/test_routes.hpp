@@ -10,7 +10,8 @@
 
 namespace wifislam::test {
 
-inline void append_point(sim::RoutePath& path, const Eigen::Vector2d& p, double heading_rad) {
+inline void append_point(sim::world::RoutePath& path, const Eigen::Vector2d& p,
+                         double heading_rad) {
   path.arc_length_m.push_back(
       path.points_m.empty() ? 0.0 : path.arc_length_m.back() + (p - path.points_m.back()).norm());
   path.points_m.push_back(p);
@@ -18,16 +19,16 @@ inline void append_point(sim::RoutePath& path, const Eigen::Vector2d& p, double 
 }
 
 /// Straight along +x from the origin, points every `step_m`.
-inline sim::RoutePath straight_route(double length_m, double step_m = 0.05) {
-  sim::RoutePath path;
+inline sim::world::RoutePath straight_route(double length_m, double step_m = 0.05) {
+  sim::world::RoutePath path;
   const int n = static_cast<int>(std::round(length_m / step_m));
   for (int i = 0; i <= n; ++i) append_point(path, {i * step_m, 0.0}, 0.0);
   return path;
 }
 
 /// Counter-clockwise circle of `radius_m` around the origin, `laps` times.
-inline sim::RoutePath circle_route(double radius_m, double laps, double step_m = 0.05) {
-  sim::RoutePath path;
+inline sim::world::RoutePath circle_route(double radius_m, double laps, double step_m = 0.05) {
+  sim::world::RoutePath path;
   const double total_rad = laps * 2.0 * std::numbers::pi;
   const int n = static_cast<int>(std::round(total_rad * radius_m / step_m));
   for (int i = 0; i <= n; ++i) {
@@ -38,9 +39,9 @@ inline sim::RoutePath circle_route(double radius_m, double laps, double step_m =
 }
 
 /// A w x h rectangle (counter-clockwise from the origin) with corners rounded by `radius_m`.
-inline sim::RoutePath rounded_rectangle_route(double w_m, double h_m, double radius_m,
-                                              double step_m = 0.05) {
-  sim::RoutePath path;
+inline sim::world::RoutePath rounded_rectangle_route(double w_m, double h_m, double radius_m,
+                                                     double step_m = 0.05) {
+  sim::world::RoutePath path;
   const Eigen::Vector2d corners[4] = {{w_m, 0}, {w_m, h_m}, {0, h_m}, {0, 0}};
   Eigen::Vector2d at(radius_m, 0.0);
   double heading = 0.0;
@@ -68,8 +69,8 @@ inline sim::RoutePath rounded_rectangle_route(double w_m, double h_m, double rad
 
 /// Along +x for `length_m`, a half turn on the spot (to the left, in steps of at most 0.05 rad, as
 /// the route builder turns at a dead end), and back to the origin.
-inline sim::RoutePath there_and_back_route(double length_m, double step_m = 0.05) {
-  sim::RoutePath path = straight_route(length_m, step_m);
+inline sim::world::RoutePath there_and_back_route(double length_m, double step_m = 0.05) {
+  sim::world::RoutePath path = straight_route(length_m, step_m);
   const Eigen::Vector2d end = path.points_m.back();
   const int turn_steps = static_cast<int>(std::ceil(std::numbers::pi / 0.05));
   for (int k = 1; k <= turn_steps; ++k) append_point(path, end, std::numbers::pi * k / turn_steps);

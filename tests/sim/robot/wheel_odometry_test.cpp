@@ -13,26 +13,26 @@ namespace wifislam::sim {
 namespace {
 
 struct OdometrySample {
-  RobotState truth;
+  robot::RobotState truth;
   OdometryReading reading;
 };
 
-std::vector<OdometrySample> drive(const RoutePath& route, const OdometrySpec& spec,
+std::vector<OdometrySample> drive(const world::RoutePath& route, const scene::OdometrySpec& spec,
                                   std::uint64_t seed) {
-  RobotMotionOptions motion_options;
+  robot::RobotMotionOptions motion_options;
   motion_options.max_yaw_rate_radps = 1.0;
   motion_options.pause.spacing_min_m = 3.0;
   motion_options.pause.spacing_max_m = 4.0;
   motion_options.pause.duration_s = 2.0;
-  const MotionProfile motion(route, motion_options, seed);
-  SensorScheduleOptions schedule_options;
+  const robot::MotionProfile motion(route, motion_options, seed);
+  robot::SensorScheduleOptions schedule_options;
   schedule_options.odometry_rate_hz = spec.rate_hz;
-  const SensorSchedule schedule(motion, schedule_options);
-  WheelOdometry odometry(spec, seed);
+  const robot::SensorSchedule schedule(motion, schedule_options);
+  robot::WheelOdometry odometry(spec, seed);
   std::vector<OdometrySample> out;
   for (std::int64_t j = 0; j < schedule.odometry_count(); ++j) {
     const Timestamp t = schedule.odometry_time(j);
-    const RobotState truth = motion.state_at(t);
+    const robot::RobotState truth = motion.state_at(t);
     out.push_back({truth, odometry.measure(t, truth)});
   }
   return out;
@@ -70,7 +70,7 @@ std::vector<double> piece_errors(const std::vector<OdometrySample>& samples, dou
 }
 
 TEST(WheelOdometry, DriftOverALongStraightRunMatchesTheConfiguredNoise) {
-  OdometrySpec spec;  // noise 0.02 m per metre, scale error 1 %, yaw bias 0.002 rad/m
+  scene::OdometrySpec spec;  // noise 0.02 m per metre, scale error 1 %, yaw bias 0.002 rad/m
   const auto samples = drive(test::straight_route(3000.0), spec, 21);
   auto true_distance = [](const OdometrySample& a, const OdometrySample& b) {
     return b.truth.arc_length_m - a.truth.arc_length_m;
@@ -105,7 +105,7 @@ TEST(WheelOdometry, DriftOverALongStraightRunMatchesTheConfiguredNoise) {
 }
 
 TEST(WheelOdometry, HeadingNoisePerRadianTurnedMatchesTheConfiguredNoise) {
-  OdometrySpec spec;
+  scene::OdometrySpec spec;
   spec.yaw_bias_radpm = 0.0;
   // Radius 1 m: one radian of turning per metre; 320 laps give ~2000 one-radian pieces.
   const auto samples = drive(test::circle_route(1.0, 320.0), spec, 5);
@@ -125,7 +125,7 @@ TEST(WheelOdometry, HeadingNoisePerRadianTurnedMatchesTheConfiguredNoise) {
 }
 
 TEST(WheelOdometry, StandingStillAddsNoDrift) {
-  const auto samples = drive(test::straight_route(20.0), OdometrySpec{}, 9);
+  const auto samples = drive(test::straight_route(20.0), scene::OdometrySpec{}, 9);
   int paused_pairs = 0;
   for (std::size_t i = 1; i < samples.size(); ++i) {
     if (samples[i - 1].truth.paused() && samples[i].truth.paused() &&
@@ -141,16 +141,16 @@ TEST(WheelOdometry, StandingStillAddsNoDrift) {
 }
 
 TEST(WheelOdometry, SameSeedSameReadingsOtherSeedOtherDrift) {
-  const auto a = drive(test::straight_route(20.0), OdometrySpec{}, 9);
-  const auto b = drive(test::straight_route(20.0), OdometrySpec{}, 9);
-  const auto c = drive(test::straight_route(20.0), OdometrySpec{}, 10);
+  const auto a = drive(test::straight_route(20.0), scene::OdometrySpec{}, 9);
+  const auto b = drive(test::straight_route(20.0), scene::OdometrySpec{}, 9);
+  const auto c = drive(test::straight_route(20.0), scene::OdometrySpec{}, 10);
   ASSERT_EQ(a.size(), b.size());
   EXPECT_TRUE(a.back().reading.base_in_odom.isApprox(b.back().reading.base_in_odom, 0.0));
   EXPECT_FALSE(a.back().reading.base_in_odom.isApprox(c.back().reading.base_in_odom, 1e-9));
 }
 
 TEST(WheelOdometry, NoiseFreeOdometryFollowsTheTruth) {
-  OdometrySpec exact;
+  scene::OdometrySpec exact;
   exact.noise_per_m = exact.noise_per_rad = exact.scale_error = exact.yaw_bias_radpm = 0.0;
   const auto samples = drive(test::rounded_rectangle_route(10.0, 6.0, 0.6), exact, 3);
   const Pose start = samples.front().truth.base_to_world();

@@ -51,36 +51,36 @@ class SceneDeviceFiles : public ::testing::Test {
 };
 
 TEST(SceneDevice, WithoutADeviceTheReceiverIsTheReferenceWithTheBlocksKeys) {
-  const Scene plain = load_scene_yaml(kScene, "plain.yaml");
+  const scene::Scene plain = scene::load_scene_yaml(kScene, "plain.yaml");
   EXPECT_FALSE(plain.sensors.wifi.device);
-  EXPECT_EQ(receiver_device(plain.sensors.wifi).name, "reference");
-  const Scene tuned = load_scene_yaml(
+  EXPECT_EQ(scene::receiver_device(plain.sensors.wifi).name, "reference");
+  const scene::Scene tuned = scene::load_scene_yaml(
       with_wifi("wifi: {sensitivity_dbm: -85, dwell_per_channel_s: 0.05}"), "tuned.yaml");
-  const radio_model::ReceiverDevice d = receiver_device(tuned.sensors.wifi);
+  const radio_model::ReceiverDevice d = scene::receiver_device(tuned.sensors.wifi);
   EXPECT_EQ(d.sensitivity_dbm, -85.0);
   EXPECT_EQ(d.dwell_per_channel_s, 0.05);
   // The resolved scene of a scene without a device keeps the block's own keys only.
-  EXPECT_EQ(resolved_scene_yaml(plain).find("device"), std::string::npos);
+  EXPECT_EQ(scene::resolved_scene_yaml(plain).find("device"), std::string::npos);
 }
 
 TEST(SceneDevice, AShippedNameLoadsThatDeviceAndTheResolvedSceneWritesItInFull) {
-  const Scene s =
-      load_scene_yaml(with_wifi("wifi: {device: weaker_phone, scan_interval_s: 3}"), "named.yaml");
+  const scene::Scene s = scene::load_scene_yaml(
+      with_wifi("wifi: {device: weaker_phone, scan_interval_s: 3}"), "named.yaml");
   ASSERT_TRUE(s.sensors.wifi.device);
   EXPECT_EQ(s.sensors.wifi.device->name, "weaker_phone");
   EXPECT_EQ(s.sensors.wifi.device->rss_offset_db, -5.0);
   EXPECT_EQ(s.sensors.wifi.scan_interval_s, 3.0);
-  const std::string resolved = resolved_scene_yaml(s);
+  const std::string resolved = scene::resolved_scene_yaml(s);
   EXPECT_NE(resolved.find("rss_offset_db: -5"), std::string::npos) << resolved;
-  const Scene again = load_scene_yaml(resolved, "resolved.yaml");
+  const scene::Scene again = scene::load_scene_yaml(resolved, "resolved.yaml");
   ASSERT_TRUE(again.sensors.wifi.device);
   EXPECT_EQ(again.sensors.wifi.device->name, "weaker_phone");
   EXPECT_EQ(again.sensors.wifi.device->source, s.sensors.wifi.device->source);
-  EXPECT_EQ(resolved_scene_yaml(again), resolved);
+  EXPECT_EQ(scene::resolved_scene_yaml(again), resolved);
 }
 
 TEST(SceneDevice, AnInlineDeviceSetsEveryKey) {
-  const Scene s = load_scene_yaml(
+  const scene::Scene s = scene::load_scene_yaml(
       with_wifi("wifi:\n    device: {name: lab_laptop, source: measured, rss_offset_db: 3.5,\n"
                 "             rss_gain: 0.9, sensitivity_dbm: -95, quantisation_db: 2,\n"
                 "             dwell_per_channel_s: 0.12, bands: 5GHz,\n"
@@ -102,12 +102,13 @@ TEST_F(SceneDeviceFiles, ADeviceFileIsReadRelativeToTheScenesFolder) {
   write("devices/phone.yaml", "name: my_phone\nsource: two-phone survey\nrss_offset_db: -6\n");
   const fs::path scene =
       write("scene.yaml", with_wifi("wifi: {device: devices/phone.yaml, scan_interval_s: 3}"));
-  const Scene s = load_scene_file(scene.string());
+  const scene::Scene s = scene::load_scene_file(scene.string());
   ASSERT_TRUE(s.sensors.wifi.device);
   EXPECT_EQ(s.sensors.wifi.device->name, "my_phone");
   EXPECT_EQ(s.sensors.wifi.device->rss_offset_db, -6.0);
   // The same file by load_receiver_device, as `generate --device` reads it.
-  EXPECT_EQ(load_receiver_device((dir_ / "devices/phone.yaml").string()).rss_offset_db, -6.0);
+  EXPECT_EQ(scene::load_receiver_device((dir_ / "devices/phone.yaml").string()).rss_offset_db,
+            -6.0);
 }
 
 TEST_F(SceneDeviceFiles, AnErrorInADeviceFileNamesThatFileItsLineAndKey) {
@@ -115,7 +116,7 @@ TEST_F(SceneDeviceFiles, AnErrorInADeviceFileNamesThatFileItsLineAndKey) {
   const fs::path scene =
       write("scene.yaml", with_wifi("wifi: {device: devices/bad.yaml, scan_interval_s: 3}"));
   try {
-    load_scene_file(scene.string());
+    scene::load_scene_file(scene.string());
     FAIL() << "a bad device file loaded";
   } catch (const ParseError& e) {
     EXPECT_NE(e.where().find("bad.yaml:2:1"), std::string::npos) << e.what();
@@ -123,9 +124,9 @@ TEST_F(SceneDeviceFiles, AnErrorInADeviceFileNamesThatFileItsLineAndKey) {
     EXPECT_NE(std::string(e.what()).find("rss_offset_db"), std::string::npos) << e.what();
   }
   write("devices/range.yaml", "name: r\nrss_gain: 3\n");
-  EXPECT_THROW(load_receiver_device((dir_ / "devices/range.yaml").string()), ParseError);
+  EXPECT_THROW(scene::load_receiver_device((dir_ / "devices/range.yaml").string()), ParseError);
   write("devices/nameless.yaml", "rss_gain: 1.1\n");
-  EXPECT_THROW(load_receiver_device((dir_ / "devices/nameless.yaml").string()), ParseError);
+  EXPECT_THROW(scene::load_receiver_device((dir_ / "devices/nameless.yaml").string()), ParseError);
 }
 
 TEST(SceneDevice, BadDevicesAreLocatedInTheScene) {

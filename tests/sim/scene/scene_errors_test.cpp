@@ -31,7 +31,9 @@ ParseError expect_parse_error(const std::string& yaml) {
 
 using test::replace;
 
-TEST(SceneErrors, ValidBaseSceneLoads) { EXPECT_NO_THROW(load_scene_yaml(kValidBody, "ok.yaml")); }
+TEST(SceneErrors, ValidBaseSceneLoads) {
+  EXPECT_NO_THROW(scene::load_scene_yaml(kValidBody, "ok.yaml"));
+}
 
 TEST(SceneErrors, UnknownKeyNamesKeyLineAndSuggestsTheRightOne) {
   const auto e = expect_parse_error(replace(kValidBody, "width_m: 2.0", "widht_m: 2.0"));
@@ -57,11 +59,11 @@ TEST(SceneErrors, TimeOriginIsWholeSecondsFromZeroTo2100) {
     EXPECT_EQ(e.where(), "bad.yaml:11:26") << bad;
   }
   for (const char* good : {"0", "4102444800", "1305031102"}) {
-    const Scene s =
-        load_scene_yaml(std::string(kValidBody) + "sensors: {time_origin_s: " + good + "}\n", "ok");
+    const scene::Scene s = scene::load_scene_yaml(
+        std::string(kValidBody) + "sensors: {time_origin_s: " + good + "}\n", "ok");
     EXPECT_EQ(s.sensors.time_origin_s, std::stoull(good));
   }
-  EXPECT_EQ(load_scene_yaml(kValidBody, "ok").sensors.time_origin_s, 1'700'000'000u);
+  EXPECT_EQ(scene::load_scene_yaml(kValidBody, "ok").sensors.time_origin_s, 1'700'000'000u);
 }
 
 TEST(SceneErrors, WrongTypeSaysWhatWasExpected) {
@@ -196,11 +198,11 @@ TEST(SceneErrors, InvalidYamlSyntaxHasAPosition) {
   EXPECT_NE(e.detail().find("not valid YAML"), std::string::npos);
 }
 
-TEST(SceneErrors, EmptyFile) { EXPECT_THROW(load_scene_yaml("", "empty.yaml"), ParseError); }
+TEST(SceneErrors, EmptyFile) { EXPECT_THROW(scene::load_scene_yaml("", "empty.yaml"), ParseError); }
 
 TEST(SceneErrors, MissingFileIsAnIoErrorNamingThePath) {
   try {
-    load_scene_file("/nonexistent/scene.yaml");
+    scene::load_scene_file("/nonexistent/scene.yaml");
     FAIL();
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/scene.yaml"), std::string::npos);
@@ -291,7 +293,7 @@ TEST(SceneErrors, AFolderIsAParseErrorNamingIt) {
   const std::string dir = ::testing::TempDir() + "scene_folder.yaml";
   std::filesystem::create_directories(dir);
   try {
-    load_scene_file(dir);
+    scene::load_scene_file(dir);
     ADD_FAILURE() << "no error";
   } catch (const ParseError& e) {
     EXPECT_EQ(e.where(), dir);
@@ -323,20 +325,20 @@ TEST(SceneErrors, SensorModelKeysAreLocated) {
     EXPECT_NE(e.where().find("bad.yaml:11:"), std::string::npos) << yaml << e.where();
   }
   // Grazing at 90 deg is fine while lateral noise is off.
-  EXPECT_NO_THROW(load_scene_yaml(
+  EXPECT_NO_THROW(scene::load_scene_yaml(
       std::string(kValidBody) + "sensors: {depth: {grazing_dropout_deg: 90}}\n", "ok.yaml"));
   // A scene built in code is checked too.
-  Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
+  scene::Scene scene = scene::load_scene_yaml(kValidBody, "ok.yaml");
   scene.sensors.color.auto_exposure = true;
   scene.sensors.color.exposure_min_gain = 3.0;
   scene.sensors.color.exposure_max_gain = 2.0;
-  EXPECT_THROW(validate_scene(scene), InvalidInputError);
+  EXPECT_THROW(scene::validate_scene(scene), InvalidInputError);
 }
 
 TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
-  Scene scene = load_scene_yaml(kValidBody, "ok.yaml");
+  scene::Scene scene = scene::load_scene_yaml(kValidBody, "ok.yaml");
   scene.route.nodes = {"A", "C"};
-  EXPECT_THROW(validate_scene(scene), InvalidInputError);
+  EXPECT_THROW(scene::validate_scene(scene), InvalidInputError);
 }
 
 // An AP spacing of 1e308 m passed the loader and failed later as "only 1 of 8 access points fit",
@@ -375,15 +377,15 @@ TEST(SceneErrors, RadioModelKeysAreCheckedAgainstTheModel) {
   e = expect_parse_error(std::string(kValidBody) +
                          "radio: {model: itu_site_general, distance_coefficient: 30}\n");
   EXPECT_EQ(e.key_path(), "radio.distance_coefficient");
-  const Scene fit = load_scene_yaml(
+  const scene::Scene fit = scene::load_scene_yaml(
       std::string(kValidBody) + "radio: {model: itu_site_general_fit}\n", "fit.yaml");
-  EXPECT_EQ(fit.radio.model, PathLossModel::kItuSiteGeneralFit);
+  EXPECT_EQ(fit.radio.model, radio_model::PathLossModel::kItuSiteGeneralFit);
   EXPECT_FALSE(fit.radio.shadowing_sigma_db.has_value());
   // The resolved scene names the model and loads back to it.
-  const std::string resolved = resolved_scene_yaml(fit);
+  const std::string resolved = scene::resolved_scene_yaml(fit);
   EXPECT_NE(resolved.find("itu_site_general_fit"), std::string::npos);
-  EXPECT_EQ(load_scene_yaml(resolved, "resolved.yaml").radio.model,
-            PathLossModel::kItuSiteGeneralFit);
+  EXPECT_EQ(scene::load_scene_yaml(resolved, "resolved.yaml").radio.model,
+            radio_model::PathLossModel::kItuSiteGeneralFit);
 }
 
 }  // namespace

@@ -46,25 +46,26 @@ bool mentions(const ParseError& e, const std::string& part) {
 }
 
 TEST(SceneLevels, DefaultsStackEachLevelOnTheOneBelowAndAreWrittenIntoTheScene) {
-  const Scene scene = load_scene_yaml(kTwoLevels, "levels.yaml");
-  const std::vector<ResolvedLevel> levels = resolved_levels(scene);
+  const scene::Scene scene = scene::load_scene_yaml(kTwoLevels, "levels.yaml");
+  const std::vector<scene::ResolvedLevel> levels = scene::resolved_levels(scene);
   ASSERT_EQ(levels.size(), 2u);
   EXPECT_EQ(levels[0].elevation_m, 0.0);
   EXPECT_DOUBLE_EQ(levels[0].storey_height_m, 2.8 + 0.25);  // walls up to the slab above
   EXPECT_DOUBLE_EQ(levels[1].elevation_m, 3.05);
   EXPECT_DOUBLE_EQ(levels[1].storey_height_m, 2.8 + 0.25);
-  EXPECT_EQ(levels[1].slab_material, WallMaterial::kConcrete);
+  EXPECT_EQ(levels[1].slab_material, radio_model::WallMaterial::kConcrete);
   // The resolved scene states them, and reads back to the same levels.
-  const Scene again = load_scene_yaml(resolved_scene_yaml(scene), "resolved.yaml");
+  const scene::Scene again =
+      scene::load_scene_yaml(scene::resolved_scene_yaml(scene), "resolved.yaml");
   ASSERT_EQ(again.levels.size(), 2u);
   EXPECT_EQ(again.levels[1].elevation_m, scene.levels[1].elevation_m);
   EXPECT_EQ(again.levels[1].storey_height_m, scene.levels[1].storey_height_m);
-  EXPECT_EQ(route_level(scene), "ground");
+  EXPECT_EQ(scene::route_level(scene), "ground");
 }
 
 TEST(SceneLevels, ALevelsPartHoldsItsOwnPiecesRenumberedWithTheFilesKeys) {
-  const Scene scene = load_scene_yaml(kTwoLevels, "levels.yaml");
-  const Scene first = scene_on_level(scene, "first");
+  const scene::Scene scene = scene::load_scene_yaml(kTwoLevels, "levels.yaml");
+  const scene::Scene first = scene::scene_on_level(scene, "first");
   ASSERT_EQ(first.nodes.size(), 2u);
   EXPECT_EQ(first.nodes[0].id, "A1");
   ASSERT_EQ(first.corridors.size(), 1u);
@@ -80,14 +81,14 @@ TEST(SceneLevels, ALevelsPartHoldsItsOwnPiecesRenumberedWithTheFilesKeys) {
     EXPECT_EQ(e.key_path(), "nodes[2].position_m");
     EXPECT_EQ(e.where(), "levels.yaml:9:26");
   }
-  const Scene ground = scene_on_level(scene, "ground");
+  const scene::Scene ground = scene::scene_on_level(scene, "ground");
   EXPECT_EQ(ground.nodes.size(), 2u);
   EXPECT_EQ(ground.access_points.explicit_list.size(), 1u);
 }
 
 TEST(SceneLevels, NodesOfDifferentLevelsMayStandOneAboveTheOther) {
   // A1 and A share (0, 0): allowed across levels, refused on one.
-  EXPECT_NO_THROW(load_scene_yaml(kTwoLevels, "levels.yaml"));
+  EXPECT_NO_THROW(scene::load_scene_yaml(kTwoLevels, "levels.yaml"));
   const auto e = expect_parse_error(replace(
       kTwoLevels, "{id: A1, position_m: [0, 0], level: first}", "{id: A1, position_m: [0, 0]}"));
   EXPECT_EQ(e.key_path(), "nodes[2].position_m");
@@ -151,7 +152,7 @@ TEST(SceneLevels, ALevelWithoutAPlanIsLocated) {
 }
 
 TEST(SceneLevels, EachLevelsCorridorGraphIsConnectedOnItsOwn) {
-  EXPECT_NO_THROW(load_scene_yaml(kTwoLevels, "levels.yaml"));
+  EXPECT_NO_THROW(scene::load_scene_yaml(kTwoLevels, "levels.yaml"));
   const auto e = expect_parse_error(
       replace(replace(kTwoLevels, "  - {id: B1, position_m: [12, 0], level: first}\n",
                       "  - {id: B1, position_m: [12, 0], level: first}\n  - {id: C1, position_m: "

@@ -22,7 +22,7 @@ TEST(ShippedScenes, AllFiveModelledOnThePaperExistAndLoad) {
   const auto files = shipped_scene_files();
   for (const char* name : {"c_hall", "b_hall", "j_hall", "a_hall", "aliasing_ladder"}) {
     const std::string path = std::string(WIFISLAM_SCENES_DIR) + "/" + name + ".yaml";
-    const Scene scene = load_scene_file(path);
+    const scene::Scene scene = scene::load_scene_file(path);
     EXPECT_EQ(scene.name, name);
     EXPECT_EQ(scene.source_path, path);
     EXPECT_GE(scene.route.nodes.size(), 3u) << name;
@@ -33,7 +33,7 @@ TEST(ShippedScenes, AllFiveModelledOnThePaperExistAndLoad) {
 TEST(ShippedScenes, AccessPointCountsFollowThePaper) {
   // Paper, "Datasets": C Hall < 40 APs, B Hall about 40, J Hall about 70, A Hall 45.
   auto count = [](const char* name) {
-    return load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + name + ".yaml")
+    return scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/" + name + ".yaml")
         .access_points.count;
   };
   EXPECT_LT(count("c_hall"), 40);
@@ -44,16 +44,17 @@ TEST(ShippedScenes, AccessPointCountsFollowThePaper) {
 }
 
 TEST(ShippedScenes, AliasingLadderIsWorstCase) {
-  const Scene s = load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
+  const scene::Scene s =
+      scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/aliasing_ladder.yaml");
   EXPECT_EQ(s.appearance.aliasing, 1.0);
 }
 
 TEST(SceneLoader, ResolvedSceneRoundTripsForEveryShippedScene) {
   for (const auto& path : shipped_scene_files()) {
-    const Scene scene = load_scene_file(path);
-    const std::string resolved = resolved_scene_yaml(scene);
-    const Scene again = load_scene_yaml(resolved, "resolved");
-    EXPECT_EQ(resolved_scene_yaml(again), resolved) << path;
+    const scene::Scene scene = scene::load_scene_file(path);
+    const std::string resolved = scene::resolved_scene_yaml(scene);
+    const scene::Scene again = scene::load_scene_yaml(resolved, "resolved");
+    EXPECT_EQ(scene::resolved_scene_yaml(again), resolved) << path;
     EXPECT_EQ(again.seed, scene.seed);
     EXPECT_EQ(again.corridors.size(), scene.corridors.size());
   }
@@ -122,7 +123,7 @@ sensors:
 radio: {environment: residential, distance_coefficient: 25, shadowing_sigma_db: 5,
         shadowing_decorrelation_m: 4, fast_fading_sigma_db: 1.5, people_disturbance_db: 2}
 )";
-  const Scene s = load_scene_yaml(yaml, "every_key.yaml");
+  const scene::Scene s = scene::load_scene_yaml(yaml, "every_key.yaml");
   EXPECT_EQ(s.name, "every_key");
   EXPECT_EQ(s.description, "all keys set");
   EXPECT_EQ(s.seed, 77u);
@@ -130,11 +131,11 @@ radio: {environment: residential, distance_coefficient: 25, shadowing_sigma_db: 
   EXPECT_DOUBLE_EQ(s.building.wall_thickness_m, 0.2);
   ASSERT_EQ(s.nodes.size(), 2u);
   EXPECT_EQ(s.nodes[1].position_m, Eigen::Vector2d(12, 0));
-  const Corridor& c = s.corridors.at(0);
+  const scene::Corridor& c = s.corridors.at(0);
   EXPECT_DOUBLE_EQ(c.width_m, 2.5);
-  EXPECT_EQ(c.material, WallMaterial::kConcrete);
-  const RoomRow& r = c.rooms.at(0);
-  EXPECT_EQ(r.side, RoomRow::Side::kLeft);
+  EXPECT_EQ(c.material, radio_model::WallMaterial::kConcrete);
+  const scene::RoomRow& r = c.rooms.at(0);
+  EXPECT_EQ(r.side, scene::RoomRow::Side::kLeft);
   EXPECT_DOUBLE_EQ(r.from_m, 1);
   EXPECT_DOUBLE_EQ(r.to_m.value(), 11);
   EXPECT_DOUBLE_EQ(r.room_length_m, 5);
@@ -142,10 +143,10 @@ radio: {environment: residential, distance_coefficient: 25, shadowing_sigma_db: 
   EXPECT_DOUBLE_EQ(r.door_offset_m, 2);
   EXPECT_DOUBLE_EQ(r.door_width_m, 1.1);
   EXPECT_TRUE(r.doors_open);
-  EXPECT_EQ(r.material, WallMaterial::kGlass);
-  const OpenArea& a = s.open_areas.at(0);
+  EXPECT_EQ(r.material, radio_model::WallMaterial::kGlass);
+  const scene::OpenArea& a = s.open_areas.at(0);
   EXPECT_EQ(a.polygon_m.size(), 4u);
-  EXPECT_EQ(a.material, WallMaterial::kBrick);
+  EXPECT_EQ(a.material, radio_model::WallMaterial::kBrick);
   EXPECT_DOUBLE_EQ(a.pillars.at(0).size_m, 0.5);
   EXPECT_DOUBLE_EQ(s.appearance.aliasing, 0.25);
   EXPECT_DOUBLE_EQ(s.appearance.segment_length_m, 3);
@@ -156,7 +157,7 @@ radio: {environment: residential, distance_coefficient: 25, shadowing_sigma_db: 
   EXPECT_DOUBLE_EQ(s.appearance.posters_per_10m, 3);
   EXPECT_DOUBLE_EQ(s.appearance.light_spacing_m, 2.5);
   EXPECT_EQ(s.appearance.landmarks.at(0).kind, "sign");
-  EXPECT_EQ(s.access_points.placement, ApPlacement::kExplicit);
+  EXPECT_EQ(s.access_points.placement, scene::ApPlacement::kExplicit);
   EXPECT_EQ(s.access_points.seed.value(), 9u);
   EXPECT_DOUBLE_EQ(s.access_points.height_m, 2.2);
   EXPECT_DOUBLE_EQ(s.access_points.tx_power_dbm, 17);
@@ -196,22 +197,22 @@ radio: {environment: residential, distance_coefficient: 25, shadowing_sigma_db: 
   EXPECT_DOUBLE_EQ(s.sensors.wifi.scan_interval_s, 3);
   EXPECT_DOUBLE_EQ(s.sensors.odometry.rate_hz, 20);
   EXPECT_DOUBLE_EQ(s.sensors.odometry.yaw_bias_radpm, 0.001);
-  EXPECT_EQ(s.radio.environment, RadioEnvironment::kResidential);
+  EXPECT_EQ(s.radio.environment, radio_model::RadioEnvironment::kResidential);
   EXPECT_DOUBLE_EQ(s.radio.distance_coefficient.value(), 25);
   EXPECT_DOUBLE_EQ(s.radio.people_disturbance_db, 2);
   // And all of it survives the resolved-scene round trip.
-  EXPECT_EQ(resolved_scene_yaml(load_scene_yaml(resolved_scene_yaml(s), "r")),
-            resolved_scene_yaml(s));
+  EXPECT_EQ(scene::resolved_scene_yaml(scene::load_scene_yaml(scene::resolved_scene_yaml(s), "r")),
+            scene::resolved_scene_yaml(s));
 }
 
 TEST(SceneLoader, AbsentKeysTakeTheDocumentedDefaults) {
-  const Scene s = load_scene_yaml(R"(
+  const scene::Scene s = scene::load_scene_yaml(R"(
 version: 1
 nodes: [{id: A, position_m: [0, 0]}, {id: B, position_m: [10, 0]}]
 corridors: [{id: c, from: A, to: B}]
 route: {nodes: [A, B]}
 )",
-                                  "minimal.yaml");
+                                                "minimal.yaml");
   EXPECT_EQ(s.sensors.camera.intrinsics, CameraIntrinsics::kinect_v1());
   EXPECT_DOUBLE_EQ(s.sensors.camera.fps, 30);
   EXPECT_DOUBLE_EQ(s.sensors.depth.min_range_m, 0.8);

@@ -14,7 +14,7 @@ namespace wifislam::sim::test {
 /// Loads `yaml` (as the file `source`) and returns the ParseError it must raise.
 inline ParseError expect_parse_error(const std::string& yaml, const std::string& source) {
   try {
-    load_scene_yaml(yaml, source);
+    scene::load_scene_yaml(yaml, source);
   } catch (const ParseError& e) {
     return e;
   }

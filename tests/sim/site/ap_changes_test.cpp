@@ -27,11 +27,11 @@ corridors:
   - {id: ab, from: A, to: B, rooms: [{side: both}]}
 access_points: {placement: random, count: 6)";
 
-Scene scene_with(const std::string& changes, int session) {
+scene::Scene scene_with(const std::string& changes, int session) {
   std::string yaml = kScene;
   yaml += changes.empty() ? "}\n" : ",\n  changes: " + changes + "}\n";
   yaml += "route:\n  nodes: [A, B]\n";
-  Scene scene = load_scene_yaml(yaml, "changes.yaml");
+  scene::Scene scene = scene::load_scene_yaml(yaml, "changes.yaml");
   scene.session = static_cast<std::uint64_t>(session);
   return scene;
 }
@@ -49,10 +49,10 @@ const char* kChanges =
     " {session: 3, change: new, position_m: [3, 0.2, 2.5], tx_power_dbm: 15}]";
 
 TEST(ApChanges, EachChangeHoldsFromItsSessionOnAndTheRestIsTheBuildingAsPlaced) {
-  const Site plain(scene_with("", 0));
+  const site::Site plain(scene_with("", 0));
   const auto& placed = plain.access_points();
   ASSERT_EQ(placed.size(), 6u);
-  std::vector<Site> sessions;
+  std::vector<site::Site> sessions;
   for (int k = 0; k <= 4; ++k) sessions.emplace_back(scene_with(kChanges, k));
   // Session 0 is the building as placed.
   EXPECT_EQ(sessions[0].access_points().size(), placed.size());
@@ -72,7 +72,7 @@ TEST(ApChanges, EachChangeHoldsFromItsSessionOnAndTheRestIsTheBuildingAsPlaced) 
   EXPECT_EQ(find(s2, 0)->tx_power_dbm, placed[0].tx_power_dbm - 6.0);
   // Real rays: AP 0's mean RSSI at a spot falls by exactly its power step.
   const Eigen::Vector3d spot(10.0, 0.3, 0.5);
-  const auto index_of = [](const Site& site, int id) { return *site.radio().index_of(id); };
+  const auto index_of = [](const site::Site& site, int id) { return *site.radio().index_of(id); };
   const radio_model::Bssid& b0 = placed[0].bssids.front();
   EXPECT_NEAR(sessions[2].radio().mean_rssi_dbm(index_of(sessions[2], 0), b0, spot),
               plain.radio().mean_rssi_dbm(index_of(plain, 0), b0, spot) - 6.0, 1e-9);
@@ -98,9 +98,9 @@ TEST(ApChanges, EachChangeHoldsFromItsSessionOnAndTheRestIsTheBuildingAsPlaced) 
 }
 
 TEST(ApChanges, SessionsShareTheBuildingButNotThePausesOrWifiDraws) {
-  const Site s0(scene_with("", 0)), s1(scene_with("", 1)), again(scene_with("", 1));
-  EXPECT_EQ(session_seed(s0.scene()), s0.scene().seed);
-  EXPECT_NE(session_seed(s1.scene()), s0.scene().seed);
+  const site::Site s0(scene_with("", 0)), s1(scene_with("", 1)), again(scene_with("", 1));
+  EXPECT_EQ(scene::session_seed(s0.scene()), s0.scene().seed);
+  EXPECT_NE(scene::session_seed(s1.scene()), s0.scene().seed);
   ASSERT_EQ(s0.access_points().size(), s1.access_points().size());
   for (std::size_t i = 0; i < s0.access_points().size(); ++i)
     EXPECT_EQ(s0.access_points()[i].position_m, s1.access_points()[i].position_m);
@@ -118,7 +118,7 @@ TEST(ApChanges, SessionsShareTheBuildingButNotThePausesOrWifiDraws) {
 TEST(ApChanges, BadChangesAreLocatedAtTheirKeys) {
   const auto rejected = [](const std::string& changes, int session) {
     try {
-      Site site(scene_with(changes, session));
+      site::Site site(scene_with(changes, session));
     } catch (const ParseError& e) {
       return std::string(e.key_path()) + " | " + e.what();
     }
@@ -147,18 +147,18 @@ TEST(ApChanges, BadChangesAreLocatedAtTheirKeys) {
 }
 
 TEST(ApChanges, AResolvedSceneKeepsItsSessionAndChanges) {
-  const Scene scene = scene_with(kChanges, 2);
-  const std::string resolved = resolved_scene_yaml(scene);
-  const Scene again = load_scene_yaml(resolved, "resolved.yaml");
+  const scene::Scene scene = scene_with(kChanges, 2);
+  const std::string resolved = scene::resolved_scene_yaml(scene);
+  const scene::Scene again = scene::load_scene_yaml(resolved, "resolved.yaml");
   EXPECT_EQ(again.session, std::optional<std::uint64_t>(2));
   ASSERT_EQ(again.access_points.changes.size(), 4u);
-  EXPECT_EQ(again.access_points.changes[3].change, AccessPointChangeKind::kNew);
-  EXPECT_EQ(resolved_scene_yaml(again), resolved);
+  EXPECT_EQ(again.access_points.changes[3].change, scene::AccessPointChangeKind::kNew);
+  EXPECT_EQ(scene::resolved_scene_yaml(again), resolved);
   // A scene without sessions writes neither key.
-  Scene no_session = scene_with("", 0);
+  scene::Scene no_session = scene_with("", 0);
   no_session.session.reset();
-  EXPECT_EQ(resolved_scene_yaml(no_session).find("session"), std::string::npos);
-  EXPECT_EQ(resolved_scene_yaml(no_session).find("changes"), std::string::npos);
+  EXPECT_EQ(scene::resolved_scene_yaml(no_session).find("session"), std::string::npos);
+  EXPECT_EQ(scene::resolved_scene_yaml(no_session).find("changes"), std::string::npos);
 }
 
 // A moved AP stays on its level: its z is above that level's floor, a basement's included.
@@ -178,10 +178,10 @@ access_points:
 route:
   nodes: [A, B]
 )";
-  Scene scene = load_scene_yaml(yaml, "basement.yaml");
-  EXPECT_NEAR(Site(scene).access_points().front().position_m.z(), -3.1 + 2.5, 1e-9);
+  scene::Scene scene = scene::load_scene_yaml(yaml, "basement.yaml");
+  EXPECT_NEAR(site::Site(scene).access_points().front().position_m.z(), -3.1 + 2.5, 1e-9);
   scene.session = 1;
-  const Eigen::Vector3d moved = Site(scene).access_points().front().position_m;
+  const Eigen::Vector3d moved = site::Site(scene).access_points().front().position_m;
   EXPECT_NEAR(moved.x(), 20.0, 1e-9);
   EXPECT_NEAR(moved.z(), -3.1 + 2.0, 1e-9);
 }

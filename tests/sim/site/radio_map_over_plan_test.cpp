@@ -19,7 +19,7 @@ namespace wifislam::radio_model {
 namespace {
 
 struct Fixture {
-  sim::FloorPlan plan = test::corridor_with_rooms(5);
+  sim::world::FloorPlan plan = test::corridor_with_rooms(5);
   WallMesh mesh;
   std::unique_ptr<PropagationModel> model;
   Fixture() {
@@ -46,9 +46,9 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   RadioMapOptions o;
   o.resolution_m = 0.5;
   o.threads = 1;
-  const RadioMap strongest1 = sim::compute_radio_map(*f.model, f.plan, o);
+  const RadioMap strongest1 = sim::site::compute_radio_map(*f.model, f.plan, o);
   o.threads = 2;
-  const RadioMap strongest2 = sim::compute_radio_map(*f.model, f.plan, o);
+  const RadioMap strongest2 = sim::site::compute_radio_map(*f.model, f.plan, o);
   ASSERT_EQ(strongest1.rssi_dbm.size(), strongest2.rssi_dbm.size());
   EXPECT_EQ(std::memcmp(strongest1.rssi_dbm.data(), strongest2.rssi_dbm.data(),
                         strongest1.rssi_dbm.size() * sizeof(float)),
@@ -58,15 +58,16 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   EXPECT_EQ(strongest1.rows, 13);  // 6.4 m / 0.5
 
   o.ap_id = 0;
-  const RadioMap ap0 = sim::compute_radio_map(*f.model, f.plan, o);
+  const RadioMap ap0 = sim::site::compute_radio_map(*f.model, f.plan, o);
   o.ap_id = 1;
-  const RadioMap ap1 = sim::compute_radio_map(*f.model, f.plan, o);
+  const RadioMap ap1 = sim::site::compute_radio_map(*f.model, f.plan, o);
   int from0 = 0, from1 = 0;
   for (std::size_t i = 0; i < ap0.rssi_dbm.size(); ++i) {
     // Only free-space cells are computed: the corridor and the rooms, not the walls.
     const Eigen::Vector2d c = strongest1.cell_center_m(static_cast<int>(i) % strongest1.cols,
                                                        static_cast<int>(i) / strongest1.cols);
-    EXPECT_EQ(std::isfinite(strongest1.rssi_dbm[i]), sim::regions_contain(f.plan.free_space, c))
+    EXPECT_EQ(std::isfinite(strongest1.rssi_dbm[i]),
+              sim::world::regions_contain(f.plan.free_space, c))
         << i;
     if (!std::isfinite(strongest1.rssi_dbm[i])) continue;
     EXPECT_EQ(strongest1.rssi_dbm[i], std::max(ap0.rssi_dbm[i], ap1.rssi_dbm[i]));
@@ -78,7 +79,7 @@ TEST(RadioMap, StrongestIsTheMaxOverApsAndThreadCountDoesNotMatter) {
   EXPECT_GT(ap0.at(4, 8), ap0.at(40, 2) + 15.0);
 
   o.ap_id = 7;
-  EXPECT_THROW(sim::compute_radio_map(*f.model, f.plan, o), InvalidInputError);
+  EXPECT_THROW(sim::site::compute_radio_map(*f.model, f.plan, o), InvalidInputError);
 }
 
 TEST(RadioMap, PruningHopelessApsLeavesTheStrongestMapUnchanged) {
@@ -91,9 +92,9 @@ TEST(RadioMap, PruningHopelessApsLeavesTheStrongestMapUnchanged) {
                          PropagationOptions{}, 4);
   RadioMapOptions o;
   o.resolution_m = 0.25;
-  const RadioMap pruned = sim::compute_radio_map(model, f.plan, o);
+  const RadioMap pruned = sim::site::compute_radio_map(model, f.plan, o);
   o.prune = false;
-  const RadioMap full = sim::compute_radio_map(model, f.plan, o);
+  const RadioMap full = sim::site::compute_radio_map(model, f.plan, o);
   ASSERT_EQ(pruned.rssi_dbm.size(), full.rssi_dbm.size());
   EXPECT_EQ(std::memcmp(pruned.rssi_dbm.data(), full.rssi_dbm.data(),
                         full.rssi_dbm.size() * sizeof(float)),
@@ -105,11 +106,11 @@ TEST(RadioMap, WritesAReadablePngAndACsvWithOneRowPerCell) {
   Fixture f;
   RadioMapOptions o;
   o.resolution_m = 0.25;
-  const RadioMap map = sim::compute_radio_map(*f.model, f.plan, o);
+  const RadioMap map = sim::site::compute_radio_map(*f.model, f.plan, o);
   const auto dir = std::filesystem::temp_directory_path() / "wifislam_radio_map_test";
   std::filesystem::create_directories(dir);
   const auto png = dir / "map.png", csv = dir / "map.csv";
-  sim::write_radio_map_png(map, f.plan, f.model->access_points(), png);
+  sim::site::write_radio_map_png(map, f.plan, f.model->access_points(), png);
   write_radio_map_csv(map, csv);
 
   cairo_surface_t* img = cairo_image_surface_create_from_png(png.c_str());

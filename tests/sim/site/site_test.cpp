@@ -43,17 +43,17 @@ sensors: {camera: {height_m: 0.7}}
 )";
 
 TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
-  const Scene scene = load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
-  const Site site(scene);
-  GenerateOptions options;
-  options.camera = sim::CameraOutput::kNoImages;
-  const GenerationPipeline pipeline(scene, options);
+  const scene::Scene scene = scene::load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
+  const site::Site site(scene);
+  generate::GenerateOptions options;
+  options.camera = sim::generate::CameraOutput::kNoImages;
+  const generate::GenerationPipeline pipeline(scene, options);
   ASSERT_EQ(site.access_points().size(), 5u);
   ASSERT_EQ(pipeline.radio().access_points().size(), 5u);
   const radio_model::PropagationModel seeded_by_ap_seed(
-      sim::radio_wall_mesh(site.world().mesh), site.world().plan.bounds_min_m,
-      site.world().plan.bounds_max_m, site.access_points(), sim::propagation_options(scene),
-      sim::access_point_seed(scene));
+      sim::world::radio_wall_mesh(site.world().mesh), site.world().plan.bounds_min_m,
+      site.world().plan.bounds_max_m, site.access_points(), sim::site::propagation_options(scene),
+      sim::site::access_point_seed(scene));
   int differs_from_ap_seed = 0;
   for (std::size_t i = 0; i < site.access_points().size(); ++i) {
     EXPECT_EQ(site.access_points()[i].position_m, pipeline.radio().access_points()[i].position_m);
@@ -71,8 +71,8 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
 }
 
 TEST(Site, TheReceiverRidesWithTheCamera) {
-  const Scene scene = load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
-  EXPECT_EQ(Site(scene).receiver_height_m(), 0.7);
+  const scene::Scene scene = scene::load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
+  EXPECT_EQ(site::Site(scene).receiver_height_m(), 0.7);
 }
 
 // `wifislam radiomap` without --height maps at the camera height, where the dataset's scans are.

@@ -5,17 +5,17 @@
 
 namespace wifislam::test {
 
-inline sim::Polygon2 rectangle(double x0, double y0, double x1, double y1) {
+inline sim::world::Polygon2 rectangle(double x0, double y0, double x1, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-inline sim::FloorPlan corridor_with_rooms(int rooms = 7) {
-  sim::FloorPlan plan;
+inline sim::world::FloorPlan corridor_with_rooms(int rooms = 7) {
+  sim::world::FloorPlan plan;
   const double length = 4.0 * rooms + 2.0;
   plan.walkable.push_back({rectangle(0, 0, length, 2), {}});
   plan.free_space.push_back({rectangle(0, 0, length, 2), {}});
   auto face = [&](double ax, double ay, double bx, double by) {
-    sim::WallFace2 f;
+    sim::world::WallFace2 f;
     f.a_m = {ax, ay};
     f.b_m = {bx, by};
     f.wall_id = static_cast<int>(plan.wall_faces.size());
@@ -26,7 +26,7 @@ inline sim::FloorPlan corridor_with_rooms(int rooms = 7) {
   face(0, 2, 0, 0);
   face(length, 0, length, 2);
   for (int i = 0; i < rooms; ++i) {
-    sim::Room room;
+    sim::world::Room room;
     room.polygon_m = rectangle(4.0 * i + 0.1, 2.15, 4.0 * i + 3.9, 6.0);
     plan.free_space.push_back({room.polygon_m, {}});
     plan.rooms.push_back(room);

@@ -78,11 +78,11 @@ double radio_frequency_mhz(const radio_model::AccessPoint& ap, radio_model::Radi
 /// crosses the slab and no wall; returns how many cells were compared.
 int compare_lower_level_maps(const std::string& model,
                              double (*expected_drop_db)(double frequency_mhz)) {
-  const Scene scene = load_scene_yaml(two_level_scene(model), "two_levels.yaml");
-  const Site site(scene);
-  const World& world = site.world();
+  const scene::Scene scene = scene::load_scene_yaml(two_level_scene(model), "two_levels.yaml");
+  const site::Site site(scene);
+  const world::World& world = site.world();
   EXPECT_EQ(world.storeys.size(), 2u);
-  const Storey* ground = world.storey("ground");
+  const world::Storey* ground = world.storey("ground");
   EXPECT_NE(ground, nullptr);
   if (!ground) return 0;
   EXPECT_EQ(world.level_id, "ground");
@@ -91,10 +91,10 @@ int compare_lower_level_maps(const std::string& model,
   EXPECT_DOUBLE_EQ(ap.position_m.z(), 2.8 + 0.25 + 2.5);  // the upper floor at 3.05 m
 
   Eigen::Vector2d bounds_min_m, bounds_max_m;
-  building_bounds(world, bounds_min_m, bounds_max_m);
-  const radio_model::PropagationModel no_slab(without_slabs(radio_wall_mesh(world)), bounds_min_m,
-                                              bounds_max_m, site.access_points(),
-                                              propagation_options(scene), scene.seed);
+  world::building_bounds(world, bounds_min_m, bounds_max_m);
+  const radio_model::PropagationModel no_slab(without_slabs(world::radio_wall_mesh(world)),
+                                              bounds_min_m, bounds_max_m, site.access_points(),
+                                              site::propagation_options(scene), scene.seed);
   int compared = 0, heard = 0;
   for (const auto band : {radio_model::RadioBand::k2_4GHz, radio_model::RadioBand::k5GHz}) {
     radio_model::RadioMapOptions options;
@@ -104,9 +104,9 @@ int compare_lower_level_maps(const std::string& model,
                                                            : radio_model::RadioMapBand::k5GHz;
     options.receiver_height_m = site.receiver_height_m();
     const radio_model::RadioMap with =
-        compute_radio_map(site.radio(), ground->plan, options, ground->elevation_m);
+        site::compute_radio_map(site.radio(), ground->plan, options, ground->elevation_m);
     const radio_model::RadioMap without =
-        compute_radio_map(no_slab, ground->plan, options, ground->elevation_m);
+        site::compute_radio_map(no_slab, ground->plan, options, ground->elevation_m);
     const double drop_db = expected_drop_db(radio_frequency_mhz(ap, band));
     for (int row = 0; row < with.rows; ++row) {
       for (int col = 0; col < with.cols; ++col) {
@@ -140,11 +140,12 @@ TEST(TwoLevelRadio, UnderItuSiteGeneralTheFloorCostsP1238sFactor) {
 }
 
 TEST(TwoLevelRadio, TheRouteLevelIsInItsOwnFrameAndTheStoreysInTheBuildings) {
-  const Scene scene = load_scene_yaml(two_level_scene("itu_walls"), "two_levels.yaml");
-  const Site site(scene);
-  const World& world = site.world();
+  const scene::Scene scene =
+      scene::load_scene_yaml(two_level_scene("itu_walls"), "two_levels.yaml");
+  const site::Site site(scene);
+  const world::World& world = site.world();
   ASSERT_EQ(world.storeys.size(), 2u);
-  const Storey& upper = world.storeys[1];
+  const world::Storey& upper = world.storeys[1];
   EXPECT_EQ(upper.level_id, "upper");
   EXPECT_DOUBLE_EQ(upper.elevation_m, 3.05);
   // The upper storey's mesh is raised to its elevation; the route level's stays at its floor.
@@ -156,7 +157,7 @@ TEST(TwoLevelRadio, TheRouteLevelIsInItsOwnFrameAndTheStoreysInTheBuildings) {
   // The two levels differ: the upper has rooms on one side only.
   EXPECT_LT(upper.plan.rooms.size(), world.storeys[0].plan.rooms.size());
   // The slab is in the radio's walls, once, with its six faces on one wall id.
-  const radio_model::WallMesh walls = radio_wall_mesh(world);
+  const radio_model::WallMesh walls = world::radio_wall_mesh(world);
   int slab_faces = 0;
   std::set<int> slab_ids;
   for (const auto& face : walls.faces)
@@ -168,7 +169,7 @@ TEST(TwoLevelRadio, TheRouteLevelIsInItsOwnFrameAndTheStoreysInTheBuildings) {
   // crossing; with it, wall and slab are one stretch of material.
   const radio_model::PropagationModel no_slab(without_slabs(walls), world.plan.bounds_min_m,
                                               world.plan.bounds_max_m, site.access_points(),
-                                              propagation_options(scene), scene.seed);
+                                              site::propagation_options(scene), scene.seed);
   const Eigen::Vector3d in_room_below(8.0, 1.95, 0.5);  // 0.8 m past the 0.15 m wall at y = 1
   EXPECT_EQ(no_slab.link(0, in_room_below).wall_count(), 1.0);
   EXPECT_EQ(no_slab.link(0, in_room_below).slabs_crossed, 0);

@@ -11,56 +11,56 @@
 namespace wifislam::sim {
 namespace {
 
-std::vector<int> variants(const FloorPlan& plan) {
+std::vector<int> variants(const world::FloorPlan& plan) {
   std::vector<int> v;
   for (const auto& s : plan.appearance_segments) v.push_back(s.variant);
   return v;
 }
 
-std::multiset<int> poster_designs(const Scene& scene, const FloorPlan& plan) {
+std::multiset<int> poster_designs(const scene::Scene& scene, const world::FloorPlan& plan) {
   std::multiset<int> d;
-  for (const auto& p : place_posters(scene, plan)) d.insert(p.decoration);
+  for (const auto& p : world::place_posters(scene, plan)) d.insert(p.decoration);
   return d;
 }
 
 TEST(Determinism, SameSceneAndSeedGiveIdenticalMeshHash) {
-  const Scene scene = test::square_loop_scene();
-  const World a = generate_world(scene);
-  const World b = generate_world(scene);
-  EXPECT_EQ(mesh_hash(a.mesh), mesh_hash(b.mesh));
+  const scene::Scene scene = test::square_loop_scene();
+  const world::World a = world::generate_world(scene);
+  const world::World b = world::generate_world(scene);
+  EXPECT_EQ(world::mesh_hash(a.mesh), world::mesh_hash(b.mesh));
   EXPECT_EQ(a.route.points_m, b.route.points_m);
 }
 
 TEST(Determinism, DifferentSeedChangesAppearanceWhenAliasingBelowOne) {
-  Scene scene = test::square_loop_scene();
+  scene::Scene scene = test::square_loop_scene();
   scene.appearance.aliasing = 0.5;
-  const FloorPlan a = build_floor_plan(scene);
+  const world::FloorPlan a = world::build_floor_plan(scene);
   scene.seed += 1;
-  const FloorPlan b = build_floor_plan(scene);
+  const world::FloorPlan b = world::build_floor_plan(scene);
   EXPECT_NE(variants(a), variants(b));
   EXPECT_NE(poster_designs(scene, a), poster_designs(scene, b));
-  EXPECT_NE(mesh_hash(generate_world(scene).mesh),
-            mesh_hash(generate_world(test::square_loop_scene()).mesh));
+  EXPECT_NE(world::mesh_hash(world::generate_world(scene).mesh),
+            world::mesh_hash(world::generate_world(test::square_loop_scene()).mesh));
 }
 
 TEST(Determinism, FullAliasingGivesEverySegmentTheSameLookAndPosters) {
-  Scene scene = test::square_loop_scene();
+  scene::Scene scene = test::square_loop_scene();
   scene.appearance.aliasing = 1.0;
   scene.appearance.posters_per_10m = 5.0;  // two per 4 m segment
   for (std::uint64_t seed : {1u, 2u}) {
     scene.seed = seed;
-    const FloorPlan plan = build_floor_plan(scene);
+    const world::FloorPlan plan = world::build_floor_plan(scene);
     for (int v : variants(plan)) EXPECT_EQ(v, 0);
     // Segments of equal length carry posters at the same places with the same designs.
     std::map<long long, std::vector<std::pair<double, int>>> by_length;
     std::map<int, std::vector<std::pair<double, int>>> by_face;
-    for (const auto& p : place_posters(scene, plan)) {
-      const WallFace2& f = plan.wall_faces[p.face_index];
+    for (const auto& p : world::place_posters(scene, plan)) {
+      const world::WallFace2& f = plan.wall_faces[p.face_index];
       by_face[p.face_index].emplace_back((p.center_m - f.a_m).norm(), p.decoration);
     }
     int compared = 0;
     for (const auto& [face, posters] : by_face) {
-      const WallFace2& f = plan.wall_faces[face];
+      const world::WallFace2& f = plan.wall_faces[face];
       const long long key = std::llround((f.b_m - f.a_m).norm() * 1e6);
       auto [it, inserted] = by_length.emplace(key, posters);
       if (inserted) continue;
@@ -76,9 +76,9 @@ TEST(Determinism, FullAliasingGivesEverySegmentTheSameLookAndPosters) {
 }
 
 TEST(Determinism, NoAliasingGivesEverySegmentItsOwnLook) {
-  Scene scene = test::square_loop_scene();
+  scene::Scene scene = test::square_loop_scene();
   scene.appearance.aliasing = 0.0;
-  const FloorPlan plan = build_floor_plan(scene);
+  const world::FloorPlan plan = world::build_floor_plan(scene);
   const std::vector<int> v = variants(plan);
   const std::set<int> distinct(v.begin(), v.end());
   EXPECT_EQ(distinct.size(), v.size());

@@ -11,7 +11,7 @@
 namespace wifislam::sim {
 namespace {
 
-double triangle_area(const Mesh& m, const Triangle& t) {
+double triangle_area(const world::Mesh& m, const world::Triangle& t) {
   return 0.5 * (m.positions_m[t.v[1]] - m.positions_m[t.v[0]])
                    .cross(m.positions_m[t.v[2]] - m.positions_m[t.v[0]])
                    .cast<double>()
@@ -21,44 +21,46 @@ double triangle_area(const Mesh& m, const Triangle& t) {
 TEST(Mesh, SquareLoopWallsAreClosedAndFaceFreeSpace) {
   for (bool doors_open : {false, true}) {
     SCOPED_TRACE(doors_open ? "outside doors open" : "outside doors closed");
-    const World world = generate_world(test::square_loop_scene(14.0, 2.0, doors_open));
+    const world::World world =
+        world::generate_world(test::square_loop_scene(14.0, 2.0, doors_open));
     test::expect_mesh_invariants(world);
   }
 }
 
 TEST(Mesh, HasEverySurfaceKind) {
-  const World world = generate_world(test::square_loop_scene());
-  std::set<SurfaceKind> kinds;
-  for (const Triangle& t : world.mesh.triangles) kinds.insert(t.surface);
-  for (SurfaceKind k :
-       {SurfaceKind::kWall, SurfaceKind::kFloor, SurfaceKind::kCeiling, SurfaceKind::kDoor,
-        SurfaceKind::kDoorFrame, SurfaceKind::kPoster, SurfaceKind::kLight, SurfaceKind::kWallTop})
+  const world::World world = world::generate_world(test::square_loop_scene());
+  std::set<world::SurfaceKind> kinds;
+  for (const world::Triangle& t : world.mesh.triangles) kinds.insert(t.surface);
+  for (world::SurfaceKind k :
+       {world::SurfaceKind::kWall, world::SurfaceKind::kFloor, world::SurfaceKind::kCeiling,
+        world::SurfaceKind::kDoor, world::SurfaceKind::kDoorFrame, world::SurfaceKind::kPoster,
+        world::SurfaceKind::kLight, world::SurfaceKind::kWallTop})
     EXPECT_TRUE(kinds.count(k)) << "missing surface kind " << static_cast<int>(k);
 }
 
 TEST(Mesh, FloorAndCeilingCoverExactlyTheFreeSpace) {
-  const World world = generate_world(test::square_loop_scene());
+  const world::World world = world::generate_world(test::square_loop_scene());
   double floor = 0, ceiling = 0;
-  for (const Triangle& t : world.mesh.triangles) {
-    if (t.surface == SurfaceKind::kFloor) floor += triangle_area(world.mesh, t);
-    if (t.surface == SurfaceKind::kCeiling) ceiling += triangle_area(world.mesh, t);
+  for (const world::Triangle& t : world.mesh.triangles) {
+    if (t.surface == world::SurfaceKind::kFloor) floor += triangle_area(world.mesh, t);
+    if (t.surface == world::SurfaceKind::kCeiling) ceiling += triangle_area(world.mesh, t);
   }
-  const double free_area = regions_area_m2(world.plan.free_space);
+  const double free_area = world::regions_area_m2(world.plan.free_space);
   EXPECT_NEAR(floor, free_area, 1e-4 * free_area);
   EXPECT_NEAR(ceiling, free_area, 1e-4 * free_area);
 }
 
 TEST(Mesh, ClosedDoorLeavesAreWoodInTheirOpeningBelowDoorHeight) {
-  const World world = generate_world(test::square_loop_scene(14.0, 2.0, false));
+  const world::World world = world::generate_world(test::square_loop_scene(14.0, 2.0, false));
   int leaves = 0;
-  for (const Triangle& t : world.mesh.triangles) {
-    if (t.surface != SurfaceKind::kDoor) continue;
+  for (const world::Triangle& t : world.mesh.triangles) {
+    if (t.surface != world::SurfaceKind::kDoor) continue;
     ++leaves;
-    EXPECT_EQ(t.material, WallMaterial::kWoodDoor);
+    EXPECT_EQ(t.material, radio_model::WallMaterial::kWoodDoor);
     Eigen::Vector3f c = Eigen::Vector3f::Zero();
     for (auto v : t.v) c += world.mesh.positions_m[v] / 3;
     bool in_a_door = false;
-    for (const Door& d : world.plan.doors) {
+    for (const world::Door& d : world.plan.doors) {
       const Eigen::Vector2d f = c.head<2>().cast<double>() - d.center_m;
       const Eigen::Vector2d n(-d.along_wall.y(), d.along_wall.x());
       in_a_door =
@@ -72,15 +74,15 @@ TEST(Mesh, ClosedDoorLeavesAreWoodInTheirOpeningBelowDoorHeight) {
 }
 
 TEST(Mesh, WallTrianglesCarryTheirPhysicalWall) {
-  const World world = generate_world(test::square_loop_scene());
+  const world::World world = world::generate_world(test::square_loop_scene());
   const int max_id = world.plan.wall_count + static_cast<int>(world.plan.doors.size());
-  for (const Triangle& t : world.mesh.triangles) {
-    if (t.surface == SurfaceKind::kWall || t.surface == SurfaceKind::kDoor) {
+  for (const world::Triangle& t : world.mesh.triangles) {
+    if (t.surface == world::SurfaceKind::kWall || t.surface == world::SurfaceKind::kDoor) {
       EXPECT_GE(t.wall_id, 0);
       EXPECT_LT(t.wall_id, max_id);
     }
-    if (t.surface == SurfaceKind::kFloor || t.surface == SurfaceKind::kCeiling ||
-        t.surface == SurfaceKind::kLight || t.surface == SurfaceKind::kPoster) {
+    if (t.surface == world::SurfaceKind::kFloor || t.surface == world::SurfaceKind::kCeiling ||
+        t.surface == world::SurfaceKind::kLight || t.surface == world::SurfaceKind::kPoster) {
       EXPECT_EQ(t.wall_id, -1);
     }
   }

@@ -18,16 +18,16 @@ std::string read_all(const std::filesystem::path& p) {
 }
 
 TEST(PlanDrawing, WritesPngAndSvgAtomically) {
-  const World world = generate_world(test::square_loop_scene());
+  const world::World world = world::generate_world(test::square_loop_scene());
   const auto dir =
       std::filesystem::temp_directory_path() /
       ("wifislam_plan_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
   std::filesystem::create_directories(dir);
-  PlanDrawingOptions options;
+  world::PlanDrawingOptions options;
   options.title = "square loop";
   options.access_points_m = {{3, 3, 2.5}, {10, -3, 2.5}};
-  draw_floor_plan(world, dir / "plan.png", options);
-  draw_floor_plan(world, dir / "plan.svg", options);
+  world::draw_floor_plan(world, dir / "plan.png", options);
+  world::draw_floor_plan(world, dir / "plan.svg", options);
   const std::string png = read_all(dir / "plan.png");
   const std::string svg = read_all(dir / "plan.svg");
   ASSERT_GT(png.size(), 8u);
@@ -40,8 +40,8 @@ TEST(PlanDrawing, WritesPngAndSvgAtomically) {
 }
 
 TEST(PlanDrawing, UnwritablePathIsAnIoError) {
-  const World world = generate_world(test::square_loop_scene());
-  EXPECT_THROW(draw_floor_plan(world, "/nonexistent-dir/plan.png"), IoError);
+  const world::World world = world::generate_world(test::square_loop_scene());
+  EXPECT_THROW(world::draw_floor_plan(world, "/nonexistent-dir/plan.png"), IoError);
 }
 
 }  // namespace

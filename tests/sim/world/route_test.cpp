@@ -13,9 +13,9 @@ namespace wifislam::sim {
 namespace {
 
 TEST(Route, CornersAreRoundedWithTheTurnRadius) {
-  const Scene scene = test::square_loop_scene(14.0);
-  const FloorPlan plan = build_floor_plan(scene);
-  const RoutePath route = build_route(scene, plan);
+  const scene::Scene scene = test::square_loop_scene(14.0);
+  const world::FloorPlan plan = world::build_floor_plan(scene);
+  const world::RoutePath route = world::build_route(scene, plan);
   const double r = scene.route.turn_radius_m;
   // The corners at B, C and D (not the start/end node A) replace 2r of straight line each with a
   // quarter circle (sampled by chords, hence the tolerance).
@@ -36,10 +36,10 @@ TEST(Route, CornersAreRoundedWithTheTurnRadius) {
 }
 
 TEST(Route, DeadEndTurnsOnTheSpot) {
-  Scene scene = test::square_loop_scene(14.0);
+  scene::Scene scene = test::square_loop_scene(14.0);
   scene.route.nodes = {"A", "B", "A"};
-  const FloorPlan plan = build_floor_plan(scene);
-  const RoutePath route = build_route(scene, plan);
+  const world::FloorPlan plan = world::build_floor_plan(scene);
+  const world::RoutePath route = world::build_route(scene, plan);
   EXPECT_NEAR(route.length_m(), 28.0, 1e-9);
   int at_b = 0;
   for (const auto& p : route.points_m) at_b += (p - Eigen::Vector2d(14, 0)).norm() < 1e-12;
@@ -47,9 +47,10 @@ TEST(Route, DeadEndTurnsOnTheSpot) {
 }
 
 TEST(Route, RouteThatCannotKeepClearanceIsRejected) {
-  Scene scene = test::square_loop_scene(14.0, 0.5);  // 0.25 m from the centre line to the walls
+  scene::Scene scene =
+      test::square_loop_scene(14.0, 0.5);  // 0.25 m from the centre line to the walls
   try {
-    generate_world(scene);
+    world::generate_world(scene);
     FAIL() << "expected InvalidInputError";
   } catch (const InvalidInputError& e) {
     const std::string msg = e.what();
@@ -59,10 +60,10 @@ TEST(Route, RouteThatCannotKeepClearanceIsRejected) {
 }
 
 TEST(Route, RouteBetweenNodesWithoutCorridorIsRejected) {
-  Scene scene = test::square_loop_scene(14.0);
+  scene::Scene scene = test::square_loop_scene(14.0);
   scene.route.nodes = {"A", "B", "D"};
   try {
-    generate_world(scene);
+    world::generate_world(scene);
     FAIL() << "expected InvalidInputError";
   } catch (const InvalidInputError& e) {
     const std::string msg = e.what();

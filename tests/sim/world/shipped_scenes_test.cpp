@@ -23,11 +23,11 @@ class ShippedScene : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedScene, WorldMeetsPlanAndMeshInvariants) {
   const std::string path = std::string(WIFISLAM_SCENES_DIR) + "/" + GetParam() + ".yaml";
-  const Scene scene = load_scene_file(path);
-  const World world = generate_world(scene);
+  const scene::Scene scene = scene::load_scene_file(path);
+  const world::World world = world::generate_world(scene);
   test::expect_plan_invariants(scene, world);
   test::expect_mesh_invariants(world);
-  EXPECT_EQ(mesh_hash(world.mesh), mesh_hash(generate_world(scene).mesh));
+  EXPECT_EQ(world::mesh_hash(world.mesh), world::mesh_hash(world::generate_world(scene).mesh));
 }
 
 TEST(ShippedScenes, AllFivePaperAndStressScenesAreThere) {

@@ -12,21 +12,21 @@
 
 namespace wifislam::test {
 
-sim::Scene square_loop_scene(double side_m, double width_m, bool doors_open) {
-  sim::Scene s;
+sim::scene::Scene square_loop_scene(double side_m, double width_m, bool doors_open) {
+  sim::scene::Scene s;
   s.name = "square_loop";
   s.seed = 7;
   s.nodes = {{"A", {0, 0}}, {"B", {side_m, 0}}, {"C", {side_m, side_m}}, {"D", {0, side_m}}};
   const std::vector<std::pair<std::string, std::string>> legs = {
       {"A", "B"}, {"B", "C"}, {"C", "D"}, {"D", "A"}};
   for (const auto& [from, to] : legs) {
-    sim::Corridor c;
+    sim::scene::Corridor c;
     c.id = from + to;
     c.from = from;
     c.to = to;
     c.width_m = width_m;
-    sim::RoomRow outside;
-    outside.side = sim::RoomRow::Side::kRight;  // the loop runs counter-clockwise
+    sim::scene::RoomRow outside;
+    outside.side = sim::scene::RoomRow::Side::kRight;  // the loop runs counter-clockwise
     outside.from_m = 1.0;
     outside.to_m = side_m - 1.0;
     outside.room_length_m = 3.0;
@@ -38,15 +38,15 @@ sim::Scene square_loop_scene(double side_m, double width_m, bool doors_open) {
   }
   // Inside rooms along the south corridor; the first and last run into the side corridors and
   // must be dropped.
-  sim::RoomRow inside;
-  inside.side = sim::RoomRow::Side::kLeft;
+  sim::scene::RoomRow inside;
+  inside.side = sim::scene::RoomRow::Side::kLeft;
   inside.from_m = 0.0;
   inside.to_m = side_m;
   inside.room_length_m = 3.5;
   inside.depth_m = 3.0;
   inside.door_offset_m = 1.2;
   inside.doors_open = !doors_open;
-  inside.material = sim::WallMaterial::kConcrete;
+  inside.material = radio_model::WallMaterial::kConcrete;
   s.corridors[0].rooms.push_back(inside);
   s.route.nodes = {"A", "B", "C", "D", "A"};
   s.appearance.aliasing = 0.5;
@@ -56,7 +56,7 @@ sim::Scene square_loop_scene(double side_m, double width_m, bool doors_open) {
 
 namespace {
 
-Eigen::Vector2d left_of(const sim::WallFace2& f) {
+Eigen::Vector2d left_of(const sim::world::WallFace2& f) {
   const Eigen::Vector2d d = (f.b_m - f.a_m).normalized();
   return {-d.y(), d.x()};
 }
@@ -67,19 +67,19 @@ namespace {
 
 /// Every free-space piece holds the robot's space or is a room behind a closed door; returns the
 /// walkable piece's index.
-void expect_free_space_reachable(const sim::World& world, int& walkable_piece) {
-  const sim::FloorPlan& plan = world.plan;
+void expect_free_space_reachable(const sim::world::World& world, int& walkable_piece) {
+  const sim::world::FloorPlan& plan = world.plan;
   // Every free-space piece holds the robot's space or is a room behind a closed door.
   ASSERT_FALSE(world.route.points_m.empty());
-  walkable_piece = sim::regions_find(plan.free_space, world.route.points_m.front());
+  walkable_piece = sim::world::regions_find(plan.free_space, world.route.points_m.front());
   ASSERT_GE(walkable_piece, 0);
   for (std::size_t k = 0; k < plan.free_space.size(); ++k) {
     bool closed_room = false;
-    for (const sim::Room& r : plan.rooms) {
+    for (const sim::world::Room& r : plan.rooms) {
       Eigen::Vector2d c = Eigen::Vector2d::Zero();
       for (const auto& v : r.polygon_m) c += v;
       c /= static_cast<double>(r.polygon_m.size());
-      if (sim::region_contains(plan.free_space[k], c) && !plan.doors[r.door_index].open)
+      if (sim::world::region_contains(plan.free_space[k], c) && !plan.doors[r.door_index].open)
         closed_room = true;
     }
     EXPECT_TRUE(static_cast<int>(k) == walkable_piece || closed_room)
@@ -88,21 +88,21 @@ void expect_free_space_reachable(const sim::World& world, int& walkable_piece) {
   }
 }
 
-void expect_rooms_apart(const sim::FloorPlan& plan) {
+void expect_rooms_apart(const sim::world::FloorPlan& plan) {
   // Rooms: not in walkable space, not overlapping each other, each with its door.
   for (std::size_t i = 0; i < plan.rooms.size(); ++i) {
-    const sim::Room& r = plan.rooms[i];
+    const sim::world::Room& r = plan.rooms[i];
     Eigen::Vector2d lo = r.polygon_m[0], hi = r.polygon_m[0];
     for (const auto& v : r.polygon_m) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     for (double fx = 0.05; fx < 1; fx += 0.1) {
       for (double fy = 0.05; fy < 1; fy += 0.1) {
         const Eigen::Vector2d p = lo + (hi - lo).cwiseProduct(Eigen::Vector2d(fx, fy));
-        if (!sim::ring_contains(r.polygon_m, p)) continue;
-        EXPECT_FALSE(sim::regions_contain(plan.walkable, p))
+        if (!sim::world::ring_contains(r.polygon_m, p)) continue;
+        EXPECT_FALSE(sim::world::regions_contain(plan.walkable, p))
             << "room " << i << " overlaps a corridor";
         for (std::size_t j = 0; j < plan.rooms.size(); ++j)
           if (j != i) {
-            EXPECT_FALSE(sim::ring_contains(plan.rooms[j].polygon_m, p)) << i << " vs " << j;
+            EXPECT_FALSE(sim::world::ring_contains(plan.rooms[j].polygon_m, p)) << i << " vs " << j;
           }
       }
     }
@@ -111,14 +111,15 @@ void expect_rooms_apart(const sim::FloorPlan& plan) {
   }
 }
 
-void expect_wall_faces(const sim::Scene& scene, const sim::FloorPlan& plan) {
+void expect_wall_faces(const sim::scene::Scene& scene, const sim::world::FloorPlan& plan) {
   // Wall faces: free space (or the outside) on the left, wall on the right.
-  for (const sim::WallFace2& f : plan.wall_faces) {
+  for (const sim::world::WallFace2& f : plan.wall_faces) {
     const Eigen::Vector2d mid = 0.5 * (f.a_m + f.b_m), n = left_of(f);
     EXPECT_GT((f.b_m - f.a_m).norm(), 1e-6);
-    EXPECT_TRUE(sim::regions_contain(plan.walls, mid - 1e-3 * n)) << "wall not right of a face";
-    EXPECT_FALSE(sim::regions_contain(plan.walls, mid + 1e-3 * n)) << "wall left of a face";
-    EXPECT_EQ(sim::regions_contain(plan.free_space, mid + 1e-3 * n), !f.exterior);
+    EXPECT_TRUE(sim::world::regions_contain(plan.walls, mid - 1e-3 * n))
+        << "wall not right of a face";
+    EXPECT_FALSE(sim::world::regions_contain(plan.walls, mid + 1e-3 * n)) << "wall left of a face";
+    EXPECT_EQ(sim::world::regions_contain(plan.free_space, mid + 1e-3 * n), !f.exterior);
     EXPECT_GE(f.wall_id, 0);
     EXPECT_LT(f.wall_id, plan.wall_count);
     if (!f.exterior) {
@@ -129,48 +130,48 @@ void expect_wall_faces(const sim::Scene& scene, const sim::FloorPlan& plan) {
   }
 }
 
-void expect_doors(const sim::FloorPlan& plan, int walkable_piece) {
+void expect_doors(const sim::world::FloorPlan& plan, int walkable_piece) {
   // Doors: an open door's opening is free space joined to the corridor; a closed door's opening
   // is wall, and crossing it meets kWoodDoor faces only.
-  for (const sim::Door& d : plan.doors) {
+  for (const sim::world::Door& d : plan.doors) {
     const Eigen::Vector2d n(-d.along_wall.y(), d.along_wall.x());
     for (double fs : {-0.4, 0.0, 0.4}) {
       for (double fl : {-0.4, 0.0, 0.4}) {
         const Eigen::Vector2d p =
             d.center_m + fs * d.width_m * d.along_wall + fl * d.wall_thickness_m * n;
         if (d.open) {
-          EXPECT_TRUE(sim::regions_contain(plan.free_space, p)) << "open door not open";
-          EXPECT_FALSE(sim::regions_contain(plan.walls, p)) << "open door blocked";
-          EXPECT_EQ(sim::regions_find(plan.free_space, p), walkable_piece);
+          EXPECT_TRUE(sim::world::regions_contain(plan.free_space, p)) << "open door not open";
+          EXPECT_FALSE(sim::world::regions_contain(plan.walls, p)) << "open door blocked";
+          EXPECT_EQ(sim::world::regions_find(plan.free_space, p), walkable_piece);
         } else {
-          EXPECT_FALSE(sim::regions_contain(plan.free_space, p)) << "closed door is open";
-          EXPECT_TRUE(sim::regions_contain(plan.walls, p)) << "closed door has no leaf";
+          EXPECT_FALSE(sim::world::regions_contain(plan.free_space, p)) << "closed door is open";
+          EXPECT_TRUE(sim::world::regions_contain(plan.walls, p)) << "closed door has no leaf";
         }
       }
     }
     if (!d.open) {
       for (double side : {-1.0, 1.0}) {
         int face = -1;
-        sim::nearest_wall_distance_m(
+        sim::world::nearest_wall_distance_m(
             plan, d.center_m + side * (0.5 * d.wall_thickness_m + 0.01) * n, &face);
         ASSERT_GE(face, 0);
-        EXPECT_EQ(plan.wall_faces[face].material, sim::WallMaterial::kWoodDoor);
+        EXPECT_EQ(plan.wall_faces[face].material, radio_model::WallMaterial::kWoodDoor);
       }
     }
   }
 }
 
-void expect_route(const sim::Scene& scene, const sim::World& world) {
-  const sim::FloorPlan& plan = world.plan;
+void expect_route(const sim::scene::Scene& scene, const sim::world::World& world) {
+  const sim::world::FloorPlan& plan = world.plan;
   // The route: dense, inside walkable space, clear of the walls.
-  const sim::RoutePath& route = world.route;
+  const sim::world::RoutePath& route = world.route;
   ASSERT_GE(route.points_m.size(), 2u);
   ASSERT_EQ(route.arc_length_m.size(), route.points_m.size());
   ASSERT_EQ(route.heading_rad.size(), route.points_m.size());
   for (std::size_t k = 0; k < route.points_m.size(); ++k) {
     const Eigen::Vector2d& p = route.points_m[k];
-    EXPECT_TRUE(sim::regions_contain(plan.walkable, p)) << "route point " << k << " outside";
-    EXPECT_GE(sim::nearest_wall_distance_m(plan, p), scene.route.min_wall_clearance_m - 1e-9)
+    EXPECT_TRUE(sim::world::regions_contain(plan.walkable, p)) << "route point " << k << " outside";
+    EXPECT_GE(sim::world::nearest_wall_distance_m(plan, p), scene.route.min_wall_clearance_m - 1e-9)
         << "route point " << k << " too close to a wall";
     if (k == 0) continue;
     const Eigen::Vector2d step = p - route.points_m[k - 1];
@@ -187,8 +188,8 @@ void expect_route(const sim::Scene& scene, const sim::World& world) {
 
 }  // namespace
 
-void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
-  const sim::FloorPlan& plan = world.plan;
+void expect_plan_invariants(const sim::scene::Scene& scene, const sim::world::World& world) {
+  const sim::world::FloorPlan& plan = world.plan;
   ASSERT_EQ(plan.walkable.size(), 1u) << "walkable space must be one connected piece";
   ASSERT_FALSE(plan.wall_faces.empty());
   int walkable_piece = -1;
@@ -203,9 +204,9 @@ void expect_plan_invariants(const sim::Scene& scene, const sim::World& world) {
   expect_route(scene, world);
 }
 
-void expect_mesh_invariants(const sim::World& world) {
-  const sim::Mesh& mesh = world.mesh;
-  const sim::FloorPlan& plan = world.plan;
+void expect_mesh_invariants(const sim::world::World& world) {
+  const sim::world::Mesh& mesh = world.mesh;
+  const sim::world::FloorPlan& plan = world.plan;
   ASSERT_FALSE(mesh.triangles.empty());
   ASSERT_EQ(mesh.normals.size(), mesh.positions_m.size());
   ASSERT_EQ(mesh.uv_m.size(), mesh.positions_m.size());
@@ -216,7 +217,7 @@ void expect_mesh_invariants(const sim::World& world) {
   };
   std::map<std::pair<Key, Key>, int> directed;
   int bad_area = 0, bad_normal = 0, bad_side = 0, bad_uv = 0;
-  for (const sim::Triangle& t : mesh.triangles) {
+  for (const sim::world::Triangle& t : mesh.triangles) {
     const Eigen::Vector3f& p0 = mesh.positions_m[t.v[0]];
     const Eigen::Vector3f& p1 = mesh.positions_m[t.v[1]];
     const Eigen::Vector3f& p2 = mesh.positions_m[t.v[2]];
@@ -227,19 +228,20 @@ void expect_mesh_invariants(const sim::World& world) {
     if (std::abs(n.norm() - 1) > 1e-5 || mesh.normals[t.v[1]] != mesh.normals[t.v[0]] ||
         mesh.normals[t.v[2]] != mesh.normals[t.v[0]] || cross.normalized().dot(n) < 0.999)
       ++bad_normal;
-    const bool solid = t.surface == sim::SurfaceKind::kWall ||
-                       t.surface == sim::SurfaceKind::kDoor ||
-                       t.surface == sim::SurfaceKind::kWallTop;
+    const bool solid = t.surface == sim::world::SurfaceKind::kWall ||
+                       t.surface == sim::world::SurfaceKind::kDoor ||
+                       t.surface == sim::world::SurfaceKind::kWallTop;
     if (solid) {
       const Eigen::Vector3f* p[3] = {&p0, &p1, &p2};
       for (int i = 0; i < 3; ++i) ++directed[{key(*p[i]), key(*p[(i + 1) % 3])}];
     }
-    if (t.surface == sim::SurfaceKind::kWall || t.surface == sim::SurfaceKind::kDoor) {
+    if (t.surface == sim::world::SurfaceKind::kWall ||
+        t.surface == sim::world::SurfaceKind::kDoor) {
       // A point just in front of the face is out of the wall, one just behind it is in.
       const Eigen::Vector2d c = ((p0 + p1 + p2) / 3).head<2>().cast<double>();
       const Eigen::Vector2d n2 = n.head<2>();
-      if (sim::regions_contain(plan.walls, c + 0.01 * n2) ||
-          !sim::regions_contain(plan.walls, c - 0.01 * n2))
+      if (sim::world::regions_contain(plan.walls, c + 0.01 * n2) ||
+          !sim::world::regions_contain(plan.walls, c - 0.01 * n2))
         ++bad_side;
       // Texture coordinates in metres: uv distances equal 3-D distances.
       for (int i = 0; i < 3; ++i) {
@@ -249,8 +251,8 @@ void expect_mesh_invariants(const sim::World& world) {
         if (std::abs(d3 - duv) > 1e-3) ++bad_uv;
       }
     }
-    if (t.surface == sim::SurfaceKind::kFloor && n.z() < 0.999) ++bad_normal;
-    if (t.surface == sim::SurfaceKind::kCeiling && n.z() > -0.999) ++bad_normal;
+    if (t.surface == sim::world::SurfaceKind::kFloor && n.z() < 0.999) ++bad_normal;
+    if (t.surface == sim::world::SurfaceKind::kCeiling && n.z() > -0.999) ++bad_normal;
   }
   EXPECT_EQ(bad_area, 0) << "degenerate triangles";
   EXPECT_EQ(bad_normal, 0) << "normals inconsistent with winding";

@@ -26,11 +26,11 @@
 namespace wifislam {
 namespace {
 
-std::unique_ptr<slam::SlamSystem> run_orbslam(const sim::Scene& scene, bool wifi,
+std::unique_ptr<slam::SlamSystem> run_orbslam(const sim::scene::Scene& scene, bool wifi,
                                               double wifi_similarity = 0.0) {
-  sim::GenerateOptions generate;
+  sim::generate::GenerateOptions generate;
   generate.fps = 2.0;
-  sim::GeneratorStream stream(scene, generate);
+  sim::generate::GeneratorStream stream(scene, generate);
   slam::SlamOptions options;
   options.frontend = "orbslam";
   options.wifi.enabled = wifi;
@@ -141,10 +141,10 @@ TEST(OrbslamRetrieval, TheBestScoringFirstLapFrameIsTheSamePlace) {
   std::string yaml = test::small_loop_scene_yaml();
   const std::string route = "nodes: [A, B, C, D, A, B]";
   yaml.replace(yaml.find(route), route.size(), "nodes: [A, B, C, D, A, B, C, D, A]");
-  const sim::Scene scene = sim::load_scene_yaml(yaml, "small_loop_two_laps");
-  sim::GenerateOptions generate;
+  const sim::scene::Scene scene = sim::scene::load_scene_yaml(yaml, "small_loop_two_laps");
+  sim::generate::GenerateOptions generate;
   generate.fps = 1.0;
-  sim::GeneratorStream stream(scene, generate);
+  sim::generate::GeneratorStream stream(scene, generate);
   slam::FeatureOptions features;
   const slam::OrbFeatureExtractor orb(features, stream.intrinsics());
   const auto vocabulary = slam::bow::load_vocabulary("");

@@ -22,9 +22,9 @@ namespace {
 class RenderedWorld : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    scene_ = new sim::Scene(test::small_loop_scene());
-    world_ = new sim::World(sim::generate_world(*scene_));
-    renderer_ = new sim::RgbdRenderer(scene_->sensors.camera.intrinsics);
+    scene_ = new sim::scene::Scene(test::small_loop_scene());
+    world_ = new sim::world::World(sim::world::generate_world(*scene_));
+    renderer_ = new sim::render::RgbdRenderer(scene_->sensors.camera.intrinsics);
     renderer_->set_world(*world_, *scene_);
   }
   static void TearDownTestSuite() {
@@ -35,7 +35,7 @@ class RenderedWorld : public ::testing::Test {
 
   /// Noise-free frame: the renderer's colour and ideal depth.
   static slam::FrameFeatures features_at(const Pose& camera_to_world, std::int64_t index) {
-    const sim::RenderedView view = renderer_->render(camera_to_world);
+    const sim::render::RenderedView view = renderer_->render(camera_to_world);
     RgbdFrame frame;
     frame.index = index;
     frame.rgb = view.color_bgr;
@@ -50,14 +50,14 @@ class RenderedWorld : public ::testing::Test {
                                    scene_->sensors.camera.height_m);
   }
 
-  static sim::Scene* scene_;
-  static sim::World* world_;
-  static sim::RgbdRenderer* renderer_;
+  static sim::scene::Scene* scene_;
+  static sim::world::World* world_;
+  static sim::render::RgbdRenderer* renderer_;
 };
 
-sim::Scene* RenderedWorld::scene_ = nullptr;
-sim::World* RenderedWorld::world_ = nullptr;
-sim::RgbdRenderer* RenderedWorld::renderer_ = nullptr;
+sim::scene::Scene* RenderedWorld::scene_ = nullptr;
+sim::world::World* RenderedWorld::world_ = nullptr;
+sim::render::RgbdRenderer* RenderedWorld::renderer_ = nullptr;
 
 TEST_F(RenderedWorld, RecoversKnownRelativePoseToOneCentimetreAndHalfADegree) {
   // Along the south corridor, 0.3 m forward with a 6 degree turn and a small sideways step.
