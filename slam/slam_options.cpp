@@ -90,7 +90,7 @@ void validate(const SlamOptions& o) {
   require(o.rtabmap.rehearsal_similarity >= 0, "rehearsal_similarity must be >= 0");
   require(o.rtabmap.max_features >= 1, "kp_max_features must be >= 1");
   require(o.rtabmap.nndr_ratio > 0 && o.rtabmap.nndr_ratio <= 1, "kp_nndr_ratio must be in (0, 1]");
-  rtabmap::parse_prediction_lc("bayes_prediction_lc", o.rtabmap.prediction_lc);
+  frontend::rtabmap::parse_prediction_lc("bayes_prediction_lc", o.rtabmap.prediction_lc);
   require(o.rtabmap.virtual_place_prior >= 0 && o.rtabmap.virtual_place_prior <= 1,
           "virtual_place_prior must be in [0, 1]");
   require(o.rtabmap.loop_threshold >= 0 && o.rtabmap.loop_threshold <= 1,

@@ -56,13 +56,13 @@ struct SlamOptions {
   wifi::WifiOptions wifi;
   /// Seed of every random draw of the run (e.g. RGBD-SLAM's random keyframes).
   std::uint64_t seed = 1;
-  FeatureOptions features;
-  VisualTransformOptions transform;
+  feature::FeatureOptions features;
+  solve::VisualTransformOptions transform;
   TrackingOptions tracking;
-  RgbdslamOptions rgbdslam;
-  RtabmapOptions rtabmap;
-  OrbslamOptions orbslam;
-  PoseGraphOptions graph;
+  frontend::RgbdslamOptions rgbdslam;
+  frontend::RtabmapOptions rtabmap;
+  frontend::OrbslamOptions orbslam;
+  optimize::PoseGraphOptions graph;
 };
 
 /// Every settable option of `o` (core/option_table.hpp): its flat key (the paper's, RGBDSLAMv2's,
@@ -132,7 +132,7 @@ void visit_options(V& v, SlamOptions& o) {
   v.integer("wifi_long_term_candidates", o.rgbdslam.wifi_long_term_candidates,
             "rgbdslam with Wi-Fi: long-term candidates from similar clusters, best signature first "
             "(-1 = min_sampled_candidates, 0 = all)");
-  v.choice("robust_kernel", o.rgbdslam.robust_kernel, robust_kernel_kinds(),
+  v.choice("robust_kernel", o.rgbdslam.robust_kernel, optimize::robust_kernel_kinds(),
            "rgbdslam: kernel on every edge: none, huber (RGBDSLAMv2), cauchy");
   v.number("robust_kernel_chi2", o.rgbdslam.robust_kernel_chi2,
            "rgbdslam: chi^2 where the kernel leaves the quadratic (4 x the last pruning stage)");
@@ -192,7 +192,7 @@ void visit_options(V& v, SlamOptions& o) {
   v.number("time_threshold_ms", o.rtabmap.time_threshold_ms,
            "rtabmap: Rtabmap/TimeThr (ms), over it WM nodes move to LTM; inf = off (RTAB-Map: 0)",
            options::Infinity::kAllowed);
-  v.choice("time_source", o.rtabmap.time_source, rtabmap_time_sources(),
+  v.choice("time_source", o.rtabmap.time_source, frontend::rtabmap_time_sources(),
            "rtabmap: what TimeThr is compared with: cost (deterministic cost model) or wall");
   v.number("cost_ms_per_node", o.rtabmap.cost.ms_per_node, "rtabmap cost model: fixed ms per node");
   v.number("cost_ms_per_word_comparison", o.rtabmap.cost.ms_per_word_comparison,

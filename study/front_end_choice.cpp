@@ -13,7 +13,7 @@
 namespace wifislam::study {
 
 std::string system_front_end(const std::string& value) {
-  const std::vector<std::string> names = slam::front_end_names();
+  const std::vector<std::string> names = slam::frontend::front_end_names();
   if (interop::is_external_frontend(value) ||
       std::find(names.begin(), names.end(), value) != names.end()) {
     return value;
@@ -30,10 +30,10 @@ std::optional<std::string> front_end_problem(const std::string& frontend) {
       return std::string(e.what());
     }
   }
-  const std::vector<std::string> names = slam::front_end_names();
+  const std::vector<std::string> names = slam::frontend::front_end_names();
   if (std::find(names.begin(), names.end(), frontend) != names.end()) return std::nullopt;
   return fmt::format("unknown front end '{}' (known: {}; or external:NAME|FILE, shipped: {})",
-                     frontend, slam::front_end_name_list(),
+                     frontend, slam::frontend::front_end_name_list(),
                      fmt::join(interop::shipped_system_names(), ", "));
 }
 

@@ -46,14 +46,14 @@ class ImageCollector {
 
  private:
   static constexpr std::int64_t kSlackNs = 1'000'000;  // stamps a millisecond early still count
-  static slam::FeatureOptions features(const LocalisationDataOptions& options) {
-    slam::FeatureOptions f;
+  static slam::feature::FeatureOptions features(const LocalisationDataOptions& options) {
+    slam::feature::FeatureOptions f;
     f.max_keypoints = options.max_keypoints;
     return f;
   }
   std::int64_t interval_ns_;
   std::optional<std::int64_t> last_ns_;
-  slam::OrbFeatureExtractor orb_;
+  slam::feature::OrbFeatureExtractor orb_;
   slam::wifi::PauseSignatureTracker tracker_;
 };
 

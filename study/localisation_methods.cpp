@@ -220,7 +220,7 @@ void run_wifi_clusters(const Context& c, const FabMap& fabmap, LocalisationResul
       if (known != cluster_of_pause.end()) {
         id = known->second;
       } else {  // a new pause: cluster management as the SLAM Wi-Fi module does it
-        id = clusters.assign(static_cast<slam::KeyframeId>(i), signature,
+        id = clusters.assign(static_cast<slam::graph::KeyframeId>(i), signature,
                              clusters.similar_clusters(*signature), {});
         cluster_of_pause.emplace(signature.get(), id);
       }

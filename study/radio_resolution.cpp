@@ -93,9 +93,9 @@ RadioResolution radio_resolution(const std::vector<PauseSample>& pauses,
   for (std::size_t k = 0; k < pauses.size(); ++k) {
     auto signature = std::make_shared<const slam::wifi::WifiSignature>(pauses[k].signature);
     const auto similar = clusters.similar_clusters(*signature);
-    std::vector<slam::KeyframeId> connected;
-    if (k > 0) connected.push_back(static_cast<slam::KeyframeId>(k - 1));
-    clusters.assign(static_cast<slam::KeyframeId>(k), signature, similar, connected);
+    std::vector<slam::graph::KeyframeId> connected;
+    if (k > 0) connected.push_back(static_cast<slam::graph::KeyframeId>(k - 1));
+    clusters.assign(static_cast<slam::graph::KeyframeId>(k), signature, similar, connected);
   }
   r.clusters = static_cast<int>(clusters.clusters().size());
   return r;

@@ -35,16 +35,16 @@ class RecordedDataset::Replay final : public SensorStream {
 RecordedDataset::RecordedDataset(std::shared_ptr<const sim::site::Site> site,
                                  const std::filesystem::path& dataset_dir,
                                  sim::generate::GenerateOptions generate,
-                                 std::vector<slam::FeatureOptions> features, int threads)
+                                 std::vector<slam::feature::FeatureOptions> features, int threads)
     : dataset_dir_(dataset_dir),
       facts_(sim::generate::generated_stream_facts(
           *site, fmt::format("dataset {} (frames recorded as it was generated, features "
                              "extracted once)",
                              dataset_dir.filename().string()))) {
   if (generate.on_event) throw std::invalid_argument("RecordedDataset sets on_event itself");
-  for (const slam::FeatureOptions& options : features) {
+  for (const slam::feature::FeatureOptions& options : features) {
     if (this->features(options) == nullptr) {
-      stores_.push_back(std::make_unique<slam::FeatureStore>(options, facts_.intrinsics));
+      stores_.push_back(std::make_unique<slam::feature::FeatureStore>(options, facts_.intrinsics));
     }
   }
   // Frames wait here for extraction; the generation waits once `window` frames are in flight,
@@ -82,7 +82,8 @@ std::unique_ptr<SensorStream> RecordedDataset::stream() const {
   return std::make_unique<Replay>(*this);
 }
 
-const slam::FeatureStore* RecordedDataset::features(const slam::FeatureOptions& options) const {
+const slam::feature::FeatureStore* RecordedDataset::features(
+    const slam::feature::FeatureOptions& options) const {
   for (const auto& store : stores_)
     if (store->options() == options) return store.get();
   return nullptr;
@@ -106,9 +107,10 @@ void run_recorded(const RecordedDataset& dataset, std::vector<StreamedRun>& runs
     try {
       StreamedRun& run = runs[i];
       const auto stream = dataset.stream();
-      const auto system =
-          slam::run_slam(*stream, run.slam, run.summary, {}, dataset.features(run.slam.features));
-      slam::write_run_folder(run.run_dir, *system, run.summary, /*overwrite=*/false, run.run_info);
+      const auto system = slam::system::run_slam(*stream, run.slam, run.summary, {},
+                                                 dataset.features(run.slam.features));
+      slam::io::write_run_folder(run.run_dir, *system, run.summary, /*overwrite=*/false,
+                                 run.run_info);
       if (on_run_done) on_run_done(i);
     } catch (...) {
       std::lock_guard lock(mutex);

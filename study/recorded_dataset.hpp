@@ -33,7 +33,7 @@ class RecordedDataset {
   /// `threads` threads while the generation goes on. Rethrows the generation's failure.
   RecordedDataset(std::shared_ptr<const sim::site::Site> site,
                   const std::filesystem::path& dataset_dir, sim::generate::GenerateOptions generate,
-                  std::vector<slam::FeatureOptions> features, int threads);
+                  std::vector<slam::feature::FeatureOptions> features, int threads);
   ~RecordedDataset();
   RecordedDataset(const RecordedDataset&) = delete;
   RecordedDataset& operator=(const RecordedDataset&) = delete;
@@ -43,14 +43,14 @@ class RecordedDataset {
   /// A stream of the recorded events, for one run (frames carry no images).
   std::unique_ptr<SensorStream> stream() const;
   /// The features made with `options`, or nullptr when they were not extracted.
-  const slam::FeatureStore* features(const slam::FeatureOptions& options) const;
+  const slam::feature::FeatureStore* features(const slam::feature::FeatureOptions& options) const;
 
  private:
   class Replay;
   std::filesystem::path dataset_dir_;
   SensorStreamFacts facts_;
   std::vector<SensorEvent> events_;
-  std::vector<std::unique_ptr<slam::FeatureStore>> stores_;
+  std::vector<std::unique_ptr<slam::feature::FeatureStore>> stores_;
   sim::generate::GenerateSummary summary_;
 };
 

@@ -61,10 +61,11 @@ SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   input_options.fps = request.fps;
   input_options.scene_seed = request.scene_seed;
   sim::generate::SensorInput input = sim::generate::open_sensor_input(request.input, input_options);
-  slam::RunSummary summary;
-  const std::unique_ptr<slam::SlamSystem> system =
-      slam::run_slam(*input.stream, request.options, summary, request.on_frame);
-  slam::write_run_folder(request.output, *system, summary, replace, {{"input", input.description}});
+  slam::system::RunSummary summary;
+  const std::unique_ptr<slam::system::SlamSystem> system =
+      slam::system::run_slam(*input.stream, request.options, summary, request.on_frame);
+  slam::io::write_run_folder(request.output, *system, summary, replace,
+                             {{"input", input.description}});
   result.summary = std::move(summary);
   return result;
 }

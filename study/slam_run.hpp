@@ -32,7 +32,7 @@ struct SlamRunRequest {
 
 struct SlamRunResult {
   std::filesystem::path run_dir;                       // absolute, normalised
-  std::optional<slam::RunSummary> summary;             // our front ends
+  std::optional<slam::system::RunSummary> summary;     // our front ends
   std::optional<interop::ExternalRunResult> external;  // an external system (always ok: see below)
   std::string external_system_file;                    // the system file an external run used
 };

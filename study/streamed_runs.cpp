@@ -70,8 +70,9 @@ class RunGroup {
     StreamedRun& run = runs_[members_[slot]];
     try {
       const auto system =
-          slam::run_slam(fanout_.consumer(static_cast<int>(slot)), run.slam, run.summary);
-      slam::write_run_folder(run.run_dir, *system, run.summary, /*overwrite=*/false, run.run_info);
+          slam::system::run_slam(fanout_.consumer(static_cast<int>(slot)), run.slam, run.summary);
+      slam::io::write_run_folder(run.run_dir, *system, run.summary, /*overwrite=*/false,
+                                 run.run_info);
       if (on_run_done_) on_run_done_(members_[slot]);
     } catch (...) {
       errors_[slot] = std::current_exception();

@@ -27,7 +27,7 @@ struct StreamedRun {
   slam::SlamOptions slam;
   std::filesystem::path run_dir;  // written by slam::write_run_folder; must not exist
   nlohmann::json run_info = nlohmann::json::object();  // merged into run.json ("input": ...)
-  slam::RunSummary summary;                            // filled in by generate_with_runs
+  slam::system::RunSummary summary;                    // filled in by generate_with_runs
 };
 
 /// Generates `site`'s dataset into `dataset_dir` (generate.on_event must be unset: this sets it)

@@ -107,7 +107,7 @@ WIFISLAM_COMMAND(compare, 65) {
       "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 26 min on 2 cores)");
   app->add_option(
          "--frontend", args->frontend,
-         "Front end (" + wifislam::slam::front_end_name_list() +
+         "Front end (" + wifislam::slam::frontend::front_end_name_list() +
              "), or external:NAME|FILE, another program (docs/external_systems.md);\n"
              "several side by side: --sweep frontend=rgbdslam,external:opencv_rgbd_odometry")
       ->capture_default_str();

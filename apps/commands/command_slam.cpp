@@ -76,7 +76,7 @@ WIFISLAM_COMMAND(slam, 60) {
   app->add_option(
          "--frontend", args->frontend,
          "SLAM front end: memory, loop-closure candidates and acceptance (" +
-             wifislam::slam::front_end_name_list() +
+             wifislam::slam::frontend::front_end_name_list() +
              "), or external:NAME|FILE, another program run from its system file\n"
              "on a dataset folder (shipped: " +
              fmt::format("{}", fmt::join(wifislam::interop::shipped_system_names(), ", ")) +

@@ -50,14 +50,14 @@ sim::generate::SensorInput open_input(const TrainArgs& args, const fs::path& inp
 /// every --every-th frame (at most --max-frames frames an input).
 std::vector<cv::Mat> training_descriptors(const TrainArgs& args,
                                           const std::vector<fs::path>& inputs) {
-  slam::FeatureOptions features;
+  slam::feature::FeatureOptions features;
   features.max_keypoints = args.max_keypoints;
   std::vector<cv::Mat> images;
   for (const fs::path& input : inputs) {
     const sim::generate::SensorInput opened = open_input(args, input);
     SensorStream* stream = opened.stream.get();
     const int every = opened.is_scene ? 1 : args.every;
-    const slam::OrbFeatureExtractor orb(features, stream->intrinsics());
+    const slam::feature::OrbFeatureExtractor orb(features, stream->intrinsics());
     std::int64_t frames = 0, used = 0;
     while (auto event = stream->next()) {
       const auto* frame = std::get_if<RgbdFrame>(&*event);

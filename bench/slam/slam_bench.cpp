@@ -48,8 +48,8 @@ void BM_RgbdslamVersusBareOrb(benchmark::State& state) {
     generate.fps = fps;
     generate.max_frames = max_frames;
     sim::generate::GeneratorStream stream(scene, generate);
-    slam::SlamSystem system(options, {stream.intrinsics(), stream.camera_in_base(),
-                                      stream.has_wifi(), stream.has_odometry()});
+    slam::system::SlamSystem system(options, {stream.intrinsics(), stream.camera_in_base(),
+                                              stream.has_wifi(), stream.has_odometry()});
     const cv::Ptr<cv::ORB> orb = cv::ORB::create(
         options.features.max_keypoints, static_cast<float>(options.features.scale_factor),
         options.features.pyramid_levels, 31, 0, 2, cv::ORB::HARRIS_SCORE, 31,
@@ -71,7 +71,7 @@ void BM_RgbdslamVersusBareOrb(benchmark::State& state) {
       system.process(*event);
     }
     system.finish();
-    const slam::Instrumentation& inst = system.instrumentation();
+    const slam::util::Instrumentation& inst = system.instrumentation();
     const double pipeline_s = inst.seconds(slam::module::kTotal);
     state.counters["frames"] = static_cast<double>(frames);
     state.counters["keyframes"] = static_cast<double>(system.graph().node_count());

@@ -8,8 +8,8 @@
 
 namespace wifislam::slam::bow {
 
-std::vector<PackedDescriptor> pack_descriptors(const cv::Mat& descriptors) {
-  std::vector<PackedDescriptor> out(static_cast<std::size_t>(descriptors.rows));
+std::vector<match::PackedDescriptor> pack_descriptors(const cv::Mat& descriptors) {
+  std::vector<match::PackedDescriptor> out(static_cast<std::size_t>(descriptors.rows));
   for (int r = 0; r < descriptors.rows; ++r) std::memcpy(out[r].data(), descriptors.ptr(r), 32);
   return out;
 }
@@ -36,8 +36,8 @@ int count_bow_matches(const BowKeyframe& a, const BowKeyframe& b, const BowMatch
       int best_b = -1;
       for (int fb : ib->second) {
         if (b_taken[static_cast<std::size_t>(fb)]) continue;
-        const int d = hamming_distance(a.descriptors[static_cast<std::size_t>(fa)],
-                                       b.descriptors[static_cast<std::size_t>(fb)]);
+        const int d = match::hamming_distance(a.descriptors[static_cast<std::size_t>(fa)],
+                                              b.descriptors[static_cast<std::size_t>(fb)]);
         if (d < best) {
           second = best;
           best = d;

@@ -19,7 +19,7 @@ namespace wifislam::slam::bow {
 
 /// What SearchByBoW needs of one keyframe.
 struct BowKeyframe {
-  std::vector<PackedDescriptor> descriptors;
+  std::vector<match::PackedDescriptor> descriptors;
   std::vector<float> angles_deg;  // cv::KeyPoint::angle, -1 when not computed
   FeatureVector direct_index;
 };
@@ -34,6 +34,6 @@ struct BowMatchOptions {
 int count_bow_matches(const BowKeyframe& a, const BowKeyframe& b, const BowMatchOptions& options);
 
 /// Packs an ORB descriptor matrix (CV_8U, 32 bytes a row).
-std::vector<PackedDescriptor> pack_descriptors(const cv::Mat& descriptors);
+std::vector<match::PackedDescriptor> pack_descriptors(const cv::Mat& descriptors);
 
 }  // namespace wifislam::slam::bow

@@ -28,28 +28,28 @@
 namespace wifislam::slam::bow {
 
 struct LoopCandidate {
-  KeyframeId keyframe = -1;
+  graph::KeyframeId keyframe = -1;
   double score = 0.0;              // its own L1 score with the query
   double accumulated_score = 0.0;  // its group's
 };
 
 /// The covisible neighbours of a keyframe to group with it (best first).
-using NeighbourFunction = std::function<std::vector<KeyframeId>(KeyframeId)>;
+using NeighbourFunction = std::function<std::vector<graph::KeyframeId>(graph::KeyframeId)>;
 
 class KeyframeDatabase {
  public:
   /// Adds a keyframe's BoW vector to the inverted index. A keyframe is added once.
-  void add(KeyframeId keyframe, const BowVector& vector);
-  void erase(KeyframeId keyframe);
+  void add(graph::KeyframeId keyframe, const BowVector& vector);
+  void erase(graph::KeyframeId keyframe);
 
-  bool contains(KeyframeId keyframe) const { return vectors_.count(keyframe) > 0; }
+  bool contains(graph::KeyframeId keyframe) const { return vectors_.count(keyframe) > 0; }
   std::size_t size() const { return vectors_.size(); }
-  const BowVector& vector_of(KeyframeId keyframe) const { return vectors_.at(keyframe); }
+  const BowVector& vector_of(graph::KeyframeId keyframe) const { return vectors_.at(keyframe); }
   /// Keyframes holding `word`, ascending.
-  std::vector<KeyframeId> keyframes_with(WordId word) const;
+  std::vector<graph::KeyframeId> keyframes_with(WordId word) const;
 
   std::vector<LoopCandidate> loop_candidates(const BowVector& query,
-                                             const std::vector<KeyframeId>& connected,
+                                             const std::vector<graph::KeyframeId>& connected,
                                              double min_score,
                                              const NeighbourFunction& neighbours) const;
 
@@ -60,10 +60,10 @@ class KeyframeDatabase {
  private:
   friend std::vector<LoopCandidate> loop_candidates(const std::vector<const KeyframeDatabase*>&,
                                                     const BowVector&,
-                                                    const std::vector<KeyframeId>&, double,
+                                                    const std::vector<graph::KeyframeId>&, double,
                                                     const NeighbourFunction&, std::size_t*);
-  std::map<WordId, std::vector<KeyframeId>> inverted_;  // each list ascending
-  std::map<KeyframeId, BowVector> vectors_;
+  std::map<WordId, std::vector<graph::KeyframeId>> inverted_;  // each list ascending
+  std::map<graph::KeyframeId, BowVector> vectors_;
   mutable std::size_t last_postings_read_ = 0;
 };
 
@@ -73,7 +73,7 @@ class KeyframeDatabase {
 /// posting-list entries read.
 std::vector<LoopCandidate> loop_candidates(const std::vector<const KeyframeDatabase*>& databases,
                                            const BowVector& query,
-                                           const std::vector<KeyframeId>& connected,
+                                           const std::vector<graph::KeyframeId>& connected,
                                            double min_score, const NeighbourFunction& neighbours,
                                            std::size_t* postings_read = nullptr);
 

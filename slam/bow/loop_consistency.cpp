@@ -4,17 +4,17 @@
 
 namespace wifislam::slam::bow {
 
-std::vector<KeyframeId> LoopConsistency::update(
-    const std::vector<std::pair<KeyframeId, std::set<KeyframeId>>>& candidates) {
-  std::vector<KeyframeId> enough;
-  std::vector<std::pair<std::set<KeyframeId>, int>> current;
+std::vector<graph::KeyframeId> LoopConsistency::update(
+    const std::vector<std::pair<graph::KeyframeId, std::set<graph::KeyframeId>>>& candidates) {
+  std::vector<graph::KeyframeId> enough;
+  std::vector<std::pair<std::set<graph::KeyframeId>, int>> current;
   std::vector<bool> extended(kept_.size(), false);
   for (const auto& [candidate, group] : candidates) {
     bool enough_consistent = false, consistent_with_some = false;
     for (std::size_t g = 0; g < kept_.size(); ++g) {
-      const std::set<KeyframeId>& previous = kept_[g].first;
+      const std::set<graph::KeyframeId>& previous = kept_[g].first;
       const bool shares = std::any_of(group.begin(), group.end(),
-                                      [&](KeyframeId k) { return previous.count(k) > 0; });
+                                      [&](graph::KeyframeId k) { return previous.count(k) > 0; });
       if (!shares) continue;
       consistent_with_some = true;
       const int count = kept_[g].second + 1;

@@ -21,8 +21,8 @@ class LoopConsistency {
 
   /// One query's candidates, each with its group (the candidate and its covisible keyframes).
   /// Returns the candidates consistent enough to be verified, in the order given.
-  std::vector<KeyframeId> update(
-      const std::vector<std::pair<KeyframeId, std::set<KeyframeId>>>& candidates);
+  std::vector<graph::KeyframeId> update(
+      const std::vector<std::pair<graph::KeyframeId, std::set<graph::KeyframeId>>>& candidates);
 
   /// Forgets every kept group (ORB-SLAM2 does after a loop is closed or a query is skipped).
   void clear() { kept_.clear(); }
@@ -30,7 +30,7 @@ class LoopConsistency {
 
  private:
   int threshold_;
-  std::vector<std::pair<std::set<KeyframeId>, int>> kept_;  // group, consistency count
+  std::vector<std::pair<std::set<graph::KeyframeId>, int>> kept_;  // group, consistency count
 };
 
 }  // namespace wifislam::slam::bow

@@ -27,8 +27,8 @@ constexpr std::size_t kHeaderBytes = 8 + 6 * 4 + 8;
 constexpr std::size_t kNodeBytes = 4 + 32 + 8 + 4;
 constexpr std::size_t kChecksumBytes = 64;
 
-PackedDescriptor packed_row(const cv::Mat& descriptors, int row) {
-  PackedDescriptor out{};
+match::PackedDescriptor packed_row(const cv::Mat& descriptors, int row) {
+  match::PackedDescriptor out{};
   std::memcpy(out.data(), descriptors.ptr(row), 32);
   return out;
 }
@@ -41,15 +41,15 @@ void check_descriptors(const cv::Mat& m) {
 
 /// Bitwise majority of the members (DBoW2 FORB::meanValue: a bit is set when at least half of
 /// the members have it).
-PackedDescriptor majority(const std::vector<PackedDescriptor>& all,
-                          const std::vector<std::uint32_t>& members) {
+match::PackedDescriptor majority(const std::vector<match::PackedDescriptor>& all,
+                                 const std::vector<std::uint32_t>& members) {
   std::array<int, 256> counts{};
   for (std::uint32_t m : members) {
-    const PackedDescriptor& d = all[m];
+    const match::PackedDescriptor& d = all[m];
     for (int w = 0; w < 4; ++w)
       for (int b = 0; b < 64; ++b) counts[static_cast<std::size_t>(w * 64 + b)] += (d[w] >> b) & 1u;
   }
-  PackedDescriptor out{};
+  match::PackedDescriptor out{};
   const int n = static_cast<int>(members.size());
   for (int i = 0; i < 256; ++i)
     if (2 * counts[static_cast<std::size_t>(i)] >= n) out[i / 64] |= std::uint64_t{1} << (i % 64);
@@ -57,11 +57,12 @@ PackedDescriptor majority(const std::vector<PackedDescriptor>& all,
 }
 
 /// Index of the nearest of `centres` (ties to the lower index).
-std::size_t nearest(const PackedDescriptor& d, const std::vector<PackedDescriptor>& centres) {
+std::size_t nearest(const match::PackedDescriptor& d,
+                    const std::vector<match::PackedDescriptor>& centres) {
   std::size_t best = 0;
   int best_distance = std::numeric_limits<int>::max();
   for (std::size_t c = 0; c < centres.size(); ++c) {
-    const int distance = hamming_distance(d, centres[c]);
+    const int distance = match::hamming_distance(d, centres[c]);
     if (distance < best_distance) best_distance = distance, best = c;
   }
   return best;
@@ -70,15 +71,15 @@ std::size_t nearest(const PackedDescriptor& d, const std::vector<PackedDescripto
 /// k-means++ seeding (Arthur & Vassilvitskii 2007, as DBoW2's initiateClustersKMpp): the first
 /// centre uniformly, each next one with probability proportional to the squared distance to the
 /// nearest centre chosen so far. Fewer than k centres when the members hold fewer distinct ones.
-std::vector<PackedDescriptor> seed_centres(const std::vector<PackedDescriptor>& all,
-                                           const std::vector<std::uint32_t>& members, int k,
-                                           Rng& rng) {
-  std::vector<PackedDescriptor> centres;
+std::vector<match::PackedDescriptor> seed_centres(const std::vector<match::PackedDescriptor>& all,
+                                                  const std::vector<std::uint32_t>& members, int k,
+                                                  Rng& rng) {
+  std::vector<match::PackedDescriptor> centres;
   const auto n = static_cast<std::int64_t>(members.size());
   centres.push_back(all[members[static_cast<std::size_t>(rng.uniform_int(0, n - 1))]]);
   std::vector<double> d2(members.size());
   for (std::size_t i = 0; i < members.size(); ++i) {
-    const double d = hamming_distance(all[members[i]], centres[0]);
+    const double d = match::hamming_distance(all[members[i]], centres[0]);
     d2[i] = d * d;
   }
   while (static_cast<int>(centres.size()) < k) {
@@ -94,7 +95,7 @@ std::vector<PackedDescriptor> seed_centres(const std::vector<PackedDescriptor>& 
     while (d2[pick] <= 0.0) --pick;  // rounding at the end of the sum: the last positive one
     centres.push_back(all[members[pick]]);
     for (std::size_t i = 0; i < members.size(); ++i) {
-      const double d = hamming_distance(all[members[i]], centres.back());
+      const double d = match::hamming_distance(all[members[i]], centres.back());
       d2[i] = std::min(d2[i], d * d);
     }
   }
@@ -132,7 +133,7 @@ VocabularyTree VocabularyTree::train(const std::vector<cv::Mat>& images,
   tree.depth_ = options.depth;
   tree.training_images_ = static_cast<std::uint32_t>(images.size());
 
-  std::vector<PackedDescriptor> all;
+  std::vector<match::PackedDescriptor> all;
   std::vector<std::uint32_t> image_of;
   for (std::size_t i = 0; i < images.size(); ++i) {
     check_descriptors(images[i]);
@@ -160,7 +161,7 @@ VocabularyTree VocabularyTree::train(const std::vector<cv::Mat>& images,
     stack.pop_back();
     const int level = tree.nodes_[p.node].level;
     std::vector<std::vector<std::uint32_t>> groups;
-    std::vector<PackedDescriptor> centres;
+    std::vector<match::PackedDescriptor> centres;
     if (static_cast<int>(p.members.size()) <= options.branching) {
       for (std::uint32_t m : p.members) {
         groups.push_back({m});
@@ -218,13 +219,14 @@ VocabularyTree VocabularyTree::train(const std::vector<cv::Mat>& images,
   return tree;
 }
 
-NodeId VocabularyTree::descend(const PackedDescriptor& d, int stop_level, NodeId* at_level) const {
+NodeId VocabularyTree::descend(const match::PackedDescriptor& d, int stop_level,
+                               NodeId* at_level) const {
   NodeId id = 0;
   while (!nodes_[id].children.empty()) {
     NodeId best = nodes_[id].children.front();
     int best_distance = std::numeric_limits<int>::max();
     for (NodeId child : nodes_[id].children) {
-      const int distance = hamming_distance(d, nodes_[child].descriptor);
+      const int distance = match::hamming_distance(d, nodes_[child].descriptor);
       if (distance < best_distance) best_distance = distance, best = child;
     }
     id = best;
@@ -233,7 +235,7 @@ NodeId VocabularyTree::descend(const PackedDescriptor& d, int stop_level, NodeId
   return id;
 }
 
-WordId VocabularyTree::word_of(const PackedDescriptor& descriptor) const {
+WordId VocabularyTree::word_of(const match::PackedDescriptor& descriptor) const {
   if (word_nodes_.empty()) throw std::logic_error("vocabulary: no words (trained on nothing)");
   return nodes_[descend(descriptor, 0, nullptr)].word;
 }

@@ -59,7 +59,7 @@ class VocabularyTree {
   BowVector transform(const cv::Mat& descriptors, FeatureVector* direct_index = nullptr,
                       int levels_up = 4) const;
   /// The word a descriptor falls into.
-  WordId word_of(const PackedDescriptor& descriptor) const;
+  WordId word_of(const match::PackedDescriptor& descriptor) const;
 
   int branching() const { return branching_; }
   int depth() const { return depth_; }
@@ -81,12 +81,12 @@ class VocabularyTree {
   struct Node {
     std::uint32_t parent = kNone;
     std::vector<NodeId> children;
-    PackedDescriptor descriptor{};
+    match::PackedDescriptor descriptor{};
     double idf = 0.0;
     WordId word = kNone;
     int level = 0;
   };
-  NodeId descend(const PackedDescriptor& d, int stop_level, NodeId* at_level) const;
+  NodeId descend(const match::PackedDescriptor& d, int stop_level, NodeId* at_level) const;
 
   int branching_ = 0, depth_ = 0;
   std::uint32_t training_images_ = 0;

@@ -3,7 +3,7 @@
 
 #include <chrono>
 
-namespace wifislam::slam {
+namespace wifislam::slam::feature {
 
 FeatureStore::FeatureStore(const FeatureOptions& options, const CameraIntrinsics& intrinsics)
     : extractor_(options, intrinsics) {}
@@ -26,4 +26,4 @@ std::size_t FeatureStore::size() const {
   return entries_.size();
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::feature

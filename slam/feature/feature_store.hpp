@@ -21,7 +21,7 @@
 #include "slam/feature/frame_features.hpp"
 #include "slam/feature/orb_feature_extractor.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::feature {
 
 class FeatureStore {
  public:
@@ -48,4 +48,4 @@ class FeatureStore {
   std::map<std::int64_t, Entry> entries_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::feature

@@ -11,7 +11,7 @@
 
 #include "core/timestamp.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::feature {
 
 struct FrameFeatures {
   Timestamp time;
@@ -25,4 +25,4 @@ struct FrameFeatures {
   std::size_t depth_count() const;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::feature

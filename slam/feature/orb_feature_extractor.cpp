@@ -8,7 +8,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::feature {
 
 std::size_t FrameFeatures::depth_count() const {
   return static_cast<std::size_t>(std::count(has_depth.begin(), has_depth.end(), 1));
@@ -85,4 +85,4 @@ FrameFeatures OrbFeatureExtractor::extract(const RgbdFrame& frame) const {
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::feature

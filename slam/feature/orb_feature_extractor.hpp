@@ -9,7 +9,7 @@
 #include "core/sensor_stream.hpp"
 #include "slam/feature/frame_features.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::feature {
 
 struct FeatureOptions {
   /// Keypoints per frame. More features: more matches and robustness, linear cost in
@@ -47,4 +47,4 @@ class OrbFeatureExtractor {
   cv::Ptr<cv::ORB> orb_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::feature

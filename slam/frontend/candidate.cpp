@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 std::string to_string(CandidateRole role) {
   switch (role) {
@@ -20,8 +20,8 @@ std::string to_string(CandidateRole role) {
   return "unknown";
 }
 
-std::vector<KeyframeId> VerificationReport::visually_connected() const {
-  std::vector<KeyframeId> out;
+std::vector<graph::KeyframeId> VerificationReport::visually_connected() const {
+  std::vector<graph::KeyframeId> out;
   if (tracked_from >= 0) out.push_back(tracked_from);
   for (const ComparisonOutcome& c : comparisons) {
     if (c.accepted) out.push_back(c.candidate.keyframe);
@@ -31,4 +31,4 @@ std::vector<KeyframeId> VerificationReport::visually_connected() const {
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

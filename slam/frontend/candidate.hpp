@@ -12,7 +12,7 @@
 #include "slam/graph/pose_graph.hpp"
 #include "slam/solve/visual_transformation.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// Why a keyframe is compared with the new one. RGBD-SLAM's three groups (paper, "RGBD SLAM"):
 /// predecessors and geodesic neighbours (motion estimation), long-term candidates (RGBDSLAMv2's
@@ -25,7 +25,7 @@ std::string to_string(CandidateRole role);
 inline constexpr const char* kTrackingRole = "tracking";
 
 struct Candidate {
-  KeyframeId keyframe = -1;
+  graph::KeyframeId keyframe = -1;
   CandidateRole role = CandidateRole::kLongTerm;
   friend bool operator==(const Candidate&, const Candidate&) = default;
 };
@@ -33,20 +33,20 @@ struct Candidate {
 /// What a front end may look at for a new keyframe. The keyframe is already a graph node (its
 /// pose is the tracking estimate) and recorded in the loop rule.
 struct SelectionQuery {
-  KeyframeId keyframe = -1;
+  graph::KeyframeId keyframe = -1;
   Timestamp time;
-  const FrameFeatures* features = nullptr;
-  const PoseGraph* graph = nullptr;
+  const feature::FrameFeatures* features = nullptr;
+  const graph::PoseGraph* graph = nullptr;
   const LoopRule* loop_rule = nullptr;
   /// Keyframes already compared with this one (the tracking edge's source): do not return them.
-  std::vector<KeyframeId> already_compared;
+  std::vector<graph::KeyframeId> already_compared;
 };
 
 /// A candidate whose visual transformation passed verification, classified by the front end.
 struct Hypothesis {
   Candidate candidate;
-  VisualTransformation transformation;
-  EdgeType edge_type = EdgeType::kVisual;  // kVisual or kLoop
+  solve::VisualTransformation transformation;
+  graph::EdgeType edge_type = graph::EdgeType::kVisual;  // kVisual or kLoop
 };
 
 /// The result of verifying one candidate.
@@ -55,19 +55,19 @@ struct ComparisonOutcome {
   bool verified = false;  // the transformation passed verification
   bool accepted = false;  // ... and the front end's acceptance made it an edge
   int inliers = 0;
-  EdgeType edge_type = EdgeType::kVisual;  // meaningful when accepted
+  graph::EdgeType edge_type = graph::EdgeType::kVisual;  // meaningful when accepted
 };
 
 /// Everything the pipeline learned about a new keyframe, handed to the front end afterwards.
 struct VerificationReport {
-  KeyframeId keyframe = -1;
+  graph::KeyframeId keyframe = -1;
   Timestamp time;
   /// The keyframe tracking matched it against (-1 when tracking was lost); that edge is visual.
-  KeyframeId tracked_from = -1;
+  graph::KeyframeId tracked_from = -1;
   std::vector<ComparisonOutcome> comparisons;
 
   /// Keyframes this keyframe now has a visual or loop edge with (tracking edge included).
-  std::vector<KeyframeId> visually_connected() const;
+  std::vector<graph::KeyframeId> visually_connected() const;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

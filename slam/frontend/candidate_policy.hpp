@@ -7,7 +7,7 @@
 
 #include "slam/frontend/candidate.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 class CandidatePolicy {
  public:
@@ -15,11 +15,11 @@ class CandidatePolicy {
 
   /// Memory: whether `keyframe` may be compared with a new keyframe at all (relocalisation
   /// candidates are filtered by it). Default: every keyframe.
-  virtual bool searchable(KeyframeId /*keyframe*/) const { return true; }
+  virtual bool searchable(graph::KeyframeId /*keyframe*/) const { return true; }
 
  protected:
   /// Candidates for the new keyframe of `query`, in the order they should be verified.
   virtual std::vector<Candidate> select(const SelectionQuery& query) = 0;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

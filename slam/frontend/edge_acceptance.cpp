@@ -6,7 +6,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 std::vector<std::size_t> AcceptAllHypotheses::choose(const std::vector<Hypothesis>& hypotheses,
                                                      const AcceptanceContext& /*context*/) const {
@@ -20,7 +20,7 @@ std::vector<std::size_t> AcceptBestLoopHypothesis::choose(
   std::vector<std::size_t> out;
   std::size_t best = hypotheses.size();
   for (std::size_t i = 0; i < hypotheses.size(); ++i) {
-    if (hypotheses[i].edge_type != EdgeType::kLoop ||
+    if (hypotheses[i].edge_type != graph::EdgeType::kLoop ||
         hypotheses[i].candidate.role == CandidateRole::kProximity) {
       out.push_back(i);
     } else if (best == hypotheses.size() ||
@@ -33,7 +33,8 @@ std::vector<std::size_t> AcceptBestLoopHypothesis::choose(
   return out;
 }
 
-std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge) {
+std::optional<double> edge_error_ratio(const graph::PoseGraph& graph,
+                                       const graph::GraphEdge& edge) {
   // RTAB-Map's links carry a diagonal covariance, so 1 / information diagonal is each axis'
   // variance there. Ours are full 6x6 matrices from the inliers' geometry, whose translation and
   // rotation are strongly coupled (a yaw and a sideways shift explain the same image motion), so
@@ -57,8 +58,8 @@ std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& 
 }
 
 AcceptGraphConsistentHypotheses::AcceptGraphConsistentHypotheses(
-    std::unique_ptr<EdgeAcceptance> inner, double max_error_ratio, PoseGraphOptions graph_options,
-    int iterations)
+    std::unique_ptr<EdgeAcceptance> inner, double max_error_ratio,
+    optimize::PoseGraphOptions graph_options, int iterations)
     : inner_(std::move(inner)),
       max_error_ratio_(max_error_ratio),
       graph_options_(std::move(graph_options)),
@@ -67,11 +68,13 @@ AcceptGraphConsistentHypotheses::AcceptGraphConsistentHypotheses(
 std::vector<std::size_t> AcceptGraphConsistentHypotheses::choose(
     const std::vector<Hypothesis>& hypotheses, const AcceptanceContext& context) const {
   std::vector<std::size_t> chosen = inner_->choose(hypotheses, context);
-  const auto is_loop = [&](std::size_t i) { return hypotheses[i].edge_type == EdgeType::kLoop; };
+  const auto is_loop = [&](std::size_t i) {
+    return hypotheses[i].edge_type == graph::EdgeType::kLoop;
+  };
   while (std::any_of(chosen.begin(), chosen.end(), is_loop)) {
-    PoseGraph trial = *context.graph;
+    graph::PoseGraph trial = *context.graph;
     bool have_pose = context.keyframe_has_pose;
-    for (const GraphEdge& e : context.other_edges) {
+    for (const graph::GraphEdge& e : context.other_edges) {
       trial.add_edge(e);
       if (!have_pose && e.to == context.keyframe) {
         trial.set_pose(context.keyframe, trial.node(e.from).pose * e.from_to);
@@ -90,9 +93,9 @@ std::vector<std::size_t> AcceptGraphConsistentHypotheses::choose(
         have_pose = true;
       }
     }
-    optimise_pose_graph(trial, graph_options_, iterations_);
+    optimize::optimise_pose_graph(trial, graph_options_, iterations_);
     double worst_link = 0.0;
-    for (const GraphEdge& e : trial.edges()) {
+    for (const graph::GraphEdge& e : trial.edges()) {
       worst_link = std::max(worst_link, edge_error_ratio(trial, e).value_or(0.0));
     }
     if (worst_link <= max_error_ratio_) break;
@@ -112,4 +115,4 @@ std::vector<std::size_t> AcceptGraphConsistentHypotheses::choose(
   return chosen;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -25,18 +25,18 @@
 #include "slam/graph/pose_graph.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// The graph as it stands before the new keyframe's verified edges are added.
 struct AcceptanceContext {
-  const PoseGraph* graph = nullptr;
-  KeyframeId keyframe = -1;
+  const graph::PoseGraph* graph = nullptr;
+  graph::KeyframeId keyframe = -1;
   /// False when tracking was lost: the keyframe's pose then comes from its first accepted edge.
   bool keyframe_has_pose = true;
   /// Edges the pipeline may add besides the hypotheses (wheel odometry to the previous
   /// keyframe): part of the trial graph, so a loop closure must agree with them too. When
   /// tracking was lost a false relocalisation would otherwise hang on its own edge unopposed.
-  std::vector<GraphEdge> other_edges;
+  std::vector<graph::GraphEdge> other_edges;
 };
 
 class EdgeAcceptance {
@@ -71,14 +71,14 @@ class AcceptBestLoopHypothesis final : public EdgeAcceptance {
 /// same as 1 / the information diagonal, but ours couple translation and rotation.
 /// Returns nullopt for a link RTAB-Map skips: translation variance above 1 m^2 (our weak edges),
 /// or an information matrix that is not positive definite.
-std::optional<double> edge_error_ratio(const PoseGraph& graph, const GraphEdge& edge);
+std::optional<double> edge_error_ratio(const graph::PoseGraph& graph, const graph::GraphEdge& edge);
 
 class AcceptGraphConsistentHypotheses final : public EdgeAcceptance {
  public:
   /// `max_error_ratio`: RTAB-Map's RGBD/OptimizeMaxError (3.0). `iterations`: optimiser
   /// iterations per trial.
   AcceptGraphConsistentHypotheses(std::unique_ptr<EdgeAcceptance> inner, double max_error_ratio,
-                                  PoseGraphOptions graph_options, int iterations);
+                                  optimize::PoseGraphOptions graph_options, int iterations);
   std::string name() const override { return inner_->name() + "+graph_consistent"; }
   std::vector<std::size_t> choose(const std::vector<Hypothesis>& hypotheses,
                                   const AcceptanceContext& context) const override;
@@ -86,8 +86,8 @@ class AcceptGraphConsistentHypotheses final : public EdgeAcceptance {
  private:
   std::unique_ptr<EdgeAcceptance> inner_;
   double max_error_ratio_;
-  PoseGraphOptions graph_options_;
+  optimize::PoseGraphOptions graph_options_;
   int iterations_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 nlohmann::json FrontEndOutputs::own_summary() const { return nlohmann::json::object(); }
 
@@ -56,4 +56,4 @@ nlohmann::json FrontEnd::summary() const {
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -39,7 +39,7 @@
 #include "slam/frontend/front_end_schedule.hpp"
 #include "slam/wifi/wifi_module.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 class FrontEnd : public CandidatePolicy, protected FrontEndEvents, protected FrontEndOutputs {
  public:
@@ -90,4 +90,4 @@ class FrontEnd : public CandidatePolicy, protected FrontEndEvents, protected Fro
   std::unique_ptr<wifi::WifiModule> wifi_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -3,7 +3,7 @@
 // module (to subscribe to its cluster events), and what came of each keyframe's verified
 // hypotheses (to update its memory, covisibility or loop bookkeeping). Defaults do nothing.
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 struct VerificationReport;
 
@@ -19,4 +19,4 @@ class FrontEndEvents {
   virtual void after_verification(const VerificationReport& /*report*/) {}
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

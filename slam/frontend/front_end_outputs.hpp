@@ -6,7 +6,7 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 class FrontEndOutputs {
  public:
@@ -17,4 +17,4 @@ class FrontEndOutputs {
   virtual nlohmann::json own_summary() const;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -8,7 +8,7 @@
 #include "slam/frontend/rgbdslam/rgbdslam_front_end.hpp"
 #include "slam/frontend/rtabmap/rtabmap_front_end.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 namespace {
 
@@ -89,4 +89,4 @@ std::string front_end_name_list() {
   return names;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -12,13 +12,13 @@
 #include "slam/slam_options.hpp"
 #include "slam/util/instrumentation.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// What a front end is built from: the run's options, and the run's instrumentation (a front
 /// end may time its own modules and count its own work).
 struct FrontEndContext {
   const SlamOptions* options = nullptr;
-  Instrumentation* instrumentation = nullptr;
+  util::Instrumentation* instrumentation = nullptr;
   bool stream_has_wifi = false;
   bool stream_has_odometry = false;
 };
@@ -38,4 +38,4 @@ std::vector<std::string> front_end_names();
 /// The names joined with ", " (for messages and --help).
 std::string front_end_name_list();
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -9,13 +9,13 @@
 #include "slam/optimize/edge_pruning.hpp"
 #include "slam/optimize/robust_kernel.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// How a family's back end copes with wrong edges: a robust kernel in every optimisation and a
 /// pruning schedule at the end of the run. The default is plain least squares, no pruning.
 struct GraphRobustness {
-  RobustKernel kernel;
-  PruningSchedule pruning;
+  optimize::RobustKernel kernel;
+  optimize::PruningSchedule pruning;
 };
 
 struct FrontEndSchedule {
@@ -33,4 +33,4 @@ struct FrontEndSchedule {
   double optimisation_convergence = 0.0;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -2,7 +2,7 @@
 
 #include <Eigen/Geometry>
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 bool KeyframeSchedule::due(std::int64_t elapsed_ns, const Pose& keyframe_from_frame) const {
   constexpr double kToleranceS = 1e-3;
@@ -11,4 +11,4 @@ bool KeyframeSchedule::due(std::int64_t elapsed_ns, const Pose& keyframe_from_fr
          Eigen::AngleAxisd(keyframe_from_frame.linear()).angle() >= min_rotation_rad;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -9,7 +9,7 @@
 #include "core/pose.hpp"
 #include "core/timestamp.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 struct KeyframeSchedule {
   /// Least time between two keyframes (1 / detection rate).
@@ -24,4 +24,4 @@ struct KeyframeSchedule {
   bool due(std::int64_t elapsed_ns, const Pose& keyframe_from_frame) const;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

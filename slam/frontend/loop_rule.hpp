@@ -11,7 +11,7 @@
 
 #include "slam/graph/pose_graph.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 class LoopRule {
  public:
@@ -21,7 +21,7 @@ class LoopRule {
   /// Records the next keyframe's estimated path length from the start (ids 0, 1, ...).
   void add_keyframe(double path_m) { path_m_.push_back(path_m); }
   /// Estimated path length from the start to `keyframe` (0 for an unknown id).
-  double path_m(KeyframeId keyframe) const {
+  double path_m(graph::KeyframeId keyframe) const {
     return keyframe >= 0 && static_cast<std::size_t>(keyframe) < path_m_.size()
                ? path_m_[static_cast<std::size_t>(keyframe)]
                : 0.0;
@@ -29,7 +29,7 @@ class LoopRule {
   std::size_t keyframes() const { return path_m_.size(); }
 
   /// Whether an edge between `earlier` and `later` (both recorded) would be a loop closure.
-  bool is_loop(KeyframeId earlier, KeyframeId later) const {
+  bool is_loop(graph::KeyframeId earlier, graph::KeyframeId later) const {
     return later - earlier >= min_keyframe_gap_ && path_m(later) - path_m(earlier) >= min_path_m_;
   }
 
@@ -42,4 +42,4 @@ class LoopRule {
   std::vector<double> path_m_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::graph {
 
 std::string to_string(EdgeType type) {
   switch (type) {
@@ -75,4 +75,4 @@ std::vector<KeyframeId> PoseGraph::geodesic_neighbours(KeyframeId id, int depth)
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::graph

@@ -16,7 +16,7 @@
 #include "core/pose.hpp"
 #include "core/timestamp.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::graph {
 
 using KeyframeId = int;
 using Information6 = Eigen::Matrix<double, 6, 6>;
@@ -78,4 +78,4 @@ class PoseGraph {
   std::vector<std::vector<KeyframeId>> adjacency_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::graph

@@ -6,7 +6,7 @@
 #include "core/run_format.hpp"
 #include "core/tum_trajectory.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::io {
 
 namespace {
 
@@ -18,16 +18,16 @@ nlohmann::json pose_json(const Pose& pose) {
 
 }  // namespace
 
-nlohmann::json graph_to_json(const PoseGraph& graph) {
+nlohmann::json graph_to_json(const graph::PoseGraph& graph) {
   nlohmann::json nodes = nlohmann::json::array();
-  for (const GraphNode& n : graph.nodes()) {
+  for (const graph::GraphNode& n : graph.nodes()) {
     nodes.push_back({{"id", n.id},
                      {"frame_index", n.frame_index},
                      {"time", n.time.to_string(9)},
                      {"pose", pose_json(n.pose)}});
   }
   nlohmann::json edges = nlohmann::json::array();
-  for (const GraphEdge& e : graph.edges()) {
+  for (const graph::GraphEdge& e : graph.edges()) {
     std::vector<double> info(e.information.data(), e.information.data() + 36);
     edges.push_back({{"from", e.from},
                      {"to", e.to},
@@ -45,12 +45,12 @@ nlohmann::json graph_to_json(const PoseGraph& graph) {
           {"edges", std::move(edges)}};
 }
 
-std::string loop_closures_csv(const SlamSystem& system) {
+std::string loop_closures_csv(const system::SlamSystem& system) {
   std::string out = run_folder::csv_header(run_folder::loop_closures_column::kAll);
-  const PoseGraph& graph = system.graph();
-  for (const LoopClosureRecord& l : system.loop_closures()) {
-    const GraphNode& a = graph.node(l.from);
-    const GraphNode& b = graph.node(l.to);
+  const graph::PoseGraph& graph = system.graph();
+  for (const system::LoopClosureRecord& l : system.loop_closures()) {
+    const graph::GraphNode& a = graph.node(l.from);
+    const graph::GraphNode& b = graph.node(l.to);
     const Eigen::Quaterniond q(l.from_to.linear());
     const Eigen::Vector3d& t = l.from_to.translation();
     out += fmt::format("{},{},{},{},{},{},{},{},{:.4f},{},{},{},{},{},{},{}\n", l.from, l.to,
@@ -61,8 +61,8 @@ std::string loop_closures_csv(const SlamSystem& system) {
   return out;
 }
 
-void write_run_folder(const std::filesystem::path& run_dir, const SlamSystem& system,
-                      const RunSummary& summary, bool overwrite,
+void write_run_folder(const std::filesystem::path& run_dir, const system::SlamSystem& system,
+                      const system::RunSummary& summary, bool overwrite,
                       const nlohmann::json& extra_run_info) {
   AtomicDirectory dir(run_dir, overwrite);
   const std::filesystem::path& out = dir.staging_path();
@@ -85,7 +85,7 @@ void write_run_folder(const std::filesystem::path& run_dir, const SlamSystem& sy
   run["frontend_summary"] = system.front_end().summary();
   run["edge_acceptance"] = system.front_end().acceptance().name();
   nlohmann::json pruning = nlohmann::json::array();
-  for (const PruningStage& stage : system.pruning()) {
+  for (const optimize::PruningStage& stage : system.pruning()) {
     pruning.push_back({{"threshold_chi2", stage.threshold_chi2},
                        {"pruned", stage.pruned},
                        {"discounted", stage.discounted},
@@ -111,4 +111,4 @@ void write_run_folder(const std::filesystem::path& run_dir, const SlamSystem& sy
   dir.commit();
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::io

@@ -4,9 +4,10 @@
 
 #include <opencv2/features2d.hpp>
 
-namespace wifislam::slam {
+namespace wifislam::slam::match {
 
-std::vector<FeatureMatch> match_descriptors(const FrameFeatures& query, const FrameFeatures& train,
+std::vector<FeatureMatch> match_descriptors(const feature::FrameFeatures& query,
+                                            const feature::FrameFeatures& train,
                                             const MatchOptions& options) {
   std::vector<FeatureMatch> out;
   if (query.descriptors.empty() || train.descriptors.empty()) return out;
@@ -55,4 +56,4 @@ std::vector<FeatureMatch> match_descriptors(const FrameFeatures& query, const Fr
   return unique;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::match

@@ -5,7 +5,7 @@
 
 #include "slam/feature/frame_features.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::match {
 
 struct MatchOptions {
   /// Lowe's ratio: keep a match when best distance < ratio * second best. Lower is stricter:
@@ -25,7 +25,8 @@ struct FeatureMatch {
 /// Matches every keypoint of `query` against the keypoints of `train` that have depth (the 3-D
 /// side of a 3-D/2-D correspondence); each train keypoint is used at most once. Deterministic
 /// (brute force, no randomised index).
-std::vector<FeatureMatch> match_descriptors(const FrameFeatures& query, const FrameFeatures& train,
+std::vector<FeatureMatch> match_descriptors(const feature::FrameFeatures& query,
+                                            const feature::FrameFeatures& train,
                                             const MatchOptions& options);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::match

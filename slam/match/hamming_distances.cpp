@@ -4,7 +4,7 @@
 #include <immintrin.h>
 #endif
 
-namespace wifislam::slam {
+namespace wifislam::slam::match {
 
 namespace {
 
@@ -24,8 +24,9 @@ inline void keep_nearest_two(NearestTwo& r, int d, std::size_t w) {
 #if defined(__x86_64__) && defined(__GNUC__)
 __attribute__((target_clones("popcnt", "default")))
 #endif
-NearestTwo nearest_two_scalar(const std::uint64_t* query, const std::uint64_t* const lanes[4],
-                              std::size_t begin, std::size_t count, NearestTwo r) {
+NearestTwo
+nearest_two_scalar(const std::uint64_t* query, const std::uint64_t* const lanes[4],
+                   std::size_t begin, std::size_t count, NearestTwo r) {
   for (std::size_t w = begin; w < count; ++w) {
     keep_nearest_two(r,
                      std::popcount(query[0] ^ lanes[0][w]) + std::popcount(query[1] ^ lanes[1][w]) +
@@ -71,11 +72,11 @@ __attribute__((target("avx512f,avx512vpopcntdq,popcnt"))) NearestTwo nearest_two
 NearestTwo nearest_two(const std::uint64_t* query, const std::uint64_t* const lanes[4],
                        std::size_t count) {
 #if defined(__x86_64__) && defined(__GNUC__)
-  static const bool has_avx512 = __builtin_cpu_supports("avx512f") &&
-                                 __builtin_cpu_supports("avx512vpopcntdq");
+  static const bool has_avx512 =
+      __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vpopcntdq");
   if (has_avx512) return nearest_two_avx512(query, lanes, count);
 #endif
   return nearest_two_scalar(query, lanes, 0, count, {});
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::match

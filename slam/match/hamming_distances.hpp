@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <limits>
 
-namespace wifislam::slam {
+namespace wifislam::slam::match {
 
 /// A 32-byte ORB descriptor as four 64-bit words.
 using PackedDescriptor = std::array<std::uint64_t, 4>;
@@ -35,4 +35,4 @@ struct NearestTwo {
 NearestTwo nearest_two(const std::uint64_t* query, const std::uint64_t* const lanes[4],
                        std::size_t count);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::match

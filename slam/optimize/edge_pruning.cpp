@@ -8,9 +8,9 @@
 #include "core/error.hpp"
 #include "slam/optimize/relative_pose_error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
-double edge_chi2(const PoseGraph& graph, const GraphEdge& edge) {
+double edge_chi2(const graph::PoseGraph& graph, const graph::GraphEdge& edge) {
   const Pose& a = graph.node(edge.from).pose;
   const Pose& b = graph.node(edge.to).pose;
   const Eigen::Vector3d p_a = a.translation(), p_b = b.translation();
@@ -25,25 +25,26 @@ double edge_chi2(const PoseGraph& graph, const GraphEdge& edge) {
 
 namespace {
 
-bool prunable(const GraphEdge& edge) {
-  return !edge.pruned && (edge.type == EdgeType::kVisual || edge.type == EdgeType::kLoop);
+bool prunable(const graph::GraphEdge& edge) {
+  return !edge.pruned &&
+         (edge.type == graph::EdgeType::kVisual || edge.type == graph::EdgeType::kLoop);
 }
 
 /// Whether edge `skip`'s two ends stay connected through the other unpruned edges.
-bool ends_connected_without(const PoseGraph& graph,
+bool ends_connected_without(const graph::PoseGraph& graph,
                             const std::vector<std::vector<std::size_t>>& incident,
                             std::size_t skip) {
-  const GraphEdge& cut = graph.edges()[skip];
+  const graph::GraphEdge& cut = graph.edges()[skip];
   std::vector<char> seen(graph.node_count(), 0);
-  std::deque<KeyframeId> queue{cut.from};
+  std::deque<graph::KeyframeId> queue{cut.from};
   seen[static_cast<std::size_t>(cut.from)] = 1;
   while (!queue.empty()) {
-    const KeyframeId node = queue.front();
+    const graph::KeyframeId node = queue.front();
     queue.pop_front();
     for (std::size_t e : incident[static_cast<std::size_t>(node)]) {
-      const GraphEdge& edge = graph.edges()[e];
+      const graph::GraphEdge& edge = graph.edges()[e];
       if (e == skip || edge.pruned) continue;
-      const KeyframeId next = edge.from == node ? edge.to : edge.from;
+      const graph::KeyframeId next = edge.from == node ? edge.to : edge.from;
       if (next == cut.to) return true;
       if (seen[static_cast<std::size_t>(next)]) continue;
       seen[static_cast<std::size_t>(next)] = 1;
@@ -56,8 +57,8 @@ bool ends_connected_without(const PoseGraph& graph,
 }  // namespace
 
 std::vector<PruningStage> prune_inconsistent_edges(
-    PoseGraph& graph, const PruningSchedule& schedule,
-    const std::function<OptimisationSummary(PoseGraph&)>& reoptimise) {
+    graph::PoseGraph& graph, const PruningSchedule& schedule,
+    const std::function<OptimisationSummary(graph::PoseGraph&)>& reoptimise) {
   std::vector<std::vector<std::size_t>> incident(graph.node_count());
   for (std::size_t e = 0; e < graph.edges().size(); ++e) {
     incident[static_cast<std::size_t>(graph.edges()[e].from)].push_back(e);
@@ -71,7 +72,7 @@ std::vector<PruningStage> prune_inconsistent_edges(
     // goes and the better one is discounted.
     std::vector<std::pair<double, std::size_t>> over;
     for (std::size_t e = 0; e < graph.edges().size(); ++e) {
-      const GraphEdge& edge = graph.edges()[e];
+      const graph::GraphEdge& edge = graph.edges()[e];
       if (!prunable(edge) || edge.weight < 1.0) continue;  // discounted: already out of play
       const double chi2 = edge_chi2(graph, edge);
       if (!(chi2 <= threshold)) over.emplace_back(chi2, e);  // NaN counts as over
@@ -94,4 +95,4 @@ std::vector<PruningStage> prune_inconsistent_edges(
   return stages;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

@@ -19,7 +19,7 @@
 #include "slam/graph/pose_graph.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
 struct PruningSchedule {
   /// chi^2 thresholds (6 degrees of freedom, the edge's own information x weight), applied in
@@ -37,12 +37,12 @@ struct PruningStage {
 };
 
 /// chi^2 = r^T (weight x Omega) r of `edge` at the graph's current poses.
-double edge_chi2(const PoseGraph& graph, const GraphEdge& edge);
+double edge_chi2(const graph::PoseGraph& graph, const graph::GraphEdge& edge);
 
 /// Runs the schedule on `graph` (already optimised). `reoptimise` is called after every stage
 /// that changed something and returns its summary.
 std::vector<PruningStage> prune_inconsistent_edges(
-    PoseGraph& graph, const PruningSchedule& schedule,
-    const std::function<OptimisationSummary(PoseGraph&)>& reoptimise);
+    graph::PoseGraph& graph, const PruningSchedule& schedule,
+    const std::function<OptimisationSummary(graph::PoseGraph&)>& reoptimise);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

@@ -13,18 +13,18 @@
 #include "core/error.hpp"
 #include "slam/optimize/relative_pose_error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
-Eigen::Matrix<double, 6, 6> information_square_root(const Information6& information,
+Eigen::Matrix<double, 6, 6> information_square_root(const graph::Information6& information,
                                                     double min_eigenvalue) {
-  const Information6 symmetric = 0.5 * (information + information.transpose());
-  Eigen::LLT<Information6> llt(symmetric);
+  const graph::Information6 symmetric = 0.5 * (information + information.transpose());
+  Eigen::LLT<graph::Information6> llt(symmetric);
   if (llt.info() == Eigen::Success) return llt.matrixU();
-  const Eigen::SelfAdjointEigenSolver<Information6> eig(symmetric);
+  const Eigen::SelfAdjointEigenSolver<graph::Information6> eig(symmetric);
   const Eigen::Matrix<double, 6, 1> values = eig.eigenvalues().cwiseMax(min_eigenvalue);
-  const Information6 repaired =
+  const graph::Information6 repaired =
       eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
-  return Eigen::LLT<Information6>(0.5 * (repaired + repaired.transpose())).matrixU();
+  return Eigen::LLT<graph::Information6>(0.5 * (repaired + repaired.transpose())).matrixU();
 }
 
 namespace {
@@ -46,9 +46,9 @@ ceres::LossFunction* make_loss(const RobustKernel& kernel) {
 
 }  // namespace
 
-OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions& options,
+OptimisationSummary optimise_pose_graph(graph::PoseGraph& graph, const PoseGraphOptions& options,
                                         int max_iterations, const RobustKernel& kernel,
-                                        KeyframeId fixed_node, double convergence) {
+                                        graph::KeyframeId fixed_node, double convergence) {
   OptimisationSummary summary;
   if (!(kernel.width_chi2 > 0.0) || !std::isfinite(kernel.width_chi2)) {
     throw InvalidInputError("robust kernel width must be a positive chi^2");
@@ -56,7 +56,7 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
   // Nodes with no edge left (pruned ones do not count) have no residual: they stay out.
   std::vector<char> in_problem(graph.node_count(), 0);
   bool any_edge = false;
-  for (const GraphEdge& edge : graph.edges()) {
+  for (const graph::GraphEdge& edge : graph.edges()) {
     if (edge.pruned) continue;
     in_problem[static_cast<std::size_t>(edge.from)] = 1;
     in_problem[static_cast<std::size_t>(edge.to)] = 1;
@@ -69,7 +69,7 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
     Eigen::Quaterniond q;
   };
   std::vector<State> states(graph.node_count());
-  for (const GraphNode& node : graph.nodes()) {
+  for (const graph::GraphNode& node : graph.nodes()) {
     states[static_cast<std::size_t>(node.id)] = {
         node.pose.translation(), Eigen::Quaterniond(node.pose.linear()).normalized()};
   }
@@ -90,12 +90,12 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
   }
   if (!manifold_used) delete quaternion_manifold;
   std::vector<ceres::ResidualBlockId> residuals;
-  for (const GraphEdge& edge : graph.edges()) {
+  for (const graph::GraphEdge& edge : graph.edges()) {
     if (edge.pruned) continue;
     State& a = states[static_cast<std::size_t>(edge.from)];
     State& b = states[static_cast<std::size_t>(edge.to)];
     ceres::LossFunction* edge_loss =
-        kernel.every_edge || edge.type == EdgeType::kLoop ? loss.get() : nullptr;
+        kernel.every_edge || edge.type == graph::EdgeType::kLoop ? loss.get() : nullptr;
     residuals.push_back(problem.AddResidualBlock(
         RelativePoseError::create(
             edge.from_to, std::sqrt(edge.weight) * information_square_root(edge.information)),
@@ -153,7 +153,7 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
       std::string(ceres::TerminationTypeToString(ceres_summary.termination_type)) + ": " +
       ceres_summary.message;
   if (summary.usable) {
-    for (const GraphNode& node : graph.nodes()) {
+    for (const graph::GraphNode& node : graph.nodes()) {
       const State& s = states[static_cast<std::size_t>(node.id)];
       if (!s.p.allFinite() || !s.q.coeffs().allFinite()) {
         summary.usable = false;  // defensive: never write a non-finite pose
@@ -163,7 +163,7 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
     }
   }
   if (summary.usable) {
-    for (const GraphNode& node : graph.nodes()) {
+    for (const graph::GraphNode& node : graph.nodes()) {
       const State& s = states[static_cast<std::size_t>(node.id)];
       graph.set_pose(node.id, pose_from_translation_quaternion(s.p, s.q));
     }
@@ -176,4 +176,4 @@ OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions
   return summary;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

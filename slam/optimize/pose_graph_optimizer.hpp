@@ -9,7 +9,7 @@
 #include "slam/graph/pose_graph.hpp"
 #include "slam/optimize/robust_kernel.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
 struct PoseGraphOptions {
   /// Iterations of the final, full optimisation at the end of a run.
@@ -42,10 +42,10 @@ struct OptimisationSummary {
 /// kConvergenceRoundIterations iterations, each a fresh solve from the last estimate as g2o's
 /// optimize(5) is, until a round lowers the graph's chi^2 (without the kernel, as g2o's chi2()) by
 /// less than that fraction; at least two rounds, and `max_iterations` in all at most.
-OptimisationSummary optimise_pose_graph(PoseGraph& graph, const PoseGraphOptions& options,
+OptimisationSummary optimise_pose_graph(graph::PoseGraph& graph, const PoseGraphOptions& options,
                                         int max_iterations, const RobustKernel& kernel = {},
-                                        KeyframeId fixed_node = 0, double convergence = 0.0);
+                                        graph::KeyframeId fixed_node = 0, double convergence = 0.0);
 
 inline constexpr int kConvergenceRoundIterations = 5;
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

@@ -11,7 +11,7 @@
 #include "core/pose.hpp"
 #include "slam/graph/pose_graph.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
 class RelativePoseError {
  public:
@@ -52,7 +52,7 @@ class RelativePoseError {
 
 /// Upper-triangular square root S of an information matrix (S^T S = info); eigenvalues below
 /// `min_eigenvalue` are raised to it so a rank-deficient estimate still gives a valid factor.
-Eigen::Matrix<double, 6, 6> information_square_root(const Information6& information,
+Eigen::Matrix<double, 6, 6> information_square_root(const graph::Information6& information,
                                                     double min_eigenvalue = 1e-9);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

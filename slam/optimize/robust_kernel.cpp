@@ -2,7 +2,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
 const options::Choices<RobustKernel::Kind>& robust_kernel_kinds() {
   static const options::Choices<RobustKernel::Kind> kinds = {
@@ -19,4 +19,4 @@ std::string to_string(RobustKernel::Kind kind) {
   return "none";
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

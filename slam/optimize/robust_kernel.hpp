@@ -8,7 +8,7 @@
 
 #include "core/option_table.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::optimize {
 
 struct RobustKernel {
   enum class Kind { kNone, kHuber, kCauchy };
@@ -25,4 +25,4 @@ const options::Choices<RobustKernel::Kind>& robust_kernel_kinds();
 /// The kind's name.
 std::string to_string(RobustKernel::Kind kind);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::optimize

@@ -12,7 +12,7 @@ bool BinaryObservation::has(int word) const {
 BinaryObservation visual_words(const bow::VocabularyTree& vocabulary, const cv::Mat& descriptors) {
   BinaryObservation out;
   for (int r = 0; r < descriptors.rows; ++r) {
-    PackedDescriptor d{};
+    match::PackedDescriptor d{};
     std::memcpy(d.data(), descriptors.ptr(r), sizeof(d));  // 32-byte ORB rows, as the tree reads
     out.present.push_back(static_cast<int>(vocabulary.word_of(d)));
   }

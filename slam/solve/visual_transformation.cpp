@@ -10,7 +10,7 @@
 #include "core/error.hpp"
 #include "slam/solve/weighted_pose_refinement.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::solve {
 
 namespace {
 
@@ -39,13 +39,13 @@ struct Correspondences {
   std::vector<double> depth_a_m;
 };
 
-Correspondences correspondences_of(const FrameFeatures& a, const FrameFeatures& b,
-                                   const std::vector<FeatureMatch>& matches) {
+Correspondences correspondences_of(const feature::FrameFeatures& a, const feature::FrameFeatures& b,
+                                   const std::vector<match::FeatureMatch>& matches) {
   Correspondences c;
   c.object_points.reserve(matches.size());
   c.image_points.reserve(matches.size());
   c.depth_a_m.reserve(matches.size());
-  for (const FeatureMatch& m : matches) {
+  for (const match::FeatureMatch& m : matches) {
     const Eigen::Vector3d& p = b.points_m[static_cast<std::size_t>(m.train)];
     const auto q = static_cast<std::size_t>(m.query);
     const cv::Point2f& u = a.keypoints[q].pt;
@@ -104,11 +104,12 @@ class InlierSelector {
   std::vector<cv::Point2d> projected_;
 };
 
-std::vector<FeatureMatch> timed_matches(const FrameFeatures& a, const FrameFeatures& b,
-                                        const VisualTransformOptions& options,
-                                        Instrumentation& instrumentation) {
-  ScopedTimer timer(instrumentation, module::kMatching);
-  return match_descriptors(a, b, options.matching);
+std::vector<match::FeatureMatch> timed_matches(const feature::FrameFeatures& a,
+                                               const feature::FrameFeatures& b,
+                                               const VisualTransformOptions& options,
+                                               util::Instrumentation& instrumentation) {
+  util::ScopedTimer timer(instrumentation, module::kMatching);
+  return match::match_descriptors(a, b, options.matching);
 }
 
 /// EPnP in RANSAC; false when it finds no pose with at least min_matches inliers.
@@ -218,21 +219,22 @@ Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& 
   return 0.5 * (info + info.transpose());
 }
 
-VisualTransformation estimate_visual_transformation(const FrameFeatures& a, const FrameFeatures& b,
+VisualTransformation estimate_visual_transformation(const feature::FrameFeatures& a,
+                                                    const feature::FrameFeatures& b,
                                                     const CameraIntrinsics& intrinsics,
                                                     const VisualTransformOptions& options,
-                                                    Instrumentation& instrumentation) {
+                                                    util::Instrumentation& instrumentation) {
   if (!(options.ransac_confidence > 0.0 && options.ransac_confidence < 1.0)) {
     throw InvalidInputError("ransac_confidence must be in (0, 1), got " +
                             std::to_string(options.ransac_confidence));
   }
   VisualTransformation result;
-  const std::vector<FeatureMatch> matches = timed_matches(a, b, options, instrumentation);
+  const std::vector<match::FeatureMatch> matches = timed_matches(a, b, options, instrumentation);
   result.matches = static_cast<int>(matches.size());
   // Fewer matches than required inliers can never be accepted: skip RANSAC.
   if (result.matches < std::max(options.min_matches, 6)) return result;
 
-  ScopedTimer timer(instrumentation, module::kRansac);
+  util::ScopedTimer timer(instrumentation, module::kRansac);
   instrumentation.count(counter::kRansacRuns);
   const Correspondences c = correspondences_of(a, b, matches);
   cv::Mat k;
@@ -252,4 +254,4 @@ VisualTransformation estimate_visual_transformation(const FrameFeatures& a, cons
   return result;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::solve

@@ -12,10 +12,10 @@
 #include "slam/match/descriptor_matcher.hpp"
 #include "slam/util/instrumentation.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::solve {
 
 struct VisualTransformOptions {
-  MatchOptions matching;
+  match::MatchOptions matching;
   /// Minimum RANSAC inliers to accept a transformation (the paper's `min_matches`, RGBDSLAMv2
   /// default 20). Lower accepts more true and more false loop closures (perceptual aliasing).
   ///
@@ -77,10 +77,11 @@ struct VisualTransformation {
 
 /// Estimates the transformation between two frames. Timing goes to `instrumentation` under
 /// "matching" and "ransac"; one "ransac_runs" count per RANSAC call.
-VisualTransformation estimate_visual_transformation(const FrameFeatures& a, const FrameFeatures& b,
+VisualTransformation estimate_visual_transformation(const feature::FrameFeatures& a,
+                                                    const feature::FrameFeatures& b,
                                                     const CameraIntrinsics& intrinsics,
                                                     const VisualTransformOptions& options,
-                                                    Instrumentation& instrumentation);
+                                                    util::Instrumentation& instrumentation);
 
 /// Information matrix (pose graph convention) of a_from_b from the inlier reprojection
 /// Jacobians: sum J^T W J, where W^-1 = sigma_px^2 I + the image-a covariance of the point's depth
@@ -90,4 +91,4 @@ Eigen::Matrix<double, 6, 6> pnp_information(const std::vector<Eigen::Vector3d>& 
                                             const CameraIntrinsics& intrinsics, double sigma_px,
                                             double depth_noise_coeff_per_m);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::solve

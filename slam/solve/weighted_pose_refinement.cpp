@@ -5,7 +5,7 @@
 
 #include <Eigen/Geometry>
 
-namespace wifislam::slam {
+namespace wifislam::slam::solve {
 
 namespace {
 
@@ -92,4 +92,4 @@ Pose refine_pose_weighted(const std::vector<Eigen::Vector3d>& points_b_m,
   return pose_from_translation_quaternion(t, q);
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::solve

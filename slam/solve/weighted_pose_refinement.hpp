@@ -11,7 +11,7 @@
 #include "core/camera_intrinsics.hpp"
 #include "core/pose.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::solve {
 
 /// 2x2 covariance (pixels^2) of the projection into frame a of point `point_b_m` of frame b:
 /// sigma_px^2 I plus its depth error along b's ray, sigma_z = depth_noise_coeff_per_m z_b^2.
@@ -26,4 +26,4 @@ Pose refine_pose_weighted(const std::vector<Eigen::Vector3d>& points_b_m,
                           const CameraIntrinsics& intrinsics, double sigma_px,
                           double depth_noise_coeff_per_m, int max_iterations = 10);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::solve

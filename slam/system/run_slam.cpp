@@ -3,11 +3,11 @@
 
 #include <chrono>
 
-namespace wifislam::slam {
+namespace wifislam::slam::system {
 
 std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& options,
                                      RunSummary& summary, const FrameProgress& progress,
-                                     const FeatureStore* features) {
+                                     const feature::FeatureStore* features) {
   const auto start = std::chrono::steady_clock::now();
   StreamInfo info;
   info.intrinsics = stream.intrinsics();
@@ -30,4 +30,4 @@ std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& op
   return system;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::system

@@ -8,7 +8,7 @@
 #include "slam/system/run_summary.hpp"
 #include "slam/system/slam_system.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::system {
 
 /// Called after each frame with the number of frames processed (progress display).
 using FrameProgress = std::function<void(std::int64_t frames)>;
@@ -18,6 +18,6 @@ using FrameProgress = std::function<void(std::int64_t frames)>;
 /// features come from that store (SlamSystem::use_feature_store).
 std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& options,
                                      RunSummary& summary, const FrameProgress& progress = {},
-                                     const FeatureStore* features = nullptr);
+                                     const feature::FeatureStore* features = nullptr);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::system

@@ -6,28 +6,28 @@
 #include "core/run_format.hpp"
 #include "slam/system/slam_system.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::system {
 
 RunSummary summarize(const SlamSystem& system, const std::string& input, double wall_s) {
   RunSummary s;
   s.input = input;
   s.frontend = system.front_end().name();
   s.wifi = system.front_end().wifi() != nullptr;
-  const Instrumentation& inst = system.instrumentation();
+  const util::Instrumentation& inst = system.instrumentation();
   s.frames = inst.counter(counter::kFrames);
   s.keyframes = static_cast<std::int64_t>(system.graph().node_count());
-  for (const GraphEdge& e : system.graph().edges()) {
+  for (const graph::GraphEdge& e : system.graph().edges()) {
     switch (e.type) {
-      case EdgeType::kVisual:
+      case graph::EdgeType::kVisual:
         ++s.visual_edges;
         break;
-      case EdgeType::kLoop:
+      case graph::EdgeType::kLoop:
         ++s.loop_edges;
         break;
-      case EdgeType::kOdometry:
+      case graph::EdgeType::kOdometry:
         ++s.odometry_edges;
         break;
-      case EdgeType::kWeak:
+      case graph::EdgeType::kWeak:
         ++s.weak_edges;
         break;
     }
@@ -98,4 +98,4 @@ nlohmann::json RunSummary::to_json() const {
             {"final_cost", final_optimisation.final_cost}}}};
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::system

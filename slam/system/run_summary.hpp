@@ -9,7 +9,7 @@
 
 #include "slam/optimize/pose_graph_optimizer.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::system {
 
 class SlamSystem;
 
@@ -24,7 +24,7 @@ struct RunSummary {
   double wall_s = 0.0;        // processing time, reading the input included
   double processing_s = 0.0;  // time inside the pipeline (the "total" module)
   std::map<std::string, double> module_s;
-  OptimisationSummary final_optimisation;
+  optimize::OptimisationSummary final_optimisation;
 
   /// Frames per second of the pipeline alone (processing_s), and including input (wall_s).
   double pipeline_fps() const { return processing_s > 0 ? frames / processing_s : 0.0; }
@@ -40,4 +40,4 @@ struct RunSummary {
 /// Summary of `system` as it stands (call after finish()).
 RunSummary summarize(const SlamSystem& system, const std::string& input, double wall_s);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::system

@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace wifislam::slam {
+namespace wifislam::slam::util {
 
 void Instrumentation::add_time(const std::string& module, double seconds) {
   ModuleTime& m = modules_[module];
@@ -81,4 +81,4 @@ double ScopedTimer::stop() {
   return s;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::util

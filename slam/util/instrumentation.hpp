@@ -16,9 +16,13 @@
 namespace wifislam::slam {
 
 /// Module and counter names live with the run-folder format (core/run_format.hpp), which eval
-/// reads too; these aliases keep the pipeline's call sites short.
+/// reads too; these aliases, for every slam library, keep the pipeline's call sites short.
 namespace module = ::wifislam::run_folder::module;
 namespace counter = ::wifislam::run_folder::counter;
+
+}  // namespace wifislam::slam
+
+namespace wifislam::slam::util {
 
 class Instrumentation {
  public:
@@ -94,4 +98,4 @@ class ScopedTimer {
   bool stopped_ = false;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::util

@@ -24,16 +24,16 @@ std::vector<SimilarCluster> WifiClusterMap::similar_clusters(const WifiSignature
   return out;
 }
 
-ClusterId WifiClusterMap::cluster_of(KeyframeId keyframe) const {
+ClusterId WifiClusterMap::cluster_of(graph::KeyframeId keyframe) const {
   if (keyframe < 0 || static_cast<std::size_t>(keyframe) >= cluster_of_keyframe_.size()) return -1;
   return cluster_of_keyframe_[static_cast<std::size_t>(keyframe)];
 }
 
-ClusterId WifiClusterMap::assign(KeyframeId keyframe,
+ClusterId WifiClusterMap::assign(graph::KeyframeId keyframe,
                                  std::shared_ptr<const WifiSignature> signature,
                                  const std::vector<SimilarCluster>& similar,
-                                 const std::vector<KeyframeId>& visually_connected) {
-  if (keyframe < static_cast<KeyframeId>(cluster_of_keyframe_.size())) {
+                                 const std::vector<graph::KeyframeId>& visually_connected) {
+  if (keyframe < static_cast<graph::KeyframeId>(cluster_of_keyframe_.size())) {
     throw InvalidInputError(
         fmt::format("Wi-Fi cluster management: keyframe {} assigned out of order", keyframe));
   }
@@ -44,7 +44,7 @@ ClusterId WifiClusterMap::assign(KeyframeId keyframe,
   for (const SimilarCluster& candidate : similar) {  // most similar first
     const bool has_edge_into =
         std::any_of(visually_connected.begin(), visually_connected.end(),
-                    [&](KeyframeId k) { return cluster_of(k) == candidate.cluster; });
+                    [&](graph::KeyframeId k) { return cluster_of(k) == candidate.cluster; });
     if (has_edge_into) {
       joined = candidate.cluster;
       break;

@@ -30,9 +30,9 @@ struct SimilarCluster {
 
 struct WifiCluster {
   ClusterId id = -1;
-  KeyframeId founder = -1;
+  graph::KeyframeId founder = -1;
   std::shared_ptr<const WifiSignature> representative;
-  std::vector<KeyframeId> keyframes;  // ascending
+  std::vector<graph::KeyframeId> keyframes;  // ascending
 };
 
 class WifiClusterMap {
@@ -46,12 +46,12 @@ class WifiClusterMap {
   /// returned for its signature; `visually_connected` the keyframes it has visual or loop edges
   /// with. Returns the cluster it joined or founded; a keyframe without a signature (null) joins
   /// none and -1 is returned.
-  ClusterId assign(KeyframeId keyframe, std::shared_ptr<const WifiSignature> signature,
+  ClusterId assign(graph::KeyframeId keyframe, std::shared_ptr<const WifiSignature> signature,
                    const std::vector<SimilarCluster>& similar,
-                   const std::vector<KeyframeId>& visually_connected);
+                   const std::vector<graph::KeyframeId>& visually_connected);
 
   /// -1 when the keyframe is in no cluster.
-  ClusterId cluster_of(KeyframeId keyframe) const;
+  ClusterId cluster_of(graph::KeyframeId keyframe) const;
   const std::vector<WifiCluster>& clusters() const { return clusters_; }
 
   /// wifi_clusters.csv: cluster_id,founder_keyframe,keyframes,representative_signature

@@ -12,7 +12,7 @@
 
 namespace wifislam::slam::wifi {
 
-WifiModule::WifiModule(const WifiOptions& options, Instrumentation& instrumentation)
+WifiModule::WifiModule(const WifiOptions& options, util::Instrumentation& instrumentation)
     : options_(options),
       instrumentation_(&instrumentation),
       pauses_(options),
@@ -20,7 +20,7 @@ WifiModule::WifiModule(const WifiOptions& options, Instrumentation& instrumentat
 
 void WifiModule::observe_scan(const WifiScan& scan) {
   // Signature aggregation is part of the Wi-Fi overhead; it is booked with clustering.
-  ScopedTimer timer(*instrumentation_, module::kWifiClustering);
+  util::ScopedTimer timer(*instrumentation_, module::kWifiClustering);
   pauses_.observe_scan(scan);
 }
 
@@ -28,13 +28,13 @@ void WifiModule::observe_odometry(const OdometryReading& reading) {
   pauses_.observe_odometry(reading);
 }
 
-void WifiModule::sign(KeyframeId keyframe) {
+void WifiModule::sign(graph::KeyframeId keyframe) {
   if (keyframe == current_) return;
   if (keyframe < current_ || keyframe < 0) {
     throw InvalidInputError(fmt::format(
         "Wi-Fi module: keyframe {} signed after keyframe {} (ids must grow)", keyframe, current_));
   }
-  ScopedTimer timer(*instrumentation_, module::kWifiClustering);
+  util::ScopedTimer timer(*instrumentation_, module::kWifiClustering);
   current_ = keyframe;
   current_assigned_ = false;
   std::shared_ptr<const WifiSignature> signature = pauses_.current();
@@ -53,34 +53,35 @@ void WifiModule::sign(KeyframeId keyframe) {
     cluster_is_similar_[static_cast<std::size_t>(s.cluster)] = 1;
 }
 
-std::shared_ptr<const WifiSignature> WifiModule::signature_of(KeyframeId keyframe) const {
+std::shared_ptr<const WifiSignature> WifiModule::signature_of(graph::KeyframeId keyframe) const {
   if (keyframe < 0 || static_cast<std::size_t>(keyframe) >= signature_of_keyframe_.size()) {
     return nullptr;
   }
   return signature_of_keyframe_[static_cast<std::size_t>(keyframe)];
 }
 
-bool WifiModule::in_similar_cluster(KeyframeId keyframe) const {
+bool WifiModule::in_similar_cluster(graph::KeyframeId keyframe) const {
   const ClusterId c = clusters_.cluster_of(keyframe);
   return c >= 0 && static_cast<std::size_t>(c) < cluster_is_similar_.size() &&
          cluster_is_similar_[static_cast<std::size_t>(c)] != 0;
 }
 
-std::vector<KeyframeId> WifiModule::bound(const std::vector<KeyframeId>& keyframes) const {
+std::vector<graph::KeyframeId> WifiModule::bound(
+    const std::vector<graph::KeyframeId>& keyframes) const {
   if (!has_signature()) return keyframes;
-  ScopedTimer timer(*instrumentation_, module::kWifiClustering);
-  std::vector<KeyframeId> out;
-  for (KeyframeId k : keyframes) {
+  util::ScopedTimer timer(*instrumentation_, module::kWifiClustering);
+  std::vector<graph::KeyframeId> out;
+  for (graph::KeyframeId k : keyframes) {
     if (in_similar_cluster(k)) out.push_back(k);
   }
   instrumentation_->count(counter::kWifiBoundedPool, static_cast<std::int64_t>(out.size()));
   return out;
 }
 
-std::vector<KeyframeId> WifiModule::similar_cluster_keyframes() const {
-  std::vector<KeyframeId> out;
+std::vector<graph::KeyframeId> WifiModule::similar_cluster_keyframes() const {
+  std::vector<graph::KeyframeId> out;
   for (const SimilarCluster& s : similar_) {
-    const std::vector<KeyframeId>& members =
+    const std::vector<graph::KeyframeId>& members =
         clusters_.clusters()[static_cast<std::size_t>(s.cluster)].keyframes;
     out.insert(out.end(), members.begin(), members.end());
   }
@@ -88,14 +89,14 @@ std::vector<KeyframeId> WifiModule::similar_cluster_keyframes() const {
   return out;
 }
 
-ClusterId WifiModule::assign(KeyframeId keyframe,
-                             const std::vector<KeyframeId>& visually_connected) {
+ClusterId WifiModule::assign(graph::KeyframeId keyframe,
+                             const std::vector<graph::KeyframeId>& visually_connected) {
   if (keyframe != current_ || current_assigned_) {
     throw std::logic_error(fmt::format(
         "Wi-Fi cluster management: keyframe {} assigned, but the signed keyframe is {}{}", keyframe,
         current_, current_assigned_ ? " (already assigned)" : ""));
   }
-  ScopedTimer timer(*instrumentation_, module::kWifiClusterManagement);
+  util::ScopedTimer timer(*instrumentation_, module::kWifiClusterManagement);
   current_assigned_ = true;
   const std::size_t clusters_before = clusters_.clusters().size();
   const ClusterId cluster =

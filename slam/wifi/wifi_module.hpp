@@ -44,7 +44,7 @@ struct ClusterEvent {
   enum class Kind { kFounded, kJoined };
   Kind kind = Kind::kFounded;
   ClusterId cluster = -1;
-  KeyframeId keyframe = -1;
+  graph::KeyframeId keyframe = -1;
 };
 using ClusterListener = std::function<void(const ClusterEvent&)>;
 
@@ -52,7 +52,7 @@ class WifiModule {
  public:
   /// Time goes to `instrumentation` under wifi_clustering / wifi_cluster_management, work to the
   /// wifi_* counters (core/run_format.hpp).
-  WifiModule(const WifiOptions& options, Instrumentation& instrumentation);
+  WifiModule(const WifiOptions& options, util::Instrumentation& instrumentation);
 
   const WifiOptions& options() const { return options_; }
 
@@ -63,35 +63,36 @@ class WifiModule {
   /// Gives `keyframe` the signature frames carry now and finds its similar clusters; it becomes
   /// the current keyframe that bound() and the queries below speak of. Ids must grow
   /// (InvalidInputError otherwise); signing the current keyframe again is a no-op.
-  void sign(KeyframeId keyframe);
+  void sign(graph::KeyframeId keyframe);
   /// The current keyframe (-1 before the first sign()).
-  KeyframeId current() const { return current_; }
+  graph::KeyframeId current() const { return current_; }
   /// Whether the current keyframe has a signature.
   bool has_signature() const { return signature_of(current_) != nullptr; }
   /// The signature `keyframe` was signed with; null when unsigned or signed before any scan.
-  std::shared_ptr<const WifiSignature> signature_of(KeyframeId keyframe) const;
+  std::shared_ptr<const WifiSignature> signature_of(graph::KeyframeId keyframe) const;
   /// The current keyframe's similar clusters, most similar first.
   const std::vector<SimilarCluster>& similar_clusters() const { return similar_; }
 
   // --- Bounding ---------------------------------------------------------------------------
   /// The entries of `keyframes` (order kept) that belong to a similar cluster of the current
   /// keyframe; all of them when it has no signature.
-  std::vector<KeyframeId> bound(const std::vector<KeyframeId>& keyframes) const;
+  std::vector<graph::KeyframeId> bound(const std::vector<graph::KeyframeId>& keyframes) const;
   /// Whether `keyframe` belongs to a similar cluster of the current keyframe now (immunisation).
-  bool in_similar_cluster(KeyframeId keyframe) const;
+  bool in_similar_cluster(graph::KeyframeId keyframe) const;
   /// Every keyframe of the current keyframe's similar clusters, ascending (retrieval).
-  std::vector<KeyframeId> similar_cluster_keyframes() const;
+  std::vector<graph::KeyframeId> similar_cluster_keyframes() const;
 
   // --- Cluster management -----------------------------------------------------------------
   /// Assigns the current keyframe (which must be `keyframe`) given the keyframes it is visually
   /// connected to. Returns the cluster joined or founded, -1 without a signature.
-  ClusterId assign(KeyframeId keyframe, const std::vector<KeyframeId>& visually_connected);
+  ClusterId assign(graph::KeyframeId keyframe,
+                   const std::vector<graph::KeyframeId>& visually_connected);
   void subscribe(ClusterListener listener) { listeners_.push_back(std::move(listener)); }
 
   // --- State and outputs ------------------------------------------------------------------
   const WifiClusterMap& clusters() const { return clusters_; }
   /// -1 when `keyframe` is in no cluster.
-  ClusterId cluster_of(KeyframeId keyframe) const { return clusters_.cluster_of(keyframe); }
+  ClusterId cluster_of(graph::KeyframeId keyframe) const { return clusters_.cluster_of(keyframe); }
   int pause_count() const { return pauses_.pause_count(); }
   /// wifi_clusters.csv into `run_dir`.
   void write_outputs(const std::filesystem::path& run_dir) const;
@@ -100,11 +101,11 @@ class WifiModule {
 
  private:
   WifiOptions options_;
-  Instrumentation* instrumentation_;
+  util::Instrumentation* instrumentation_;
   PauseSignatureTracker pauses_;
   WifiClusterMap clusters_;
   std::vector<std::shared_ptr<const WifiSignature>> signature_of_keyframe_;
-  KeyframeId current_ = -1;
+  graph::KeyframeId current_ = -1;
   bool current_assigned_ = false;
   std::vector<SimilarCluster> similar_;
   std::vector<std::uint8_t> cluster_is_similar_;  // by cluster id, for the current keyframe

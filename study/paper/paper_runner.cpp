@@ -168,7 +168,7 @@ class GroupRunner {
     const auto site =
         std::make_shared<const sim::site::Site>(sim::generate::resolve_scene(scene, overrides));
 
-    std::vector<slam::FeatureOptions> features;
+    std::vector<slam::feature::FeatureOptions> features;
     for (std::size_t s = 0; s < files.size(); ++s)
       for (const StudyCase& c : todo[s])
         features.push_back(case_slam_options(files[s], c).features);

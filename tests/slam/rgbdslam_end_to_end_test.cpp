@@ -28,7 +28,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct RunResult {
-  std::unique_ptr<slam::SlamSystem> system;
+  std::unique_ptr<slam::system::SlamSystem> system;
   std::map<std::int64_t, Pose> truth;           // frame time (ns) -> camera-to-world
   std::map<std::int64_t, Pose> truth_by_frame;  // frame index -> camera-to-world
 };
@@ -40,10 +40,10 @@ RunResult run_on_generated(const sim::scene::Scene& scene, double fps, std::int6
   generate.fps = fps;
   generate.max_frames = max_frames;
   sim::generate::GeneratorStream stream(scene, generate);
-  slam::StreamInfo info{stream.intrinsics(), stream.camera_in_base(), stream.has_wifi(),
-                        stream.has_odometry()};
+  slam::system::StreamInfo info{stream.intrinsics(), stream.camera_in_base(), stream.has_wifi(),
+                                stream.has_odometry()};
   RunResult result;
-  result.system = std::make_unique<slam::SlamSystem>(options, info);
+  result.system = std::make_unique<slam::system::SlamSystem>(options, info);
   while (std::optional<SensorEvent> event = stream.next()) {
     result.system->process(*event);
     if (const auto* frame = std::get_if<RgbdFrame>(&*event)) {
@@ -112,12 +112,12 @@ TEST(RgbdslamEndToEnd, OdometryOnAStraightCorridorDriftsLessThanTwoPercent) {
 
 TEST(RgbdslamEndToEnd, ClosesTheLoopOnASmallLowAliasingLoop) {
   const RunResult run = run_on_generated(test::small_loop_scene(), 5.0, -1, test_options());
-  const slam::SlamSystem& system = *run.system;
-  const slam::PoseGraph& graph = system.graph();
+  const slam::system::SlamSystem& system = *run.system;
+  const slam::graph::PoseGraph& graph = system.graph();
   // A closure is correct when its measured relative pose agrees with the truth within eval's
   // thresholds (0.3 m, 5 deg; eval/eval_options.hpp).
   int true_closures = 0;
-  for (const slam::LoopClosureRecord& l : system.loop_closures()) {
+  for (const slam::system::LoopClosureRecord& l : system.loop_closures()) {
     const Pose& a = run.truth_by_frame.at(graph.node(l.from).frame_index);
     const Pose& b = run.truth_by_frame.at(graph.node(l.to).frame_index);
     const Pose truth_rel = a.inverse() * b;
@@ -128,8 +128,8 @@ TEST(RgbdslamEndToEnd, ClosesTheLoopOnASmallLowAliasingLoop) {
     std::printf(
         "loop closure %d - %d (%s, %d inliers): %.2f m apart, relative pose error %.3f m "
         "%.2f deg\n",
-        l.from, l.to, slam::to_string(l.role).c_str(), l.inliers, translation_distance_m(a, b),
-        translation_distance_m(truth_rel, l.from_to),
+        l.from, l.to, slam::frontend::to_string(l.role).c_str(), l.inliers,
+        translation_distance_m(a, b), translation_distance_m(truth_rel, l.from_to),
         rotation_angle_rad(truth_rel, l.from_to) * 180.0 / std::numbers::pi);
   }
   const test::AlignedError ate = test::aligned_translation_error(system.trajectory(), run.truth);
@@ -156,8 +156,8 @@ TEST(RgbdslamEndToEnd, TwoRunsGiveIdenticalTrajectoriesAndEdges) {
   for (std::size_t i = 0; i < ta.size(); ++i) {
     EXPECT_EQ(format_tum_line(ta[i]), format_tum_line(tb[i])) << i;
   }
-  EXPECT_EQ(slam::graph_to_json(a.system->graph()).dump(),
-            slam::graph_to_json(b.system->graph()).dump());
+  EXPECT_EQ(slam::io::graph_to_json(a.system->graph()).dump(),
+            slam::io::graph_to_json(b.system->graph()).dump());
   EXPECT_GT(a.system->graph().node_count(), 3u);
 }
 
@@ -189,19 +189,21 @@ TEST(RgbdslamEndToEnd, OptimizerSkipStepOptimisesAfterEveryNthKeyframe) {
 
 /// A front end unlike RGBD-SLAM, defined outside the library: the last keyframe plus every
 /// qualifying keyframe of the similar Wi-Fi clusters, only the best loop hypothesis accepted.
-class WifiOnlyFrontEnd final : public slam::FrontEnd {
+class WifiOnlyFrontEnd final : public slam::frontend::FrontEnd {
  public:
   WifiOnlyFrontEnd()
-      : FrontEnd("wifi_only_test", std::make_unique<slam::AcceptBestLoopHypothesis>()) {}
-  std::vector<slam::Candidate> select(const slam::SelectionQuery& query) override {
-    std::vector<slam::Candidate> out;
-    if (query.keyframe >= 2) out.push_back({query.keyframe - 2, slam::CandidateRole::kPredecessor});
-    std::vector<slam::KeyframeId> qualifying;
-    for (slam::KeyframeId k = 0; k < query.keyframe; ++k) {
+      : FrontEnd("wifi_only_test", std::make_unique<slam::frontend::AcceptBestLoopHypothesis>()) {}
+  std::vector<slam::frontend::Candidate> select(
+      const slam::frontend::SelectionQuery& query) override {
+    std::vector<slam::frontend::Candidate> out;
+    if (query.keyframe >= 2)
+      out.push_back({query.keyframe - 2, slam::frontend::CandidateRole::kPredecessor});
+    std::vector<slam::graph::KeyframeId> qualifying;
+    for (slam::graph::KeyframeId k = 0; k < query.keyframe; ++k) {
       if (query.loop_rule->is_loop(k, query.keyframe)) qualifying.push_back(k);
     }
-    for (slam::KeyframeId k : wifi()->bound(qualifying)) {
-      out.push_back({k, slam::CandidateRole::kLongTerm});
+    for (slam::graph::KeyframeId k : wifi()->bound(qualifying)) {
+      out.push_back({k, slam::frontend::CandidateRole::kLongTerm});
     }
     return out;
   }
@@ -210,14 +212,14 @@ class WifiOnlyFrontEnd final : public slam::FrontEnd {
 // --wifi works with any registered front end through the real pipeline: the module clusters the
 // keyframes, and the per-role counters add up to the pipeline's totals.
 TEST(RgbdslamEndToEnd, AnotherFrontEndRunsWithTheWifiModule) {
-  slam::register_front_end("wifi_only_test", [](const slam::FrontEndContext&) {
+  slam::frontend::register_front_end("wifi_only_test", [](const slam::frontend::FrontEndContext&) {
     return std::make_unique<WifiOnlyFrontEnd>();
   });
   slam::SlamOptions options = test_options();
   options.frontend = "wifi_only_test";
   options.wifi.enabled = true;
   const RunResult run = run_on_generated(test::small_loop_with_wifi_scene(), 3.0, 200, options);
-  const slam::SlamSystem& system = *run.system;
+  const slam::system::SlamSystem& system = *run.system;
   ASSERT_NE(system.front_end().wifi(), nullptr);
   EXPECT_GT(system.front_end().wifi()->pause_count(), 3);
   const slam::wifi::WifiClusterMap& clusters = system.front_end().wifi()->clusters();
@@ -226,27 +228,28 @@ TEST(RgbdslamEndToEnd, AnotherFrontEndRunsWithTheWifiModule) {
   for (const slam::wifi::WifiCluster& c : clusters.clusters()) clustered += c.keyframes.size();
   EXPECT_GT(clustered, system.graph().node_count() / 2);
 
-  const slam::Instrumentation& inst = system.instrumentation();
+  const slam::util::Instrumentation& inst = system.instrumentation();
   std::int64_t candidate_comparisons = 0, accepted = 0;
   for (const auto& [role, work] : inst.roles()) {
     EXPECT_LE(work.accepted, work.verified) << role;
     EXPECT_LE(work.verified, work.comparisons) << role;
-    if (role == slam::kTrackingRole) continue;
+    if (role == slam::frontend::kTrackingRole) continue;
     candidate_comparisons += work.comparisons;
     accepted += work.accepted;
   }
   EXPECT_EQ(candidate_comparisons, inst.counter(slam::counter::kCandidateComparisons));
-  EXPECT_GT(inst.roles().at(slam::kTrackingRole).comparisons, 0);
+  EXPECT_GT(inst.roles().at(slam::frontend::kTrackingRole).comparisons, 0);
   // Accepted candidate comparisons are the graph's visual and loop edges, less tracking's.
   std::int64_t visual_or_loop = 0;
-  for (const slam::GraphEdge& e : system.graph().edges()) {
-    if (e.type == slam::EdgeType::kVisual || e.type == slam::EdgeType::kLoop) ++visual_or_loop;
+  for (const slam::graph::GraphEdge& e : system.graph().edges()) {
+    if (e.type == slam::graph::EdgeType::kVisual || e.type == slam::graph::EdgeType::kLoop)
+      ++visual_or_loop;
   }
   EXPECT_LE(accepted, visual_or_loop);
   EXPECT_EQ(accepted + inst.counter(slam::counter::kRejectedHypotheses), [&] {
     std::int64_t verified = 0;
     for (const auto& [role, work] : inst.roles()) {
-      if (role != slam::kTrackingRole) verified += work.verified;
+      if (role != slam::frontend::kTrackingRole) verified += work.verified;
     }
     return verified;
   }());

@@ -72,7 +72,7 @@ TEST(SlamOptions, SetsThePapersParametersByName) {
   EXPECT_EQ(o.transform.min_matches, 15);
   EXPECT_DOUBLE_EQ(o.transform.inlier_distance, 2.5);
   EXPECT_TRUE(o.tracking.odometry_edges);
-  EXPECT_EQ(o.rgbdslam.robust_kernel, RobustKernel::Kind::kCauchy);
+  EXPECT_EQ(o.rgbdslam.robust_kernel, optimize::RobustKernel::Kind::kCauchy);
   EXPECT_NO_THROW(validate(o));
   EXPECT_EQ(o.seed, 42u);
   const nlohmann::json j = to_json(o);
@@ -124,7 +124,7 @@ TEST(SlamOptions, RtabmapParametersHaveRtabmapDefaultsAndTimeThresholdTakesInf) 
   // A time source is one of its names, refused where it is set.
   EXPECT_THROW(set_option_assignment(o, "time_source=sundial"), Error);
   set_option_assignment(o, "time_source=wall");
-  EXPECT_EQ(o.rtabmap.time_source, RtabmapTimeSource::kWall);
+  EXPECT_EQ(o.rtabmap.time_source, frontend::RtabmapTimeSource::kWall);
   EXPECT_NO_THROW(validate(o));
   for (const char* bad :
        {"cost_ms_per_scored_node=-1", "cost_ms_per_hypothesis=-1", "wifi_max_immune=-1"}) {

@@ -53,7 +53,7 @@ TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
       runs.push_back(std::move(run));
     }
   }
-  std::vector<slam::FeatureOptions> features;
+  std::vector<slam::feature::FeatureOptions> features;
   for (const StreamedRun& run : runs) features.push_back(run.slam.features);
   const RecordedDataset dataset(site, scratch / "dataset", generate, features, 2);
   EXPECT_EQ(dataset.summary().frames, 150);
@@ -71,10 +71,10 @@ TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
     SCOPED_TRACE(run.run_dir.filename().string());
     const sim::generate::SensorInput reader =
         sim::generate::open_sensor_input(scratch / "dataset", {});
-    slam::RunSummary summary;
-    const auto system = slam::run_slam(*reader.stream, run.slam, summary);
+    slam::system::RunSummary summary;
+    const auto system = slam::system::run_slam(*reader.stream, run.slam, summary);
     const fs::path by_reader = run.run_dir.string() + "_reader";
-    slam::write_run_folder(by_reader, *system, summary, false);
+    slam::io::write_run_folder(by_reader, *system, summary, false);
     EXPECT_GT(summary.keyframes, 5);
     for (const char* file :
          {"trajectory.txt", "keyframes.txt", "graph.json", "loop_closures.csv"}) {

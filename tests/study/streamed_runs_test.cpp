@@ -81,10 +81,10 @@ TEST_F(StreamedRuns, RunsFedAsTheDatasetIsWrittenAreTheRunsOfItsReader) {
     slam::set_option(options, "min_matches", "10");
     options.seed = c.seed;
     options.wifi.enabled = c.wifi;
-    slam::RunSummary summary;
-    const auto system = slam::run_slam(*reader.stream, options, summary);
+    slam::system::RunSummary summary;
+    const auto system = slam::system::run_slam(*reader.stream, options, summary);
     const fs::path by_reader = scratch_ / (c.wifi ? "reader_wifi" : "reader_vanilla");
-    slam::write_run_folder(by_reader, *system, summary, false);
+    slam::io::write_run_folder(by_reader, *system, summary, false);
     EXPECT_GT(summary.keyframes, 10);
     for (const char* file : kRunFiles) {
       const std::string streamed = test::read_file(scratch_ / "jobs1" / c.run_dir / file);

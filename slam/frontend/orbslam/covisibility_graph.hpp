@@ -10,28 +10,28 @@
 
 #include "slam/graph/pose_graph.hpp"
 
-namespace wifislam::slam::orbslam {
+namespace wifislam::slam::frontend::orbslam {
 
 class CovisibilityGraph {
  public:
   explicit CovisibilityGraph(int min_weight = 15) : min_weight_(min_weight) {}
 
   /// Records a verified pair; ignored below the minimum weight.
-  void add(KeyframeId a, KeyframeId b, int inliers);
+  void add(graph::KeyframeId a, graph::KeyframeId b, int inliers);
 
-  int weight(KeyframeId a, KeyframeId b) const;
+  int weight(graph::KeyframeId a, graph::KeyframeId b) const;
   /// Every covisible keyframe of `k` (ORB-SLAM2 GetConnectedKeyFrames), ascending.
-  std::vector<KeyframeId> connected(KeyframeId k) const;
+  std::vector<graph::KeyframeId> connected(graph::KeyframeId k) const;
   /// The `n` covisible keyframes of `k` with the largest weights, largest first (ties: the
   /// newer keyframe first); n < 0: all of them (GetBestCovisibilityKeyFrames).
-  std::vector<KeyframeId> best(KeyframeId k, int n) const;
+  std::vector<graph::KeyframeId> best(graph::KeyframeId k, int n) const;
   std::size_t edge_count() const { return edges_; }
   int min_weight() const { return min_weight_; }
 
  private:
   int min_weight_;
-  std::map<KeyframeId, std::map<KeyframeId, int>> weights_;
+  std::map<graph::KeyframeId, std::map<graph::KeyframeId, int>> weights_;
   std::size_t edges_ = 0;
 };
 
-}  // namespace wifislam::slam::orbslam
+}  // namespace wifislam::slam::frontend::orbslam

@@ -11,7 +11,7 @@
 #include "slam/bow/shipped_vocabulary.hpp"
 #include "slam/frontend/orbslam/orbslam_queries_csv.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 namespace {
 
@@ -64,12 +64,12 @@ std::vector<const bow::KeyframeDatabase*> OrbslamFrontEnd::databases_to_search()
 std::vector<Candidate> OrbslamFrontEnd::select(const SelectionQuery& query) {
   const auto started = std::chrono::steady_clock::now();
   graph_ = query.graph;
-  const KeyframeId id = query.keyframe;
+  const graph::KeyframeId id = query.keyframe;
   OrbslamQueryRecord record;
   record.keyframe = id;
 
   // 1. BoW vector and direct index.
-  const FrameFeatures& features = *query.features;
+  const feature::FrameFeatures& features = *query.features;
   bow::BowKeyframe& keyframe = bow_keyframes_[id];
   keyframe.descriptors = bow::pack_descriptors(features.descriptors);
   keyframe.angles_deg.reserve(features.keypoints.size());
@@ -80,14 +80,14 @@ std::vector<Candidate> OrbslamFrontEnd::select(const SelectionQuery& query) {
 
   // 2. Local mapping candidates.
   std::vector<Candidate> out;
-  std::set<KeyframeId> taken(query.already_compared.begin(), query.already_compared.end());
+  std::set<graph::KeyframeId> taken(query.already_compared.begin(), query.already_compared.end());
   taken.insert(id);
-  std::vector<KeyframeId> local;
+  std::vector<graph::KeyframeId> local;
   if (id >= 1) {
-    const KeyframeId previous = id - 1;
+    const graph::KeyframeId previous = id - 1;
     local.push_back(previous);
     if (taken.insert(previous).second) out.push_back({previous, CandidateRole::kPredecessor});
-    for (KeyframeId k : covisibility_.best(previous, options_.local_keyframes)) {
+    for (graph::KeyframeId k : covisibility_.best(previous, options_.local_keyframes)) {
       local.push_back(k);
       if (k < id && taken.insert(k).second) out.push_back({k, CandidateRole::kNeighbour});
     }
@@ -95,7 +95,7 @@ std::vector<Candidate> OrbslamFrontEnd::select(const SelectionQuery& query) {
 
   // 3. Loop detection.
   const auto detection_started = std::chrono::steady_clock::now();
-  std::vector<KeyframeId> connected = query.already_compared;
+  std::vector<graph::KeyframeId> connected = query.already_compared;
   connected.insert(connected.end(), local.begin(), local.end());
   std::sort(connected.begin(), connected.end());
   connected.erase(std::unique(connected.begin(), connected.end()), connected.end());
@@ -112,22 +112,22 @@ std::vector<Candidate> OrbslamFrontEnd::select(const SelectionQuery& query) {
 }
 
 std::vector<Candidate> OrbslamFrontEnd::detect_loop(const SelectionQuery& query,
-                                                    const std::vector<KeyframeId>& connected,
+                                                    const std::vector<graph::KeyframeId>& connected,
                                                     OrbslamQueryRecord& record) {
-  const KeyframeId id = query.keyframe;
+  const graph::KeyframeId id = query.keyframe;
   if (id < last_loop_ + options_.keyframes_between_loops || connected.empty()) return {};
   record.detection_ran = true;
   const bow::BowVector& current = bow_.at(id);
 
   double min_score = 1.0;
-  for (KeyframeId k : connected)
+  for (graph::KeyframeId k : connected)
     min_score = std::min(min_score, bow::l1_score(current, bow_.at(k)));
   record.min_score = min_score;
 
   const std::vector<const bow::KeyframeDatabase*> databases = databases_to_search();
   record.databases_searched = static_cast<int>(databases.size());
   for (const bow::KeyframeDatabase* d : databases) record.keyframes_searched += d->size();
-  const bow::NeighbourFunction neighbours = [this](KeyframeId k) {
+  const bow::NeighbourFunction neighbours = [this](graph::KeyframeId k) {
     return covisibility_.best(k, options_.covisibility_group_size);
   };
   // Not candidates: the connected keyframes, and every keyframe too recent to be a loop closure
@@ -135,9 +135,9 @@ std::vector<Candidate> OrbslamFrontEnd::detect_loop(const SelectionQuery& query,
   // among its connected keyframes; here a robot lingering in one hall would otherwise verify
   // keyframes a few metres back as "loop" candidates at every keyframe. Path grows with the id,
   // so they are the keyframes from the first non-loop one on.
-  std::vector<KeyframeId> excluded = connected;
+  std::vector<graph::KeyframeId> excluded = connected;
   if (query.loop_rule != nullptr) {
-    for (KeyframeId k = id - 1; k >= 0 && !query.loop_rule->is_loop(k, id); --k) {
+    for (graph::KeyframeId k = id - 1; k >= 0 && !query.loop_rule->is_loop(k, id); --k) {
       excluded.push_back(k);
     }
   }
@@ -146,19 +146,19 @@ std::vector<Candidate> OrbslamFrontEnd::detect_loop(const SelectionQuery& query,
   record.candidates = static_cast<int>(candidates.size());
 
   // Temporal consistency: each candidate with its covisible keyframes.
-  std::vector<std::pair<KeyframeId, std::set<KeyframeId>>> groups;
+  std::vector<std::pair<graph::KeyframeId, std::set<graph::KeyframeId>>> groups;
   for (const bow::LoopCandidate& c : candidates) {
-    std::set<KeyframeId> group{c.keyframe};
-    for (KeyframeId k : covisibility_.connected(c.keyframe)) group.insert(k);
+    std::set<graph::KeyframeId> group{c.keyframe};
+    for (graph::KeyframeId k : covisibility_.connected(c.keyframe)) group.insert(k);
     groups.emplace_back(c.keyframe, std::move(group));
   }
-  const std::vector<KeyframeId> consistent = consistency_.update(groups);
+  const std::vector<graph::KeyframeId> consistent = consistency_.update(groups);
   record.consistent = static_cast<int>(consistent.size());
 
   // The SearchByBoW gate, then verification by the pipeline.
   std::vector<Candidate> out;
   const bow::BowKeyframe& mine = bow_keyframes_.at(id);
-  for (KeyframeId k : consistent) {
+  for (graph::KeyframeId k : consistent) {
     if (bow::count_bow_matches(mine, bow_keyframes_.at(k), {}) >= options_.bow_min_matches) {
       out.push_back({k, CandidateRole::kLongTerm});
     }
@@ -168,19 +168,19 @@ std::vector<Candidate> OrbslamFrontEnd::detect_loop(const SelectionQuery& query,
 }
 
 void OrbslamFrontEnd::after_verification(const VerificationReport& report) {
-  const KeyframeId id = report.keyframe;
+  const graph::KeyframeId id = report.keyframe;
   OrbslamQueryRecord& record = records_.back();
   // Covisibility: the keyframe's accepted visual and loop edges (the tracking edge among them).
   if (graph_ != nullptr) {
     for (auto it = graph_->edges().rbegin(); it != graph_->edges().rend(); ++it) {
       if (it->from != id && it->to != id) break;  // the keyframe's edges were added last
-      if (it->type == EdgeType::kVisual || it->type == EdgeType::kLoop) {
+      if (it->type == graph::EdgeType::kVisual || it->type == graph::EdgeType::kLoop) {
         covisibility_.add(it->from, it->to, it->inliers);
       }
     }
   }
   for (const ComparisonOutcome& c : report.comparisons) {
-    if (c.accepted && c.edge_type == EdgeType::kLoop &&
+    if (c.accepted && c.edge_type == graph::EdgeType::kLoop &&
         c.candidate.role == CandidateRole::kLongTerm) {
       last_loop_ = id;
       record.accepted_loop = c.candidate.keyframe;
@@ -236,4 +236,4 @@ nlohmann::json OrbslamFrontEnd::own_summary() const {
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -53,11 +53,11 @@
 #include "slam/frontend/orbslam/covisibility_graph.hpp"
 #include "slam/frontend/orbslam/orbslam_options.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// What loop detection did for one keyframe (a row of orbslam_queries.csv).
 struct OrbslamQueryRecord {
-  KeyframeId keyframe = -1;
+  graph::KeyframeId keyframe = -1;
   bool detection_ran = false;
   int databases_searched = 0;          // inverted indexes read (vanilla: 1)
   std::size_t keyframes_searched = 0;  // keyframes in them
@@ -66,7 +66,7 @@ struct OrbslamQueryRecord {
   int candidates = 0;  // DetectLoopCandidates' groups
   int consistent = 0;  // after temporal consistency
   int bow_passed = 0;  // after the SearchByBoW gate: verified
-  KeyframeId accepted_loop = -1;
+  graph::KeyframeId accepted_loop = -1;
   wifi::ClusterId cluster = -1;  // the Wi-Fi cluster the keyframe joined (-1: none / vanilla)
   double query_ms = 0.0;         // steps 1 and 3 (BoW transform, detection, BoW matching)
 };
@@ -87,7 +87,7 @@ class OrbslamFrontEnd final : public FrontEnd {
   const std::map<wifi::ClusterId, bow::KeyframeDatabase>& cluster_databases() const {
     return by_cluster_;
   }
-  const bow::BowVector& bow_of(KeyframeId keyframe) const { return bow_.at(keyframe); }
+  const bow::BowVector& bow_of(graph::KeyframeId keyframe) const { return bow_.at(keyframe); }
 
  protected:
   void on_wifi_attached() override;
@@ -97,7 +97,7 @@ class OrbslamFrontEnd final : public FrontEnd {
 
  private:
   std::vector<Candidate> detect_loop(const SelectionQuery& query,
-                                     const std::vector<KeyframeId>& connected,
+                                     const std::vector<graph::KeyframeId>& connected,
                                      OrbslamQueryRecord& record);
   std::vector<const bow::KeyframeDatabase*> databases_to_search() const;
 
@@ -108,11 +108,11 @@ class OrbslamFrontEnd final : public FrontEnd {
   bow::LoopConsistency consistency_;
   bow::KeyframeDatabase all_;                                    // vanilla
   std::map<wifi::ClusterId, bow::KeyframeDatabase> by_cluster_;  // Wi-Fi; -1: without a cluster
-  std::map<KeyframeId, bow::BowVector> bow_;
-  std::map<KeyframeId, bow::BowKeyframe> bow_keyframes_;
-  const PoseGraph* graph_ = nullptr;
-  KeyframeId last_loop_ = -1;
+  std::map<graph::KeyframeId, bow::BowVector> bow_;
+  std::map<graph::KeyframeId, bow::BowKeyframe> bow_keyframes_;
+  const graph::PoseGraph* graph_ = nullptr;
+  graph::KeyframeId last_loop_ = -1;
   std::vector<OrbslamQueryRecord> records_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

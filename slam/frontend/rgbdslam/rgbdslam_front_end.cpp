@@ -8,12 +8,12 @@
 
 #include "slam/wifi/signature_similarity.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
-std::vector<KeyframeId> sample_without_replacement(const std::vector<KeyframeId>& pool, int count,
-                                                   Rng& rng) {
-  std::vector<KeyframeId> remaining = pool;
-  std::vector<KeyframeId> out;
+std::vector<graph::KeyframeId> sample_without_replacement(
+    const std::vector<graph::KeyframeId>& pool, int count, Rng& rng) {
+  std::vector<graph::KeyframeId> remaining = pool;
+  std::vector<graph::KeyframeId> out;
   const auto n =
       std::min<std::size_t>(remaining.size(), static_cast<std::size_t>(std::max(0, count)));
   for (std::size_t i = 0; i < n; ++i) {
@@ -26,12 +26,12 @@ std::vector<KeyframeId> sample_without_replacement(const std::vector<KeyframeId>
   return out;
 }
 
-std::vector<KeyframeId> sample_weighted_without_replacement(const std::vector<KeyframeId>& pool,
-                                                            const std::vector<double>& weights,
-                                                            int count, Rng& rng) {
-  std::vector<KeyframeId> remaining = pool;
+std::vector<graph::KeyframeId> sample_weighted_without_replacement(
+    const std::vector<graph::KeyframeId>& pool, const std::vector<double>& weights, int count,
+    Rng& rng) {
+  std::vector<graph::KeyframeId> remaining = pool;
   std::vector<double> w = weights;
-  std::vector<KeyframeId> out;
+  std::vector<graph::KeyframeId> out;
   while (static_cast<int>(out.size()) < count && !remaining.empty()) {
     double total = 0.0;
     for (double x : w) total += x;
@@ -78,19 +78,19 @@ RgbdslamFrontEnd::RgbdslamFrontEnd(const RgbdslamOptions& options, std::uint64_t
                                      : options.wifi_long_term_candidates),
       seed_(seed) {}
 
-Rng RgbdslamFrontEnd::group_rng(const char* group, KeyframeId keyframe) const {
+Rng RgbdslamFrontEnd::group_rng(const char* group, graph::KeyframeId keyframe) const {
   return Rng::stream(seed_, "slam/rgbdslam/" + std::string(group) + "/" + std::to_string(keyframe));
 }
 
 std::vector<Candidate> RgbdslamFrontEnd::select(const SelectionQuery& query) {
   std::vector<Candidate> out;
-  const KeyframeId current = query.keyframe;
+  const graph::KeyframeId current = query.keyframe;
   std::vector<std::uint8_t> taken(static_cast<std::size_t>(std::max(current, 0)) + 1, 0);
   taken[static_cast<std::size_t>(current)] = 1;
-  for (KeyframeId id : query.already_compared) {
+  for (graph::KeyframeId id : query.already_compared) {
     if (id >= 0 && id < current) taken[static_cast<std::size_t>(id)] = 1;
   }
-  auto take = [&](KeyframeId id, CandidateRole role) {
+  auto take = [&](graph::KeyframeId id, CandidateRole role) {
     if (id < 0 || id >= current || taken[static_cast<std::size_t>(id)]) return;
     taken[static_cast<std::size_t>(id)] = 1;
     out.push_back({id, role});
@@ -98,73 +98,75 @@ std::vector<Candidate> RgbdslamFrontEnd::select(const SelectionQuery& query) {
 
   // (a) Predecessors: the most recent keyframes. One that tracking already compared still
   // counts as one of them, so it is marked taken before this loop and only skipped here.
-  const KeyframeId first_predecessor = std::max(0, current - options_.predecessor_candidates);
-  for (KeyframeId id = current - 1; id >= first_predecessor; --id) {
+  const graph::KeyframeId first_predecessor =
+      std::max(0, current - options_.predecessor_candidates);
+  for (graph::KeyframeId id = current - 1; id >= first_predecessor; --id) {
     take(id, CandidateRole::kPredecessor);
   }
-  for (KeyframeId id = first_predecessor; id < current; ++id)
+  for (graph::KeyframeId id = first_predecessor; id < current; ++id)
     taken[static_cast<std::size_t>(id)] = 1;
 
   // (b) Geodesic neighbours of the previous keyframe, predecessors excluded, weighted by their
   // id distance from it.
   if (current >= 1 && query.graph != nullptr) {
-    std::vector<KeyframeId> neighbours;
+    std::vector<graph::KeyframeId> neighbours;
     std::vector<double> weights;
-    for (KeyframeId id : query.graph->geodesic_neighbours(current - 1, options_.geodesic_depth)) {
+    for (graph::KeyframeId id :
+         query.graph->geodesic_neighbours(current - 1, options_.geodesic_depth)) {
       if (id < current && !taken[static_cast<std::size_t>(id)]) {
         neighbours.push_back(id);
         weights.push_back(static_cast<double>(current - 1 - id));
       }
     }
     Rng rng = group_rng("neighbours", current);
-    for (KeyframeId id : sample_weighted_without_replacement(neighbours, weights,
-                                                             options_.neighbor_candidates, rng)) {
+    for (graph::KeyframeId id : sample_weighted_without_replacement(
+             neighbours, weights, options_.neighbor_candidates, rng)) {
       take(id, CandidateRole::kNeighbour);
     }
   }
 
   // (c) Long-term candidates.
-  std::vector<KeyframeId> eligible;
-  for (KeyframeId id = 0; id < current; ++id) {
+  std::vector<graph::KeyframeId> eligible;
+  for (graph::KeyframeId id = 0; id < current; ++id) {
     if (!taken[static_cast<std::size_t>(id)]) eligible.push_back(id);
   }
   Rng rng = group_rng("long_term", current);
-  for (KeyframeId id : long_term_candidates(query, eligible, rng)) {
+  for (graph::KeyframeId id : long_term_candidates(query, eligible, rng)) {
     take(id, CandidateRole::kLongTerm);
   }
   return out;
 }
 
-std::vector<KeyframeId> RgbdslamFrontEnd::long_term_candidates(
-    const SelectionQuery& query, const std::vector<KeyframeId>& eligible, Rng& rng) {
+std::vector<graph::KeyframeId> RgbdslamFrontEnd::long_term_candidates(
+    const SelectionQuery& query, const std::vector<graph::KeyframeId>& eligible, Rng& rng) {
   if (wifi() == nullptr || !wifi()->has_signature()) {
     return sample_without_replacement(eligible, options_.min_sampled_candidates, rng);
   }
   return wifi_long_term_candidates(query, eligible, rng);
 }
 
-std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
-    const SelectionQuery& query, const std::vector<KeyframeId>& eligible, Rng& rng) {
+std::vector<graph::KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
+    const SelectionQuery& query, const std::vector<graph::KeyframeId>& eligible, Rng& rng) {
   // Bounding: eligible keyframes of the similar clusters that qualify as a loop closure.
-  std::vector<KeyframeId> qualifying;
-  for (KeyframeId id : eligible) {
+  std::vector<graph::KeyframeId> qualifying;
+  for (graph::KeyframeId id : eligible) {
     if (query.loop_rule == nullptr || query.loop_rule->is_loop(id, query.keyframe)) {
       qualifying.push_back(id);
     }
   }
-  const std::vector<KeyframeId> pool = wifi()->bound(qualifying);
+  const std::vector<graph::KeyframeId> pool = wifi()->bound(qualifying);
   // Ranking: similarity of each keyframe's own signature (shared by the keyframes of a pause, so
   // computed once per signature), then a seeded tie-break key.
   const wifi::WifiSignature& current = *wifi()->signature_of(query.keyframe);
   std::map<const wifi::WifiSignature*, double> similarity_of;
   struct Ranked {
-    KeyframeId keyframe;
+    graph::KeyframeId keyframe;
     double similarity;
     std::uint64_t tie_break;
   };
   std::vector<Ranked> ranked;
   ranked.reserve(pool.size());
-  for (KeyframeId id : pool) {
+  for (graph::KeyframeId id : pool) {
     const auto signature = wifi()->signature_of(id);
     auto [it, inserted] = similarity_of.try_emplace(signature.get(), 0.0);
     if (inserted)
@@ -179,7 +181,7 @@ std::vector<KeyframeId> RgbdslamFrontEnd::wifi_long_term_candidates(
   const std::size_t budget = wifi_long_term_candidates_ <= 0
                                  ? ranked.size()
                                  : std::min<std::size_t>(ranked.size(), wifi_long_term_candidates_);
-  std::vector<KeyframeId> out;
+  std::vector<graph::KeyframeId> out;
   for (std::size_t i = 0; i < budget; ++i) out.push_back(ranked[i].keyframe);
   return out;
 }
@@ -193,4 +195,4 @@ nlohmann::json RgbdslamFrontEnd::own_summary() const {
   return out;
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -33,7 +33,7 @@
 #include "slam/frontend/front_end.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_options.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 class RgbdslamFrontEnd final : public FrontEnd {
  public:
@@ -49,14 +49,13 @@ class RgbdslamFrontEnd final : public FrontEnd {
  private:
   /// Group (c): long-term candidates among `eligible` (earlier keyframes not chosen by (a) or
   /// (b), ascending ids).
-  std::vector<KeyframeId> long_term_candidates(const SelectionQuery& query,
-                                               const std::vector<KeyframeId>& eligible, Rng& rng);
+  std::vector<graph::KeyframeId> long_term_candidates(
+      const SelectionQuery& query, const std::vector<graph::KeyframeId>& eligible, Rng& rng);
   /// The Wi-Fi variant of (c).
-  std::vector<KeyframeId> wifi_long_term_candidates(const SelectionQuery& query,
-                                                    const std::vector<KeyframeId>& eligible,
-                                                    Rng& rng);
+  std::vector<graph::KeyframeId> wifi_long_term_candidates(
+      const SelectionQuery& query, const std::vector<graph::KeyframeId>& eligible, Rng& rng);
   /// The sub-stream of one candidate group of one keyframe.
-  Rng group_rng(const char* group, KeyframeId keyframe) const;
+  Rng group_rng(const char* group, graph::KeyframeId keyframe) const;
 
   RgbdslamOptions options_;
   int wifi_long_term_candidates_;
@@ -64,13 +63,13 @@ class RgbdslamFrontEnd final : public FrontEnd {
 };
 
 /// `count` distinct entries of `pool`, uniformly without replacement, in draw order.
-std::vector<KeyframeId> sample_without_replacement(const std::vector<KeyframeId>& pool, int count,
-                                                   Rng& rng);
+std::vector<graph::KeyframeId> sample_without_replacement(
+    const std::vector<graph::KeyframeId>& pool, int count, Rng& rng);
 
 /// `count` distinct entries of `pool`, without replacement, each draw picking an entry with
 /// probability proportional to its weight among those left (weights > 0), in draw order.
-std::vector<KeyframeId> sample_weighted_without_replacement(const std::vector<KeyframeId>& pool,
-                                                            const std::vector<double>& weights,
-                                                            int count, Rng& rng);
+std::vector<graph::KeyframeId> sample_weighted_without_replacement(
+    const std::vector<graph::KeyframeId>& pool, const std::vector<double>& weights, int count,
+    Rng& rng);
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -8,7 +8,7 @@
 
 #include "slam/optimize/robust_kernel.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// Defaults are RGBDSLAMv2's current ones (parameter_server.cpp, since 2015): 4 / 4 / 4. Its
 /// defaults before 2015 were 2 / 2 / 2 (`--set predecessor_candidates=2 --set
@@ -39,8 +39,8 @@ struct RgbdslamOptions {
   /// 0.25 would prune every edge. We keep its schedule's shape, 20 : 4 : 1 with the kernel at 4x
   /// the last stage, and anchor the last stage at the 99.9 % quantile of chi^2(6) (22.46): an
   /// edge measured as well as it claims is pruned with probability 0.1 %.
-  RobustKernel::Kind robust_kernel = RobustKernel::Kind::kHuber;
-  double robust_kernel_chi2 = 4 * 22.46;         // where the kernel leaves the quadratic
+  optimize::RobustKernel::Kind robust_kernel = optimize::RobustKernel::Kind::kHuber;
+  double robust_kernel_chi2 = 4 * 22.46;  // where the kernel leaves the quadratic
   /// After-run pruning stages, chi^2 thresholds in order; empty: no pruning ("none").
   std::vector<double> prune_chi2 = {449.2, 89.84, 22.46};
 
@@ -56,4 +56,4 @@ struct RgbdslamOptions {
   double optimizer_convergence = 0.01;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

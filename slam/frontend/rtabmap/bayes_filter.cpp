@@ -5,7 +5,7 @@
 
 #include "core/error.hpp"
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 std::vector<double> parse_prediction_lc(const std::string& key, const std::string& text) {
   std::istringstream in(text);
@@ -125,4 +125,4 @@ std::pair<NodeId, double> BayesFilter::best() const {
   return out;
 }
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

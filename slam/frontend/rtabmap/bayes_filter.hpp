@@ -25,7 +25,7 @@
 
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 inline constexpr NodeId kVirtualPlace = -1;
 
@@ -66,4 +66,4 @@ class BayesFilter {
   std::map<NodeId, double> posterior_;  // includes kVirtualPlace
 };
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 RawLikelihood tf_idf_likelihood(const NodeWords& query, const std::vector<NodeId>& scored,
                                 const VisualVocabulary& vocabulary,
@@ -60,4 +60,4 @@ NormalisedLikelihood normalise_likelihood(const std::map<NodeId, double>& raw) {
   return out;
 }
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

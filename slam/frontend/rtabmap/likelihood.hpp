@@ -21,7 +21,7 @@
 
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 struct RawLikelihood {
   std::map<NodeId, double> score;  // every scored node, 0 when it shares no word
@@ -44,4 +44,4 @@ struct NormalisedLikelihood {
 
 NormalisedLikelihood normalise_likelihood(const std::map<NodeId, double>& raw);
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <string>
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 const char* to_string(MemoryPlace place) {
   switch (place) {
@@ -74,4 +74,4 @@ void NodeMemory::retrieve(NodeId node) {
   wm_.insert(node);
 }
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

@@ -16,7 +16,7 @@
 
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 enum class MemoryPlace { kStm, kWm, kLtm, kUnknown };
 const char* to_string(MemoryPlace place);
@@ -52,4 +52,4 @@ class NodeMemory {
   std::vector<int> weights_;
 };
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

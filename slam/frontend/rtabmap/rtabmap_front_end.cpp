@@ -15,7 +15,7 @@
 #include "slam/frontend/rtabmap/likelihood.hpp"
 #include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 namespace {
 
@@ -42,7 +42,7 @@ FrontEndSchedule rtabmap_schedule(const RtabmapOptions& options) {
 }  // namespace
 
 RtabmapFrontEnd::RtabmapFrontEnd(const RtabmapOptions& options,
-                                 const PoseGraphOptions& graph_options)
+                                 const optimize::PoseGraphOptions& graph_options)
     : FrontEnd("rtabmap",
                std::make_unique<AcceptGraphConsistentHypotheses>(
                    std::make_unique<AcceptBestLoopHypothesis>(), options.optimize_max_error,
@@ -54,29 +54,29 @@ RtabmapFrontEnd::RtabmapFrontEnd(const RtabmapOptions& options,
       filter_(rtabmap::parse_prediction_lc("bayes_prediction_lc", options.prediction_lc),
               options.virtual_place_prior) {}
 
-bool RtabmapFrontEnd::searchable(KeyframeId keyframe) const {
+bool RtabmapFrontEnd::searchable(graph::KeyframeId keyframe) const {
   const rtabmap::MemoryPlace place = memory_.place(keyframe);
   return place == rtabmap::MemoryPlace::kStm || place == rtabmap::MemoryPlace::kWm;
 }
 
-void RtabmapFrontEnd::retrieve(KeyframeId node, RtabmapNodeRecord& record) {
+void RtabmapFrontEnd::retrieve(graph::KeyframeId node, RtabmapNodeRecord& record) {
   memory_.retrieve(node);
   vocabulary_.enable_references(node, words_of_.at(node));
   ++record.entered_wm;
 }
 
-std::map<rtabmap::NodeId, int> RtabmapFrontEnd::neighbours_in_memory(KeyframeId node,
+std::map<rtabmap::NodeId, int> RtabmapFrontEnd::neighbours_in_memory(graph::KeyframeId node,
                                                                      int max_margin,
                                                                      bool include_ltm) const {
   std::map<rtabmap::NodeId, int> margin{{node, 0}};
   if (graph_ == nullptr) return margin;
-  std::deque<KeyframeId> queue{node};
+  std::deque<graph::KeyframeId> queue{node};
   while (!queue.empty()) {
-    const KeyframeId current = queue.front();
+    const graph::KeyframeId current = queue.front();
     queue.pop_front();
     const int m = margin.at(current);
     if (m >= max_margin) continue;
-    for (KeyframeId next : graph_->adjacent(current)) {
+    for (graph::KeyframeId next : graph_->adjacent(current)) {
       if (margin.contains(next)) continue;
       const rtabmap::MemoryPlace place = memory_.place(next);
       if (place == rtabmap::MemoryPlace::kUnknown) continue;
@@ -88,9 +88,9 @@ std::map<rtabmap::NodeId, int> RtabmapFrontEnd::neighbours_in_memory(KeyframeId 
   return margin;
 }
 
-bool RtabmapFrontEnd::linked_to_stm(KeyframeId node) const {
+bool RtabmapFrontEnd::linked_to_stm(graph::KeyframeId node) const {
   if (graph_ == nullptr) return false;
-  for (KeyframeId k : graph_->adjacent(node)) {
+  for (graph::KeyframeId k : graph_->adjacent(node)) {
     if (memory_.place(k) == rtabmap::MemoryPlace::kStm) return true;
   }
   return false;
@@ -98,7 +98,7 @@ bool RtabmapFrontEnd::linked_to_stm(KeyframeId node) const {
 
 std::vector<Candidate> RtabmapFrontEnd::select(const SelectionQuery& query) {
   start_node(query);
-  const KeyframeId t = query.keyframe;
+  const graph::KeyframeId t = query.keyframe;
   add_to_memory(query);
   rehearse(t);
   pending_.memory_update_cpu_ms = phase_cpu_ms();
@@ -128,7 +128,7 @@ double RtabmapFrontEnd::phase_cpu_ms() {
 }
 
 void RtabmapFrontEnd::add_to_memory(const SelectionQuery& query) {
-  const KeyframeId t = query.keyframe;
+  const graph::KeyframeId t = query.keyframe;
   cv::Mat descriptors;
   if (query.features != nullptr) {
     descriptors = rtabmap::strongest_descriptors(
@@ -141,7 +141,7 @@ void RtabmapFrontEnd::add_to_memory(const SelectionQuery& query) {
   pending_.words = vocabulary_.dictionary_size();
 }
 
-void RtabmapFrontEnd::rehearse(KeyframeId t) {
+void RtabmapFrontEnd::rehearse(graph::KeyframeId t) {
   if (t >= 1 && memory_.place(t - 1) == rtabmap::MemoryPlace::kStm &&
       rtabmap::node_similarity(words_of_.at(t - 1), words_of_.at(t)) >=
           options_.rehearsal_similarity) {
@@ -152,7 +152,7 @@ void RtabmapFrontEnd::rehearse(KeyframeId t) {
 
 void RtabmapFrontEnd::retrieve_around_last_best() {
   if (last_best_ < 0) return;
-  std::map<int, std::vector<KeyframeId>> by_margin;
+  std::map<int, std::vector<graph::KeyframeId>> by_margin;
   for (const auto& [id, m] : neighbours_in_memory(last_best_, filter_.max_margin(), true)) {
     if (memory_.place(id) != rtabmap::MemoryPlace::kStm) by_margin[m].push_back(id);
   }
@@ -170,7 +170,7 @@ void RtabmapFrontEnd::retrieve_around_last_best() {
 
 void RtabmapFrontEnd::retrieve_similar_wifi_clusters() {
   wifi_immune_ = wifi_immune_nodes();
-  for (KeyframeId k : wifi_immune_) {
+  for (graph::KeyframeId k : wifi_immune_) {
     if (options_.wifi_max_retrieved > 0 && pending_.wifi_retrieved >= options_.wifi_max_retrieved)
       break;
     if (memory_.place(k) == rtabmap::MemoryPlace::kLtm) {
@@ -180,8 +180,8 @@ void RtabmapFrontEnd::retrieve_similar_wifi_clusters() {
   }
 }
 
-RtabmapFrontEnd::HypothesisScores RtabmapFrontEnd::update_hypotheses(KeyframeId t) {
-  std::vector<KeyframeId> scored(memory_.wm().begin(), memory_.wm().end());
+RtabmapFrontEnd::HypothesisScores RtabmapFrontEnd::update_hypotheses(graph::KeyframeId t) {
+  std::vector<graph::KeyframeId> scored(memory_.wm().begin(), memory_.wm().end());
   if (wifi() != nullptr) scored = wifi()->bound(scored);
   pending_.scored = scored.size();
   rtabmap::RawLikelihood raw = rtabmap::tf_idf_likelihood(words_of_.at(t), scored, vocabulary_,
@@ -215,10 +215,10 @@ RtabmapFrontEnd::HypothesisScores RtabmapFrontEnd::update_hypotheses(KeyframeId 
 
 std::vector<Candidate> RtabmapFrontEnd::candidates_of(const SelectionQuery& query,
                                                       const HypothesisScores& scores) {
-  const KeyframeId t = query.keyframe;
+  const graph::KeyframeId t = query.keyframe;
   const auto& best = scores.best;
   std::vector<Candidate> out;
-  const auto compared = [&](KeyframeId k) {
+  const auto compared = [&](graph::KeyframeId k) {
     return std::find(query.already_compared.begin(), query.already_compared.end(), k) !=
            query.already_compared.end();
   };
@@ -230,7 +230,7 @@ std::vector<Candidate> RtabmapFrontEnd::candidates_of(const SelectionQuery& quer
     }
   }
   if (options_.proximity_by_space) {
-    for (KeyframeId k : proximity_candidates(t, scores.likelihood)) {
+    for (graph::KeyframeId k : proximity_candidates(t, scores.likelihood)) {
       const bool listed =
           std::any_of(out.begin(), out.end(), [&](const Candidate& c) { return c.keyframe == k; });
       if (listed || compared(k)) continue;
@@ -241,22 +241,22 @@ std::vector<Candidate> RtabmapFrontEnd::candidates_of(const SelectionQuery& quer
   return out;
 }
 
-std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
-    KeyframeId t, const std::map<rtabmap::NodeId, double>& likelihood) {
+std::vector<graph::KeyframeId> RtabmapFrontEnd::proximity_candidates(
+    graph::KeyframeId t, const std::map<rtabmap::NodeId, double>& likelihood) {
   if (graph_ == nullptr || options_.local_radius_m <= 0) return {};
   const Pose& here = graph_->node(t).pose;
   const Eigen::Vector3d heading = here.linear().col(2);  // camera optical axis
   const double cos_max_angle = std::cos(options_.proximity_angle_deg * M_PI / 180.0);
-  const auto distance_m = [&](KeyframeId k) {
+  const auto distance_m = [&](graph::KeyframeId k) {
     return (graph_->node(k).pose.translation() - here.translation()).norm();
   };
-  const auto looks_alike_way = [&](KeyframeId k) {
+  const auto looks_alike_way = [&](graph::KeyframeId k) {
     return graph_->node(k).pose.linear().col(2).dot(heading) >= cos_max_angle;
   };
 
   // WM nodes near the estimated position, within the graph depth (ascending ids).
-  std::vector<KeyframeId> nearest;
-  const auto consider = [&](KeyframeId k) {
+  std::vector<graph::KeyframeId> nearest;
+  const auto consider = [&](graph::KeyframeId k) {
     if (k != t && memory_.place(k) == rtabmap::MemoryPlace::kWm &&
         distance_m(k) <= options_.local_radius_m) {
       nearest.push_back(k);
@@ -268,7 +268,7 @@ std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
       consider(k);
     }
   } else {
-    for (KeyframeId k : memory_.wm()) consider(k);
+    for (graph::KeyframeId k : memory_.wm()) consider(k);
     std::sort(nearest.begin(), nearest.end());
   }
   if (wifi() != nullptr) nearest = wifi()->bound(nearest);
@@ -276,12 +276,12 @@ std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
   // Paths: runs of consecutive ids, ordered by their highest likelihood, then the newer first
   // (RTAB-Map walks its map of (likelihood, id) keys backwards).
   struct Path {
-    std::vector<KeyframeId> nodes;
-    KeyframeId most_likely = -1;
+    std::vector<graph::KeyframeId> nodes;
+    graph::KeyframeId most_likely = -1;
     double highest_likelihood = 0.0;
   };
   std::vector<Path> paths;
-  for (KeyframeId k : nearest) {
+  for (graph::KeyframeId k : nearest) {
     if (paths.empty() || k != paths.back().nodes.back() + 1) paths.emplace_back();
     Path& path = paths.back();
     path.nodes.push_back(k);
@@ -299,19 +299,19 @@ std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
     return a.nodes.front() > b.nodes.front();
   });
 
-  std::vector<KeyframeId> out;
+  std::vector<graph::KeyframeId> out;
   for (const Path& path : paths) {
     // RGBD/ProximityMaxPaths 0: no limit, as in RTAB-Map.
     if (options_.proximity_max_paths > 0 &&
         static_cast<int>(out.size()) >= options_.proximity_max_paths) {
       break;
     }
-    KeyframeId chosen = -1;
+    graph::KeyframeId chosen = -1;
     if (path.most_likely >= 0 && looks_alike_way(path.most_likely)) {
       chosen = path.most_likely;
     } else {
       double nearest_m = std::numeric_limits<double>::infinity();
-      for (KeyframeId k : path.nodes) {
+      for (graph::KeyframeId k : path.nodes) {
         if (looks_alike_way(k) && distance_m(k) < nearest_m) {
           nearest_m = distance_m(k);
           chosen = k;
@@ -328,8 +328,8 @@ std::vector<KeyframeId> RtabmapFrontEnd::proximity_candidates(
   return out;
 }
 
-std::vector<KeyframeId> RtabmapFrontEnd::wifi_immune_nodes() const {
-  std::vector<KeyframeId> out;
+std::vector<graph::KeyframeId> RtabmapFrontEnd::wifi_immune_nodes() const {
+  std::vector<graph::KeyframeId> out;
   if (wifi() == nullptr) return out;
   const auto cap = static_cast<std::size_t>(std::max(0, options_.wifi_max_immune));
   // Most similar cluster first; within a cluster the newest nodes first, since transfers take
@@ -375,12 +375,11 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
       r.loop_closure_cost_ms + cost.ms_per_verification * (r.verifications - r.loop_verifications);
 
   // 6. Memory management under Rtabmap/TimeThr (Memory::forget: one more than entered WM).
-  const std::set<KeyframeId> wifi_immune(wifi_immune_.begin(), wifi_immune_.end());
-  r.immune =
-      static_cast<int>(std::count_if(wifi_immune.begin(), wifi_immune.end(), [&](KeyframeId k) {
-        return memory_.place(k) == rtabmap::MemoryPlace::kWm;
-      }));
-  const auto kept = [&](KeyframeId id) {
+  const std::set<graph::KeyframeId> wifi_immune(wifi_immune_.begin(), wifi_immune_.end());
+  r.immune = static_cast<int>(std::count_if(
+      wifi_immune.begin(), wifi_immune.end(),
+      [&](graph::KeyframeId k) { return memory_.place(k) == rtabmap::MemoryPlace::kWm; }));
+  const auto kept = [&](graph::KeyframeId id) {
     return immune_now_.contains(id) || id == r.best || linked_to_stm(id) ||
            wifi_immune.contains(id);
   };
@@ -391,7 +390,7 @@ void RtabmapFrontEnd::after_verification(const VerificationReport& report) {
   if (time_ms > options_.time_threshold_ms) {
     r.over_budget_ms = time_ms - options_.time_threshold_ms;
     last_transferred_ = memory_.transfer(static_cast<std::size_t>(r.entered_wm) + 1, kept);
-    for (KeyframeId id : last_transferred_) {
+    for (graph::KeyframeId id : last_transferred_) {
       vocabulary_.disable_references(id, words_of_.at(id));
     }
     r.transferred = static_cast<int>(last_transferred_.size());
@@ -482,4 +481,4 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
       {"loop_closures_accepted", accepted}};
 }
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -75,11 +75,11 @@
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 
-namespace wifislam::slam {
+namespace wifislam::slam::frontend {
 
 /// What happened to one node (a row of rtabmap_memory.csv).
 struct RtabmapNodeRecord {
-  KeyframeId node = -1;
+  graph::KeyframeId node = -1;
   std::size_t stm = 0, wm = 0, ltm = 0;  // after the node's memory management
   int entered_wm = 0;                    // from STM or retrieved this step
   int retrieved = 0;                     // around the last best hypothesis
@@ -92,10 +92,10 @@ struct RtabmapNodeRecord {
   std::size_t scored = 0;                // WM nodes the likelihood was computed for
   std::int64_t likelihood_terms = 0;
   std::size_t hypotheses = 0;  // of the Bayes filter's posterior (0 when nothing was scored)
-  KeyframeId best = -1;
+  graph::KeyframeId best = -1;
   double best_probability = 0.0;
   double virtual_probability = 1.0;
-  KeyframeId loop_candidate = -1;  // best hypothesis at or above Rtabmap/LoopThr
+  graph::KeyframeId loop_candidate = -1;  // best hypothesis at or above Rtabmap/LoopThr
   bool loop_verified = false, loop_accepted = false;
   int verifications = 0;
   int loop_verifications = 0;    // of the loop candidate (role long_term): 0 or 1
@@ -117,10 +117,10 @@ struct RtabmapNodeRecord {
 
 class RtabmapFrontEnd final : public FrontEnd {
  public:
-  RtabmapFrontEnd(const RtabmapOptions& options, const PoseGraphOptions& graph_options);
+  RtabmapFrontEnd(const RtabmapOptions& options, const optimize::PoseGraphOptions& graph_options);
 
   /// STM and WM nodes may be compared (STM: predecessors, relocalisation); LTM nodes may not.
-  bool searchable(KeyframeId keyframe) const override;
+  bool searchable(graph::KeyframeId keyframe) const override;
   std::vector<Candidate> select(const SelectionQuery& query) override;
 
   const RtabmapOptions& options() const { return options_; }
@@ -129,7 +129,7 @@ class RtabmapFrontEnd final : public FrontEnd {
   const rtabmap::VisualVocabulary& vocabulary() const { return vocabulary_; }
   const std::vector<RtabmapNodeRecord>& records() const { return records_; }
   /// Nodes moved to LTM by the last node's memory management.
-  const std::vector<KeyframeId>& last_transferred() const { return last_transferred_; }
+  const std::vector<graph::KeyframeId>& last_transferred() const { return last_transferred_; }
   /// The processing time of `record` as the threshold sees it.
   double node_time_ms(const RtabmapNodeRecord& record) const;
 
@@ -142,7 +142,7 @@ class RtabmapFrontEnd final : public FrontEnd {
   /// What step 4 found: the normalised likelihood of each scored WM node, and the Bayes filter's
   /// best hypothesis with its posterior probability ({-1, 0}: nothing was scored).
   struct HypothesisScores {
-    std::pair<KeyframeId, double> best{-1, 0.0};
+    std::pair<graph::KeyframeId, double> best{-1, 0.0};
     std::map<rtabmap::NodeId, double> likelihood;
   };
 
@@ -153,7 +153,7 @@ class RtabmapFrontEnd final : public FrontEnd {
   /// Step 1: the node's words into the vocabulary, and the node into STM.
   void add_to_memory(const SelectionQuery& query);
   /// Step 2: merge with the previous node when it is in STM and similar enough.
-  void rehearse(KeyframeId t);
+  void rehearse(graph::KeyframeId t);
   /// Step 3: retrieval around the last node's best hypothesis, nearest first, newest first within
   /// a margin (Rtabmap::process sorts each margin's ids in reverse).
   void retrieve_around_last_best();
@@ -161,38 +161,39 @@ class RtabmapFrontEnd final : public FrontEnd {
   /// those in LTM come back (up to wifi_max_retrieved).
   void retrieve_similar_wifi_clusters();
   /// Step 4: likelihood of node `t` over WM (bounded by Wi-Fi), then the Bayes filter.
-  HypothesisScores update_hypotheses(KeyframeId t);
+  HypothesisScores update_hypotheses(graph::KeyframeId t);
   /// Steps 5 and 6: the predecessor, the loop hypothesis and proximity candidates, leaving out
   /// the keyframes already compared.
   std::vector<Candidate> candidates_of(const SelectionQuery& query, const HypothesisScores& scores);
-  void retrieve(KeyframeId node, RtabmapNodeRecord& record);
+  void retrieve(graph::KeyframeId node, RtabmapNodeRecord& record);
   /// Graph neighbours of `node` within `max_margin` links over nodes in memory, with margins.
-  std::map<rtabmap::NodeId, int> neighbours_in_memory(KeyframeId node, int max_margin,
+  std::map<rtabmap::NodeId, int> neighbours_in_memory(graph::KeyframeId node, int max_margin,
                                                       bool include_ltm) const;
-  bool linked_to_stm(KeyframeId node) const;
+  bool linked_to_stm(graph::KeyframeId node) const;
   /// Wi-Fi immunisation: the WM and LTM nodes of the current node's similar clusters, at most
   /// wifi_max_immune of them (0: all), from the most similar cluster down, newest first within
   /// a cluster. The LTM ones are what cluster retrieval brings back.
-  std::vector<KeyframeId> wifi_immune_nodes() const;
+  std::vector<graph::KeyframeId> wifi_immune_nodes() const;
   /// Step 6: proximity candidates of node `t` given the likelihood of the WM nodes scored.
-  std::vector<KeyframeId> proximity_candidates(KeyframeId t,
-                                               const std::map<rtabmap::NodeId, double>& likelihood);
+  std::vector<graph::KeyframeId> proximity_candidates(
+      graph::KeyframeId t, const std::map<rtabmap::NodeId, double>& likelihood);
 
   RtabmapOptions options_;
   rtabmap::VisualVocabulary vocabulary_;
   rtabmap::NodeMemory memory_;
   rtabmap::BayesFilter filter_;
   std::map<rtabmap::NodeId, rtabmap::NodeWords> words_of_;
-  const PoseGraph* graph_ = nullptr;     // the pipeline's, seen through the selection query
-  KeyframeId last_best_ = -1;            // best hypothesis of the previous node (retrieval)
-  std::set<KeyframeId> immune_now_;      // retrieval neighbourhood of this step
-  std::vector<KeyframeId> wifi_immune_;  // Wi-Fi immunisation of this step (wifi_immune_nodes)
+  const graph::PoseGraph* graph_ = nullptr;  // the pipeline's, seen through the selection query
+  graph::KeyframeId last_best_ = -1;         // best hypothesis of the previous node (retrieval)
+  std::set<graph::KeyframeId> immune_now_;   // retrieval neighbourhood of this step
+  std::vector<graph::KeyframeId>
+      wifi_immune_;  // Wi-Fi immunisation of this step (wifi_immune_nodes)
   RtabmapNodeRecord pending_;
   std::chrono::steady_clock::time_point started_;
   double started_cpu_ms_ = 0.0;
   double phase_started_cpu_ms_ = 0.0;  // start of select's current timing phase (phase_cpu_ms)
   std::vector<RtabmapNodeRecord> records_;
-  std::vector<KeyframeId> last_transferred_;
+  std::vector<graph::KeyframeId> last_transferred_;
 };
 
-}  // namespace wifislam::slam
+}  // namespace wifislam::slam::frontend

@@ -10,7 +10,7 @@
 
 #include "slam/match/hamming_distances.hpp"
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 namespace {
 
@@ -35,14 +35,15 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
     const std::array<std::uint64_t, 4> query = packed(descriptors, i);
     // Every word of the dictionary, including those this node founded a moment ago.
     const std::uint64_t* const lanes[4] = {dictionary_lanes_[0].data(), dictionary_lanes_[1].data(),
-                                           dictionary_lanes_[2].data(), dictionary_lanes_[3].data()};
+                                           dictionary_lanes_[2].data(),
+                                           dictionary_lanes_[3].data()};
     const std::size_t searched = dictionary_ids_.size();
-    const NearestTwo nearest = nearest_two(query.data(), lanes, searched);
+    const match::NearestTwo nearest = match::nearest_two(query.data(), lanes, searched);
     distance_computations_ += static_cast<std::int64_t>(searched);
     const int best = nearest.best, second = nearest.second;
     const WordId best_word = searched > 0 ? dictionary_ids_[nearest.best_index] : -1;
-    const bool matched = searched >= 2 &&
-                         static_cast<double>(best) <= nndr_ratio_ * static_cast<double>(second);
+    const bool matched =
+        searched >= 2 && static_cast<double>(best) <= nndr_ratio_ * static_cast<double>(second);
     WordId word = best_word;
     if (!matched) {
       word = static_cast<WordId>(size());
@@ -118,4 +119,4 @@ double node_similarity(const NodeWords& a, const NodeWords& b) {
   return static_cast<double>(pairs) / static_cast<double>(total);
 }
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

@@ -32,7 +32,7 @@
 
 #include <opencv2/core.hpp>
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 
 using WordId = int;
 using NodeId = int;
@@ -90,4 +90,4 @@ cv::Mat strongest_descriptors(const std::vector<cv::KeyPoint>& keypoints,
 /// node's word count (rehearsal similarity, in [0, 1]).
 double node_similarity(const NodeWords& a, const NodeWords& b);
 
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

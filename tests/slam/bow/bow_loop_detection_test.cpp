@@ -21,12 +21,12 @@ TEST(KeyframeDatabase, InvertedIndexListsTheKeyframesOfEachWordAndForgetsErasedO
   db.add(5, {{1, 0.5}, {2, 0.5}});
   db.add(3, {{2, 1.0}});
   db.add(8, {{1, 1.0}});
-  EXPECT_EQ(db.keyframes_with(1), (std::vector<KeyframeId>{5, 8}));
-  EXPECT_EQ(db.keyframes_with(2), (std::vector<KeyframeId>{3, 5}));
+  EXPECT_EQ(db.keyframes_with(1), (std::vector<graph::KeyframeId>{5, 8}));
+  EXPECT_EQ(db.keyframes_with(2), (std::vector<graph::KeyframeId>{3, 5}));
   EXPECT_TRUE(db.keyframes_with(7).empty());
   db.erase(5);
-  EXPECT_EQ(db.keyframes_with(1), (std::vector<KeyframeId>{8}));
-  EXPECT_EQ(db.keyframes_with(2), (std::vector<KeyframeId>{3}));
+  EXPECT_EQ(db.keyframes_with(1), (std::vector<graph::KeyframeId>{8}));
+  EXPECT_EQ(db.keyframes_with(2), (std::vector<graph::KeyframeId>{3}));
   EXPECT_FALSE(db.contains(5));
   EXPECT_THROW(db.add(3, {{4, 1.0}}), std::logic_error);
 }
@@ -39,10 +39,10 @@ TEST(KeyframeDatabase, LoopCandidatesFollowDetectLoopCandidates) {
   db.add(3, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}}));          // connected to the query
   db.add(4, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 4}}));  // 4 shared, score 0.5
   db.add(5, normalised({{1, 3}, {2, 3}, {3, 1}, {4, 1}, {6, 2}}));  // 4 shared, score 0.7
-  const auto neighbours = [](KeyframeId k) {
-    if (k == 1) return std::vector<KeyframeId>{5, 2};
-    if (k == 5) return std::vector<KeyframeId>{1};
-    return std::vector<KeyframeId>{};
+  const auto neighbours = [](graph::KeyframeId k) {
+    if (k == 1) return std::vector<graph::KeyframeId>{5, 2};
+    if (k == 5) return std::vector<graph::KeyframeId>{1};
+    return std::vector<graph::KeyframeId>{};
   };
   EXPECT_NEAR(l1_score(query, db.vector_of(4)), 0.5, 1e-12);
   EXPECT_NEAR(l1_score(query, db.vector_of(5)), 0.7, 1e-12);
@@ -57,11 +57,11 @@ TEST(KeyframeDatabase, LoopCandidatesFollowDetectLoopCandidates) {
   EXPECT_EQ(db.last_postings_read(), 5u + 5u + 5u + 4u);  // words 1, 2, 3 in all five; 4 in four
 
   // Without the covisibility groups every scored keyframe over 0.75 of the best stands alone.
-  candidates =
-      db.loop_candidates(query, {3}, 0.4, [](KeyframeId) { return std::vector<KeyframeId>{}; });
+  candidates = db.loop_candidates(
+      query, {3}, 0.4, [](graph::KeyframeId) { return std::vector<graph::KeyframeId>{}; });
   ASSERT_EQ(candidates.size(), 1u);  // 0.7 and 0.5 are not over 0.75
-  candidates =
-      db.loop_candidates(query, {3, 1}, 0.4, [](KeyframeId) { return std::vector<KeyframeId>{}; });
+  candidates = db.loop_candidates(
+      query, {3, 1}, 0.4, [](graph::KeyframeId) { return std::vector<graph::KeyframeId>{}; });
   ASSERT_EQ(candidates.size(), 1u);  // 5 (0.7); 4 (0.5) is not over 0.525
   EXPECT_EQ(candidates[0].keyframe, 5);
   // A minimum score above every score (ORB-SLAM2: the query's covisible keyframes score higher)
@@ -75,7 +75,7 @@ TEST(KeyframeDatabase, LoopCandidatesFollowDetectLoopCandidates) {
 // keyframes of an index not searched are never returned.
 TEST(KeyframeDatabase, AQueryOverSeveralIndexesIsAQueryOverTheirUnion) {
   const BowVector query = normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}});
-  const std::vector<std::pair<KeyframeId, BowVector>> keyframes = {
+  const std::vector<std::pair<graph::KeyframeId, BowVector>> keyframes = {
       {1, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}})},
       {2, normalised({{1, 1}, {2, 1}, {3, 1}, {9, 1}})},
       {4, normalised({{1, 1}, {2, 1}, {3, 1}, {4, 1}, {5, 4}})},
@@ -86,10 +86,10 @@ TEST(KeyframeDatabase, AQueryOverSeveralIndexesIsAQueryOverTheirUnion) {
     all.add(k, v);
     (k % 2 ? odd : even).add(k, v);
   }
-  const auto neighbours = [](KeyframeId k) {
-    if (k == 1) return std::vector<KeyframeId>{5, 7};
-    if (k == 5) return std::vector<KeyframeId>{1, 4};
-    return std::vector<KeyframeId>{4};
+  const auto neighbours = [](graph::KeyframeId k) {
+    if (k == 1) return std::vector<graph::KeyframeId>{5, 7};
+    if (k == 5) return std::vector<graph::KeyframeId>{1, 4};
+    return std::vector<graph::KeyframeId>{4};
   };
   const auto expected = all.loop_candidates(query, {}, 0.3, neighbours);
   std::size_t postings = 0;
@@ -112,7 +112,7 @@ TEST(KeyframeDatabase, AQueryOverSeveralIndexesIsAQueryOverTheirUnion) {
 // distance <= 50 and under 0.75 x the second best, each feature of the other keyframe is taken
 // once, and matches outside the three fullest rotation bins are dropped.
 TEST(BowFeatureMatcher, CountsSearchByBowMatches) {
-  const auto descriptor = [](std::uint64_t bits) { return PackedDescriptor{bits, 0, 0, 0}; };
+  const auto descriptor = [](std::uint64_t bits) { return match::PackedDescriptor{bits, 0, 0, 0}; };
   BowKeyframe a, b;
   // Node 1: a0 matches b0 at distance 1 (second best b1 at 30: 1 < 22.5).
   // Node 1: a1 is ambiguous (b2 at 2 bits, b3 at 2 bits: 2 < 1.5 fails).
@@ -156,7 +156,7 @@ TEST(LoopConsistency, ACandidateIsAcceptedAfterThreeConsecutiveConsistentQueries
   // A look-alike elsewhere starts its own count at 0 beside the consistent one.
   EXPECT_TRUE(consistency.update({{12, {11, 12, 13}}, {50, {49, 50, 51}}}).empty());  // 2 and 0
   EXPECT_EQ(consistency.update({{13, {12, 13, 14}}, {51, {50, 51, 52}}}),
-            (std::vector<KeyframeId>{13}));  // 3: enough; the look-alike only 1
+            (std::vector<graph::KeyframeId>{13}));  // 3: enough; the look-alike only 1
   // A query without candidates forgets every group: counting starts over.
   EXPECT_TRUE(consistency.update({}).empty());
   EXPECT_EQ(consistency.kept_groups(), 0u);

@@ -18,15 +18,15 @@
 namespace wifislam::slam::bow {
 namespace {
 
-PackedDescriptor random_descriptor(Rng& rng) {
+match::PackedDescriptor random_descriptor(Rng& rng) {
   return {rng.next_u64(), rng.next_u64(), rng.next_u64(), rng.next_u64()};
 }
 
 /// `copies` copies of `prototype`, each with `flips` random bits flipped, as CV_8U rows.
-cv::Mat noisy_copies(const PackedDescriptor& prototype, int copies, int flips, Rng& rng) {
+cv::Mat noisy_copies(const match::PackedDescriptor& prototype, int copies, int flips, Rng& rng) {
   cv::Mat out(copies, 32, CV_8U);
   for (int r = 0; r < copies; ++r) {
-    PackedDescriptor d = prototype;
+    match::PackedDescriptor d = prototype;
     for (int f = 0; f < flips; ++f) {
       const auto bit = rng.uniform_int(0, 255);
       d[static_cast<std::size_t>(bit / 64)] ^= std::uint64_t{1} << (bit % 64);
@@ -36,7 +36,7 @@ cv::Mat noisy_copies(const PackedDescriptor& prototype, int copies, int flips, R
   return out;
 }
 
-cv::Mat rows_of(const std::vector<PackedDescriptor>& ds) {
+cv::Mat rows_of(const std::vector<match::PackedDescriptor>& ds) {
   cv::Mat out(static_cast<int>(ds.size()), 32, CV_8U);
   for (std::size_t i = 0; i < ds.size(); ++i)
     std::memcpy(out.ptr(static_cast<int>(i)), ds[i].data(), 32);
@@ -44,7 +44,7 @@ cv::Mat rows_of(const std::vector<PackedDescriptor>& ds) {
 }
 
 struct Prototypes {
-  std::vector<PackedDescriptor> prototypes;
+  std::vector<match::PackedDescriptor> prototypes;
   std::vector<cv::Mat> images;  // image i: noisy copies of prototype i
 };
 
@@ -72,7 +72,7 @@ TEST(BowVocabulary, KMajorityClusteringFindsThePrototypesOfNoisyDescriptors) {
     const WordId w = tree.word_of(p.prototypes[i]);
     words.insert(w);
     for (int r = 0; r < p.images[i].rows; ++r) {
-      PackedDescriptor d{};
+      match::PackedDescriptor d{};
       std::memcpy(d.data(), p.images[i].ptr(r), 32);
       EXPECT_EQ(tree.word_of(d), w) << "prototype " << i << ", copy " << r;
     }
@@ -115,7 +115,7 @@ TEST(BowVocabulary, TrainingIsDeterministicAndTheFileRoundTripsBitForBit) {
   Rng rng = Rng::stream(11, "test/bow/images");
   std::vector<cv::Mat> images;
   for (int i = 0; i < 12; ++i) {
-    std::vector<PackedDescriptor> ds;
+    std::vector<match::PackedDescriptor> ds;
     for (int k = 0; k < 80; ++k) ds.push_back(random_descriptor(rng));
     images.push_back(rows_of(ds));
   }

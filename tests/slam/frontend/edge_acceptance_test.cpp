@@ -10,8 +10,8 @@
 namespace wifislam::slam {
 namespace {
 
-Information6 information(double sigma_m, double sigma_rad) {
-  Information6 info = Information6::Zero();
+graph::Information6 information(double sigma_m, double sigma_rad) {
+  graph::Information6 info = graph::Information6::Zero();
   info.diagonal().head<3>().setConstant(1.0 / (sigma_m * sigma_m));
   info.diagonal().tail<3>().setConstant(1.0 / (sigma_rad * sigma_rad));
   return info;
@@ -25,8 +25,8 @@ Pose at_x(double x_m) {
 
 /// Keyframes 0..10 walk east 1 m apart, 11..19 walk back west; keyframe 20 stands where 0 stood.
 /// Every consecutive pair has an exact visual edge; keyframe 20 is tracked from 19.
-PoseGraph out_and_back() {
-  PoseGraph graph;
+graph::PoseGraph out_and_back() {
+  graph::PoseGraph graph;
   std::vector<double> x;
   for (int i = 0; i <= 10; ++i) x.push_back(i);
   for (int i = 9; i >= 0; --i) x.push_back(i);
@@ -34,17 +34,18 @@ PoseGraph out_and_back() {
     graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
                    at_x(x[i]));
   }
-  for (KeyframeId i = 1; i < static_cast<KeyframeId>(x.size()); ++i) {
-    graph.add_edge({i - 1, i, EdgeType::kVisual, at_x(x[i - 1]).inverse() * at_x(x[i]),
+  for (graph::KeyframeId i = 1; i < static_cast<graph::KeyframeId>(x.size()); ++i) {
+    graph.add_edge({i - 1, i, graph::EdgeType::kVisual, at_x(x[i - 1]).inverse() * at_x(x[i]),
                     information(0.05, 0.02), 100});
   }
   return graph;
 }
 
-Hypothesis hypothesis(KeyframeId from, const Pose& from_to, EdgeType type, int inliers) {
-  Hypothesis h;
-  h.candidate = {from,
-                 type == EdgeType::kLoop ? CandidateRole::kLongTerm : CandidateRole::kPredecessor};
+frontend::Hypothesis hypothesis(graph::KeyframeId from, const Pose& from_to, graph::EdgeType type,
+                                int inliers) {
+  frontend::Hypothesis h;
+  h.candidate = {from, type == graph::EdgeType::kLoop ? frontend::CandidateRole::kLongTerm
+                                                      : frontend::CandidateRole::kPredecessor};
   h.transformation.accepted = true;
   h.transformation.a_from_b = from_to;
   h.transformation.inliers = inliers;
@@ -54,31 +55,34 @@ Hypothesis hypothesis(KeyframeId from, const Pose& from_to, EdgeType type, int i
 }
 
 TEST(EdgeAcceptance, AllKeepsEveryHypothesisInOrder) {
-  const PoseGraph graph = out_and_back();
-  const std::vector<Hypothesis> h = {hypothesis(18, at_x(-2), EdgeType::kVisual, 80),
-                                     hypothesis(0, at_x(0), EdgeType::kLoop, 40),
-                                     hypothesis(5, at_x(0), EdgeType::kLoop, 90)};
-  EXPECT_EQ(AcceptAllHypotheses().choose(h, {&graph, 20, true, {}}),
+  const graph::PoseGraph graph = out_and_back();
+  const std::vector<frontend::Hypothesis> h = {
+      hypothesis(18, at_x(-2), graph::EdgeType::kVisual, 80),
+      hypothesis(0, at_x(0), graph::EdgeType::kLoop, 40),
+      hypothesis(5, at_x(0), graph::EdgeType::kLoop, 90)};
+  EXPECT_EQ(frontend::AcceptAllHypotheses().choose(h, {&graph, 20, true, {}}),
             (std::vector<std::size_t>{0, 1, 2}));
 }
 
 TEST(EdgeAcceptance, BestKeepsVisualEdgesAndTheLoopHypothesisWithMostInliers) {
-  const PoseGraph graph = out_and_back();
-  const std::vector<Hypothesis> h = {
-      hypothesis(0, at_x(0), EdgeType::kLoop, 40), hypothesis(18, at_x(-2), EdgeType::kVisual, 80),
-      hypothesis(5, at_x(0), EdgeType::kLoop, 90), hypothesis(1, at_x(-1), EdgeType::kLoop, 90)};
-  EXPECT_EQ(AcceptBestLoopHypothesis().choose(h, {&graph, 20, true, {}}),
+  const graph::PoseGraph graph = out_and_back();
+  const std::vector<frontend::Hypothesis> h = {
+      hypothesis(0, at_x(0), graph::EdgeType::kLoop, 40),
+      hypothesis(18, at_x(-2), graph::EdgeType::kVisual, 80),
+      hypothesis(5, at_x(0), graph::EdgeType::kLoop, 90),
+      hypothesis(1, at_x(-1), graph::EdgeType::kLoop, 90)};
+  EXPECT_EQ(frontend::AcceptBestLoopHypothesis().choose(h, {&graph, 20, true, {}}),
             (std::vector<std::size_t>{1, 2}));
 }
 
 TEST(EdgeAcceptance, GraphConsistencyRefusesAPlantedFalseLoopClosureAndKeepsTheTrueOne) {
-  const PoseGraph graph = out_and_back();
-  const AcceptGraphConsistentHypotheses policy(std::make_unique<AcceptAllHypotheses>(), 3.0,
-                                               PoseGraphOptions{}, 20);
-  const Hypothesis truth = hypothesis(0, at_x(0), EdgeType::kLoop, 60);
+  const graph::PoseGraph graph = out_and_back();
+  const frontend::AcceptGraphConsistentHypotheses policy(
+      std::make_unique<frontend::AcceptAllHypotheses>(), 3.0, optimize::PoseGraphOptions{}, 20);
+  const frontend::Hypothesis truth = hypothesis(0, at_x(0), graph::EdgeType::kLoop, 60);
   // "Keyframe 20 stands where keyframe 5 stood": 5 m from where the chain puts it.
-  const Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
-  const Hypothesis visual = hypothesis(18, at_x(-2), EdgeType::kVisual, 80);
+  const frontend::Hypothesis planted = hypothesis(5, at_x(0), graph::EdgeType::kLoop, 70);
+  const frontend::Hypothesis visual = hypothesis(18, at_x(-2), graph::EdgeType::kVisual, 80);
 
   EXPECT_EQ(policy.choose({truth}, {&graph, 20, true, {}}), (std::vector<std::size_t>{0}));
   EXPECT_TRUE(policy.choose({planted}, {&graph, 20, true, {}}).empty());
@@ -93,10 +97,10 @@ TEST(EdgeAcceptance, AConfidentFalseLoopClosureIsCaughtByTheLinksItTears) {
   // The planted loop claims a hundred times the chain's certainty: after optimisation it is
   // nearly satisfied itself, and the chain edges carry the 5 m instead. Checking every link (as
   // RTAB-Map does) still refuses it.
-  const PoseGraph graph = out_and_back();
-  const AcceptGraphConsistentHypotheses policy(std::make_unique<AcceptAllHypotheses>(), 3.0,
-                                               PoseGraphOptions{}, 20);
-  Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
+  const graph::PoseGraph graph = out_and_back();
+  const frontend::AcceptGraphConsistentHypotheses policy(
+      std::make_unique<frontend::AcceptAllHypotheses>(), 3.0, optimize::PoseGraphOptions{}, 20);
+  frontend::Hypothesis planted = hypothesis(5, at_x(0), graph::EdgeType::kLoop, 70);
   planted.transformation.information = information(0.005, 0.002);
   EXPECT_TRUE(policy.choose({planted}, {&graph, 20, true, {}}).empty());
 }
@@ -104,55 +108,62 @@ TEST(EdgeAcceptance, AConfidentFalseLoopClosureIsCaughtByTheLinksItTears) {
 TEST(EdgeAcceptance, WithTrackingLostTheLoopClosureMustAgreeWithOdometry) {
   // Keyframe 20 lost tracking: without odometry in the trial a lone false loop edge would hang
   // unopposed; with the odometry edge from keyframe 19 it is refused, and the true one kept.
-  PoseGraph graph = out_and_back();
-  const AcceptGraphConsistentHypotheses policy(std::make_unique<AcceptAllHypotheses>(), 3.0,
-                                               PoseGraphOptions{}, 20);
-  PoseGraph lost;
-  for (const GraphNode& n : graph.nodes()) lost.add_node(n.time, n.frame_index, n.pose);
-  for (const GraphEdge& e : graph.edges()) {
+  graph::PoseGraph graph = out_and_back();
+  const frontend::AcceptGraphConsistentHypotheses policy(
+      std::make_unique<frontend::AcceptAllHypotheses>(), 3.0, optimize::PoseGraphOptions{}, 20);
+  graph::PoseGraph lost;
+  for (const graph::GraphNode& n : graph.nodes()) lost.add_node(n.time, n.frame_index, n.pose);
+  for (const graph::GraphEdge& e : graph.edges()) {
     if (e.to != 20) lost.add_edge(e);
   }
-  const GraphEdge odometry{19, 20, EdgeType::kOdometry, at_x(-1), information(0.05, 0.02), 0};
-  const Hypothesis planted = hypothesis(5, at_x(0), EdgeType::kLoop, 70);
-  const Hypothesis truth = hypothesis(0, at_x(0), EdgeType::kLoop, 60);
+  const graph::GraphEdge odometry{
+      19, 20, graph::EdgeType::kOdometry, at_x(-1), information(0.05, 0.02), 0};
+  const frontend::Hypothesis planted = hypothesis(5, at_x(0), graph::EdgeType::kLoop, 70);
+  const frontend::Hypothesis truth = hypothesis(0, at_x(0), graph::EdgeType::kLoop, 60);
   EXPECT_EQ(policy.choose({planted}, {&lost, 20, false, {}}), (std::vector<std::size_t>{0}));
   EXPECT_TRUE(policy.choose({planted}, {&lost, 20, false, {odometry}}).empty());
   EXPECT_EQ(policy.choose({truth}, {&lost, 20, false, {odometry}}), (std::vector<std::size_t>{0}));
 }
 
 TEST(EdgeAcceptance, ErrorRatioIsTheErrorInStandardDeviationsOfTheEdge) {
-  PoseGraph graph;
+  graph::PoseGraph graph;
   graph.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
   graph.add_node(Timestamp::from_ns(1), 1, at_x(1.2));
   // Measured 1.0 m with sigma 0.1 m: 0.2 m off = 2 standard deviations.
-  EXPECT_NEAR(
-      edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), information(0.1, 0.01)}).value(),
-      2.0, 1e-6);
+  EXPECT_NEAR(frontend::edge_error_ratio(
+                  graph, {0, 1, graph::EdgeType::kLoop, at_x(1.0), information(0.1, 0.01)})
+                  .value(),
+              2.0, 1e-6);
   // The largest translation variance counts: sigma 0.1 m along x, 0.4 m along y.
-  Information6 anisotropic = information(0.1, 0.01);
+  graph::Information6 anisotropic = information(0.1, 0.01);
   anisotropic(1, 1) = 1.0 / (0.4 * 0.4);
-  EXPECT_NEAR(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), anisotropic}).value(), 0.5,
-              1e-6);
+  EXPECT_NEAR(
+      frontend::edge_error_ratio(graph, {0, 1, graph::EdgeType::kLoop, at_x(1.0), anisotropic})
+          .value(),
+      0.5, 1e-6);
   // Coupled translation and rotation (a sideways shift y and a yaw explain the same image
   // motion): the information's diagonal is large, but the marginal standard deviation of y, from
   // the covariance, is what the error is measured against. Covariance: sigma_x = sigma_z = 0.01
   // m, sigma_y 0.1 m, sigma_yaw 0.01 rad, y-yaw correlation 0.999; 1 / the information diagonal
   // would say sigma_y = 0.1 * sqrt(1 - 0.999^2) and make the error 20 standard deviations.
-  Information6 coupled_covariance = Information6::Zero();
+  graph::Information6 coupled_covariance = graph::Information6::Zero();
   coupled_covariance.diagonal() << 1e-4, 0.01, 1e-4, 1e-4, 1e-4, 1e-4;
   coupled_covariance(1, 5) = coupled_covariance(5, 1) = 0.999 * 0.1 * 0.01;
-  PoseGraph sideways;
+  graph::PoseGraph sideways;
   sideways.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
   Pose off = at_x(1.0);
   off.translation().y() = 0.2;  // 0.2 m off along y = 2 marginal standard deviations
   sideways.add_node(Timestamp::from_ns(1), 1, off);
-  EXPECT_NEAR(edge_error_ratio(sideways, {0, 1, EdgeType::kLoop, at_x(1.0),
-                                          Information6(coupled_covariance.inverse())})
-                  .value(),
-              2.0, 1e-6);
+  EXPECT_NEAR(
+      frontend::edge_error_ratio(sideways, {0, 1, graph::EdgeType::kLoop, at_x(1.0),
+                                            graph::Information6(coupled_covariance.inverse())})
+          .value(),
+      2.0, 1e-6);
   // Links RTAB-Map skips: translation variance above 1 m^2 (weak edges), no information.
-  EXPECT_FALSE(edge_error_ratio(graph, {0, 1, EdgeType::kWeak, at_x(1.0), information(2.0, 1.0)}));
-  EXPECT_FALSE(edge_error_ratio(graph, {0, 1, EdgeType::kLoop, at_x(1.0), Information6::Zero()}));
+  EXPECT_FALSE(frontend::edge_error_ratio(
+      graph, {0, 1, graph::EdgeType::kWeak, at_x(1.0), information(2.0, 1.0)}));
+  EXPECT_FALSE(frontend::edge_error_ratio(
+      graph, {0, 1, graph::EdgeType::kLoop, at_x(1.0), graph::Information6::Zero()}));
 }
 
 }  // namespace

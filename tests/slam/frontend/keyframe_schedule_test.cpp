@@ -20,7 +20,7 @@ Pose moved(double x_m, double yaw_rad) {
 }
 
 TEST(KeyframeSchedule, NeedsBothThePeriodAndEnoughMotion) {
-  const KeyframeSchedule rtabmap;                               // 1 Hz, 0.1 m, 0.1 rad
+  const frontend::KeyframeSchedule rtabmap;                     // 1 Hz, 0.1 m, 0.1 rad
   EXPECT_FALSE(rtabmap.due(kSecondNs / 2, moved(1.0, 0.0)));    // moved, too soon
   EXPECT_FALSE(rtabmap.due(5 * kSecondNs, moved(0.05, 0.05)));  // time, standing still
   EXPECT_TRUE(rtabmap.due(kSecondNs, moved(0.12, 0.0)));
@@ -29,11 +29,11 @@ TEST(KeyframeSchedule, NeedsBothThePeriodAndEnoughMotion) {
 
 TEST(KeyframeSchedule, APeriodOfWholeFramesIsMetAtThatFrame) {
   // 3 fps: frame times are k / 3 s rounded to the nanosecond; the third frame is 1 s later.
-  const KeyframeSchedule rtabmap;
+  const frontend::KeyframeSchedule rtabmap;
   EXPECT_TRUE(rtabmap.due(999'999'999, moved(0.5, 0.0)));
   EXPECT_FALSE(rtabmap.due(666'666'667, moved(0.5, 0.0)));
   // A rate of 0 (RTAB-Map: as fast as frames come) leaves only the motion bounds.
-  const KeyframeSchedule every_frame{0.0, 0.1, 0.1};
+  const frontend::KeyframeSchedule every_frame{0.0, 0.1, 0.1};
   EXPECT_TRUE(every_frame.due(1, moved(0.2, 0.0)));
 }
 

@@ -26,8 +26,8 @@
 namespace wifislam {
 namespace {
 
-std::unique_ptr<slam::SlamSystem> run_orbslam(const sim::scene::Scene& scene, bool wifi,
-                                              double wifi_similarity = 0.0) {
+std::unique_ptr<slam::system::SlamSystem> run_orbslam(const sim::scene::Scene& scene, bool wifi,
+                                                      double wifi_similarity = 0.0) {
   sim::generate::GenerateOptions generate;
   generate.fps = 2.0;
   sim::generate::GeneratorStream stream(scene, generate);
@@ -36,28 +36,28 @@ std::unique_ptr<slam::SlamSystem> run_orbslam(const sim::scene::Scene& scene, bo
   options.wifi.enabled = wifi;
   if (wifi_similarity > 0) options.wifi.similarity = wifi_similarity;
   options.features.max_keypoints = 500;
-  auto system = std::make_unique<slam::SlamSystem>(
-      options, slam::StreamInfo{stream.intrinsics(), stream.camera_in_base(), stream.has_wifi(),
-                                stream.has_odometry()});
+  auto system = std::make_unique<slam::system::SlamSystem>(
+      options, slam::system::StreamInfo{stream.intrinsics(), stream.camera_in_base(),
+                                        stream.has_wifi(), stream.has_odometry()});
   while (std::optional<SensorEvent> event = stream.next()) system->process(*event);
   system->finish();
   return system;
 }
 
-const slam::OrbslamFrontEnd& front_end_of(const slam::SlamSystem& system) {
-  return dynamic_cast<const slam::OrbslamFrontEnd&>(system.front_end());
+const slam::frontend::OrbslamFrontEnd& front_end_of(const slam::system::SlamSystem& system) {
+  return dynamic_cast<const slam::frontend::OrbslamFrontEnd&>(system.front_end());
 }
 
 TEST(OrbslamFrontEnd, VanillaKeepsOneIndexAndClosesTheLoopByOrbSlamRules) {
   const auto system = run_orbslam(test::small_loop_scene(), false);
-  const slam::OrbslamFrontEnd& orb = front_end_of(*system);
-  const auto keyframes = static_cast<slam::KeyframeId>(system->graph().node_count());
+  const slam::frontend::OrbslamFrontEnd& orb = front_end_of(*system);
+  const auto keyframes = static_cast<slam::graph::KeyframeId>(system->graph().node_count());
   ASSERT_GT(keyframes, 30);
   EXPECT_EQ(orb.database().size(), static_cast<std::size_t>(keyframes));
   EXPECT_TRUE(orb.cluster_databases().empty());
   ASSERT_EQ(orb.records().size(), static_cast<std::size_t>(keyframes));
-  for (slam::KeyframeId k = 0; k < keyframes; ++k) {
-    const slam::OrbslamQueryRecord& r = orb.records()[static_cast<std::size_t>(k)];
+  for (slam::graph::KeyframeId k = 0; k < keyframes; ++k) {
+    const slam::frontend::OrbslamQueryRecord& r = orb.records()[static_cast<std::size_t>(k)];
     EXPECT_EQ(r.keyframe, k);
     // No detection in the first keyframes_between_loops keyframes (ORB-SLAM2's DetectLoop).
     if (k < orb.options().keyframes_between_loops) {
@@ -74,13 +74,13 @@ TEST(OrbslamFrontEnd, VanillaKeepsOneIndexAndClosesTheLoopByOrbSlamRules) {
   EXPECT_GE(orb.covisibility().edge_count(), static_cast<std::size_t>(keyframes - 1) / 2);
   // The loop is closed by a long-term candidate (the walls are unique: a true closure).
   int long_term_closures = 0;
-  for (const slam::LoopClosureRecord& c : system->loop_closures()) {
-    if (c.role == slam::CandidateRole::kLongTerm) ++long_term_closures;
+  for (const slam::system::LoopClosureRecord& c : system->loop_closures()) {
+    if (c.role == slam::frontend::CandidateRole::kLongTerm) ++long_term_closures;
   }
   EXPECT_GE(long_term_closures, 1);
   // One loop per ORB-SLAM2 rules: at least keyframes_between_loops keyframes apart.
-  slam::KeyframeId last = -1000;
-  for (const slam::OrbslamQueryRecord& r : orb.records()) {
+  slam::graph::KeyframeId last = -1000;
+  for (const slam::frontend::OrbslamQueryRecord& r : orb.records()) {
     if (r.accepted_loop < 0) continue;
     EXPECT_GE(r.keyframe - last, orb.options().keyframes_between_loops);
     last = r.keyframe;
@@ -90,8 +90,8 @@ TEST(OrbslamFrontEnd, VanillaKeepsOneIndexAndClosesTheLoopByOrbSlamRules) {
   const auto again = run_orbslam(test::small_loop_scene(), false);
   ASSERT_EQ(again->graph().edges().size(), system->graph().edges().size());
   for (std::size_t i = 0; i < system->graph().edges().size(); ++i) {
-    const slam::GraphEdge& a = system->graph().edges()[i];
-    const slam::GraphEdge& b = again->graph().edges()[i];
+    const slam::graph::GraphEdge& a = system->graph().edges()[i];
+    const slam::graph::GraphEdge& b = again->graph().edges()[i];
     EXPECT_EQ(a.from, b.from);
     EXPECT_EQ(a.to, b.to);
     EXPECT_EQ(a.inliers, b.inliers);
@@ -102,13 +102,13 @@ TEST(OrbslamFrontEnd, WithWifiEachKeyframeIsInItsOwnClustersIndexOnly) {
   // The loop is small: at the default threshold every pause sounds like every other. A strict
   // one splits it into clusters that are not all similar, so bounding shows.
   const auto system = run_orbslam(test::small_loop_with_wifi_scene(), true, 0.995);
-  const slam::OrbslamFrontEnd& orb = front_end_of(*system);
+  const slam::frontend::OrbslamFrontEnd& orb = front_end_of(*system);
   const slam::wifi::WifiModule& wifi = *orb.wifi();
-  const auto keyframes = static_cast<slam::KeyframeId>(system->graph().node_count());
+  const auto keyframes = static_cast<slam::graph::KeyframeId>(system->graph().node_count());
   EXPECT_EQ(orb.database().size(), 0u);  // no shared index
   ASSERT_GE(orb.cluster_databases().size(), 3u);
   int clustered = 0;
-  for (slam::KeyframeId k = 0; k < keyframes; ++k) {
+  for (slam::graph::KeyframeId k = 0; k < keyframes; ++k) {
     const slam::wifi::ClusterId own = wifi.cluster_of(k);
     if (own >= 0) ++clustered;
     int indexes_holding = 0;
@@ -125,7 +125,7 @@ TEST(OrbslamFrontEnd, WithWifiEachKeyframeIsInItsOwnClustersIndexOnly) {
   // A query with a signature reads only its similar clusters' indexes (and the unclustered
   // one): fewer keyframes than the map holds, for some queries.
   bool bounded = false;
-  for (const slam::OrbslamQueryRecord& r : orb.records()) {
+  for (const slam::frontend::OrbslamQueryRecord& r : orb.records()) {
     if (r.detection_ran && r.keyframes_searched < static_cast<std::size_t>(r.keyframe)) {
       bounded = true;
     }
@@ -145,8 +145,8 @@ TEST(OrbslamRetrieval, TheBestScoringFirstLapFrameIsTheSamePlace) {
   sim::generate::GenerateOptions generate;
   generate.fps = 1.0;
   sim::generate::GeneratorStream stream(scene, generate);
-  slam::FeatureOptions features;
-  const slam::OrbFeatureExtractor orb(features, stream.intrinsics());
+  slam::feature::FeatureOptions features;
+  const slam::feature::OrbFeatureExtractor orb(features, stream.intrinsics());
   const auto vocabulary = slam::bow::load_vocabulary("");
   struct View {
     Pose truth;

@@ -13,8 +13,8 @@ cv::Mat random_descriptor(Rng& rng) {
 
 }  // namespace
 
-slam::FrameFeatures place_features(int place, std::uint64_t seed, int flipped_bits) {
-  slam::FrameFeatures f;
+slam::feature::FrameFeatures place_features(int place, std::uint64_t seed, int flipped_bits) {
+  slam::feature::FrameFeatures f;
   Rng own = Rng::stream(seed, "place/" + std::to_string(place));
   Rng pick = Rng::stream(seed, "pick/" + std::to_string(place));
   static thread_local std::vector<cv::Mat> pool;
@@ -41,9 +41,10 @@ slam::FrameFeatures place_features(int place, std::uint64_t seed, int flipped_bi
   return f;
 }
 
-RtabmapDriver::RtabmapDriver(slam::RtabmapOptions options, bool wifi)
+RtabmapDriver::RtabmapDriver(slam::frontend::RtabmapOptions options, bool wifi)
     : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
-  front_end_ = std::make_unique<slam::RtabmapFrontEnd>(options, slam::PoseGraphOptions{});
+  front_end_ = std::make_unique<slam::frontend::RtabmapFrontEnd>(
+      options, slam::optimize::PoseGraphOptions{});
   if (wifi) {
     slam::wifi::WifiOptions w;
     w.enabled = true;
@@ -51,18 +52,20 @@ RtabmapDriver::RtabmapDriver(slam::RtabmapOptions options, bool wifi)
   }
 }
 
-std::vector<slam::Candidate> RtabmapDriver::select_only(int place, std::optional<double> x_m) {
+std::vector<slam::frontend::Candidate> RtabmapDriver::select_only(int place,
+                                                                  std::optional<double> x_m) {
   // Camera looking along +x (its optical axis z is the world's x).
   Pose pose = Pose::Identity();
   pose.linear() << 0, 0, 1, -1, 0, 0, 0, -1, 0;
   pose.translation() =
       Eigen::Vector3d(x_m.value_or(0.5 * static_cast<double>(graph_.node_count())), 0.0, 0.0);
-  const slam::KeyframeId id = graph_.add_node(Timestamp::from_ns(graph_.node_count()),
-                                              static_cast<std::int64_t>(graph_.node_count()), pose);
-  if (id > 0) graph_.add_edge({id - 1, id, slam::EdgeType::kVisual});
+  const slam::graph::KeyframeId id =
+      graph_.add_node(Timestamp::from_ns(graph_.node_count()),
+                      static_cast<std::int64_t>(graph_.node_count()), pose);
+  if (id > 0) graph_.add_edge({id - 1, id, slam::graph::EdgeType::kVisual});
   rule_.add_keyframe(static_cast<double>(id));
   features_ = place_features(place);
-  slam::SelectionQuery q;
+  slam::frontend::SelectionQuery q;
   q.keyframe = id;
   q.features = &features_;
   q.graph = &graph_;
@@ -73,16 +76,17 @@ std::vector<slam::Candidate> RtabmapDriver::select_only(int place, std::optional
 }
 
 void RtabmapDriver::finish_node() {
-  slam::VerificationReport report;
+  slam::frontend::VerificationReport report;
   report.keyframe = last();
   report.tracked_from = last() - 1;
-  for (const slam::Candidate& c : pending_)
-    report.comparisons.push_back({c, false, false, 0, slam::EdgeType::kVisual});
+  for (const slam::frontend::Candidate& c : pending_)
+    report.comparisons.push_back({c, false, false, 0, slam::graph::EdgeType::kVisual});
   front_end_->on_verified(report);
 }
 
-std::vector<slam::Candidate> RtabmapDriver::add_node(int place, std::optional<double> x_m) {
-  std::vector<slam::Candidate> out = select_only(place, x_m);
+std::vector<slam::frontend::Candidate> RtabmapDriver::add_node(int place,
+                                                               std::optional<double> x_m) {
+  std::vector<slam::frontend::Candidate> out = select_only(place, x_m);
   finish_node();
   return out;
 }

@@ -17,32 +17,37 @@
 namespace wifislam::test {
 
 /// Features of place `place` (32-byte ORB-like descriptors, keypoint responses decreasing).
-slam::FrameFeatures place_features(int place, std::uint64_t seed = 3, int flipped_bits = 3);
+slam::feature::FrameFeatures place_features(int place, std::uint64_t seed = 3,
+                                            int flipped_bits = 3);
 
 /// Drives an RtabmapFrontEnd over a chain of nodes the way the pipeline does: each node is a
 /// keyframe tracked from the previous one (a visual edge), its candidates are "verified" (none
 /// passes: these tests are about memory and hypotheses, not geometry), then on_verified.
 class RtabmapDriver {
  public:
-  explicit RtabmapDriver(slam::RtabmapOptions options = {}, bool wifi = false);
+  explicit RtabmapDriver(slam::frontend::RtabmapOptions options = {}, bool wifi = false);
 
   /// Adds a node seeing `place`; returns its candidates. Node k stands at x = 0.5 k m (a straight
   /// corridor, looking along +x: no node comes back near an earlier one) unless `x_m` says where.
-  std::vector<slam::Candidate> add_node(int place, std::optional<double> x_m = std::nullopt);
+  std::vector<slam::frontend::Candidate> add_node(int place,
+                                                  std::optional<double> x_m = std::nullopt);
   /// Adds a node and stops before verification (to look at the memory between the two).
-  std::vector<slam::Candidate> select_only(int place, std::optional<double> x_m = std::nullopt);
+  std::vector<slam::frontend::Candidate> select_only(int place,
+                                                     std::optional<double> x_m = std::nullopt);
   void finish_node();
 
-  slam::RtabmapFrontEnd& front_end() { return *front_end_; }
-  slam::KeyframeId last() const { return static_cast<slam::KeyframeId>(graph_.node_count()) - 1; }
+  slam::frontend::RtabmapFrontEnd& front_end() { return *front_end_; }
+  slam::graph::KeyframeId last() const {
+    return static_cast<slam::graph::KeyframeId>(graph_.node_count()) - 1;
+  }
 
  private:
-  slam::Instrumentation instrumentation_;
-  slam::PoseGraph graph_;
-  slam::LoopRule rule_;
-  std::unique_ptr<slam::RtabmapFrontEnd> front_end_;
-  slam::FrameFeatures features_;
-  std::vector<slam::Candidate> pending_;
+  slam::util::Instrumentation instrumentation_;
+  slam::graph::PoseGraph graph_;
+  slam::frontend::LoopRule rule_;
+  std::unique_ptr<slam::frontend::RtabmapFrontEnd> front_end_;
+  slam::feature::FrameFeatures features_;
+  std::vector<slam::frontend::Candidate> pending_;
 };
 
 WifiScan scan_at(double start_s, const std::vector<std::pair<std::uint64_t, int>>& aps);

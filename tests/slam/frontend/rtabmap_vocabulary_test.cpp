@@ -9,7 +9,7 @@
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 #include "tests/slam/frontend/rtabmap_test_nodes.hpp"
 
-namespace wifislam::slam::rtabmap {
+namespace wifislam::slam::frontend::rtabmap {
 namespace {
 
 cv::Mat descriptor_with_bits(std::initializer_list<int> bits) {
@@ -76,7 +76,7 @@ TEST(RtabmapVocabulary, WordsOfNodesOutOfMemoryLeaveTheDictionaryUntilRetrieved)
 
 TEST(RtabmapVocabulary, RevisitedPlaceReusesItsWordsAndNewPlaceFoundsNewOnes) {
   VisualVocabulary vocabulary(0.8);
-  const FrameFeatures place0 = test::place_features(0);
+  const feature::FrameFeatures place0 = test::place_features(0);
   const NodeWords first = vocabulary.add_node(0, place0.descriptors);
   const std::size_t after_first = vocabulary.size();
   EXPECT_GE(after_first, 150u);  // its own descriptors are new words
@@ -89,7 +89,7 @@ TEST(RtabmapVocabulary, RevisitedPlaceReusesItsWordsAndNewPlaceFoundsNewOnes) {
 }
 
 TEST(RtabmapVocabulary, SameDescriptorsGiveTheSameWords) {
-  std::vector<FrameFeatures> nodes;
+  std::vector<feature::FrameFeatures> nodes;
   for (int p : {0, 1, 2, 0, 3, 1}) nodes.push_back(test::place_features(p));
   VisualVocabulary a(0.8), b(0.8);
   for (std::size_t i = 0; i < nodes.size(); ++i) {
@@ -101,7 +101,7 @@ TEST(RtabmapVocabulary, SameDescriptorsGiveTheSameWords) {
 }
 
 TEST(RtabmapVocabulary, MaxFeaturesKeepsTheStrongestKeypoints) {
-  const FrameFeatures f = test::place_features(4);  // responses fall with the row
+  const feature::FrameFeatures f = test::place_features(4);  // responses fall with the row
   const cv::Mat kept = strongest_descriptors(f.keypoints, f.descriptors, 120);
   ASSERT_EQ(kept.rows, 120);
   EXPECT_EQ(cv::norm(kept, f.descriptors.rowRange(0, 120), cv::NORM_HAMMING), 0.0);
@@ -123,4 +123,4 @@ TEST(RtabmapLikelihood, NormalisationRaisesOnlyScoresAboveMeanPlusSigma) {
 }
 
 }  // namespace
-}  // namespace wifislam::slam::rtabmap
+}  // namespace wifislam::slam::frontend::rtabmap

@@ -9,8 +9,8 @@
 namespace wifislam::slam::test {
 
 /// Diagonal information: one standard deviation for every translation axis, one for rotation.
-inline Information6 information(double sigma_m, double sigma_rad) {
-  Information6 info = Information6::Zero();
+inline graph::Information6 information(double sigma_m, double sigma_rad) {
+  graph::Information6 info = graph::Information6::Zero();
   info.diagonal() << Eigen::Vector3d::Constant(1 / (sigma_m * sigma_m)),
       Eigen::Vector3d::Constant(1 / (sigma_rad * sigma_rad));
   return info;

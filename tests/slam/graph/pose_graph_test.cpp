@@ -46,7 +46,7 @@ Pose perturb(const Pose& p, Rng& rng, double sigma_m, double sigma_rad, double y
 TEST(PoseGraph, OneCorrectLoopClosureCutsEndPointErrorByAtLeastEightyPercent) {
   const std::vector<Pose> truth = square_loop();
   Rng rng = Rng::stream(11, "test/pose_graph/odometry");
-  PoseGraph graph;
+  graph::PoseGraph graph;
   const double sigma_m = 0.02, sigma_rad = 0.01;
   Pose chained = truth[0];
   graph.add_node(Timestamp::from_ns(0), 0, chained);
@@ -57,16 +57,17 @@ TEST(PoseGraph, OneCorrectLoopClosureCutsEndPointErrorByAtLeastEightyPercent) {
     chained = chained * measured;
     graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
                    chained);
-    graph.add_edge({static_cast<KeyframeId>(i - 1), static_cast<KeyframeId>(i), EdgeType::kOdometry,
-                    measured, information(sigma_m, sigma_rad), 0});
+    graph.add_edge({static_cast<graph::KeyframeId>(i - 1), static_cast<graph::KeyframeId>(i),
+                    graph::EdgeType::kOdometry, measured, information(sigma_m, sigma_rad), 0});
   }
-  const KeyframeId last = static_cast<KeyframeId>(truth.size() - 1);
+  const graph::KeyframeId last = static_cast<graph::KeyframeId>(truth.size() - 1);
   // One correct loop closure: the last pose seen from the first, measured precisely.
-  graph.add_edge(
-      {0, last, EdgeType::kLoop, truth[0].inverse() * truth.back(), information(0.005, 0.002), 40});
+  graph.add_edge({0, last, graph::EdgeType::kLoop, truth[0].inverse() * truth.back(),
+                  information(0.005, 0.002), 40});
 
   const double before_m = translation_distance_m(graph.node(last).pose, truth.back());
-  const OptimisationSummary summary = optimise_pose_graph(graph, PoseGraphOptions{}, 100);
+  const optimize::OptimisationSummary summary =
+      optimize::optimise_pose_graph(graph, optimize::PoseGraphOptions{}, 100);
   const double after_m = translation_distance_m(graph.node(last).pose, truth.back());
   std::printf("end-point error %.3f m -> %.3f m (%s)\n", before_m, after_m, summary.brief.c_str());
   ASSERT_TRUE(summary.ran);
@@ -80,7 +81,7 @@ TEST(PoseGraph, OneCorrectLoopClosureCutsEndPointErrorByAtLeastEightyPercent) {
 TEST(PoseGraph, GaugeFixedChainWithoutLoopIsUnchanged) {
   const std::vector<Pose> truth = square_loop();
   Rng rng = Rng::stream(12, "test/pose_graph/chain");
-  PoseGraph graph;
+  graph::PoseGraph graph;
   Pose chained = truth[0];
   graph.add_node(Timestamp::from_ns(0), 0, chained);
   for (std::size_t i = 1; i < 40; ++i) {
@@ -88,13 +89,13 @@ TEST(PoseGraph, GaugeFixedChainWithoutLoopIsUnchanged) {
     chained = chained * measured;
     graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
                    chained);
-    graph.add_edge({static_cast<KeyframeId>(i - 1), static_cast<KeyframeId>(i), EdgeType::kVisual,
-                    measured, information(0.02, 0.01), 100});
+    graph.add_edge({static_cast<graph::KeyframeId>(i - 1), static_cast<graph::KeyframeId>(i),
+                    graph::EdgeType::kVisual, measured, information(0.02, 0.01), 100});
   }
-  const PoseGraph before = graph;
-  optimise_pose_graph(graph, PoseGraphOptions{}, 100);
+  const graph::PoseGraph before = graph;
+  optimize::optimise_pose_graph(graph, optimize::PoseGraphOptions{}, 100);
   for (std::size_t i = 0; i < graph.node_count(); ++i) {
-    const KeyframeId id = static_cast<KeyframeId>(i);
+    const graph::KeyframeId id = static_cast<graph::KeyframeId>(i);
     EXPECT_LT(translation_distance_m(graph.node(id).pose, before.node(id).pose), 1e-9) << i;
     EXPECT_LT(rotation_angle_rad(graph.node(id).pose, before.node(id).pose), 1e-9) << i;
   }
@@ -102,27 +103,28 @@ TEST(PoseGraph, GaugeFixedChainWithoutLoopIsUnchanged) {
 
 TEST(PoseGraph, RobustLossLimitsAFalseLoopClosure) {
   const std::vector<Pose> truth = square_loop();
-  auto build = [&](PoseGraph& graph) {
+  auto build = [&](graph::PoseGraph& graph) {
     for (std::size_t i = 0; i < truth.size(); ++i) {
       graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
                      truth[i]);
       if (i > 0) {
-        graph.add_edge({static_cast<KeyframeId>(i - 1), static_cast<KeyframeId>(i),
-                        EdgeType::kVisual, truth[i - 1].inverse() * truth[i],
+        graph.add_edge({static_cast<graph::KeyframeId>(i - 1), static_cast<graph::KeyframeId>(i),
+                        graph::EdgeType::kVisual, truth[i - 1].inverse() * truth[i],
                         information(0.01, 0.005), 100});
       }
     }
     // A false loop closure claiming node 30 is where node 70 is.
-    graph.add_edge({30, 70, EdgeType::kLoop, Pose::Identity(), information(0.01, 0.005), 25});
+    graph.add_edge(
+        {30, 70, graph::EdgeType::kLoop, Pose::Identity(), information(0.01, 0.005), 25});
   };
-  PoseGraph plain, robust;
+  graph::PoseGraph plain, robust;
   build(plain);
   build(robust);
-  PoseGraphOptions options;
-  optimise_pose_graph(plain, options, 100);
-  RobustKernel cauchy;
-  cauchy.kind = RobustKernel::Kind::kCauchy;
-  optimise_pose_graph(robust, options, 100, cauchy);
+  optimize::PoseGraphOptions options;
+  optimize::optimise_pose_graph(plain, options, 100);
+  optimize::RobustKernel cauchy;
+  cauchy.kind = optimize::RobustKernel::Kind::kCauchy;
+  optimize::optimise_pose_graph(robust, options, 100, cauchy);
   const double plain_error = translation_distance_m(plain.node(50).pose, truth[50]);
   const double robust_error = translation_distance_m(robust.node(50).pose, truth[50]);
   std::printf("mid-loop error with a false closure: plain %.3f m, cauchy %.3f m\n", plain_error,
@@ -132,15 +134,15 @@ TEST(PoseGraph, RobustLossLimitsAFalseLoopClosure) {
 }
 
 TEST(PoseGraph, GeodesicNeighboursByDistanceThenId) {
-  PoseGraph graph;
+  graph::PoseGraph graph;
   for (int i = 0; i < 6; ++i) graph.add_node(Timestamp::from_ns(i), i, Pose::Identity());
-  for (int i = 1; i < 6; ++i) graph.add_edge({i - 1, i, EdgeType::kVisual});
-  graph.add_edge({0, 5, EdgeType::kLoop});
-  EXPECT_EQ(graph.geodesic_neighbours(5, 1), (std::vector<KeyframeId>{0, 4}));
-  EXPECT_EQ(graph.geodesic_neighbours(5, 2), (std::vector<KeyframeId>{0, 4, 1, 3}));
+  for (int i = 1; i < 6; ++i) graph.add_edge({i - 1, i, graph::EdgeType::kVisual});
+  graph.add_edge({0, 5, graph::EdgeType::kLoop});
+  EXPECT_EQ(graph.geodesic_neighbours(5, 1), (std::vector<graph::KeyframeId>{0, 4}));
+  EXPECT_EQ(graph.geodesic_neighbours(5, 2), (std::vector<graph::KeyframeId>{0, 4, 1, 3}));
   EXPECT_TRUE(graph.has_edge(5, 0));
   EXPECT_FALSE(graph.has_edge(1, 3));
-  EXPECT_THROW(graph.add_edge({2, 2, EdgeType::kVisual}), InvalidInputError);
+  EXPECT_THROW(graph.add_edge({2, 2, graph::EdgeType::kVisual}), InvalidInputError);
 }
 
 }  // namespace

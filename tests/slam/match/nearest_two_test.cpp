@@ -12,10 +12,11 @@
 namespace wifislam::slam {
 namespace {
 
-NearestTwo scan(const PackedDescriptor& q, const std::vector<PackedDescriptor>& words) {
-  NearestTwo r;
+match::NearestTwo scan(const match::PackedDescriptor& q,
+                       const std::vector<match::PackedDescriptor>& words) {
+  match::NearestTwo r;
   for (std::size_t w = 0; w < words.size(); ++w) {
-    const int d = hamming_distance(q, words[w]);
+    const int d = match::hamming_distance(q, words[w]);
     if (d < r.best) {
       r.second = r.best;
       r.best = d;
@@ -27,28 +28,29 @@ NearestTwo scan(const PackedDescriptor& q, const std::vector<PackedDescriptor>& 
   return r;
 }
 
-NearestTwo lanes_search(const PackedDescriptor& q, const std::vector<PackedDescriptor>& words) {
+match::NearestTwo lanes_search(const match::PackedDescriptor& q,
+                               const std::vector<match::PackedDescriptor>& words) {
   std::vector<std::uint64_t> lanes[4];
-  for (const PackedDescriptor& d : words)
+  for (const match::PackedDescriptor& d : words)
     for (int k = 0; k < 4; ++k) lanes[k].push_back(d[k]);
   const std::uint64_t* const pointers[4] = {lanes[0].data(), lanes[1].data(), lanes[2].data(),
                                             lanes[3].data()};
-  return nearest_two(q.data(), pointers, words.size());
+  return match::nearest_two(q.data(), pointers, words.size());
 }
 
 TEST(NearestTwo, EqualsAPlainScanTiesToTheLowerIndex) {
   std::mt19937_64 rng(7);
   for (std::size_t count : {0u, 1u, 2u, 7u, 8u, 9u, 15u, 16u, 17u, 1000u, 4099u}) {
     for (int trial = 0; trial < 20; ++trial) {
-      std::vector<PackedDescriptor> words(count);
+      std::vector<match::PackedDescriptor> words(count);
       // Half the trials draw from a few bit patterns, so equal distances abound.
       const bool ties = trial % 2 == 1;
       for (auto& d : words) {
         for (auto& x : d) x = ties ? (rng() % 4) * 0x0f0f0f0f0f0f0f0fULL : rng();
       }
-      PackedDescriptor q{};
+      match::PackedDescriptor q{};
       for (auto& x : q) x = ties ? (rng() % 4) * 0x0f0f0f0f0f0f0f0fULL : rng();
-      const NearestTwo expected = scan(q, words), got = lanes_search(q, words);
+      const match::NearestTwo expected = scan(q, words), got = lanes_search(q, words);
       EXPECT_EQ(got.best, expected.best) << count;
       EXPECT_EQ(got.second, expected.second) << count;
       EXPECT_EQ(got.best_index, expected.best_index) << count;

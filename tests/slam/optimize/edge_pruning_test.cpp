@@ -40,17 +40,17 @@ Pose measure(const Pose& truth, Rng& rng) {
 }
 
 /// Every node reachable from node 0 through edges that were not pruned.
-bool connected(const PoseGraph& graph) {
+bool connected(const graph::PoseGraph& graph) {
   std::vector<char> seen(graph.node_count(), 0);
-  std::deque<KeyframeId> queue{0};
+  std::deque<graph::KeyframeId> queue{0};
   seen[0] = 1;
   std::size_t reached = 1;
   while (!queue.empty()) {
-    const KeyframeId n = queue.front();
+    const graph::KeyframeId n = queue.front();
     queue.pop_front();
-    for (const GraphEdge& e : graph.edges()) {
+    for (const graph::GraphEdge& e : graph.edges()) {
       if (e.pruned || (e.from != n && e.to != n)) continue;
-      const KeyframeId m = e.from == n ? e.to : e.from;
+      const graph::KeyframeId m = e.from == n ? e.to : e.from;
       if (seen[static_cast<std::size_t>(m)]) continue;
       seen[static_cast<std::size_t>(m)] = 1;
       ++reached;
@@ -78,7 +78,7 @@ TEST(EdgePruning, RgbdslamScheduleRemovesAPlantedFalseLoopKeepsTrueEdgesAndTheGr
     }
   }
   Rng rng = Rng::stream(5, "test/edge_pruning/measurements");
-  PoseGraph graph;
+  graph::PoseGraph graph;
   Pose chained = truth[0];
   for (std::size_t i = 0; i < truth.size(); ++i) {
     if (i > 0) {
@@ -88,32 +88,33 @@ TEST(EdgePruning, RgbdslamScheduleRemovesAPlantedFalseLoopKeepsTrueEdgesAndTheGr
     graph.add_node(Timestamp::from_ns(static_cast<std::int64_t>(i)), static_cast<std::int64_t>(i),
                    chained);
   }
-  const auto add = [&](std::size_t a, std::size_t b, EdgeType type) {
-    graph.add_edge({static_cast<KeyframeId>(a), static_cast<KeyframeId>(b), type,
+  const auto add = [&](std::size_t a, std::size_t b, graph::EdgeType type) {
+    graph.add_edge({static_cast<graph::KeyframeId>(a), static_cast<graph::KeyframeId>(b), type,
                     measure(truth[a].inverse() * truth[b], rng), information(kSigmaM, kSigmaRad),
                     100});
   };
-  for (std::size_t i = 1; i < truth.size(); ++i) add(i - 1, i, EdgeType::kVisual);
-  for (std::size_t i = 2; i < truth.size(); ++i) add(i - 2, i, EdgeType::kVisual);
-  for (std::size_t i = 80; i < truth.size(); i += 4) add(i - 80, i, EdgeType::kLoop);
+  for (std::size_t i = 1; i < truth.size(); ++i) add(i - 1, i, graph::EdgeType::kVisual);
+  for (std::size_t i = 2; i < truth.size(); ++i) add(i - 2, i, graph::EdgeType::kVisual);
+  for (std::size_t i = 80; i < truth.size(); i += 4) add(i - 80, i, graph::EdgeType::kLoop);
   const std::size_t true_edges = graph.edges().size();
-  PoseGraph without_false_loop = graph;
-  graph.add_edge({30, 110, EdgeType::kLoop, truth[30].inverse() * truth[70],
+  graph::PoseGraph without_false_loop = graph;
+  graph.add_edge({30, 110, graph::EdgeType::kLoop, truth[30].inverse() * truth[70],
                   information(kSigmaM, kSigmaRad), 60});
 
-  const GraphRobustness robustness = RgbdslamFrontEnd({}, 1).schedule().robustness;
-  ASSERT_EQ(robustness.kernel.kind, RobustKernel::Kind::kHuber);
+  const frontend::GraphRobustness robustness =
+      frontend::RgbdslamFrontEnd({}, 1).schedule().robustness;
+  ASSERT_EQ(robustness.kernel.kind, optimize::RobustKernel::Kind::kHuber);
   ASSERT_TRUE(robustness.kernel.every_edge);
   ASSERT_EQ(robustness.pruning.chi2_thresholds.size(), 3u);
   int reoptimisations = 0;
-  const auto reoptimise = [&](PoseGraph& g) {
+  const auto reoptimise = [&](graph::PoseGraph& g) {
     ++reoptimisations;
-    return optimise_pose_graph(g, PoseGraphOptions{}, 100, robustness.kernel);
+    return optimize::optimise_pose_graph(g, optimize::PoseGraphOptions{}, 100, robustness.kernel);
   };
   ASSERT_TRUE(reoptimise(graph).usable);
-  const double false_chi2 = edge_chi2(graph, graph.edges().back());
-  const std::vector<PruningStage> stages =
-      prune_inconsistent_edges(graph, robustness.pruning, reoptimise);
+  const double false_chi2 = optimize::edge_chi2(graph, graph.edges().back());
+  const std::vector<optimize::PruningStage> stages =
+      optimize::prune_inconsistent_edges(graph, robustness.pruning, reoptimise);
 
   ASSERT_EQ(stages.size(), 3u);
   EXPECT_TRUE(graph.edges().back().pruned) << "false loop chi^2 " << false_chi2;
@@ -127,35 +128,35 @@ TEST(EdgePruning, RgbdslamScheduleRemovesAPlantedFalseLoopKeepsTrueEdgesAndTheGr
   // metres-off map the false loop pulled it to.
   ASSERT_TRUE(reoptimise(without_false_loop).usable);
   for (std::size_t i = 0; i < truth.size(); ++i) {
-    const KeyframeId id = static_cast<KeyframeId>(i);
+    const graph::KeyframeId id = static_cast<graph::KeyframeId>(i);
     EXPECT_LT(translation_distance_m(graph.node(id).pose, without_false_loop.node(id).pose), 0.01)
         << "pose " << i;
   }
   // The correct edges' chi^2 at the optimum is at or below chi^2(6)'s mean.
   double sum = 0.0;
-  for (std::size_t e = 0; e < true_edges; ++e) sum += edge_chi2(graph, graph.edges()[e]);
+  for (std::size_t e = 0; e < true_edges; ++e) sum += optimize::edge_chi2(graph, graph.edges()[e]);
   EXPECT_LT(sum / static_cast<double>(true_edges), 6.0);
 }
 
 TEST(EdgePruning, ABridgeIsDiscountedNotRemovedAndTheWorstOfAPairGoesFirst) {
   // Nodes 0-1-2 form a triangle whose 0-2 edge contradicts the other two; 2-3 is the only link
   // to node 3 and also contradicts the poses (nothing was optimised yet).
-  PoseGraph graph;
+  graph::PoseGraph graph;
   for (int i = 0; i < 4; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
-  const Information6 info = information(kSigmaM, kSigmaRad);
-  graph.add_edge({0, 1, EdgeType::kVisual, planar(1, 0, 0), info, 50});
-  graph.add_edge({1, 2, EdgeType::kVisual, planar(1, 0, 0), info, 50});
-  graph.add_edge({0, 2, EdgeType::kLoop, planar(3, 0, 0), info, 50});
-  graph.add_edge({2, 3, EdgeType::kVisual, planar(0.5, 0, 0), info, 50});
-  graph.add_edge({0, 3, EdgeType::kOdometry, planar(9, 0, 0), info, 0});  // never pruned
+  const graph::Information6 info = information(kSigmaM, kSigmaRad);
+  graph.add_edge({0, 1, graph::EdgeType::kVisual, planar(1, 0, 0), info, 50});
+  graph.add_edge({1, 2, graph::EdgeType::kVisual, planar(1, 0, 0), info, 50});
+  graph.add_edge({0, 2, graph::EdgeType::kLoop, planar(3, 0, 0), info, 50});
+  graph.add_edge({2, 3, graph::EdgeType::kVisual, planar(0.5, 0, 0), info, 50});
+  graph.add_edge({0, 3, graph::EdgeType::kOdometry, planar(9, 0, 0), info, 0});  // never pruned
   graph.prune_edge(4);  // ... unless already out: odometry marked pruned does not connect
-  PruningSchedule schedule;
+  optimize::PruningSchedule schedule;
   schedule.chi2_thresholds = {10.0};
   int calls = 0;
-  const std::vector<PruningStage> stages =
-      prune_inconsistent_edges(graph, schedule, [&](PoseGraph&) {
+  const std::vector<optimize::PruningStage> stages =
+      optimize::prune_inconsistent_edges(graph, schedule, [&](graph::PoseGraph&) {
         ++calls;
-        return OptimisationSummary{};
+        return optimize::OptimisationSummary{};
       });
   ASSERT_EQ(stages.size(), 1u);
   EXPECT_EQ(stages[0].pruned, 1);
@@ -166,35 +167,39 @@ TEST(EdgePruning, ABridgeIsDiscountedNotRemovedAndTheWorstOfAPairGoesFirst) {
   EXPECT_FALSE(graph.edges()[1].pruned);
   EXPECT_FALSE(graph.edges()[3].pruned);  // the bridge stays, discounted
   EXPECT_DOUBLE_EQ(graph.edges()[3].weight, schedule.discount_weight);
-  EXPECT_LT(edge_chi2(graph, graph.edges()[3]), 1e-3);
+  EXPECT_LT(optimize::edge_chi2(graph, graph.edges()[3]), 1e-3);
 }
 
 TEST(EdgePruning, NothingOverTheThresholdMeansNoReoptimisation) {
-  PoseGraph graph;
+  graph::PoseGraph graph;
   for (int i = 0; i < 3; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
-  graph.add_edge({0, 1, EdgeType::kVisual, planar(1, 0, 0), information(kSigmaM, kSigmaRad), 50});
-  graph.add_edge({1, 2, EdgeType::kVisual, planar(1, 0, 0), information(kSigmaM, kSigmaRad), 50});
-  PruningSchedule schedule;
+  graph.add_edge(
+      {0, 1, graph::EdgeType::kVisual, planar(1, 0, 0), information(kSigmaM, kSigmaRad), 50});
+  graph.add_edge(
+      {1, 2, graph::EdgeType::kVisual, planar(1, 0, 0), information(kSigmaM, kSigmaRad), 50});
+  optimize::PruningSchedule schedule;
   schedule.chi2_thresholds = {5.0, 1.0, 0.25};
   int calls = 0;
-  const auto stages = prune_inconsistent_edges(graph, schedule, [&](PoseGraph&) {
+  const auto stages = optimize::prune_inconsistent_edges(graph, schedule, [&](graph::PoseGraph&) {
     ++calls;
-    return OptimisationSummary{};
+    return optimize::OptimisationSummary{};
   });
   EXPECT_EQ(stages.size(), 3u);
   EXPECT_EQ(calls, 0);
-  for (const GraphEdge& e : graph.edges()) EXPECT_FALSE(e.pruned);
+  for (const graph::GraphEdge& e : graph.edges()) EXPECT_FALSE(e.pruned);
 }
 
 TEST(PoseGraphOptimiser, KeepsThePosesWhenCeresCannotUseItsSolution) {
-  PoseGraph graph;
+  graph::PoseGraph graph;
   for (int i = 0; i < 3; ++i) graph.add_node(Timestamp::from_ns(i), i, planar(i, 0, 0));
   Pose broken = planar(1, 0, 0);
   broken.translation().x() = std::numeric_limits<double>::quiet_NaN();
-  graph.add_edge({0, 1, EdgeType::kVisual, planar(1.5, 0, 0), information(kSigmaM, kSigmaRad)});
-  graph.add_edge({1, 2, EdgeType::kVisual, broken, information(kSigmaM, kSigmaRad)});
-  const PoseGraph before = graph;
-  const OptimisationSummary summary = optimise_pose_graph(graph, PoseGraphOptions{}, 50);
+  graph.add_edge(
+      {0, 1, graph::EdgeType::kVisual, planar(1.5, 0, 0), information(kSigmaM, kSigmaRad)});
+  graph.add_edge({1, 2, graph::EdgeType::kVisual, broken, information(kSigmaM, kSigmaRad)});
+  const graph::PoseGraph before = graph;
+  const optimize::OptimisationSummary summary =
+      optimize::optimise_pose_graph(graph, optimize::PoseGraphOptions{}, 50);
   EXPECT_TRUE(summary.ran);
   EXPECT_FALSE(summary.usable) << summary.termination;
   EXPECT_FALSE(summary.termination.empty());
@@ -205,17 +210,17 @@ TEST(PoseGraphOptimiser, KeepsThePosesWhenCeresCannotUseItsSolution) {
 
 TEST(PoseGraphOptimiser, PrunedEdgesAreLeftOutAndWeightsScaleInformation) {
   // Two contradicting edges between the same nodes: the optimum sits between them, by weight.
-  PoseGraph graph;
+  graph::PoseGraph graph;
   graph.add_node(Timestamp::from_ns(0), 0, Pose::Identity());
   graph.add_node(Timestamp::from_ns(1), 1, Pose::Identity());
-  const Information6 info = information(kSigmaM, kSigmaRad);
-  graph.add_edge({0, 1, EdgeType::kVisual, planar(1, 0, 0), info});
-  graph.add_edge({0, 1, EdgeType::kLoop, planar(2, 0, 0), info});
+  const graph::Information6 info = information(kSigmaM, kSigmaRad);
+  graph.add_edge({0, 1, graph::EdgeType::kVisual, planar(1, 0, 0), info});
+  graph.add_edge({0, 1, graph::EdgeType::kLoop, planar(2, 0, 0), info});
   graph.set_edge_weight(1, 3.0);  // x = (1 * 1 + 3 * 2) / 4
-  optimise_pose_graph(graph, PoseGraphOptions{}, 50);
+  optimize::optimise_pose_graph(graph, optimize::PoseGraphOptions{}, 50);
   EXPECT_NEAR(graph.node(1).pose.translation().x(), 1.75, 1e-3);
   graph.prune_edge(1);
-  optimise_pose_graph(graph, PoseGraphOptions{}, 50);
+  optimize::optimise_pose_graph(graph, optimize::PoseGraphOptions{}, 50);
   EXPECT_NEAR(graph.node(1).pose.translation().x(), 1.0, 1e-3);
 }
 

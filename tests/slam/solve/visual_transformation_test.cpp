@@ -34,14 +34,14 @@ class RenderedWorld : public ::testing::Test {
   }
 
   /// Noise-free frame: the renderer's colour and ideal depth.
-  static slam::FrameFeatures features_at(const Pose& camera_to_world, std::int64_t index) {
+  static slam::feature::FrameFeatures features_at(const Pose& camera_to_world, std::int64_t index) {
     const sim::render::RenderedView view = renderer_->render(camera_to_world);
     RgbdFrame frame;
     frame.index = index;
     frame.rgb = view.color_bgr;
     frame.depth_m = view.depth_m;
-    const slam::OrbFeatureExtractor extractor(slam::FeatureOptions{},
-                                              scene_->sensors.camera.intrinsics);
+    const slam::feature::OrbFeatureExtractor extractor(slam::feature::FeatureOptions{},
+                                                       scene_->sensors.camera.intrinsics);
     return extractor.extract(frame);
   }
 
@@ -63,12 +63,13 @@ TEST_F(RenderedWorld, RecoversKnownRelativePoseToOneCentimetreAndHalfADegree) {
   // Along the south corridor, 0.3 m forward with a 6 degree turn and a small sideways step.
   const Pose a = camera(1.5, 0.1, 2.0);
   const Pose b = camera(1.8, -0.05, 8.0);
-  const slam::FrameFeatures fa = features_at(a, 0);
-  const slam::FrameFeatures fb = features_at(b, 1);
+  const slam::feature::FrameFeatures fa = features_at(a, 0);
+  const slam::feature::FrameFeatures fb = features_at(b, 1);
   ASSERT_GT(fa.depth_count(), 100u);
-  slam::Instrumentation instrumentation;
-  const slam::VisualTransformation t = slam::estimate_visual_transformation(
-      fa, fb, scene_->sensors.camera.intrinsics, slam::VisualTransformOptions{}, instrumentation);
+  slam::util::Instrumentation instrumentation;
+  const slam::solve::VisualTransformation t = slam::solve::estimate_visual_transformation(
+      fa, fb, scene_->sensors.camera.intrinsics, slam::solve::VisualTransformOptions{},
+      instrumentation);
   ASSERT_TRUE(t.accepted) << "matches " << t.matches << " inliers " << t.inliers;
   const Pose truth = a.inverse() * b;
   const double translation_error_m = translation_distance_m(t.a_from_b, truth);
@@ -87,23 +88,26 @@ TEST_F(RenderedWorld, RecoversKnownRelativePoseToOneCentimetreAndHalfADegree) {
 
 TEST_F(RenderedWorld, RejectsPairWithNoOverlap) {
   // South corridor looking east versus north corridor looking west: no surface in common.
-  const slam::FrameFeatures fa = features_at(camera(1.5, 0.0, 0.0), 0);
-  const slam::FrameFeatures fb = features_at(camera(6.5, 6.0, 180.0), 1);
-  slam::Instrumentation instrumentation;
-  const slam::VisualTransformation t = slam::estimate_visual_transformation(
-      fa, fb, scene_->sensors.camera.intrinsics, slam::VisualTransformOptions{}, instrumentation);
+  const slam::feature::FrameFeatures fa = features_at(camera(1.5, 0.0, 0.0), 0);
+  const slam::feature::FrameFeatures fb = features_at(camera(6.5, 6.0, 180.0), 1);
+  slam::util::Instrumentation instrumentation;
+  const slam::solve::VisualTransformation t = slam::solve::estimate_visual_transformation(
+      fa, fb, scene_->sensors.camera.intrinsics, slam::solve::VisualTransformOptions{},
+      instrumentation);
   std::printf("no-overlap pair: %d matches, %d inliers\n", t.matches, t.inliers);
   EXPECT_FALSE(t.accepted);
 }
 
 TEST_F(RenderedWorld, TransformationIsDeterministic) {
-  const slam::FrameFeatures fa = features_at(camera(2.0, 0.0, 0.0), 0);
-  const slam::FrameFeatures fb = features_at(camera(2.3, 0.0, 4.0), 1);
-  slam::Instrumentation instrumentation;
-  const auto t1 = slam::estimate_visual_transformation(
-      fa, fb, scene_->sensors.camera.intrinsics, slam::VisualTransformOptions{}, instrumentation);
-  const auto t2 = slam::estimate_visual_transformation(
-      fa, fb, scene_->sensors.camera.intrinsics, slam::VisualTransformOptions{}, instrumentation);
+  const slam::feature::FrameFeatures fa = features_at(camera(2.0, 0.0, 0.0), 0);
+  const slam::feature::FrameFeatures fb = features_at(camera(2.3, 0.0, 4.0), 1);
+  slam::util::Instrumentation instrumentation;
+  const auto t1 = slam::solve::estimate_visual_transformation(
+      fa, fb, scene_->sensors.camera.intrinsics, slam::solve::VisualTransformOptions{},
+      instrumentation);
+  const auto t2 = slam::solve::estimate_visual_transformation(
+      fa, fb, scene_->sensors.camera.intrinsics, slam::solve::VisualTransformOptions{},
+      instrumentation);
   ASSERT_TRUE(t1.accepted);
   EXPECT_EQ(t1.inliers, t2.inliers);
   EXPECT_TRUE(t1.a_from_b.matrix() == t2.a_from_b.matrix());

@@ -41,7 +41,7 @@ TEST(WifiClusters, SimilarClusterWithAVisualEdgeIsJoined) {
   ASSERT_EQ(similar.size(), 1u);
   EXPECT_GT(similar[0].similarity, kThreshold);
   EXPECT_EQ(map.assign(1, kPlaceA2, similar, {0}), 0);
-  EXPECT_EQ(map.clusters()[0].keyframes, (std::vector<KeyframeId>{0, 1}));
+  EXPECT_EQ(map.clusters()[0].keyframes, (std::vector<graph::KeyframeId>{0, 1}));
   EXPECT_EQ(*map.clusters()[0].representative, *kPlaceA);  // the founder's stays
 }
 

@@ -21,44 +21,44 @@ using test::scan_of;
 /// previous one.
 class Driver {
  public:
-  explicit Driver(RgbdslamOptions rgbdslam = {}, wifi::WifiOptions wifi = {})
+  explicit Driver(frontend::RgbdslamOptions rgbdslam = {}, wifi::WifiOptions wifi = {})
       : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
     wifi.enabled = true;
-    selector_ = std::make_unique<RgbdslamFrontEnd>(rgbdslam, /*seed=*/5);
+    selector_ = std::make_unique<frontend::RgbdslamFrontEnd>(rgbdslam, /*seed=*/5);
     selector_->attach_wifi(std::make_unique<wifi::WifiModule>(wifi, instrumentation_));
   }
-  std::vector<Candidate> add_keyframe() {
-    const KeyframeId id = graph_.add_node(Timestamp::from_ns(graph_.node_count()),
-                                          graph_.node_count(), Pose::Identity());
-    if (id > 0) graph_.add_edge({id - 1, id, EdgeType::kVisual});
+  std::vector<frontend::Candidate> add_keyframe() {
+    const graph::KeyframeId id = graph_.add_node(Timestamp::from_ns(graph_.node_count()),
+                                                 graph_.node_count(), Pose::Identity());
+    if (id > 0) graph_.add_edge({id - 1, id, graph::EdgeType::kVisual});
     rule_.add_keyframe(static_cast<double>(id));
-    SelectionQuery q;
+    frontend::SelectionQuery q;
     q.keyframe = id;
     q.graph = &graph_;
     q.loop_rule = &rule_;
     if (id > 0) q.already_compared = {id - 1};
-    std::vector<Candidate> c = selector_->candidates_for(q);
-    VerificationReport report;
+    std::vector<frontend::Candidate> c = selector_->candidates_for(q);
+    frontend::VerificationReport report;
     report.keyframe = id;
     report.tracked_from = id - 1;
     selector_->on_verified(report);
     return c;
   }
-  RgbdslamFrontEnd& selector() { return *selector_; }
+  frontend::RgbdslamFrontEnd& selector() { return *selector_; }
   const wifi::WifiClusterMap& clusters() const { return selector_->wifi()->clusters(); }
-  Instrumentation& instrumentation() { return instrumentation_; }
+  util::Instrumentation& instrumentation() { return instrumentation_; }
 
  private:
-  Instrumentation instrumentation_;
-  PoseGraph graph_;
-  LoopRule rule_;
-  std::unique_ptr<RgbdslamFrontEnd> selector_;
+  util::Instrumentation instrumentation_;
+  graph::PoseGraph graph_;
+  frontend::LoopRule rule_;
+  std::unique_ptr<frontend::RgbdslamFrontEnd> selector_;
 };
 
-std::set<KeyframeId> sampled(const std::vector<Candidate>& candidates) {
-  std::set<KeyframeId> out;
-  for (const Candidate& c : candidates) {
-    if (c.role == CandidateRole::kLongTerm) out.insert(c.keyframe);
+std::set<graph::KeyframeId> sampled(const std::vector<frontend::Candidate>& candidates) {
+  std::set<graph::KeyframeId> out;
+  for (const frontend::Candidate& c : candidates) {
+    if (c.role == frontend::CandidateRole::kLongTerm) out.insert(c.keyframe);
   }
   return out;
 }
@@ -72,15 +72,15 @@ TEST(WifiRgbdslamSelection, LongTermCandidatesComeOnlyFromSimilarClusters) {
   ASSERT_EQ(d.clusters().clusters().size(), 2u);
   d.selector().observe_wifi_scan(scan_of(200, kPlaceA));
   for (int i = 0; i < 10; ++i) {  // back at A: 60..69
-    const std::set<KeyframeId> s = sampled(d.add_keyframe());
+    const std::set<graph::KeyframeId> s = sampled(d.add_keyframe());
     EXPECT_EQ(s.size(), 4u);
-    for (KeyframeId k : s) EXPECT_LT(k, 30) << "keyframe " << k << " is at B";
+    for (graph::KeyframeId k : s) EXPECT_LT(k, 30) << "keyframe " << k << " is at B";
   }
   // At B the pool is B's keyframes old enough to close a loop (30..(query-15)).
   d.selector().observe_wifi_scan(scan_of(300, kPlaceB));
-  const std::set<KeyframeId> s = sampled(d.add_keyframe());  // keyframe 70
+  const std::set<graph::KeyframeId> s = sampled(d.add_keyframe());  // keyframe 70
   ASSERT_EQ(s.size(), 4u);
-  for (KeyframeId k : s) {
+  for (graph::KeyframeId k : s) {
     EXPECT_GE(k, 30);
     EXPECT_LE(k, 55);
   }
@@ -90,18 +90,18 @@ TEST(WifiRgbdslamSelection, LongTermCandidatesComeOnlyFromSimilarClusters) {
 TEST(WifiRgbdslamSelection, PredecessorsStayAndRecentKeyframesAreNotLongTermCandidates) {
   Driver d;
   d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
-  std::vector<Candidate> c;
+  std::vector<frontend::Candidate> c;
   for (int i = 0; i < 12; ++i) c = d.add_keyframe();
   // Keyframe 11: predecessor 10 was compared by tracking, 9, 8, 7 are returned; the cluster's
   // other keyframes are all within the loop gap, so nothing long-term.
   ASSERT_FALSE(c.empty());
   EXPECT_EQ(c[0].keyframe, 9);
-  EXPECT_EQ(c[0].role, CandidateRole::kPredecessor);
+  EXPECT_EQ(c[0].role, frontend::CandidateRole::kPredecessor);
   EXPECT_TRUE(sampled(c).empty());
 }
 
 TEST(WifiRgbdslamSelection, ZeroSampledCandidatesMeansEveryKeyframeOfTheSimilarClusters) {
-  RgbdslamOptions rgbdslam;
+  frontend::RgbdslamOptions rgbdslam;
   rgbdslam.wifi_long_term_candidates = 0;
   Driver d(rgbdslam);
   d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
@@ -109,11 +109,11 @@ TEST(WifiRgbdslamSelection, ZeroSampledCandidatesMeansEveryKeyframeOfTheSimilarC
   d.selector().observe_wifi_scan(scan_of(100, kPlaceB));
   for (int i = 0; i < 20; ++i) d.add_keyframe();
   d.selector().observe_wifi_scan(scan_of(200, kPlaceA));
-  const std::set<KeyframeId> s = sampled(d.add_keyframe());  // keyframe 40
-  std::set<KeyframeId> expected;
-  for (KeyframeId k = 0; k < 20; ++k) expected.insert(k);
+  const std::set<graph::KeyframeId> s = sampled(d.add_keyframe());  // keyframe 40
+  std::set<graph::KeyframeId> expected;
+  for (graph::KeyframeId k = 0; k < 20; ++k) expected.insert(k);
   // Neighbour sampling may have taken a couple of them already; the rest must all be here.
-  for (KeyframeId k : s) EXPECT_TRUE(expected.count(k));
+  for (graph::KeyframeId k : s) EXPECT_TRUE(expected.count(k));
   EXPECT_GE(s.size(), 18u);
 }
 
@@ -130,9 +130,9 @@ TEST(WifiRgbdslamSelection, TheMostSimilarSignaturesComeFirst) {
   d.selector().observe_wifi_scan(scan_of(200, place_a2));
   for (int i = 0; i < 20; ++i) d.add_keyframe();  // 40..59, a cluster of their own
   d.selector().observe_wifi_scan(scan_of(300, kPlaceA));
-  const std::set<KeyframeId> s = sampled(d.add_keyframe());  // 60
+  const std::set<graph::KeyframeId> s = sampled(d.add_keyframe());  // 60
   ASSERT_EQ(s.size(), 4u);
-  for (KeyframeId k : s) EXPECT_LT(k, 20) << k;
+  for (graph::KeyframeId k : s) EXPECT_LT(k, 20) << k;
 }
 
 TEST(WifiRgbdslamSelection, NoQualifyingKeyframeInASimilarClusterMeansNoLongTermCandidate) {
@@ -148,29 +148,29 @@ TEST(WifiRgbdslamSelection, VanillaAndWifiDrawTheSameWhereWifiDoesNotAct) {
   // Same seed, same keyframes: before the first scan the Wi-Fi run samples its long-term
   // candidates exactly as vanilla does, and its neighbours always match vanilla's.
   Driver wifi;
-  RgbdslamFrontEnd vanilla(RgbdslamOptions{}, /*seed=*/5);
-  PoseGraph graph;
-  LoopRule rule(15, 0.0);
-  for (KeyframeId id = 0; id < 60; ++id) {
+  frontend::RgbdslamFrontEnd vanilla(frontend::RgbdslamOptions{}, /*seed=*/5);
+  graph::PoseGraph graph;
+  frontend::LoopRule rule(15, 0.0);
+  for (graph::KeyframeId id = 0; id < 60; ++id) {
     if (id == 40) wifi.selector().observe_wifi_scan(scan_of(0, kPlaceA));
-    const std::vector<Candidate> w = wifi.add_keyframe();
+    const std::vector<frontend::Candidate> w = wifi.add_keyframe();
     graph.add_node(Timestamp::from_ns(id), id, Pose::Identity());
-    if (id > 0) graph.add_edge({id - 1, id, EdgeType::kVisual});
+    if (id > 0) graph.add_edge({id - 1, id, graph::EdgeType::kVisual});
     rule.add_keyframe(static_cast<double>(id));
-    SelectionQuery q;
+    frontend::SelectionQuery q;
     q.keyframe = id;
     q.graph = &graph;
     q.loop_rule = &rule;
     if (id > 0) q.already_compared = {id - 1};
-    const std::vector<Candidate> v = vanilla.candidates_for(q);
+    const std::vector<frontend::Candidate> v = vanilla.candidates_for(q);
     if (id < 40) {
       EXPECT_EQ(w, v) << "keyframe " << id;
     } else {
-      std::vector<Candidate> wn, vn;
-      for (const Candidate& c : w)
-        if (c.role != CandidateRole::kLongTerm) wn.push_back(c);
-      for (const Candidate& c : v)
-        if (c.role != CandidateRole::kLongTerm) vn.push_back(c);
+      std::vector<frontend::Candidate> wn, vn;
+      for (const frontend::Candidate& c : w)
+        if (c.role != frontend::CandidateRole::kLongTerm) wn.push_back(c);
+      for (const frontend::Candidate& c : v)
+        if (c.role != frontend::CandidateRole::kLongTerm) vn.push_back(c);
       EXPECT_EQ(wn, vn) << "keyframe " << id;
     }
   }

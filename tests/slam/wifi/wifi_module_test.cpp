@@ -23,15 +23,17 @@ using test::scan_of;
 
 /// A minimal front end unlike RGBD-SLAM: every earlier keyframe of a similar cluster is a
 /// candidate (exhaustive bounded search), only the best loop hypothesis is accepted.
-class BoundedExhaustiveFrontEnd final : public FrontEnd {
+class BoundedExhaustiveFrontEnd final : public frontend::FrontEnd {
  public:
   BoundedExhaustiveFrontEnd()
-      : FrontEnd("bounded_exhaustive_test", std::make_unique<AcceptBestLoopHypothesis>()) {}
-  std::vector<Candidate> select(const SelectionQuery& query) override {
-    std::vector<KeyframeId> earlier;
-    for (KeyframeId k = 0; k < query.keyframe; ++k) earlier.push_back(k);
-    std::vector<Candidate> out;
-    for (KeyframeId k : wifi()->bound(earlier)) out.push_back({k, CandidateRole::kLongTerm});
+      : frontend::FrontEnd("bounded_exhaustive_test",
+                           std::make_unique<frontend::AcceptBestLoopHypothesis>()) {}
+  std::vector<frontend::Candidate> select(const frontend::SelectionQuery& query) override {
+    std::vector<graph::KeyframeId> earlier;
+    for (graph::KeyframeId k = 0; k < query.keyframe; ++k) earlier.push_back(k);
+    std::vector<frontend::Candidate> out;
+    for (graph::KeyframeId k : wifi()->bound(earlier))
+      out.push_back({k, frontend::CandidateRole::kLongTerm});
     return out;
   }
 };
@@ -42,14 +44,14 @@ class BoundedExhaustiveFrontEnd final : public FrontEnd {
 struct Walk {
   struct Step {
     std::optional<WifiScan> scan;  // before the keyframe
-    VerificationReport report;
+    frontend::VerificationReport report;
   };
   std::vector<Step> steps;
 };
 
 Walk scripted_walk() {
   Walk walk;
-  for (KeyframeId k = 0; k < 50; ++k) {
+  for (graph::KeyframeId k = 0; k < 50; ++k) {
     Walk::Step step;
     if (k == 0) step.scan = scan_of(0, kPlaceA);
     if (k == 20) step.scan = scan_of(100, kPlaceB);
@@ -58,7 +60,7 @@ Walk scripted_walk() {
     step.report.tracked_from = (k == 0 || k == 20 || k == 40) ? -1 : k - 1;
     if (k == 45) {
       step.report.comparisons.push_back(
-          {{5, CandidateRole::kLongTerm}, true, true, 60, EdgeType::kLoop});
+          {{5, frontend::CandidateRole::kLongTerm}, true, true, 60, graph::EdgeType::kLoop});
     }
     walk.steps.push_back(step);
   }
@@ -66,18 +68,18 @@ Walk scripted_walk() {
 }
 
 /// Drives `front_end` (holding `module`) over the walk as the pipeline would.
-std::string run_walk(FrontEnd& front_end, const Walk& walk) {
-  PoseGraph graph;
+std::string run_walk(frontend::FrontEnd& front_end, const Walk& walk) {
+  graph::PoseGraph graph;
   for (const Walk::Step& step : walk.steps) {
     if (step.scan) front_end.observe_wifi_scan(*step.scan);
-    const KeyframeId id = graph.add_node(Timestamp::from_ns(graph.node_count()), graph.node_count(),
-                                         Pose::Identity());
+    const graph::KeyframeId id = graph.add_node(Timestamp::from_ns(graph.node_count()),
+                                                graph.node_count(), Pose::Identity());
     if (step.report.tracked_from >= 0) graph.add_edge({step.report.tracked_from, id});
-    SelectionQuery query;
+    frontend::SelectionQuery query;
     query.keyframe = id;
     query.graph = &graph;
-    LoopRule rule(15, 0.0);
-    for (KeyframeId k = 0; k <= id; ++k) rule.add_keyframe(static_cast<double>(k));
+    frontend::LoopRule rule(15, 0.0);
+    for (graph::KeyframeId k = 0; k <= id; ++k) rule.add_keyframe(static_cast<double>(k));
     query.loop_rule = &rule;
     front_end.candidates_for(query);
     front_end.on_verified(step.report);
@@ -86,10 +88,10 @@ std::string run_walk(FrontEnd& front_end, const Walk& walk) {
 }
 
 TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
-  Instrumentation inst_a, inst_b;
+  util::Instrumentation inst_a, inst_b;
   wifi::WifiOptions options;
   options.enabled = true;
-  RgbdslamFrontEnd rgbdslam(RgbdslamOptions{}, 3);
+  frontend::RgbdslamFrontEnd rgbdslam(frontend::RgbdslamOptions{}, 3);
   rgbdslam.attach_wifi(std::make_unique<wifi::WifiModule>(options, inst_a));
   BoundedExhaustiveFrontEnd other;
   other.attach_wifi(std::make_unique<wifi::WifiModule>(options, inst_b));
@@ -122,17 +124,19 @@ TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
 }
 
 TEST(WifiModule, BoundingImmunisationAndRetrievalAnswerFromTheSimilarClusters) {
-  Instrumentation inst;
+  util::Instrumentation inst;
   wifi::WifiModule wifi(wifi::WifiOptions{}, inst);
   wifi.observe_scan(scan_of(0, kPlaceA));
-  for (KeyframeId k = 0; k < 10; ++k) {
+  for (graph::KeyframeId k = 0; k < 10; ++k) {
     wifi.sign(k);
-    wifi.assign(k, k > 0 ? std::vector<KeyframeId>{k - 1} : std::vector<KeyframeId>{});
+    wifi.assign(k,
+                k > 0 ? std::vector<graph::KeyframeId>{k - 1} : std::vector<graph::KeyframeId>{});
   }
   wifi.observe_scan(scan_of(100, kPlaceB));
-  for (KeyframeId k = 10; k < 20; ++k) {
+  for (graph::KeyframeId k = 10; k < 20; ++k) {
     wifi.sign(k);
-    wifi.assign(k, k > 10 ? std::vector<KeyframeId>{k - 1} : std::vector<KeyframeId>{});
+    wifi.assign(k,
+                k > 10 ? std::vector<graph::KeyframeId>{k - 1} : std::vector<graph::KeyframeId>{});
   }
   ASSERT_EQ(wifi.clusters().clusters().size(), 2u);
 
@@ -141,31 +145,31 @@ TEST(WifiModule, BoundingImmunisationAndRetrievalAnswerFromTheSimilarClusters) {
   ASSERT_TRUE(wifi.has_signature());
   ASSERT_EQ(wifi.similar_clusters().size(), 1u);
   EXPECT_EQ(wifi.similar_clusters()[0].cluster, 0);
-  EXPECT_EQ(wifi.bound({19, 3, 12, 7}), (std::vector<KeyframeId>{3, 7}));
+  EXPECT_EQ(wifi.bound({19, 3, 12, 7}), (std::vector<graph::KeyframeId>{3, 7}));
   EXPECT_TRUE(wifi.in_similar_cluster(9));
   EXPECT_FALSE(wifi.in_similar_cluster(10));
   EXPECT_FALSE(wifi.in_similar_cluster(20));  // not yet assigned
-  std::vector<KeyframeId> expected;
-  for (KeyframeId k = 0; k < 10; ++k) expected.push_back(k);
+  std::vector<graph::KeyframeId> expected;
+  for (graph::KeyframeId k = 0; k < 10; ++k) expected.push_back(k);
   EXPECT_EQ(wifi.similar_cluster_keyframes(), expected);
   EXPECT_EQ(wifi.assign(20, {9}), 0);
 }
 
 TEST(WifiModule, AKeyframeBeforeTheFirstScanIsUnboundedAndJoinsNoCluster) {
-  Instrumentation inst;
+  util::Instrumentation inst;
   wifi::WifiModule wifi(wifi::WifiOptions{}, inst);
   wifi.sign(0);
   EXPECT_FALSE(wifi.has_signature());
-  EXPECT_EQ(wifi.bound({}), std::vector<KeyframeId>{});
+  EXPECT_EQ(wifi.bound({}), std::vector<graph::KeyframeId>{});
   wifi.sign(1);
-  EXPECT_EQ(wifi.bound({0}), std::vector<KeyframeId>{0});
+  EXPECT_EQ(wifi.bound({0}), std::vector<graph::KeyframeId>{0});
   EXPECT_EQ(wifi.assign(1, {0}), -1);
   EXPECT_EQ(inst.counter(counter::kWifiUnsignedKeyframes), 2);
   EXPECT_TRUE(wifi.clusters().clusters().empty());
 }
 
 TEST(WifiModule, KeyframesAreSignedInOrderAndAssignedOnce) {
-  Instrumentation inst;
+  util::Instrumentation inst;
   wifi::WifiModule wifi(wifi::WifiOptions{}, inst);
   wifi.observe_scan(scan_of(0, kPlaceA));
   wifi.sign(3);
@@ -176,22 +180,22 @@ TEST(WifiModule, KeyframesAreSignedInOrderAndAssignedOnce) {
 }
 
 TEST(WifiModule, EveryRegisteredFrontEndGetsTheModuleWhenWifiIsOn) {
-  register_front_end("bounded_exhaustive_test", [](const FrontEndContext&) {
+  frontend::register_front_end("bounded_exhaustive_test", [](const frontend::FrontEndContext&) {
     return std::make_unique<BoundedExhaustiveFrontEnd>();
   });
-  Instrumentation inst;
+  util::Instrumentation inst;
   SlamOptions options;
   options.wifi.enabled = true;
-  for (const std::string& name : front_end_names()) {
+  for (const std::string& name : frontend::front_end_names()) {
     options.frontend = name;
-    const std::unique_ptr<FrontEnd> front_end =
-        make_front_end({&options, &inst, /*stream_has_wifi=*/true, false});
+    const std::unique_ptr<frontend::FrontEnd> front_end =
+        frontend::make_front_end({&options, &inst, /*stream_has_wifi=*/true, false});
     EXPECT_EQ(front_end->name(), name);
     ASSERT_NE(front_end->wifi(), nullptr) << name;
     EXPECT_EQ(front_end->label(), name + "+wifi");
     // Without scans in the stream, Wi-Fi is refused with a message that says why.
     try {
-      make_front_end({&options, &inst, /*stream_has_wifi=*/false, false});
+      frontend::make_front_end({&options, &inst, /*stream_has_wifi=*/false, false});
       ADD_FAILURE() << name << ": Wi-Fi accepted without scans";
     } catch (const InvalidInputError& e) {
       EXPECT_NE(std::string(e.what()).find("wifi.csv"), std::string::npos) << e.what();
@@ -199,7 +203,7 @@ TEST(WifiModule, EveryRegisteredFrontEndGetsTheModuleWhenWifiIsOn) {
   }
   options.wifi.enabled = false;
   options.frontend = "rgbdslam";
-  EXPECT_EQ(make_front_end({&options, &inst, true, false})->wifi(), nullptr);
+  EXPECT_EQ(frontend::make_front_end({&options, &inst, true, false})->wifi(), nullptr);
 }
 
 }  // namespace
