@@ -59,9 +59,9 @@ struct SlamOptions {
   feature::FeatureOptions features;
   solve::VisualTransformOptions transform;
   TrackingOptions tracking;
-  frontend::RgbdslamOptions rgbdslam;
-  frontend::RtabmapOptions rtabmap;
-  frontend::OrbslamOptions orbslam;
+  frontend::rgbdslam::RgbdslamOptions rgbdslam;
+  frontend::rtabmap::RtabmapOptions rtabmap;
+  frontend::orbslam::OrbslamOptions orbslam;
   optimize::PoseGraphOptions graph;
 };
 
@@ -192,7 +192,7 @@ void visit_options(V& v, SlamOptions& o) {
   v.number("time_threshold_ms", o.rtabmap.time_threshold_ms,
            "rtabmap: Rtabmap/TimeThr (ms), over it WM nodes move to LTM; inf = off (RTAB-Map: 0)",
            options::Infinity::kAllowed);
-  v.choice("time_source", o.rtabmap.time_source, frontend::rtabmap_time_sources(),
+  v.choice("time_source", o.rtabmap.time_source, frontend::rtabmap::rtabmap_time_sources(),
            "rtabmap: what TimeThr is compared with: cost (deterministic cost model) or wall");
   v.number("cost_ms_per_node", o.rtabmap.cost.ms_per_node, "rtabmap cost model: fixed ms per node");
   v.number("cost_ms_per_word_comparison", o.rtabmap.cost.ms_per_word_comparison,

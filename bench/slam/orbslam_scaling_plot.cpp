@@ -97,7 +97,7 @@ RunSummary read_run(int wings, const fs::path& folder) {
   run.map_keyframes = meta.at("keyframes").get<long long>();
   run.keyframes_after_tracking_loss = meta.value("keyframes_after_tracking_loss", 0LL);
 
-  namespace col = slam::frontend::orbslam_queries_csv::column;
+  namespace col = slam::frontend::orbslam::orbslam_queries_csv::column;
   const auto index_of = [](const char* name) {
     return static_cast<std::size_t>(
         std::find_if(col::kAll.begin(), col::kAll.end(),
@@ -111,8 +111,8 @@ RunSummary read_run(int wings, const fs::path& folder) {
       {index_of("postings_read"), &run.postings_read},
       {index_of("query_ms"), &run.query_ms}};
   long long rows = 0;
-  for_each_csv_row((folder / slam::frontend::orbslam_queries_csv::kFileName).string(), col::kAll,
-                   [&](const CsvRow& row) {
+  for_each_csv_row((folder / slam::frontend::orbslam::orbslam_queries_csv::kFileName).string(),
+                   col::kAll, [&](const CsvRow& row) {
                      ++rows;
                      if (row.fields[ran] != "1") return;
                      for (const auto& [column, values] : wanted) {
@@ -128,7 +128,7 @@ RunSummary read_run(int wings, const fs::path& folder) {
   if (rows != run.map_keyframes) {
     throw InvalidInputError(
         fmt::format("{}: {} rows in {} but {} keyframes in run.json", folder.string(), rows,
-                    slam::frontend::orbslam_queries_csv::kFileName, run.map_keyframes));
+                    slam::frontend::orbslam::orbslam_queries_csv::kFileName, run.map_keyframes));
   }
   if (run.wifi) {
     const std::vector<eval::WifiCluster> clusters =

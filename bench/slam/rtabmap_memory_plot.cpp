@@ -54,7 +54,7 @@ MemoryRun read_run(const std::string& label, const fs::path& folder) {
   }
   run.wifi = meta.value(run_folder::run_key::kWifi, false);
 
-  namespace col = slam::frontend::rtabmap_memory_csv::column;
+  namespace col = slam::frontend::rtabmap::rtabmap_memory_csv::column;
   const auto index_of = [](const char* name) {
     return static_cast<std::size_t>(
         std::find_if(col::kAll.begin(), col::kAll.end(),
@@ -64,8 +64,8 @@ MemoryRun read_run(const std::string& label, const fs::path& folder) {
   const std::size_t wm = index_of("wm"), ltm = index_of("ltm"), immune = index_of("immune"),
                     transferred = index_of("transferred"), retrieved = index_of("retrieved"),
                     wifi_retrieved = index_of("wifi_retrieved");
-  for_each_csv_row((folder / slam::frontend::rtabmap_memory_csv::kFileName).string(), col::kAll,
-                   [&](const CsvRow& row) {
+  for_each_csv_row((folder / slam::frontend::rtabmap::rtabmap_memory_csv::kFileName).string(),
+                   col::kAll, [&](const CsvRow& row) {
                      const auto number = [&](std::size_t column) {
                        long long v = 0;
                        if (!parse_int64(row.fields[column], v)) {

@@ -24,14 +24,14 @@ Registry& registry() {
     auto* reg = new Registry;
     reg->factories["rgbdslam"] = [](const FrontEndContext& context) {
       const SlamOptions& o = *context.options;
-      return std::make_unique<RgbdslamFrontEnd>(o.rgbdslam, o.seed);
+      return std::make_unique<rgbdslam::RgbdslamFrontEnd>(o.rgbdslam, o.seed);
     };
     reg->factories["orbslam"] = [](const FrontEndContext& context) {
-      return std::make_unique<OrbslamFrontEnd>(context.options->orbslam);
+      return std::make_unique<orbslam::OrbslamFrontEnd>(context.options->orbslam);
     };
     reg->factories["rtabmap"] = [](const FrontEndContext& context) {
       const SlamOptions& o = *context.options;
-      return std::make_unique<RtabmapFrontEnd>(o.rtabmap, o.graph);
+      return std::make_unique<rtabmap::RtabmapFrontEnd>(o.rtabmap, o.graph);
     };
     return reg;
   }();

@@ -62,8 +62,9 @@ class RtabmapEndToEnd : public ::testing::Test {
         0)
         << log_of(dir_);
     namespace rf = run_folder;
-    for (const char* f : {rf::kTrajectory, rf::kKeyframes, rf::kGraph, rf::kLoopClosures,
-                          rf::kTiming, rf::kRun, slam::frontend::rtabmap_memory_csv::kFileName}) {
+    for (const char* f :
+         {rf::kTrajectory, rf::kKeyframes, rf::kGraph, rf::kLoopClosures, rf::kTiming, rf::kRun,
+          slam::frontend::rtabmap::rtabmap_memory_csv::kFileName}) {
       EXPECT_TRUE(fs::is_regular_file(run / f)) << f;
     }
     EXPECT_EQ(fs::exists(run / rf::kWifiClusters), wifi);
@@ -119,12 +120,13 @@ class RtabmapEndToEnd : public ::testing::Test {
     // One CSV row per node, with the header of core/run_format.hpp.
     // The loop-closure share of the cost model (likelihood, posterior, loop hypothesis
     // verification) sums over the rows to run.json's figure, and is part of each node's cost.
-    std::ifstream csv(run / slam::frontend::rtabmap_memory_csv::kFileName);
+    std::ifstream csv(run / slam::frontend::rtabmap::rtabmap_memory_csv::kFileName);
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_EQ(header + "\n", rf::csv_header(slam::frontend::rtabmap_memory_csv::column::kAll));
+    EXPECT_EQ(header + "\n",
+              rf::csv_header(slam::frontend::rtabmap::rtabmap_memory_csv::column::kAll));
     const auto column = [](const char* name) {
-      const auto& all = slam::frontend::rtabmap_memory_csv::column::kAll;
+      const auto& all = slam::frontend::rtabmap::rtabmap_memory_csv::column::kAll;
       return static_cast<std::size_t>(
           std::find_if(all.begin(), all.end(),
                        [&](const char* c) { return std::string(c) == name; }) -
@@ -136,7 +138,8 @@ class RtabmapEndToEnd : public ::testing::Test {
       std::vector<std::string> cells;
       std::stringstream row(line);
       for (std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
-      ASSERT_EQ(cells.size(), slam::frontend::rtabmap_memory_csv::column::kAll.size()) << line;
+      ASSERT_EQ(cells.size(), slam::frontend::rtabmap::rtabmap_memory_csv::column::kAll.size())
+          << line;
       const double lc_ms = std::stod(cells[column("loop_closure_cost_ms")]);
       EXPECT_LE(lc_ms, std::stod(cells[column("cost_ms")]) + 1e-4) << line;
       EXPECT_LE(std::stoi(cells[column("loop_verifications")]),

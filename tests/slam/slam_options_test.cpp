@@ -124,7 +124,7 @@ TEST(SlamOptions, RtabmapParametersHaveRtabmapDefaultsAndTimeThresholdTakesInf) 
   // A time source is one of its names, refused where it is set.
   EXPECT_THROW(set_option_assignment(o, "time_source=sundial"), Error);
   set_option_assignment(o, "time_source=wall");
-  EXPECT_EQ(o.rtabmap.time_source, frontend::RtabmapTimeSource::kWall);
+  EXPECT_EQ(o.rtabmap.time_source, frontend::rtabmap::RtabmapTimeSource::kWall);
   EXPECT_NO_THROW(validate(o));
   for (const char* bad :
        {"cost_ms_per_scored_node=-1", "cost_ms_per_hypothesis=-1", "wifi_max_immune=-1"}) {

@@ -11,7 +11,7 @@
 #include "slam/bow/shipped_vocabulary.hpp"
 #include "slam/frontend/orbslam/orbslam_queries_csv.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::orbslam {
 
 namespace {
 
@@ -236,4 +236,4 @@ nlohmann::json OrbslamFrontEnd::own_summary() const {
   return out;
 }
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::orbslam

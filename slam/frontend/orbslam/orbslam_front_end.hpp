@@ -53,7 +53,7 @@
 #include "slam/frontend/orbslam/covisibility_graph.hpp"
 #include "slam/frontend/orbslam/orbslam_options.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::orbslam {
 
 /// What loop detection did for one keyframe (a row of orbslam_queries.csv).
 struct OrbslamQueryRecord {
@@ -115,4 +115,4 @@ class OrbslamFrontEnd final : public FrontEnd {
   std::vector<OrbslamQueryRecord> records_;
 };
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::orbslam

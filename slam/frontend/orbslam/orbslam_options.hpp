@@ -15,7 +15,7 @@
 
 #include <string>
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::orbslam {
 
 struct OrbslamOptions {
   /// Vocabulary file (`wifislam vocab train`); empty: the shipped one
@@ -37,4 +37,4 @@ struct OrbslamOptions {
   int bow_min_matches = 20;
 };
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::orbslam

@@ -5,7 +5,7 @@
 
 #include <array>
 
-namespace wifislam::slam::frontend::orbslam_queries_csv {
+namespace wifislam::slam::frontend::orbslam::orbslam_queries_csv {
 
 inline constexpr const char* kFileName = "orbslam_queries.csv";
 
@@ -20,4 +20,4 @@ inline constexpr std::array<const char*, 12> kAll = {
 // clang-format on
 }  // namespace column
 
-}  // namespace wifislam::slam::frontend::orbslam_queries_csv
+}  // namespace wifislam::slam::frontend::orbslam::orbslam_queries_csv

@@ -8,7 +8,7 @@
 
 #include "slam/wifi/signature_similarity.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::rgbdslam {
 
 std::vector<graph::KeyframeId> sample_without_replacement(
     const std::vector<graph::KeyframeId>& pool, int count, Rng& rng) {
@@ -195,4 +195,4 @@ nlohmann::json RgbdslamFrontEnd::own_summary() const {
   return out;
 }
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::rgbdslam

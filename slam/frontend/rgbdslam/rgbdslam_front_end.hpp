@@ -33,7 +33,7 @@
 #include "slam/frontend/front_end.hpp"
 #include "slam/frontend/rgbdslam/rgbdslam_options.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::rgbdslam {
 
 class RgbdslamFrontEnd final : public FrontEnd {
  public:
@@ -72,4 +72,4 @@ std::vector<graph::KeyframeId> sample_weighted_without_replacement(
     const std::vector<graph::KeyframeId>& pool, const std::vector<double>& weights, int count,
     Rng& rng);
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::rgbdslam

@@ -8,7 +8,7 @@
 
 #include "slam/optimize/robust_kernel.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::rgbdslam {
 
 /// Defaults are RGBDSLAMv2's current ones (parameter_server.cpp, since 2015): 4 / 4 / 4. Its
 /// defaults before 2015 were 2 / 2 / 2 (`--set predecessor_candidates=2 --set
@@ -56,4 +56,4 @@ struct RgbdslamOptions {
   double optimizer_convergence = 0.01;
 };
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::rgbdslam

@@ -15,7 +15,7 @@
 #include "slam/frontend/rtabmap/likelihood.hpp"
 #include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::rtabmap {
 
 namespace {
 
@@ -481,4 +481,4 @@ nlohmann::json RtabmapFrontEnd::own_summary() const {
       {"loop_closures_accepted", accepted}};
 }
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::rtabmap

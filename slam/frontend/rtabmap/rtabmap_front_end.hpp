@@ -75,7 +75,7 @@
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
 #include "slam/optimize/pose_graph_optimizer.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::rtabmap {
 
 /// What happened to one node (a row of rtabmap_memory.csv).
 struct RtabmapNodeRecord {
@@ -196,4 +196,4 @@ class RtabmapFrontEnd final : public FrontEnd {
   std::vector<graph::KeyframeId> last_transferred_;
 };
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::rtabmap

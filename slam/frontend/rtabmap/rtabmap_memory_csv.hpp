@@ -5,7 +5,7 @@
 
 #include <array>
 
-namespace wifislam::slam::frontend::rtabmap_memory_csv {
+namespace wifislam::slam::frontend::rtabmap::rtabmap_memory_csv {
 
 inline constexpr const char* kFileName = "rtabmap_memory.csv";
 
@@ -25,4 +25,4 @@ inline constexpr std::array<const char*, 32> kAll = {
 // clang-format on
 }  // namespace column
 
-}  // namespace wifislam::slam::frontend::rtabmap_memory_csv
+}  // namespace wifislam::slam::frontend::rtabmap::rtabmap_memory_csv

@@ -12,7 +12,7 @@
 #include "core/option_table.hpp"
 #include "slam/frontend/rtabmap/bayes_filter.hpp"
 
-namespace wifislam::slam::frontend {
+namespace wifislam::slam::frontend::rtabmap {
 
 /// What Rtabmap/TimeThr is compared with: the deterministic cost model, or measured wall-clock.
 enum class RtabmapTimeSource { kCost, kWall };
@@ -127,4 +127,4 @@ struct RtabmapOptions {
   int wifi_max_immune = 0;
 };
 
-}  // namespace wifislam::slam::frontend
+}  // namespace wifislam::slam::frontend::rtabmap

@@ -33,7 +33,7 @@ frontend::SelectionQuery query_for(const graph::PoseGraph& graph, graph::Keyfram
 
 TEST(RgbdslamSelection, PredecessorsNeighboursAndRandomEarlierKeyframes) {
   const graph::PoseGraph graph = chain_with_loop(41);
-  frontend::RgbdslamFrontEnd selector(frontend::RgbdslamOptions{}, 7);
+  frontend::rgbdslam::RgbdslamFrontEnd selector(frontend::rgbdslam::RgbdslamOptions{}, 7);
   const std::vector<frontend::Candidate> c = selector.select(query_for(graph, 40));
   std::map<frontend::CandidateRole, std::vector<graph::KeyframeId>> by_role;
   for (const frontend::Candidate& x : c) by_role[x.role].push_back(x.keyframe);
@@ -61,7 +61,7 @@ TEST(RgbdslamSelection, PredecessorsNeighboursAndRandomEarlierKeyframes) {
 TEST(RgbdslamSelection, SameSeedSameCandidatesOtherSeedOtherCandidates) {
   const graph::PoseGraph graph = chain_with_loop(200);
   auto run = [&](std::uint64_t seed) {
-    frontend::RgbdslamFrontEnd selector(frontend::RgbdslamOptions{}, seed);
+    frontend::rgbdslam::RgbdslamFrontEnd selector(frontend::rgbdslam::RgbdslamOptions{}, seed);
     std::vector<graph::KeyframeId> out;
     for (graph::KeyframeId id = 100; id < 199; ++id) {
       for (const frontend::Candidate& c : selector.select(query_for(graph, id)))
@@ -76,12 +76,12 @@ TEST(RgbdslamSelection, SameSeedSameCandidatesOtherSeedOtherCandidates) {
 TEST(RgbdslamSelection, RandomKeyframesCoverTheWholeMap) {
   // Uniform sampling: over many seeds every earlier keyframe gets picked.
   const graph::PoseGraph graph = chain_with_loop(60);
-  frontend::RgbdslamOptions options;
+  frontend::rgbdslam::RgbdslamOptions options;
   options.neighbor_candidates = 0;
   options.predecessor_candidates = 2;
   std::set<graph::KeyframeId> seen;
   for (std::uint64_t seed = 0; seed < 200; ++seed) {
-    frontend::RgbdslamFrontEnd selector(options, seed);
+    frontend::rgbdslam::RgbdslamFrontEnd selector(options, seed);
     for (const frontend::Candidate& c : selector.select(query_for(graph, 50))) {
       if (c.role == frontend::CandidateRole::kLongTerm) seen.insert(c.keyframe);
     }
@@ -98,14 +98,14 @@ TEST(RgbdslamSelection, NeighboursAreDrawnInProportionToTheirIdDistance) {
   for (int i = 0; i < 51; ++i) graph.add_node(Timestamp::from_ns(i), i, Pose::Identity());
   for (int i = 1; i < 51; ++i) graph.add_edge({i - 1, i, graph::EdgeType::kVisual});
   graph.add_edge({0, 49, graph::EdgeType::kLoop});
-  frontend::RgbdslamOptions options;
+  frontend::rgbdslam::RgbdslamOptions options;
   options.predecessor_candidates = 1;
   options.neighbor_candidates = 1;
   options.geodesic_depth = 9;
   options.min_sampled_candidates = 0;
   int far = 0, near = 0;
   for (std::uint64_t seed = 0; seed < 2000; ++seed) {
-    frontend::RgbdslamFrontEnd selector(options, seed);
+    frontend::rgbdslam::RgbdslamFrontEnd selector(options, seed);
     for (const frontend::Candidate& c : selector.select(query_for(graph, 50))) {
       if (c.role != frontend::CandidateRole::kNeighbour) continue;
       (c.keyframe <= 8 ? far : near) += 1;
@@ -120,15 +120,15 @@ TEST(RgbdslamSelection, EachKeyframeDrawsFromItsOwnSubStream) {
   // The draws for keyframe k do not depend on what was drawn for earlier keyframes: selecting
   // keyframe 150 alone gives what it gives after 100..149 were selected.
   const graph::PoseGraph graph = chain_with_loop(200);
-  frontend::RgbdslamFrontEnd alone(frontend::RgbdslamOptions{}, 9);
-  frontend::RgbdslamFrontEnd after(frontend::RgbdslamOptions{}, 9);
+  frontend::rgbdslam::RgbdslamFrontEnd alone(frontend::rgbdslam::RgbdslamOptions{}, 9);
+  frontend::rgbdslam::RgbdslamFrontEnd after(frontend::rgbdslam::RgbdslamOptions{}, 9);
   for (graph::KeyframeId id = 100; id < 150; ++id) after.select(query_for(graph, id));
   EXPECT_EQ(alone.select(query_for(graph, 150)), after.select(query_for(graph, 150)));
 }
 
 TEST(RgbdslamSelection, FirstKeyframesGetWhatExists) {
   const graph::PoseGraph graph = chain_with_loop(3);
-  frontend::RgbdslamFrontEnd selector(frontend::RgbdslamOptions{}, 1);
+  frontend::rgbdslam::RgbdslamFrontEnd selector(frontend::rgbdslam::RgbdslamOptions{}, 1);
   frontend::SelectionQuery q;
   q.keyframe = 0;
   q.graph = &graph;

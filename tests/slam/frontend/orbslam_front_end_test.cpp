@@ -44,20 +44,22 @@ std::unique_ptr<slam::system::SlamSystem> run_orbslam(const sim::scene::Scene& s
   return system;
 }
 
-const slam::frontend::OrbslamFrontEnd& front_end_of(const slam::system::SlamSystem& system) {
-  return dynamic_cast<const slam::frontend::OrbslamFrontEnd&>(system.front_end());
+const slam::frontend::orbslam::OrbslamFrontEnd& front_end_of(
+    const slam::system::SlamSystem& system) {
+  return dynamic_cast<const slam::frontend::orbslam::OrbslamFrontEnd&>(system.front_end());
 }
 
 TEST(OrbslamFrontEnd, VanillaKeepsOneIndexAndClosesTheLoopByOrbSlamRules) {
   const auto system = run_orbslam(test::small_loop_scene(), false);
-  const slam::frontend::OrbslamFrontEnd& orb = front_end_of(*system);
+  const slam::frontend::orbslam::OrbslamFrontEnd& orb = front_end_of(*system);
   const auto keyframes = static_cast<slam::graph::KeyframeId>(system->graph().node_count());
   ASSERT_GT(keyframes, 30);
   EXPECT_EQ(orb.database().size(), static_cast<std::size_t>(keyframes));
   EXPECT_TRUE(orb.cluster_databases().empty());
   ASSERT_EQ(orb.records().size(), static_cast<std::size_t>(keyframes));
   for (slam::graph::KeyframeId k = 0; k < keyframes; ++k) {
-    const slam::frontend::OrbslamQueryRecord& r = orb.records()[static_cast<std::size_t>(k)];
+    const slam::frontend::orbslam::OrbslamQueryRecord& r =
+        orb.records()[static_cast<std::size_t>(k)];
     EXPECT_EQ(r.keyframe, k);
     // No detection in the first keyframes_between_loops keyframes (ORB-SLAM2's DetectLoop).
     if (k < orb.options().keyframes_between_loops) {
@@ -80,7 +82,7 @@ TEST(OrbslamFrontEnd, VanillaKeepsOneIndexAndClosesTheLoopByOrbSlamRules) {
   EXPECT_GE(long_term_closures, 1);
   // One loop per ORB-SLAM2 rules: at least keyframes_between_loops keyframes apart.
   slam::graph::KeyframeId last = -1000;
-  for (const slam::frontend::OrbslamQueryRecord& r : orb.records()) {
+  for (const slam::frontend::orbslam::OrbslamQueryRecord& r : orb.records()) {
     if (r.accepted_loop < 0) continue;
     EXPECT_GE(r.keyframe - last, orb.options().keyframes_between_loops);
     last = r.keyframe;
@@ -102,7 +104,7 @@ TEST(OrbslamFrontEnd, WithWifiEachKeyframeIsInItsOwnClustersIndexOnly) {
   // The loop is small: at the default threshold every pause sounds like every other. A strict
   // one splits it into clusters that are not all similar, so bounding shows.
   const auto system = run_orbslam(test::small_loop_with_wifi_scene(), true, 0.995);
-  const slam::frontend::OrbslamFrontEnd& orb = front_end_of(*system);
+  const slam::frontend::orbslam::OrbslamFrontEnd& orb = front_end_of(*system);
   const slam::wifi::WifiModule& wifi = *orb.wifi();
   const auto keyframes = static_cast<slam::graph::KeyframeId>(system->graph().node_count());
   EXPECT_EQ(orb.database().size(), 0u);  // no shared index
@@ -125,7 +127,7 @@ TEST(OrbslamFrontEnd, WithWifiEachKeyframeIsInItsOwnClustersIndexOnly) {
   // A query with a signature reads only its similar clusters' indexes (and the unclustered
   // one): fewer keyframes than the map holds, for some queries.
   bool bounded = false;
-  for (const slam::frontend::OrbslamQueryRecord& r : orb.records()) {
+  for (const slam::frontend::orbslam::OrbslamQueryRecord& r : orb.records()) {
     if (r.detection_ran && r.keyframes_searched < static_cast<std::size_t>(r.keyframe)) {
       bounded = true;
     }

@@ -17,7 +17,7 @@ namespace {
 
 using frontend::rtabmap::MemoryPlace;
 
-void expect_partition(const frontend::RtabmapFrontEnd& fe, std::size_t nodes) {
+void expect_partition(const frontend::rtabmap::RtabmapFrontEnd& fe, std::size_t nodes) {
   std::set<graph::KeyframeId> seen;
   const frontend::rtabmap::NodeMemory& m = fe.memory();
   for (graph::KeyframeId k : m.stm()) EXPECT_TRUE(seen.insert(k).second) << k;
@@ -28,7 +28,7 @@ void expect_partition(const frontend::RtabmapFrontEnd& fe, std::size_t nodes) {
 
 TEST(RtabmapMemory, StmNodesAreNeverLoopCandidatesAndEveryNodeIsInOneMemory) {
   // Only nodes that verify a loop closure go over budget: transfers start on the second lap.
-  frontend::RtabmapOptions options;
+  frontend::rtabmap::RtabmapOptions options;
   options.cost.ms_per_node = 0.0;
   options.cost.ms_per_word_comparison = 0.0;
   options.cost.ms_per_verification = 10.0;
@@ -54,7 +54,7 @@ TEST(RtabmapMemory, StmNodesAreNeverLoopCandidatesAndEveryNodeIsInOneMemory) {
 }
 
 TEST(RtabmapMemory, WorkingMemoryStaysBoundedUnderATightThreshold) {
-  frontend::RtabmapOptions tight;
+  frontend::rtabmap::RtabmapOptions tight;
   tight.time_threshold_ms = 1.0;  // every node is over budget (the fixed cost alone is 3.6 ms)
   test::RtabmapDriver bounded(tight);
   test::RtabmapDriver unbounded;
@@ -71,21 +71,21 @@ TEST(RtabmapMemory, WorkingMemoryStaysBoundedUnderATightThreshold) {
   // What stays: the node linked to STM, the best hypothesis and its retrieval neighbourhood.
   EXPECT_LE(max_wm, 30u);
   EXPECT_GT(bounded.front_end().memory().ltm().size(), 40u);
-  for (const frontend::RtabmapNodeRecord& r : bounded.front_end().records()) {
+  for (const frontend::rtabmap::RtabmapNodeRecord& r : bounded.front_end().records()) {
     EXPECT_GT(r.over_budget_ms, 0.0);
     EXPECT_EQ(r.stm + r.wm + r.ltm, static_cast<std::size_t>(r.node + 1));
   }
 }
 
 TEST(RtabmapMemory, RetrievalBringsBackAtMostMaxRetrievedNeighboursOfTheBestHypothesis) {
-  frontend::RtabmapOptions tight;
+  frontend::rtabmap::RtabmapOptions tight;
   tight.time_threshold_ms = 1.0;
   test::RtabmapDriver d(tight);
   for (int p = 0; p < 60; ++p) d.add_node(p);
   int retrieved = 0;
   for (int p = 0; p < 20; ++p) {
     d.add_node(p);
-    const frontend::RtabmapNodeRecord& r = d.front_end().records().back();
+    const frontend::rtabmap::RtabmapNodeRecord& r = d.front_end().records().back();
     EXPECT_LE(r.retrieved, tight.max_retrieved);
     retrieved += r.retrieved;
   }
@@ -96,10 +96,10 @@ const std::vector<std::pair<std::uint64_t, int>> kPlaceA = {{0x10, -40}, {0x20, 
 const std::vector<std::pair<std::uint64_t, int>> kPlaceB = {{0x10, -90}, {0x20, -60}, {0x30, -40}};
 
 TEST(RtabmapWifi, ImmuneNodesAreNeverTransferredAndRetrievedNodesAreSearchedInTheSameStep) {
-  frontend::RtabmapOptions tight;
+  frontend::rtabmap::RtabmapOptions tight;
   tight.time_threshold_ms = 1.0;
   test::RtabmapDriver d(tight, /*wifi=*/true);
-  frontend::RtabmapFrontEnd& fe = d.front_end();
+  frontend::rtabmap::RtabmapFrontEnd& fe = d.front_end();
   const auto add_checked = [&](int place) {
     d.add_node(place);
     for (graph::KeyframeId k : fe.last_transferred()) {
@@ -125,7 +125,7 @@ TEST(RtabmapWifi, ImmuneNodesAreNeverTransferredAndRetrievedNodesAreSearchedInTh
     EXPECT_TRUE(fe.searchable(k)) << k;
   }
   d.finish_node();
-  const frontend::RtabmapNodeRecord& r = fe.records().back();
+  const frontend::rtabmap::RtabmapNodeRecord& r = fe.records().back();
   // Wi-Fi retrieval brings back what the best hypothesis' neighbourhood did not already.
   EXPECT_GT(r.wifi_retrieved, 0);
   EXPECT_EQ(static_cast<std::size_t>(r.wifi_retrieved + r.retrieved), a_in_ltm.size());
@@ -137,9 +137,9 @@ TEST(RtabmapWifi, ImmuneNodesAreNeverTransferredAndRetrievedNodesAreSearchedInTh
 // every WM node is immune and WM grows past any threshold; wifi_max_immune caps immunity, and WM
 // with it, at the nodes of the most similar clusters.
 TEST(RtabmapWifi, ImmunityCapBoundsWorkingMemoryWhereEveryPlaceLooksAlikeOnWifi) {
-  frontend::RtabmapOptions uncapped;
+  frontend::rtabmap::RtabmapOptions uncapped;
   uncapped.time_threshold_ms = 1.0;
-  frontend::RtabmapOptions capped = uncapped;
+  frontend::rtabmap::RtabmapOptions capped = uncapped;
   capped.wifi_max_immune = 15;
   test::RtabmapDriver all_immune(uncapped, /*wifi=*/true), bounded(capped, /*wifi=*/true);
   for (test::RtabmapDriver* d : {&all_immune, &bounded}) {
@@ -149,7 +149,7 @@ TEST(RtabmapWifi, ImmunityCapBoundsWorkingMemoryWhereEveryPlaceLooksAlikeOnWifi)
   for (int p = 0; p < 80; ++p) {
     all_immune.add_node(p);
     bounded.add_node(p);
-    const frontend::RtabmapNodeRecord& r = bounded.front_end().records().back();
+    const frontend::rtabmap::RtabmapNodeRecord& r = bounded.front_end().records().back();
     EXPECT_LE(r.immune, capped.wifi_max_immune);
     max_wm = std::max(max_wm, r.wm);
   }
@@ -172,7 +172,7 @@ TEST(RtabmapProximity, ANodeBackNearAWorkingMemoryNodeVerifiesItAsAProximityCand
     }
     return out;
   };
-  frontend::RtabmapOptions options;
+  frontend::rtabmap::RtabmapOptions options;
   options.loop_threshold = 1.0;  // no global loop candidate: proximity alone
   for (const bool on : {true, false}) {
     SCOPED_TRACE(on ? "proximity on" : "proximity off");
@@ -215,7 +215,7 @@ TEST(RtabmapBayes, RevisitedPlaceRisesAboveTheLoopThresholdWithinAFewNodes) {
   // Before the revisit no hypothesis reaches the threshold once WM has a few nodes: every place
   // is new. (With one or two WM nodes a node hypothesis holds a third of the posterior whatever
   // the likelihood says; RTAB-Map verifies and rejects such candidates.)
-  for (const frontend::RtabmapNodeRecord& r : d.front_end().records()) {
+  for (const frontend::rtabmap::RtabmapNodeRecord& r : d.front_end().records()) {
     if (r.scored >= 5) {
       EXPECT_EQ(r.loop_candidate, -1) << "node " << r.node;
     }
@@ -223,7 +223,7 @@ TEST(RtabmapBayes, RevisitedPlaceRisesAboveTheLoopThresholdWithinAFewNodes) {
   int first_candidate = -1;
   for (int p = 0; p < 8; ++p) {
     const std::vector<frontend::Candidate> c = d.add_node(p);  // node 40 + p revisits node p
-    const frontend::RtabmapNodeRecord& r = d.front_end().records().back();
+    const frontend::rtabmap::RtabmapNodeRecord& r = d.front_end().records().back();
     if (r.loop_candidate >= 0) {
       EXPECT_EQ(r.loop_candidate, p) << "node " << r.node;
       EXPECT_GE(r.best_probability, 0.11);

@@ -41,9 +41,9 @@ slam::feature::FrameFeatures place_features(int place, std::uint64_t seed, int f
   return f;
 }
 
-RtabmapDriver::RtabmapDriver(slam::frontend::RtabmapOptions options, bool wifi)
+RtabmapDriver::RtabmapDriver(slam::frontend::rtabmap::RtabmapOptions options, bool wifi)
     : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
-  front_end_ = std::make_unique<slam::frontend::RtabmapFrontEnd>(
+  front_end_ = std::make_unique<slam::frontend::rtabmap::RtabmapFrontEnd>(
       options, slam::optimize::PoseGraphOptions{});
   if (wifi) {
     slam::wifi::WifiOptions w;

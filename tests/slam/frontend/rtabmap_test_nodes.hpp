@@ -25,7 +25,7 @@ slam::feature::FrameFeatures place_features(int place, std::uint64_t seed = 3,
 /// passes: these tests are about memory and hypotheses, not geometry), then on_verified.
 class RtabmapDriver {
  public:
-  explicit RtabmapDriver(slam::frontend::RtabmapOptions options = {}, bool wifi = false);
+  explicit RtabmapDriver(slam::frontend::rtabmap::RtabmapOptions options = {}, bool wifi = false);
 
   /// Adds a node seeing `place`; returns its candidates. Node k stands at x = 0.5 k m (a straight
   /// corridor, looking along +x: no node comes back near an earlier one) unless `x_m` says where.
@@ -36,7 +36,7 @@ class RtabmapDriver {
                                                      std::optional<double> x_m = std::nullopt);
   void finish_node();
 
-  slam::frontend::RtabmapFrontEnd& front_end() { return *front_end_; }
+  slam::frontend::rtabmap::RtabmapFrontEnd& front_end() { return *front_end_; }
   slam::graph::KeyframeId last() const {
     return static_cast<slam::graph::KeyframeId>(graph_.node_count()) - 1;
   }
@@ -45,7 +45,7 @@ class RtabmapDriver {
   slam::util::Instrumentation instrumentation_;
   slam::graph::PoseGraph graph_;
   slam::frontend::LoopRule rule_;
-  std::unique_ptr<slam::frontend::RtabmapFrontEnd> front_end_;
+  std::unique_ptr<slam::frontend::rtabmap::RtabmapFrontEnd> front_end_;
   slam::feature::FrameFeatures features_;
   std::vector<slam::frontend::Candidate> pending_;
 };

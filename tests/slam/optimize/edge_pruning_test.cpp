@@ -102,7 +102,7 @@ TEST(EdgePruning, RgbdslamScheduleRemovesAPlantedFalseLoopKeepsTrueEdgesAndTheGr
                   information(kSigmaM, kSigmaRad), 60});
 
   const frontend::GraphRobustness robustness =
-      frontend::RgbdslamFrontEnd({}, 1).schedule().robustness;
+      frontend::rgbdslam::RgbdslamFrontEnd({}, 1).schedule().robustness;
   ASSERT_EQ(robustness.kernel.kind, optimize::RobustKernel::Kind::kHuber);
   ASSERT_TRUE(robustness.kernel.every_edge);
   ASSERT_EQ(robustness.pruning.chi2_thresholds.size(), 3u);

@@ -21,10 +21,10 @@ using test::scan_of;
 /// previous one.
 class Driver {
  public:
-  explicit Driver(frontend::RgbdslamOptions rgbdslam = {}, wifi::WifiOptions wifi = {})
+  explicit Driver(frontend::rgbdslam::RgbdslamOptions rgbdslam = {}, wifi::WifiOptions wifi = {})
       : rule_(/*min_keyframe_gap=*/15, /*min_path_m=*/0.0) {
     wifi.enabled = true;
-    selector_ = std::make_unique<frontend::RgbdslamFrontEnd>(rgbdslam, /*seed=*/5);
+    selector_ = std::make_unique<frontend::rgbdslam::RgbdslamFrontEnd>(rgbdslam, /*seed=*/5);
     selector_->attach_wifi(std::make_unique<wifi::WifiModule>(wifi, instrumentation_));
   }
   std::vector<frontend::Candidate> add_keyframe() {
@@ -44,7 +44,7 @@ class Driver {
     selector_->on_verified(report);
     return c;
   }
-  frontend::RgbdslamFrontEnd& selector() { return *selector_; }
+  frontend::rgbdslam::RgbdslamFrontEnd& selector() { return *selector_; }
   const wifi::WifiClusterMap& clusters() const { return selector_->wifi()->clusters(); }
   util::Instrumentation& instrumentation() { return instrumentation_; }
 
@@ -52,7 +52,7 @@ class Driver {
   util::Instrumentation instrumentation_;
   graph::PoseGraph graph_;
   frontend::LoopRule rule_;
-  std::unique_ptr<frontend::RgbdslamFrontEnd> selector_;
+  std::unique_ptr<frontend::rgbdslam::RgbdslamFrontEnd> selector_;
 };
 
 std::set<graph::KeyframeId> sampled(const std::vector<frontend::Candidate>& candidates) {
@@ -101,7 +101,7 @@ TEST(WifiRgbdslamSelection, PredecessorsStayAndRecentKeyframesAreNotLongTermCand
 }
 
 TEST(WifiRgbdslamSelection, ZeroSampledCandidatesMeansEveryKeyframeOfTheSimilarClusters) {
-  frontend::RgbdslamOptions rgbdslam;
+  frontend::rgbdslam::RgbdslamOptions rgbdslam;
   rgbdslam.wifi_long_term_candidates = 0;
   Driver d(rgbdslam);
   d.selector().observe_wifi_scan(scan_of(0, kPlaceA));
@@ -148,7 +148,7 @@ TEST(WifiRgbdslamSelection, VanillaAndWifiDrawTheSameWhereWifiDoesNotAct) {
   // Same seed, same keyframes: before the first scan the Wi-Fi run samples its long-term
   // candidates exactly as vanilla does, and its neighbours always match vanilla's.
   Driver wifi;
-  frontend::RgbdslamFrontEnd vanilla(frontend::RgbdslamOptions{}, /*seed=*/5);
+  frontend::rgbdslam::RgbdslamFrontEnd vanilla(frontend::rgbdslam::RgbdslamOptions{}, /*seed=*/5);
   graph::PoseGraph graph;
   frontend::LoopRule rule(15, 0.0);
   for (graph::KeyframeId id = 0; id < 60; ++id) {

@@ -91,7 +91,7 @@ TEST(WifiModule, SameInputsGiveTheSameClustersUnderTwoDifferentFrontEnds) {
   util::Instrumentation inst_a, inst_b;
   wifi::WifiOptions options;
   options.enabled = true;
-  frontend::RgbdslamFrontEnd rgbdslam(frontend::RgbdslamOptions{}, 3);
+  frontend::rgbdslam::RgbdslamFrontEnd rgbdslam(frontend::rgbdslam::RgbdslamOptions{}, 3);
   rgbdslam.attach_wifi(std::make_unique<wifi::WifiModule>(options, inst_a));
   BoundedExhaustiveFrontEnd other;
   other.attach_wifi(std::make_unique<wifi::WifiModule>(options, inst_b));
