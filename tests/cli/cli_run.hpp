@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::test {
 
@@ -26,17 +27,6 @@ struct CliResult {
 inline void write_file(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());
   std::ofstream(path, std::ios::binary) << text;
-}
-
-/// A fresh folder under the system's temporary directory, named after the running test.
-inline std::filesystem::path scratch_folder() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() /
-                                    ("wifislam_cli_" + std::string(info->test_suite_name()) + "_" +
-                                     info->name() + "_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
 }
 
 /// Runs `wifislam <args>` through the shell, in `cwd`, after `prefix` (e.g. "ulimit -v 1000000;").

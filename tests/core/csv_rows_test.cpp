@@ -2,7 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <array>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -19,8 +19,7 @@ namespace fs = std::filesystem;
 constexpr std::array<const char*, 2> kColumns = {"a", "b"};
 
 std::string write(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() /
-                     ("wifislam_csv_" + std::to_string(::getpid()) + "_" + name + ".csv");
+  const fs::path p = test::scratch_folder(name) / (name + ".csv");
   std::ofstream(p) << text;
   return p.string();
 }

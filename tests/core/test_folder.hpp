@@ -1,5 +1,5 @@
 #pragma once
-// A fresh temporary folder per test, removed afterwards.
+// A fresh temporary folder per test (tests/support/scratch_folder.hpp), and files written into it.
 
 #include <filesystem>
 #include <fstream>
@@ -8,18 +8,11 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::test {
 
-inline std::filesystem::path fresh_folder(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("wifislam_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+inline std::filesystem::path fresh_folder(const std::string& name) { return scratch_folder(name); }
 
 inline void write_text(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::create_directories(path.parent_path());

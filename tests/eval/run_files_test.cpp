@@ -4,8 +4,6 @@
 #include <fstream>
 #include <sstream>
 
-#include <unistd.h>
-
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -16,6 +14,7 @@
 #include "eval/run_divergence.hpp"
 #include "eval/timing_table.hpp"
 #include "eval/wifi_clusters_csv.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::eval {
 namespace {
@@ -23,9 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("wifislam_eval_files_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder(name);
   std::ofstream(dir / name) << text;
   return dir / name;
 }
