@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -44,6 +45,8 @@ inline std::filesystem::path scratch_folder(const std::string& tag = "") {
                      (info ? info->name() : "setup");
   name += "_" + std::to_string(::getpid());
   if (!tag.empty()) name += "_" + tag;  // last: a test may name the folder's suffix (".partial")
+  // A parameterised test's names hold slashes ("Scenes/Suite", "Test/0"): one folder, not a tree.
+  std::replace(name.begin(), name.end(), '/', '_');
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
