@@ -9,13 +9,13 @@
 #include <fmt/format.h>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/floorplan/shipped_plans.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kPlans = fs::path(WIFISLAM_SCENES_DIR).parent_path() / "assets" / "floorplans";
 
 std::string feature(const std::string& indoor, const std::string& ring) {
   return R"({"type":"Feature","properties":{"@id":"way/7","indoor":")" + indoor +
@@ -53,14 +53,17 @@ TEST_F(ImportCli, SelfIntersectingRingIsRefusedAtItsFeature) {
 }
 
 TEST_F(ImportCli, MissingLevelNamesTheLevelsThereAre) {
-  expect_refused("import " +
-                     (kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
-                     " --level 7",
-                 {"no level '7'", "its levels: 1, 2"});
-  expect_refused("import " +
-                     (kPlans / "westport_house_wrld" / "westport-house-floor-2.geojson").string() +
-                     " --level 9",
-                 {"no level '9'", "G, 1, 2, 3, 4, 5, 6"});
+  expect_refused(
+      "import " +
+          (test::kShippedPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
+          " --level 7",
+      {"no level '7'", "its levels: 1, 2"});
+  expect_refused(
+      "import " +
+          (test::kShippedPlans / "westport_house_wrld" / "westport-house-floor-2.geojson")
+              .string() +
+          " --level 9",
+      {"no level '9'", "G, 1, 2, 3, 4, 5, 6"});
 }
 
 TEST_F(ImportCli, UnreadableFileIsRefusedNamingIt) {
@@ -83,7 +86,7 @@ TEST_F(ImportCli, NoFileTheImportReadsIsWrittenOver) {
   // main.json, the level's paths file and ATTRIBUTION.md are read beside the plan, not named on
   // the command line: the scene must not replace any of them.
   const fs::path plan = scratch_ / "wrld";
-  fs::copy(kPlans / "westport_house_wrld", plan);
+  fs::copy(test::kShippedPlans / "westport_house_wrld", plan);
   for (const char* side_input :
        {"main.json", "westport-house-floor-2-paths.geojson", "ATTRIBUTION.md"}) {
     const std::string before = test::read_file(plan / side_input);
@@ -99,7 +102,7 @@ TEST_F(ImportCli, NoFileTheImportReadsIsWrittenOver) {
 
 TEST_F(ImportCli, BrokenMainJsonIsLocatedNotAnInternalError) {
   const fs::path plan = scratch_ / "wrld";
-  fs::copy(kPlans / "westport_house_wrld", plan);
+  fs::copy(test::kShippedPlans / "westport_house_wrld", plan);
   const std::string level = (plan / "westport-house-floor-2.geojson").string();
   std::string main_json = test::read_file(plan / "main.json");
   const std::size_t name = main_json.find("\"name\": \"G\"");
@@ -156,7 +159,8 @@ TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
 TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
   const fs::path scene = scratch_ / "fei.yaml";
   const test::CliResult imported = test::run_wifislam(
-      "import " + (kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
+      "import " +
+          (test::kShippedPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
           " --level 2 -o " + scene.string(),
       scratch_);
   ASSERT_EQ(imported.exit_code, 0) << imported.err;
@@ -177,7 +181,8 @@ TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
 TEST_F(ImportCli, AllLevelsImportIntoOneBuildingThatGeneratesADataset) {
   const fs::path scene = scratch_ / "fei_building.yaml";
   const test::CliResult imported = test::run_wifislam(
-      "import " + (kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
+      "import " +
+          (test::kShippedPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson").string() +
           " --all-levels --level 2 --access-points 5 -o " + scene.string(),
       scratch_);
   ASSERT_EQ(imported.exit_code, 0) << imported.err;

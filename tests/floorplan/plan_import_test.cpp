@@ -18,12 +18,12 @@
 #include "floorplan/plan_import.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
+#include "tests/floorplan/shipped_plans.hpp"
 
 namespace wifislam {
 namespace {
 
 namespace fs = std::filesystem;
-const fs::path kPlans = fs::path(WIFISLAM_SCENES_DIR).parent_path() / "assets" / "floorplans";
 
 /// The route's waypoints come back to where the loop started, and the robot passes the start
 /// again after the first lap (more than once through the same place).
@@ -42,8 +42,8 @@ void expect_route_revisits(const sim::scene::Scene& scene) {
 TEST(PlanImport, OsmSitLevelOneMatchesTheFilesCounts) {
   floorplan::ImportOptions options;
   options.level = "1";
-  const floorplan::ImportedPlan plan =
-      floorplan::import_plan(kPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson", options);
+  const floorplan::ImportedPlan plan = floorplan::import_plan(
+      test::kShippedPlans / "fei_uv_xalapa_osm_sit" / "fei_levels_1_2.geojson", options);
   // ATTRIBUTION.md: level=1 has 45 rooms, 3 corridors, 6 areas among its 60 ways.
   EXPECT_EQ(plan.counts.rooms, 45);
   EXPECT_EQ(plan.counts.corridors, 3);
@@ -59,8 +59,8 @@ TEST(PlanImport, OsmSitLevelOneMatchesTheFilesCounts) {
 }
 
 TEST(PlanImport, WrldLevelTwoMatchesTheFilesCounts) {
-  const floorplan::ImportedPlan plan =
-      floorplan::import_plan(kPlans / "westport_house_wrld" / "westport-house-floor-2.geojson", {});
+  const floorplan::ImportedPlan plan = floorplan::import_plan(
+      test::kShippedPlans / "westport_house_wrld" / "westport-house-floor-2.geojson", {});
   // ATTRIBUTION.md: level 2 has 43 walls, 25 doors, 31 windows.
   EXPECT_EQ(plan.level, "2");
   EXPECT_EQ(plan.counts.walls, 43);

@@ -15,10 +15,10 @@
 namespace wifislam::study {
 namespace {
 
-const std::string kScene = std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml";
+const std::string kCHallScene = std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml";
 
 std::string study_yaml(const std::string& axes, const std::string& extra = "") {
-  return "version: 1\nname: test\nscene: " + kScene + "\nlevel: radio\naxes:\n" + axes + extra;
+  return "version: 1\nname: test\nscene: " + kCHallScene + "\nlevel: radio\naxes:\n" + axes + extra;
 }
 
 ParseError parse_error(const std::string& yaml) {
@@ -134,7 +134,7 @@ TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
 TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
   const std::string axes = "  access_points.placement: [colinear]\n  access_points.count: [4, 8]\n";
   const StudyFile s = load_study_yaml(
-      "version: 1\nname: test\nscene: " + kScene +
+      "version: 1\nname: test\nscene: " + kCHallScene +
           "\nset:\n  access_points.line_from_m: [2, 0]\n  access_points.line_to_m: [18, 0]\n"
           "  access_points.count: 99\naxes:\n" +
           axes,
@@ -145,12 +145,12 @@ TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
   EXPECT_EQ(scene.access_points.line_to_m, Eigen::Vector2d(18, 0));
   EXPECT_EQ(scene.access_points.count, 8);  // the axis wins over `set`
   // An unknown key is located, with the closest scene key offered; a mapping value is refused.
-  auto e = parse_error("version: 1\nname: t\nscene: " + kScene +
+  auto e = parse_error("version: 1\nname: t\nscene: " + kCHallScene +
                        "\nset:\n  access_points.line_too_m: [1, 1]\naxes:\n" + axes);
   EXPECT_NE(e.where().find("s.yaml:5:3"), std::string::npos) << e.what();
   EXPECT_NE(std::string(e.what()).find("did you mean 'access_points.line_to_m'"), std::string::npos)
       << e.what();
-  e = parse_error("version: 1\nname: t\nscene: " + kScene +
+  e = parse_error("version: 1\nname: t\nscene: " + kCHallScene +
                   "\nset:\n  access_points.line_to_m: {x: 1}\naxes:\n" + axes);
   EXPECT_EQ(e.key_path(), "set.access_points.line_to_m");
 }
@@ -164,7 +164,8 @@ namespace {
 // Issue 44: contradicting front-end axes, and a front-end axis where no front end runs, were
 // accepted (the second only repeated identical cases).
 TEST(StudyFile, FrontEndAxesAreOneKindAndOnlyWhereAFrontEndRuns) {
-  const std::string slam_study = "version: 1\nname: t\nscene: " + kScene + "\nlevel: slam\naxes:\n";
+  const std::string slam_study =
+      "version: 1\nname: t\nscene: " + kCHallScene + "\nlevel: slam\naxes:\n";
   const ParseError both = parse_error(slam_study + "  frontend: [rgbdslam]\n  system: [rtabmap]\n");
   EXPECT_NE(std::string(both.what()).find("not both"), std::string::npos) << both.what();
   const ParseError radio = parse_error(study_yaml("  frontend: [rgbdslam, orbslam]\n"));
@@ -184,7 +185,7 @@ TEST(StudyFile, ASystemFilesRelativePathIsTheStudyFiles) {
     std::ofstream(dir / "sys" / "x.yaml") << "version: 1\nname: x\ncommand: [/bin/true]\n"
                                              "outputs: {trajectory: t.txt}\n";
     std::ofstream(dir / "studies" / "s.yaml")
-        << "version: 1\nname: s\nscene: " << kScene << "\nlevel: slam\naxes:\n  system: "
+        << "version: 1\nname: s\nscene: " << kCHallScene << "\nlevel: slam\naxes:\n  system: "
         << "[../sys/x.yaml, rgbdslam]\n";
   }
   // Loaded from a current folder where ../sys/x.yaml is not that file.

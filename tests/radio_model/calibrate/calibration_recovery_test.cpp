@@ -40,6 +40,7 @@
 #include "sim/site/survey_site.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
+#include "tests/radio_model/calibrate/simulated_survey.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam::radio_model::calibrate {
@@ -48,8 +49,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr double kTrueN = 30.0, kTrueBrickDb = 9.0, kTrueSigmaDb = 4.0, kTrueFadingDb = 2.0;
-constexpr double kTrueDecorrelationM = 3.0, kTxDbm = 20.0, kFrequencyMhz = 2437.0;
-constexpr double kReceiverHeightM = 1.0, kSensitivityDbm = -130.0;
+constexpr double kTrueDecorrelationM = 3.0, kTxDbm = 20.0, kSensitivityDbm = -130.0;
 constexpr int kScansPerSpot = 10;
 
 class CalibrationRecovery : public ::testing::Test {
@@ -81,11 +81,11 @@ class CalibrationRecovery : public ::testing::Test {
       for (double x = std::floor(plan.bounds_min_m.x()) + 0.25; x <= plan.bounds_max_m.x();
            x += 1.0) {
         if (!sim::world::regions_contain(plan.free_space, {x, y})) continue;
-        const Eigen::Vector3d p(x, y, kReceiverHeightM);
+        const Eigen::Vector3d p(x, y, test::kSurveyReceiverHeightM);
         for (std::size_t i = 0; i < model.access_points().size(); ++i) {
           const radio_model::RadioLink link = model.link(i, p);
           const double mean = model.access_points()[i].tx_power_dbm -
-                              model.path_loss_db(link, kFrequencyMhz) -
+                              model.path_loss_db(link, test::kSurveyFrequencyMhz) -
                               model.shadowing_db(link, radio_model::RadioBand::k2_4GHz);
           if (mean < kSensitivityDbm) continue;  // not heard at this spot
           for (int k = 0; k < kScansPerSpot; ++k) {
@@ -114,13 +114,15 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   const sim::scene::Scene& scene = site_->scene();
   std::vector<SurveyAccessPoint> aps;
   for (const auto& ap : site_->access_points()) aps.push_back({ap.id, ap.position_m, {}, ""});
-  const Survey survey = read_survey(survey_path_, SurveyFormat::kLong, kReceiverHeightM);
+  const Survey survey =
+      read_survey(survey_path_, SurveyFormat::kLong, test::kSurveyReceiverHeightM);
   const SurveyLinks links = survey_links(survey, aps, sim::site::survey_site(*site_));
   ASSERT_GT(links.groups.size(), 5000u);
 
   // Fitted against the default laws (what a user's scene has), not the truth.
   const radio_model::WallLossTable defaults(scene.building.wall_thickness_m);
-  const LinearRadioModel before = scene_model(links, defaults, std::nullopt, kTxDbm, kFrequencyMhz);
+  const LinearRadioModel before =
+      scene_model(links, defaults, std::nullopt, kTxDbm, test::kSurveyFrequencyMhz);
   PropagationFit fit = fit_propagation(links, before.wall_loss_db);
   const ShadowingStatistics s = shadowing_statistics(links, fit.model, fit.parameters);
   const double independent_ci95 = fit.distance_coefficient_ci95;
@@ -143,7 +145,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   int heard = 0;
   for (double intercept : fit.model.intercept_dbm) {
     if (!std::isfinite(intercept)) continue;
-    tx_sum += tx_from_intercept_dbm(intercept, kFrequencyMhz);
+    tx_sum += tx_from_intercept_dbm(intercept, test::kSurveyFrequencyMhz);
     ++heard;
   }
   EXPECT_NEAR(tx_sum / heard, kTxDbm, 2.0);
@@ -155,7 +157,7 @@ TEST_F(CalibrationRecovery, RecoversDistanceCoefficientBrickLossAndShadowing) {
   Calibration c;
   c.scene_name = scene.name;
   c.survey_path = survey_path_.string();
-  c.frequency_mhz = kFrequencyMhz;
+  c.frequency_mhz = test::kSurveyFrequencyMhz;
   c.train = links;
   c.before = before;
   c.fit = fit;

@@ -42,13 +42,13 @@
 #include "sim/site/survey_site.hpp"
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
+#include "tests/radio_model/calibrate/simulated_survey.hpp"
 
 namespace wifislam::radio_model::calibrate {
 namespace {
 
 namespace fs = std::filesystem;
 
-constexpr double kFrequencyMhz = 2437.0, kReceiverHeightM = 1.0;
 constexpr double kOffsetBDb = -5.5, kOffsetCDb = 3.0;
 
 TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromItsOwn) {
@@ -78,11 +78,11 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
            x += 1.5) {
         if (!sim::world::regions_contain(plan.free_space, {x, y})) continue;
         ++spot;
-        const Eigen::Vector3d p(x, y, kReceiverHeightM);
+        const Eigen::Vector3d p(x, y, test::kSurveyReceiverHeightM);
         for (std::size_t i = 0; i < model.access_points().size(); ++i) {
           const RadioLink link = model.link(i, p);
           const double mean = model.access_points()[i].tx_power_dbm -
-                              model.path_loss_db(link, kFrequencyMhz) -
+                              model.path_loss_db(link, test::kSurveyFrequencyMhz) -
                               model.shadowing_db(link, RadioBand::k2_4GHz);
           const int id = model.access_points()[i].id;
           for (int k = 0; k < 5; ++k) {
@@ -99,7 +99,7 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
       }
     }
   }
-  Survey survey = read_survey(path.string(), SurveyFormat::kLong, kReceiverHeightM);
+  Survey survey = read_survey(path.string(), SurveyFormat::kLong, test::kSurveyReceiverHeightM);
   fs::remove(path);
   std::vector<std::string> devices = survey.devices();
   std::sort(devices.begin(), devices.end());
@@ -119,7 +119,8 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
   ASSERT_EQ(links.devices, (std::vector<std::string>{"phone_a", "phone_b"}));  // first seen first
 
   const WallLossTable defaults(scene.building.wall_thickness_m);
-  const LinearRadioModel before = scene_model(links, defaults, std::nullopt, 20.0, kFrequencyMhz);
+  const LinearRadioModel before =
+      scene_model(links, defaults, std::nullopt, 20.0, test::kSurveyFrequencyMhz);
   PropagationFit fit = fit_propagation(links, before.wall_loss_db);
   const ShadowingStatistics s = shadowing_statistics(links, fit.model, fit.parameters);
   widen_for_correlated_shadowing(fit, links, s);

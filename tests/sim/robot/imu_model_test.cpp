@@ -18,7 +18,7 @@
 namespace wifislam::sim {
 namespace {
 
-robot::RobotMotionOptions motion_options() {
+robot::RobotMotionOptions walk_with_short_pauses() {
   robot::RobotMotionOptions o;
   o.speed_mps = 0.5;
   o.max_yaw_rate_radps = 0.6;
@@ -78,7 +78,7 @@ IntegrationError integrate(const robot::MotionProfile& motion, const scene::ImuS
 TEST(ImuModel, IntegratingTheNoiseFreeImuReproducesGroundTruthToTheIntegratorsOrder) {
   for (const world::RoutePath& route :
        {test::rounded_rectangle_route(12.0, 8.0, 0.6), test::there_and_back_route(6.0)}) {
-    const robot::MotionProfile motion(route, motion_options(), 7);
+    const robot::MotionProfile motion(route, walk_with_short_pauses(), 7);
     const IntegrationError at200 = integrate(motion, noise_free(200.0));
     const IntegrationError at800 = integrate(motion, noise_free(800.0));
     // Velocity and heading telescope: exact up to rounding, whatever the rate.
@@ -95,7 +95,7 @@ TEST(ImuModel, IntegratingTheNoiseFreeImuReproducesGroundTruthToTheIntegratorsOr
 }
 
 TEST(ImuModel, AtRestItReadsGravityUpAndNoRotation) {
-  const robot::MotionProfile motion(test::straight_route(2.0), motion_options(), 7);
+  const robot::MotionProfile motion(test::straight_route(2.0), walk_with_short_pauses(), 7);
   robot::ImuModel imu(motion, noise_free(200.0), 3);
   const ImuReading r = imu.measure(0);  // the robot stands at the start
   EXPECT_NEAR(r.specific_force_mps2.z(), robot::kStandardGravityMps2, 1e-12);
@@ -151,7 +151,7 @@ std::pair<double, double> fit_allan(const std::vector<std::vector<double>>& samp
 TEST(ImuModel, AllanDeviationAtRestRecoversTheConfiguredNoise) {
   // The robot stands through its first pause: 6 hours at rest, long enough to see the gyro's
   // bias walk (its Allan deviation turns up after ~15 s) over more than 1000 of its crossings.
-  robot::RobotMotionOptions options = motion_options();
+  robot::RobotMotionOptions options = walk_with_short_pauses();
   options.pause.duration_s = 6 * 3600.0;
   const robot::MotionProfile motion(test::straight_route(1.0), options, 7);
   const scene::ImuSpec spec;  // the defaults: EuRoC's ADIS16448
@@ -182,7 +182,7 @@ TEST(ImuModel, AllanDeviationAtRestRecoversTheConfiguredNoise) {
 }
 
 TEST(ImuModel, NoiseComesFromTheSeedsOwnStream) {
-  const robot::MotionProfile motion(test::straight_route(3.0), motion_options(), 7);
+  const robot::MotionProfile motion(test::straight_route(3.0), walk_with_short_pauses(), 7);
   const scene::ImuSpec spec;
   robot::ImuModel a(motion, spec, 5), b(motion, spec, 5), c(motion, spec, 6);
   for (std::int64_t k = 0; k < 50; ++k) {

@@ -35,7 +35,7 @@ route:
   nodes: [A, B]
 )";
 
-ParseError expect_parse_error(const std::string& yaml) {
+ParseError expect_levels_parse_error(const std::string& yaml) {
   return test::expect_parse_error(yaml, "levels.yaml");
 }
 
@@ -89,28 +89,28 @@ TEST(SceneLevels, ALevelsPartHoldsItsOwnPiecesRenumberedWithTheFilesKeys) {
 TEST(SceneLevels, NodesOfDifferentLevelsMayStandOneAboveTheOther) {
   // A1 and A share (0, 0): allowed across levels, refused on one.
   EXPECT_NO_THROW(scene::load_scene_yaml(kTwoLevels, "levels.yaml"));
-  const auto e = expect_parse_error(replace(
+  const auto e = expect_levels_parse_error(replace(
       kTwoLevels, "{id: A1, position_m: [0, 0], level: first}", "{id: A1, position_m: [0, 0]}"));
   EXPECT_EQ(e.key_path(), "nodes[2].position_m");
 }
 
 TEST(SceneLevels, OverlappingLevelsAreLocated) {
   const auto e =
-      expect_parse_error(replace(kTwoLevels, "{id: first, slab_thickness_m: 0.25}",
-                                 "{id: first, slab_thickness_m: 0.25, elevation_m: 2.9}"));
+      expect_levels_parse_error(replace(kTwoLevels, "{id: first, slab_thickness_m: 0.25}",
+                                        "{id: first, slab_thickness_m: 0.25, elevation_m: 2.9}"));
   EXPECT_EQ(e.key_path(), "levels[1].elevation_m");
   EXPECT_EQ(e.where(), "levels.yaml:5:54");
   EXPECT_TRUE(mentions(e, "overlaps level 'ground'")) << e.what();
 }
 
 TEST(SceneLevels, AStoreyLowerThanItsWallsIsLocated) {
-  const auto e =
-      expect_parse_error(replace(kTwoLevels, "{id: ground}", "{id: ground, storey_height_m: 2.5}"));
+  const auto e = expect_levels_parse_error(
+      replace(kTwoLevels, "{id: ground}", "{id: ground, storey_height_m: 2.5}"));
   EXPECT_EQ(e.key_path(), "levels[0].storey_height_m");
 }
 
 TEST(SceneLevels, AnAccessPointOnAMissingLevelIsLocated) {
-  const auto e = expect_parse_error(
+  const auto e = expect_levels_parse_error(
       replace(kTwoLevels, "[6, 0, 2.5], level: first", "[6, 0, 2.5], level: second"));
   EXPECT_EQ(e.key_path(), "access_points.list[0].level");
   EXPECT_EQ(e.where(), "levels.yaml:17:40");
@@ -124,36 +124,37 @@ TEST(SceneLevels, ALevelNamedInASceneWithoutLevelsIsLocated) {
         "  - {id: A1, position_m: [0, 0], level: first}\n",
         "  - {id: B1, position_m: [12, 0], level: first}\n", "  - {id: ab1, from: A1, to: B1}\n"})
     one_level = replace(one_level, line, "");
-  const auto e = expect_parse_error(one_level);
+  const auto e = expect_levels_parse_error(one_level);
   EXPECT_EQ(e.key_path(), "access_points.list[0].level");
   EXPECT_TRUE(mentions(e, "the scene has no `levels:`")) << e.what();
 }
 
 TEST(SceneLevels, ARouteAcrossLevelsIsLocated) {
-  const auto e = expect_parse_error(replace(kTwoLevels, "nodes: [A, B]\n", "nodes: [A, B, B1]\n"));
+  const auto e =
+      expect_levels_parse_error(replace(kTwoLevels, "nodes: [A, B]\n", "nodes: [A, B, B1]\n"));
   EXPECT_EQ(e.key_path(), "route.nodes[2]");
   EXPECT_TRUE(mentions(e, "node 'B1' is on level 'first', the route on level 'ground'"))
       << e.what();
 }
 
 TEST(SceneLevels, ACorridorAcrossLevelsIsLocated) {
-  const auto e = expect_parse_error(
+  const auto e = expect_levels_parse_error(
       replace(kTwoLevels, "{id: ab1, from: A1, to: B1}", "{id: ab1, from: A1, to: B}"));
   EXPECT_EQ(e.key_path(), "corridors[1].to");
   EXPECT_TRUE(mentions(e, "a corridor stays on one level")) << e.what();
 }
 
 TEST(SceneLevels, ALevelWithoutAPlanIsLocated) {
-  const auto e =
-      expect_parse_error(replace(kTwoLevels, "  - {id: first, slab_thickness_m: 0.25}\n",
-                                 "  - {id: first, slab_thickness_m: 0.25}\n  - {id: roof}\n"));
+  const auto e = expect_levels_parse_error(
+      replace(kTwoLevels, "  - {id: first, slab_thickness_m: 0.25}\n",
+              "  - {id: first, slab_thickness_m: 0.25}\n  - {id: roof}\n"));
   EXPECT_EQ(e.key_path(), "levels[2]");
   EXPECT_TRUE(mentions(e, "level 'roof' has no corridors' nodes and no spaces")) << e.what();
 }
 
 TEST(SceneLevels, EachLevelsCorridorGraphIsConnectedOnItsOwn) {
   EXPECT_NO_THROW(scene::load_scene_yaml(kTwoLevels, "levels.yaml"));
-  const auto e = expect_parse_error(
+  const auto e = expect_levels_parse_error(
       replace(replace(kTwoLevels, "  - {id: B1, position_m: [12, 0], level: first}\n",
                       "  - {id: B1, position_m: [12, 0], level: first}\n  - {id: C1, position_m: "
                       "[30, 0], level: first}\n  - {id: D1, position_m: [40, 0], level: first}\n"),
