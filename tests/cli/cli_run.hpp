@@ -89,29 +89,27 @@ route:
 radio: {environment: office}
 )";
 
-/// Writes `dir / name`: the tiny loop with `from` replaced by `to` (which must occur in it).
-inline std::filesystem::path tiny_loop_with(const std::filesystem::path& dir,
-                                            const std::string& from, const std::string& to,
-                                            const std::string& name) {
+/// The tiny loop's text with `from` replaced by `to` (which must occur in it).
+inline std::string tiny_loop_yaml_with(const std::string& from, const std::string& to) {
   std::string yaml = kTinyLoopYaml;
   const auto at = yaml.find(from);
   EXPECT_NE(at, std::string::npos) << from;
   if (at != std::string::npos) yaml.replace(at, from.size(), to);
+  return yaml;
+}
+
+/// Writes `dir / name`: the tiny loop with `from` replaced by `to` (which must occur in it).
+inline std::filesystem::path tiny_loop_with(const std::filesystem::path& dir,
+                                            const std::string& from, const std::string& to,
+                                            const std::string& name) {
   const std::filesystem::path path = dir / name;
-  write_file(path, yaml);
+  write_file(path, tiny_loop_yaml_with(from, to));
   return path;
 }
 
-/// The tiny loop with 4 s pauses (long enough for a Wi-Fi scan, so Wi-Fi variants run too),
-/// written to `dir`/tiny.yaml and generated at 2 fps into `dir`/dataset with `extra` flags
-/// (e.g. "--no-images"). True when `generate` succeeded.
-inline bool make_tiny_wifi_dataset(const std::filesystem::path& dir,
-                                   const std::string& extra = "") {
-  tiny_loop_with(dir, "duration_s: 1.0", "duration_s: 4.0", "tiny.yaml");
-  const std::string command = std::string(WIFISLAM_BINARY) + " generate " +
-                              (dir / "tiny.yaml").string() + " --fps 2 -q " + extra + " -o " +
-                              (dir / "dataset").string();
-  return std::system(command.c_str()) == 0;
+/// The tiny loop with 4 s pauses: long enough for a Wi-Fi scan, so Wi-Fi variants run too.
+inline std::string tiny_wifi_loop_yaml() {
+  return tiny_loop_yaml_with("duration_s: 1.0", "duration_s: 4.0");
 }
 
 /// Bad input as the README promises it: exit 2 (no signal), a message naming `where` (file,

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
@@ -17,18 +18,10 @@ class EdgeInput : public ::testing::Test {
  protected:
   // One dataset for the suite (generating is most of its time); tests edit copies of it.
   static void SetUpTestSuite() {
-    shared_ = fs::temp_directory_path() / ("wifislam_cli_edge_input_" + std::to_string(::getpid()));
-    fs::remove_all(shared_);
-    fs::create_directories(shared_);
-    test::write_file(shared_ / "tiny.yaml", test::kTinyLoopYaml);
-    generated_ = test::run_wifislam("generate " + (shared_ / "tiny.yaml").string() + " -o " +
-                                        (shared_ / "ds").string() +
-                                        " --fps 2 --max-frames 12 --threads 2 -q",
-                                    shared_);
+    dataset_ = test::shared_dataset(test::kTinyLoopYaml, "--fps 2 --max-frames 12 --threads 2");
   }
-  static void TearDownTestSuite() { fs::remove_all(shared_); }
   void SetUp() override {
-    ASSERT_EQ(generated_.exit_code, 0) << generated_.err;
+    ASSERT_FALSE(dataset_.empty()) << "wifislam generate failed";
     scratch_ = test::scratch_folder();
   }
   void TearDown() override { fs::remove_all(scratch_); }
@@ -36,7 +29,7 @@ class EdgeInput : public ::testing::Test {
   /// A copy of the generated dataset to edit, named `name` in the scratch folder.
   fs::path copy(const std::string& name) {
     const fs::path to = scratch_ / name;
-    fs::copy(shared_ / "ds", to, fs::copy_options::recursive);
+    fs::copy(dataset_, to, fs::copy_options::recursive);
     return to;
   }
   /// The copy without its manifest and marker: a plain TUM RGB-D folder, read without checksums.
@@ -53,8 +46,7 @@ class EdgeInput : public ::testing::Test {
       EXPECT_NE(r.err.find(part), std::string::npos) << "'" << part << "' in: " << r.err;
     }
   }
-  static inline fs::path shared_;
-  static inline test::CliResult generated_;
+  static inline fs::path dataset_;
   fs::path scratch_;
 };
 
@@ -75,7 +67,7 @@ TEST_F(EdgeInput, EvalRefusesANonPhysicalOrRepeatedPoseAtItsLine) {
   const auto pose = [](int s, const char* xy) {
     return "170000000" + std::to_string(s) + ".000000 " + xy + " 0 0 0 0 1\n";
   };
-  const fs::path gt = shared_ / "ds";
+  const fs::path gt = dataset_;
   const std::string eval =
       "eval " + trajectory.string() + " --gt " + gt.string() + " -o " + (scratch_ / "ev").string();
   test::write_file(trajectory,
@@ -153,14 +145,14 @@ TEST_F(EdgeInput, AnImageThatIsADeviceOrAFolderIsBadInputAndSoIsAFileForADataset
   fs::create_directories(rgb_image);
   expect_refused(wifislam("check " + ds.string()), {rgb_image, "is a folder, not a PNG image"});
   // `check FILE`: there, and not a dataset folder.
-  expect_refused(wifislam("check " + (shared_ / "tiny.yaml").string()),
+  expect_refused(wifislam("check " + (dataset_ / "scene.yaml").string()),
                  {"not a dataset folder (it is a file)"});
   EXPECT_EQ(wifislam("check " + (scratch_ / "none").string()).exit_code, 3);
 }
 
 TEST_F(EdgeInput, SetFrontendCannotOverrideFrontend) {
   const fs::path run = scratch_ / "run";
-  const auto r = wifislam("slam " + (shared_ / "ds").string() +
+  const auto r = wifislam("slam " + dataset_.string() +
                           " --frontend orbslam --set frontend=rtabmap -o " + run.string());
   expect_refused(r, {"--set", "conflicts with --frontend orbslam"});
   EXPECT_FALSE(fs::exists(run));

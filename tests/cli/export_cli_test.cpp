@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <string>
@@ -26,6 +27,7 @@
 #include "core/timestamp.hpp"
 #include "core/tum_file_list.hpp"
 #include "tests/cli/cli_run.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
@@ -41,27 +43,20 @@ constexpr const char* kFreiburg1Camera =
 
 class ExportCli : public ::testing::Test {
  protected:
-  // Two tiny datasets shared by the tests (each export writes a folder of its own): one with the
-  // default calibration (525 px, no TUM camera's), one with freiburg1's intrinsics.
+  // Three tiny datasets shared by the tests (each export writes a folder of its own): one with
+  // the default calibration (525 px, no TUM camera's), one with freiburg1's intrinsics, one whose
+  // time starts at zero.
   static void SetUpTestSuite() {
-    root_ = fs::temp_directory_path() / ("wifislam_cli_ExportCli_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-    const fs::path plain = root_ / "tiny.yaml";
-    test::write_file(plain, test::kTinyLoopYaml);
-    const fs::path fr1 =
-        test::tiny_loop_with(root_, "radio: {environment: office}", kFreiburg1Camera, "fr1.yaml");
-    const fs::path origin0 = test::tiny_loop_with(
-        root_, "radio: {environment: office}",
-        "radio: {environment: office}\nsensors: {time_origin_s: 0}", "origin0.yaml");
-    for (const auto& [scene, out] :
-         {std::pair{plain, "default_ds"}, {fr1, "fr1_ds"}, {origin0, "origin0_ds"}}) {
-      const std::string command = std::string(WIFISLAM_BINARY) + " generate " + scene.string() +
-                                  " --fps 2 --max-frames 6 -q -o " + (root_ / out).string();
-      generated_ = generated_ && std::system(command.c_str()) == 0;
+    const std::string office = "radio: {environment: office}";
+    for (const auto& [name, yaml] :
+         {std::pair<std::string, std::string>{"default_ds", test::kTinyLoopYaml},
+          {"fr1_ds", test::tiny_loop_yaml_with(office, kFreiburg1Camera)},
+          {"origin0_ds",
+           test::tiny_loop_yaml_with(office, office + "\nsensors: {time_origin_s: 0}")}}) {
+      datasets_[name] = test::shared_dataset(yaml, "--fps 2 --max-frames 6");
+      generated_ = generated_ && !datasets_[name].empty();
     }
   }
-  static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {
     ASSERT_TRUE(generated_) << "wifislam generate failed";
     scratch_ = test::scratch_folder();
@@ -69,16 +64,16 @@ class ExportCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(scratch_); }
 
   test::CliResult wifislam(const std::string& args) { return test::run_wifislam(args, scratch_); }
-  test::CliResult export_to(const std::string& dataset, const std::string& peer,
+  test::CliResult export_to(const std::string& dataset_name, const std::string& peer,
                             const fs::path& out, const std::string& more = "") {
-    return wifislam("export " + (root_ / dataset).string() + " --for " + peer + " -o " +
+    return wifislam("export " + dataset(dataset_name).string() + " --for " + peer + " -o " +
                     out.string() + " " + more);
   }
 
   /// The dataset's frame pairs as its associations.txt lists them.
-  static std::vector<FramePair> dataset_pairs(const std::string& dataset) {
+  static std::vector<FramePair> dataset_pairs(const std::string& dataset_name) {
     std::vector<FramePair> pairs;
-    AssociationsReader reader((root_ / dataset / "associations.txt").string());
+    AssociationsReader reader((dataset(dataset_name) / "associations.txt").string());
     while (auto p = reader.next()) pairs.push_back(*p);
     return pairs;
   }
@@ -113,7 +108,9 @@ class ExportCli : public ::testing::Test {
     EXPECT_GT(std::strtod(stem.c_str(), nullptr), 1e9) << name << " is no Unix time";
   }
 
-  static inline fs::path root_;
+  static fs::path dataset(const std::string& name) { return datasets_.at(name); }
+
+  static inline std::map<std::string, fs::path> datasets_;
   static inline bool generated_ = true;
   fs::path scratch_;
 };
@@ -133,10 +130,10 @@ TEST_F(ExportCli, RtabmapLayoutNamesEveryPairByItsPositiveUnixStampAndLinksTheDa
   // Sorted names are the frames in time order (the tool pairs the folders by position).
   for (std::size_t i = 0; i < pairs.size(); ++i) {
     expect_unix_stamp_name(rgb[i], pairs[i].rgb_time);
-    expect_links_to(out / "rgb_sync" / rgb[i], root_ / "fr1_ds" / pairs[i].rgb_path);
-    expect_links_to(out / "depth_sync" / rgb[i], root_ / "fr1_ds" / pairs[i].depth_path);
+    expect_links_to(out / "rgb_sync" / rgb[i], dataset("fr1_ds") / pairs[i].rgb_path);
+    expect_links_to(out / "depth_sync" / rgb[i], dataset("fr1_ds") / pairs[i].depth_path);
   }
-  expect_links_to(out / "groundtruth.txt", root_ / "fr1_ds" / "groundtruth.txt");
+  expect_links_to(out / "groundtruth.txt", dataset("fr1_ds") / "groundtruth.txt");
 
   const auto j = nlohmann::json::parse(test::read_file(out / "export.json"));
   EXPECT_EQ(j.at("peer"), "rtabmap");
@@ -165,8 +162,8 @@ TEST_F(ExportCli, Orbslam2LayoutListsExactlyTheLinkedImagesAndCarriesTheCalibrat
     EXPECT_EQ(depth, "depth/" + t_depth + ".png");
     expect_unix_stamp_name(fs::path(rgb).filename().string(), pairs[k].rgb_time);
     expect_unix_stamp_name(fs::path(depth).filename().string(), pairs[k].depth_time);
-    expect_links_to(out / rgb, root_ / "default_ds" / pairs[k].rgb_path);
-    expect_links_to(out / depth, root_ / "default_ds" / pairs[k].depth_path);
+    expect_links_to(out / rgb, dataset("default_ds") / pairs[k].rgb_path);
+    expect_links_to(out / depth, dataset("default_ds") / pairs[k].depth_path);
     listed_rgb.insert(fs::path(rgb).filename().string());
     listed_depth.insert(fs::path(depth).filename().string());
   }
@@ -176,7 +173,7 @@ TEST_F(ExportCli, Orbslam2LayoutListsExactlyTheLinkedImagesAndCarriesTheCalibrat
   EXPECT_EQ(std::set<std::string>(depth_names.begin(), depth_names.end()), listed_depth);
 
   // The settings as ORB-SLAM2 reads them (cv::FileStorage), against the dataset's calibration.
-  const DatasetCalibration c = read_calibration_yaml(root_ / "default_ds" / "calibration.yaml");
+  const DatasetCalibration c = read_calibration_yaml(dataset("default_ds") / "calibration.yaml");
   EXPECT_TRUE(test::read_file(out / "orbslam2_settings.yaml").starts_with("%YAML:1.0\n"));
   cv::FileStorage settings((out / "orbslam2_settings.yaml").string(), cv::FileStorage::READ);
   ASSERT_TRUE(settings.isOpened());
@@ -200,7 +197,7 @@ TEST_F(ExportCli, Orbslam2LayoutListsExactlyTheLinkedImagesAndCarriesTheCalibrat
   EXPECT_EQ(static_cast<int>(settings["ORBextractor.iniThFAST"]), 20);
   EXPECT_EQ(static_cast<int>(settings["ORBextractor.minThFAST"]), 7);
   EXPECT_DOUBLE_EQ(static_cast<double>(settings["Viewer.ViewpointF"]), 500.0);
-  expect_links_to(out / "groundtruth.txt", root_ / "default_ds" / "groundtruth.txt");
+  expect_links_to(out / "groundtruth.txt", dataset("default_ds") / "groundtruth.txt");
 }
 
 /// rtabmap_calib.yaml read as RTAB-Map's CameraModel::load reads it (OpenCV FileStorage), with the
@@ -288,13 +285,14 @@ TEST_F(ExportCli, AnExistingExportIsReplacedOnlyWithForce) {
 }
 
 TEST_F(ExportCli, AnOutputInsideOrAroundTheDatasetIsRefused) {
-  const auto before = test::listing(root_ / "default_ds");
-  for (const fs::path& out : {root_ / "default_ds" / "export", root_ / "default_ds", root_}) {
+  const auto before = test::listing(dataset("default_ds"));
+  for (const fs::path& out : {dataset("default_ds") / "export", dataset("default_ds"),
+                              dataset("default_ds").parent_path()}) {
     const auto r = export_to("default_ds", "rtabmap", out, "--force");
     test::expect_located_bad_input(r, "output folder " + out.string(), "input of this command");
   }
-  EXPECT_EQ(test::listing(root_ / "default_ds"), before);
-  EXPECT_FALSE(fs::exists(root_ / "default_ds" / "export.partial"));
+  EXPECT_EQ(test::listing(dataset("default_ds")), before);
+  EXPECT_FALSE(fs::exists(dataset("default_ds") / "export.partial"));
 }
 
 TEST_F(ExportCli, ADatasetStartingAtZeroIsRefusedForRtabmapAndNothingIsWritten) {

@@ -30,6 +30,7 @@
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
 #include "tests/cli/cli_run.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
@@ -68,33 +69,26 @@ double number(const std::string& text) {
 class ExportLayoutsCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    root_ =
-        fs::temp_directory_path() / ("wifislam_cli_ExportLayouts_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-    generated_ = test::make_tiny_wifi_dataset(root_);
-    const fs::path no_imu = test::tiny_loop_with(root_, "radio: {environment: office}",
-                                                 "radio: {environment: office}\n"
-                                                 "sensors: {imu: {enabled: false}}",
-                                                 "no_imu.yaml");
-    const std::string command = std::string(WIFISLAM_BINARY) + " generate " + no_imu.string() +
-                                " --fps 2 --max-frames 4 -q -o " + (root_ / "no_imu").string();
-    generated_ = generated_ && std::system(command.c_str()) == 0;
+    dataset_ = test::shared_tiny_wifi_dataset();
+    no_imu_ = test::shared_dataset(
+        test::tiny_loop_yaml_with("radio: {environment: office}",
+                                  "radio: {environment: office}\nsensors: {imu: {enabled: false}}"),
+        "--fps 2 --max-frames 4");
+    generated_ = !dataset_.empty() && !no_imu_.empty();
   }
-  static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {
     ASSERT_TRUE(generated_);
     scratch_ = test::scratch_folder();
   }
   void TearDown() override { fs::remove_all(scratch_); }
 
-  static fs::path dataset() { return root_ / "dataset"; }
+  static fs::path dataset() { return dataset_; }
   test::CliResult export_to(const fs::path& data, const std::string& layout, const fs::path& out) {
     return test::run_wifislam(
         "export " + data.string() + " --for " + layout + " -o " + out.string(), scratch_);
   }
 
-  static inline fs::path root_;
+  static inline fs::path dataset_, no_imu_;
   static inline bool generated_ = false;
   fs::path scratch_;
 };
@@ -181,8 +175,8 @@ TEST_F(ExportLayoutsCli, EurocLayoutHoldsTheFramesTheImuAndItsGroundTruthInNanos
 
 TEST_F(ExportLayoutsCli, EurocRefusesADatasetWithoutAnImuAndWritesNothing) {
   const fs::path out = scratch_ / "euroc";
-  const auto r = export_to(root_ / "no_imu", "euroc", out);
-  test::expect_located_bad_input(r, (root_ / "no_imu").string(), "has no IMU");
+  const auto r = export_to(no_imu_, "euroc", out);
+  test::expect_located_bad_input(r, no_imu_.string(), "has no IMU");
   EXPECT_FALSE(fs::exists(out));
   EXPECT_FALSE(fs::exists(scratch_ / "euroc.partial"));
 }

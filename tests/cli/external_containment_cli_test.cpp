@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
@@ -67,12 +68,9 @@ bool wait_for(double seconds, F done) {
 class ExternalContainment : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    root_ = fs::temp_directory_path() / ("wifislam_cli_Containment_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-    generated_ = test::make_tiny_wifi_dataset(root_, "--no-images");
+    dataset_ = test::shared_tiny_wifi_dataset("--no-images");
+    generated_ = !dataset_.empty();
   }
-  static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {
     ASSERT_TRUE(generated_);
     scratch_ = test::scratch_folder();
@@ -90,7 +88,7 @@ class ExternalContainment : public ::testing::Test {
     return scratch_ / "system.yaml";
   }
   std::string slam_args(const fs::path& system) const {
-    return "slam " + (root_ / "dataset").string() + " -o " + (scratch_ / "run").string() +
+    return "slam " + dataset_.string() + " -o " + (scratch_ / "run").string() +
            " --frontend external:" + system.string();
   }
   /// A number no other test run uses, as an argument of `sleep`.
@@ -98,7 +96,7 @@ class ExternalContainment : public ::testing::Test {
     return std::to_string(base) + "." + std::to_string(::getpid() % 100000);
   }
 
-  static inline fs::path root_;
+  static inline fs::path dataset_;
   static inline bool generated_ = false;
   fs::path scratch_;
 };

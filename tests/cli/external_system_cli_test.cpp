@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
@@ -45,7 +46,9 @@ class ExternalSystemCli : public ::testing::Test {
     fs::remove_all(root_);
     fs::create_directories(root_);
     write_file(root_ / "broken.yaml", kBrokenSystem);
-    generated_ = test::make_tiny_wifi_dataset(root_);
+    write_file(root_ / "tiny.yaml", test::tiny_wifi_loop_yaml());
+    dataset_ = test::shared_tiny_wifi_dataset();
+    generated_ = !dataset_.empty();
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {
@@ -54,7 +57,7 @@ class ExternalSystemCli : public ::testing::Test {
   }
   void TearDown() override { fs::remove_all(scratch_); }
 
-  static fs::path dataset() { return root_ / "dataset"; }
+  static fs::path dataset() { return dataset_; }
 
   /// `slam` of the dataset with the system file `yaml` (written to the scratch folder).
   test::CliResult slam_with_system(const std::string& yaml, const std::string& extra = "") {
@@ -65,7 +68,7 @@ class ExternalSystemCli : public ::testing::Test {
                               scratch_);
   }
 
-  static inline fs::path root_;
+  static inline fs::path root_, dataset_;
   static inline bool generated_ = false;
   fs::path scratch_;
 };

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "tests/cli/cli_run.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {
@@ -21,10 +22,8 @@ class SlamInput : public ::testing::Test {
     scratch_ = test::scratch_folder();
     scene_ = scratch_ / "tiny.yaml";
     test::write_file(scene_, test::kTinyLoopYaml);
-    dataset_ = scratch_ / "ds";
-    const auto r = wifislam("generate " + scene_.string() + " -o " + dataset_.string() +
-                            " --fps 2 --max-frames 12 --threads 2 -q");
-    ASSERT_EQ(r.exit_code, 0) << r.err;
+    dataset_ = test::shared_dataset(test::kTinyLoopYaml, "--fps 2 --max-frames 12 --threads 2");
+    ASSERT_FALSE(dataset_.empty()) << "wifislam generate failed";
   }
   void TearDown() override { fs::remove_all(scratch_); }
   test::CliResult wifislam(const std::string& args) { return test::run_wifislam(args, scratch_); }

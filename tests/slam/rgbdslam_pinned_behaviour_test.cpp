@@ -54,6 +54,7 @@
 
 #include "core/atomic_file.hpp"
 #include "sim/render/osmesa_context.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/slam/slam_test_scene.hpp"
 #include "tests/support/read_file.hpp"
 
@@ -120,26 +121,19 @@ class RgbdslamPinnedBehaviour : public ::testing::Test {
     root_ = fs::temp_directory_path() / ("wifislam_pinned_" + std::to_string(::getpid()));
     fs::remove_all(root_);
     fs::create_directories(root_);
-    {
-      std::ofstream scene(root_ / "small_loop.yaml");
-      scene << test::small_loop_with_wifi_scene_yaml();
-    }
-    const std::string command = std::string(WIFISLAM_BINARY) + " generate " +
-                                (root_ / "small_loop.yaml").string() + " --fps 3 -q -o " +
-                                (root_ / "dataset").string();
-    generated_ = std::system(command.c_str()) == 0;
+    dataset_ = test::shared_dataset(test::small_loop_with_wifi_scene_yaml(), "--fps 3");
   }
   static void TearDownTestSuite() { fs::remove_all(root_); }
 
   void expect_pinned(const char* variant, const char* flags, const char* expected) {
-    ASSERT_TRUE(generated_) << "wifislam generate failed";
+    ASSERT_FALSE(dataset_.empty()) << "wifislam generate failed";
     const std::string images =
-        sha256_hex(image_hashes(test::read_file(root_ / "dataset" / "images.sha256")));
+        sha256_hex(image_hashes(test::read_file(dataset_ / "images.sha256")));
     const fs::path run = root_ / variant;
-    const std::string command = std::string(WIFISLAM_BINARY) + " slam " +
-                                (root_ / "dataset").string() + " --set max_keypoints=500 " + flags +
-                                " -o " + run.string() + " > " +
-                                (root_ / (std::string(variant) + ".log")).string() + " 2>&1";
+    const std::string command = std::string(WIFISLAM_BINARY) + " slam " + dataset_.string() +
+                                " --set max_keypoints=500 " + flags + " -o " + run.string() +
+                                " > " + (root_ / (std::string(variant) + ".log")).string() +
+                                " 2>&1";
     ASSERT_EQ(std::system(command.c_str()), 0) << command;
     const std::string measured = run_digest(run);
     if (images != kImagesDigest) {
@@ -154,8 +148,7 @@ class RgbdslamPinnedBehaviour : public ::testing::Test {
     EXPECT_EQ(measured, expected) << variant << " results moved";
   }
 
-  static inline fs::path root_;
-  static inline bool generated_ = false;
+  static inline fs::path root_, dataset_;
 };
 
 TEST_F(RgbdslamPinnedBehaviour, VanillaTrajectoryGraphAndClosuresAreBitForBitUnchanged) {

@@ -19,6 +19,7 @@
 
 #include "core/run_format.hpp"
 #include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
+#include "tests/cli/shared_dataset.hpp"
 #include "tests/slam/slam_test_scene.hpp"
 
 namespace wifislam {
@@ -45,10 +46,8 @@ class RtabmapEndToEnd : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("wifislam_rtabmap_e2e_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    std::ofstream(dir_ / "loop.yaml") << test::small_loop_with_wifi_scene_yaml();
-    generated_ = wifislam_cli("generate " + (dir_ / "loop.yaml").string() + " --fps 2 -q -o " +
-                                  (dir_ / "ds").string(),
-                              dir_) == 0;
+    dataset_ = test::shared_dataset(test::small_loop_with_wifi_scene_yaml(), "--fps 2");
+    generated_ = !dataset_.empty();
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
@@ -56,8 +55,8 @@ class RtabmapEndToEnd : public ::testing::Test {
     ASSERT_TRUE(generated_) << log_of(dir_);
     const fs::path run = dir_ / (wifi ? "run_wifi" : "run_vanilla");
     ASSERT_EQ(
-        wifislam_cli("slam " + (dir_ / "ds").string() + " --frontend rtabmap" +
-                         (wifi ? " --wifi" : "") + " --set max_keypoints=500 -o " + run.string(),
+        wifislam_cli("slam " + dataset_.string() + " --frontend rtabmap" + (wifi ? " --wifi" : "") +
+                         " --set max_keypoints=500 -o " + run.string(),
                      dir_),
         0)
         << log_of(dir_);
@@ -160,7 +159,7 @@ class RtabmapEndToEnd : public ::testing::Test {
   /// eval accepts the run folder and scores it: no wrong-place closure on this loop.
   static void check_eval(const fs::path& run, bool wifi, const nlohmann::json& j, int keyframes) {
     namespace rf = run_folder;
-    ASSERT_EQ(wifislam_cli("eval " + run.string() + " --gt " + (dir_ / "ds").string() +
+    ASSERT_EQ(wifislam_cli("eval " + run.string() + " --gt " + dataset_.string() +
                                " --set revisit_min_path_m=8",
                            dir_),
               0)
@@ -188,6 +187,7 @@ class RtabmapEndToEnd : public ::testing::Test {
 
   static fs::path dir_;
   static bool generated_;
+  static inline fs::path dataset_;
 };
 
 fs::path RtabmapEndToEnd::dir_;
