@@ -4,8 +4,9 @@ function(wifislam_target_defaults target)
   target_compile_features(${target} PUBLIC cxx_std_20)
 endfunction()
 
-# Unity build (WIFISLAM_UNITY_BUILD) for a library, the wifislam program or a test suite. A source
-# that must stay its own unit (CGAL's long compiles) sets SKIP_UNITY_BUILD_INCLUSION.
+# Unity build (WIFISLAM_UNITY_BUILD) for a library, the wifislam program, the Python module or a
+# test suite. A source that must stay its own unit (CGAL's long compiles) sets
+# SKIP_UNITY_BUILD_INCLUSION.
 function(wifislam_unity_build target)
   if(WIFISLAM_UNITY_BUILD)
     set_target_properties(${target} PROPERTIES UNITY_BUILD ON)
