@@ -21,6 +21,7 @@
 #include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -41,16 +42,12 @@ class ExternalSystemCli : public ::testing::Test {
  protected:
   // One tiny dataset shared by the tests that read one (each writes its own output folder).
   static void SetUpTestSuite() {
-    root_ =
-        fs::temp_directory_path() / ("wifislam_cli_ExternalSystem_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = test::scratch_folder("suite");
     write_file(root_ / "broken.yaml", kBrokenSystem);
     write_file(root_ / "tiny.yaml", test::tiny_wifi_loop_yaml());
     dataset_ = test::shared_tiny_wifi_dataset();
     generated_ = !dataset_.empty();
   }
-  static void TearDownTestSuite() { fs::remove_all(root_); }
   void SetUp() override {
     ASSERT_TRUE(generated_);
     scratch_ = test::scratch_folder();

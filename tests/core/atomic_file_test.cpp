@@ -7,6 +7,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -14,10 +15,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("wifislam_atomic_" + name);
-  fs::remove_all(d);
-  fs::remove_all(d.string() + ".partial");
-  return d;
+  return test::scratch_folder(name) / name;  // not made yet: the test makes it
 }
 
 TEST(AtomicDirectory, NothingVisibleUntilCommitAndNothingLeftWhenAbandoned) {
@@ -77,7 +75,7 @@ TEST(WriteFileAtomic, ReplacesAFileButRefusesAFolderOrAPipeAndLeavesThemAsTheyWe
 TEST(Sha256, MatchesTheStandardTestVectors) {
   EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  const fs::path f = fs::temp_directory_path() / "wifislam_sha_test.txt";
+  const fs::path f = test::scratch_folder() / "sha_test.txt";
   write_file_atomic(f, "abc");
   EXPECT_EQ(sha256_file_hex(f), sha256_hex("abc"));
   fs::remove(f);

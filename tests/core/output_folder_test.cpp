@@ -16,6 +16,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -24,13 +25,7 @@ namespace fs = std::filesystem;
 
 class OutputFolderRule : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    root_ = fs::temp_directory_path() / ("wifislam_output_folder_" + std::string(info->name()) +
-                                         "_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
-  }
+  void SetUp() override { root_ = test::scratch_folder(); }
   void TearDown() override {
     fs::remove_all(root_);
     fs::remove_all(root_.string() + ".partial");

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "core/line_cursor.hpp"
 #include "core/text_lines.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -22,8 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path write(const std::string& name, const std::string& text) {
-  const fs::path p =
-      fs::temp_directory_path() / ("wifislam_lines_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path p = test::scratch_folder(name) / name;
   std::ofstream(p, std::ios::binary) << text;
   return p;
 }
@@ -63,9 +63,7 @@ TEST(TextLines, SameLinesAsGetline) {
 }
 
 TEST(TextLines, AFolderIsRefusedByName) {
-  const fs::path folder =
-      fs::temp_directory_path() / ("wifislam_lines_" + std::to_string(::getpid()) + "_folder");
-  fs::create_directories(folder);
+  const fs::path folder = test::scratch_folder("folder");
   try {
     read_text_lines(folder.string());
     ADD_FAILURE() << "a folder was read";

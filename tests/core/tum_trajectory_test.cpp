@@ -7,6 +7,7 @@
 #include "core/rng.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -15,13 +16,7 @@ namespace fs = std::filesystem;
 
 class TumTrajectoryTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("wifislam_tum_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
+  void SetUp() override { dir_ = test::scratch_folder(); }
   void TearDown() override { fs::remove_all(dir_); }
   std::string write(const std::string& name, const std::string& text) {
     const std::string path = (dir_ / name).string();

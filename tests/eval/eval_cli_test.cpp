@@ -13,15 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/eval/ladder_dataset.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  return fs::temp_directory_path() /
-         ("wifislam_eval_cli_" + name + "_" + std::to_string(::getpid()));
-}
+fs::path scratch(const std::string& name) { return wifislam::test::scratch_folder(name); }
 
 struct Result {
   int exit_code = -1;

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "eval/evaluate_run.hpp"
 #include "tests/eval/ladder_dataset.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::eval {
 namespace {
@@ -23,9 +24,7 @@ namespace fs = std::filesystem;
 using test::LadderRun;
 using test::LoopClosureRow;
 
-fs::path scratch(const std::string& name) {
-  return fs::temp_directory_path() / ("wifislam_eval_" + name + "_" + std::to_string(::getpid()));
-}
+fs::path scratch(const std::string& name) { return test::scratch_folder(name); }
 
 /// A small error, well inside the tolerance: what a good RANSAC estimate looks like.
 Pose nudged(const Pose& p) {
@@ -41,10 +40,7 @@ class LadderScoring : public ::testing::Test {
   static void SetUpTestSuite() {
     run_ = new LadderRun(test::build_ladder_run(scratch("ladder"), true));
   }
-  static void TearDownTestSuite() {
-    fs::remove_all(scratch("ladder"));
-    delete run_;
-  }
+  static void TearDownTestSuite() { delete run_; }
   // Every test starts from a run without graph.json and without loop closures.
   void SetUp() override {
     fs::remove(run_->run_dir / "graph.json");

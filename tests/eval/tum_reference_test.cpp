@@ -17,6 +17,7 @@
 #include "core/tum_trajectory.hpp"
 #include "eval/association.hpp"
 #include "eval/trajectory_error.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::eval {
 namespace {
@@ -33,9 +34,7 @@ std::string run_capture(const std::string& command) {
 }
 
 TEST(TumReference, RmseMatchesEvaluateAtePort) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("wifislam_eval_tum_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder();
   // Ground truth: a random walk at 30 Hz. Estimate: rotated and moved, noisy, its stamps 3 ms
   // late and every seventh frame missing (association has work to do).
   Rng rng = Rng::stream(11, "eval_test/tum");
@@ -97,9 +96,7 @@ TEST(TumReference, RmseMatchesEvaluateAtePort) {
 // with the repeated stamp is refused by the reader (issue 34), so the repeat is checked on the
 // stamps in memory and the files compared with associate.py hold it once.
 TEST(TumReference, RepeatedStampAndHalfWayTieAsAssociatePy) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("wifislam_eval_assoc_" + std::to_string(getpid()));
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder();
   auto stamp = [](double s) { return Timestamp::from_ns(std::llround(s * 1e9)); };
   auto at = [](double x, double y, double z) { return camera_pose_from_planar(x, y, 0.3 * x, z); };
   const Trajectory gt = {

@@ -19,6 +19,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/floorplan/shipped_plans.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -128,8 +129,7 @@ std::filesystem::path write_imdf(const fs::path& folder) {
 }
 
 TEST(PlanImport, ImdfFolderImportsUnitsAndOpenings) {
-  const fs::path folder =
-      write_imdf(fs::temp_directory_path() / ("wifislam_imdf_" + std::to_string(::getpid())));
+  const fs::path folder = write_imdf(test::scratch_folder() / "imdf");
   const floorplan::ImportedPlan plan = floorplan::import_plan(folder, {});
   fs::remove_all(folder);
   EXPECT_EQ(plan.format, floorplan::PlanFormat::kImdf);
@@ -146,8 +146,7 @@ TEST(PlanImport, ImdfFolderImportsUnitsAndOpenings) {
 }
 
 TEST(PlanImport, UserRouteWaypointOutsideThePlanIsAnErrorNotDropped) {
-  const fs::path folder =
-      write_imdf(fs::temp_directory_path() / ("wifislam_imdf_route_" + std::to_string(::getpid())));
+  const fs::path folder = write_imdf(test::scratch_folder() / "imdf");
   const floorplan::ImportedPlan plan = floorplan::import_plan(folder, {});
   fs::remove_all(folder);
   floorplan::SceneOptions options;
@@ -204,9 +203,7 @@ fs::path write_comb(const fs::path& file, int branches) {
 // from its end) and go round its loop twice.
 TEST(PlanImport, AThousandRoomCombGetsATourThatReachesTheEndOfEveryBranch) {
   const int branches = 10;
-  const fs::path file = write_comb(
-      fs::temp_directory_path() / ("wifislam_comb_" + std::to_string(::getpid()) + ".geojson"),
-      branches);
+  const fs::path file = write_comb(test::scratch_folder() / "comb.geojson", branches);
   const floorplan::ImportedPlan plan = floorplan::import_plan(file, {});
   fs::remove(file);
   EXPECT_EQ(plan.counts.rooms, 50 * 2 * branches);

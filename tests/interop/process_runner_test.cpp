@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "interop/process_runner.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::interop {
 namespace {
@@ -18,13 +19,7 @@ namespace fs = std::filesystem;
 
 class ProcessRunner : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("wifislam_process_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }  // this test's own scratch folder
+  void SetUp() override { dir_ = test::scratch_folder(); }
 
   ProcessResult run(std::vector<std::string> argv, double timeout_s = 60.0) {
     ProcessRequest request;

@@ -11,17 +11,14 @@
 
 #include "core/error.hpp"
 #include "plot/canvas.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::plot {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("wifislam_plot_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir / name;
-}
+fs::path scratch(const std::string& name) { return test::scratch_folder() / name; }
 
 TEST(MetricCanvas, NorthIsUpAndOneMetreIsPpmPixels) {
   const MetricCanvas canvas = MetricCanvas::exact({0, 0}, {10, 5}, 20.0);

@@ -21,6 +21,7 @@
 #include "slam/system/slam_system.hpp"
 #include "tests/slam/slam_test_scene.hpp"
 #include "tests/slam/trajectory_error.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -256,8 +257,7 @@ TEST(RgbdslamEndToEnd, AnotherFrontEndRunsWithTheWifiModule) {
 }
 
 TEST(RgbdslamEndToEnd, RunsOnAPlainTumFolderWithoutWifi) {
-  const fs::path root = fs::temp_directory_path() / "wifislam_slam_tum_test";
-  fs::remove_all(root);
+  const fs::path root = test::scratch_folder();
   const fs::path generated = root / "generated";
   sim::generate::GenerateOptions generate;
   generate.fps = 5.0;
@@ -289,7 +289,6 @@ TEST(RgbdslamEndToEnd, RunsOnAPlainTumFolderWithoutWifi) {
   const nlohmann::json timing = nlohmann::json::parse(timing_json);
   EXPECT_GT(timing.at("counters").at("ransac_runs").get<int>(), 0);
   EXPECT_TRUE(timing.at("modules").contains("feature_extraction"));
-  fs::remove_all(root);
 }
 
 }  // namespace

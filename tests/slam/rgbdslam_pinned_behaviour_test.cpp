@@ -57,6 +57,7 @@
 #include "tests/cli/shared_dataset.hpp"
 #include "tests/slam/slam_test_scene.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -118,12 +119,9 @@ std::string run_digest(const fs::path& run) {
 class RgbdslamPinnedBehaviour : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    root_ = fs::temp_directory_path() / ("wifislam_pinned_" + std::to_string(::getpid()));
-    fs::remove_all(root_);
-    fs::create_directories(root_);
+    root_ = test::scratch_folder();
     dataset_ = test::shared_dataset(test::small_loop_with_wifi_scene_yaml(), "--fps 3");
   }
-  static void TearDownTestSuite() { fs::remove_all(root_); }
 
   void expect_pinned(const char* variant, const char* flags, const char* expected) {
     ASSERT_FALSE(dataset_.empty()) << "wifislam generate failed";

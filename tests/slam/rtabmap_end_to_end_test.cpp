@@ -21,6 +21,7 @@
 #include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
 #include "tests/cli/shared_dataset.hpp"
 #include "tests/slam/slam_test_scene.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
@@ -43,13 +44,10 @@ std::string log_of(const fs::path& dir) {
 class RtabmapEndToEnd : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = fs::temp_directory_path() / ("wifislam_rtabmap_e2e_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    dir_ = test::scratch_folder();
     dataset_ = test::shared_dataset(test::small_loop_with_wifi_scene_yaml(), "--fps 2");
     generated_ = !dataset_.empty();
   }
-  static void TearDownTestSuite() { fs::remove_all(dir_); }
 
   void run_and_check(bool wifi) {
     ASSERT_TRUE(generated_) << log_of(dir_);

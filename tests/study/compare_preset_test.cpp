@@ -12,17 +12,14 @@
 #include <string>
 
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-
 TEST(ComparePreset, PaperRgbdslamRunsTheCHallTwinAtMinMatches50And70) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("wifislam_compare_preset_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = wifislam::test::scratch_folder();
   const std::string command = std::string(WIFISLAM_BINARY) +
                               " compare --preset paper-rgbdslam --seeds 1 --max-frames 30 "
                               "--no-plots -q -o " +

@@ -17,15 +17,13 @@
 
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::study {
 namespace {
 
 TEST(OrbslamPaperEffect, OnTheBHallTwinWifiAcceptsNoFarWrongPlaceClosure) {
-  const std::filesystem::path out = std::filesystem::temp_directory_path() /
-                                    ("wifislam_orbslam_effect_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(out);
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = test::scratch_folder();
   ComparisonOptions options("orbslam", {"min_matches=10"});
   options.fps = 2.0;
   options.jobs = 2;

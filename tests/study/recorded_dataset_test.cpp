@@ -21,6 +21,7 @@
 #include "study/recorded_dataset.hpp"
 #include "tests/cli/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -30,10 +31,7 @@ namespace fs = std::filesystem;
 using test::read_file;
 
 TEST(RecordedDataset, ReplayedRunsAreTheRunsOfTheDatasetsReader) {
-  const fs::path scratch =
-      fs::temp_directory_path() / ("wifislam_recorded_" + std::to_string(::getpid()));
-  fs::remove_all(scratch);
-  fs::create_directories(scratch);
+  const fs::path scratch = test::scratch_folder();
   sim::generate::GenerateOptions overrides;
   overrides.fps = 3;
   const auto site = std::make_shared<const sim::site::Site>(sim::generate::resolve_scene(

@@ -15,15 +15,13 @@
 
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::study {
 namespace {
 
 TEST(RtabmapPaperEffect, UnderTheTimeThresholdVanillaMissesTheRevisitAndWifiClosesIt) {
-  const std::filesystem::path out = std::filesystem::temp_directory_path() /
-                                    ("wifislam_rtabmap_effect_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(out);
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = test::scratch_folder();
   const sim::scene::Scene scene =
       sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/j_hall.yaml");
   ASSERT_EQ(scene.route.nodes, (std::vector<std::string>{"E", "B", "C", "D", "A", "B", "C"}));

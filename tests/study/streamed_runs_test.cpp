@@ -20,6 +20,7 @@
 #include "slam/system/run_slam.hpp"
 #include "study/comparison_study.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -44,12 +45,7 @@ const char* const kRunFiles[] = {"trajectory.txt", "keyframes.txt", "graph.json"
 
 class StreamedRuns : public ::testing::Test {
  protected:
-  void SetUp() override {
-    scratch_ = fs::temp_directory_path() / ("wifislam_streamed_runs_" + std::to_string(::getpid()));
-    fs::remove_all(scratch_);
-    fs::create_directories(scratch_);
-  }
-  void TearDown() override { fs::remove_all(scratch_); }
+  void SetUp() override { scratch_ = test::scratch_folder(); }
 
   ComparisonResult compare(const std::string& name, int jobs, bool colour) {
     ComparisonOptions options("rgbdslam", {"min_matches=10"});

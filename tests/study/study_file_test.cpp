@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -176,9 +177,7 @@ TEST(StudyFile, FrontEndAxesAreOneKindAndOnlyWhereAFrontEndRuns) {
 // Issue 44: `system: [../sys/x.yaml]` was read from the current folder while `scene:` is read
 // from the study file's: a system file's relative path is the study file's now.
 TEST(StudyFile, ASystemFilesRelativePathIsTheStudyFiles) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("wifislam_study_sys_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const std::filesystem::path dir = test::scratch_folder();
   std::filesystem::create_directories(dir / "studies");
   std::filesystem::create_directories(dir / "sys");
   {

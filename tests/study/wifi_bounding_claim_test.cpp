@@ -27,6 +27,7 @@
 #include "sim/scene/scene_loader.hpp"
 #include "study/comparison_study.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -34,10 +35,7 @@ namespace {
 /// One comparison run (2 seeds x {vanilla, wifi}) checked in one test: ctest runs every test in a
 /// process of its own, so splitting the checks would run the whole comparison once per check.
 TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorridors) {
-  const std::filesystem::path out = std::filesystem::temp_directory_path() /
-                                    ("wifislam_claim_test_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(out);
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = test::scratch_folder();
   ComparisonOptions options("rgbdslam", {"min_matches=10"});
   options.seeds = 2;
   options.jobs = 2;
@@ -92,10 +90,7 @@ TEST(WifiBoundingClaim, OnTheDemoSceneWifiRemovesTheClosuresBetweenLookAlikeCorr
 /// One dataset, two front ends: RGBD-SLAM (the paper's "RGBD SLAM performance") and the ORB-SLAM
 /// style front end ("ORB-SLAM performance"), each vanilla and with Wi-Fi, at default settings.
 TEST(WifiBoundingClaim, OnTheCHallTwinWifiCutsFarFalseLoopClosuresComparisonsAndError) {
-  const std::filesystem::path out = std::filesystem::temp_directory_path() /
-                                    ("wifislam_chall_claim_test_" + std::to_string(::getpid()));
-  std::filesystem::remove_all(out);
-  std::filesystem::create_directories(out);
+  const std::filesystem::path out = test::scratch_folder();
   ComparisonOptions options;
   options.seeds = 1;
   options.fps = 3.0;

@@ -38,11 +38,17 @@ inline ScratchFolders& scratch_folders() {
 
 }  // namespace detail
 
-/// `<tmp>/wifislam_<suite>_<test>_<pid>[_<tag>]`, empty.
+/// `<tmp>/wifislam_<suite>_<test>_<pid>[_<tag>]`, empty (`<test>` is "setup" in SetUpTestSuite).
 inline std::filesystem::path scratch_folder(const std::string& tag = "") {
-  const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string name = "wifislam_" + std::string(info ? info->test_suite_name() : "suite") + "_" +
-                     (info ? info->name() : "setup");
+  const ::testing::UnitTest& unit = *::testing::UnitTest::GetInstance();
+  const ::testing::TestInfo* info = unit.current_test_info();
+  // In SetUpTestSuite no test runs yet: the folder is the suite's ("<suite>_setup").
+  const ::testing::TestSuite* suite = unit.current_test_suite();
+  std::string name = "wifislam_" +
+                     std::string(info    ? info->test_suite_name()
+                                 : suite ? suite->name()
+                                         : "suite") +
+                     "_" + (info ? info->name() : "setup");
   name += "_" + std::to_string(::getpid());
   if (!tag.empty()) name += "_" + tag;  // last: a test may name the folder's suffix (".partial")
   // A parameterised test's names hold slashes ("Scenes/Suite", "Test/0"): one folder, not a tree.

@@ -42,6 +42,7 @@
 #include "sim/world/world_types.hpp"
 #include "tests/radio_model/calibrate/simulated_survey.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::radio_model::calibrate {
 namespace {
@@ -69,8 +70,7 @@ class CalibrationRecovery : public ::testing::Test {
     const radio_model::PropagationModel& model = site_->radio();
 
     // The survey: every free lattice spot, 10 scans of every AP heard there.
-    survey_path_ =
-        fs::temp_directory_path() / fmt::format("wifislam_calibration_{}.csv", ::getpid());
+    survey_path_ = test::scratch_folder("survey") / "survey.csv";
     std::ofstream out(survey_path_);
     out << "x_m,y_m,ap_id,rss_dbm\n";
     const sim::world::FloorPlan& plan = site_->world().plan;

@@ -43,6 +43,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "sim/world/world_types.hpp"
 #include "tests/radio_model/calibrate/simulated_survey.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::radio_model::calibrate {
 namespace {
@@ -64,8 +65,7 @@ TEST(DeviceOffsetRecovery, EachPhonesOffsetIsRecoveredAndAHeldOutPhoneGainsFromI
   ReceiverDevice phone_b, phone_c;
   phone_b.rss_offset_db = kOffsetBDb;
   phone_c.rss_offset_db = kOffsetCDb;
-  const fs::path path =
-      fs::temp_directory_path() / fmt::format("wifislam_device_survey_{}.csv", ::getpid());
+  const fs::path path = test::scratch_folder() / "device_survey.csv";
   {
     std::ofstream out(path);
     out << "device,x_m,y_m,ap_id,rss_dbm\n";  // columns in another order than usual

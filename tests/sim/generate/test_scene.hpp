@@ -10,6 +10,7 @@
 
 #include "sim/scene/scene_loader.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::test {
 
@@ -41,14 +42,10 @@ inline sim::scene::Scene small_scene() {
   return sim::scene::load_scene_yaml(kSmallSceneYaml, "small_loop.yaml");
 }
 
+/// A folder for `generate` to make, in a scratch folder of this test's own: it does not exist yet,
+/// and neither does its ".partial" staging sibling.
 inline std::filesystem::path fresh_folder(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() /
-      ("wifislam_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::remove_all(dir.string() + ".partial");
-  return dir;
+  return scratch_folder(name) / name;
 }
 
 inline void write_text(const std::filesystem::path& path, const std::string& text) {

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "sim/render/depth_png.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -23,8 +24,7 @@ TEST(DepthPng, RoundTripsAtFiveThousandUnitsPerMetre) {
   depth.at<float>(1, 0) = 13.107f;   // the largest depth that fits: 65535
   depth.at<float>(1, 1) = 14.0f;     // does not fit: no reading rather than a wrong one
   depth.at<float>(1, 2) = -1.0f;     // invalid
-  const fs::path path =
-      fs::temp_directory_path() / ("wifislam_depth_png_" + std::to_string(::getpid()) + ".png");
+  const fs::path path = test::scratch_folder() / "depth.png";
   render::write_depth_png(path, depth);
   const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
   ASSERT_EQ(raw.type(), CV_16UC1);
@@ -41,7 +41,7 @@ TEST(DepthPng, RoundTripsAtFiveThousandUnitsPerMetre) {
 }
 
 TEST(DepthPng, ReadingAColourImageAsDepthIsAClearError) {
-  const fs::path path = fs::temp_directory_path() / "wifislam_depth_png_colour.png";
+  const fs::path path = test::scratch_folder() / "colour.png";
   render::write_color_png(path, cv::Mat(4, 4, CV_8UC3, cv::Scalar(1, 2, 3)));
   try {
     render::read_depth_png(path);

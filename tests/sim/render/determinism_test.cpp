@@ -12,19 +12,14 @@
 
 #include "tests/sim/render/render_frame_tool.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("wifislam_render_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path fresh_dir(const std::string& name) { return test::scratch_folder(name); }
 
 void expect_same_files(const fs::path& a_prefix, const fs::path& b_prefix) {
   for (const char* suffix : {"_rgb.png", "_depth.png"}) {

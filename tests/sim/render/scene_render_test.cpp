@@ -22,6 +22,7 @@
 #include "sim/world/world_generator.hpp"
 #include "tests/sim/render/embree_depth.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -79,10 +80,7 @@ TEST(SceneRender, EveryShippedSceneMatchesEmbreeFromRandomRoutePoses) {
 }
 
 TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
-  const fs::path dir =
-      fs::temp_directory_path() / ("wifislam_render_cli_" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const fs::path dir = test::scratch_folder();
   const fs::path scene_path = fs::path(WIFISLAM_SCENES_DIR) / "aliasing_ladder.yaml";
   const scene::Scene scene = scene::load_scene_file(scene_path.string());
   const world::World world = world::generate_world(scene);

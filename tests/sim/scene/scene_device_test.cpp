@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "tests/sim/scene/scene_text.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -35,14 +36,9 @@ std::string with_wifi(const std::string& wifi_block) {
 /// A folder of its own for files a test writes, removed with the fixture.
 class SceneDeviceFiles : public ::testing::Test {
  protected:
-  SceneDeviceFiles()
-      : dir_(fs::temp_directory_path() /
-             ("wifislam_scene_device_" +
-              std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()) + "_" +
-              std::to_string(::getpid()))) {
+  SceneDeviceFiles() : dir_(wifislam::test::scratch_folder()) {
     fs::create_directories(dir_ / "devices");
   }
-  ~SceneDeviceFiles() override { fs::remove_all(dir_); }
   fs::path write(const std::string& relative, const std::string& text) {
     std::ofstream(dir_ / relative) << text;
     return dir_ / relative;

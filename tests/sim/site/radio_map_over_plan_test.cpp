@@ -14,6 +14,7 @@
 #include "sim/world/plan_queries.hpp"
 #include "tests/radio_model/test_walls.hpp"
 #include "tests/sim/site/test_plan.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::radio_model {
 namespace {
@@ -107,8 +108,7 @@ TEST(RadioMap, WritesAReadablePngAndACsvWithOneRowPerCell) {
   RadioMapOptions o;
   o.resolution_m = 0.25;
   const RadioMap map = sim::site::compute_radio_map(*f.model, f.plan, o);
-  const auto dir = std::filesystem::temp_directory_path() / "wifislam_radio_map_test";
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::scratch_folder();
   const auto png = dir / "map.png", csv = dir / "map.csv";
   sim::site::write_radio_map_png(map, f.plan, f.model->access_points(), png);
   write_radio_map_csv(map, csv);

@@ -18,6 +18,7 @@
 #include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_types.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -77,9 +78,7 @@ TEST(Site, TheReceiverRidesWithTheCamera) {
 
 // `wifislam radiomap` without --height maps at the camera height, where the dataset's scans are.
 TEST(Site, RadioMapCommandDefaultsToTheCameraHeight) {
-  const auto dir = std::filesystem::temp_directory_path() / "wifislam_site_test_radiomap";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::scratch_folder();
   std::ofstream(dir / "scene.yaml") << kLoopWithApSeed;
   auto map_csv = [&](const std::string& extra, const std::string& name) {
     const std::string cmd = std::string(WIFISLAM_BINARY) + " radiomap " +

@@ -8,6 +8,7 @@
 #include "sim/world/plan_drawing.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/sim/world/world_test_support.hpp"
+#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -19,10 +20,7 @@ std::string read_all(const std::filesystem::path& p) {
 
 TEST(PlanDrawing, WritesPngAndSvgAtomically) {
   const world::World world = world::generate_world(test::square_loop_scene());
-  const auto dir =
-      std::filesystem::temp_directory_path() /
-      ("wifislam_plan_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
-  std::filesystem::create_directories(dir);
+  const std::filesystem::path dir = test::scratch_folder();
   world::PlanDrawingOptions options;
   options.title = "square loop";
   options.access_points_m = {{3, 3, 2.5}, {10, -3, 2.5}};
@@ -36,7 +34,6 @@ TEST(PlanDrawing, WritesPngAndSvgAtomically) {
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "plan.png.partial"));
   EXPECT_FALSE(std::filesystem::exists(dir / "plan.svg.partial"));
-  std::filesystem::remove_all(dir);
 }
 
 TEST(PlanDrawing, UnwritablePathIsAnIoError) {
