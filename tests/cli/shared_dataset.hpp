@@ -56,8 +56,8 @@ inline std::filesystem::path shared_dataset(const std::string& scene_yaml,
   std::error_code taken;  // another process renamed its copy first: use that one
   fs::rename(staging / "dataset", dataset, taken);
   fs::remove_all(staging);
-  // This process's copy or the one another process renamed first; neither (a rename that failed
-  // for another reason) is a dataset the tests cannot read.
+  // The dataset is this process's copy or the copy another process renamed first. If it is
+  // neither, the rename failed for another reason: report that as a failed generate.
   return fs::exists(dataset / "manifest.json") ? dataset : fs::path{};
 }
 

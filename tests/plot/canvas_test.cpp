@@ -18,7 +18,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) { return test::scratch_folder() / name; }
+/// A file of that name in a scratch folder of its own (a second call in one test would empty a
+/// shared one).
+fs::path scratch(const std::string& name) { return test::scratch_folder(name) / name; }
 
 TEST(MetricCanvas, NorthIsUpAndOneMetreIsPpmPixels) {
   const MetricCanvas canvas = MetricCanvas::exact({0, 0}, {10, 5}, 20.0);
