@@ -3,22 +3,34 @@
 // ctest shows a crashed test as "SegFault" with the test's output, and GoogleTest prints nothing
 // of a crash, so a rare crash on a CI machine leaves nothing to go on. Here a fatal signal prints
 // the test that was running and a backtrace to stderr, then the process dies of the same signal
-// (ctest still sees the crash). Frames of the test executable print as `binary(+0xoffset)`:
-// `addr2line -f -C -e <binary> <offset>` on a build of the same commit names the line.
+// (ctest still sees the crash). The backtrace is backtrace_symbols_fd's: shared libraries' frames
+// by their exported names, the executable's as `binary(+0xoffset)` because its own symbols are
+// not exported. So addr2line, run on the executable while it still exists, names those frames
+// after it: a CI machine's build is gone when its log is read, and a build elsewhere (another
+// checkout path, other __FILE__ strings) may place the code at other offsets.
 
 #include <execinfo.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
+
+// The linker's symbols for the first byte of the executable's image and the end of its code.
+extern "C" char __executable_start;
+extern "C" char etext;
 
 namespace {
 
-// Written from the handler, so everything it prints is ready beforehand in fixed buffers.
+// Used from the handler, so everything it needs is ready beforehand in fixed buffers.
 char running_test[512] = "(no test running)";
+char executable_path[4096] = "";
 char alternate_stack[64 * 1024];  // the handler's stack: a stack overflow leaves none of its own
+constexpr int kMaxFrames = 64;
 
 void write_text(const char* text) {
   std::size_t left = std::strlen(text);
@@ -30,16 +42,86 @@ void write_text(const char* text) {
   }
 }
 
+const char* signal_name(int signal_number) {
+  switch (signal_number) {
+    case SIGSEGV:
+      return "SIGSEGV (segmentation fault)";
+    case SIGBUS:
+      return "SIGBUS (bus error)";
+    case SIGILL:
+      return "SIGILL (illegal instruction)";
+    case SIGFPE:
+      return "SIGFPE (arithmetic exception)";
+    case SIGABRT:
+      return "SIGABRT (abort)";
+    default:
+      return "(another signal)";
+  }
+}
+
+/// "0x<hex>" of `value` into `out` (at least 19 bytes): snprintf is not async-signal-safe.
+void format_hex(std::uintptr_t value, char* out) {
+  char digits[16];
+  int n = 0;
+  do {
+    digits[n++] = "0123456789abcdef"[value & 0xf];
+    value >>= 4;
+  } while (value != 0);
+  *out++ = '0';
+  *out++ = 'x';
+  while (n > 0) *out++ = digits[--n];
+  *out = '\0';
+}
+
+/// Runs addr2line on the frames in the executable's code, printing their function names.
+void name_own_frames(void* const* frames, int count) {
+  if (executable_path[0] == '\0') return;
+  static char offsets[kMaxFrames][20];
+  // Without debug information addr2line's "at file:?" names whichever source file the linker
+  // listed last before the function, often not its own: only the function name is kept.
+  const char* argv[kMaxFrames + 8] = {
+      "sh", "-c", "/usr/bin/addr2line -f -C -p -e \"$0\" \"$@\" | /usr/bin/sed 's/ at [^ ]*:?$//'",
+      executable_path};
+  constexpr int kFixedArguments = 4;
+  int argc = kFixedArguments;
+  const auto begin = reinterpret_cast<std::uintptr_t>(&__executable_start);
+  const auto end = reinterpret_cast<std::uintptr_t>(&etext);
+  for (int i = 0; i < count; ++i) {
+    const auto address = reinterpret_cast<std::uintptr_t>(frames[i]);
+    if (address < begin || address >= end) continue;
+    // A return address is the instruction after the call: one byte back is the call's line.
+    format_hex(address - begin - (i > 0 ? 1 : 0), offsets[i]);
+    argv[argc++] = offsets[i];
+  }
+  if (argc == kFixedArguments) return;
+  argv[argc] = nullptr;
+  write_text("the executable's frames, named by addr2line (innermost first):\n");
+  // The raw system call: glibc's fork() runs the atfork handlers of the libraries loaded, which may
+  // take locks the crashed thread holds. The child only redirects a descriptor and execs.
+  const long child = ::syscall(SYS_fork);
+  if (child == 0) {
+    ::dup2(STDERR_FILENO, STDOUT_FILENO);
+    ::execv("/bin/sh", const_cast<char* const*>(argv));
+    ::_exit(127);
+  }
+  if (child > 0) {
+    int status = 0;
+    ::waitpid(static_cast<pid_t>(child), &status, 0);
+  }
+}
+
 extern "C" void report_fatal_signal(int signal_number) {
-  // Only async-signal-safe calls: write, backtrace (primed below), backtrace_symbols_fd, raise.
+  // Only async-signal-safe calls, but backtrace (primed at installation, so it does not load
+  // libgcc here) and backtrace_symbols_fd, which glibc writes without allocating.
   write_text("\n*** fatal signal ");
-  write_text(::strsignal(signal_number) != nullptr ? ::strsignal(signal_number) : "?");
+  write_text(signal_name(signal_number));
   write_text(" in test ");
   write_text(running_test);
   write_text("; backtrace (innermost first):\n");
-  void* frames[64];
-  const int count = ::backtrace(frames, 64);
+  void* frames[kMaxFrames];
+  const int count = ::backtrace(frames, kMaxFrames);
   ::backtrace_symbols_fd(frames, count, STDERR_FILENO);
+  name_own_frames(frames, count);
   // SA_RESETHAND restored the default action: dying of the same signal is what ctest reports.
   ::raise(signal_number);
 }
@@ -58,6 +140,8 @@ void install_fatal_signal_report() {
   // backtrace() loads libgcc's unwinder on its first call, which allocates: not in a handler.
   void* warm_up[1];
   ::backtrace(warm_up, 1);
+  const ssize_t length = ::readlink("/proc/self/exe", executable_path, sizeof executable_path - 1);
+  executable_path[length > 0 ? length : 0] = '\0';
   stack_t stack{};
   stack.ss_sp = alternate_stack;
   stack.ss_size = sizeof alternate_stack;

@@ -1,5 +1,6 @@
 // The suites' main (test_main.cpp): a test process that dies of a signal names the test that was
-// running and prints a backtrace, and still dies of that signal, so ctest reports the crash.
+// running and prints a backtrace with the executable's frames named, and still dies of that signal,
+// so ctest reports the crash.
 
 #include <gtest/gtest.h>
 
@@ -29,12 +30,16 @@ TEST(TestMain, ACrashedTestIsNamedWithABacktraceAndTheProcessDiesOfItsSignal) {
 #else
   ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status << "\n" << printed;
   EXPECT_EQ(WTERMSIG(status), SIGSEGV);
-  EXPECT_NE(printed.find("*** fatal signal Segmentation fault in test "
+  EXPECT_NE(printed.find("*** fatal signal SIGSEGV (segmentation fault) in test "
                          "CrashingProbe.DiesOfASegmentationFault; backtrace"),
             std::string::npos)
       << printed;
-  // The frames: the probe's own among them, as `binary(+0xoffset)`.
-  EXPECT_NE(printed.find("crashing_test_probe("), std::string::npos) << printed;
+  // The probe's own frames, as offsets, then named by addr2line: the handler, GoogleTest's.
+  EXPECT_NE(printed.find("crashing_test_probe(+0x"), std::string::npos) << printed;
+  const std::size_t named = printed.find("the executable's frames, named by addr2line");
+  ASSERT_NE(named, std::string::npos) << printed;
+  EXPECT_NE(printed.find("report_fatal_signal", named), std::string::npos) << printed;
+  EXPECT_NE(printed.find("testing::Test::Run()", named), std::string::npos) << printed;
 #endif
 }
 
