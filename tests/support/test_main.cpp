@@ -31,6 +31,11 @@ char running_test[512] = "(no test running)";
 char executable_path[4096] = "";
 char alternate_stack[64 * 1024];  // the handler's stack: a stack overflow leaves none of its own
 constexpr int kMaxFrames = 64;
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
 
 void write_text(const char* text) {
   std::size_t left = std::strlen(text);
@@ -159,10 +164,8 @@ void install_fatal_signal_report() {
 
 int main(int argc, char** argv) {
   ::testing::InitGoogleTest(&argc, argv);
-#if !defined(__SANITIZE_ADDRESS__)
   // Under AddressSanitizer its own SEGV report, with the faulting access, is the better one.
-  install_fatal_signal_report();
-#endif
+  if (!kAddressSanitizer) install_fatal_signal_report();
   ::testing::UnitTest::GetInstance()->listeners().Append(new RunningTestName);
   return RUN_ALL_TESTS();
 }
