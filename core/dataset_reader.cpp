@@ -11,14 +11,13 @@
 #include <unordered_set>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/atomic_file.hpp"
 #include "core/dataset_format.hpp"
 #include "core/depth_png.hpp"
 #include "core/error.hpp"
 #include "core/line_cursor.hpp"
 #include "core/output_folder.hpp"
+#include "core/png_codec.hpp"
 #include "core/text_lines.hpp"
 #include "core/wifi_csv.hpp"
 
@@ -52,23 +51,11 @@ void check_size(const cv::Mat& image, const CameraIntrinsics& k, const std::stri
   }
 }
 
-/// cv::imdecode with its assertions (an empty buffer, a malformed header) turned into a located
-/// error; an empty result means OpenCV could not read the bytes as an image.
-cv::Mat decode_image(const std::vector<unsigned char>& bytes, int flags, const std::string& name) {
-  if (bytes.empty()) throw ParseError(name, "", "the file is empty (0 bytes), not a PNG image");
-  try {
-    return cv::imdecode(bytes, flags);
-  } catch (const cv::Exception& e) {
-    throw ParseError(name, "", "not a readable PNG image (" + e.err + ")");
-  }
-}
-
 }  // namespace
 
 cv::Mat decode_depth_png(const std::vector<unsigned char>& bytes, double units_per_metre,
                          const std::string& name) {
-  const cv::Mat raw = decode_image(bytes, cv::IMREAD_UNCHANGED, name);
-  if (raw.empty()) throw ParseError(name, "", "not a readable PNG image (corrupt or truncated)");
+  const cv::Mat raw = decode_png(bytes, name);
   if (raw.type() != CV_16UC1) {
     throw ParseError(name, "",
                      fmt::format("depth image must be 16-bit single-channel (TUM: {} units per "
@@ -320,12 +307,10 @@ DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
     }
   }
   DecodedImages out;
-  // IMREAD_COLOR would scale a 16-bit image (a depth map in the RGB list) down to 8 bits and
-  // expand grey or drop alpha without a word; read as stored, anything but 8-bit colour is refused.
-  out.rgb = decode_image(rgb_bytes, cv::IMREAD_UNCHANGED, rgb_file.string());
-  if (out.rgb.empty()) {
-    throw ParseError(rgb_file.string(), "", "not a readable PNG image (corrupt or truncated)");
-  }
+  // Read as stored, not converted to colour (which would scale a 16-bit image, a depth map in the
+  // RGB list, down to 8 bits, or expand grey or drop alpha without a word): anything but 8-bit
+  // colour is refused.
+  out.rgb = decode_png(rgb_bytes, rgb_file.string());
   if (out.rgb.depth() != CV_8U) {
     throw ParseError(rgb_file.string(), "",
                      fmt::format("an RGB image must have 8 bits per channel, this one has {} "

@@ -1,9 +1,8 @@
 #include "eval/dataset_depth.hpp"
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/dataset_format.hpp"
 #include "core/error.hpp"
+#include "core/png_codec.hpp"
 #include "core/tum_file_list.hpp"
 #include "eval/association.hpp"
 
@@ -32,8 +31,7 @@ const DepthView* DatasetDepth::view(Timestamp t) {
   if (!std::filesystem::exists(path)) {
     throw IoError(path.string() + ": depth image listed in depth.txt is missing");
   }
-  const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
-  if (raw.empty()) throw IoError(path.string() + ": cannot read the depth image");
+  const cv::Mat raw = read_png(path);
   if (raw.type() != CV_16UC1) {
     throw ParseError(path.string(), "", "expected a 16-bit single-channel depth PNG");
   }

@@ -9,7 +9,8 @@ packages=(
   mold                                   # the linker (CMakeLists.txt): links in a third of GNU ld's time
   libosmesa6-dev                         # off-screen OpenGL (llvmpipe)
   libembree-dev                          # ray casting for the radio model
-  libopencv-dev                          # images, ORB features, RANSAC, PNG
+  libopencv-dev                          # images, ORB features, RANSAC
+  libpng-dev                             # PNG files of datasets (core/png_codec.hpp)
   libeigen3-dev                          # linear algebra, poses
   libcgal-dev libgmp-dev libmpfr-dev     # floor-plan polygon booleans
   libgdal-dev libproj-dev libgeos-dev    # floor-plan import: GeoJSON/OSM reading, projection, buffers

@@ -12,6 +12,7 @@
 #include <pybind11/stl.h>
 
 #include "core/error.hpp"
+#include "core/png_codec.hpp"
 #include "python/bindings/bindings.hpp"
 #include "python/bindings/numpy_convert.hpp"
 #include "radio_model/propagation_model.hpp"
@@ -149,12 +150,12 @@ void bind_views(py::module_& m) {
         py::arg("band"), py::arg("height_m"), py::arg("level"));
   m.def(
       "_encode_rgb_png",
-      [](const py::array& rgb) { return png_bytes(sim::render::encode_png(bgr_mat(rgb, "rgb"))); },
+      [](const py::array& rgb) { return png_bytes(encode_png(bgr_mat(rgb, "rgb"))); },
       py::arg("rgb"));
   m.def(
       "_encode_depth_png",
       [](const py::array& depth) {
-        return png_bytes(sim::render::encode_png(depth_to_png_units(depth_mat(depth, "depth"))));
+        return png_bytes(encode_png(depth_to_png_units(depth_mat(depth, "depth"))));
       },
       py::arg("depth"));
 }

@@ -22,6 +22,7 @@
 #include "core/error.hpp"
 #include "core/imu_csv.hpp"
 #include "core/imu_groundtruth_csv.hpp"
+#include "core/png_codec.hpp"
 #include "core/text_lines.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
@@ -77,9 +78,9 @@ WrittenFrame encode_and_write(const fs::path& folder, const std::string& rgb_pat
   WrittenFrame out;
   auto t0 = WallClock::now();
   const std::vector<unsigned char> rgb_png =
-      rgb.empty() ? std::vector<unsigned char>{} : render::encode_png(rgb);
+      rgb.empty() ? std::vector<unsigned char>{} : encode_png(rgb);
   const std::vector<unsigned char> depth_png =
-      render::encode_png(depth.type() == CV_16UC1 ? depth : depth_to_png_units(depth));
+      encode_png(depth.type() == CV_16UC1 ? depth : depth_to_png_units(depth));
   out.encode_s = seconds_since(t0);
   t0 = WallClock::now();
   for (const auto& [relative, bytes, sha] :

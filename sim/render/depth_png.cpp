@@ -4,22 +4,13 @@
 #include <string_view>
 
 #include <fmt/core.h>
-#include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/png_codec.hpp"
 
 namespace wifislam::sim::render {
-
-std::vector<unsigned char> encode_png(const cv::Mat& image) {
-  std::vector<unsigned char> bytes;
-  if (!cv::imencode(".png", image, bytes)) {
-    throw IoError(fmt::format("cannot encode a {}x{} image of type {} as PNG", image.cols,
-                              image.rows, image.type()));
-  }
-  return bytes;
-}
 
 namespace {
 void write_png(const std::filesystem::path& path, const cv::Mat& image) {
@@ -39,8 +30,7 @@ void write_depth_png(const std::filesystem::path& path, const cv::Mat& depth_m) 
 }
 
 cv::Mat read_depth_png(const std::filesystem::path& path) {
-  const cv::Mat units = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
-  if (units.empty()) throw IoError(fmt::format("{}: cannot read the depth image", path.string()));
+  const cv::Mat units = read_png(path);
   if (units.type() != CV_16UC1) {
     throw IoError(
         fmt::format("{}: a depth image must be a 16-bit single-channel PNG (TUM, 5000 "

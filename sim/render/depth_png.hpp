@@ -1,8 +1,8 @@
 #pragma once
 // Image files of RGB-D frames. Depth follows the TUM RGB-D convention: 16-bit PNG, 5000 units
 // per metre, 0 = no reading (its conversions: core/depth_png.hpp). Writes are atomic
-// (core/atomic_file.hpp) and the PNG bytes depend only on the pixels, so equal frames give
-// byte-identical files.
+// (core/atomic_file.hpp) and the PNG bytes depend only on the pixels (core/png_codec.hpp), so
+// equal frames give byte-identical files.
 
 #include <filesystem>
 #include <string>
@@ -14,14 +14,12 @@
 
 namespace wifislam::sim::render {
 
-/// PNG bytes of an 8-bit (1 or 3 channel, BGR) or 16-bit image; throws IoError on failure.
-std::vector<unsigned char> encode_png(const cv::Mat& image);
-
 /// Writes a colour image (CV_8UC3, BGR) as PNG.
 void write_color_png(const std::filesystem::path& path, const cv::Mat& color_bgr);
 /// Writes depth (CV_32FC1 metres) as a TUM 16-bit depth PNG.
 void write_depth_png(const std::filesystem::path& path, const cv::Mat& depth_m);
-/// Reads a TUM depth PNG into metres. Throws IoError when the file is missing or not 16-bit.
+/// Reads a TUM depth PNG into metres. Throws IoError when the file is missing or not 16-bit,
+/// ParseError when it is not a readable PNG.
 cv::Mat read_depth_png(const std::filesystem::path& path);
 
 /// Depth for people to look at: a colour map from near (`min_m`, red) to far (`max_m`, blue),

@@ -8,13 +8,13 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
-#include <opencv2/imgcodecs.hpp>
 
 #include "core/dataset_calibration.hpp"
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/imu_csv.hpp"
 #include "core/imu_groundtruth_csv.hpp"
+#include "core/png_codec.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
@@ -173,7 +173,7 @@ TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
   }
   EXPECT_EQ(pairs, 30);
   // Depth PNGs are TUM's 16-bit format.
-  const cv::Mat depth_png = cv::imread((dir / depth[5].path).string(), cv::IMREAD_UNCHANGED);
+  const cv::Mat depth_png = read_png(dir / depth[5].path);
   EXPECT_EQ(depth_png.type(), CV_16UC1);
   fs::remove_all(dir);
 }

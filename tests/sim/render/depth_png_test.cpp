@@ -5,9 +5,8 @@
 #include <unistd.h>
 #include <filesystem>
 
-#include <opencv2/imgcodecs.hpp>
-
 #include "core/error.hpp"
+#include "core/png_codec.hpp"
 #include "sim/render/depth_png.hpp"
 #include "tests/support/scratch_folder.hpp"
 
@@ -26,7 +25,7 @@ TEST(DepthPng, RoundTripsAtFiveThousandUnitsPerMetre) {
   depth.at<float>(1, 2) = -1.0f;     // invalid
   const fs::path path = test::scratch_folder() / "depth.png";
   render::write_depth_png(path, depth);
-  const cv::Mat raw = cv::imread(path.string(), cv::IMREAD_UNCHANGED);
+  const cv::Mat raw = read_png(path);
   ASSERT_EQ(raw.type(), CV_16UC1);
   EXPECT_EQ(raw.at<std::uint16_t>(0, 0), 5000);
   EXPECT_EQ(raw.at<std::uint16_t>(0, 1), 0);
