@@ -6,6 +6,7 @@
 
 #include <regex>
 
+#include <opencv2/core.hpp>
 
 #include "core/atomic_file.hpp"
 #include "core/dataset_format.hpp"
@@ -25,9 +26,9 @@ void write_frame_images(const fs::path& dir, Timestamp t, int k, int w, int h) {
   fs::create_directories(dir / "rgb");
   fs::create_directories(dir / "depth");
   test::write_png(dir / dataset::frame_image_path(dataset::kRgbDir, t),
-              cv::Mat(h, w, CV_8UC3, cv::Scalar(k, 2 * k, 3 * k)));
+                  cv::Mat(h, w, CV_8UC3, cv::Scalar(k, 2 * k, 3 * k)));
   test::write_png(dir / dataset::frame_image_path(dataset::kDepthDir, t),
-              cv::Mat(h, w, CV_16UC1, cv::Scalar((k + 1) * 5000)));
+                  cv::Mat(h, w, CV_16UC1, cv::Scalar((k + 1) * 5000)));
 }
 
 Timestamp frame_time(int k) { return Timestamp::from_ns(k * 100'000'000LL); }  // 10 Hz
@@ -216,7 +217,7 @@ TEST(DatasetReader, ChangedImageIsCaughtWhenItIsRead) {
   const auto dir = test::fresh_folder("image");
   write_ours(dir);
   test::write_png(dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(2)),
-              cv::Mat(24, 32, CV_8UC3, cv::Scalar(9, 9, 9)));
+                  cv::Mat(24, 32, CV_8UC3, cv::Scalar(9, 9, 9)));
   const std::string e = open_error(dir);
   EXPECT_NE(e.find("rgb/0.200000.png"), std::string::npos) << e;
   EXPECT_NE(e.find("manifest mismatch"), std::string::npos) << e;
@@ -246,7 +247,7 @@ TEST(DatasetReader, PrefetchingGivesTheSameFramesAndTheSameErrorAtTheSameFrame) 
   }
   // Frame 3's depth image changed: frames 0..2 come out, then the error naming the file.
   test::write_png(dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(3)),
-              cv::Mat(24, 32, CV_16UC1, cv::Scalar(1234)));
+                  cv::Mat(24, 32, CV_16UC1, cv::Scalar(1234)));
   DatasetReader reader(dir, {.prefetch_frames = 4});
   int frames = 0;
   try {
