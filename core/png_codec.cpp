@@ -73,16 +73,30 @@ bool write_rows(png_structp png, png_infop info, png_uint_32 width, png_uint_32 
   return true;
 }
 
-class PngWriteStruct {
+enum class PngDirection { kWrite, kRead };
+
+/// Owns a libpng write or read struct and its info struct; `info()` is null when libpng could not
+/// allocate them.
+template <PngDirection kDirection>
+class PngStruct {
  public:
-  explicit PngWriteStruct(PngMessage* message)
-      : png_(
-            png_create_write_struct(PNG_LIBPNG_VER_STRING, message, on_png_error, on_png_warning)) {
+  explicit PngStruct(PngMessage* message)
+      : png_(kDirection == PngDirection::kWrite
+                 ? png_create_write_struct(PNG_LIBPNG_VER_STRING, message, on_png_error,
+                                           on_png_warning)
+                 : png_create_read_struct(PNG_LIBPNG_VER_STRING, message, on_png_error,
+                                          on_png_warning)) {
     if (png_ != nullptr) info_ = png_create_info_struct(png_);
   }
-  ~PngWriteStruct() { png_destroy_write_struct(&png_, &info_); }
-  PngWriteStruct(const PngWriteStruct&) = delete;
-  PngWriteStruct& operator=(const PngWriteStruct&) = delete;
+  ~PngStruct() {
+    if constexpr (kDirection == PngDirection::kWrite) {
+      png_destroy_write_struct(&png_, &info_);
+    } else {
+      png_destroy_read_struct(&png_, &info_, nullptr);
+    }
+  }
+  PngStruct(const PngStruct&) = delete;
+  PngStruct& operator=(const PngStruct&) = delete;
   png_structp png() const { return png_; }
   png_infop info() const { return info_; }
 
@@ -168,23 +182,6 @@ bool read_rows(png_structp png, png_infop info, const PngHeader* header, int cha
   return true;
 }
 
-class PngReadStruct {
- public:
-  explicit PngReadStruct(PngMessage* message)
-      : png_(png_create_read_struct(PNG_LIBPNG_VER_STRING, message, on_png_error, on_png_warning)) {
-    if (png_ != nullptr) info_ = png_create_info_struct(png_);
-  }
-  ~PngReadStruct() { png_destroy_read_struct(&png_, &info_, nullptr); }
-  PngReadStruct(const PngReadStruct&) = delete;
-  PngReadStruct& operator=(const PngReadStruct&) = delete;
-  png_structp png() const { return png_; }
-  png_infop info() const { return info_; }
-
- private:
-  png_structp png_ = nullptr;
-  png_infop info_ = nullptr;
-};
-
 // OpenCV's limits on a decoded image (CV_IO_MAX_IMAGE_WIDTH, _HEIGHT, _PIXELS): a header that
 // claims more is refused before any allocation.
 constexpr png_uint_32 kMaxSidePx = 1u << 20;
@@ -212,7 +209,7 @@ std::vector<unsigned char> encode_png(const cv::Mat& image) {
                     image.cols, image.rows, image.type()));
   }
   PngMessage message;
-  PngWriteStruct png(&message);
+  PngStruct<PngDirection::kWrite> png(&message);
   if (png.info() == nullptr) throw IoError("cannot encode a PNG image: libpng is out of memory");
   std::vector<unsigned char> bytes;
   png_set_write_fn(png.png(), &bytes, append_to_vector, flush_nothing);
@@ -236,7 +233,7 @@ cv::Mat decode_png(std::span<const unsigned char> bytes, const std::string& name
                      "not a readable PNG image (it does not start with the PNG signature)");
   }
   PngMessage message;
-  PngReadStruct png(&message);
+  PngStruct<PngDirection::kRead> png(&message);
   if (png.info() == nullptr) throw IoError(name + ": cannot decode the PNG: out of memory");
   MemoryInput input{bytes.data(), bytes.size(), 0};
   png_set_read_fn(png.png(), &input, read_from_memory);
