@@ -11,6 +11,7 @@
 #include <unordered_set>
 
 #include <fmt/format.h>
+
 #include "core/atomic_file.hpp"
 #include "core/dataset_format.hpp"
 #include "core/depth_png.hpp"

@@ -4,16 +4,20 @@
 
 #include <bit>
 #include <csetjmp>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <iterator>
 #include <new>
 #include <stdexcept>
+#include <string_view>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 
+#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 
 namespace wifislam {
@@ -257,6 +261,12 @@ cv::Mat decode_png(std::span<const unsigned char> bytes, const std::string& name
     throw unreadable();
   }
   return image;
+}
+
+void write_png(const std::filesystem::path& path, const cv::Mat& image) {
+  const std::vector<unsigned char> bytes = encode_png(image);
+  write_file_atomic(path,
+                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 cv::Mat read_png(const std::filesystem::path& path) {

@@ -32,6 +32,9 @@ std::vector<unsigned char> encode_png(const cv::Mat& image);
 /// OpenCV's limits (2^20 pixels a side, 2^30 in all).
 cv::Mat decode_png(std::span<const unsigned char> bytes, const std::string& name);
 
+/// encode_png's bytes written to `path` atomically (core/atomic_file.hpp).
+void write_png(const std::filesystem::path& path, const cv::Mat& image);
+
 /// decode_png of a file's bytes. Throws IoError when the file cannot be read.
 cv::Mat read_png(const std::filesystem::path& path);
 

@@ -1,24 +1,14 @@
 #include "sim/render/depth_png.hpp"
 
 #include <cmath>
-#include <string_view>
 
 #include <fmt/core.h>
 #include <opencv2/imgproc.hpp>
 
-#include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/png_codec.hpp"
 
 namespace wifislam::sim::render {
-
-namespace {
-void write_png(const std::filesystem::path& path, const cv::Mat& image) {
-  const std::vector<unsigned char> bytes = encode_png(image);
-  write_file_atomic(path,
-                    std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
-}
-}  // namespace
 
 void write_color_png(const std::filesystem::path& path, const cv::Mat& color_bgr) {
   CV_Assert(color_bgr.type() == CV_8UC3);

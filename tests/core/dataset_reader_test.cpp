@@ -11,10 +11,10 @@
 #include "core/atomic_file.hpp"
 #include "core/dataset_format.hpp"
 #include "core/error.hpp"
+#include "core/png_codec.hpp"
 #include "core/wifi_csv.hpp"
 #include "tests/core/test_folder.hpp"
 #include "tests/support/read_file.hpp"
-#include "tests/support/write_png.hpp"
 
 namespace wifislam {
 namespace {
@@ -25,10 +25,10 @@ namespace fs = std::filesystem;
 void write_frame_images(const fs::path& dir, Timestamp t, int k, int w, int h) {
   fs::create_directories(dir / "rgb");
   fs::create_directories(dir / "depth");
-  test::write_png(dir / dataset::frame_image_path(dataset::kRgbDir, t),
-                  cv::Mat(h, w, CV_8UC3, cv::Scalar(k, 2 * k, 3 * k)));
-  test::write_png(dir / dataset::frame_image_path(dataset::kDepthDir, t),
-                  cv::Mat(h, w, CV_16UC1, cv::Scalar((k + 1) * 5000)));
+  write_png(dir / dataset::frame_image_path(dataset::kRgbDir, t),
+            cv::Mat(h, w, CV_8UC3, cv::Scalar(k, 2 * k, 3 * k)));
+  write_png(dir / dataset::frame_image_path(dataset::kDepthDir, t),
+            cv::Mat(h, w, CV_16UC1, cv::Scalar((k + 1) * 5000)));
 }
 
 Timestamp frame_time(int k) { return Timestamp::from_ns(k * 100'000'000LL); }  // 10 Hz
@@ -216,8 +216,8 @@ TEST(DatasetReader, ManifestMismatchIsAnErrorUnlessVerificationIsOff) {
 TEST(DatasetReader, ChangedImageIsCaughtWhenItIsRead) {
   const auto dir = test::fresh_folder("image");
   write_ours(dir);
-  test::write_png(dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(2)),
-                  cv::Mat(24, 32, CV_8UC3, cv::Scalar(9, 9, 9)));
+  write_png(dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(2)),
+            cv::Mat(24, 32, CV_8UC3, cv::Scalar(9, 9, 9)));
   const std::string e = open_error(dir);
   EXPECT_NE(e.find("rgb/0.200000.png"), std::string::npos) << e;
   EXPECT_NE(e.find("manifest mismatch"), std::string::npos) << e;
@@ -246,8 +246,8 @@ TEST(DatasetReader, PrefetchingGivesTheSameFramesAndTheSameErrorAtTheSameFrame) 
     }
   }
   // Frame 3's depth image changed: frames 0..2 come out, then the error naming the file.
-  test::write_png(dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(3)),
-                  cv::Mat(24, 32, CV_16UC1, cv::Scalar(1234)));
+  write_png(dir / dataset::frame_image_path(dataset::kDepthDir, frame_time(3)),
+            cv::Mat(24, 32, CV_16UC1, cv::Scalar(1234)));
   DatasetReader reader(dir, {.prefetch_frames = 4});
   int frames = 0;
   try {
@@ -305,13 +305,13 @@ TEST(DatasetReader, SixteenBitImageInTheRgbSlotIsRefused) {
   const auto dir = test::fresh_folder("rgb16");
   write_plain_tum(dir, 3);
   const fs::path rgb = dir / dataset::frame_image_path(dataset::kRgbDir, frame_time(1));
-  test::write_png(rgb, cv::Mat(480, 640, CV_16UC1, cv::Scalar(5000)));
+  write_png(rgb, cv::Mat(480, 640, CV_16UC1, cv::Scalar(5000)));
   std::string e = open_error(dir);
   EXPECT_NE(e.find("rgb/0.100000.png"), std::string::npos) << e;
   EXPECT_NE(e.find("8 bits per channel"), std::string::npos) << e;
   EXPECT_NE(e.find("has 16"), std::string::npos) << e;
   EXPECT_NE(e.find("rgb.txt:5"), std::string::npos) << e;
-  test::write_png(rgb, cv::Mat(480, 640, CV_16UC3, cv::Scalar(5000, 5000, 5000)));
+  write_png(rgb, cv::Mat(480, 640, CV_16UC3, cv::Scalar(5000, 5000, 5000)));
   EXPECT_NE(open_error(dir).find("8 bits per channel"), std::string::npos);
 }
 
@@ -325,7 +325,7 @@ TEST(DatasetReader, GreyAndAlphaImagesInTheRgbListAreRefused) {
   for (const auto& [image, what] :
        {std::pair{cv::Mat(480, 640, CV_8UC1, cv::Scalar(7)), "has 1 (grey"},
         std::pair{cv::Mat(480, 640, CV_8UC4, cv::Scalar(1, 2, 3, 255)), "has 4 (colour with"}}) {
-    test::write_png(rgb, image);
+    write_png(rgb, image);
     for (const bool verify : {true, false}) {
       const std::string e = open_error(dir, {.verify_checksums = verify});
       EXPECT_NE(e.find("rgb/0.100000.png"), std::string::npos) << e;
@@ -334,7 +334,7 @@ TEST(DatasetReader, GreyAndAlphaImagesInTheRgbListAreRefused) {
       EXPECT_NE(e.find("rgb.txt:5"), std::string::npos) << e;
     }
   }
-  test::write_png(rgb, cv::Mat(480, 640, CV_8UC3, cv::Scalar(1, 2, 3)));
+  write_png(rgb, cv::Mat(480, 640, CV_8UC3, cv::Scalar(1, 2, 3)));
   EXPECT_EQ(open_error(dir), "no error");
 }
 

@@ -20,7 +20,6 @@
 #include "core/error.hpp"
 #include "core/png_codec.hpp"
 #include "tests/support/scratch_folder.hpp"
-#include "tests/support/write_png.hpp"
 
 namespace wifislam {
 namespace {
@@ -237,7 +236,7 @@ TEST(PngCodec, BadBytesAreLocatedErrorsNotImages) {
 TEST(PngCodec, ReadsAFileAndNamesItWhenItCannot) {
   const std::filesystem::path dir = test::scratch_folder();
   const cv::Mat image = test_image(6, 5, CV_16UC1, true, 11);
-  test::write_png(dir / "depth.png", image);
+  write_png(dir / "depth.png", image);
   EXPECT_TRUE(same_pixels(read_png(dir / "depth.png"), image));
   EXPECT_THROW(read_png(dir / "missing.png"), IoError);
   try {
