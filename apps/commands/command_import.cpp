@@ -75,6 +75,11 @@ void run_import(const ImportArgs& args) {
   if (!args.level.empty()) options.level = args.level;
   options.wall_thickness_m = args.wall_thickness_m;
   floorplan::ImportedPlan plan = floorplan::import_plan(args.plan_path, options);
+  // The files read so far may not be the output either: refused now, not after the scene's
+  // route is planned (seconds on a large plan). Other levels' files are checked below.
+  std::vector<std::filesystem::path> read_so_far = plan.input_files;
+  if (args.attribution.empty()) read_so_far.push_back(attribution_file(args));
+  check_output_file(args.output_path, read_so_far);
 
   floorplan::SceneOptions scene_options;
   scene_options.name = args.name;
