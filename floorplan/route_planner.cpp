@@ -23,6 +23,9 @@ struct Grid {
   int width, height;
   cv::Mat1f clearance_m;  // 0 outside walkable space
   cv::Mat1i piece;        // connected piece of cells with enough clearance, 0 = none
+  // By cell index, for the walks' inner loop (every target's Dijkstra visits the whole piece):
+  std::vector<unsigned char> in_piece;  // piece != 0
+  std::vector<double> step_factor;      // a step into the cell costs its length times this
 
   Eigen::Vector2d centre_of(int index) const {
     return origin_m + cell_m * Eigen::Vector2d(index % width + 0.5, index / width + 0.5);
@@ -99,6 +102,14 @@ Grid make_grid(const sim::world::FloorPlan& plan, const TourOptions& options) {
         options.clearance_m));
   g.piece = labels == best;
   g.piece /= 255;
+  const std::size_t cells = static_cast<std::size_t>(g.width) * g.height;
+  g.in_piece.resize(cells);
+  g.step_factor.resize(cells);
+  for (std::size_t i = 0; i < cells; ++i) {
+    const int index = static_cast<int>(i);
+    g.in_piece[i] = g.piece(index / g.width, index % g.width) != 0;
+    g.step_factor[i] = 1.0 + 0.5 / std::max(0.05f, g.clearance(index));
+  }
   return g;
 }
 
@@ -112,17 +123,19 @@ struct Costs {
 
 constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1}, kDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
 
-/// The cost of the step from cell i (at x, y) in direction k into cell j.
-double step_cost(const Grid& g, int k, int j) {
-  const double step = (k < 4 ? 1.0 : M_SQRT2) * g.cell_m;
-  return step * (1.0 + 0.5 / std::max(0.05f, g.clearance(j)));
-}
-
-/// The neighbour of cell i in direction k when it is in the piece, else -1.
-int piece_neighbour(const Grid& g, int i, int k) {
-  const int nx = i % g.width + kDx[k], ny = i / g.width + kDy[k];
-  if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height || !g.piece(ny, nx)) return -1;
-  return ny * g.width + nx;
+/// Calls step(j, cost) for each neighbour j of cell i that is in the piece, in direction order
+/// (kDx, kDy), with the cost of the step from i into j.
+template <class Step>
+void for_each_step(const Grid& g, int i, Step&& step) {
+  const int x = i % g.width, y = i / g.width;
+  for (int k = 0; k < 8; ++k) {
+    const int nx = x + kDx[k], ny = y + kDy[k];
+    if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height) continue;
+    const int j = ny * g.width + nx;
+    if (!g.in_piece[j]) continue;
+    const double length_m = (k < 4 ? 1.0 : M_SQRT2) * g.cell_m;
+    step(j, length_m * g.step_factor[j]);
+  }
 }
 
 Costs walk_costs(const Grid& g, int source) {
@@ -136,16 +149,14 @@ Costs walk_costs(const Grid& g, int source) {
     const auto [cost, i] = open.top();
     open.pop();
     if (cost > c.cost[i]) continue;
-    for (int k = 0; k < 8; ++k) {
-      const int j = piece_neighbour(g, i, k);
-      if (j < 0) continue;
-      const double next = cost + step_cost(g, k, j);
+    for_each_step(g, i, [&, cost = cost, i = i](int j, double step) {
+      const double next = cost + step;
       if (next < c.cost[j]) {
         c.cost[j] = next;
         c.previous[j] = i;
         open.push({next, j});
       }
-    }
+    });
   }
   return c;
 }
@@ -179,17 +190,15 @@ class BoundedWalk {
       open.pop();
       if (cost > cost_[i]) continue;
       if (!settled(i, cost)) return;
-      for (int k = 0; k < 8; ++k) {
-        const int j = piece_neighbour(g_, i, k);
-        if (j < 0) continue;
-        const double next = cost + step_cost(g_, k, j);
+      for_each_step(g_, i, [&, cost = cost, i = i](int j, double step) {
+        const double next = cost + step;
         if (next < cost_[j]) {
           if (std::isinf(cost_[j])) touched_.push_back(j);
           cost_[j] = next;
           previous_[j] = i;
           open.push({next, j});
         }
-      }
+      });
     }
   }
   /// The predecessor of a cell the last run settled.
@@ -399,12 +408,10 @@ std::vector<int> nearest_target_labels(const Grid& g, const std::vector<int>& ta
     const auto [c, i] = open.top();
     open.pop();
     if (c > cost[i]) continue;
-    for (int k = 0; k < 8; ++k) {
-      const int j = piece_neighbour(g, i, k);
-      if (j < 0) continue;
-      const double next = c + step_cost(g, k, j);
+    for_each_step(g, i, [&, c = c, i = i](int j, double step) {
+      const double next = c + step;
       if (next < cost[j]) cost[j] = next, label[j] = label[i], open.push({next, j});
-    }
+    });
   }
   return label;
 }
@@ -427,10 +434,9 @@ class SparseWalks final : public TargetWalks {
     std::vector<std::vector<int>> touching(n);  // by label
     for (int i = 0; i < g.width * g.height; ++i) {
       if (label[i] < 0) continue;
-      for (int k = 0; k < 8; ++k) {
-        const int j = piece_neighbour(g, i, k);
-        if (j >= 0 && label[j] != label[i]) touching[label[i]].push_back(label[j]);
-      }
+      for_each_step(g, i, [&](int j, double) {
+        if (label[j] != label[i]) touching[label[i]].push_back(label[j]);
+      });
     }
     for (auto& t : touching)
       std::sort(t.begin(), t.end()), t.erase(std::unique(t.begin(), t.end()), t.end());
