@@ -98,13 +98,44 @@ Eigen::Vector2d position_at(const Trajectory& truth, Timestamp t, const fs::path
 }
 
 /// The route's level and the building's levels of a scene (empty for one level).
-void set_levels(const sim::scene::Scene& scene, LocalisationData& data) {
-  if (!sim::scene::has_levels(scene)) return;
-  data.level = sim::scene::route_level(scene);
-  for (const sim::scene::Level& level : scene.levels) data.building_levels.push_back(level.id);
+}  // namespace
+
+RouteLevel route_level_of(const sim::scene::Scene& scene) {
+  RouteLevel out;
+  if (!sim::scene::has_levels(scene)) return out;
+  out.level = sim::scene::route_level(scene);
+  for (const sim::scene::Level& level : scene.levels) out.building_levels.push_back(level.id);
+  return out;
 }
 
-}  // namespace
+RouteLevel route_level_of_dataset(const fs::path& dataset) {
+  const fs::path scene = dataset / dataset::kScene;
+  return fs::exists(scene) ? route_level_of(sim::scene::load_scene_file(scene.string()))
+                           : RouteLevel{};
+}
+
+void check_other_floor_level(const RouteLevel& map, const RouteLevel& other,
+                             const std::string& other_name) {
+  const auto refuse = [&](const std::string& why) {
+    throw InvalidInputError(fmt::format("--other-floor {}: {}", other_name, why));
+  };
+  if (map.level.empty() || other.level.empty())
+    refuse("both inputs must be of one building of several levels (scene key levels:)");
+  if (map.building_levels != other.building_levels)
+    refuse("its building has other levels than the input's");
+  if (map.level == other.level)
+    refuse(fmt::format("its route is on level '{}', as the input's; give a route on another level",
+                       map.level));
+}
+
+void check_query_level(const RouteLevel& map, const RouteLevel& queries,
+                       const std::string& queries_name) {
+  if (map.level != queries.level) {
+    throw InvalidInputError(
+        fmt::format("--queries {}: its route is on level '{}', the map's on level '{}'",
+                    queries_name, queries.level, map.level));
+  }
+}
 
 LocalisationData localisation_data_from_scene(const sim::scene::Scene& scene,
                                               const LocalisationDataOptions& options) {
@@ -134,7 +165,7 @@ LocalisationData localisation_data_from_scene(const sim::scene::Scene& scene,
   }
   data.moving_scans = moving_scans(resolved, options.moving_scan_interval_s);
   data.wifi_source = "scene " + resolved.name + " (its access points and scanner)";
-  set_levels(resolved, data);
+  data.route_level = route_level_of(resolved);
   return data;
 }
 
@@ -171,23 +202,13 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
   }
   data.moving_scans = data.pause_scans;
   data.wifi_source = (dataset / dataset::kWifi).string();
-  if (fs::exists(dataset / dataset::kScene))
-    set_levels(sim::scene::load_scene_file((dataset / dataset::kScene).string()), data);
+  data.route_level = route_level_of_dataset(dataset);
   return data;
 }
 
 void add_other_floor(LocalisationData& data, LocalisationData other,
                      const std::string& other_name) {
-  const auto refuse = [&](const std::string& why) {
-    throw InvalidInputError(fmt::format("--other-floor {}: {}", other_name, why));
-  };
-  if (data.level.empty() || other.level.empty())
-    refuse("both inputs must be of one building of several levels (scene key levels:)");
-  if (data.building_levels != other.building_levels)
-    refuse("its building has other levels than the input's");
-  if (data.level == other.level)
-    refuse(fmt::format("its route is on level '{}', as the input's; give a route on another level",
-                       data.level));
+  check_other_floor_level(data.route_level, other.route_level, other_name);
   for (LocalisationImage& image : other.images) {
     image.floor = 1;
     data.images.push_back(std::move(image));
@@ -200,8 +221,8 @@ void add_other_floor(LocalisationData& data, LocalisationData other,
     }
   }
   data.other_floor_images = static_cast<int>(other.images.size());
-  data.description += fmt::format("; the map also holds level {}'s route ({} images)", other.level,
-                                  data.other_floor_images);
+  data.description += fmt::format("; the map also holds level {}'s route ({} images)",
+                                  other.route_level.level, data.other_floor_images);
 }
 
 void add_query_session(LocalisationData& data, LocalisationData queries,
@@ -210,9 +231,7 @@ void add_query_session(LocalisationData& data, LocalisationData queries,
     throw InvalidInputError(fmt::format("--queries {}: {}", queries_name, why));
   };
   if (queries.images.empty()) refuse("it gives no image");
-  if (data.level != queries.level)
-    refuse(fmt::format("its route is on level '{}', the map's on level '{}'", queries.level,
-                       data.level));
+  check_query_level(data.route_level, queries.route_level, queries_name);
   std::vector<double> nearest_m;
   for (const LocalisationImage& q : queries.images) {
     double best = std::numeric_limits<double>::infinity();

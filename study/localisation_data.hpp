@@ -47,15 +47,20 @@ struct PositionedScan {
   bool query_session = false;                            // as LocalisationImage::query_session
 };
 
+/// Where a localisation input's route is, in a building of several levels (scene `levels:`): the
+/// route's level and the building's level ids; both empty for a one-level scene or a dataset
+/// without scene.yaml.
+struct RouteLevel {
+  std::string level;
+  std::vector<std::string> building_levels;
+};
+
 struct LocalisationData {
   std::vector<LocalisationImage> images;  // in time order
   std::vector<PositionedScan> pause_scans, moving_scans;
   std::string description;  // what was read or simulated
   std::string wifi_source;  // where the scans come from (a dataset's wifi.csv), for messages
-  /// A building of several levels (scene `levels:`): the route's level and the building's level
-  /// ids; both empty for a one-level scene or a dataset without scene.yaml.
-  std::string level;
-  std::vector<std::string> building_levels;
+  RouteLevel route_level;
   int other_floor_images = 0;    // images joined from another floor (add_other_floor)
   int query_session_images = 0;  // images of a query session (add_query_session): the queries
 };
@@ -77,6 +82,18 @@ LocalisationData localisation_data_from_scene(const sim::scene::Scene& scene,
 /// position from groundtruth.txt (nearest stamp), and its wifi.csv as both protocols.
 LocalisationData localisation_data_from_dataset(const std::filesystem::path& dataset,
                                                 const LocalisationDataOptions& options);
+
+/// A scene's route level, and a dataset folder's (from its scene.yaml): read without generating
+/// anything, so that the command checks its inputs' levels before the long work.
+RouteLevel route_level_of(const sim::scene::Scene& scene);
+RouteLevel route_level_of_dataset(const std::filesystem::path& dataset);
+
+/// The level rules of add_other_floor and add_query_session: InvalidInputError naming
+/// `other_name` / `queries_name`.
+void check_other_floor_level(const RouteLevel& map, const RouteLevel& other,
+                             const std::string& other_name);
+void check_query_level(const RouteLevel& map, const RouteLevel& queries,
+                       const std::string& queries_name);
 
 /// Joins `other`, a route on another level of the same building, to `data`'s map: its images
 /// and scans, with floor 1, become map places a query may wrongly choose, the way a building's

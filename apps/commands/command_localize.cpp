@@ -4,6 +4,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -19,6 +20,7 @@
 #include "core/wall_clock.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/bow/shipped_vocabulary.hpp"
+#include "study/localisation_data.hpp"
 #include "study/localisation_report.hpp"
 
 namespace {
@@ -121,6 +123,25 @@ sim::scene::Scene query_session_scene(const LocalizeArgs& args, bool route_given
   return scene;
 }
 
+/// A localisation input: a dataset folder, or a scene file loaded once.
+struct LocalisationInput {
+  fs::path path;
+  std::optional<sim::scene::Scene> scene;  // empty for a dataset folder
+
+  study::RouteLevel route_level() const {
+    return scene ? study::route_level_of(*scene) : study::route_level_of_dataset(path);
+  }
+  study::LocalisationData data(const study::LocalisationDataOptions& options) const {
+    return scene ? study::localisation_data_from_scene(*scene, options)
+                 : study::localisation_data_from_dataset(path, options);
+  }
+};
+
+LocalisationInput localisation_input(const fs::path& path) {
+  if (fs::is_directory(path)) return {path, {}};
+  return {path, sim::scene::load_scene_file(path.string())};
+}
+
 void check_query_options(const LocalizeArgs& args, bool map_share_given) {
   if (!args.queries.empty() && args.queries_session)
     throw ParseError("--queries-session", std::to_string(*args.queries_session),
@@ -157,27 +178,28 @@ void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {
   data_options.seed = args.seed;
   data_options.verify_checksums = !args.no_verify;
   data_options.wifi = options.wifi;
-  const auto start = std::chrono::steady_clock::now();
-  study::LocalisationData data =
+  // The levels of the inputs are checked before any of them is generated (seconds to minutes of
+  // rendering).
+  const LocalisationInput input =
       fs::is_directory(args.input)
-          ? study::localisation_data_from_dataset(args.input, data_options)
-          : study::localisation_data_from_scene(scene_with_route(args, route_given), data_options);
+          ? LocalisationInput{args.input, {}}
+          : LocalisationInput{args.input, scene_with_route(args, route_given)};
+  std::optional<LocalisationInput> other_floor, queries;
   if (!args.other_floor.empty()) {
-    study::add_other_floor(
-        data,
-        fs::is_directory(args.other_floor)
-            ? study::localisation_data_from_dataset(args.other_floor, data_options)
-            : study::localisation_data_from_scene(sim::scene::load_scene_file(args.other_floor),
-                                                  data_options),
-        args.other_floor);
+    other_floor = localisation_input(args.other_floor);
+    study::check_other_floor_level(input.route_level(), other_floor->route_level(),
+                                   args.other_floor);
   }
   if (!args.queries.empty()) {
-    study::add_query_session(data,
-                             fs::is_directory(args.queries)
-                                 ? study::localisation_data_from_dataset(args.queries, data_options)
-                                 : study::localisation_data_from_scene(
-                                       sim::scene::load_scene_file(args.queries), data_options),
-                             args.queries);
+    queries = localisation_input(args.queries);
+    study::check_query_level(input.route_level(), queries->route_level(), args.queries);
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  study::LocalisationData data = input.data(data_options);
+  if (other_floor) study::add_other_floor(data, other_floor->data(data_options), args.other_floor);
+  if (queries) {
+    study::add_query_session(data, queries->data(data_options), args.queries);
   } else if (args.queries_session) {
     study::add_query_session(
         data,

@@ -141,7 +141,8 @@ TEST(LocalizeCli, AnotherFloorInTheMapIsTheWrongFloorAndWifiClustersChooseItLess
   ASSERT_GT(fabmap_rows, 0);
   EXPECT_NEAR(static_cast<double>(fabmap_wrong) / fabmap_rows, wrong_floor["fabmap"], 1e-9);
 
-  // The same level twice, and a building of one level, are refused before anything is written.
+  // The same level twice, and a building of one level, are refused before anything is written
+  // (and before either route is rendered: the levels are the scenes').
   for (const std::string& other : {ground, std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml"}) {
     const test::CliResult refused = test::run_wifislam(
         "localize " + ground + " --other-floor " + other + " -q -o " + (scratch / "no").string(),
@@ -150,6 +151,16 @@ TEST(LocalizeCli, AnotherFloorInTheMapIsTheWrongFloorAndWifiClustersChooseItLess
     EXPECT_NE(refused.err.find("--other-floor " + other), std::string::npos) << refused.err;
     EXPECT_FALSE(fs::exists(scratch / "no"));
   }
+  // Queries on another level than the map's are not another visit of its route: refused too.
+  const test::CliResult other_level = test::run_wifislam("localize " + ground + " --queries " +
+                                                             (scratch / "upstairs.yaml").string() +
+                                                             " -q -o " + (scratch / "no").string(),
+                                                         scratch);
+  EXPECT_EQ(other_level.exit_code, 2) << other_level.err;
+  EXPECT_NE(other_level.err.find("its route is on level 'first', the map's on level 'ground'"),
+            std::string::npos)
+      << other_level.err;
+  EXPECT_FALSE(fs::exists(scratch / "no"));
   fs::remove_all(scratch);
 }
 
