@@ -48,8 +48,7 @@ bool read_line(std::istream& in, std::string& text, const std::string& path, int
   return true;
 }
 
-void for_each_text_line(const std::string& path,
-                        const std::function<void(const TextLine&)>& line) {
+void for_each_text_line(const std::string& path, const std::function<void(const TextLine&)>& line) {
   InputFile file = open_text_file(path);
   TextLine current;
   while (read_line(file.stream(), current.text, path, current.number + 1)) {

@@ -2,8 +2,8 @@
 // Reading line-oriented text files (TUM lists, CSV) with positions for error messages.
 
 #include <cstddef>
-#include <istream>
 #include <functional>
+#include <istream>
 #include <span>
 #include <string>
 #include <string_view>

@@ -113,8 +113,7 @@ void check_lon_lat(const PlanFeature& feature) {
   const auto check = [&](const Ring& ring) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
       const double lon = ring[i].x(), lat = ring[i].y();
-      if (!std::isfinite(lon) || !std::isfinite(lat) || std::abs(lon) > 180 ||
-          std::abs(lat) > 90) {
+      if (!std::isfinite(lon) || !std::isfinite(lat) || std::abs(lon) > 180 || std::abs(lat) > 90) {
         throw ParseError(feature.where, "coordinates",
                          fmt::format("point {} is ({}, {}): expected a longitude in [-180, 180] "
                                      "and a latitude in [-90, 90] degrees (WGS 84)",
@@ -159,7 +158,8 @@ void check_osm_node_references(const std::filesystem::path& file) {
   });
   for (const auto& [ref, where] : refs) {
     if (!nodes.count(ref)) {
-      throw ParseError(where, "nd ref", "node " + ref + " is not in the file: the way is incomplete");
+      throw ParseError(where, "nd ref",
+                       "node " + ref + " is not in the file: the way is incomplete");
     }
   }
 }

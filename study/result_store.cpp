@@ -199,8 +199,8 @@ void check_integrity(const fs::path& path) {
     }
   } catch (const IoError& e) {
     if (db) sqlite3_close(db);
-    throw InvalidInputError(fmt::format("{}: not a readable study database ({})", path.string(),
-                                        e.what()));
+    throw InvalidInputError(
+        fmt::format("{}: not a readable study database ({})", path.string(), e.what()));
   }
 }
 
@@ -225,8 +225,8 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
   const fs::path lock = path.string() + ".lock";
   lock_fd_ = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
   if (lock_fd_ < 0) {
-    throw IoError(fmt::format("{}: cannot create the lock ({})", lock.string(),
-                              std::strerror(errno)));
+    throw IoError(
+        fmt::format("{}: cannot create the lock ({})", lock.string(), std::strerror(errno)));
   }
   if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
     ::close(lock_fd_);

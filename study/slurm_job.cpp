@@ -124,9 +124,9 @@ SlurmJobFiles slurm_job_files(const StudyFile& study, const SlurmJobRequest& req
   }
   job.final_what = fmt::format("Unions the {} shard databases of study '{}' into {}.",
                                request.tasks, study.name, merged.string());
-  job.final_command = fmt::format("{} study merge{} \\\n  --force -o {}/{}",
-                                  sh(request.wifislam_binary.string()), shards, dir_q,
-                                  merged.string());
+  job.final_command =
+      fmt::format("{} study merge{} \\\n  --force -o {}/{}", sh(request.wifislam_binary.string()),
+                  shards, dir_q, merged.string());
   job.array_file = "study.sbatch";
   job.final_file = "merge.sbatch";
   job.task_log = "shard-%a.log";
@@ -152,9 +152,8 @@ SubmittedSlurmJob submit_slurm_job(const std::filesystem::path& folder,
   SubmittedSlurmJob job;
   job.array_id = run_capturing(
       fmt::format("sbatch --parsable {} 2>&1", sh((folder / files.array_file).string())));
-  job.merge_id =
-      run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} {} 2>&1", job.array_id,
-                                sh((folder / files.final_file).string())));
+  job.merge_id = run_capturing(fmt::format("sbatch --parsable --dependency=afterok:{} {} 2>&1",
+                                           job.array_id, sh((folder / files.final_file).string())));
   return job;
 }
 

@@ -49,9 +49,9 @@ struct SlurmArrayJob {
   int tasks = 1, cpus_per_task = 1;
   std::string partition, time_limit;  // empty: the cluster's defaults
   std::string task_command, final_command;
-  std::string array_file, final_file;             // file names in the job folder
+  std::string array_file, final_file;                             // file names in the job folder
   std::string task_log = "task-%a.log", final_log = "final.log";  // under logs/
-  std::string final_job_suffix = "-final";        // the final job's name: the job's + this
+  std::string final_job_suffix = "-final";  // the final job's name: the job's + this
 };
 SlurmJobFiles slurm_array_files(const SlurmArrayJob& job, const std::filesystem::path& folder);
 

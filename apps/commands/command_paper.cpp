@@ -50,9 +50,10 @@ void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions
   job.cpus_per_task = args.cpus;
   job.partition = args.partition;
   job.time_limit = args.time_limit;
-  job.task_command = fmt::format("{} --jobs {} --shard \"${{SLURM_ARRAY_TASK_ID}}/{}\" "
-                                 "--no-report -q",
-                                 common, args.cpus, args.slurm_tasks);
+  job.task_command = fmt::format(
+      "{} --jobs {} --shard \"${{SLURM_ARRAY_TASK_ID}}/{}\" "
+      "--no-report -q",
+      common, args.cpus, args.slurm_tasks);
   job.final_command = common + " --report-only";
   job.array_file = "paper.sbatch";
   job.final_file = "report.sbatch";
@@ -62,9 +63,10 @@ void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions
   fmt::print("wrote {0}/paper.sbatch ({1} tasks) and {0}/report.sbatch\n", folder.string(),
              args.slurm_tasks);
   if (!args.submit) {
-    fmt::print("submit: cd {} && J=$(sbatch --parsable paper.sbatch) && sbatch "
-               "--dependency=afterok:$J report.sbatch\n",
-               folder.string());
+    fmt::print(
+        "submit: cd {} && J=$(sbatch --parsable paper.sbatch) && sbatch "
+        "--dependency=afterok:$J report.sbatch\n",
+        folder.string());
     return;
   }
   const study::SubmittedSlurmJob submitted = study::submit_slurm_job(folder, files);
@@ -130,15 +132,16 @@ void run(const PaperArgs& args) {
   }
   if (args.report_only) {
     if (!fs::exists(options.folder / study::paper::folder::kIdentity)) {
-      throw InvalidInputError(fmt::format("{}: not a paper folder (no {}); run `wifislam paper "
-                                          "-o {}` first",
-                                          args.output, study::paper::folder::kIdentity,
-                                          args.output));
+      throw InvalidInputError(
+          fmt::format("{}: not a paper folder (no {}); run `wifislam paper "
+                      "-o {}` first",
+                      args.output, study::paper::folder::kIdentity, args.output));
     }
   } else {
     const study::paper::PaperRunSummary s = study::paper::run_paper(options);
     if (!args.quiet) {
-      fmt::print(stderr, "paper: {} runs and {} localisations made, {} cases already done ({:.0f} s)\n",
+      fmt::print(stderr,
+                 "paper: {} runs and {} localisations made, {} cases already done ({:.0f} s)\n",
                  s.runs, s.localisations, s.cases_skipped, s.wall_s);
     }
   }

@@ -132,8 +132,8 @@ ComparedNumber table_cell(const PaperNumber& n, const PaperMeasurements& m) {
       return c;
     }
     const bool our_below = c.ours.mean() < vanilla_lc.mean() - wifi_lc.mean();
-    c.judgement = judge_overhead(n.value / pv->value, n.value < pv->value - pw->value, share,
-                                 our_below);
+    c.judgement =
+        judge_overhead(n.value / pv->value, n.value < pv->value - pw->value, share, our_below);
     return c;
   }
   const std::string column = column_of(n.quantity);
@@ -194,9 +194,8 @@ ComparedNumber text_number(const PaperNumber& n, const PaperMeasurements& m) {
   switch (n.part) {
     case Part::kDatasets:
       if (n.quantity == Quantity::kFrames) {
-        c.ours = dataset_value(m, n.twin, [](const nlohmann::json& j) {
-          return j.value("duration_s", 0.0) * 30.0;
-        });
+        c.ours = dataset_value(
+            m, n.twin, [](const nlohmann::json& j) { return j.value("duration_s", 0.0) * 30.0; });
         c.context = "our route's duration x 30 fps (the paper's Kinect rate)";
       } else if (n.quantity == Quantity::kAccessPoints) {
         c.ours = dataset_value(
@@ -213,11 +212,12 @@ ComparedNumber text_number(const PaperNumber& n, const PaperMeasurements& m) {
       if (n.quantity == Quantity::kFalsePositivePct) {
         c.ours = m.column(n.part, n.twin, setting, true, "false_positive_pct");
       } else {
-        const std::string column = n.quantity == Quantity::kTimeSavingPct ? "paper_loop_closure_s"
-                                                                          : "ate_rmse_m";
+        const std::string column =
+            n.quantity == Quantity::kTimeSavingPct ? "paper_loop_closure_s" : "ate_rmse_m";
         const auto [v, w] = m.paired(n.part, n.twin, setting, column);
         for (std::size_t i = 0; i < v.per_seed.size(); ++i) {
-          if (v.per_seed[i] > 0) c.ours.per_seed.push_back(100.0 * (1 - w.per_seed[i] / v.per_seed[i]));
+          if (v.per_seed[i] > 0)
+            c.ours.per_seed.push_back(100.0 * (1 - w.per_seed[i] / v.per_seed[i]));
         }
       }
       break;
@@ -282,8 +282,9 @@ ComparedNumber text_number(const PaperNumber& n, const PaperMeasurements& m) {
       if (n.quantity == Quantity::kAccuracyGainPct) {
         c.ours = mean_over_cells(m, Part::kRtabmap, {"a_hall", "b_hall", "c_hall", "j_hall"},
                                  saving_pct("ate_rmse_m"));
-        c.context = "mean over RTAB-Map's twin x threshold cells of Wi-Fi's relative reduction of "
-                    "the trajectory error";
+        c.context =
+            "mean over RTAB-Map's twin x threshold cells of Wi-Fi's relative reduction of "
+            "the trajectory error";
       } else {
         c.ours = mean_over_cells(m, Part::kOrbslam, bcj, saving_pct("paper_loop_closure_s"));
         c.context = "ORB-SLAM's mean relative saving of loop-closure time (B, C, J Hall)";

@@ -16,8 +16,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const plot::Colour kVanilla{0.80, 0.25, 0.20}, kWifi{0.15, 0.40, 0.75}, kPaperVanilla{0.95, 0.6, 0.5},
-    kPaperWifi{0.55, 0.7, 0.95};
+const plot::Colour kVanilla{0.80, 0.25, 0.20}, kWifi{0.15, 0.40, 0.75},
+    kPaperVanilla{0.95, 0.6, 0.5}, kPaperWifi{0.55, 0.7, 0.95};
 
 std::string axis_label(Quantity q) {
   switch (q) {
@@ -34,9 +34,7 @@ std::string axis_label(Quantity q) {
   }
 }
 
-plot::ChartPoint point(double x, const Measured& m) {
-  return {x, m.mean(), m.min(), m.max()};
-}
+plot::ChartPoint point(double x, const Measured& m) { return {x, m.mean(), m.min(), m.max()}; }
 
 /// Draws `chart` as figures/<stem>.png and .svg.
 PaperFigure draw(const fs::path& folder, Part part, const std::string& stem,
@@ -191,12 +189,15 @@ void table_figures(const PaperTable& table, const std::vector<ComparedNumber>& c
     }
     if (!any) continue;
     for (auto& [variant, s] : ours) {
-      s.label = ratio ? "ours" : fmt::format("ours, {}", variant == Variant::kWifi ? "Wi-Fi" : "vanilla");
+      s.label =
+          ratio ? "ours" : fmt::format("ours, {}", variant == Variant::kWifi ? "Wi-Fi" : "vanilla");
       s.colour = variant == Variant::kWifi ? kWifi : kVanilla;
       chart.series.push_back(s);
     }
     for (auto& [variant, s] : paper) {
-      s.label = ratio ? "the paper" : fmt::format("the paper, {}", variant == Variant::kWifi ? "Wi-Fi" : "vanilla");
+      s.label = ratio
+                    ? "the paper"
+                    : fmt::format("the paper, {}", variant == Variant::kWifi ? "Wi-Fi" : "vanilla");
       s.colour = variant == Variant::kWifi ? kPaperWifi : kPaperVanilla;
       s.dashed = true;
       chart.series.push_back(s);
@@ -211,15 +212,14 @@ void rtabmap_maps(const fs::path& folder, std::vector<PaperFigure>& out) {
   for (const char* twin : {"j_hall", "a_hall"}) {
     const std::string seed = std::to_string(twin_scene(twin).seed);
     for (bool wifi : {false, true}) {
-      if (auto f = copy_picture(folder, Part::kRtabmap,
-                                folder / folder::kRuns /
-                                    fmt::format("rtabmap-{}-seed{}", twin, seed) /
-                                    "time_threshold_ms-70" / (wifi ? "wifi" : "vanilla") / "eval" /
-                                    "trajectory",
-                                fmt::format("rtabmap_map_{}_70ms_{}", twin, wifi ? "wifi" : "vanilla"),
-                                fmt::format("{} RTAB-Map on {} at a real-time threshold of 70 ms "
-                                            "(seed {}; the paper's figure shows J Hall)",
-                                            wifi ? "Wi-Fi" : "Vanilla", hall_name(twin), seed))) {
+      if (auto f = copy_picture(
+              folder, Part::kRtabmap,
+              folder / folder::kRuns / fmt::format("rtabmap-{}-seed{}", twin, seed) /
+                  "time_threshold_ms-70" / (wifi ? "wifi" : "vanilla") / "eval" / "trajectory",
+              fmt::format("rtabmap_map_{}_70ms_{}", twin, wifi ? "wifi" : "vanilla"),
+              fmt::format("{} RTAB-Map on {} at a real-time threshold of 70 ms "
+                          "(seed {}; the paper's figure shows J Hall)",
+                          wifi ? "Wi-Fi" : "Vanilla", hall_name(twin), seed))) {
         out.push_back(*f);
       }
     }

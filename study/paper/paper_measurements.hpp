@@ -25,7 +25,7 @@ struct RunRow {
   /// "min_matches=50 inlier_distance=3").
   std::string setting;
   bool wifi = false;
-  std::map<std::string, double> values;  // every numeric column (NULL ones absent)
+  std::map<std::string, double> values;           // every numeric column (NULL ones absent)
   double value(const std::string& column) const;  // NaN when absent
 };
 

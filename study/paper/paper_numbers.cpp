@@ -136,7 +136,8 @@ std::vector<PaperNumber> text_numbers() {
   const std::string datasets = "subsec:dataset";
   const char* c_hall =
       "There are 24000 images, less than 40 APs and a total of 7 Wi-Fi clusters in this dataset.";
-  const char* b_hall = "There are 28000 images, about 40 APs and 13 Wi-Fi clusters in this dataset.";
+  const char* b_hall =
+      "There are 28000 images, about 40 APs and 13 Wi-Fi clusters in this dataset.";
   const char* j_hall =
       "There are a total of 19 Wi-Fi clusters, around 70 APs and 33000 images in this dataset.";
   const char* a_hall =
@@ -217,8 +218,9 @@ std::vector<PaperNumber> text_numbers() {
                   Bound::kEqual, 1270),
       text_number(Part::kOrbslam, orb, orb_saving, "", "", E, Quantity::kTimeSavingPct,
                   Bound::kRange, 15, 25),
-      text_number(Part::kOrbslam, "table:orbslam_overhead, caption", "It is about 3%-8% on average.", "",
-                  "", Variant::kWifi, Quantity::kOverheadSharePct, Bound::kRange, 3, 8),
+      text_number(Part::kOrbslam, "table:orbslam_overhead, caption",
+                  "It is about 3%-8% on average.", "", "", Variant::kWifi,
+                  Quantity::kOverheadSharePct, Bound::kRange, 3, 8),
       text_number(Part::kOrbslam, orb, orb_keyframes_j, "j_hall", "", E, Quantity::kKeyframes,
                   Bound::kAbout, 2800),
       text_number(Part::kOrbslam, orb, orb_keyframes_bc, "b_hall", "min_matches=50", E,
@@ -260,8 +262,7 @@ std::vector<PaperNumber> table_numbers(const PaperTable& table) {
       start = amp + 1;
     }
     const std::string twin = twin_of_hall(cells.front());
-    if (twin.empty() ||
-        cells.size() != 1 + table.settings.size() * table.variants.size()) {
+    if (twin.empty() || cells.size() != 1 + table.settings.size() * table.variants.size()) {
       throw std::logic_error(fmt::format("{}: malformed row '{}'", table.label, row));
     }
     for (std::size_t s = 0; s < table.settings.size(); ++s) {

@@ -19,20 +19,20 @@ std::optional<Part> parse_part(const std::string& text);
 
 /// What a number measures, and so which of our measurements stands beside it.
 enum class Quantity {
-  kAteRmseM,          // trajectory error: ATE RMSE after rigid alignment (m)
-  kFalseNegativePct,  // loop closures missed, % of those a good map has
-  kFalsePositivePct,  // wrong loop closures, % of those detected
-  kLoopClosureTimeS,  // loop-closure compute time of a run (s)
-  kWifiOverheadS,     // Wi-Fi clustering + cluster management of a run (s)
-  kFrames,            // images in the dataset
-  kKeyframes,         // keyframes of a run (RTAB-Map: its nodes)
-  kAccessPoints,      // access points of the building
-  kWifiClusters,      // Wi-Fi clusters of a run
-  kTimeSavingPct,     // Wi-Fi's saving of a time, % of vanilla's
-  kErrorReductionPct, // Wi-Fi's reduction of the trajectory error, % of vanilla's
-  kOverheadSharePct,  // Wi-Fi overhead, % of vanilla's loop-closure time
-  kAccuracyGainPct,   // the abstract's accuracy improvement, mean over the paper's runs
-  kQueriesWithinPct,  // localisation: % of query images within a distance
+  kAteRmseM,           // trajectory error: ATE RMSE after rigid alignment (m)
+  kFalseNegativePct,   // loop closures missed, % of those a good map has
+  kFalsePositivePct,   // wrong loop closures, % of those detected
+  kLoopClosureTimeS,   // loop-closure compute time of a run (s)
+  kWifiOverheadS,      // Wi-Fi clustering + cluster management of a run (s)
+  kFrames,             // images in the dataset
+  kKeyframes,          // keyframes of a run (RTAB-Map: its nodes)
+  kAccessPoints,       // access points of the building
+  kWifiClusters,       // Wi-Fi clusters of a run
+  kTimeSavingPct,      // Wi-Fi's saving of a time, % of vanilla's
+  kErrorReductionPct,  // Wi-Fi's reduction of the trajectory error, % of vanilla's
+  kOverheadSharePct,   // Wi-Fi overhead, % of vanilla's loop-closure time
+  kAccuracyGainPct,    // the abstract's accuracy improvement, mean over the paper's runs
+  kQueriesWithinPct,   // localisation: % of query images within a distance
 };
 const char* to_string(Quantity quantity);  // "ate_rmse_m", ...
 /// The unit printed after a value ("m", "%", "s", "").

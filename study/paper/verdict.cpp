@@ -150,8 +150,8 @@ double Measured::max() const {
 std::string Measured::text(int decimals) const {
   if (per_seed.empty()) return "-";
   if (per_seed.size() == 1) return fmt::format("{:.{}f}", per_seed.front(), decimals);
-  return fmt::format("{:.{}f} ± {:.{}f} ({:.{}f}-{:.{}f})", mean(), decimals, sd(), decimals,
-                     min(), decimals, max(), decimals);
+  return fmt::format("{:.{}f} ± {:.{}f} ({:.{}f}-{:.{}f})", mean(), decimals, sd(), decimals, min(),
+                     decimals, max(), decimals);
 }
 
 Direction direction_of(double vanilla, double wifi, Quantity quantity) {
@@ -201,11 +201,12 @@ Judgement judge_pair(const PaperNumber& number, double paper_vanilla, double pap
   } else {
     paper_direction = direction_of(paper_vanilla, paper_wifi, number.quantity);
     our_direction = direction_of(our_vanilla.mean(), our_wifi.mean(), number.quantity);
-    agrees = value_agrees(wifi_side ? paper_wifi : paper_vanilla, wifi_side ? our_wifi : our_vanilla,
-                          number.quantity);
-    compared = fmt::format("ours {} against {}",
-                           number_text((wifi_side ? our_wifi : our_vanilla).mean(), number.quantity),
-                           number_text(wifi_side ? paper_wifi : paper_vanilla, number.quantity));
+    agrees = value_agrees(wifi_side ? paper_wifi : paper_vanilla,
+                          wifi_side ? our_wifi : our_vanilla, number.quantity);
+    compared =
+        fmt::format("ours {} against {}",
+                    number_text((wifi_side ? our_wifi : our_vanilla).mean(), number.quantity),
+                    number_text(wifi_side ? paper_wifi : paper_vanilla, number.quantity));
   }
   const std::string directions = fmt::format("Wi-Fi {} than vanilla (paper: {})",
                                              to_string(our_direction), to_string(paper_direction));
@@ -217,11 +218,11 @@ Judgement judge_pair(const PaperNumber& number, double paper_vanilla, double pap
 Judgement judge_overhead(double paper_share, bool paper_below_saving, const Measured& our_share,
                          bool our_below_saving) {
   if (our_share.empty()) return {Verdict::kNotApplicable, "not measured"};
-  const std::string compared =
-      fmt::format("overhead {:.1f} % of vanilla's loop-closure time (paper {:.1f} %); {} the "
-                  "time Wi-Fi saves (paper: {})",
-                  100 * our_share.mean(), 100 * paper_share,
-                  our_below_saving ? "below" : "not below", paper_below_saving ? "below" : "not below");
+  const std::string compared = fmt::format(
+      "overhead {:.1f} % of vanilla's loop-closure time (paper {:.1f} %); {} the "
+      "time Wi-Fi saves (paper: {})",
+      100 * our_share.mean(), 100 * paper_share, our_below_saving ? "below" : "not below",
+      paper_below_saving ? "below" : "not below");
   if (our_below_saving != paper_below_saving) return {Verdict::kDeparts, compared};
   Measured percent;
   for (double s : our_share.per_seed) percent.per_seed.push_back(100 * s);

@@ -250,18 +250,18 @@ TEST_F(BadInput, ASweptKeyIsGivenOnceAndLongSettingsGetShortFolders) {
   for (const std::string& repeated :
        {std::string("--sweep min_matches=10 --sweep min_matches=20"),
         std::string("--set min_matches=10 --sweep min_matches=20,30")}) {
-    const test::CliResult r = wifislam("compare " + scene_.string() + " " + repeated +
-                                       " --max-frames 4 --fps 2 -q -o " +
-                                       (scratch_ / "c").string());
+    const test::CliResult r =
+        wifislam("compare " + scene_.string() + " " + repeated + " --max-frames 4 --fps 2 -q -o " +
+                 (scratch_ / "c").string());
     EXPECT_EQ(r.exit_code, 2) << repeated << ": " << r.err;
     EXPECT_NE(r.err.find("min_matches"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(scratch_ / "c"));
   }
   // A value of 300 characters (a system file's path, say): one folder, named in under 255 bytes.
   const std::string long_value = "0.9" + std::string(297, '0');
-  const test::CliResult r = wifislam("compare " + scene_.string() + " --sweep wifi_similarity=" +
-                                     long_value + " --max-frames 4 --fps 2 --no-plots -q -o " +
-                                     (scratch_ / "c").string());
+  const test::CliResult r =
+      wifislam("compare " + scene_.string() + " --sweep wifi_similarity=" + long_value +
+               " --max-frames 4 --fps 2 --no-plots -q -o " + (scratch_ / "c").string());
   EXPECT_EQ(r.exit_code, 0) << r.err;
   for (const auto& seed_dir : fs::directory_iterator(scratch_ / "c" / "runs")) {
     for (const auto& setting : fs::directory_iterator(seed_dir.path())) {

@@ -133,8 +133,8 @@ TEST(FloorSlab, ARadioMapOfTheLowerStoreyHearsTheApUpstairsThroughTheSlab) {
       // The stronger radio, each weakened by its own band's concrete loss.
       double expected = -1e9;
       for (const Bssid& b : without.access_points()[0].bssids)
-        expected = std::max(expected, without.mean_rssi_dbm(0, b, rx) -
-                                          tr38901_concrete_db(b.frequency_mhz()));
+        expected = std::max(
+            expected, without.mean_rssi_dbm(0, b, rx) - tr38901_concrete_db(b.frequency_mhz()));
       EXPECT_NEAR(map.at(c, r), expected, 1e-4) << c << "," << r;
       EXPECT_GT(map.at(c, r), -92.0);  // heard: above a typical sensitivity
     }

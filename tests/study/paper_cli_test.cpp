@@ -68,15 +68,14 @@ TEST_F(PaperCli, OneSmallPartWritesTheReportAndASecondRunRedoesNothing) {
   // A second run finds every case done: no run, the same rows.
   r = wifislam(args);
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("0 runs and 0 localisations made, 1 cases already done"),
-            std::string::npos)
+  EXPECT_NE(r.err.find("0 runs and 0 localisations made, 1 cases already done"), std::string::npos)
       << r.err;
   EXPECT_EQ(dump_results(db), rows);
 
   // The study file it wrote, run by `study run`, gives the same rows.
   const fs::path alone = scratch_ / "alone.sqlite";
-  r = wifislam("study run " + (dir / "studies" / "orbslam-a_hall-seed4004.yaml").string() +
-               " -o " + alone.string() + " --jobs 2 -q");
+  r = wifislam("study run " + (dir / "studies" / "orbslam-a_hall-seed4004.yaml").string() + " -o " +
+               alone.string() + " --jobs 2 -q");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(dump_results(alone), rows);
 }

@@ -32,10 +32,10 @@ double value_of(const std::string& source, const std::string& twin, const std::s
 // The paper's tables: buildings x settings x variants, as printed.
 TEST(PaperNumbers, EveryCellOfThePapersEightTablesIsEnteredOnce) {
   const std::map<std::string, int> cells = {
-      {"table:rtabmap_rmse", 4 * 4 * 2},         {"table:rtabmap_false_negative", 4 * 4 * 2},
-      {"table:rtabmap_bounding", 4 * 4 * 2},     {"table:rtabmap_overhead", 4 * 4},
-      {"table:orbslam_rmse", 3 * 5 * 2},         {"table:orbslam_bounding", 3 * 5 * 2},
-      {"table:orbslam_overhead", 3 * 5},         {"table:orbslam_false_positive", 3 * 5}};
+      {"table:rtabmap_rmse", 4 * 4 * 2},     {"table:rtabmap_false_negative", 4 * 4 * 2},
+      {"table:rtabmap_bounding", 4 * 4 * 2}, {"table:rtabmap_overhead", 4 * 4},
+      {"table:orbslam_rmse", 3 * 5 * 2},     {"table:orbslam_bounding", 3 * 5 * 2},
+      {"table:orbslam_overhead", 3 * 5},     {"table:orbslam_false_positive", 3 * 5}};
   int total = 0;
   for (const auto& [label, n] : cells) {
     EXPECT_EQ(count_of(label), n) << label;
@@ -72,15 +72,14 @@ TEST(PaperNumbers, CellsLandWhereThePaperPrintsThem) {
             0.4895);
   EXPECT_EQ(value_of("table:rtabmap_rmse", "j_hall", "time_threshold_ms=inf", Variant::kWifi),
             0.2113);
-  EXPECT_EQ(value_of("table:rtabmap_false_negative", "c_hall", "time_threshold_ms=200",
-                     Variant::kWifi),
-            3.0303);
+  EXPECT_EQ(
+      value_of("table:rtabmap_false_negative", "c_hall", "time_threshold_ms=200", Variant::kWifi),
+      3.0303);
   EXPECT_EQ(value_of("table:rtabmap_overhead", "b_hall", "time_threshold_ms=100", Variant::kWifi),
             0.2203);
   EXPECT_EQ(value_of("table:orbslam_bounding", "j_hall", "min_matches=100", Variant::kWifi),
             19.7924);
-  EXPECT_EQ(value_of("table:orbslam_false_positive", "b_hall", "min_matches=15",
-                     Variant::kVanilla),
+  EXPECT_EQ(value_of("table:orbslam_false_positive", "b_hall", "min_matches=15", Variant::kVanilla),
             33.3);
   EXPECT_EQ(hall_name("c_hall"), "C Hall");
 }

@@ -103,7 +103,7 @@ TEST(Verdict, MeasuredSummaries) {
   EXPECT_DOUBLE_EQ(m.sd(), 1.0);
   EXPECT_EQ(m.text(1), "2.0 ± 1.0 (1.0-3.0)");
   EXPECT_EQ(seeds({0.5}).text(2), "0.50");
-  EXPECT_TRUE(value_agrees(2.6, m, Quantity::kAteRmseM));   // inside the range
+  EXPECT_TRUE(value_agrees(2.6, m, Quantity::kAteRmseM));              // inside the range
   EXPECT_TRUE(value_agrees(2.45, seeds({2.0}), Quantity::kAteRmseM));  // 25 % + 0.02 m
   EXPECT_FALSE(value_agrees(2.8, seeds({2.0}), Quantity::kAteRmseM));
 }

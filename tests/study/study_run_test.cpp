@@ -212,8 +212,7 @@ TEST(StudyRun, OneWriterADatabaseAndMergeNamesWhatIsWrongWithAShard) {
   const StudyFile study = load_study_file(file);
   {
     // A store open (a run in progress) holds the database: a second writer is refused at once.
-    ResultStore first(dir / "db.sqlite", study, metric_columns(study),
-                      timing_columns(study.level));
+    ResultStore first(dir / "db.sqlite", study, metric_columns(study), timing_columns(study.level));
     StudyRunOptions o;
     o.database = dir / "db.sqlite";
     try {
