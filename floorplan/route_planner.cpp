@@ -23,9 +23,6 @@ struct Grid {
   int width, height;
   cv::Mat1f clearance_m;  // 0 outside walkable space
   cv::Mat1i piece;        // connected piece of cells with enough clearance, 0 = none
-  // By cell index, for the walks' inner loop (every target's Dijkstra visits the whole piece):
-  std::vector<unsigned char> in_piece;  // piece != 0
-  std::vector<double> step_factor;      // a step into the cell costs its length times this
 
   Eigen::Vector2d centre_of(int index) const {
     return origin_m + cell_m * Eigen::Vector2d(index % width + 0.5, index / width + 0.5);
@@ -102,14 +99,7 @@ Grid make_grid(const sim::world::FloorPlan& plan, const TourOptions& options) {
         options.clearance_m));
   g.piece = labels == best;
   g.piece /= 255;
-  const std::size_t cells = static_cast<std::size_t>(g.width) * g.height;
-  g.in_piece.resize(cells);
-  g.step_factor.resize(cells);
-  for (std::size_t i = 0; i < cells; ++i) {
-    const int index = static_cast<int>(i);
-    g.in_piece[i] = g.piece(index / g.width, index % g.width) != 0;
-    g.step_factor[i] = 1.0 + 0.5 / std::max(0.05f, g.clearance(index));
-  }
+  CV_Assert(g.piece.isContinuous() && g.clearance_m.isContinuous());  // read by cell index
   return g;
 }
 
@@ -124,17 +114,21 @@ struct Costs {
 constexpr int kDx[8] = {1, -1, 0, 0, 1, 1, -1, -1}, kDy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
 
 /// Calls step(j, cost) for each neighbour j of cell i that is in the piece, in direction order
-/// (kDx, kDy), with the cost of the step from i into j.
+/// (kDx, kDy), with the cost of the step from i into j. The walks' inner loop (every target's
+/// Dijkstra visits the whole piece): cell i's row and column are found once, and the rasters
+/// (continuous, made by OpenCV's arithmetic) are read by cell index.
 template <class Step>
 void for_each_step(const Grid& g, int i, Step&& step) {
   const int x = i % g.width, y = i / g.width;
+  const int* piece = g.piece.ptr<int>();
+  const float* clearance_m = g.clearance_m.ptr<float>();
   for (int k = 0; k < 8; ++k) {
     const int nx = x + kDx[k], ny = y + kDy[k];
     if (nx < 0 || ny < 0 || nx >= g.width || ny >= g.height) continue;
     const int j = ny * g.width + nx;
-    if (!g.in_piece[j]) continue;
+    if (!piece[j]) continue;
     const double length_m = (k < 4 ? 1.0 : M_SQRT2) * g.cell_m;
-    step(j, length_m * g.step_factor[j]);
+    step(j, length_m * (1.0 + 0.5 / std::max(0.05f, clearance_m[j])));
   }
 }
 
