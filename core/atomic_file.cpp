@@ -44,19 +44,7 @@ bool same_folder(int fd, const fs::path& path) {
 
 namespace {
 
-// The refusal and the partial file of write_file_atomic, shared with write_files_atomic.
-void refuse_non_regular_target(const fs::path& path) {
-  // The rename would put a regular file where a folder, device or pipe was (as root, over
-  // /dev/null): refuse any existing target that is not a regular file (or a link to one).
-  std::error_code status_error;
-  const fs::file_status target = fs::status(path, status_error);
-  if (fs::exists(target) && !fs::is_regular_file(target)) {
-    throw InvalidInputError(path.string() + ": exists and is not a regular file (" +
-                            (fs::is_directory(target) ? "a folder" : "a device, pipe or socket") +
-                            "); give the path of a file to write");
-  }
-}
-
+// The partial file of write_file_atomic, shared with write_files_atomic.
 fs::path partial_of(const fs::path& path) { return path.string() + ".partial"; }
 
 void write_partial(const fs::path& path, std::string_view contents) {
@@ -84,13 +72,13 @@ void rename_partial_into_place(const fs::path& path) {
 }  // namespace
 
 void write_file_atomic(const fs::path& path, std::string_view contents) {
-  refuse_non_regular_target(path);
+  check_file_replaceable(path);
   write_partial(path, contents);
   rename_partial_into_place(path);
 }
 
 void write_files_atomic(const std::vector<std::pair<fs::path, std::string_view>>& files) {
-  for (const auto& [path, contents] : files) refuse_non_regular_target(path);
+  for (const auto& [path, contents] : files) check_file_replaceable(path);
   std::size_t written = 0;
   try {
     for (; written < files.size(); ++written)

@@ -110,11 +110,13 @@ bool check_output_folder(const OutputFolderRequest& request) {
       !request.owned_default.empty() && resolve_path(request.owned_default) == out;
   // Checked before existence: a new folder inside an input changes the input by being there
   // (a run folder inside a dataset, export's links inside the dataset they link to).
+  const fs::path container =
+      request.default_container.empty() ? fs::path() : resolve_path(request.default_container);
   for (const fs::path& input : request.inputs) {
     if (input.empty()) continue;
     const fs::path in = resolve_path(input);
     if (in == out) refuse(out, "is an input of this command (" + input.string() + ")");
-    if (!is_default && is_within(out, in)) {
+    if (!(is_default && in == container) && is_within(out, in)) {
       refuse(out, "lies inside an input of this command (" + input.string() +
                       "); write it next to it instead");
     }
@@ -146,6 +148,26 @@ void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs
       throw InvalidInputError("output file " + path.string() +
                               ": is an input of this command; refusing to overwrite it");
     }
+  }
+  check_file_replaceable(out);
+  const fs::file_status folder = fs::status(out.parent_path(), ec);
+  if (!fs::exists(folder)) {
+    throw IoError("output file " + path.string() + ": its folder " + out.parent_path().string() +
+                  " does not exist");
+  }
+  if (!fs::is_directory(folder)) {
+    throw InvalidInputError("output file " + path.string() + ": " + out.parent_path().string() +
+                            " is not a folder");
+  }
+}
+
+void check_file_replaceable(const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status target = fs::status(path, ec);
+  if (fs::exists(target) && !fs::is_regular_file(target)) {
+    throw InvalidInputError(path.string() + ": exists and is not a regular file (" +
+                            (fs::is_directory(target) ? "a folder" : "a device, pipe or socket") +
+                            "); give the path of a file to write");
   }
 }
 

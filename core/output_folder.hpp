@@ -5,8 +5,9 @@
 // An existing output folder is replaced only when all of these hold:
 //   - `--force` was given, or the folder is the command's documented default output that the
 //     command owns (eval's <run>/eval, the demo's demo-output);
-//   - it is not an input of the same command, does not contain one and, unless it is that
-//     default, does not lie inside one (refused even when it does not exist yet);
+//   - it is not an input of the same command, does not contain one and does not lie inside one
+//     (refused even when it does not exist yet), except the default inside the input that owns it
+//     (eval's <run>/eval);
 //   - it is not `/`, the current directory or the home folder, and holds none of them;
 //   - it holds this tool's marker file (see `has_output_marker`), or is empty. Nothing else makes
 //     a folder replaceable: file names that look like ours (metrics.json, manifest.json ...) are
@@ -16,6 +17,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace wifislam {
@@ -26,27 +28,50 @@ inline constexpr const char* kOutputMarkerFile = ".wifislam-output";
 
 /// What a command is about to write, and what it reads.
 struct OutputFolderRequest {
+  OutputFolderRequest(std::filesystem::path path_, bool force_,
+                      std::filesystem::path owned_default_,
+                      std::vector<std::filesystem::path> inputs_,
+                      std::filesystem::path default_container_ = {})
+      : path(std::move(path_)),
+        force(force_),
+        owned_default(std::move(owned_default_)),
+        inputs(std::move(inputs_)),
+        default_container(std::move(default_container_)) {}
+
   /// The output folder as the user gave it.
   std::filesystem::path path;
   /// `--force`: replace an existing folder that passes the safety checks.
   bool force = false;
   /// The command's documented default output (empty: none). That folder may be replaced without
-  /// `--force`, and may lie inside an input (eval's <run>/eval lies inside <run>).
+  /// `--force`.
   std::filesystem::path owned_default;
   /// Every file or folder the command reads (scene files, datasets, run folders ...). A folder
   /// inside one is refused even when it does not exist yet: its mere presence would change the
   /// input (a run folder inside the dataset it ran on).
   std::vector<std::filesystem::path> inputs;
+  /// The one input the default may lie inside (eval's <run>/eval lies inside <run>); empty: none.
+  /// Only that one: eval of a trajectory file inside the ground truth's dataset must not write
+  /// its default <file>_eval into that dataset.
+  std::filesystem::path default_container;
 };
 
 /// Applies the rule above. Returns true when the folder exists and may be replaced, false when
 /// it does not exist yet. Throws InvalidInputError otherwise.
 bool check_output_folder(const OutputFolderRequest& request);
 
-/// For commands that write single files (plots, maps, rendered views): the file must not be an
-/// input of the command and must not be an existing folder. Throws InvalidInputError.
+/// For commands that write single files (plots, maps, rendered views), checked before any work:
+/// the file must not be an input of the command, an existing path must be a regular file (see
+/// `check_file_replaceable`), and its folder must exist (IoError otherwise: a command that writes
+/// two files must not write the first and then find it cannot write the second). Throws
+/// InvalidInputError.
 void check_output_file(const std::filesystem::path& path,
                        const std::vector<std::filesystem::path>& inputs);
+
+/// A file is written by renaming a finished `<path>.partial` over `path`, which would put a regular
+/// file where a folder, device or pipe was (as root, over /dev/null): refuses (InvalidInputError)
+/// an existing `path` that is not a regular file or a link to one. Every atomic file write applies
+/// it (core/atomic_file.hpp, plot's figures).
+void check_file_replaceable(const std::filesystem::path& path);
 
 /// The parts of the rule that need no knowledge of the command: `resolved` (an existing folder,
 /// see `resolve_path`) is not `/`, the current directory or the home folder, holds none of them,

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 
 namespace wifislam::plot {
 
@@ -48,6 +49,7 @@ Colour viridis(double t) {
 
 void write_figure(const std::filesystem::path& path, int width_px, int height_px,
                   const std::function<void(cairo_t*)>& draw, PixelFormat format) {
+  check_file_replaceable(path);
   const bool svg = path.extension() == ".svg";
   const std::filesystem::path partial = path.string() + ".partial";
   cairo_surface_t* surface =

@@ -42,7 +42,8 @@ enum class PixelFormat { kArgb32, kRgb24 };
 
 /// Creates a `width` x `height` surface (SVG when `path` ends in ".svg", PNG otherwise), paints
 /// it white, calls `draw`, and writes the file atomically (`<path>.partial`, then renamed).
-/// Throws IoError when it cannot be created or written.
+/// Throws IoError when it cannot be created or written, InvalidInputError when `path` is a folder,
+/// device or pipe (core/output_folder.hpp's check_file_replaceable).
 void write_figure(const std::filesystem::path& path, int width_px, int height_px,
                   const std::function<void(cairo_t*)>& draw,
                   PixelFormat format = PixelFormat::kArgb32);

@@ -77,7 +77,12 @@ void run(const EvalArgs& args) {
   std::vector<eval::Requirement> requirements;
   for (const std::string& text : args.requirements)
     requirements.push_back(eval::parse_requirement(text));
-  check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}});
+  // The default may lie inside the run folder it evaluates (<run>/eval), never inside the
+  // ground truth's dataset (a trajectory file's <file>_eval beside it there).
+  const std::filesystem::path run_folder = std::filesystem::is_regular_file(args.input)
+                                               ? std::filesystem::path()
+                                               : std::filesystem::path(args.input);
+  check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}, run_folder});
   const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
   const nlohmann::ordered_json flat = ev.flat_metrics();
   eval::check_metric_names(requirements, flat);

@@ -4,6 +4,7 @@
 
 #include <pwd.h>
 #include <stdlib.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <filesystem>
@@ -115,14 +116,34 @@ TEST_F(OutputFolderRule, UserFolderIsRefusedEvenWithForceButAnEmptyOneIsNot) {
 TEST_F(OutputFolderRule, OwnedDefaultIsReplacedWithoutForceEvenInsideItsInput) {
   const fs::path run = tool_folder("run");
   const fs::path eval = tool_folder("run/eval");
-  EXPECT_TRUE(check_output_folder({eval, false, eval, {run}}));
+  EXPECT_TRUE(check_output_folder({eval, false, eval, {run}, run}));
   // The same folder spelt differently is still the default.
-  EXPECT_TRUE(check_output_folder({root_ / "run/./eval/", false, eval, {run}}));
+  EXPECT_TRUE(check_output_folder({root_ / "run/./eval/", false, eval, {run}, run}));
   // Not the default: inside an input, refused even with --force.
   const fs::path other = tool_folder("run/other");
-  const auto message = refusal({other, true, eval, {run}});
+  const auto message = refusal({other, true, eval, {run}, run});
   ASSERT_TRUE(message);
   EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
+}
+
+// `eval ds/groundtruth.txt --gt ds`: the default <file>_eval would lie inside the dataset, an input
+// that does not own it. Refused, named or not, with or without --force.
+TEST_F(OutputFolderRule, TheDefaultLiesOnlyInsideTheInputThatOwnsIt) {
+  const fs::path ds = tool_folder("ds");
+  const fs::path trajectory = ds / "groundtruth.txt";
+  std::ofstream(trajectory) << "1 0 0 0 0 0 0 1\n";
+  const fs::path default_out = ds / "groundtruth_eval";
+  for (const bool force : {false, true}) {
+    const auto message = refusal({default_out, force, default_out, {trajectory, ds}, {}});
+    ASSERT_TRUE(message);
+    EXPECT_NE(message->find("inside an input"), std::string::npos) << *message;
+    EXPECT_NE(message->find(ds.string()), std::string::npos) << *message;
+  }
+  EXPECT_FALSE(fs::exists(default_out));
+  // Inside the run folder that owns it, not inside another input.
+  const fs::path run = tool_folder("ds_run");
+  EXPECT_FALSE(check_output_folder({run / "eval", false, run / "eval", {run, ds}, run}));
+  EXPECT_TRUE(refusal({run / "eval", false, run / "eval", {run, ds}, ds}));
 }
 
 // Issue 34: a new folder inside an input replaced nothing, so it passed (`slam ds -o ds/run`
@@ -141,7 +162,7 @@ TEST_F(OutputFolderRule, ANewFolderInsideAnInputIsRefused) {
   EXPECT_TRUE(refusal({root_ / "x" / ".." / "ds" / "deep" / "run", false, {}, {ds}}));
   EXPECT_FALSE(check_output_folder({root_ / "beside", false, {}, {ds}}));
   const fs::path run = tool_folder("run");
-  EXPECT_FALSE(check_output_folder({run / "eval-new", false, run / "eval-new", {run}}));
+  EXPECT_FALSE(check_output_folder({run / "eval-new", false, run / "eval-new", {run}, run}));
 }
 
 TEST_F(OutputFolderRule, AnInputOrAFolderHoldingOneIsNeverReplaced) {
@@ -219,6 +240,36 @@ TEST_F(OutputFolderRule, OutputFileMustNotBeAnInputOrAFolder) {
   EXPECT_THROW(check_output_file(root_ / "./scene.yaml", {scene}), InvalidInputError);
   EXPECT_THROW(check_output_file(root_, {scene}), InvalidInputError);
   EXPECT_NO_THROW(check_output_file(root_ / "plan.png", {scene}));
+  // An existing file of the user's that is not an input may be replaced.
+  std::ofstream(root_ / "old.png") << "old";
+  EXPECT_NO_THROW(check_output_file(root_ / "old.png", {scene}));
+}
+
+// The rename of <file>.partial would put a regular file where a pipe or device was (as root, over
+// /dev/null): refused before any work, the pipe left as it was.
+TEST_F(OutputFolderRule, OutputFileMustNotBeAPipeOrDevice) {
+  const fs::path fifo = root_ / "pipe.png";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  for (const fs::path& target : {fifo, fs::path("/dev/null")}) {
+    try {
+      check_output_file(target, {});
+      ADD_FAILURE() << target << " accepted";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("a device, pipe or socket"), std::string::npos)
+          << e.what();
+    }
+    EXPECT_THROW(check_file_replaceable(target), InvalidInputError);
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+// A command writing two files (radiomap's PNG and --csv) checks both before writing either: a
+// missing folder is found before the work, not after the first file replaced the user's.
+TEST_F(OutputFolderRule, OutputFileInAMissingFolderIsAnIoErrorBeforeAnyWork) {
+  EXPECT_THROW(check_output_file(root_ / "missing" / "map.csv", {}), IoError);
+  std::ofstream(root_ / "file") << "x";
+  EXPECT_THROW(check_output_file(root_ / "file" / "map.csv", {}), InvalidInputError);
 }
 
 TEST_F(OutputFolderRule, AtomicDirectoryMarksItsFolderAndKeepsUserFolders) {
