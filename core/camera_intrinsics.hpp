@@ -2,6 +2,9 @@
 // Pinhole intrinsics of an RGB-D camera (pixels). Default: Kinect v1 as in the TUM RGB-D
 // benchmark's default calibration (640x480, fx = fy = 525, cx = 319.5, cy = 239.5).
 
+#include <optional>
+#include <string>
+
 #include <Eigen/Core>
 
 namespace wifislam {
@@ -30,5 +33,16 @@ struct CameraIntrinsics {
 
   friend bool operator==(const CameraIntrinsics&, const CameraIntrinsics&) = default;
 };
+
+/// Beyond any depth camera: a 3.7 degree view across 65535 pixels.
+inline constexpr double kMaxFocalLengthPx = 1e6;
+
+/// What makes `k` not a camera, if anything: {key (fx_px, cx_px, ...), why}. The focal lengths
+/// lie in (0, kMaxFocalLengthPx], the principal point in the image. Scenes and calibration.yaml
+/// are checked by this one rule, so a dataset generated from a valid scene always reads back.
+struct IntrinsicsProblem {
+  std::string key, why;
+};
+std::optional<IntrinsicsProblem> intrinsics_problem(const CameraIntrinsics& k);
 
 }  // namespace wifislam

@@ -161,23 +161,34 @@ DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
   c.intrinsics.fy_px = cam_number("fy_px");
   c.intrinsics.cx_px = cam_number("cx_px");
   c.intrinsics.cy_px = cam_number("cy_px");
-  if (c.intrinsics.width_px <= 0 || c.intrinsics.height_px <= 0 || c.intrinsics.fx_px <= 0 ||
-      c.intrinsics.fy_px <= 0) {
-    throw ParseError(ctx.where(cam), "camera", "image size and focal lengths must be positive");
-  }
-  if (const YAML::Node fps = child(ctx, cam, "fps", "camera", false))
+  // Physically meaningful values only: exports copy them into other programs' settings (ORB-SLAM's
+  // Camera.fx, EuRoC's rate_hz), which would take 1e308 or a negative rate without a word.
+  if (const std::optional<IntrinsicsProblem> problem = intrinsics_problem(c.intrinsics))
+    throw ParseError(ctx.where(cam[problem->key]), "camera." + problem->key, problem->why);
+  if (const YAML::Node fps = child(ctx, cam, "fps", "camera", false)) {
     c.camera_fps = number(ctx, fps, "camera.fps");
+    // Up to what `generate --fps` accepts.
+    if (!(c.camera_fps > 0 && c.camera_fps <= 1000))
+      throw ParseError(ctx.where(fps), "camera.fps", "expected a frame rate above 0, up to 1000");
+  }
   if (const YAML::Node depth = child(ctx, root, "depth", "", false)) {
-    c.depth_units_per_metre =
-        number(ctx, child(ctx, depth, "units_per_metre", "depth", true), "depth.units_per_metre");
-    if (!(c.depth_units_per_metre > 0))
-      throw ParseError(ctx.where(depth), "depth.units_per_metre", "must be positive");
+    const YAML::Node units = child(ctx, depth, "units_per_metre", "depth", true);
+    c.depth_units_per_metre = number(ctx, units, "depth.units_per_metre");
+    // A 16-bit PNG holds depths up to 65535 units: beyond 65535 units a metre, not even 1 m.
+    if (!(c.depth_units_per_metre > 0 && c.depth_units_per_metre <= 65535))
+      throw ParseError(
+          ctx.where(units), "depth.units_per_metre",
+          "expected a scale above 0, up to 65535 (16-bit depth: at least 1 m of range)");
   }
   if (const YAML::Node mount = child(ctx, root, "camera_in_base", "", false))
     c.camera_in_base = read_pose(ctx, mount, "camera_in_base");
-  if (const YAML::Node odo = child(ctx, root, "odometry", "", false))
-    c.odometry_rate_hz =
-        number(ctx, child(ctx, odo, "rate_hz", "odometry", true), "odometry.rate_hz");
+  if (const YAML::Node odo = child(ctx, root, "odometry", "", false)) {
+    const YAML::Node rate = child(ctx, odo, "rate_hz", "odometry", true);
+    c.odometry_rate_hz = number(ctx, rate, "odometry.rate_hz");
+    if (!(*c.odometry_rate_hz > 0 && *c.odometry_rate_hz <= 1e4))
+      throw ParseError(ctx.where(rate), "odometry.rate_hz",
+                       "expected a rate above 0, up to 10000 Hz");
+  }
   if (const YAML::Node imu = child(ctx, root, "imu", "", false)) {
     ImuCalibration i;
     auto positive = [&](const char* key) {
@@ -188,7 +199,9 @@ DatasetCalibration read_calibration_yaml(const std::filesystem::path& path) {
       return v;
     };
     i.rate_hz = positive("rate_hz");
-    if (!(i.rate_hz > 0.0)) throw ParseError(ctx.where(imu), "imu.rate_hz", "must be positive");
+    if (!(i.rate_hz > 0.0 && i.rate_hz <= 1e5))
+      throw ParseError(ctx.where(imu["rate_hz"]), "imu.rate_hz",
+                       "expected a rate above 0, up to 100000 Hz");
     i.imu_in_base = read_pose(ctx, child(ctx, imu, "imu_in_base", "imu", true), "imu.imu_in_base");
     i.gyroscope_noise_density = positive("gyroscope_noise_density");
     i.gyroscope_random_walk = positive("gyroscope_random_walk");

@@ -16,6 +16,7 @@
 #include "core/dataset_format.hpp"
 #include "core/depth_png.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/line_cursor.hpp"
 #include "core/output_folder.hpp"
 #include "core/png_codec.hpp"
@@ -28,10 +29,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_file(const fs::path& p) {
-  std::error_code ec;
-  return fs::is_regular_file(p, ec);
-}
+// Whether the dataset holds file `p`. A folder or device in a file's place is bad input, not an
+// absent file: a calibration.yaml that is a folder must not silently mean the default intrinsics.
+bool is_file(const fs::path& p) { return input_file_present(p, "one of a dataset's files"); }
 
 std::vector<unsigned char> read_bytes(const fs::path& path, const std::string& listed_at) {
   std::ifstream in(path, std::ios::binary);

@@ -37,4 +37,21 @@ InputFile::~InputFile() = default;
 InputFile::InputFile(InputFile&&) noexcept = default;
 InputFile& InputFile::operator=(InputFile&&) noexcept = default;
 
+bool input_file_present(const std::filesystem::path& path, std::string_view what) {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (!std::filesystem::exists(status)) return false;
+  if (std::filesystem::is_regular_file(status)) return true;
+  throw ParseError(
+      path.string(), "",
+      fmt::format("is {}; expected a file ({})",
+                  std::filesystem::is_directory(status) ? "a folder" : "a device, pipe or socket",
+                  what));
+}
+
+void require_input_file(const std::filesystem::path& path, std::string_view what) {
+  if (!input_file_present(path, what))
+    throw IoError(fmt::format("{}: missing ({})", path.string(), what));
+}
+
 }  // namespace wifislam

@@ -6,9 +6,11 @@
 // the caller reports like any empty file. Folders are refused by name.
 
 #include <cstdio>
+#include <filesystem>
 #include <istream>
 #include <memory>
 #include <string>
+#include <string_view>
 
 namespace wifislam {
 
@@ -30,5 +32,15 @@ class InputFile {
   std::unique_ptr<std::streambuf> buffer_;
   std::unique_ptr<std::istream> stream_;
 };
+
+/// Whether an optional input file (a run folder's graph.json, a dataset's calibration.yaml) is
+/// there: false when nothing is at `path` (or a link to nothing), true for a regular file or a
+/// link to one. Anything else there (a folder, a device, a pipe) is the wrong kind of thing, bad
+/// input rather than absent: ParseError naming `path` and `what` it should be.
+bool input_file_present(const std::filesystem::path& path, std::string_view what);
+
+/// A required input file: IoError naming `path` and `what` when nothing is there (I/O, exit 3);
+/// ParseError when something else is (as input_file_present).
+void require_input_file(const std::filesystem::path& path, std::string_view what);
 
 }  // namespace wifislam

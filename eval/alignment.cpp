@@ -1,5 +1,8 @@
 #include "eval/alignment.hpp"
 
+#include <cmath>
+
+#include <fmt/format.h>
 #include <Eigen/Geometry>
 
 #include "core/error.hpp"
@@ -40,6 +43,18 @@ Alignment align_points(const Eigen::Matrix3Xd& source, const Eigen::Matrix3Xd& t
   if (source.cols() < 3) {
     throw InvalidInputError("alignment: needs at least 3 associated poses, got " +
                             std::to_string(source.cols()));
+  }
+  if (with_scale) {
+    // Umeyama's scale divides by the source's spread: positions that all coincide (a stationary
+    // estimate) have no scale to find, and gave NaN for every error.
+    const Eigen::Vector3d centre = source.rowwise().mean();
+    const double spread_m2 = (source.colwise() - centre).squaredNorm() / source.cols();
+    if (!(spread_m2 > 1e-12)) {
+      throw InvalidInputError(
+          fmt::format("sim3 alignment: the {} associated estimated positions coincide (spread "
+                      "{:.3g} m RMS), so they have no scale to fit; align with se3",
+                      source.cols(), std::sqrt(spread_m2)));
+    }
   }
   const Eigen::Matrix4d t = Eigen::umeyama(source, target, with_scale);
   Alignment a;

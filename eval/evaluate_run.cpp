@@ -13,6 +13,7 @@
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/run_format.hpp"
 #include "core/tum_trajectory.hpp"
 #include "eval/association.hpp"
@@ -29,7 +30,7 @@ namespace {
 
 fs::path required_file(const fs::path& folder, const char* name, const char* what) {
   const fs::path p = folder / name;
-  if (!fs::is_regular_file(p)) throw IoError(fmt::format("{}: missing ({})", p.string(), what));
+  require_input_file(p, what);
   return p;
 }
 
@@ -83,7 +84,7 @@ std::optional<double> optional_seconds(const nlohmann::json& j,
 RunIdentity identity_of(const fs::path& run_json) {
   namespace key = run_folder::run_key;
   RunIdentity id;
-  if (!fs::is_regular_file(run_json)) return id;
+  if (!input_file_present(run_json, "the run's identity")) return id;
   std::ifstream in(run_json);
   nlohmann::json j;
   try {
@@ -188,17 +189,28 @@ struct RunInputs {
 RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
                       const EvalOptions& options, RunEvaluation& ev) {
   RunInputs in;
-  in.bare_trajectory = fs::is_regular_file(input);
-  if (!in.bare_trajectory && !fs::is_directory(input)) {
-    throw IoError(input.string() + ": neither a run folder nor a trajectory file");
+  // A path that is there but of the wrong kind is bad input (exit 2); one that is not, I/O.
+  std::error_code ec;
+  const fs::file_status input_status = fs::status(input, ec);
+  in.bare_trajectory = fs::is_regular_file(input_status);
+  if (!fs::exists(input_status)) throw IoError(input.string() + ": not found");
+  if (!in.bare_trajectory && !fs::is_directory(input_status)) {
+    throw ParseError(input.string(), "",
+                     "is neither a run folder nor a trajectory file (a device, pipe or socket)");
   }
-  if (!fs::is_directory(dataset_dir)) {
+  const fs::file_status dataset_status = fs::status(dataset_dir, ec);
+  if (!fs::exists(dataset_status)) {
     throw IoError(dataset_dir.string() + ": dataset folder not found");
+  }
+  if (!fs::is_directory(dataset_status)) {
+    throw ParseError(dataset_dir.string(), "",
+                     "is not a folder; give the dataset folder (it holds groundtruth.txt)");
   }
   in.run_dir = in.bare_trajectory ? fs::path() : input;
   const auto optional_file = [&](const char* name) {
-    return in.bare_trajectory || !fs::is_regular_file(in.run_dir / name) ? fs::path()
-                                                                         : in.run_dir / name;
+    return in.bare_trajectory || !input_file_present(in.run_dir / name, "a run folder's file")
+               ? fs::path()
+               : in.run_dir / name;
   };
   // Exactly the decimal given: an offset between Unix clocks has 16 digits or more, beyond what a
   // product with 1e9 in doubles keeps.
@@ -248,14 +260,15 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   ev.loop_closure_cost_s = identity.loop_closure_cost_s;
   ev.likelihood_posterior_cpu_s = identity.likelihood_posterior_cpu_s;
   ev.loop_query_s = identity.loop_query_s;
-  if (fs::exists(dataset_dir / dataset::kCalibration)) {
+  if (input_file_present(dataset_dir / dataset::kCalibration, "the dataset's calibration")) {
     in.calibration = read_calibration_yaml(dataset_dir / dataset::kCalibration);
   }
   ev.intrinsics = in.calibration.intrinsics;
   in.clusters_file = in.run_dir / run_folder::kWifiClusters;
   // Our Wi-Fi runs always write their clusters; an external system's Wi-Fi variant may not.
   const bool external = identity.frontend.rfind(run_folder::kExternalFrontendPrefix, 0) == 0;
-  if (ev.wifi_run && (!external || fs::exists(in.clusters_file))) {
+  if (ev.wifi_run &&
+      (!external || input_file_present(in.clusters_file, "the run's Wi-Fi clusters"))) {
     required_file(in.run_dir, run_folder::kWifiClusters, "the Wi-Fi clusters run.json announces");
     ev.wifi_cluster_list = read_wifi_clusters_csv(in.clusters_file);
     ev.wifi_clusters = static_cast<std::int64_t>(ev.wifi_cluster_list.size());

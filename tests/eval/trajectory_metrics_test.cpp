@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "core/error.hpp"
 #include "core/rng.hpp"
 #include "eval/alignment.hpp"
@@ -73,6 +75,24 @@ TEST(Alignment, RejectsTooFewPoints) {
   Eigen::Matrix3Xd two(3, 2);
   two.setRandom();
   EXPECT_THROW(align_points(two, two, false), InvalidInputError);
+}
+
+// Positions that all coincide (an estimate standing still) have no scale: sim3 gave NaN errors
+// and said nothing. It says why now; se3 aligns them as before.
+TEST(Alignment, SimilarityOfPositionsThatCoincideIsRefusedNamingTheCause) {
+  Eigen::Matrix3Xd still(3, 5);
+  still.colwise() = Eigen::Vector3d(1.0, 2.0, 0.5);
+  Eigen::Matrix3Xd target = still;
+  target.row(0).array() += 0.25;
+  try {
+    align_points(still, target, true);
+    ADD_FAILURE() << "sim3 of coinciding positions was accepted";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no scale"), std::string::npos) << e.what();
+  }
+  const Alignment rigid = align_points(still, target, false);
+  EXPECT_TRUE(rigid.translation_m.allFinite());
+  EXPECT_DOUBLE_EQ(rigid.scale, 1.0);
 }
 
 TEST(AbsoluteTrajectoryError, FixedOffsetsOfKnownNormGiveThatRmse) {
