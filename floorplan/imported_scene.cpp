@@ -22,7 +22,11 @@ std::string default_name(const ImportedPlan& plan) {
   std::string name;
   for (char c : stem + "_level_" + plan.level)
     name += std::isalnum(static_cast<unsigned char>(c)) ? static_cast<char>(std::tolower(c)) : '_';
-  return name;
+  // A scene name starts with a letter or digit and has at most 100 characters
+  // (sim/scene/scene_loader.hpp, scene_name_problem).
+  name.erase(0, name.find_first_not_of('_'));
+  if (name.empty()) name = "plan";
+  return name.substr(0, 100);
 }
 
 }  // namespace

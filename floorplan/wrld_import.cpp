@@ -11,6 +11,7 @@
 // take their space's material, so a glass pane is not told apart (noted in the docs).
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <optional>
 
@@ -70,12 +71,28 @@ MainJson read_main_json(const std::filesystem::path& main_json) {
                    [](const auto& a, const auto& b) { return a.first < b.first; });
   MainJson out;
   for (auto& [z, l] : levels) out.levels.push_back(std::move(l));
-  const auto& location = j.contains("location") ? j["location"] : nlohmann::json();
-  if (location.is_object() && location.contains("coordinates") &&
-      location["coordinates"].is_array() && location["coordinates"].size() == 2 &&
-      location["coordinates"][0].is_number() && location["coordinates"][1].is_number())
-    out.location_deg = Eigen::Vector2d(location["coordinates"][0].get<double>(),
-                                       location["coordinates"][1].get<double>());
+  // The building's point (GeoJSON: {"type": "Point", "coordinates": [lon, lat]}) places the plan;
+  // without one the plan's centre does. One that is there but malformed is an error, not a
+  // silent fall-back to another origin.
+  if (j.contains("location")) {
+    const auto& location = j["location"];
+    const auto fail = [&](const char* why) {
+      throw ParseError(main_json.string(), "location.coordinates", why);
+    };
+    if (!location.is_object() || !location.contains("coordinates")) {
+      fail("expected the building's point, {\"type\": \"Point\", \"coordinates\": [lon, lat]}");
+    }
+    const auto& lon_lat = location["coordinates"];
+    if (!lon_lat.is_array() || lon_lat.size() != 2 || !lon_lat[0].is_number() ||
+        !lon_lat[1].is_number()) {
+      fail("expected [longitude, latitude] in degrees, two numbers");
+    }
+    const Eigen::Vector2d deg(lon_lat[0].get<double>(), lon_lat[1].get<double>());
+    if (!(std::abs(deg.x()) <= 180.0 && std::abs(deg.y()) <= 90.0)) {
+      fail("expected a longitude from -180 to 180 and a latitude from -90 to 90 degrees");
+    }
+    out.location_deg = deg;
+  }
   return out;
 }
 

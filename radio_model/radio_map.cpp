@@ -36,9 +36,11 @@ double ap_rssi(const PropagationModel& model, std::size_t a, const RadioLink& li
 /// An empty map over the area at the options' resolution. Throws InvalidInputError for a
 /// resolution or height out of range, or a map over the size limits.
 RadioMap empty_map(const RadioMapArea& area, const RadioMapOptions& options) {
-  if (!(options.resolution_m > 0.0))
+  // At most 10 m a cell, as `radiomap --res` says: a coarser (or infinite) grid is no map.
+  if (!(options.resolution_m > 0.0 && options.resolution_m <= kRadioMapMaxResolutionM))
     throw InvalidInputError(
-        fmt::format("radio map resolution must be > 0 (got {})", options.resolution_m));
+        fmt::format("radio map resolution must be > 0 and at most {} m (got {})",
+                    kRadioMapMaxResolutionM, options.resolution_m));
   if (!(options.receiver_height_m > 0.0 && options.receiver_height_m < area.ceiling_m)) {
     throw InvalidInputError(
         fmt::format("radio map: receiver height {} m is not between the floor and the ceiling "

@@ -65,10 +65,12 @@ struct RadioMapArea {
 /// picture is a cairo surface, which takes at most 32767).
 inline constexpr std::int64_t kRadioMapMaxCells = 16'000'000;
 inline constexpr int kRadioMapMaxSide = 16384;
+/// The coarsest cell (`radiomap --res` takes 0.01 to 10 m).
+inline constexpr double kRadioMapMaxResolutionM = 10.0;
 
-/// Throws InvalidInputError for an unknown ap_id, a non-positive resolution, a resolution that
-/// needs more cells than kRadioMapMaxCells or kRadioMapMaxSide, a receiver height not under the
-/// ceiling, or a model without access points.
+/// Throws InvalidInputError for an unknown ap_id, a resolution not in (0, kRadioMapMaxResolutionM]
+/// or one that needs more cells than kRadioMapMaxCells or kRadioMapMaxSide, a receiver height not
+/// under the ceiling, or a model without access points.
 RadioMap compute_radio_map(const PropagationModel& model, const RadioMapArea& area,
                            const RadioMapOptions& options);
 

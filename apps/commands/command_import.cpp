@@ -67,6 +67,10 @@ std::vector<std::string> attribution_lines(const ImportArgs& args) {
 
 void run_import(const ImportArgs& args) {
   using namespace wifislam;
+  if (!args.name.empty()) {
+    if (const std::optional<std::string> problem = sim::scene::scene_name_problem(args.name))
+      throw InvalidInputError("--name: " + *problem);
+  }
   check_output_file(args.output_path, {args.plan_path});
   floorplan::ImportOptions options;
   if (args.format == "osm-sit") options.format = floorplan::PlanFormat::kOsmSit;

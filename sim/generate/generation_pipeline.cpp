@@ -3,6 +3,9 @@
 #include <limits>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "core/error.hpp"
 #include "core/wall_clock.hpp"
 #include "sim/site/radio_options.hpp"
 
@@ -22,7 +25,14 @@ std::shared_ptr<const site::Site> timed_site(const scene::Scene& scene, double& 
 scene::Scene resolve_scene(const scene::Scene& scene, const GenerateOptions& options) {
   scene::Scene out = scene;
   if (options.seed) out.seed = *options.seed;
-  if (options.fps) out.sensors.camera.fps = *options.fps;
+  if (options.fps) {
+    if (!(*options.fps >= scene::kMinCameraFps && *options.fps <= scene::kMaxCameraFps)) {
+      throw InvalidInputError(fmt::format("fps: expected a frame rate from {} to {}, got {}",
+                                          scene::kMinCameraFps, scene::kMaxCameraFps,
+                                          *options.fps));
+    }
+    out.sensors.camera.fps = *options.fps;
+  }
   return out;
 }
 

@@ -238,6 +238,11 @@ struct Route {
   std::string level;
 };
 
+/// The frame rates a scene's camera (and every --fps) may have. The schedule counts frames over
+/// the route, so an unbounded rate would count for ever.
+inline constexpr double kMinCameraFps = 0.1;
+inline constexpr double kMaxCameraFps = 1000.0;
+
 struct CameraSpec {
   CameraIntrinsics intrinsics;  // default Kinect v1
   double fps = 30.0;

@@ -2,18 +2,23 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "core/camera_intrinsics.hpp"
 #include "core/did_you_mean.hpp"
 #include "core/error.hpp"
 #include "core/text_lines.hpp"
@@ -355,9 +360,22 @@ class YamlReader {
 };
 
 /// Writes a struct back as YAML through the same schema (resolved scenes).
+/// Whether plain YAML would read `text` as something other than a string (null, a boolean or a
+/// number: "007", "1e5", "0x1F", ".5", "nan", "yes"), so a reader that types plain scalars, as
+/// Python's to_dict does, would change it.
+bool reads_as_other_than_text(const std::string& text) {
+  std::string lower;
+  for (char c : text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* word : {"", "~", "null", "true", "false", "yes", "no", "on", "off", "y", "n"})
+    if (lower == word) return true;
+  char* end = nullptr;
+  std::strtod(text.c_str(), &end);
+  return end != text.c_str() && *end == '\0';
+}
+
 class YamlWriter {
  public:
-  explicit YamlWriter(YAML::Emitter& out) : out_(out) {}
+  YamlWriter(YAML::Emitter& out, TextQuoting quoting) : out_(out), quoting_(quoting) {}
   void required() {}
   void number(const char* key, double value, Limits) {
     out_ << YAML::Key << key << YAML::Value << exact(value);
@@ -376,7 +394,11 @@ class YamlWriter {
   }
   void boolean(const char* key, bool value) { out_ << YAML::Key << key << YAML::Value << value; }
   void text(const char* key, const std::string& value) {
-    if (!value.empty()) out_ << YAML::Key << key << YAML::Value << value;
+    if (value.empty()) return;
+    out_ << YAML::Key << key << YAML::Value;
+    if (quoting_ == TextQuoting::kWhereAmbiguous && reads_as_other_than_text(value))
+      out_ << YAML::DoubleQuoted;
+    out_ << value;
   }
   template <class E>
   void choice(const char* key, E value, const schema::Names<E>& names) {
@@ -466,6 +488,7 @@ class YamlWriter {
   // Shortest text that reads back to the same double ("2.8", not "2.7999999999999998").
   static std::string exact(double value) { return format_double_exact(value); }
   YAML::Emitter& out_;
+  TextQuoting quoting_;
 };
 
 using Locator = std::function<std::string(const std::string& key_path)>;
@@ -678,6 +701,23 @@ void check_depth_sensor(const Scene& scene, const Locator& locate) {
   }
 }
 
+void check_name(const Scene& scene, const Locator& locate) {
+  if (const std::optional<std::string> problem = scene_name_problem(scene.name))
+    invalid(locate, "name", *problem);
+}
+
+void check_camera(const Scene& scene, const Locator& locate) {
+  const CameraSpec& camera = scene.sensors.camera;
+  if (const std::optional<IntrinsicsProblem> problem = intrinsics_problem(camera.intrinsics))
+    invalid(locate, "sensors.camera." + problem->key, problem->why);
+  // The loader bounds it already; a scene built in code (or given another fps) is checked here.
+  if (!(camera.fps >= kMinCameraFps && camera.fps <= kMaxCameraFps)) {
+    invalid(locate, "sensors.camera.fps",
+            fmt::format("expected a frame rate from {} to {}, got {}", kMinCameraFps, kMaxCameraFps,
+                        camera.fps));
+  }
+}
+
 void check_color_sensor(const Scene& scene, const Locator& locate) {
   const auto& color = scene.sensors.color;
   if (color.auto_exposure &&
@@ -821,6 +861,7 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
             fmt::format("expected a whole number from 0 to {}, got {}", dataset::kMaxTimeOriginS,
                         scene.sensors.time_origin_s));
   }
+  check_name(scene, locate);
   check_levels(scene, locate);
   const std::set<std::string> node_ids = check_nodes(scene, locate);
   const Adjacency adjacency = check_corridors(scene, node_ids, locate);
@@ -828,6 +869,7 @@ void validate_scene_impl(const Scene& scene, const Locator& locate) {
   check_open_area_ids(scene, locate);
   check_spaces(scene, locate);
   check_route(scene, node_ids, locate);
+  check_camera(scene, locate);
   check_depth_sensor(scene, locate);
   check_color_sensor(scene, locate);
   check_access_points(scene, locate);
@@ -908,10 +950,24 @@ radio_model::ReceiverDevice load_receiver_device(const std::string& name_or_file
 
 void validate_scene(const Scene& scene) { validate_scene_impl(scene, nullptr); }
 
-std::string resolved_scene_yaml(const Scene& scene) {
+std::optional<std::string> scene_name_problem(const std::string& name) {
+  constexpr std::size_t kMaxNameLength = 100;
+  const auto alnum = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0; };
+  const bool allowed = std::all_of(name.begin(), name.end(), [&](char c) {
+    return alnum(c) || c == '_' || c == '-' || c == '.';
+  });
+  if (name.empty() || (name.size() <= kMaxNameLength && allowed && alnum(name.front())))
+    return std::nullopt;
+  return fmt::format(
+      "'{}' is not a scene name: expected up to {} letters, digits, '_', '-' and '.', starting "
+      "with a letter or digit (it names folders, as datasets/<name>-seed<seed>)",
+      name, kMaxNameLength);
+}
+
+std::string resolved_scene_yaml(const Scene& scene, TextQuoting quoting) {
   YAML::Emitter out;
   out << YAML::BeginMap;
-  YamlWriter writer(out);
+  YamlWriter writer(out, quoting);
   Scene copy = scene;
   schema::visit(writer, copy);
   out << YAML::EndMap;

@@ -6,6 +6,7 @@
 // range, references to missing nodes/corridors, a disconnected corridor graph, a route through a
 // corridor that does not exist ... Nothing is silently defaulted except keys that are absent.
 
+#include <optional>
 #include <string>
 
 #include "sim/scene/scene.hpp"
@@ -26,12 +27,25 @@ Scene load_scene_yaml(const std::string& yaml_text, const std::string& source_na
 radio_model::ReceiverDevice load_receiver_device(const std::string& name_or_file,
                                                  const std::string& folder = "");
 
+/// Why `name` cannot be a scene's name, if it cannot: a name becomes part of folder names
+/// (compare's datasets/<name>-seed<seed>), so it is up to 100 letters, digits, '_', '-' and '.',
+/// starting with a letter or digit (no '/', no "..", nothing a shell or YAML treats specially).
+/// The key is optional: an empty name is none.
+std::optional<std::string> scene_name_problem(const std::string& name);
+
 /// Checks the cross-references and ranges of a scene built in code (the loader calls it too).
 /// Throws InvalidInputError naming the offending item.
 void validate_scene(const Scene& scene);
 
+/// How resolved_scene_yaml writes text values (names, ids, descriptions).
+enum class TextQuoting {
+  kPlain,           // as datasets' scene.yaml has them: the scene loader reads them as text
+  kWhereAmbiguous,  // quoted where plain YAML would read a number, boolean or null ("007")
+};
+
 /// The scene as YAML with every key, defaults filled in (the "resolved scene" written into
-/// datasets). Loading the output gives back an equal scene.
-std::string resolved_scene_yaml(const Scene& scene);
+/// datasets). Loading the output gives back an equal scene. A reader that types plain scalars
+/// (Python's Scene.to_dict) asks for TextQuoting::kWhereAmbiguous, so a name "007" stays text.
+std::string resolved_scene_yaml(const Scene& scene, TextQuoting quoting = TextQuoting::kPlain);
 
 }  // namespace wifislam::sim::scene

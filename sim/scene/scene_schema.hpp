@@ -267,7 +267,7 @@ void visit(V& v, CameraSpec& c) {
   v.number("fy_px", c.intrinsics.fy_px, kPositive);
   v.number("cx_px", c.intrinsics.cx_px, kAny);
   v.number("cy_px", c.intrinsics.cy_px, kAny);
-  v.number("fps", c.fps, Limits{0.1, 1000.0});
+  v.number("fps", c.fps, Limits{kMinCameraFps, kMaxCameraFps});
   v.number("height_m", c.height_m, Limits{0.05, 5.0});
   v.number("pitch_deg", c.pitch_deg, Limits{-60.0, 60.0});
 }

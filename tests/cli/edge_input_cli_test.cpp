@@ -3,7 +3,10 @@
 // and every bad input is exit 2 naming the file (and line), never exit 3 or a silent pass.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
@@ -148,6 +151,129 @@ TEST_F(EdgeInput, AnImageThatIsADeviceOrAFolderIsBadInputAndSoIsAFileForADataset
   expect_refused(wifislam("check " + (dataset_ / "scene.yaml").string()),
                  {"not a dataset folder (it is a file)"});
   EXPECT_EQ(wifislam("check " + (scratch_ / "none").string()).exit_code, 3);
+}
+
+// What is there but of the wrong kind is bad input (exit 2), not a missing file (exit 3) or one
+// silently left out: a run folder's files, the dataset given as a file, a device as the input.
+TEST_F(EdgeInput, EvalRefusesAFolderOrDeviceInPlaceOfAFile) {
+  const fs::path run = scratch_ / "run";
+  ASSERT_EQ(wifislam("slam " + dataset_.string() + " -o " + run.string()).exit_code, 0);
+  for (const char* name : {"trajectory.txt", "keyframes.txt", "graph.json", "timing.json"}) {
+    const fs::path edited = scratch_ / (std::string("edited_") + name);
+    fs::copy(run, edited, fs::copy_options::recursive);
+    fs::remove(edited / name);
+    fs::create_directories(edited / name);
+    expect_refused(
+        wifislam("eval " + edited.string() + " --gt " + dataset_.string() + " --no-plots"),
+        {(edited / name).string(), "is a folder; expected a file"});
+    EXPECT_FALSE(fs::exists(edited / "eval")) << name;
+  }
+  expect_refused(
+      wifislam("eval " + run.string() + " --gt " + (dataset_ / "groundtruth.txt").string() +
+               " --no-plots -o " + (scratch_ / "e1").string()),
+      {"groundtruth.txt: is not a folder"});
+  expect_refused(wifislam("eval /dev/null --gt " + dataset_.string() + " --no-plots -o " +
+                          (scratch_ / "e2").string()),
+                 {"/dev/null: is neither a run folder nor a trajectory file"});
+  EXPECT_EQ(wifislam("eval " + (scratch_ / "none").string() + " --gt " + dataset_.string() +
+                     " --no-plots")
+                .exit_code,
+            3);
+}
+
+// `eval ds/groundtruth.txt --gt ds`: the default output <file>_eval would be written into the
+// dataset it reads; refused, by default or named, and the dataset is left as it was.
+TEST_F(EdgeInput, EvalNeverWritesItsDefaultOutputIntoTheGroundTruthsDataset) {
+  const fs::path ds = copy("ds");
+  const auto before = test::listing(ds);
+  const std::string trajectory = (ds / "groundtruth.txt").string();
+  for (const std::string& output : {std::string(), " -o " + (ds / "groundtruth_eval").string()}) {
+    expect_refused(wifislam("eval " + trajectory + " --gt " + ds.string() + " --no-plots" + output),
+                   {"inside an input", ds.string()});
+  }
+  EXPECT_EQ(test::listing(ds), before);
+  // Beside the dataset it is written as before.
+  EXPECT_EQ(wifislam("eval " + trajectory + " --gt " + ds.string() + " --no-plots -o " +
+                     (scratch_ / "gt_eval").string())
+                .exit_code,
+            0);
+}
+
+// calibration.yaml is copied into other programs' settings by export: values no camera has are
+// refused at their line and key, with or without checksums, and a folder in its place is not
+// the default Kinect intrinsics.
+TEST_F(EdgeInput, CalibrationValuesNoCameraHasAreRefusedAndSoIsAFolder) {
+  const std::string calibration = test::read_file(dataset_ / "calibration.yaml");
+  const auto edited = [&](const std::string& key, const std::string& value) {
+    const auto at = calibration.find(key + ": ");
+    EXPECT_NE(at, std::string::npos) << key;
+    const auto end = calibration.find_first_of(",}\n", at);
+    std::string text = calibration;
+    text.replace(at, end - at, key + ": " + value);
+    return text;
+  };
+  const struct {
+    const char* key;
+    const char* value;
+    const char* message;
+  } cases[] = {{"fx_px", "1e308", "camera.fx_px"},
+               {"cx_px", "-3", "camera.cx_px"},
+               {"fps", "-1", "camera.fps"},
+               {"units_per_metre", "1e300", "depth.units_per_metre"}};
+  for (const auto& c : cases) {
+    const fs::path ds = plain_copy(std::string("calibration_") + c.key);
+    test::write_file(ds / "calibration.yaml", edited(c.key, c.value));
+    expect_refused(wifislam("check " + ds.string() + " --no-images"),
+                   {(ds / "calibration.yaml").string() + ":", c.message});
+    expect_refused(wifislam("export " + ds.string() + " --for orbslam2 -o " +
+                            (scratch_ / (std::string("export_") + c.key)).string()),
+                   {c.message});
+    EXPECT_FALSE(fs::exists(scratch_ / (std::string("export_") + c.key)));
+  }
+  const fs::path ds = plain_copy("calibration_folder");
+  fs::remove(ds / "calibration.yaml");
+  fs::create_directories(ds / "calibration.yaml");
+  expect_refused(wifislam("check " + ds.string() + " --no-images"),
+                 {(ds / "calibration.yaml").string(), "is a folder; expected a file"});
+}
+
+// A file written by renaming <file>.partial over it would replace a pipe or device: refused
+// before any work. A command writing two files checks both first, so a --csv it cannot write
+// leaves the user's PNG as it was.
+TEST_F(EdgeInput, OutputFilesAreNeverPipesAndBothOfRadiomapsAreCheckedFirst) {
+  const fs::path scene = scratch_ / "scene.yaml";
+  test::write_file(scene, test::kTinyLoopYaml);
+  const fs::path pipe = scratch_ / "pipe.png";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  expect_refused(wifislam("radiomap " + scene.string() + " --strongest -o " + pipe.string()),
+                 {pipe.string(), "not a regular file"});
+  expect_refused(wifislam("world " + scene.string() + " --plan " + pipe.string()),
+                 {pipe.string(), "not a regular file"});
+  EXPECT_TRUE(fs::is_fifo(pipe));
+  const fs::path mine = scratch_ / "mine.png";
+  test::write_file(mine, "mine");
+  const auto r = wifislam("radiomap " + scene.string() + " --strongest -o " + mine.string() +
+                          " --csv " + (scratch_ / "missing" / "map.csv").string());
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+  expect_refused(wifislam("radiomap " + scene.string() + " --strongest -o " + mine.string() +
+                          " --csv " + pipe.string()),
+                 {pipe.string(), "not a regular file"});
+  EXPECT_EQ(test::read_file(mine), "mine");
+}
+
+// A scene's name becomes folder names (compare's datasets/<name>-seed<seed>): a name with '/'
+// or ".." would write outside the output folder. Refused at its line, before any work.
+TEST_F(EdgeInput, ASceneNameThatCannotNameAFolderIsRefused) {
+  const fs::path scene =
+      test::tiny_loop_with(scratch_, "name: cli_tiny_loop", "name: \"../escaped\"", "named.yaml");
+  const fs::path out = scratch_ / "out" / "compare";
+  fs::create_directories(out.parent_path());
+  test::expect_located_bad_input(wifislam("compare " + scene.string() +
+                                          " --fps 1 --max-frames 4 --no-plots -o " + out.string()),
+                                 scene.string() + ":2:", "not a scene name");
+  EXPECT_EQ(test::listing(scratch_ / "out"), std::vector<std::string>{});
+  EXPECT_FALSE(fs::exists(scratch_ / "escaped-seed91"));
 }
 
 TEST_F(EdgeInput, SetFrontendCannotOverrideFrontend) {

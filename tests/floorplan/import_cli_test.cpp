@@ -114,6 +114,32 @@ TEST_F(ImportCli, BrokenMainJsonIsLocatedNotAnInternalError) {
   expect_refused("import " + level, {"main.json", "is not a regular file"});
 }
 
+// The building's point places the plan on Earth; a malformed one fell back to the plan's centre
+// without a word. Each is refused naming the key (the import fails before planning the route).
+TEST_F(ImportCli, AMalformedBuildingLocationIsRefusedNotReplaced) {
+  const fs::path plan = scratch_ / "wrld";
+  fs::copy(test::kShippedPlans / "westport_house_wrld", plan);
+  const std::string level = (plan / "westport-house-floor-gf.geojson").string();
+  const std::string main_json = test::read_file(plan / "main.json");
+  const std::size_t at = main_json.find("\"coordinates\"");
+  ASSERT_NE(at, std::string::npos) << main_json.substr(0, 400);
+  const std::size_t end = main_json.find(']', at) + 1;
+  for (const std::string bad : {"\"coordinates\": [\"a\", \"b\"]", "\"coordinates\": [500, 56.4]",
+                                "\"coordinates\": [-2.97]", "\"place\": \"Dundee\""}) {
+    std::string edited = main_json;
+    test::write_file(plan / "main.json", edited.replace(at, end - at, bad));
+    expect_refused("import " + level, {"main.json", "location.coordinates"});
+  }
+}
+
+// --name becomes the scene's name, which names folders: checked before any work, naming --name.
+TEST_F(ImportCli, ANameThatCannotNameAFolderIsRefusedAsTheOption) {
+  const std::string level =
+      (test::kShippedPlans / "westport_house_wrld" / "westport-house-floor-gf.geojson").string();
+  for (const std::string bad : {"'x y: z'", "../up", "a/b"})
+    expect_refused("import " + level + " --name " + bad, {"--name", "not a scene name"});
+}
+
 TEST_F(ImportCli, AFeatureFarFromTheRestIsRefusedBeforeTheSceneIsBuilt) {
   // A corridor and one room half a degree (~50 km) away: the scene could not hold it, and
   // building it first took minutes and gigabytes.

@@ -4,7 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -333,6 +336,48 @@ TEST(SceneErrors, SensorModelKeysAreLocated) {
   scene.sensors.color.exposure_min_gain = 3.0;
   scene.sensors.color.exposure_max_gain = 2.0;
   EXPECT_THROW(scene::validate_scene(scene), InvalidInputError);
+}
+
+// A name becomes folder names (compare's datasets/<name>-seed<seed>): one with '/' or ".." wrote
+// outside compare's output folder. Refused at its line; names as the shipped scenes have pass.
+TEST(SceneErrors, ANameThatCannotNameAFolderIsRefused) {
+  for (const std::string& bad : std::vector<std::string>{"../escaped", "a/b", ".hidden", "-dash",
+                                                         "with space", std::string(101, 'a')}) {
+    const auto e = expect_parse_error(std::string(kValidBody) + "name: \"" + bad + "\"\n");
+    EXPECT_EQ(e.key_path(), "name") << bad;
+    EXPECT_EQ(e.where(), "bad.yaml:11:7") << bad;
+    EXPECT_NE(e.detail().find("not a scene name"), std::string::npos) << e.what();
+  }
+  for (const std::string& good :
+       std::vector<std::string>{"c_hall", "fei_level_1", "A.b-c_9", std::string(100, 'a')}) {
+    EXPECT_EQ(
+        scene::load_scene_yaml(std::string(kValidBody) + "name: " + good + "\n", "ok.yaml").name,
+        good);
+  }
+  EXPECT_EQ(scene::scene_name_problem(""), std::nullopt);  // the key is optional
+}
+
+// One rule for a camera, the scene's and a dataset's calibration.yaml alike (core's
+// intrinsics_problem): a dataset generated from a valid scene always reads back.
+TEST(SceneErrors, CameraIntrinsicsNoCameraHasAreRefused) {
+  const std::pair<const char*, const char*> cases[] = {
+      {"sensors: {camera: {cx_px: -3}}\n", "sensors.camera.cx_px"},
+      {"sensors: {camera: {cy_px: 481}}\n", "sensors.camera.cy_px"},
+      {"sensors: {camera: {fx_px: 1e7}}\n", "sensors.camera.fx_px"}};
+  for (const auto& [text, key] : cases) {
+    const auto e = expect_parse_error(std::string(kValidBody) + text);
+    EXPECT_EQ(e.key_path(), key) << text;
+  }
+  // Built in code (or given another fps), the frame rate is checked too: an infinite one made
+  // the frame schedule count for ever.
+  scene::Scene scene = scene::load_scene_yaml(kValidBody, "ok.yaml");
+  scene.sensors.camera.fps = std::numeric_limits<double>::infinity();
+  try {
+    scene::validate_scene(scene);
+    ADD_FAILURE() << "an infinite frame rate was accepted";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("sensors.camera.fps"), std::string::npos) << e.what();
+  }
 }
 
 TEST(SceneErrors, ValidateSceneBuiltInCodeRaisesInvalidInput) {
