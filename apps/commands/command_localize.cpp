@@ -156,6 +156,11 @@ void check_query_options(const LocalizeArgs& args, bool map_share_given) {
   if (map_share_given && (!args.queries.empty() || args.queries_session))
     throw ParseError("--map-share", std::to_string(args.map_share),
                      "with a query run the whole input is the map; --map-share splits one run");
+  // The same run as queries would find every image in the map: a perfect score that says nothing.
+  if (!args.queries.empty() && resolve_path(args.queries) == resolve_path(args.input))
+    throw ParseError("--queries", args.queries,
+                     "is the input itself; give another run of the same route (another session, "
+                     "device or day), or leave it out to split the input with --map-share");
 }
 
 void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {

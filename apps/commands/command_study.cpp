@@ -86,6 +86,8 @@ void add_cases_command(CLI::App* app) {
   cases->add_option("file", *file, "Study file (YAML)")->required();
   cases->callback([file] {
     const study::StudyFile s = study::load_study_file(*file);
+    // Every case checked before the table: a refused file prints no table (exit 2, stdout empty).
+    study::check_cases(s);
     std::string header = "case_id";
     for (const study::StudyAxis& a : s.axes) header += "\t" + a.key;
     fmt::print("{}\n", header);
@@ -94,7 +96,6 @@ void add_cases_command(CLI::App* app) {
       for (const std::string& v : c.values) line += "\t" + v;
       fmt::print("{}\n", line);
     }
-    study::check_cases(s);
     fmt::print(stderr, "study {}: {} cases, level {}, every case's scene and options check\n",
                s.name, s.cases.size(), study::to_string(s.level));
   });

@@ -224,6 +224,29 @@ ChowLiuTree ChowLiuTree::deserialise(const std::string& text, const std::string&
     tree.p_present_parent_present.push_back(p1);
     tree.p_present_parent_absent.push_back(p0);
   }
+  // A forest: every word's chain of parents ends at a root (a word that is its own parent). A
+  // cycle would make the product of conditionals no distribution at all. Each chain is walked
+  // once: `state` 1 marks the chain being walked, 2 a word known to reach a root.
+  std::vector<char> state(static_cast<std::size_t>(words), 0);
+  for (int q = 0; q < words; ++q) {
+    std::vector<int> chain;
+    int u = q;
+    while (state[static_cast<std::size_t>(u)] == 0) {
+      state[static_cast<std::size_t>(u)] = 1;
+      chain.push_back(u);
+      const int up = tree.parent[static_cast<std::size_t>(u)];
+      if (up == u) break;
+      u = up;
+    }
+    if (state[static_cast<std::size_t>(u)] == 1 && tree.parent[static_cast<std::size_t>(u)] != u) {
+      line_number = 3 + q;
+      fail(
+          fmt::format("word {}: its chain of parents returns to word {} without reaching a root "
+                      "(a word that is its own parent): the tree has a cycle",
+                      q, u));
+    }
+    for (const int w : chain) state[static_cast<std::size_t>(w)] = 2;
+  }
   return tree;
 }
 

@@ -212,6 +212,8 @@ TEST(LocalizeCli, QueriesFromAnotherSessionOrDatasetAreMatchedToTheWholeFirstRun
         std::string("--queries-device weaker_phone"),
         std::string("--queries-session 1 --queries ") + other_route,
         std::string("--queries ") + other_route,
+        // The input as its own queries: every query would find itself in the map.
+        std::string("--queries ") + scene,
         std::string("--queries-session 1 --queries-device no_such_phone")}) {
     r = test::run_wifislam("localize " + scene + " " + bad + " -q -o " + (scratch / "bad").string(),
                            scratch);
@@ -222,6 +224,13 @@ TEST(LocalizeCli, QueriesFromAnotherSessionOrDatasetAreMatchedToTheWholeFirstRun
                              (scratch / "bad").string(),
                          scratch);
   EXPECT_EQ(r.exit_code, 2) << r.err;
+  r = test::run_wifislam("localize " + (scratch / "s1").string() + " --queries " +
+                             (scratch / "s1").string() + "/ --no-verify -q -o " +
+                             (scratch / "bad").string(),
+                         scratch);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("is the input itself"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(scratch / "bad"));
   fs::remove_all(scratch);
 }
 

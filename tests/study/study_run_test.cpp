@@ -3,6 +3,8 @@
 // scattered access points from co-linear ones.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -165,6 +167,21 @@ TEST(StudyRun, ShardsMergeToTheUnshardedRunAndForeignDatabasesAreRefused) {
 // Issue 34: the same shard given twice merged to half a database without a word. One file twice
 // (however spelt) and a copy of a shard already merged are refused, through the command line
 // too (exit 2), and nothing is written.
+// `study cases` lists the cases only once every one checks: a refused file prints no table (a
+// script reading stdout must not take half a list for the study).
+TEST(StudyRun, CasesListsTheTableOnlyWhenEveryCaseChecks) {
+  const fs::path dir = test::scratch_folder();
+  const fs::path good = write_study(dir, "good", "  access_points.count: [10, 20]\n");
+  auto r = test::run_wifislam("study cases " + good.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 3) << r.out;  // header + 2 cases
+  const fs::path bad = write_study(dir, "bad", "  access_points.count: [10, -5]\n");
+  r = test::run_wifislam("study cases " + bad.string(), dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_EQ(r.out, "");
+  fs::remove_all(dir);
+}
+
 TEST(StudyRun, TheSameShardTwiceIsRefused) {
   const fs::path dir = test::scratch_folder();
   const StudyFile study =

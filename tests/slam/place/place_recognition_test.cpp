@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "core/error.hpp"
 #include "core/rng.hpp"
 #include "slam/place/chow_liu_tree.hpp"
 #include "slam/place/fabmap.hpp"
@@ -59,6 +61,30 @@ TEST(ChowLiuTree, RecoversTheTreeItsSampleWasDrawnFrom) {
             1);
   const ChowLiuTree back = ChowLiuTree::deserialise(learned.serialise(), "test");
   EXPECT_EQ(back.serialise(), learned.serialise());
+}
+
+// A file whose parents form a cycle (0 -> 1 -> 2 -> 1) is no tree: refused at the first word
+// whose chain loops, whatever leads into the loop; a chain into a root is accepted.
+TEST(ChowLiuTree, AFileWhoseParentsFormACycleIsRefused) {
+  const auto file = [](const std::vector<int>& parent) {
+    const ChowLiuTree learned = learn_chow_liu_tree(sample_tree({0, 0, 1}, 2000, 5), 3);
+    std::string text = learned.serialise();
+    ChowLiuTree edited = ChowLiuTree::deserialise(text, "test");
+    edited.parent = parent;
+    return edited.serialise();
+  };
+  EXPECT_NO_THROW(ChowLiuTree::deserialise(file({0, 0, 1}), "test"));
+  EXPECT_NO_THROW(ChowLiuTree::deserialise(file({0, 1, 2}), "test"));
+  for (const std::vector<int>& cyclic :
+       {std::vector<int>{1, 0, 2}, std::vector<int>{0, 2, 1}, std::vector<int>{1, 2, 0}}) {
+    try {
+      ChowLiuTree::deserialise(file(cyclic), "tree.txt");
+      ADD_FAILURE() << "accepted parents " << cyclic[0] << cyclic[1] << cyclic[2];
+    } catch (const ParseError& e) {
+      EXPECT_NE(std::string(e.what()).find("the tree has a cycle"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("tree.txt:"), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(ChowLiuTree, UnrelatedWordsStayIndependent) {
