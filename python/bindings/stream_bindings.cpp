@@ -4,6 +4,7 @@
 // readings that came before it in the stream (since the previous frame), and its ground truth.
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -40,12 +41,22 @@ class FrameSource {
   /// Ground truth of the frame just read, if known.
   virtual std::optional<Pose> ground_truth(const RgbdFrame& frame) const = 0;
 
+  /// Rewinds a dataset's reader, never while another thread reads a frame.
+  void locked_rewind(DatasetReader& reader) {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(mutex_);
+    reader.rewind();
+  }
+
   /// The next frame as a dict, or None at the end of the stream (scans after the last frame
   /// belong to no frame and are not returned).
   py::object next_frame() {
     std::optional<GatheredFrame> gathered;
     {
       py::gil_scoped_release release;
+      // One reader at a time: with the GIL released, two threads iterating one source would
+      // both advance its stream. Each frame goes to exactly one of them.
+      const std::lock_guard<std::mutex> lock(mutex_);
       gathered = gather();
     }
     if (!gathered) return py::none();
@@ -68,6 +79,8 @@ class FrameSource {
     }
     return std::nullopt;
   }
+
+  std::mutex mutex_;
 
   static py::dict scan_dict(const WifiScan& scan) {
     py::list readings;
@@ -211,7 +224,7 @@ void bind_streams(py::module_& m) {
           .def_property_readonly(
               "ground_truth",
               [](const DatasetSource& d) { return trajectory_array(d.ground_truth_trajectory()); })
-          .def("rewind", [](DatasetSource& d) { d.reader().rewind(); });
+          .def("rewind", [](DatasetSource& d) { d.locked_rewind(d.reader()); });
   bind_stream_facts<DatasetSource>(dataset);
 }
 

@@ -1,7 +1,9 @@
 // One rendered RGB-D view (what `wifislam render` draws), a scene's radio map (what `wifislam
 // radiomap` computes) as numpy grids, the planar camera pose both commands take, and the PNG
 // codecs datasets are written with (so a frame held in Python can be compared byte for byte).
+#include <cmath>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -60,6 +62,8 @@ class Renderer {
     cv::Mat depth_m;
     {
       py::gil_scoped_release release;
+      // One render at a time: the GIL is released, and the OpenGL context serves one thread.
+      const std::lock_guard<std::mutex> lock(render_mutex_);
       view = renderer_.render(pose);
       sim::scene::DepthSensorSpec spec = scene_.sensors.depth;
       if (!noise) spec.noise = spec.quantisation = spec.dropouts = false;
@@ -73,6 +77,11 @@ class Renderer {
 
   py::array_t<double> planar_pose(double x_m, double y_m, double yaw_deg,
                                   std::optional<double> height_m) const {
+    if (!(std::isfinite(x_m) && std::isfinite(y_m) && std::isfinite(yaw_deg))) {
+      throw InvalidInputError(
+          fmt::format("camera pose: x_m, y_m and yaw_deg must be finite numbers, got {}, {}, {}",
+                      x_m, y_m, yaw_deg));
+    }
     const sim::scene::CameraSpec& camera = scene_.sensors.camera;
     const double h = height_m.value_or(camera.height_m);
     check_height("height_m", h, world_.plan.wall_height_m);
@@ -84,6 +93,7 @@ class Renderer {
   sim::scene::Scene scene_;
   sim::world::World world_;
   sim::render::RgbdRenderer renderer_;
+  std::mutex render_mutex_;
 };
 
 py::dict radio_map(const sim::scene::Scene& scene, double resolution_m, std::optional<int> ap_id,

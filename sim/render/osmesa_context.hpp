@@ -23,8 +23,14 @@ class OsmesaContext {
   OsmesaContext(const OsmesaContext&) = delete;
   OsmesaContext& operator=(const OsmesaContext&) = delete;
 
-  /// Binds the context to the calling thread (cheap when it already is).
+  /// Binds the context to the calling thread (cheap when it already is). Throws EnvironmentError
+  /// in a process forked from one that had rendered (see usable_in_this_process).
   void make_current();
+
+  /// False in a child forked after its parent created a context: llvmpipe's rendering threads do
+  /// not survive fork(), and a draw there would wait for them for ever. Creating a context or
+  /// making one current there throws EnvironmentError instead; destructors skip the GL calls.
+  static bool usable_in_this_process();
 
   /// GL_VERSION and GL_RENDERER strings, e.g. "4.5 (Core Profile) Mesa 22.3.6" and "llvmpipe ...".
   const std::string& gl_version() const { return gl_version_; }

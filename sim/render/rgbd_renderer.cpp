@@ -218,6 +218,14 @@ RgbdRenderer::RgbdRenderer(const CameraIntrinsics& intrinsics, const RenderOptio
 }
 
 RgbdRenderer::~RgbdRenderer() {
+  // A forked child's copy of a renderer cannot make GL calls (osmesa_context.hpp); its memory
+  // is the child's copy, released with it.
+  if (!OsmesaContext::usable_in_this_process()) {
+    static_cast<void>(mesh_.release());
+    for (auto& [key, texture] : textures_) static_cast<void>(texture.release());
+    static_cast<void>(program_.release());
+    return;
+  }
   context_->make_current();
   mesh_.reset();
   textures_.clear();
