@@ -27,6 +27,8 @@ cv::Mat bgr_mat(const py::array& rgb, const std::string& what) {
       image.shape(2) != 3) {
     throw InvalidInputError(what + ": expected an H x W x 3 uint8 RGB array");
   }
+  if (image.shape(0) == 0 || image.shape(1) == 0)
+    throw InvalidInputError(what + ": the image is empty (0 rows or columns)");
   const cv::Mat view(static_cast<int>(image.shape(0)), static_cast<int>(image.shape(1)), CV_8UC3,
                      const_cast<std::uint8_t*>(image.data()));
   cv::Mat bgr;
@@ -50,6 +52,8 @@ cv::Mat depth_mat(const py::array& depth_m, const std::string& what) {
   if (depth_m.dtype().kind() != 'f' || depth_m.ndim() != 2) {
     throw InvalidInputError(what + ": expected an H x W float array of metres");
   }
+  if (depth_m.shape(0) == 0 || depth_m.shape(1) == 0)
+    throw InvalidInputError(what + ": the image is empty (0 rows or columns)");
   const auto metres =
       py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(depth_m);
   cv::Mat out(static_cast<int>(metres.shape(0)), static_cast<int>(metres.shape(1)), CV_32FC1);

@@ -19,6 +19,7 @@
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/run_format.hpp"
 #include "eval/alignment.hpp"
 #include "eval/eval_options.hpp"
 #include "eval/evaluate_run.hpp"
@@ -70,6 +71,10 @@ py::dict generate_summary_dict(const sim::generate::GenerateSummary& s) {
 py::dict generate(const sim::scene::Scene& scene, const fs::path& output,
                   std::optional<std::uint64_t> seed, std::optional<double> fps,
                   std::int64_t max_frames, bool images, int threads, bool force) {
+  if (threads < 0) {
+    throw InvalidInputError(
+        fmt::format("threads: expected 0 (every core) or a number of threads, got {}", threads));
+  }
   std::vector<fs::path> inputs;
   if (!scene.source_path.empty()) inputs.push_back(scene.source_path);
   sim::generate::GenerateOptions options;
@@ -110,8 +115,9 @@ py::dict slam(const fs::path& input, const fs::path& output, const std::string& 
   }
   py::dict out;
   out["run"] = result.run_dir.string();
-  out["frontend"] = frontend;
-  out["wifi"] = wifi;
+  // What ran: `settings` may set the front end or the Wi-Fi switch too, after the arguments.
+  out["frontend"] = request.options.frontend;
+  out["wifi"] = request.options.wifi.enabled;
   if (result.summary) {
     out["summary"] = to_python(nlohmann::ordered_json(result.summary->to_json()));
     out["report"] = result.summary->FullReport();
@@ -141,17 +147,27 @@ std::string fspath(const py::object& path) {
   return py::module_::import("os").attr("fspath")(path).cast<std::string>();
 }
 
-/// A trajectory argument: an N x 8 array, a TUM file, or (ground truth) a dataset folder.
-Trajectory trajectory_of(const py::object& value, const std::string& what, bool verify,
-                         std::string& name) {
+/// A trajectory argument: an N x 8 array, a TUM file, or a folder: a run folder's trajectory.txt
+/// for the estimate, a dataset folder's groundtruth.txt for the ground truth. A dataset folder
+/// given as the estimate is refused: it would be scored against itself.
+Trajectory trajectory_of(const py::object& value, const std::string& what, bool is_estimate,
+                         bool verify, std::string& name) {
   if (py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__")) {
     const fs::path path = fspath(value);
     name = path.string();
     if (fs::is_directory(path)) {
+      if (is_estimate) {
+        if (fs::is_regular_file(path / run_folder::kTrajectory))
+          return read_tum_trajectory((path / run_folder::kTrajectory).string());
+        throw InvalidInputError(fmt::format(
+            "{}: {} is a folder without {}: give a run folder, a trajectory file or an array{}",
+            what, name, run_folder::kTrajectory,
+            fs::exists(path / dataset::kGroundTruth) ? " (this is a dataset folder)" : ""));
+      }
       if (fs::is_regular_file(path / dataset::kGroundTruth)) return read_ground_truth(path, verify);
-      throw IoError(
-          fmt::format("{}: {} is a folder without {} (a run folder is evaluated "
-                      "against a dataset folder)",
+      throw InvalidInputError(
+          fmt::format("{}: {} is a folder without {}: give a dataset folder, a trajectory file "
+                      "or an array",
                       what, name, dataset::kGroundTruth));
     }
     return read_tum_trajectory(path.string());
@@ -181,8 +197,9 @@ py::object evaluate(const py::object& estimate, const py::object& ground_truth,
     }
   }
   std::string estimate_name, ground_truth_name;
-  const Trajectory est = trajectory_of(estimate, "estimate", verify, estimate_name);
-  const Trajectory gt = trajectory_of(ground_truth, "ground_truth", verify, ground_truth_name);
+  const Trajectory est = trajectory_of(estimate, "estimate", true, verify, estimate_name);
+  const Trajectory gt =
+      trajectory_of(ground_truth, "ground_truth", false, verify, ground_truth_name);
   {
     py::gil_scoped_release release;
     flat = eval::evaluate_trajectory(est, gt, options, estimate_name, ground_truth_name)

@@ -88,7 +88,8 @@ void bind_scene(py::module_& m) {
            [](const sim::scene::Scene& scene) { return sim::scene::resolved_scene_yaml(scene); })
       .def("to_dict",
            [](const sim::scene::Scene& scene) {
-             return yaml_to_python(YAML::Load(sim::scene::resolved_scene_yaml(scene)));
+             return yaml_to_python(YAML::Load(
+                 sim::scene::resolved_scene_yaml(scene, sim::scene::TextQuoting::kWhereAmbiguous)));
            })
       .def_property_readonly("name", [](const sim::scene::Scene& s) { return s.name; })
       .def_property_readonly("seed", [](const sim::scene::Scene& s) { return s.seed; })

@@ -24,6 +24,9 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
+import numbers
+import operator
 import os
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -41,7 +44,7 @@ from ._wifislam import (
 
 __version__ = _wifislam.__version__
 
-PathLike = Union[str, "os.PathLike[str]"]
+PathLike = Union[str, bytes, "os.PathLike[str]"]
 
 __all__ = [
     "Scene", "Simulator", "Dataset", "Frame", "WifiScan", "WifiReading", "Renderer", "render",
@@ -53,6 +56,33 @@ __all__ = [
 
 
 Scene = _wifislam.Scene
+
+
+def _is_path(value: Any) -> bool:
+    return isinstance(value, (str, bytes, os.PathLike))
+
+
+def _path(value: PathLike, what: str) -> str:
+    """A path argument as the library takes it: str, bytes or os.PathLike, with no NUL byte
+    (the C++ side would stop at it and read another file, where Python's open() refuses)."""
+    if not _is_path(value):
+        raise TypeError(f"{what}: expected a path (str, bytes or os.PathLike), "
+                        f"got {type(value).__name__}")
+    text = os.fsdecode(os.fspath(value))
+    if "\0" in text:
+        raise ValueError(f"{what}: embedded null byte in path {text!r}")
+    return text
+
+
+_load_scene_file = Scene.load
+
+
+def _scene_load(path: PathLike) -> Scene:
+    """A scene file (YAML) loaded and checked; ParseError names the file, line and key."""
+    return _load_scene_file(_path(path, "Scene.load"))
+
+
+Scene.load = staticmethod(_scene_load)
 
 
 def _scene_from_dict(scene: Mapping[str, Any], source_name: str = "<dict>") -> Scene:
@@ -71,14 +101,18 @@ Scene.from_dict = staticmethod(_scene_from_dict)
 
 
 def channel_of(frequency_khz: int) -> int:
-    """The IEEE 802.11 channel number of a centre frequency (2.4 GHz: 2412 MHz is channel 1,
-    2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel)."""
-    mhz = frequency_khz // 1000
-    if mhz == 2484:
+    """The IEEE 802.11 channel number of a centre frequency in kHz (2.4 GHz: 2412 MHz is
+    channel 1, 2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel, 5005 to 5980 MHz).
+    ValueError for a frequency that is no channel's centre in these bands."""
+    khz = operator.index(frequency_khz)  # a whole number (TypeError for 2412000.5)
+    mhz, rest = divmod(khz, 1000)
+    if rest == 0 and mhz == 2484:
         return 14
-    if 2400 <= mhz < 2500:
+    if rest == 0 and 2412 <= mhz <= 2472 and (mhz - 2407) % 5 == 0:
         return (mhz - 2407) // 5
-    return (mhz - 5000) // 5
+    if rest == 0 and 5005 <= mhz <= 5980 and mhz % 5 == 0:
+        return (mhz - 5000) // 5
+    raise ValueError(f"frequency_khz {khz}: not the centre of a 2.4 GHz or 5 GHz Wi-Fi channel")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -212,8 +246,8 @@ class Dataset(_Frames):
     """
 
     def __init__(self, path: PathLike, verify: bool = True, load_images: bool = True):
-        super().__init__(_wifislam._Dataset(os.fspath(path), verify, load_images))
-        self.path = os.fspath(path)
+        self.path = _path(path, "Dataset")
+        super().__init__(_wifislam._Dataset(self.path, verify, load_images))
 
     @property
     def ground_truth(self) -> np.ndarray:
@@ -227,8 +261,8 @@ class Dataset(_Frames):
 def _scene(scene: Union[Scene, PathLike]) -> Scene:
     if isinstance(scene, _wifislam.Scene):
         return scene
-    if isinstance(scene, (str, os.PathLike)):
-        return Scene.load(os.fspath(scene))
+    if _is_path(scene):
+        return Scene.load(scene)
     raise TypeError(f"expected a wifislam.Scene or a scene file path, got {type(scene).__name__}")
 
 
@@ -308,8 +342,8 @@ def generate(scene: Union[Scene, PathLike], output: PathLike, seed: Optional[int
     """``wifislam generate``: writes the dataset folder ``output`` and returns its summary
     (``dataset`` is the folder's absolute path; ``report`` the text the command prints).
     ``force`` replaces an existing folder of this tool's output, never anything else."""
-    return _wifislam._generate(_scene(scene), os.fspath(output), seed, fps, max_frames, images,
-                               threads, force)
+    return _wifislam._generate(_scene(scene), _path(output, "output"), seed, fps, max_frames,
+                               images, threads, force)
 
 
 def slam(dataset: PathLike, output: PathLike, frontend: str = "rgbdslam", wifi: bool = False,
@@ -324,8 +358,8 @@ def slam(dataset: PathLike, output: PathLike, frontend: str = "rgbdslam", wifi: 
     ``external`` (status, system file, times) for an external system.
     """
     values = {str(k): _setting_text(v) for k, v in (settings or {}).items()}
-    return _wifislam._slam(os.fspath(dataset), os.fspath(output), frontend, wifi, values, force,
-                           verify, max_frames, fps, seed)
+    return _wifislam._slam(_path(dataset, "dataset"), _path(output, "output"), frontend, wifi,
+                           values, force, verify, max_frames, fps, seed)
 
 
 def _setting_text(value: Any) -> str:
@@ -352,13 +386,14 @@ def evaluate(estimate: TrajectoryLike, ground_truth: TrajectoryLike, align: str 
     eval's ``--set`` thresholds. Array stamps are float seconds, rounded to nanoseconds.
     """
     values = {str(k): _setting_text(v) for k, v in (settings or {}).items()}
-    return _wifislam._evaluate(_trajectory_arg(estimate), _trajectory_arg(ground_truth), align,
+    return _wifislam._evaluate(_trajectory_arg(estimate, "estimate"),
+                               _trajectory_arg(ground_truth, "ground_truth"), align,
                                float(time_offset_s), values, verify)
 
 
-def _trajectory_arg(value: TrajectoryLike):
-    if isinstance(value, (str, os.PathLike)):
-        return os.fspath(value)
+def _trajectory_arg(value: TrajectoryLike, what: str):
+    if _is_path(value):
+        return _path(value, what)
     return np.asarray(value, dtype=np.float64)
 
 
@@ -367,12 +402,21 @@ def require(metrics: Mapping[str, Any], *requirements: str) -> List[str]:
     "METRIC OP NUMBER" with OP one of <=, <, >=, >, ==, !=. Returns each requirement's verdict;
     raises RequirementNotMetError (an AssertionError) listing those not met and by how much,
     InvalidInputError for a malformed requirement or an unknown metric."""
-    return _wifislam._require(dict(metrics), list(requirements))
+    # A metric that is NaN or infinite (metrics.csv's "-nan", read back with pandas) is one the
+    # run could not give: "not available", as None is, not a JSON error.
+    def available(value: Any) -> Any:
+        if (isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral)
+                and not math.isfinite(value)):
+            return None
+        return value
+
+    return _wifislam._require({k: available(v) for k, v in dict(metrics).items()},
+                              list(requirements))
 
 
 def read_trajectory(path: PathLike) -> np.ndarray:
     """A TUM trajectory file as an N x 8 array (checked as ``wifislam eval`` reads it)."""
-    return _wifislam._read_trajectory(os.fspath(path))
+    return _wifislam._read_trajectory(_path(path, "read_trajectory"))
 
 
 def encode_rgb_png(rgb: np.ndarray) -> bytes:

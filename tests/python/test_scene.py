@@ -49,3 +49,15 @@ def test_a_missing_file_is_an_os_error(tmp_path):
 def test_not_a_dict_is_a_type_error():
     with pytest.raises(TypeError):
         wifislam.Scene.from_dict(["version", 1])
+
+
+def test_text_that_looks_like_a_number_stays_text_through_a_dict(c_hall):
+    # to_dict typed every plain scalar: a name "007" came back as the number 7, "1e5" as 100000.0.
+    for text in ("007", "1e5", "0x1F", "5.5", "nan", "true", "1"):
+        d = wifislam.Scene.load(c_hall).to_dict()
+        d["name"] = text
+        d["description"] = "." + text
+        scene = wifislam.Scene.from_dict(d)
+        again = scene.to_dict()
+        assert again["name"] == text and again["description"] == "." + text
+        assert wifislam.Scene.from_dict(again).to_yaml() == scene.to_yaml()

@@ -1,0 +1,108 @@
+"""Arguments a notebook can pass that the command line's options never let through: infinite
+rates, NaN positions, paths with a NUL byte or as bytes, empty images, NaN metrics, folders of
+the wrong kind. Each is a clear error of the module's classes naming the argument (or, where a
+value is legitimate, it works as its str equivalent does), never a hang, a crash or a silent
+answer about something else."""
+
+import os
+import pathlib
+
+import numpy as np
+import pytest
+
+import wifislam
+
+
+@pytest.fixture(scope="module")
+def a_hall(scenes_dir):
+    return os.path.join(scenes_dir, "a_hall.yaml")
+
+
+def test_an_unbounded_frame_rate_is_refused_before_any_work(tmp_path, a_hall):
+    # fps=inf made the frame schedule count for ever (the call hung).
+    for fps in (float("inf"), 1e7, 0.01):
+        with pytest.raises(wifislam.InvalidInputError, match="fps"):
+            wifislam.Simulator(a_hall, fps=fps, max_frames=3)
+        with pytest.raises(wifislam.InvalidInputError, match="fps"):
+            wifislam.generate(a_hall, tmp_path / "d", fps=fps, max_frames=3)
+        with pytest.raises(wifislam.InvalidInputError, match="fps"):
+            wifislam.slam(a_hall, tmp_path / "r", fps=fps, max_frames=3)
+    assert not (tmp_path / "d").exists() and not (tmp_path / "r").exists()
+    with pytest.raises(wifislam.InvalidInputError, match="threads"):
+        wifislam.generate(a_hall, tmp_path / "d", fps=1, max_frames=3, threads=-3)
+    assert not (tmp_path / "d").exists()
+
+
+def test_positions_and_grids_must_be_finite(a_hall):
+    for bad in ((float("nan"), 1.5, 30), (2.0, float("inf"), 30), (2.0, 1.5, float("nan"))):
+        with pytest.raises(wifislam.InvalidInputError, match="finite"):
+            wifislam.camera_pose(a_hall, *bad)
+    for resolution in (float("inf"), 10.5):
+        with pytest.raises(wifislam.InvalidInputError, match="resolution"):
+            wifislam.radio_map(a_hall, resolution_m=resolution)
+    assert wifislam.radio_map(a_hall, resolution_m=10.0).resolution_m == 10.0
+
+
+def test_paths_are_str_bytes_or_pathlike_and_never_hold_a_nul_byte(tmp_path, a_hall,
+                                                                   small_dataset):
+    # The C++ side stopped at the NUL and read another file without a word.
+    for call in (lambda p: wifislam.Scene.load(p), lambda p: wifislam.Simulator(p),
+                 lambda p: wifislam.read_trajectory(p), lambda p: wifislam.Dataset(p)):
+        with pytest.raises(ValueError, match="null byte"):
+            call(a_hall + "\0junk")
+    assert wifislam.Scene.load(pathlib.Path(a_hall)).name == "a_hall"
+    assert wifislam.Scene.load(os.fsencode(a_hall)).name == "a_hall"
+    truth = os.path.join(small_dataset, "groundtruth.txt")
+    as_str = wifislam.evaluate(truth, str(small_dataset))
+    as_bytes = wifislam.evaluate(os.fsencode(truth), os.fsencode(str(small_dataset)))
+    assert as_bytes["ate_rmse_m"] == as_str["ate_rmse_m"]
+    with pytest.raises(TypeError, match="path"):
+        wifislam.Dataset(42)
+
+
+def test_empty_images_are_named_not_an_opencv_error():
+    with pytest.raises(wifislam.InvalidInputError, match="rgb.*empty"):
+        wifislam.encode_rgb_png(np.zeros((0, 0, 3), np.uint8))
+    with pytest.raises(wifislam.InvalidInputError, match="depth.*empty"):
+        wifislam.encode_depth_png(np.zeros((0, 4), np.float32))
+
+
+def test_channel_of_knows_the_bands_and_refuses_the_rest():
+    assert wifislam.channel_of(2412000) == 1
+    assert wifislam.channel_of(2472000) == 13
+    assert wifislam.channel_of(2484000) == 14
+    assert wifislam.channel_of(5180000) == 36
+    assert wifislam.channel_of(np.int64(5825000)) == 165
+    for bad in (0, -5, 2401000, 2413000, 2412500, 60480000):
+        with pytest.raises(ValueError, match="channel"):
+            wifislam.channel_of(bad)
+    with pytest.raises(TypeError):
+        wifislam.channel_of(2412000.0)
+
+
+def test_a_nan_metric_is_not_available_as_none_is(small_dataset):
+    # metrics.csv writes a metric a run cannot give as "-nan"; pandas reads it back as NaN.
+    truth = wifislam.Dataset(small_dataset).ground_truth
+    metrics = wifislam.evaluate(truth, truth)
+    outcomes = []
+    for missing in (None, float("nan"), np.float32("inf")):
+        with pytest.raises(wifislam.RequirementNotMetError) as failure:
+            wifislam.require(dict(metrics, ate_rmse_m=missing), "ate_rmse_m <= 0.5")
+        outcomes.append(str(failure.value))
+    assert "not available" in outcomes[0]
+    assert outcomes[1] == outcomes[0] and outcomes[2] == outcomes[0]
+
+
+def test_a_folder_is_scored_for_what_it_holds(tmp_path, small_dataset):
+    truth = wifislam.Dataset(small_dataset).ground_truth
+    # A dataset folder as the estimate was scored against itself: a perfect 0 m.
+    with pytest.raises(wifislam.InvalidInputError, match="dataset folder"):
+        wifislam.evaluate(small_dataset, truth)
+    run = wifislam.slam(small_dataset, tmp_path / "run", wifi=False, settings={"wifi": True})
+    # `settings` ran the Wi-Fi variant: the dict says what ran, as run.json does.
+    assert run["wifi"] is True and run["frontend"] == "rgbdslam"
+    from_folder = wifislam.evaluate(run["run"], truth)
+    from_file = wifislam.evaluate(os.path.join(run["run"], "trajectory.txt"), truth)
+    assert from_folder["ate_rmse_m"] == from_file["ate_rmse_m"]
+    with pytest.raises(wifislam.InvalidInputError, match="without trajectory.txt"):
+        wifislam.evaluate(tmp_path, truth)
