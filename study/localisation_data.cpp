@@ -100,8 +100,35 @@ Eigen::Vector2d position_at(const Trajectory& truth, Timestamp t, const fs::path
 /// The route's level and the building's levels of a scene (empty for one level).
 }  // namespace
 
+namespace {
+
+/// The building of `scene` as the scene file writes it: what two runs in one building share.
+std::string building_of(const sim::scene::Scene& scene) {
+  sim::scene::Scene building;
+  building.building = scene.building;
+  building.levels = scene.levels;
+  building.nodes = scene.nodes;
+  building.corridors = scene.corridors;
+  building.open_areas = scene.open_areas;
+  building.spaces = scene.spaces;
+  building.doors = scene.doors;
+  building.obstacles = scene.obstacles;
+  return sim::scene::resolved_scene_yaml(building);
+}
+
+/// Refuses (through `refuse`) two inputs of different buildings; a dataset without scene.yaml
+/// says nothing of its building and passes.
+template <class Refuse>
+void check_same_building(const RouteLevel& map, const RouteLevel& other, const Refuse& refuse) {
+  if (!map.building.empty() && !other.building.empty() && map.building != other.building)
+    refuse("it is another building than the input's (its walls, corridors or rooms differ)");
+}
+
+}  // namespace
+
 RouteLevel route_level_of(const sim::scene::Scene& scene) {
   RouteLevel out;
+  out.building = building_of(scene);
   if (!sim::scene::has_levels(scene)) return out;
   out.level = sim::scene::route_level(scene);
   for (const sim::scene::Level& level : scene.levels) out.building_levels.push_back(level.id);
@@ -123,6 +150,7 @@ void check_other_floor_level(const RouteLevel& map, const RouteLevel& other,
     refuse("both inputs must be of one building of several levels (scene key levels:)");
   if (map.building_levels != other.building_levels)
     refuse("its building has other levels than the input's");
+  check_same_building(map, other, refuse);
   if (map.level == other.level)
     refuse(fmt::format("its route is on level '{}', as the input's; give a route on another level",
                        map.level));
@@ -130,6 +158,9 @@ void check_other_floor_level(const RouteLevel& map, const RouteLevel& other,
 
 void check_query_level(const RouteLevel& map, const RouteLevel& queries,
                        const std::string& queries_name) {
+  check_same_building(map, queries, [&](const std::string& why) {
+    throw InvalidInputError(fmt::format("--queries {}: {}", queries_name, why));
+  });
   if (map.level != queries.level) {
     throw InvalidInputError(
         fmt::format("--queries {}: its route is on level '{}', the map's on level '{}'",

@@ -49,10 +49,13 @@ struct PositionedScan {
 
 /// Where a localisation input's route is, in a building of several levels (scene `levels:`): the
 /// route's level and the building's level ids; both empty for a one-level scene or a dataset
-/// without scene.yaml.
+/// without scene.yaml. `building` is the building itself (its walls, corridors, rooms, spaces,
+/// doors and obstacles as the scene file writes them; not the seed, access points, route or
+/// sensors, which another run of the same building may change); empty without a scene.
 struct RouteLevel {
   std::string level;
   std::vector<std::string> building_levels;
+  std::string building;
 };
 
 struct LocalisationData {
@@ -88,8 +91,8 @@ LocalisationData localisation_data_from_dataset(const std::filesystem::path& dat
 RouteLevel route_level_of(const sim::scene::Scene& scene);
 RouteLevel route_level_of_dataset(const std::filesystem::path& dataset);
 
-/// The level rules of add_other_floor and add_query_session: InvalidInputError naming
-/// `other_name` / `queries_name`.
+/// The level rules of add_other_floor and add_query_session, and that both inputs are one
+/// building (RouteLevel::building): InvalidInputError naming `other_name` / `queries_name`.
 void check_other_floor_level(const RouteLevel& map, const RouteLevel& other,
                              const std::string& other_name);
 void check_query_level(const RouteLevel& map, const RouteLevel& queries,

@@ -231,6 +231,20 @@ TEST(LocalizeCli, QueriesFromAnotherSessionOrDatasetAreMatchedToTheWholeFirstRun
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("is the input itself"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(scratch / "bad"));
+  // Another building whose route still runs within 2 m of the map's (its east side 0.5 m further
+  // out) passed the route check: the buildings are compared first.
+  std::string wider = test::tiny_wifi_loop_yaml();
+  for (const auto& [from, to] : {std::pair{"[7, 0]", "[7.5, 0]"}, std::pair{"[7, 5]", "[7.5, 5]"}})
+    wider.replace(wider.find(from), std::string(from).size(), to);
+  test::write_file(scratch / "wider.yaml", wider);
+  for (const std::string& queries : {scene, (scratch / "s1").string()}) {  // a scene, a dataset
+    r = test::run_wifislam("localize " + (scratch / "wider.yaml").string() + " --queries " +
+                               queries + " --no-verify -q -o " + (scratch / "bad").string(),
+                           scratch);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("another building"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(scratch / "bad"));
+  }
   fs::remove_all(scratch);
 }
 
