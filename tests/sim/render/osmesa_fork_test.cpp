@@ -5,13 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <poll.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <chrono>
 #include <string>
-#include <thread>
 
 #include "core/error.hpp"
 #include "sim/render/osmesa_context.hpp"
@@ -41,22 +40,27 @@ int check_in_forked_child(render::OsmesaContext& inherited) {
 TEST(OsmesaContextFork, AChildForkedAfterAContextExistsIsRefusedNotLeftHanging) {
   render::OsmesaContext context;  // starts llvmpipe in this process
   ASSERT_TRUE(render::OsmesaContext::usable_in_this_process());
+  // The child holds the write end of a pipe until it exits: poll() on the read end wakes when
+  // the child is gone, or gives up after a minute, since a hang is the failure this test catches.
+  int exited[2];
+  ASSERT_EQ(::pipe(exited), 0);
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
-  if (child == 0) ::_exit(check_in_forked_child(context));  // no gtest, no destructors there
-  // The child's answer, or a kill after a minute: a hang is the failure this test catches.
-  int status = 0;
-  pid_t done = 0;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while ((done = ::waitpid(child, &status, WNOHANG)) == 0 &&
-         std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  if (child == 0) {
+    ::close(exited[0]);
+    ::_exit(check_in_forked_child(context));  // no gtest, no destructors there
   }
-  if (done == 0) {
+  ::close(exited[1]);
+  pollfd end{exited[0], POLLIN, 0};
+  const int ready = ::poll(&end, 1, 60'000);
+  ::close(exited[0]);
+  int status = 0;
+  if (ready == 0) {
     ::kill(child, SIGKILL);
     ::waitpid(child, &status, 0);
     FAIL() << "the forked child hung";
   }
+  ASSERT_EQ(::waitpid(child, &status, 0), child);
   ASSERT_TRUE(WIFEXITED(status)) << "the forked child died of a signal";
   EXPECT_EQ(WEXITSTATUS(status), 0) << "failed checks (bits): " << WEXITSTATUS(status);
   EXPECT_NO_THROW(context.make_current());  // the parent's context works on
