@@ -2,10 +2,12 @@
 // in-memory stream (sim/generate/generator_stream.hpp, exactly what a reader of the dataset gets)
 // or a dataset folder (core/dataset_reader.hpp). Each frame carries the Wi-Fi scans and odometry
 // readings that came before it in the stream (since the previous frame), and its ground truth.
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -40,23 +42,40 @@ class FrameSource {
   virtual SensorStream& stream() = 0;
   /// Ground truth of the frame just read, if known.
   virtual std::optional<Pose> ground_truth(const RgbdFrame& frame) const = 0;
+  virtual void rewind() = 0;
 
-  /// Rewinds a dataset's reader, never while another thread reads a frame.
-  void locked_rewind(DatasetReader& reader) {
+  /// Starts a pass over the stream from its first event and returns the pass's number; an
+  /// earlier pass ends there (its next_frame raises). The stream has one read position, so
+  /// two passes cannot interleave: each `for` loop in Python is a pass, and a second loop must
+  /// not silently continue where the first stopped, nor steal its frames. A stream that has
+  /// not been read yet is not rewound (a Simulator's rewind builds its pipeline again).
+  std::uint64_t begin_pass() {
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(mutex_);
-    reader.rewind();
+    if (read_since_rewind_) {
+      rewind();
+      read_since_rewind_ = false;
+    }
+    return ++pass_;
   }
 
-  /// The next frame as a dict, or None at the end of the stream (scans after the last frame
-  /// belong to no frame and are not returned).
-  py::object next_frame() {
+  /// The next frame of pass `pass` as a dict, or None at the end of the stream (scans after
+  /// the last frame belong to no frame and are not returned).
+  py::object next_frame(std::uint64_t pass) {
     std::optional<GatheredFrame> gathered;
     {
       py::gil_scoped_release release;
       // One reader at a time: with the GIL released, two threads iterating one source would
       // both advance its stream. Each frame goes to exactly one of them.
       const std::lock_guard<std::mutex> lock(mutex_);
+      if (pass != pass_) {
+        throw std::runtime_error(
+            "this iteration ended when another iteration of the same frames began (each "
+            "starts at the first frame, and the frames have one read position): finish one "
+            "loop before starting the next, or share one iterator, frames = iter(source), "
+            "between threads");
+      }
+      read_since_rewind_ = true;
       gathered = gather();
     }
     if (!gathered) return py::none();
@@ -81,6 +100,8 @@ class FrameSource {
   }
 
   std::mutex mutex_;
+  std::uint64_t pass_ = 0;  // the number of the latest pass; guarded by mutex_
+  bool read_since_rewind_ = false;
 
   static py::dict scan_dict(const WifiScan& scan) {
     py::list readings;
@@ -126,6 +147,7 @@ class SimulatorSource final : public FrameSource {
   SimulatorSource(const sim::scene::Scene& scene, const sim::generate::GenerateOptions& options)
       : stream_(scene, options) {}
   SensorStream& stream() override { return stream_; }
+  void rewind() override { stream_.rewind(); }
   std::optional<Pose> ground_truth(const RgbdFrame&) const override {
     return stream_.last_frame_ground_truth();
   }
@@ -146,6 +168,7 @@ class DatasetSource final : public FrameSource {
     }
   }
   SensorStream& stream() override { return reader_; }
+  void rewind() override { reader_.rewind(); }
   /// The ground-truth pose at the frame's stamp: our datasets have one per frame; a plain TUM
   /// dataset's motion-capture stamps are not the frames', and its frames get None.
   std::optional<Pose> ground_truth(const RgbdFrame& frame) const override {
@@ -175,7 +198,8 @@ py::dict intrinsics_dict(const CameraIntrinsics& k) {
 
 template <typename Source, typename Class>
 void bind_stream_facts(Class& cls) {
-  cls.def("next_frame", &Source::next_frame)
+  cls.def("begin_pass", &Source::begin_pass)
+      .def("next_frame", &Source::next_frame, py::arg("pass"))
       .def_property_readonly("intrinsics",
                              [](Source& s) { return intrinsics_dict(s.stream().intrinsics()); })
       .def_property_readonly("camera_in_base",
@@ -221,10 +245,9 @@ void bind_streams(py::module_& m) {
                                  [](DatasetSource& d) { return d.reader().frame_count(); })
           .def_property_readonly("wifi_scan_count",
                                  [](DatasetSource& d) { return d.reader().wifi_scan_count(); })
-          .def_property_readonly(
-              "ground_truth",
-              [](const DatasetSource& d) { return trajectory_array(d.ground_truth_trajectory()); })
-          .def("rewind", [](DatasetSource& d) { d.locked_rewind(d.reader()); });
+          .def_property_readonly("ground_truth", [](const DatasetSource& d) {
+            return trajectory_array(d.ground_truth_trajectory());
+          });
   bind_stream_facts<DatasetSource>(dataset);
 }
 

@@ -181,23 +181,50 @@ def _frame(raw: Dict[str, Any]) -> Frame:
                  tuple(raw["odometry"]))
 
 
+class _Pass:
+    """One iteration over a frame source, from its first frame. Threads that share one pass
+    take turns: each frame goes to exactly one of them."""
+
+    def __init__(self, source):
+        self._source = source
+        self._number = source.begin_pass()
+        self._done = False
+
+    def __iter__(self) -> "_Pass":
+        return self
+
+    def __next__(self) -> Frame:
+        if self._done:
+            raise StopIteration
+        raw = self._source.next_frame(self._number)
+        if raw is None:
+            self._done = True
+            raise StopIteration
+        return _frame(raw)
+
+
 class _Frames:
-    """Iteration over a frame source; the source's facts as attributes."""
+    """The frames of a source, in route order; the source's facts as attributes.
+
+    Every iteration (each ``for`` loop, ``list()``, ``iter()``) starts at the first frame, as a
+    list's does. The frames have one read position, so one iteration runs at a time: starting
+    another ends the first, whose next step raises RuntimeError rather than skip or repeat
+    frames. To share the frames between threads, share one iterator: ``frames = iter(source)``.
+    """
 
     def __init__(self, source):
         self._source = source
 
     def __iter__(self) -> Iterator[Frame]:
-        return self
-
-    def __next__(self) -> Frame:
-        raw = self._source.next_frame()
-        if raw is None:
-            raise StopIteration
-        return _frame(raw)
+        return _Pass(self._source)
 
     def __len__(self) -> int:
         return self._source.frame_count
+
+    def rewind(self) -> None:
+        """Put the read position back at the first frame, ending any iteration under way (an
+        iteration starts there by itself)."""
+        self._source.begin_pass()
 
     @property
     def intrinsics(self) -> Dict[str, float]:
@@ -224,7 +251,8 @@ class Simulator(_Frames):
     ``seed`` and ``fps`` replace the scene's (as ``wifislam generate --seed --fps`` do);
     ``max_frames`` stops early; ``images=False`` gives frames without rgb and depth (poses and
     scans only, fast). For the same scene, seed and fps, the frames equal those a ``Dataset``
-    of ``generate``'s folder returns, pixel for pixel.
+    of ``generate``'s folder returns, pixel for pixel. Each iteration simulates the route again
+    from the first frame (on the world built once) and gives the same frames.
     """
 
     def __init__(self, scene: Union[Scene, PathLike], seed: Optional[int] = None,
@@ -252,10 +280,6 @@ class Dataset(_Frames):
     @property
     def ground_truth(self) -> np.ndarray:
         return self._source.ground_truth
-
-    def rewind(self) -> None:
-        """Start again from the first frame."""
-        self._source.rewind()
 
 
 def _scene(scene: Union[Scene, PathLike]) -> Scene:

@@ -68,6 +68,8 @@ class GenerationPipeline {
 
   const scene::Scene& scene() const { return scene_; }
   const site::Site& site() const { return *site_; }
+  /// The site, for another pipeline on it.
+  std::shared_ptr<const site::Site> shared_site() const { return site_; }
   const world::World& world() const { return site_->world(); }
   const robot::MotionProfile& motion() const { return site_->motion(); }
   const robot::SensorSchedule& schedule() const { return *schedule_; }

@@ -9,14 +9,32 @@
 
 namespace wifislam::sim::generate {
 
+namespace {
+
+/// `options` for a pipeline on a site whose scene has the seed and fps overrides applied.
+GenerateOptions without_overrides(GenerateOptions options) {
+  options.seed.reset();
+  options.fps.reset();
+  return options;
+}
+
+}  // namespace
+
 GeneratorStream::GeneratorStream(const scene::Scene& scene, const GenerateOptions& options)
-    : pipeline_(std::make_unique<GenerationPipeline>(resolve_scene(scene, options), options)) {}
+    : pipeline_(std::make_unique<GenerationPipeline>(resolve_scene(scene, options), options)),
+      options_(without_overrides(options)) {}
 
 GeneratorStream::GeneratorStream(std::shared_ptr<const site::Site> site,
                                  const GenerateOptions& options)
-    : pipeline_(std::make_unique<GenerationPipeline>(std::move(site), options)) {}
+    : pipeline_(std::make_unique<GenerationPipeline>(std::move(site), options)),
+      options_(options) {}
 
 GeneratorStream::~GeneratorStream() = default;
+
+void GeneratorStream::rewind() {
+  pipeline_ = std::make_unique<GenerationPipeline>(pipeline_->shared_site(), options_);
+  last_ground_truth_ = Pose::Identity();
+}
 
 bool GeneratorStream::has_wifi() const { return !pipeline_->radio().access_points().empty(); }
 

@@ -34,6 +34,10 @@ class GeneratorStream final : public SensorStream {
   bool has_odometry() const override { return true; }
   std::string description() const override;
 
+  /// Starts the stream again from the first event: a new simulation on the same site (the world
+  /// and radio are not built again), which gives the same events again.
+  void rewind();
+
   /// The simulation behind the stream (ground truth, world, radio) for tests and evaluation.
   const GenerationPipeline& pipeline() const { return *pipeline_; }
   /// Ground truth of the last frame returned by next().
@@ -41,6 +45,7 @@ class GeneratorStream final : public SensorStream {
 
  private:
   std::unique_ptr<GenerationPipeline> pipeline_;
+  GenerateOptions options_;  // the pipeline's, without the overrides its site holds already
   Pose last_ground_truth_ = Pose::Identity();
 };
 

@@ -44,10 +44,11 @@ def test_one_renderer_in_two_threads_gives_each_view_as_one_thread_does(a_hall):
 
 def test_one_simulator_in_two_threads_hands_each_frame_to_one_of_them(a_hall):
     simulator = wifislam.Simulator(a_hall, fps=2, max_frames=20)
+    frames = iter(simulator)  # one iteration, shared: each `for` over the simulator starts anew
     seen = {"a": [], "b": []}
 
     def work(name):
-        for frame in simulator:
+        for frame in frames:
             seen[name].append(frame.index)
 
     threads = [threading.Thread(target=work, args=(n,)) for n in seen]

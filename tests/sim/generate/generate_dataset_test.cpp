@@ -153,6 +153,41 @@ TEST(GenerateDataset, SensorNoisePartsAreDeterministicAndMoveOnlyTheImages) {
   EXPECT_GT(depth_moved, 0.0);
 }
 
+// A rewound stream simulates again on the same site: the seed and fps overrides still hold, and
+// state carried from frame to frame (auto-exposure, the scanner's randomness) starts afresh.
+TEST(GenerateDataset, ARewoundStreamGivesTheEventsOfAFreshOne) {
+  scene::Scene scene = test::small_scene();
+  scene.sensors.color.auto_exposure = true;
+  generate::GenerateOptions options = short_run(1);
+  options.seed = 78;
+  generate::GeneratorStream rewound(scene, options), fresh(scene, options);
+  for (int i = 0; i < 40; ++i) ASSERT_TRUE(rewound.next().has_value());
+  rewound.rewind();
+  std::size_t frames = 0, scans = 0;
+  while (true) {
+    auto a = rewound.next(), b = fresh.next();
+    ASSERT_EQ(a.has_value(), b.has_value());
+    if (!a) break;
+    ASSERT_EQ(a->index(), b->index());
+    ASSERT_EQ(event_time(*a), event_time(*b));
+    if (auto* fa = std::get_if<RgbdFrame>(&*a)) {
+      const auto& fb = std::get<RgbdFrame>(*b);
+      EXPECT_EQ(cv::norm(fa->rgb, fb.rgb, cv::NORM_INF), 0.0) << "frame " << fa->index;
+      EXPECT_EQ(cv::norm(fa->depth_m, fb.depth_m, cv::NORM_INF), 0.0) << "frame " << fa->index;
+      EXPECT_TRUE(
+          rewound.last_frame_ground_truth().isApprox(fresh.last_frame_ground_truth(), 0.0));
+      ++frames;
+    } else if (auto* sa = std::get_if<WifiScan>(&*a)) {
+      EXPECT_EQ(*sa, std::get<WifiScan>(*b));
+      ++scans;
+    }
+  }
+  EXPECT_EQ(frames, 30u);
+  EXPECT_EQ(scans, 2u);
+  EXPECT_EQ(rewound.pipeline().scene().seed, 78u);
+  EXPECT_EQ(rewound.pipeline().scene().sensors.camera.fps, 5.0);
+}
+
 TEST(GenerateDataset, AssociationsFollowTheTumAssociateConvention) {
   const fs::path dir = test::fresh_folder("assoc");
   generate::generate_dataset(test::small_scene(), dir, short_run(2));

@@ -1,0 +1,94 @@
+"""Every iteration of a Dataset or Simulator starts at the first frame, as a list's does, and two
+iterations never interleave silently: the frames have one read position."""
+
+import threading
+
+import numpy as np
+import pytest
+
+import wifislam
+
+
+def same_frames(a, b):
+    assert [f.index for f in a] == [f.index for f in b]
+    assert [f.stamp_ns for f in a] == [f.stamp_ns for f in b]
+    for x, y in zip(a, b):
+        assert (x.rgb is None) == (y.rgb is None)
+        if x.rgb is not None:
+            assert np.array_equal(x.rgb, y.rgb)
+            assert np.array_equal(x.depth, y.depth, equal_nan=True)
+        assert np.array_equal(x.pose, y.pose)
+        assert x.scans == y.scans
+
+
+def test_a_dataset_iterated_twice_gives_every_frame_twice(small_dataset):
+    dataset = wifislam.Dataset(small_dataset)
+    first = list(dataset)
+    second = list(dataset)
+    assert len(first) == len(dataset) > 0
+    same_frames(first, second)
+
+
+def test_a_simulator_iterated_twice_gives_the_same_frames(c_hall):
+    simulator = wifislam.Simulator(c_hall, fps=1.0, max_frames=4)
+    first = list(simulator)
+    second = list(simulator)
+    assert len(first) == 4
+    assert first[0].rgb is not None
+    same_frames(first, second)
+
+
+def test_a_loop_after_a_break_starts_at_the_first_frame(small_dataset, c_hall):
+    for source in (wifislam.Dataset(small_dataset),
+                   wifislam.Simulator(c_hall, fps=1.0, max_frames=6, images=False)):
+        for frame in source:
+            if frame.index == 2:
+                break
+        assert [f.index for f in source] == list(range(len(source)))
+
+
+def test_an_iterator_holds_its_place_until_another_iteration_begins(small_dataset):
+    dataset = wifislam.Dataset(small_dataset, load_images=False)
+    frames = iter(dataset)
+    assert [next(frames).index for _ in range(3)] == [0, 1, 2]
+    assert next(frames).index == 3
+    again = iter(dataset)
+    assert next(again).index == 0
+    with pytest.raises(RuntimeError, match="another iteration"):
+        next(frames)
+    assert next(again).index == 1
+    dataset.rewind()
+    with pytest.raises(RuntimeError, match="another iteration"):
+        next(again)
+
+
+def test_zip_of_a_source_with_itself_is_an_error_not_wrong_pairs(small_dataset):
+    dataset = wifislam.Dataset(small_dataset, load_images=False)
+    with pytest.raises(RuntimeError, match="another iteration"):
+        list(zip(dataset, dataset))
+
+
+def test_an_iterator_at_its_end_stays_there(c_hall):
+    simulator = wifislam.Simulator(c_hall, fps=1.0, max_frames=2, images=False)
+    frames = iter(simulator)
+    assert len(list(frames)) == 2
+    assert list(frames) == []
+    with pytest.raises(StopIteration):
+        next(frames)
+
+
+def test_threads_sharing_one_iterator_each_get_distinct_frames(small_dataset):
+    dataset = wifislam.Dataset(small_dataset, load_images=False)
+    frames = iter(dataset)
+    seen = {"a": [], "b": []}
+
+    def work(name):
+        for frame in frames:
+            seen[name].append(frame.index)
+
+    threads = [threading.Thread(target=work, args=(n,)) for n in seen]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert sorted(seen["a"] + seen["b"]) == list(range(len(dataset)))
