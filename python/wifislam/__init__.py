@@ -33,6 +33,7 @@ from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple
 import numpy as np
 
 from . import _wifislam
+from ._arguments import checked
 from ._wifislam import (
     ExternalSystemError,
     FacilityError,
@@ -255,6 +256,7 @@ class Simulator(_Frames):
     from the first frame (on the world built once) and gives the same frames.
     """
 
+    @checked
     def __init__(self, scene: Union[Scene, PathLike], seed: Optional[int] = None,
                  fps: Optional[float] = None, max_frames: int = -1, images: bool = True):
         super().__init__(_wifislam._Simulator(_scene(scene), seed, fps, max_frames, images))
@@ -273,6 +275,7 @@ class Dataset(_Frames):
     line. ``ground_truth`` is groundtruth.txt as an N x 8 array of TUM rows.
     """
 
+    @checked
     def __init__(self, path: PathLike, verify: bool = True, load_images: bool = True):
         self.path = _path(path, "Dataset")
         super().__init__(_wifislam._Dataset(self.path, verify, load_images))
@@ -299,18 +302,22 @@ class Renderer:
     ``frame_index`` seeds the depth noise, as ``wifislam render --frame`` does.
     """
 
+    @checked
     def __init__(self, scene: Union[Scene, PathLike]):
         self._renderer = _wifislam._Renderer(_scene(scene))
 
+    @checked
     def render(self, pose: np.ndarray, noise: bool = True,
                frame_index: int = 0) -> Tuple[np.ndarray, np.ndarray]:
         return self._renderer.render(np.asarray(pose, dtype=np.float64), noise, frame_index)
 
+    @checked
     def camera_pose(self, x_m: float, y_m: float, yaw_deg: float,
                     height_m: Optional[float] = None) -> np.ndarray:
         return self._renderer.planar_pose(x_m, y_m, yaw_deg, height_m)
 
 
+@checked
 def render(scene: Union[Scene, PathLike], pose: np.ndarray, noise: bool = True,
            frame_index: int = 0) -> Tuple[np.ndarray, np.ndarray]:
     """One RGB-D view of ``scene`` from ``pose`` (4 x 4): (rgb H x W x 3 uint8, depth H x W
@@ -319,6 +326,7 @@ def render(scene: Union[Scene, PathLike], pose: np.ndarray, noise: bool = True,
     return Renderer(scene).render(pose, noise, frame_index)
 
 
+@checked
 def camera_pose(scene: Union[Scene, PathLike], x_m: float, y_m: float, yaw_deg: float,
                 height_m: Optional[float] = None) -> np.ndarray:
     """The 4 x 4 camera-to-world pose ``wifislam render --pose x,y,yaw`` uses: at (x, y),
@@ -347,9 +355,10 @@ class RadioMap:
                 self.origin_m[1] + self.resolution_m * (row + 0.5))
 
 
+@checked
 def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
-              ap: Optional[int] = None, band: str = "best",
-              height_m: Optional[float] = None, level: str = "") -> RadioMap:
+              ap: Optional[int] = None, band: Union[str, float] = "best",
+              height_m: Optional[float] = None, level: Union[str, int] = "") -> RadioMap:
     """The mean RSSI (ITU-R P.1238, walls, shadowing) at every free cell: of access point
     ``ap``, or of the strongest one (``ap=None``); ``band`` is "2.4", "5" or "best"; the
     receiver at ``height_m`` (default: the camera's height, where datasets scan) above the floor
@@ -360,6 +369,7 @@ def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
                     raw["resolution_m"], tuple(raw["access_points"]))
 
 
+@checked
 def generate(scene: Union[Scene, PathLike], output: PathLike, seed: Optional[int] = None,
              fps: Optional[float] = None, max_frames: int = -1, images: bool = True,
              threads: int = 0, force: bool = False) -> Dict[str, Any]:
@@ -370,6 +380,7 @@ def generate(scene: Union[Scene, PathLike], output: PathLike, seed: Optional[int
                                images, threads, force)
 
 
+@checked
 def slam(dataset: PathLike, output: PathLike, frontend: str = "rgbdslam", wifi: bool = False,
          settings: Optional[Mapping[str, Any]] = None, force: bool = False, verify: bool = True,
          max_frames: int = -1, fps: Optional[float] = None,
@@ -397,6 +408,7 @@ def _setting_text(value: Any) -> str:
 TrajectoryLike = Union[PathLike, np.ndarray, Sequence[Sequence[float]]]
 
 
+@checked
 def evaluate(estimate: TrajectoryLike, ground_truth: TrajectoryLike, align: str = "se3",
              time_offset_s: float = 0.0, settings: Optional[Mapping[str, Any]] = None,
              verify: bool = True) -> Dict[str, Any]:
@@ -421,6 +433,7 @@ def _trajectory_arg(value: TrajectoryLike, what: str):
     return np.asarray(value, dtype=np.float64)
 
 
+@checked
 def require(metrics: Mapping[str, Any], *requirements: str) -> List[str]:
     """Holds metrics (``evaluate``'s dict) to requirements as ``eval --require`` does:
     "METRIC OP NUMBER" with OP one of <=, <, >=, >, ==, !=. Returns each requirement's verdict;
@@ -438,6 +451,7 @@ def require(metrics: Mapping[str, Any], *requirements: str) -> List[str]:
                               list(requirements))
 
 
+@checked
 def read_trajectory(path: PathLike) -> np.ndarray:
     """A TUM trajectory file as an N x 8 array (checked as ``wifislam eval`` reads it)."""
     return _wifislam._read_trajectory(_path(path, "read_trajectory"))

@@ -106,3 +106,47 @@ def test_a_folder_is_scored_for_what_it_holds(tmp_path, small_dataset):
     assert from_folder["ate_rmse_m"] == from_file["ate_rmse_m"]
     with pytest.raises(wifislam.InvalidInputError, match="without trajectory.txt"):
         wifislam.evaluate(tmp_path, truth)
+
+
+def test_a_wrong_type_names_the_function_and_the_argument(tmp_path, a_hall, small_dataset):
+    # pybind11 listed the internal function's parameters as arg0, arg1, ... instead.
+    cases = [
+        (lambda: wifislam.generate(a_hall, tmp_path / "d", fps="3"),
+         r"generate\(\): fps takes a number or None, got str '3'"),
+        (lambda: wifislam.Simulator(a_hall, max_frames=2.5),
+         r"Simulator\(\): max_frames takes a whole number, got float 2.5"),
+        (lambda: wifislam.slam(small_dataset, tmp_path / "r", wifi="yes"),
+         r"slam\(\): wifi takes True or False, got str 'yes'"),
+        (lambda: wifislam.radio_map(a_hall, resolution_m=None),
+         r"radio_map\(\): resolution_m takes a number, got NoneType None"),
+        (lambda: wifislam.require({"ate_rmse_m": 0.1}, "ate_rmse_m <= 1", 5),
+         r"require\(\): requirements takes text \(str\), got int 5"),
+        (lambda: wifislam.Dataset(small_dataset, verify=None),
+         r"Dataset\(\): verify takes True or False, got NoneType None"),
+        (lambda: wifislam.Renderer(42),
+         r"Renderer\(\): scene takes a Scene or a path \(str, bytes or os.PathLike\), got int 42"),
+        (lambda: wifislam.evaluate(small_dataset, small_dataset, time_offset_s="0"),
+         r"evaluate\(\): time_offset_s takes a number, got str '0'"),
+    ]
+    for call, message in cases:
+        with pytest.raises(TypeError, match=message):
+            call()
+    assert not (tmp_path / "d").exists() and not (tmp_path / "r").exists()
+
+
+def test_numpy_scalars_and_number_kinds_pass_as_python_ones(a_hall):
+    frames = list(wifislam.Simulator(a_hall, fps=np.float32(2), max_frames=np.int64(2),
+                                     images=np.bool_(False)))
+    assert [f.index for f in frames] == [0, 1]
+    assert wifislam.radio_map(a_hall, resolution_m=5, band=5).resolution_m == 5.0
+    assert wifislam.camera_pose(a_hall, np.float64(2), 1, np.int32(30)).shape == (4, 4)
+
+
+def test_an_array_argument_takes_arrays_and_nested_lists_only(a_hall, small_dataset):
+    with pytest.raises(TypeError, match=r"evaluate\(\): estimate takes a path .* or an array "):
+        wifislam.evaluate({}, small_dataset)
+    with pytest.raises(TypeError, match=r"render\(\): pose takes an array, got int 5"):
+        wifislam.render(a_hall, 5)
+    pose = wifislam.camera_pose(a_hall, 2.0, 1.5, 30)
+    rgb, _ = wifislam.render(a_hall, pose.tolist(), noise=False)
+    assert np.array_equal(rgb, wifislam.render(a_hall, pose, noise=False)[0])
