@@ -1,8 +1,6 @@
 """Every iteration of a Dataset or Simulator starts at the first frame, as a list's does, and two
 iterations never interleave silently: the frames have one read position."""
 
-import threading
-
 import numpy as np
 import pytest
 
@@ -77,18 +75,4 @@ def test_an_iterator_at_its_end_stays_there(c_hall):
         next(frames)
 
 
-def test_threads_sharing_one_iterator_each_get_distinct_frames(small_dataset):
-    dataset = wifislam.Dataset(small_dataset, load_images=False)
-    frames = iter(dataset)
-    seen = {"a": [], "b": []}
-
-    def work(name):
-        for frame in frames:
-            seen[name].append(frame.index)
-
-    threads = [threading.Thread(target=work, args=(n,)) for n in seen]
-    for t in threads:
-        t.start()
-    for t in threads:
-        t.join()
-    assert sorted(seen["a"] + seen["b"]) == list(range(len(dataset)))
+# Threads sharing one iterator: test_threads_and_fork.py.
