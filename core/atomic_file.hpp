@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/final_paths.hpp"
+
 namespace wifislam {
 
 /// Writes `contents` to `<path>.partial` then renames it over `path`. Refuses (InvalidInputError)
@@ -40,6 +42,8 @@ class AtomicDirectory {
   /// Where to write files now.
   const std::filesystem::path& staging_path() const { return staging_; }
   const std::filesystem::path& final_path() const { return final_; }
+  /// For paths recorded in the files written now: where they will be after commit().
+  FinalPaths final_paths() const { return {staging_, final_}; }
   void commit();
 
  private:

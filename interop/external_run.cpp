@@ -68,33 +68,13 @@ ExternalRunRequest external_run_request(const std::string& frontend, bool wifi,
   return request;
 }
 
-namespace {
-
-/// `text` with every mention of where the run was written (the staging folder, the system's
-/// working folder in it) replaced by where it ends up, so that messages and run.json name paths
-/// that exist once the run folder is in place.
-std::string final_paths(std::string text, const fs::path& system_out, const fs::path& staging,
-                        const fs::path& final_dir) {
-  const auto replace_all = [&text](const std::string& from, const std::string& to) {
-    for (std::size_t at = text.find(from); at != std::string::npos;
-         at = text.find(from, at + to.size())) {
-      text.replace(at, from.size(), to);
-    }
-  };
-  replace_all(system_out.string(), (final_dir / kSystemFolder).string());
-  replace_all(staging.string(), final_dir.string());
-  return text;
-}
-
-}  // namespace
-
 ExternalRunResult run_external_system(const ExternalRunRequest& request) {
   if (!fs::is_directory(request.dataset)) {
     throw IoError(request.dataset.string() + ": dataset folder not found");
   }
   AtomicDirectory folder(request.run_dir, request.overwrite);
-  const fs::path staging = fs::absolute(folder.staging_path());
-  const fs::path final_dir = fs::absolute(request.run_dir).lexically_normal();
+  const fs::path staging = fs::absolute(folder.staging_path()).lexically_normal();
+  const fs::path final_dir = request.within.of(fs::absolute(request.run_dir).lexically_normal());
   ExternalRunValues values;
   values.dataset = fs::absolute(request.dataset).lexically_normal();
   // The system works two levels below the run folder, in a scratch folder of its own: what it
@@ -174,10 +154,17 @@ ExternalRunResult run_external_system(const ExternalRunRequest& request) {
       fs::remove_all(staging / f, ec);  // nothing half-imported looks like a finished run
     }
   }
-  result.status = final_paths(result.status, values.out, staging, final_dir);
+  // Messages and run.json name paths that exist once the run folder (and the folder holding
+  // it) is in place: the system's working folder becomes system/, the staging folder the run
+  // folder.
+  const FinalPaths system_final(values.out, final_dir / kSystemFolder),
+      run_final(staging, final_dir);
+  const auto final_text = [&](const std::string& text) {
+    return request.within.in_text(run_final.in_text(system_final.in_text(text)));
+  };
+  result.status = final_text(result.status);
   std::vector<std::string> shown_argv;
-  for (const std::string& a : argv)
-    shown_argv.push_back(final_paths(a, values.out, staging, final_dir));
+  for (const std::string& a : argv) shown_argv.push_back(final_text(a));
   std::error_code ec;
   fs::remove_all(staging / run_folder::kRun, ec);  // ours to write, whatever the system left there
   write_file_atomic(staging / run_folder::kRun,

@@ -21,6 +21,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/final_paths.hpp"
 #include "interop/external_system.hpp"
 #include "interop/process_runner.hpp"
 
@@ -35,6 +36,9 @@ struct ExternalRunRequest {
   bool wifi = false;
   /// Merged into run.json (e.g. {"input": {...}}), as for our own runs.
   nlohmann::json extra_run_info = nlohmann::json::object();
+  /// The folder under construction that holds run_dir and the dataset (a comparison's): run.json
+  /// and the status name where they will be once it is committed.
+  FinalPaths within;
 };
 
 struct ExternalRunResult {

@@ -464,6 +464,7 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::scene::Scene>& scen
           c.wifi = wifi;
           c.run_dir = std::filesystem::path("runs") / tag / folder_of(c.setting) /
                       (wifi ? "wifi" : "vanilla");
+          c.dataset_dir = dataset;
           jobs.push_back(
               {dataset, site, options_for(options, settings[s], wifi, seed), result.cases.size()});
           result.cases.push_back(std::move(c));
@@ -475,11 +476,15 @@ std::vector<RunJob> generate_datasets(const std::vector<sim::scene::Scene>& scen
   return jobs;
 }
 
-/// Evaluates a finished run folder and writes its eval/.
+/// Evaluates a finished run folder and writes its eval/, naming the folders where they will be
+/// once the comparison's folder is in place.
 void evaluate_job(const RunJob& job, const ComparisonOptions& options,
-                  const std::filesystem::path& out_dir, ComparisonCase& c) {
+                  const std::filesystem::path& out_dir, const FinalPaths& finals,
+                  ComparisonCase& c) {
   const std::filesystem::path run_dir = out_dir / c.run_dir;
   c.evaluation = eval::evaluate_run(run_dir, out_dir / job.dataset, options.eval);
+  c.evaluation.run_dir = finals.of(run_dir).string();
+  c.evaluation.dataset_dir = finals.of(out_dir / job.dataset).string();
   eval::write_evaluation(run_dir / "eval", c.evaluation, options.plots,
                          {&job.site->world().plan, ""});
 }
@@ -487,22 +492,23 @@ void evaluate_job(const RunJob& job, const ComparisonOptions& options,
 /// An external system's run: its failures (exit status, timeout, outputs eval cannot score)
 /// become the case's status, never an exception that would end the comparison.
 void run_external_job(const RunJob& job, const ComparisonOptions& options,
-                      const std::filesystem::path& out_dir, ComparisonCase& c,
-                      const std::function<void(const std::string&)>& progress) {
+                      const std::filesystem::path& out_dir, const FinalPaths& finals,
+                      ComparisonCase& c, const std::function<void(const std::string&)>& progress) {
   interop::ExternalRunRequest request = interop::external_run_request(
       job.slam.frontend, c.wifi, out_dir / job.dataset, out_dir / c.run_dir);
   request.seed = job.slam.seed;
   request.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}};
+  request.within = finals;
   const interop::ExternalRunResult result = interop::run_external_system(request);
   c.status = result.status;
   if (result.ok) {
     try {
-      evaluate_job(job, options, out_dir, c);
+      evaluate_job(job, options, out_dir, finals, c);
     } catch (const Error& e) {  // what the system wrote cannot be scored
-      c.status = std::string("not scorable: ") + e.what();
+      c.status = finals.in_text(std::string("not scorable: ") + e.what());
       c.evaluation = {};
     } catch (const std::filesystem::filesystem_error& e) {
-      c.status = std::string("not scorable: ") + e.what();
+      c.status = finals.in_text(std::string("not scorable: ") + e.what());
       c.evaluation = {};
     }
   }
@@ -517,13 +523,13 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
 /// Evaluates the job's run (ours: run while its dataset was generated; an external system's: run
 /// here on the finished dataset) and writes its eval/.
 void run_job(const RunJob& job, const ComparisonOptions& options,
-             const std::filesystem::path& out_dir, ComparisonCase& c,
+             const std::filesystem::path& out_dir, const FinalPaths& finals, ComparisonCase& c,
              const std::function<void(const std::string&)>& progress) {
   if (interop::is_external_frontend(job.slam.frontend)) {
-    run_external_job(job, options, out_dir, c, progress);
+    run_external_job(job, options, out_dir, finals, c, progress);
     return;
   }
-  evaluate_job(job, options, out_dir, c);
+  evaluate_job(job, options, out_dir, finals, c);
   progress(fmt::format("{} {}: ATE {:.3f} m, loop closures {} ({} false), {:.1f} s",
                        c.run_dir.parent_path().string(), c.wifi ? "wifi" : "vanilla",
                        c.evaluation.ate_rmse_m, c.evaluation.loop_closures_detected,
@@ -552,7 +558,7 @@ std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& 
 
 ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
                                 const ComparisonOptions& options,
-                                const std::filesystem::path& out_dir) {
+                                const std::filesystem::path& out_dir, const FinalPaths& finals) {
   check_comparison_input(scenes, options);
   // One place per option: a key swept twice, or set and swept, would leave one of its values
   // silently unused.
@@ -605,7 +611,7 @@ ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
   // Evaluations (and external systems' runs), `jobs` at a time; each writes only its own folder
   // and case.
   parallel_for(clamp_thread_count(options.jobs), jobs.size(), [&](std::size_t i) {
-    run_job(jobs[i], options, out_dir, result.cases[jobs[i].case_index], progress);
+    run_job(jobs[i], options, out_dir, finals, result.cases[jobs[i].case_index], progress);
   });
   result.divergences = pair_divergences(result.cases, out_dir);
 
@@ -656,19 +662,42 @@ std::string ComparisonResult::markdown() const {
   return out;
 }
 
+namespace {
+
+/// A case's metrics without the folders it names: the case's own run_dir and dataset_dir,
+/// relative to the comparison's folder, say where they are.
+nlohmann::ordered_json case_metrics(const ComparisonCase& c) {
+  nlohmann::ordered_json flat = c.evaluation.flat_metrics();
+  flat.erase("run_dir");
+  flat.erase("dataset_dir");
+  return flat;
+}
+
+}  // namespace
+
 std::string ComparisonResult::csv() const {
-  if (cases.empty()) return "scene,seed,setting,variant,run_dir,status\n";
+  // Every metric any case has, in the order they first appear: cases differ (a front end's own
+  // counters, a failed run's missing ones), and the first case's set alone would drop the
+  // others'.
   std::vector<std::string> keys;
-  const nlohmann::ordered_json first = cases.front().evaluation.flat_metrics();
-  for (const auto& item : first.items()) keys.push_back(item.key());
-  std::string out = "scene,seed,setting,variant,run_dir,status";
+  std::set<std::string> known;
+  std::vector<nlohmann::ordered_json> metrics;
+  for (const ComparisonCase& c : cases) {
+    metrics.push_back(case_metrics(c));
+    if (c.status != "ok") continue;  // no metrics (below: empty fields)
+    for (const auto& item : metrics.back().items()) {
+      if (known.insert(item.key()).second) keys.push_back(item.key());
+    }
+  }
+  std::string out = "scene,seed,setting,variant,run_dir,dataset_dir,status";
   for (const std::string& k : keys) out += "," + k;
   out += "\n";
-  for (const ComparisonCase& c : cases) {
-    const nlohmann::ordered_json flat = c.evaluation.flat_metrics();
-    out += fmt::format("{},{},{},{},{},{}", csv_field(c.scene), c.seed, csv_field(c.setting),
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const ComparisonCase& c = cases[i];
+    const nlohmann::ordered_json& flat = metrics[i];
+    out += fmt::format("{},{},{},{},{},{},{}", csv_field(c.scene), c.seed, csv_field(c.setting),
                        c.wifi ? "wifi" : "vanilla", csv_field(c.run_dir.string()),
-                       csv_field(c.status));
+                       csv_field(c.dataset_dir.string()), csv_field(c.status));
     // A failed run's metrics are empty fields, not zeros that would read as a perfect score.
     for (const std::string& k : keys) {
       out += "," + (c.status == "ok" && flat.contains(k) ? csv_field(flat[k]) : "");
@@ -686,8 +715,9 @@ nlohmann::json ComparisonResult::to_json() const {
                     {"setting", c.setting},
                     {"variant", c.wifi ? "wifi" : "vanilla"},
                     {"run_dir", c.run_dir.string()},
+                    {"dataset_dir", c.dataset_dir.string()},
                     {"status", c.status},
-                    {"metrics", c.status == "ok" ? nlohmann::json(c.evaluation.flat_metrics())
+                    {"metrics", c.status == "ok" ? nlohmann::json(case_metrics(c))
                                                  : nlohmann::json(nullptr)}});
   }
   nlohmann::json divergence = nlohmann::json::array();

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/final_paths.hpp"
 #include "eval/eval_options.hpp"
 #include "eval/run_evaluation.hpp"
 #include "sim/scene/scene.hpp"
@@ -78,7 +79,8 @@ struct ComparisonCase {
   std::uint64_t seed = 0;
   std::string setting;  // options set by --set and --sweep ("min_matches=10 ...") or "defaults"
   bool wifi = false;
-  std::filesystem::path run_dir;  // relative to the output folder
+  std::filesystem::path run_dir;      // relative to the output folder
+  std::filesystem::path dataset_dir;  // the dataset it ran on, relative to the output folder
   /// "ok", or why an external system's run gave no evaluation (interop/external_run.hpp): such a
   /// case is listed with its status and counts in no table.
   std::string status = "ok";
@@ -117,9 +119,12 @@ struct ComparisonResult {
 bool assigns_slam_seed(const std::vector<std::string>& assignments);
 
 /// Runs the whole comparison, writing into `out_dir` (which must exist). Throws on bad input
-/// before any heavy work (unknown option key, bad value).
+/// before any heavy work (unknown option key, bad value). When `out_dir` is a folder under
+/// construction (AtomicDirectory), `finals` says where it will be: the evaluations and external
+/// runs name those paths.
 ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
                                 const ComparisonOptions& options,
-                                const std::filesystem::path& out_dir);
+                                const std::filesystem::path& out_dir,
+                                const FinalPaths& finals = {});
 
 }  // namespace wifislam::study

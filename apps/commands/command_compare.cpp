@@ -79,7 +79,8 @@ void run(CompareArgs args, const CLI::App& app) {
     };
   }
   AtomicDirectory out(args.output, replace);
-  const study::ComparisonResult result = study::run_comparison(scenes, options, out.staging_path());
+  const study::ComparisonResult result =
+      study::run_comparison(scenes, options, out.staging_path(), out.final_paths());
   out.commit();
   fmt::print("{}", result.markdown());
   const std::string dir = std::filesystem::absolute(args.output).lexically_normal().string();

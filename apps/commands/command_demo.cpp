@@ -58,7 +58,7 @@ void run_demo(const DemoArgs& args) {
     options.on_progress = [](const std::string& line) { fmt::print(stderr, "demo: {}\n", line); };
   }
   const study::ComparisonResult result =
-      study::run_comparison({scene}, options, out.staging_path());
+      study::run_comparison({scene}, options, out.staging_path(), out.final_paths());
   draw_scene_pictures(*result.sites.front(), out.staging_path());
   out.commit();
 

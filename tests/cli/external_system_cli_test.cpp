@@ -86,8 +86,8 @@ std::vector<std::map<std::string, std::string>> csv_rows(const fs::path& file) {
     }
     std::map<std::string, std::string> row;
     for (std::size_t i = 0; i < header.size(); ++i) {
-      // The first of two same-named columns (run_dir) is the case's.
-      if (!row.count(header[i])) row[header[i]] = i < fields.size() ? fields[i] : "";
+      EXPECT_TRUE(row.emplace(header[i], i < fields.size() ? fields[i] : "").second)
+          << "column " << header[i] << " twice in " << file;
     }
     rows.push_back(row);
   }
@@ -131,6 +131,23 @@ TEST_F(ExternalSystemCli, OpencvOdometryAndABrokenSystemThroughCompare) {
   EXPECT_EQ(ours, 2);
   EXPECT_EQ(opencv_rows, 1);
   EXPECT_EQ(broken_rows, 1);
+  // What the comparison records names the folders where they are once it is in place, never
+  // the staging folder (cmp.partial) it was written in.
+  for (const auto& entry : fs::recursive_directory_iterator(scratch_ / "cmp")) {
+    if (!entry.is_regular_file() || entry.path().extension() == ".png") continue;
+    EXPECT_EQ(test::read_file(entry.path()).find("cmp.partial"), std::string::npos) << entry.path();
+  }
+  for (const auto& row : rows) {
+    EXPECT_TRUE(fs::is_directory(scratch_ / "cmp" / row.at("dataset_dir")))
+        << row.at("dataset_dir");
+    if (row.at("status") != "ok") continue;
+    const nlohmann::json metrics = nlohmann::json::parse(
+        test::read_file(scratch_ / "cmp" / row.at("run_dir") / "eval" / "metrics.json"));
+    EXPECT_TRUE(fs::equivalent(metrics.at("run_dir").get<std::string>(),
+                               scratch_ / "cmp" / row.at("run_dir")));
+    EXPECT_TRUE(fs::equivalent(metrics.at("dataset_dir").get<std::string>(),
+                               scratch_ / "cmp" / row.at("dataset_dir")));
+  }
   const std::string md = test::read_file(scratch_ / "cmp" / "comparison.md");
   EXPECT_NE(md.find("Runs that failed"), std::string::npos);
   EXPECT_NE(md.find("exited 3"), std::string::npos);
