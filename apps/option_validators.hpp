@@ -5,7 +5,9 @@
 //                       silently, while a scene file's `seed:` refuses both;
 //   kPositiveFinite     rates and sizes such as `--fps`: CLI::PositiveNumber lets "nan" through;
 //   finite_range(a, b)  every bounded real option: CLI::Range(a, b) lets "nan" through too (every
-//                       comparison with nan is false), and a nan then reaches the model.
+//                       comparison with nan is false), and a nan then reaches the model;
+//   at_least(n)         counts (`--max-frames`, `--jobs`, `--seeds`): CLI::PositiveNumber's refusal
+//                       reads "Value 0 not in range 0.000000 to 1797693134862315708...".
 
 #include <charconv>
 #include <cmath>
@@ -55,6 +57,24 @@ inline CLI::Validator finite_range(double lo, double hi) {
         return {};
       },
       "FLOAT in [" + CLI::detail::to_string(lo) + " - " + CLI::detail::to_string(hi) + "]");
+}
+
+/// A whole number of at least `lo`.
+inline CLI::Validator at_least(std::int64_t lo) {
+  return CLI::Validator(
+      [lo](std::string& text) -> std::string {
+        std::int64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec != std::errc() || ptr != end || value < lo) {
+          return "expected a whole number of " + std::to_string(lo) + " or more, got '" + text +
+                 "'";
+        }
+        return {};
+      },
+      lo == 1   ? "POSITIVE"
+      : lo == 0 ? "NONNEGATIVE"
+                : "AT LEAST " + std::to_string(lo));
 }
 
 }  // namespace wifislam::cli

@@ -385,6 +385,7 @@ void check_comparison_input(const std::vector<sim::scene::Scene>& scenes,
   if (scenes.empty()) throw InvalidInputError("compare: no scene given");
   if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
   if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
+  sim::generate::check_max_frames(options.max_frames);
   std::map<std::string, int> names;
   for (const sim::scene::Scene& scene : scenes) {
     if (++names[scene.name] > 1) {

@@ -122,16 +122,16 @@ WIFISLAM_COMMAND(compare, 65) {
                   "Evaluation threshold key=value (repeatable; see `wifislam eval --help`)");
   app->add_option("--seeds", args->seeds, "Seeds per scene (scene seed, +1, ...)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wifislam::cli::at_least(1));
   app->add_option("--fps", args->fps, "Dataset frame rate (default: each scene's)")
       ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Cut each dataset after this many frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wifislam::cli::at_least(1));
   app->add_option("--jobs", args->jobs,
                   "SLAM runs in parallel, side by side on one rendering of their dataset (results\n"
                   "identical; 1 keeps timings comparable)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wifislam::cli::at_least(1));
   app->add_option("-o,--output", args->output, "Folder to write")->required();
   app->add_flag("--force", args->force,
                 "Replace the output folder if it exists and holds this tool's output (never an\n"

@@ -111,7 +111,7 @@ WIFISLAM_COMMAND(generate, 50) {
   app->add_option("--fps", args->fps, "Camera frame rate (default: the scene's, 30)")
       ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wifislam::cli::at_least(1));
   std::string shipped;
   for (const auto& device : wifislam::radio_model::shipped_devices())
     shipped += (shipped.empty() ? "" : ", ") + device.name;
@@ -131,7 +131,7 @@ WIFISLAM_COMMAND(generate, 50) {
   app->add_option("--threads", args->threads,
                   "PNG encoding threads (default: one per core; at most 4 per core, fewer if the\n"
                   "system will not start more)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wifislam::cli::at_least(0));
   app->add_flag("--force", args->force,
                 "Replace the output folder if it exists and holds this tool's output (never an\n"
                 "input, the current directory, the home folder or a folder of your own)");

@@ -178,7 +178,7 @@ WIFISLAM_COMMAND(paper, 66) {
   app->add_option("--jobs", args->jobs,
                   "SLAM runs at a time (default: one per core; 1 keeps times free of\n"
                   "interference; results are the same)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wifislam::cli::at_least(0));
   app->add_option("--shard", args->shard,
                   "i/N: run only every N-th twin-and-seed group from the i-th (a cluster's task)");
   app->add_flag("--report-only", args->report_only, "Write the report from what DIR holds");

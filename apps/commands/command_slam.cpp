@@ -97,7 +97,7 @@ WIFISLAM_COMMAND(slam, 60) {
   app->add_flag("--no-verify", args->no_verify, "Do not check the dataset's SHA-256 sums");
   app->add_option("--max-frames", args->max_frames,
                   "Stop after this many frames (scene or dataset input)")
-      ->check(CLI::PositiveNumber);
+      ->check(wifislam::cli::at_least(1));
   app->add_option("--fps", args->fps, "Scene input only: frame rate (default: the scene's)")
       ->check(wifislam::cli::finite_range(0.1, 1000.0));
   app->add_option("--seed", args->scene_seed, "Scene input only: replace the scene's seed")

@@ -118,7 +118,7 @@ void add_run_command(CLI::App* app) {
          "Radio cases (or a SLAM case's two runs, side by side on one rendering) in parallel;\n"
          "results do not depend on it")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(wifislam::cli::at_least(1));
   run->add_flag("--force", args->force, "Replace a database of another study");
   run->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   run->footer(

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "core/error.hpp"
 #include "core/sensor_stream.hpp"
 #include "core/timestamp.hpp"
 #include "sim/render/rgbd_renderer.hpp"
@@ -36,6 +37,15 @@ struct GenerateProgress {
   std::int64_t frames_total = 0;
   double elapsed_s = 0.0;
 };
+
+/// A frame limit: none (negative) or at least one frame. Zero would make a dataset of no frames,
+/// which no reader takes (`check` refuses it), or a SLAM run on nothing.
+inline void check_max_frames(std::int64_t max_frames) {
+  if (max_frames == 0) {
+    throw InvalidInputError(
+        "max_frames: expected at least 1 frame (or no limit: the whole route), got 0");
+  }
+}
 
 struct GenerateOptions {
   /// Replaces the scene's seed (world, access points, noise, pauses: everything random).

@@ -23,6 +23,7 @@ std::shared_ptr<const site::Site> timed_site(const scene::Scene& scene, double& 
 }  // namespace
 
 scene::Scene resolve_scene(const scene::Scene& scene, const GenerateOptions& options) {
+  check_max_frames(options.max_frames);
   scene::Scene out = scene;
   if (options.seed) out.seed = *options.seed;
   if (options.fps) {

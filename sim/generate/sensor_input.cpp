@@ -34,6 +34,7 @@ SensorInput open_dataset(const fs::path& input, const SensorInputOptions& option
   SensorInput out;
   out.description = {
       {"kind", "dataset"}, {"path", input.string()}, {"max_frames", options.max_frames}};
+  check_max_frames(options.max_frames);
   out.stream = std::make_unique<DatasetReader>(input, reader_options);
   if (options.max_frames >= 0) {
     out.stream = std::make_unique<FrameLimitedStream>(std::move(out.stream), options.max_frames);

@@ -33,6 +33,19 @@ def test_an_unbounded_frame_rate_is_refused_before_any_work(tmp_path, a_hall):
     assert not (tmp_path / "d").exists()
 
 
+def test_zero_frames_is_refused_not_a_dataset_no_reader_takes(tmp_path, a_hall, small_dataset):
+    # generate(max_frames=0) wrote a dataset of no frames, which `check` refuses.
+    with pytest.raises(wifislam.InvalidInputError, match="max_frames"):
+        wifislam.generate(a_hall, tmp_path / "d", fps=1, max_frames=0)
+    with pytest.raises(wifislam.InvalidInputError, match="max_frames"):
+        wifislam.Simulator(a_hall, fps=1, max_frames=0)
+    for source in (a_hall, small_dataset):
+        with pytest.raises(wifislam.InvalidInputError, match="max_frames"):
+            wifislam.slam(source, tmp_path / "r", fps=1 if source == a_hall else None,
+                          max_frames=0)
+    assert not (tmp_path / "d").exists() and not (tmp_path / "r").exists()
+
+
 def test_positions_and_grids_must_be_finite(a_hall):
     for bad in ((float("nan"), 1.5, 30), (2.0, float("inf"), 30), (2.0, 1.5, float("nan"))):
         with pytest.raises(wifislam.InvalidInputError, match="finite"):

@@ -88,6 +88,19 @@ TEST_F(GenerateCli, BadSceneFailsAndWritesNothing) {
   EXPECT_FALSE(fs::exists(out.string() + ".partial"));
 }
 
+// A dataset of no frames is one `check` refuses: --max-frames 0 is refused before any work.
+TEST_F(GenerateCli, ZeroMaxFramesIsRefusedNotADatasetCheckRefuses) {
+  for (const std::string command : {"generate", "compare"}) {
+    const fs::path out = scratch_ / ("zero_" + command);
+    const RunResult r =
+        run(command + " " + scene_.string() + " -o " + out.string() + " --max-frames 0", scratch_);
+    EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
+    EXPECT_NE(r.err.find("--max-frames"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << command;
+    EXPECT_FALSE(fs::exists(out.string() + ".partial")) << command;
+  }
+}
+
 TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
   // A folder of the user's is never replaced, --force or not.
   const fs::path mine = scratch_ / "existing";
