@@ -20,6 +20,7 @@
 #include "core/line_cursor.hpp"
 #include "core/output_folder.hpp"
 #include "core/png_codec.hpp"
+#include "core/run_format.hpp"
 #include "core/text_lines.hpp"
 #include "core/wifi_csv.hpp"
 
@@ -90,9 +91,30 @@ struct DatasetReader::Cursors {
   std::int64_t frame_index = 0;
 };
 
+std::optional<std::string> not_a_dataset(const fs::path& folder) {
+  std::error_code ec;
+  const auto has = [&](const char* name) { return fs::exists(folder / name, ec); };
+  if (has(dataset::kManifest) || has(dataset::kAssociations) || has(dataset::kRgbList)) {
+    return std::nullopt;
+  }
+  if (has(run_folder::kRun)) {
+    return folder.string() +
+           ": a SLAM run folder (it holds run.json), not a dataset; give the dataset it ran on "
+           "(run.json's input)";
+  }
+  if (!has(dataset::kGroundTruth)) {
+    return fmt::format("{}: not a dataset folder: it holds none of {}, {}, {}, {}", folder.string(),
+                       dataset::kGroundTruth, dataset::kAssociations, dataset::kRgbList,
+                       dataset::kManifest);
+  }
+  return std::nullopt;
+}
+
 bool is_unfinished_dataset(const fs::path& folder) {
   std::error_code ec;
   if (fs::exists(folder / dataset::kManifest, ec)) return false;
+  // A run folder carries the marker too, and is no dataset at all (not_a_dataset says so).
+  if (fs::exists(folder / run_folder::kRun, ec)) return false;
   fs::path name = folder.filename();
   if (name.empty()) name = folder.parent_path().filename();  // "ds.partial/"
   return fs::exists(folder / kOutputMarkerFile, ec) || name.string().ends_with(".partial");
@@ -116,6 +138,7 @@ DatasetReader::DatasetReader(const fs::path& folder, DatasetReaderOptions option
                             "interrupted?); generate it again, or pass --no-verify to read what "
                             "is there");
   }
+  if (const std::optional<std::string> why = not_a_dataset(folder_)) throw InvalidInputError(*why);
   if (is_file(folder_ / dataset::kManifest)) {
     manifest_ = read_dataset_manifest(folder_ / dataset::kManifest);
     if (!manifest_->colour_images) {

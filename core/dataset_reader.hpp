@@ -90,9 +90,15 @@ class DatasetReader final : public SensorStream {
 };
 
 /// What an interrupted `generate` leaves: a folder without manifest.json (written last) that
-/// carries this tool's output marker or a `.partial` name. Its lists end early, so reading it
+/// carries this tool's output marker or a `.partial` name (and is no run folder). Its lists end early, so reading it
 /// would score a truncated route; DatasetReader refuses it unless checksums are off.
 bool is_unfinished_dataset(const std::filesystem::path& folder);
+
+/// Why an existing folder is no dataset at all, or nullopt when it may be one: a SLAM run folder
+/// (run.json, and no frame list or manifest), or a folder holding none of a dataset's files
+/// (groundtruth.txt, associations.txt, rgb.txt, manifest.json). Said instead of the first file
+/// found missing, or of "unfinished" (a run folder carries this tool's marker too).
+std::optional<std::string> not_a_dataset(const std::filesystem::path& folder);
 
 /// The (rgb, depth) image pairs of a dataset folder, in the order DatasetReader streams its frames:
 /// associations.txt when there is one, else rgb.txt and depth.txt associated as TUM's associate.py

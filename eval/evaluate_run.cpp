@@ -192,11 +192,12 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   // A path that is there but of the wrong kind is bad input (exit 2); one that is not, I/O.
   std::error_code ec;
   const fs::file_status input_status = fs::status(input, ec);
-  in.bare_trajectory = fs::is_regular_file(input_status);
+  // A pipe (`<(...)` in a shell) is read as a trajectory file, as every text input is.
+  in.bare_trajectory = fs::is_regular_file(input_status) || fs::is_fifo(input_status);
   if (!fs::exists(input_status)) throw IoError(input.string() + ": not found");
   if (!in.bare_trajectory && !fs::is_directory(input_status)) {
     throw ParseError(input.string(), "",
-                     "is neither a run folder nor a trajectory file (a device, pipe or socket)");
+                     "is neither a run folder nor a trajectory file (a device or socket)");
   }
   const fs::file_status dataset_status = fs::status(dataset_dir, ec);
   if (!fs::exists(dataset_status)) {
@@ -206,6 +207,8 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
     throw ParseError(dataset_dir.string(), "",
                      "is not a folder; give the dataset folder (it holds groundtruth.txt)");
   }
+  if (const std::optional<std::string> why = not_a_dataset(dataset_dir))
+    throw InvalidInputError(*why);
   in.run_dir = in.bare_trajectory ? fs::path() : input;
   const auto optional_file = [&](const char* name) {
     return in.bare_trajectory || !input_file_present(in.run_dir / name, "a run folder's file")
@@ -373,7 +376,8 @@ void score_closures(const RunInputs& in, const fs::path& dataset_dir, const Eval
   ev.overlap_used_depth = depth.available() && s.pairs_geometric_only == 0;
   if (!depth.available()) {
     ev.overlap_method =
-        "geometric bound only: the dataset has no depth images (generated with --no-images)";
+        "geometric bound only: the dataset lists no depth images (no depth.txt: generated with "
+        "--no-images, or not a dataset of ours)";
   } else if (s.pairs_geometric_only > 0) {
     ev.overlap_method = fmt::format(
         "depth test; {} of {} pairs geometric bound only (no depth image at their time)",

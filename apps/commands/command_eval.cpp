@@ -46,6 +46,13 @@ std::string thresholds_help() {
   return text;
 }
 
+/// A trajectory given as a pipe (`<(...)` in a shell): read as a file is, but with no folder
+/// to write the evaluation beside.
+bool is_pipe(const std::filesystem::path& input) {
+  std::error_code ec;
+  return std::filesystem::is_fifo(std::filesystem::status(input, ec));
+}
+
 /// Default output: <run>/eval for a folder, <name>_eval beside a trajectory file.
 std::filesystem::path default_output(const std::filesystem::path& input) {
   if (std::filesystem::is_regular_file(input)) {
@@ -70,6 +77,11 @@ void run(const EvalArgs& args) {
   }
   if (args.time_offset_s) options.time_offset_s = *args.time_offset_s;
   for (const std::string& s : args.settings) eval::set_option(options, s);
+  if (args.output.empty() && is_pipe(args.input)) {
+    throw InvalidInputError(args.input +
+                            ": a trajectory read from a pipe has no folder to write the "
+                            "evaluation beside; give the output folder (-o)");
+  }
   const std::filesystem::path default_out = default_output(args.input);
   const std::filesystem::path out =
       args.output.empty() ? default_out : std::filesystem::path(args.output);
@@ -79,9 +91,10 @@ void run(const EvalArgs& args) {
     requirements.push_back(eval::parse_requirement(text));
   // The default may lie inside the run folder it evaluates (<run>/eval), never inside the
   // ground truth's dataset (a trajectory file's <file>_eval beside it there).
-  const std::filesystem::path run_folder = std::filesystem::is_regular_file(args.input)
-                                               ? std::filesystem::path()
-                                               : std::filesystem::path(args.input);
+  const std::filesystem::path run_folder =
+      std::filesystem::is_regular_file(args.input) || is_pipe(args.input)
+          ? std::filesystem::path()
+          : std::filesystem::path(args.input);
   check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}, run_folder});
   const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
   const nlohmann::ordered_json flat = ev.flat_metrics();

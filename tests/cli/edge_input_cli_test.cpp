@@ -3,7 +3,9 @@
 // and every bad input is exit 2 naming the file (and line), never exit 3 or a silent pass.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <string>
 #include <vector>
@@ -179,6 +181,63 @@ TEST_F(EdgeInput, EvalRefusesAFolderOrDeviceInPlaceOfAFile) {
                      " --no-plots")
                 .exit_code,
             3);
+}
+
+// A run folder given for a dataset is named as one: it carries this tool's marker and no
+// manifest, so it read as "an unfinished dataset ... or pass --no-verify", advice that then failed
+// again. A folder that holds no dataset file is bad input for eval's --gt, as for `check`.
+TEST_F(EdgeInput, ARunFolderOrAnEmptyFolderGivenForADatasetIsNamedAsSuch) {
+  const fs::path run = scratch_ / "run";
+  ASSERT_EQ(wifislam("slam " + dataset_.string() + " -o " + run.string()).exit_code, 0);
+  const std::string run_folder = run.string() + ": a SLAM run folder (it holds run.json)";
+  expect_refused(wifislam("check " + run.string()), {run_folder});
+  for (const char* verify : {"", " --no-verify"}) {
+    expect_refused(wifislam("slam " + run.string() + verify + " -o " + (scratch_ / "r2").string()),
+                   {run_folder});
+    EXPECT_FALSE(fs::exists(scratch_ / "r2"));
+  }
+  expect_refused(
+      wifislam("export " + run.string() + " --for orbslam2 -o " + (scratch_ / "x").string()),
+      {run_folder});
+  expect_refused(wifislam("eval " + run.string() + " --gt " + run.string() + " --no-plots -o " +
+                          (scratch_ / "e1").string()),
+                 {run_folder});
+  fs::create_directories(scratch_ / "empty");
+  for (const std::string& command :
+       {std::string("check "),
+        "eval " + run.string() + " --no-plots -o " + (scratch_ / "e2").string() + " --gt "}) {
+    expect_refused(wifislam(command + (scratch_ / "empty").string()),
+                   {(scratch_ / "empty").string() + ": not a dataset folder"});
+  }
+  EXPECT_FALSE(fs::exists(scratch_ / "e1"));
+  EXPECT_FALSE(fs::exists(scratch_ / "e2"));
+}
+
+// A trajectory from a pipe (`<(...)` in a shell) reads as a file does (docs/input_output.md); its
+// evaluation has no folder to go beside, so it needs -o, refused before the pipe is read.
+TEST_F(EdgeInput, EvalReadsATrajectoryFromAPipe) {
+  const fs::path trajectory = dataset_ / "groundtruth.txt";
+  const test::CliResult from_file =
+      wifislam("eval " + trajectory.string() + " --gt " + dataset_.string() + " --no-plots -o " +
+               (scratch_ / "from_file").string());
+  ASSERT_EQ(from_file.exit_code, 0) << from_file.err;
+  const fs::path fifo = scratch_ / "trajectory.fifo";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  expect_refused(wifislam("eval " + fifo.string() + " --gt " + dataset_.string() + " --no-plots"),
+                 {fifo.string(), "give the output folder (-o)"});
+  const std::string writer = "cat '" + trajectory.string() + "' >'" + fifo.string() + "' & ";
+  const test::CliResult from_pipe =
+      test::run_wifislam("eval " + fifo.string() + " --gt " + dataset_.string() +
+                             " --no-plots -o " + (scratch_ / "from_pipe").string(),
+                         scratch_, {}, writer);
+  // Had eval not read the pipe, the writer would wait for a reader for ever: opening and closing
+  // it here ends the writer either way.
+  const int release_writer = open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
+  if (release_writer >= 0) close(release_writer);
+  ASSERT_EQ(from_pipe.exit_code, 0) << from_pipe.err;
+  const auto first_line = [](const std::string& text) { return text.substr(0, text.find('\n')); };
+  EXPECT_EQ(first_line(from_pipe.out), first_line(from_file.out));
+  EXPECT_NE(from_pipe.out.find("poses"), std::string::npos) << from_pipe.out;
 }
 
 // `eval ds/groundtruth.txt --gt ds`: the default output <file>_eval would be written into the

@@ -505,7 +505,15 @@ TEST(DatasetReader, TruncatedGroundTruthIsAnError) {
 TEST(DatasetReader, FolderWithoutFramesIsNotADataset) {
   const auto dir = test::fresh_folder("empty");
   const std::string e = open_error(dir);
-  EXPECT_NE(e.find("not an RGB-D dataset"), std::string::npos) << e;
+  EXPECT_NE(e.find("not a dataset folder: it holds none of"), std::string::npos) << e;
+  // A run folder is named as one, not as an unfinished dataset (it carries the output marker).
+  const auto run = test::fresh_folder("run_folder");
+  test::write_text(run / ".wifislam-output", "");
+  test::write_text(run / "run.json", "{}");
+  test::write_text(run / "trajectory.txt", "");
+  const std::string e_run = open_error(run);
+  EXPECT_NE(e_run.find("a SLAM run folder"), std::string::npos) << e_run;
+  EXPECT_FALSE(is_unfinished_dataset(run));
   EXPECT_NE(open_error(dir / "nope").find("does not exist"), std::string::npos);
   // Issue 34: a file given for a dataset folder is bad input, as a folder for a scene file is.
   test::write_text(dir / "file.txt", "x");
