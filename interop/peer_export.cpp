@@ -231,13 +231,19 @@ void write_peer_files(const ExportPlan& plan, const DatasetCalibration& calibrat
                                     dir, kOrbslam2Settings, dir, dir, dataset::kAssociations);
 }
 
+/// How the export holds the images: the bag carries their bytes, the other layouts link them.
+const char* images_held(Peer peer) {
+  return peer == Peer::kRosbag ? "in the bag: each image's bytes are a message"
+                               : "relative symbolic links to the dataset's files";
+}
+
 nlohmann::ordered_json export_json(const PeerExportSummary& summary) {
   nlohmann::ordered_json j;
   j["format"] = kExportFormatName;
   j["format_version"] = kExportFormatVersion;
   j["peer"] = to_string(summary.peer);
   j["dataset"] = summary.dataset.string();
-  j["links"] = "relative symbolic links to the dataset's files";
+  j["links"] = images_held(summary.peer);
   j["frames"] = summary.frames;
   j["first_time"] = summary.first_time.to_tum_string();
   j["last_time"] = summary.last_time.to_tum_string();
@@ -341,8 +347,9 @@ std::string PeerExportSummary::full_report() const {
   std::string r;
   r += fmt::format("export       {} ({} layout)\n", output.string(), to_string(peer));
   r += fmt::format("dataset      {}\n", dataset.string());
-  r += fmt::format("frames       {} (stamps {} .. {}), images linked, not copied\n", frames,
-                   first_time.to_tum_string(), last_time.to_tum_string());
+  r += fmt::format("frames       {} (stamps {} .. {}), images {}\n", frames,
+                   first_time.to_tum_string(), last_time.to_tum_string(),
+                   peer == Peer::kRosbag ? "in the bag" : "linked, not copied");
   r += fmt::format("intrinsics   {}\n", describe_intrinsics(intrinsics));
   r += fmt::format(
       "TUM camera   {}\n",

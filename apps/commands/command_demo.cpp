@@ -84,7 +84,7 @@ WIFISLAM_COMMAND(demo, 10) {
   auto args = std::make_shared<DemoArgs>();
   CLI::App* app = parent.add_subcommand(
       "demo",
-      "The paper's experiment in miniature (about two minutes on 2 cores): on a small embedded\n"
+      "The paper's experiment in miniature (about 1.5 min on 2 cores): on a small embedded\n"
       "scene with two look-alike corridors, generate an RGB-D + Wi-Fi dataset, run RGBD-SLAM\n"
       "(min_matches 10) vanilla and with Wi-Fi, score both against exact ground truth and print\n"
       "the comparison\n"

@@ -42,7 +42,8 @@ WIFISLAM_COMMAND(export, 58) {
       "export",
       "Lay a dataset (wifislam or plain TUM RGB-D) out the way another SLAM system's own dataset\n"
       "tool reads one. Images are relative symbolic links to the dataset's files, not copies,\n"
-      "so keep (or move, or mount) the dataset and the export together.");
+      "so keep (or move, or mount) the dataset and the export together; a ROS bag (--for\n"
+      "rosbag) carries the images' bytes instead.");
   app->footer(
       "--for rtabmap: for RTAB-Map's `rtabmap-rgbd_dataset DIR`:\n"
       "  rgb_sync/<t>.png and depth_sync/<t>.png  every associated pair, both under the rgb\n"

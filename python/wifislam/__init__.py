@@ -153,7 +153,8 @@ class Frame:
     depth:    H x W float32 metres along the optical axis, NaN where the sensor has no reading:
               exactly what a reader of the dataset gets (1/5000 m steps, as the PNG stores it)
     pose:     4 x 4 camera-to-world ground truth (optical frame: x right, y down, z forward);
-              None for a plain TUM dataset's frames, whose ground truth is at other stamps
+              None when groundtruth.txt has no row at the frame's stamp (a plain TUM
+              dataset's motion capture runs at other stamps)
     stamp_ns: the frame's time, Unix nanoseconds (``stamp`` in seconds)
     scans:    the Wi-Fi scans reported since the previous frame (before this one)
     odometry: the wheel-odometry readings since the previous frame, as (stamp_ns, 4 x 4 base

@@ -7,6 +7,7 @@ genmsg computes it from the definition the bag carries.
 Run by CTest: rosbag_export_test.py WIFISLAM_BINARY SCRATCH_DIR
 """
 import csv
+import json
 import os
 import shutil
 import subprocess
@@ -81,6 +82,14 @@ class RosbagExport(unittest.TestCase):
 
     def messages(self, topic):
         return [m for _, m, _ in self.bag.read_messages(topics=[topic])]
+
+    def test_the_export_says_the_images_are_in_the_bag_and_links_nothing(self):
+        with open(os.path.join(self.out, "export.json")) as f:
+            export = json.load(f)
+        self.assertIn("in the bag", export["links"])
+        for folder, _, files in os.walk(self.out):
+            for name in files:
+                self.assertFalse(os.path.islink(os.path.join(folder, name)), name)
 
     def test_topics_types_and_counts(self):
         info = self.bag.get_type_and_topic_info().topics
