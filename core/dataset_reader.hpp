@@ -90,8 +90,9 @@ class DatasetReader final : public SensorStream {
 };
 
 /// What an interrupted `generate` leaves: a folder without manifest.json (written last) that
-/// carries this tool's output marker or a `.partial` name (and is no run folder). Its lists end early, so reading it
-/// would score a truncated route; DatasetReader refuses it unless checksums are off.
+/// carries this tool's output marker or a `.partial` name (and is no run folder). Its lists end
+/// early, so reading it would score a truncated route; DatasetReader refuses it unless checksums
+/// are off.
 bool is_unfinished_dataset(const std::filesystem::path& folder);
 
 /// Why an existing folder is no dataset at all, or nullopt when it may be one: a SLAM run folder

@@ -174,8 +174,7 @@ TEST(GenerateDataset, ARewoundStreamGivesTheEventsOfAFreshOne) {
       const auto& fb = std::get<RgbdFrame>(*b);
       EXPECT_EQ(cv::norm(fa->rgb, fb.rgb, cv::NORM_INF), 0.0) << "frame " << fa->index;
       EXPECT_EQ(cv::norm(fa->depth_m, fb.depth_m, cv::NORM_INF), 0.0) << "frame " << fa->index;
-      EXPECT_TRUE(
-          rewound.last_frame_ground_truth().isApprox(fresh.last_frame_ground_truth(), 0.0));
+      EXPECT_TRUE(rewound.last_frame_ground_truth().isApprox(fresh.last_frame_ground_truth(), 0.0));
       ++frames;
     } else if (auto* sa = std::get_if<WifiScan>(&*a)) {
       EXPECT_EQ(*sa, std::get<WifiScan>(*b));
