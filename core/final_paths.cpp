@@ -8,8 +8,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool continues_name(char c) {
-  return std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '_' || c == '-';
+bool name_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-';
+}
+
+/// Whether `text` at `at` goes on with the name just before it ("2" after "/out.partial", or
+/// ".bak"); a full stop ending a sentence does not.
+bool continues_name(const std::string& text, std::size_t at) {
+  if (at >= text.size()) return false;
+  if (text[at] == '.') return at + 1 < text.size() && name_char(text[at + 1]);
+  return name_char(text[at]);
 }
 
 }  // namespace
@@ -33,7 +41,7 @@ std::string FinalPaths::in_text(std::string text) const {
   const std::string from = staging_.string(), to = final_.string();
   for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at)) {
     const std::size_t end = at + from.size();
-    if (end < text.size() && continues_name(text[end])) {
+    if (continues_name(text, end)) {
       at = end;
       continue;
     }

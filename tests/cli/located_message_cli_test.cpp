@@ -90,7 +90,7 @@ TEST_F(LocatedMessage, AFolderGivenAsTheSceneIsBadInputInEveryCommand) {
   }
   // `slam` reads a folder as a dataset: this one is not one.
   test::expect_located_bad_input(wifislam("slam " + folder.string() + " -o " + out.string()),
-                                 folder.string(), "not an RGB-D dataset");
+                                 folder.string(), "not a dataset folder");
   EXPECT_FALSE(fs::exists(out));
   // A missing file is a file error (exit 3), the same in every command.
   const auto missing = wifislam("world " + (scratch_ / "nope.yaml").string());

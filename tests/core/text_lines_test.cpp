@@ -22,7 +22,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path write(const std::string& name, const std::string& text) {
+fs::path write_lines_file(const std::string& name, const std::string& text) {
   const fs::path p = test::scratch_folder(name) / name;
   std::ofstream(p, std::ios::binary) << text;
   return p;
@@ -37,7 +37,7 @@ std::vector<std::string> texts(const std::vector<TextLine>& lines) {
 TEST(TextLines, SameLinesAsGetline) {
   const std::string long_line(10000, 'x');  // longer than one read piece
   const std::string text = "a b\r\n\n# c\r\n" + long_line + "\nlast";
-  const fs::path p = write("mixed.txt", text);
+  const fs::path p = write_lines_file("mixed.txt", text);
   std::vector<std::string> expected;
   std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
@@ -56,7 +56,8 @@ TEST(TextLines, SameLinesAsGetline) {
   while (cursor.next(line)) numbers.push_back(line.number);
   EXPECT_EQ(numbers, (std::vector<int>{1, 4, 5}));
 
-  const fs::path empty = write("empty.txt", ""), one_line = write("newline.txt", "x\n");
+  const fs::path empty = write_lines_file("empty.txt", ""),
+                 one_line = write_lines_file("newline.txt", "x\n");
   EXPECT_TRUE(read_text_lines(empty.string()).empty());
   EXPECT_EQ(read_text_lines(one_line.string()).size(), 1u);
   for (const fs::path& file : {p, empty, one_line}) fs::remove(file);
