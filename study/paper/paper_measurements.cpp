@@ -126,6 +126,12 @@ PaperMeasurements PaperMeasurements::load(const fs::path& folder) {
   return m;
 }
 
+PaperMeasurements PaperMeasurements::from_rows(std::vector<RunRow> rows) {
+  PaperMeasurements m;
+  m.rows_ = std::move(rows);
+  return m;
+}
+
 std::vector<const RunRow*> PaperMeasurements::runs(Part part, const std::string& twin,
                                                    const std::string& setting, bool wifi) const {
   std::map<std::uint64_t, const RunRow*> by_seed;

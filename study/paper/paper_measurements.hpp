@@ -34,6 +34,8 @@ class PaperMeasurements {
   /// Reads every study database, dataset record and localisation of `folder`. Throws
   /// InvalidInputError naming a file that is not what the folder's layout says.
   static PaperMeasurements load(const std::filesystem::path& folder);
+  /// Runs alone, no dataset record or localisation: what a study database's rows make of them.
+  static PaperMeasurements from_rows(std::vector<RunRow> rows);
 
   const std::vector<RunRow>& rows() const { return rows_; }
   /// The rows of one part, twin, setting and variant, in seed order.

@@ -41,8 +41,11 @@ const char* unit_of(Quantity quantity);
 enum class Variant { kVanilla, kWifi, kEither };
 const char* to_string(Variant variant);  // "vanilla", "wifi", ""
 
-/// How the paper states it: a value, or a bound in words ("more than 50 %", "less than 40").
-enum class Bound { kEqual, kAbout, kMoreThan, kLessThan, kRange };
+/// How the paper states it: a value, or a bound in words ("more than 50 %", "less than 40",
+/// "15%-25%", "about 3%-8%"). An approximate range is judged as a range.
+enum class Bound { kEqual, kAbout, kMoreThan, kLessThan, kRange, kAboutRange };
+/// Whether the bound has an upper end (`value_high`).
+inline bool is_range(Bound bound) { return bound == Bound::kRange || bound == Bound::kAboutRange; }
 
 struct PaperNumber {
   Part part = Part::kDatasets;
@@ -57,7 +60,7 @@ struct PaperNumber {
   Quantity quantity = Quantity::kAteRmseM;
   Bound bound = Bound::kEqual;
   double value = 0.0;
-  double value_high = 0.0;  // kRange only: the range's upper end
+  double value_high = 0.0;  // a range's upper end (is_range); else `value`
   /// A table cell as printed ("0.2304"); empty for a number of the text.
   std::string printed;
   /// A short stable key: source, twin, setting and variant ("table:rtabmap_rmse/a_hall/

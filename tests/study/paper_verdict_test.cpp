@@ -59,6 +59,28 @@ TEST(Verdict, TimesAreJudgedAsRatiosNotSeconds) {
   EXPECT_EQ(k.verdict, Verdict::kDeparts) << k.why;
 }
 
+TEST(Verdict, ARatioIsWithinTheRatiosToleranceNotAPercentagesFloor) {
+  // The paper: 2.36 -> 0.63 s (0.27). Ours 0.55 on both seeds: the same direction, but 0.28
+  // from the paper's, beyond 25 % of 0.27 + 0.05, so not reproduced.
+  const PaperNumber v = number(Quantity::kLoopClosureTimeS, Variant::kVanilla, 2.3625);
+  const Judgement j = judge_pair(v, 2.3625, 0.6308, seeds({20.0, 10.0}), seeds({11.0, 5.5}));
+  EXPECT_EQ(j.verdict, Verdict::kDirectionOnly) << j.why;
+  // Within 25 % + 0.05 of the paper's ratio: 0.37 against 0.27.
+  const Judgement k = judge_pair(v, 2.3625, 0.6308, seeds({20.0}), seeds({7.4}));
+  EXPECT_EQ(k.verdict, Verdict::kReproduced) << k.why;
+  // A seed's ratio reaching the paper's reproduces it: 0.25 and 0.55.
+  const Judgement r = judge_pair(v, 2.3625, 0.6308, seeds({20.0, 10.0}), seeds({5.0, 5.5}));
+  EXPECT_EQ(r.verdict, Verdict::kReproduced) << r.why;
+}
+
+TEST(Verdict, ASavingsDirectionIsItsMeansEvenWhenASeedReachesTheRange) {
+  // The paper: 15-25 %. One seed saves 16 %, the other loses 20 %: the mean saves nothing.
+  const PaperNumber range =
+      number(Quantity::kTimeSavingPct, Variant::kEither, 15, Bound::kRange, 25);
+  const Judgement j = judge_value(range, seeds({-20, 16}));
+  EXPECT_EQ(j.verdict, Verdict::kDeparts) << j.why;
+}
+
 TEST(Verdict, BoundsAndRanges) {
   const PaperNumber more = number(Quantity::kTimeSavingPct, Variant::kEither, 50, Bound::kMoreThan);
   EXPECT_EQ(judge_value(more, seeds({55, 60})).verdict, Verdict::kReproduced);
@@ -83,6 +105,10 @@ TEST(Verdict, VanillaFalsePositivesHaveADirectionOfTheirOwn) {
   EXPECT_EQ(judge_value(fp, seeds({0, 0})).verdict, Verdict::kDeparts);
   const PaperNumber none = number(Quantity::kFalsePositivePct, Variant::kVanilla, 0);
   EXPECT_EQ(judge_value(none, seeds({0, 1.5})).verdict, Verdict::kReproduced);
+  // The paper's none against ours some (a mean of 10 %), though one seed has none: departs.
+  const Judgement some = judge_value(none, seeds({0, 20}));
+  EXPECT_EQ(some.verdict, Verdict::kDeparts) << some.why;
+  EXPECT_NE(some.why.find("ours has some, the paper's none"), std::string::npos) << some.why;
 }
 
 TEST(Verdict, OverheadIsAShareAndTheClaimThatItIsBelowTheSaving) {
