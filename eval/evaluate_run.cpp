@@ -187,7 +187,7 @@ struct RunInputs {
 /// Reads the inputs; only the trajectory is required: a folder or file from another system has
 /// nothing else. Records in `ev` what the inputs hold and what is not available, and why.
 RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
-                      const EvalOptions& options, RunEvaluation& ev) {
+                      const EvalOptions& options, bool verify_checksums, RunEvaluation& ev) {
   RunInputs in;
   // A path that is there but of the wrong kind is bad input (exit 2); one that is not, I/O.
   std::error_code ec;
@@ -219,7 +219,7 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   // product with 1e9 in doubles keeps.
   in.offset_ns = Timestamp::from_seconds_exact(options.time_offset_s).ns;
   required_file(dataset_dir, dataset::kGroundTruth, "the dataset's ground truth");
-  in.ground_truth = read_ground_truth(dataset_dir);
+  in.ground_truth = read_ground_truth(dataset_dir, verify_checksums);
   in.trajectory_file = in.bare_trajectory ? input
                                           : required_file(in.run_dir, run_folder::kTrajectory,
                                                           "the run's estimated trajectory");
@@ -390,13 +390,13 @@ void score_closures(const RunInputs& in, const fs::path& dataset_dir, const Eval
 }  // namespace
 
 RunEvaluation evaluate_run(const fs::path& input, const fs::path& dataset_dir,
-                           const EvalOptions& options) {
+                           const EvalOptions& options, bool verify_checksums) {
   validate(options);
   RunEvaluation ev;
   ev.run_dir = input.string();
   ev.dataset_dir = dataset_dir.string();
   ev.options = options;
-  const RunInputs in = read_inputs(input, dataset_dir, options, ev);
+  const RunInputs in = read_inputs(input, dataset_dir, options, verify_checksums, ev);
 
   const std::vector<Pose> gt_poses = poses_of(in.ground_truth);
   const std::vector<double> gt_path_m = cumulative_path_length_m(gt_poses);

@@ -19,9 +19,11 @@ namespace wifislam::eval {
 /// `run_or_trajectory`: a run folder, or a TUM trajectory file. Throws IoError for a missing or
 /// unreadable file and ParseError naming file:line (and key) for malformed content (e.g. a NaN in
 /// trajectory.txt, a graph.json edge without "from_to"); InvalidInputError when the estimate and
-/// the ground truth have fewer than 3 poses in common.
+/// the ground truth have fewer than 3 poses in common. `verify_checksums`: whether the ground
+/// truth must match the dataset's manifest.json (as `slam`'s reading of the dataset).
 RunEvaluation evaluate_run(const std::filesystem::path& run_or_trajectory,
-                           const std::filesystem::path& dataset_dir, const EvalOptions& options);
+                           const std::filesystem::path& dataset_dir, const EvalOptions& options,
+                           bool verify_checksums = true);
 
 /// The trajectory part of evaluate_run (ATE, RPE, the aligned path) for two trajectories held in
 /// memory, associated and aligned exactly as evaluate_run does it (the Python module's evaluate

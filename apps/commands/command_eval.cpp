@@ -29,6 +29,7 @@ struct EvalArgs {
   bool scale = false;
   bool no_plots = false;
   bool force = false;
+  bool no_verify = false;
   std::vector<std::string> settings;
   std::vector<std::string> requirements;
 };
@@ -96,7 +97,8 @@ void run(const EvalArgs& args) {
           ? std::filesystem::path()
           : std::filesystem::path(args.input);
   check_output_folder({out, args.force, default_out, {args.input, args.dataset_dir}, run_folder});
-  const eval::RunEvaluation ev = eval::evaluate_run(args.input, args.dataset_dir, options);
+  const eval::RunEvaluation ev =
+      eval::evaluate_run(args.input, args.dataset_dir, options, !args.no_verify);
   const nlohmann::ordered_json flat = ev.flat_metrics();
   eval::check_metric_names(requirements, flat);
   eval::PlanBackdrop backdrop;
@@ -183,6 +185,8 @@ WIFISLAM_COMMAND(eval, 70) {
                   "--offset)");
   app->add_flag("--scale", args->scale, "Deprecated: same as --align sim3");
   app->add_flag("--no-plots", args->no_plots, "Write the text outputs only");
+  app->add_flag("--no-verify", args->no_verify,
+                "Do not check the ground truth against the dataset's manifest.json");
   app->add_option("--set", args->settings, "Threshold key=value (repeatable), see below");
   app->add_option("--require", args->requirements,
                   "METRIC OP NUMBER (repeatable), e.g. 'ate_rmse_m<=0.5' or\n"

@@ -191,7 +191,7 @@ py::object evaluate(const py::object& estimate, const py::object& ground_truth,
       // What `wifislam eval RUN --gt DATASET` computes, loop closures and timing included.
       {
         py::gil_scoped_release release;
-        flat = eval::evaluate_run(estimate_path, dataset, options).flat_metrics();
+        flat = eval::evaluate_run(estimate_path, dataset, options, verify).flat_metrics();
       }
       return to_python(flat);
     }

@@ -221,6 +221,15 @@ TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
     EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << bad;
   }
+  // A ground truth edited after generation is refused against manifest.json, and scored with
+  // --no-verify (as `slam --no-verify` reads such a dataset).
+  std::ofstream(ds / "groundtruth.txt", std::ios::app) << "# edited\n";
+  const Result edited = wifislam(eval + (dir / "edited").string(), dir);
+  EXPECT_EQ(edited.exit_code, 2) << edited.err;
+  EXPECT_NE(edited.err.find("manifest mismatch"), std::string::npos) << edited.err;
+  EXPECT_FALSE(fs::exists(dir / "edited"));
+  const Result unverified = wifislam(eval + (dir / "edited").string() + " --no-verify", dir);
+  EXPECT_EQ(unverified.exit_code, 0) << unverified.err;
   fs::remove_all(dir);
 }
 
