@@ -94,9 +94,14 @@ void check_metric_names(const std::vector<Requirement>& requirements,
   std::vector<std::string> known = RunEvaluation::flat_metric_names();
   for (const std::string& name : numeric_columns(flat)) known.push_back(name);
   for (const Requirement& r : requirements) {
-    if (std::find(known.begin(), known.end(), r.metric) != known.end() &&
-        !(flat.contains(r.metric) && flat[r.metric].is_string())) {
-      continue;
+    const bool is_text = flat.contains(r.metric) && flat[r.metric].is_string();
+    if (std::find(known.begin(), known.end(), r.metric) != known.end() && !is_text) continue;
+    if (is_text) {
+      // A column that is there but holds text: suggesting its own name would be no help.
+      throw InvalidInputError(
+          fmt::format("--require '{}': '{}' holds text ('{}'), not a number: only numeric "
+                      "columns of metrics.csv can be required",
+                      r.text, r.metric, flat[r.metric].get<std::string>()));
     }
     throw InvalidInputError(
         fmt::format("--require '{}': '{}' is no numeric column of "

@@ -120,9 +120,20 @@ Trajectory trajectory_from_array(const py::array& rows, const std::string& what)
   std::optional<Timestamp> last;
   for (py::ssize_t i = 0; i < m.shape(0); ++i) {
     std::vector<std::string> text;
+    const double t_s = m.at(i, 0);
+    // Nanoseconds in 64 bits reach 9.2e9 s (the year 2262): a stamp beyond has no Timestamp, and
+    // the usual cause is milliseconds (or microseconds) given as seconds.
+    if (!std::isfinite(t_s) || std::abs(t_s) >= 9.2e9) {
+      throw ParseError(fmt::format("{} row {}", what, i), "",
+                       std::isfinite(t_s)
+                           ? fmt::format("t = {} s is out of range (at most 9.2e9 s; stamps are "
+                                         "seconds, not milliseconds)",
+                                         t_s)
+                           : fmt::format("t is not a finite number ({})", t_s));
+    }
     // The stamp as the decimal the float was written as (nanoseconds at most); the rest fixed
     // point, which the reader takes (it refuses exponents in stamps).
-    text.push_back(Timestamp::from_seconds_exact(m.at(i, 0)).to_string(9));
+    text.push_back(Timestamp::from_seconds_exact(t_s).to_string(9));
     for (int c = 1; c < 8; ++c) text.push_back(fmt::format("{:.17f}", m.at(i, c)));
     const std::vector<std::string_view> fields(text.begin(), text.end());
     const std::string where = fmt::format("{} row {}", what, i);

@@ -19,14 +19,16 @@ SensorInput open_dataset(const fs::path& input, const SensorInputOptions& option
   // A dataset's frame rate and noise are fixed when it is generated: say so rather than ignore
   // the options.
   if (options.refuse_scene_options_for_datasets && options.fps) {
-    throw ParseError("--fps", fmt::format("{}", *options.fps),
-                     "applies to scene input only; a dataset's frame rate is fixed (generate it "
-                     "again with `wifislam generate --fps`)");
+    throw InvalidInputError(fmt::format(
+        "--fps {}: applies to scene input only; a dataset's frame rate is fixed (generate it "
+        "again with `wifislam generate --fps`)",
+        *options.fps));
   }
   if (options.refuse_scene_options_for_datasets && options.scene_seed) {
-    throw ParseError("--seed", std::to_string(*options.scene_seed),
-                     "applies to scene input only; a dataset was rendered with its scene's seed "
-                     "(for SLAM's own draws use --set seed=N)");
+    throw InvalidInputError(fmt::format(
+        "--seed {}: applies to scene input only; a dataset was rendered with its scene's seed "
+        "(for SLAM's own draws use --set seed=N)",
+        *options.scene_seed));
   }
   // An unfinished dataset (an interrupted `generate`) is the reader's refusal, as for `check`.
   DatasetReaderOptions reader_options;
