@@ -95,7 +95,15 @@ def _scene_from_dict(scene: Mapping[str, Any], source_name: str = "<dict>") -> S
     """
     if not isinstance(scene, Mapping):
         raise TypeError(f"Scene.from_dict: expected a dict, got {type(scene).__name__}")
-    return Scene.from_yaml(json.dumps(scene, indent=2), source_name)
+    return Scene.from_yaml(json.dumps(scene, indent=2, default=_json_plain), source_name)
+
+
+def _json_plain(value: Any) -> Any:
+    """numpy's scalars and arrays as the Python numbers and lists JSON knows (a seed swept with
+    np.arange, a metrics row read back with pandas); anything else is json's TypeError."""
+    if isinstance(value, (np.generic, np.ndarray)):
+        return value.tolist()
+    raise TypeError(f"Object of type {type(value).__name__} is not JSON serializable")
 
 
 Scene.from_dict = staticmethod(_scene_from_dict)
@@ -103,17 +111,25 @@ Scene.from_dict = staticmethod(_scene_from_dict)
 
 def channel_of(frequency_khz: int) -> int:
     """The IEEE 802.11 channel number of a centre frequency in kHz (2.4 GHz: 2412 MHz is
-    channel 1, 2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel, 5005 to 5980 MHz).
-    ValueError for a frequency that is no channel's centre in these bands."""
+    channel 1, 2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel, 5005 to 5900 MHz;
+    6 GHz: 5950 MHz + 5 MHz per channel, 5955 to 7115 MHz, and 5935 MHz channel 2). A channel
+    number alone does not say its band: keep the frequency beside it. ValueError for a frequency
+    that is no channel's centre in these bands."""
     khz = operator.index(frequency_khz)  # a whole number (TypeError for 2412000.5)
     mhz, rest = divmod(khz, 1000)
     if rest == 0 and mhz == 2484:
         return 14
     if rest == 0 and 2412 <= mhz <= 2472 and (mhz - 2407) % 5 == 0:
         return (mhz - 2407) // 5
-    if rest == 0 and 5005 <= mhz <= 5980 and mhz % 5 == 0:
+    # 5 GHz numbering ends below 5935 MHz, where 6 GHz (802.11ax) starts: 5 GHz channels above
+    # 180 are no 5 GHz Wi-Fi channel in use, and their frequencies are 6 GHz channels 1 to 5.
+    if rest == 0 and 5005 <= mhz <= 5900 and mhz % 5 == 0:
         return (mhz - 5000) // 5
-    raise ValueError(f"frequency_khz {khz}: not the centre of a 2.4 GHz or 5 GHz Wi-Fi channel")
+    if rest == 0 and mhz == 5935:
+        return 2
+    if rest == 0 and 5955 <= mhz <= 7115 and mhz % 5 == 0:
+        return (mhz - 5950) // 5
+    raise ValueError(f"frequency_khz {khz}: not the centre of a 2.4, 5 or 6 GHz Wi-Fi channel")
 
 
 @dataclasses.dataclass(frozen=True)
@@ -278,7 +294,9 @@ class Dataset(_Frames):
 
     @checked
     def __init__(self, path: PathLike, verify: bool = True, load_images: bool = True):
-        self.path = _path(path, "Dataset")
+        # Absolute at opening: each pass reads the files again, and a later os.chdir (a
+        # notebook's %cd) must not make it read another folder's.
+        self.path = os.path.abspath(_path(path, "Dataset"))
         super().__init__(_wifislam._Dataset(self.path, verify, load_images))
 
     @property
@@ -442,7 +460,14 @@ def require(metrics: Mapping[str, Any], *requirements: str) -> List[str]:
     InvalidInputError for a malformed requirement or an unknown metric."""
     # A metric that is NaN or infinite (metrics.csv's "-nan", read back with pandas) is one the
     # run could not give: "not available", as None is, not a JSON error.
+    # numpy's scalars (a pandas row) count as Python's numbers, at any depth.
     def available(value: Any) -> Any:
+        if isinstance(value, (np.generic, np.ndarray)):
+            value = value.tolist()
+        if isinstance(value, (list, tuple)):
+            return [available(v) for v in value]
+        if isinstance(value, Mapping):
+            return {k: available(v) for k, v in value.items()}
         if (isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral)
                 and not math.isfinite(value)):
             return None

@@ -5,7 +5,8 @@ Without it a wrong type reaches the compiled module, whose pybind11 error lists 
 parameter of the internal function as arg0, arg1, ... and leaves the user to find which one
 was wrong. Only the kinds the public functions use are checked: numbers, text, paths,
 booleans, mappings, sequences, arrays (anything numpy converts: arrays and nested lists),
-the classes named.
+the classes named. Whole numbers are also checked against the fixed-width integers the compiled
+module holds them in (an InvalidInputError, a ValueError, naming the range).
 """
 
 from __future__ import annotations
@@ -19,6 +20,8 @@ import typing
 from typing import Any, Callable, TypeVar, Union
 
 import numpy as np
+
+from . import _wifislam
 
 F = TypeVar("F", bound=Callable[..., Any])
 
@@ -91,6 +94,39 @@ def _kind(hint: Any) -> str:
     return f"a {getattr(hint, '__name__', str(hint))}"
 
 
+# Whole numbers the compiled module holds in fixed-width integers, by parameter name: outside,
+# pybind11 would refuse with its list of the internal function's arguments. max_frames also
+# refuses what the command line refuses (0 and negatives other than -1, "no limit").
+_WHOLE_NUMBER_RANGES = {
+    "seed": (0, 2**64 - 1, "a whole number from 0 to 2**64 - 1"),
+    "max_frames": (1, 2**63 - 1, "-1 (the whole route) or a whole number of 1 or more"),
+    "threads": (0, 2**31 - 1, "0 (every core) or a number of threads below 2**31"),
+    "frame_index": (0, 2**63 - 1, "a whole number from 0 to 2**63 - 1"),
+}
+_INT32 = (-2**31, 2**31 - 1, "a whole number from -2**31 to 2**31 - 1")
+
+
+def _out_of_range(parameter: str, hint: Any, value: Any) -> str:
+    """What `parameter` takes, when `value` is a whole number outside it; "" otherwise."""
+    if not isinstance(value, numbers.Integral) or isinstance(value, (bool, np.bool_)):
+        return ""
+    if not _takes(hint, value) or not _takes_whole_numbers(hint):
+        return ""
+    low, high, words = _WHOLE_NUMBER_RANGES.get(parameter, _INT32)
+    number = int(value)
+    if parameter == "max_frames" and number == -1:
+        return ""
+    return "" if low <= number <= high else words
+
+
+def _takes_whole_numbers(hint: Any) -> bool:
+    if hint is int:
+        return True
+    if typing.get_origin(hint) is Union:
+        return any(member is int for member in typing.get_args(hint))
+    return False
+
+
 def checked(function: F) -> F:
     """`function` with its arguments checked against its annotations on each call."""
     signature = inspect.signature(function)
@@ -113,6 +149,10 @@ def checked(function: F) -> F:
                         shown = shown[:37] + "..."
                     raise TypeError(f"{name}(): {parameter} takes {_kind(hint)}, "
                                     f"got {type(each).__name__} {shown}")
+                words = _out_of_range(parameter, hint, each)
+                if words:
+                    raise _wifislam.InvalidInputError(
+                        f"{name}(): {parameter} takes {words}, got {int(each)}")
         return function(*args, **kwargs)
 
     return typing.cast(F, call)

@@ -86,7 +86,12 @@ def test_channel_of_knows_the_bands_and_refuses_the_rest():
     assert wifislam.channel_of(2484000) == 14
     assert wifislam.channel_of(5180000) == 36
     assert wifislam.channel_of(np.int64(5825000)) == 165
-    for bad in (0, -5, 2401000, 2413000, 2412500, 60480000):
+    # 6 GHz (802.11ax): 5950 MHz + 5 MHz per channel, and 5935 MHz channel 2.
+    assert wifislam.channel_of(5955000) == 1
+    assert wifislam.channel_of(5935000) == 2
+    assert wifislam.channel_of(6115000) == 33
+    assert wifislam.channel_of(7115000) == 233
+    for bad in (0, -5, 2401000, 2413000, 2412500, 5920000, 7120000, 60480000):
         with pytest.raises(ValueError, match="channel"):
             wifislam.channel_of(bad)
     with pytest.raises(TypeError):
@@ -163,3 +168,68 @@ def test_an_array_argument_takes_arrays_and_nested_lists_only(a_hall, small_data
     pose = wifislam.camera_pose(a_hall, 2.0, 1.5, 30)
     rgb, _ = wifislam.render(a_hall, pose.tolist(), noise=False)
     assert np.array_equal(rgb, wifislam.render(a_hall, pose, noise=False)[0])
+
+
+def test_whole_numbers_outside_what_the_module_holds_name_the_range(tmp_path, a_hall,
+                                                                    small_dataset):
+    # pybind11 refused these with its list of the internal function's arguments; a negative
+    # max_frames other than -1 ran the whole route.
+    cases = [
+        (lambda: wifislam.Simulator(a_hall, seed=-1),
+         r"Simulator\(\): seed takes a whole number from 0 to 2\*\*64 - 1, got -1"),
+        (lambda: wifislam.generate(a_hall, tmp_path / "d", seed=2**64),
+         r"generate\(\): seed takes a whole number from 0 to 2\*\*64 - 1"),
+        (lambda: wifislam.Simulator(a_hall, max_frames=-5, images=False),
+         r"max_frames takes -1 \(the whole route\) or a whole number of 1 or more, got -5"),
+        (lambda: wifislam.generate(a_hall, tmp_path / "d", max_frames=0),
+         r"generate\(\): max_frames takes -1 .* got 0"),
+        (lambda: wifislam.slam(small_dataset, tmp_path / "r", max_frames=np.int64(-3)),
+         r"slam\(\): max_frames takes -1 .* got -3"),
+        (lambda: wifislam.generate(a_hall, tmp_path / "d", threads=2**40),
+         r"generate\(\): threads takes 0 \(every core\)"),
+    ]
+    for call, message in cases:
+        with pytest.raises(wifislam.InvalidInputError, match=message):
+            call()
+    assert not (tmp_path / "d").exists() and not (tmp_path / "r").exists()
+    # -1 is the whole route, as before.
+    assert len(wifislam.Simulator(a_hall, fps=0.2, max_frames=-1, images=False)) > 2
+
+
+def test_numpy_scalars_inside_dicts_pass_as_python_numbers(a_hall):
+    met = wifislam.require({"ate_rmse_m": np.float32(0.1), "rpe_trans_m_per_m": [np.inf]},
+                           "ate_rmse_m <= 0.5")
+    assert len(met) == 1 and met[0].startswith("met")
+    scene = wifislam.Scene.load(a_hall).to_dict()
+    scene["seed"] = np.arange(3)[2]  # a seed swept with numpy
+    assert wifislam.Scene.from_dict(scene).to_dict()["seed"] == 2
+
+
+def test_array_stamps_that_are_no_seconds_are_named(small_dataset):
+    truth = wifislam.Dataset(small_dataset).ground_truth
+    for bad, message in ((np.nan, r"row 3: t is not a finite number \(nan\)"),
+                         (np.inf, r"row 3: t is not a finite number \(inf\)"),
+                         (1.7e12, r"row 3: t = 1700000000000 s is out of range .* not millisec")):
+        estimate = truth.copy()
+        estimate[3, 0] = bad
+        with pytest.raises(wifislam.ParseError, match=message):
+            wifislam.evaluate(estimate, truth)
+
+
+def test_evaluate_without_verify_scores_an_edited_ground_truth(tmp_path, small_dataset):
+    # verify=False reached the array path only: a run or trajectory file against a dataset
+    # folder still compared groundtruth.txt with manifest.json.
+    import shutil
+    edited = tmp_path / "edited"
+    shutil.copytree(small_dataset, edited)
+    lines = (edited / "groundtruth.txt").read_text().splitlines(keepends=True)
+    row = next(i for i, line in enumerate(lines) if not line.startswith("#"))
+    fields = lines[row].split(" ")
+    fields[1] = f"{float(fields[1]) + 0.001:.6f}"
+    lines[row] = " ".join(fields)
+    (edited / "groundtruth.txt").write_text("".join(lines))
+    estimate = small_dataset / "groundtruth.txt"
+    with pytest.raises(wifislam.ParseError, match="manifest"):
+        wifislam.evaluate(estimate, edited)
+    metrics = wifislam.evaluate(estimate, edited, verify=False)
+    assert 0 < metrics["ate_rmse_m"] < 0.01

@@ -76,3 +76,17 @@ def test_an_iterator_at_its_end_stays_there(c_hall):
 
 
 # Threads sharing one iterator: test_threads_and_fork.py.
+
+
+def test_a_dataset_opened_by_a_relative_path_keeps_reading_it_after_a_chdir(
+        tmp_path, monkeypatch, small_dataset):
+    # Each pass reads the files again: a relative path once read another folder's after a
+    # notebook's %cd, with len() and ground_truth still the first folder's.
+    monkeypatch.chdir(small_dataset.parent)
+    dataset = wifislam.Dataset(small_dataset.name)
+    first = list(dataset)
+    elsewhere = tmp_path / "elsewhere"
+    elsewhere.mkdir()
+    monkeypatch.chdir(elsewhere)
+    same_frames(first, list(dataset))
+    assert dataset.path == str(small_dataset)
