@@ -66,6 +66,15 @@ py::dict generate_summary_dict(const sim::generate::GenerateSummary& s) {
   return out;
 }
 
+/// Called after each frame of long work run with the GIL released: runs Python's pending signal
+/// handlers, so that Ctrl-C (or a handler's exception) stops the work at the next frame. The
+/// exception unwinds the C++ work, whose staging folder is removed as on any error, and reaches
+/// Python as raised. Only the main thread runs handlers; elsewhere this is a no-op.
+void stop_on_python_signal() {
+  py::gil_scoped_acquire acquire;
+  if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+}
+
 /// `generate`: `scene_path` is the file the scene came from (an input that must not be
 /// replaced), empty for a scene built from a dict.
 py::dict generate(const sim::scene::Scene& scene, const fs::path& output,
@@ -84,6 +93,7 @@ py::dict generate(const sim::scene::Scene& scene, const fs::path& output,
   options.camera = images ? sim::generate::CameraOutput::kColourAndDepth
                           : sim::generate::CameraOutput::kNoImages;
   options.threads = threads;
+  options.on_progress = [](const sim::generate::GenerateProgress&) { stop_on_python_signal(); };
   sim::generate::GenerateSummary summary;
   {
     py::gil_scoped_release release;
@@ -108,6 +118,7 @@ py::dict slam(const fs::path& input, const fs::path& output, const std::string& 
   request.max_frames = max_frames;
   request.fps = fps;
   request.scene_seed = seed;
+  request.on_frame = [](std::int64_t) { stop_on_python_signal(); };
   study::SlamRunResult result;
   {
     py::gil_scoped_release release;
