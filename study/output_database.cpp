@@ -10,26 +10,25 @@ namespace wifislam::study {
 
 namespace fs = std::filesystem;
 
-void prepare_run_database(const fs::path& path, const StudyFile& study, bool force,
-                          const std::vector<fs::path>& inputs) {
+bool check_run_database(const fs::path& path, const StudyFile& study, bool force,
+                        const std::vector<fs::path>& inputs) {
   check_output_file(path, inputs);
   std::error_code ec;
-  if (!fs::exists(path, ec)) return;
+  if (!fs::exists(path, ec)) return false;
   const auto identity = ResultStore::read_identity(path);
   if (!identity) {
     throw InvalidInputError(fmt::format(
         "{}: exists and is not a study database; refusing to touch it (even with --force)",
         path.string()));
   }
-  if (*identity == identity_of(study)) return;  // resume
+  if (*identity == identity_of(study)) return false;  // resume
   if (!force) {
     throw InvalidInputError(fmt::format(
         "{}: a study database of study '{}' (another study file, or another build of wifislam); "
         "give --force to replace it, or another -o",
         path.string(), identity->name));
   }
-  fs::remove(path);
-  fs::remove(path.string() + "-journal", ec);
+  return true;
 }
 
 void prepare_merged_database(const fs::path& path, bool force,

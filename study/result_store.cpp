@@ -1,14 +1,9 @@
 #include "study/result_store.hpp"
 
-#include <fcntl.h>
 #include <sqlite3.h>
-#include <sys/file.h>
-#include <unistd.h>
 
-#include <cerrno>
 #include <charconv>
 #include <cstdlib>
-#include <cstring>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -218,29 +213,19 @@ StudyIdentity identity_of(const StudyFile& study) {
 
 ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
                          const std::vector<std::string>& metric_columns,
-                         const std::vector<std::string>& timing_columns)
-    : study_(study), metric_columns_(metric_columns), timing_columns_(timing_columns) {
-  // A lock of our own beside the database (flock on the database file itself would be unsafe:
-  // closing any descriptor of it drops SQLite's own fcntl locks).
-  const fs::path lock = path.string() + ".lock";
-  lock_fd_ = ::open(lock.c_str(), O_CREAT | O_RDWR | O_CLOEXEC, 0644);
-  if (lock_fd_ < 0) {
-    throw IoError(
-        fmt::format("{}: cannot create the lock ({})", lock.string(), std::strerror(errno)));
+                         const std::vector<std::string>& timing_columns, bool replace_existing)
+    : lock_(path, "writing"),
+      study_(study),
+      metric_columns_(metric_columns),
+      timing_columns_(timing_columns) {
+  if (replace_existing) {
+    // Only now, holding the lock: a refused run (another one writing, a bad case) has removed
+    // nothing.
+    std::error_code ec;
+    fs::remove(path);
+    fs::remove(path.string() + "-journal", ec);
   }
-  if (::flock(lock_fd_, LOCK_EX | LOCK_NB) != 0) {
-    ::close(lock_fd_);
-    throw InvalidInputError(fmt::format(
-        "{}: another run is writing this database now (it holds {}); wait for it to finish, or "
-        "give each run a database of its own (--shard i/N and study merge)",
-        path.string(), lock.string()));
-  }
-  try {
-    db_ = open_database(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
-  } catch (...) {
-    ::close(lock_fd_);
-    throw;
-  }
+  db_ = open_database(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
   try {
     // A rollback journal (the default) and full syncs: a transaction is all there or absent
     // after a crash, on every file system (WAL needs shared memory, which NFS may not give).
@@ -299,15 +284,11 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
     exec("COMMIT");
   } catch (...) {
     sqlite3_close(db_);
-    ::close(lock_fd_);
     throw;
   }
 }
 
-ResultStore::~ResultStore() {
-  sqlite3_close(db_);
-  ::close(lock_fd_);
-}
+ResultStore::~ResultStore() { sqlite3_close(db_); }
 
 void ResultStore::exec(const std::string& sql) const { exec_on(db_, sql); }
 
@@ -406,7 +387,22 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
                                           inputs.front().string(), first->name));
     }
   }
+  // A shard a run is still writing would be merged short of its last cases, without a word.
+  for (const fs::path& in : inputs) {
+    if (DatabaseLock::is_held(in)) {
+      throw InvalidInputError(fmt::format(
+          "{}: a run is writing this shard now (it holds {}.lock); merge it once the run is done",
+          in.string(), in.string()));
+    }
+  }
+  // Held from here to the rename: a run writing `out` now would lose its rows to the merge.
+  const DatabaseLock out_lock(out, "replacing");
   const fs::path partial = out.string() + ".partial";
+  std::error_code ec;
+  if (fs::is_directory(partial, ec)) {
+    throw InvalidInputError(fmt::format(
+        "{}: a folder where the merge writes its staging file; move it away", partial.string()));
+  }
   fs::remove(partial);
   {
     // The first shard's schema and rows, then every other shard's rows.

@@ -24,6 +24,7 @@
 #include <variant>
 #include <vector>
 
+#include "study/database_lock.hpp"
 #include "study/study_file.hpp"
 
 struct sqlite3;
@@ -57,11 +58,13 @@ class ResultStore {
  public:
   /// Opens `path`, creating the tables when the file is new. An existing database must be one of
   /// this study (same identity): InvalidInputError naming what differs otherwise. One store at a
-  /// time writes a database: it holds a lock on `path`.lock (kept beside it) while it is open,
-  /// and a second is refused (InvalidInputError) instead of repeating the first one's cases.
+  /// time writes a database: it holds a lock on `path`.lock (kept beside it, DatabaseLock) while
+  /// it is open, and a second is refused (InvalidInputError) instead of repeating the first one's
+  /// cases. `replace_existing`: remove a database already at `path` (--force on another study's
+  /// database, checked by the caller) once the lock is held, never before.
   ResultStore(const std::filesystem::path& path, const StudyFile& study,
               const std::vector<std::string>& metric_columns,
-              const std::vector<std::string>& timing_columns);
+              const std::vector<std::string>& timing_columns, bool replace_existing = false);
   ~ResultStore();
   ResultStore(const ResultStore&) = delete;
   ResultStore& operator=(const ResultStore&) = delete;
@@ -76,8 +79,8 @@ class ResultStore {
 
  private:
   void exec(const std::string& sql) const;
+  DatabaseLock lock_;  // first in, last out: held while the database is open
   sqlite3* db_ = nullptr;
-  int lock_fd_ = -1;
   StudyFile study_;
   std::vector<std::string> metric_columns_, timing_columns_;
 };

@@ -233,7 +233,8 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
                                         options.shard_index, options.shard_count));
   }
   check_cases(study);  // every value, before any work
-  ResultStore store(options.database, study, metric_columns(study), timing_columns(study.level));
+  ResultStore store(options.database, study, metric_columns(study), timing_columns(study.level),
+                    options.replace_database);
   const std::vector<StudyCase> cases = shard_cases(study, options.shard_index, options.shard_count);
   const std::set<std::string> finished = store.finished_cases();
   std::vector<StudyCase> todo;

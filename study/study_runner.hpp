@@ -33,6 +33,9 @@ struct StudyRunOptions {
   /// Cases at a time (radio level) or SLAM runs at a time (slam level). Results do not depend on
   /// it.
   int jobs = 1;
+  /// Replace the database at `database` (another study's: `study run --force`). It is removed
+  /// once every case checks and the database's lock is held, so a refused run removes nothing.
+  bool replace_database = false;
   std::function<void(const std::string&)> on_progress;
 };
 

@@ -41,8 +41,9 @@ struct RunArgs {
 void run_study_command(const RunArgs& args) {
   const study::StudyFile file = study::load_study_file(args.file);
   const auto [index, count] = study::parse_shard(args.shard);
-  study::prepare_run_database(args.output, file, args.force, {args.file, file.scene_path});
   study::StudyRunOptions options;
+  options.replace_database =
+      study::check_run_database(args.output, file, args.force, {args.file, file.scene_path});
   options.database = args.output;
   options.shard_index = index;
   options.shard_count = count;

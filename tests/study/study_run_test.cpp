@@ -243,10 +243,43 @@ TEST(StudyRun, OneWriterADatabaseAndMergeNamesWhatIsWrongWithAShard) {
     const auto r = test::run_wifislam(
         "study run " + file.string() + " -o " + (dir / "db.sqlite").string(), dir);
     EXPECT_EQ(r.exit_code, 2) << r.err;
+    // --force with another study: refused as well, and the database being written is still
+    // there (it was removed before the lock was looked at).
+    const fs::path other = write_study(dir, "other", "  access_points.count: [5]\n");
+    const auto forced = test::run_wifislam(
+        "study run " + other.string() + " -o " + (dir / "db.sqlite").string() + " --force", dir);
+    EXPECT_EQ(forced.exit_code, 2) << forced.err;
+    EXPECT_NE(forced.err.find("another run is writing"), std::string::npos) << forced.err;
+    EXPECT_EQ(ResultStore::read_identity(dir / "db.sqlite")->name, "locked");
+    // A merge into it, or of it, while it is written: refused, nothing replaced.
+    const auto into = test::run_wifislam(
+        "study merge " + (dir / "db.sqlite").string() + " -o " + (dir / "m.sqlite").string(), dir);
+    EXPECT_EQ(into.exit_code, 2) << into.err;
+    EXPECT_NE(into.err.find("a run is writing this shard now"), std::string::npos) << into.err;
+    EXPECT_FALSE(fs::exists(dir / "m.sqlite"));
   }
   StudyRunOptions o;
   o.database = dir / "db.sqlite";
   EXPECT_EQ(run_study(study, o).ran, 2u);  // free again once the first store is gone
+  {
+    // `study merge --force` onto a database a run is writing: refused, the run's file kept.
+    const fs::path busy_file = write_study(dir, "busy", "  access_points.count: [5]\n");
+    const StudyFile busy = load_study_file(busy_file);
+    ResultStore writing(dir / "busy.sqlite", busy, metric_columns(busy),
+                        timing_columns(busy.level));
+    const auto r = test::run_wifislam("study merge " + (dir / "db.sqlite").string() + " -o " +
+                                          (dir / "busy.sqlite").string() + " --force",
+                                      dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("another run is writing"), std::string::npos) << r.err;
+    EXPECT_EQ(ResultStore::read_identity(dir / "busy.sqlite")->name, "busy");
+  }
+  // --force with a case that does not check: refused before the database is touched.
+  const fs::path bad = write_study(dir, "bad", "  access_points.count: [-5, 10]\n");
+  const auto refused = test::run_wifislam(
+      "study run " + bad.string() + " -o " + (dir / "db.sqlite").string() + " --force", dir);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_EQ(rows_in(dir / "db.sqlite"), 2);
 
   // A damaged shard: named. A missing one: an I/O error.
   test::write_file(dir / "damaged.sqlite",

@@ -1,0 +1,27 @@
+#pragma once
+// One writer per study database: `<database>.lock`, kept beside it, held with flock while a run
+// (or a merge into it) writes. flock on the database file itself would be unsafe: closing any
+// descriptor of it drops SQLite's own fcntl locks.
+
+#include <filesystem>
+
+namespace wifislam::study {
+
+class DatabaseLock {
+ public:
+  /// Takes `<database>.lock` (created when missing). InvalidInputError when another process
+  /// holds it (naming `doing`, what this one was about to do); IoError when it cannot be made.
+  DatabaseLock(const std::filesystem::path& database, const char* doing);
+  ~DatabaseLock();
+  DatabaseLock(const DatabaseLock&) = delete;
+  DatabaseLock& operator=(const DatabaseLock&) = delete;
+
+  /// Whether some process holds `<database>.lock` now; false when there is none. Creates
+  /// nothing (a shard given to `study merge` is only read).
+  static bool is_held(const std::filesystem::path& database);
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace wifislam::study
