@@ -144,9 +144,18 @@ void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs
                             ": is a folder; give a file name to write");
   }
   for (const fs::path& input : inputs) {
-    if (!input.empty() && resolve_path(input) == out) {
+    if (input.empty()) continue;
+    const fs::path in = resolve_path(input);
+    if (in == out) {
       throw InvalidInputError("output file " + path.string() +
                               ": is an input of this command; refusing to overwrite it");
+    }
+    // A file inside an input folder (a dataset) would change that input: its manifest then
+    // no longer matches, or a file it holds is gone.
+    if (fs::is_directory(in, ec) && is_within(out, in)) {
+      throw InvalidInputError("output file " + path.string() +
+                              ": lies inside an input of this command (" + input.string() +
+                              "); write it elsewhere");
     }
   }
   check_file_replaceable(out);

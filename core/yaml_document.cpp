@@ -64,8 +64,9 @@ void check_unique_keys(const YAML::Node& root, const std::string& source) {
 YAML::Node parse_yaml_document(const std::string& text, const std::string& source_name) {
   if (text.size() > kMaxYamlDocumentBytes) {
     throw ParseError(source_name, "",
-                     fmt::format("{} bytes; a scene or calibration file is at most {} MiB (the "
-                                 "YAML reader needs about 100 times a file's size in memory)",
+                     fmt::format("{} bytes; a YAML file (scene, study, system, calibration) is at "
+                                 "most {} MiB (the YAML reader needs about 100 times a file's "
+                                 "size in memory)",
                                  text.size(), kMaxYamlDocumentBytes >> 20));
   }
   YAML::Node root;
@@ -83,7 +84,7 @@ YAML::Node parse_yaml_document(const std::string& text, const std::string& sourc
   return root;
 }
 
-YAML::Node load_yaml_file(const std::string& path) {
+std::string read_yaml_text(const std::string& path) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
     throw ParseError(path, "", "is a folder; expected a YAML file");
@@ -100,12 +101,16 @@ YAML::Node load_yaml_file(const std::string& path) {
     const auto bytes = std::filesystem::file_size(path, size_error);
     throw ParseError(
         path, "",
-        fmt::format("{}; a scene or calibration file is at most {} MiB (the YAML "
-                    "reader needs about 100 times a file's size in memory)",
+        fmt::format("{}; a YAML file (scene, study, system, calibration) is at most {} MiB (the "
+                    "YAML reader needs about 100 times a file's size in memory)",
                     size_error ? std::string("larger than that") : fmt::format("{} bytes", bytes),
                     kMaxYamlDocumentBytes >> 20));
   }
-  return parse_yaml_document(text, path);
+  return text;
+}
+
+YAML::Node load_yaml_file(const std::string& path) {
+  return parse_yaml_document(read_yaml_text(path), path);
 }
 
 std::string YamlReader::where(const YAML::Node& n) const {

@@ -21,6 +21,11 @@ inline constexpr std::size_t kMaxYamlDocumentBytes = std::size_t{4} << 20;
 /// key given twice in one mapping (naming the second occurrence and the line of the first).
 YAML::Node parse_yaml_document(const std::string& text, const std::string& source_name);
 
+/// A YAML file's text, as load_yaml_file reads it: never blocking on a FIFO, at most
+/// kMaxYamlDocumentBytes (ParseError beyond, and for a folder), IoError when it cannot be read.
+/// For a caller that needs the bytes too (a study file's hash is its identity).
+std::string read_yaml_text(const std::string& path);
+
 /// Reads and parses a YAML file. Throws IoError when it cannot be read, ParseError (exit 2 on the
 /// command line) when `path` is a folder or the text is not a valid document.
 YAML::Node load_yaml_file(const std::string& path);

@@ -2,9 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
@@ -99,11 +97,9 @@ std::string column_name(const std::string& axis_key) {
 }
 
 StudyFile load_study_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("{}: cannot open the study file", path.string()));
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  return load_study_yaml(buffer.str(), path);
+  // Bounded, and never blocking on a FIFO: a plain ifstream hung on one and read /dev/zero
+  // until memory ran out.
+  return load_study_yaml(read_yaml_text(path.string()), path);
 }
 
 namespace {
@@ -345,6 +341,10 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
   const std::string file = path.string();
   const YAML::Node root = parse_yaml_document(text, file);
   const Reader r(file);
+  if (root.IsNull()) {
+    // An empty file, or a FIFO no program writes (read as empty rather than waited on).
+    throw ParseError(file, "", "the study file is empty");
+  }
   if (!root.IsMap()) throw ParseError(file, "", "a study file is a mapping of keys (see studies/)");
   r.only_keys(root, kTopLevelKeys, "");
   StudyFile study;
@@ -361,6 +361,31 @@ StudyFile load_study_yaml(const std::string& text, const fs::path& path) {
 std::string axis_front_end(const StudyFile& study, AxisKind kind, const std::string& value) {
   return front_end_from(study.path.parent_path(),
                         kind == AxisKind::kSystem ? system_front_end(value) : value);
+}
+
+std::vector<fs::path> input_files(const StudyFile& study) {
+  std::vector<fs::path> out = {study.path, study.scene_path};
+  const auto add_vocabulary = [&](const std::string& setting) {
+    const std::string prefix = "vocabulary=";
+    if (setting.rfind(prefix, 0) == 0 && setting.size() > prefix.size())
+      out.emplace_back(setting.substr(prefix.size()));
+  };
+  for (const std::string& setting : study.slam.settings) add_vocabulary(setting);
+  for (const StudyAxis& axis : study.axes) {
+    for (const std::string& value : axis.values) {
+      if (axis.kind == AxisKind::kSlamOption) {
+        add_vocabulary(axis.key.substr(axis.key.find('.') + 1) + "=" + value);
+      } else if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
+        const std::string frontend = axis_front_end(study, axis.kind, value);
+        if (!interop::is_external_frontend(frontend)) continue;
+        const std::string x = frontend.substr(std::string(interop::kExternalPrefix).size());
+        // A shipped system's name is no file of the user's.
+        if (x.find('/') != std::string::npos || fs::path(x).extension() == ".yaml")
+          out.emplace_back(x);
+      }
+    }
+  }
+  return out;
 }
 
 std::vector<StudyCase> shard_cases(const StudyFile& study, int index, int count) {

@@ -89,6 +89,11 @@ StudyFile load_study_yaml(const std::string& text, const std::filesystem::path& 
 /// same file from any current directory. The value stays as written in ids and columns.
 std::string axis_front_end(const StudyFile& study, AxisKind kind, const std::string& value);
 
+/// Every file a study reads: the study file, its scene, the system files its `frontend` and
+/// `system` axes name, and vocabulary files of its SLAM settings and axes. An output must not
+/// replace or lie in any of them (core/output_folder.hpp).
+std::vector<std::filesystem::path> input_files(const StudyFile& study);
+
 /// Column-safe name of an axis key ("access_points.count" -> "access_points_count").
 std::string column_name(const std::string& axis_key);
 

@@ -173,6 +173,10 @@ void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {
   if (!args.other_floor.empty()) inputs.push_back(args.other_floor);
   if (!args.queries.empty()) inputs.push_back(args.queries);
   if (fs::exists(args.queries_device)) inputs.push_back(args.queries_device);
+  // The vocabulary and training files are inputs as much as the dataset: --force must not
+  // replace a folder that holds them.
+  if (!args.vocabulary.empty()) inputs.push_back(args.vocabulary);
+  if (!args.training.empty()) inputs.push_back(args.training);
   const bool replace = check_output_folder({args.output, args.force, {}, inputs});
   const study::LocalisationOptions options = localisation_options(args);
   const auto vocabulary = slam::bow::load_vocabulary(args.vocabulary);

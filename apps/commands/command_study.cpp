@@ -43,7 +43,7 @@ void run_study_command(const RunArgs& args) {
   const auto [index, count] = study::parse_shard(args.shard);
   study::StudyRunOptions options;
   options.replace_database =
-      study::check_run_database(args.output, file, args.force, {args.file, file.scene_path});
+      study::check_run_database(args.output, file, args.force, study::input_files(file));
   options.database = args.output;
   options.shard_index = index;
   options.shard_count = count;

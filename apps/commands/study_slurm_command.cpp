@@ -31,7 +31,7 @@ struct SlurmArgs {
 void slurm_command(const SlurmArgs& args) {
   const study::StudyFile file = study::load_study_file(args.file);
   study::check_cases(file);
-  const bool replace = check_output_folder({args.output, args.force, {}, {args.file}});
+  const bool replace = check_output_folder({args.output, args.force, {}, study::input_files(file)});
   study::SlurmJobRequest request;
   request.wifislam_binary = study::own_binary();
   request.study_file = fs::absolute(args.file).lexically_normal();

@@ -355,6 +355,13 @@ void prepare_paper_folder(const PaperRunOptions& options) {
   const bool exists = fs::exists(dir);
   if (exists && options.force) {
     check_output_folder({dir, true, {}, {}});
+    // --force starts a paper folder over; any other folder of ours (a dataset, a run) is not
+    // one to replace here, whatever its marker says.
+    if (fs::is_directory(dir) && !fs::is_empty(dir) && !fs::exists(dir / folder::kIdentity)) {
+      throw InvalidInputError(fmt::format(
+          "{}: not a paper folder (no {}); --force replaces only a folder `wifislam paper` made",
+          dir.string(), folder::kIdentity));
+    }
     fs::remove_all(dir);
   }
   if (!fs::exists(dir)) {

@@ -216,6 +216,46 @@ TEST_F(OutputFolders, NoCommandReplacesItsOwnInput) {
   EXPECT_EQ(test::read_file(scene_), test::kTinyLoopYaml);
 }
 
+// Inputs named by options or inside other files, and outputs of other commands: a vocabulary
+// and training file given to `localize`, a scene a study file names (`study slurm`), a dataset
+// given to `paper -o` (a paper folder only), and a file written into an input dataset (`vocab`).
+TEST_F(OutputFolders, ForceNeverReplacesWhatAnotherOptionOrFileReads) {
+  const fs::path ds = make_dataset();
+  // localize: the output folder (a dataset of ours, so --force could replace it) holds the
+  // vocabulary and training files given; they are checked as inputs before anything is read.
+  test::write_file(ds / "my.bin", "vocabulary");
+  test::write_file(ds / "my.fabmap", "training");
+  auto r =
+      wifislam("localize " + scene_.string() + " --vocabulary " + (ds / "my.bin").string() +
+               " --training " + (ds / "my.fabmap").string() + " -o " + ds.string() + " --force");
+  expect_refused(r, ds, "holds an input of this command");
+  EXPECT_EQ(test::read_file(ds / "my.bin"), "vocabulary");
+  fs::remove(ds / "my.bin");
+  fs::remove(ds / "my.fabmap");
+  // study slurm: the job folder (ours) holds the scene the study file names.
+  const fs::path job = work_ / "job";
+  test::write_file(job / "scene.yaml", test::kTinyLoopYaml);
+  test::write_file(job / ".wifislam-output", "");
+  const fs::path study = work_ / "s.yaml";
+  test::write_file(study,
+                   "version: 1\nname: s\nscene: job/scene.yaml\nlevel: radio\naxes:\n"
+                   "  seed: [1, 2]\n");
+  r = wifislam("study slurm " + study.string() + " --tasks 1 -o " + job.string() + " --force");
+  expect_refused(r, job, "holds an input of this command");
+  EXPECT_TRUE(fs::is_regular_file(job / "scene.yaml"));
+  // paper --force: a dataset is not a paper folder, marker or not.
+  r = wifislam("paper -o " + ds.string() + " --force --parts fabmap --twins c_hall");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("not a paper folder"), std::string::npos) << r.err;
+  EXPECT_EQ(wifislam("check " + ds.string()).exit_code, 0);
+  // vocab train: a file written into the dataset it reads would break the dataset's manifest.
+  r = wifislam("vocab train " + ds.string() + " --every 1 -o " + (ds / "groundtruth.txt").string() +
+               " --force");
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("lies inside an input of this command"), std::string::npos) << r.err;
+  EXPECT_EQ(wifislam("check " + ds.string()).exit_code, 0);
+}
+
 // The demo's own folder (./demo-output) is replaced on every run, so scripts/demo.sh runs twice
 // in a row; another existing folder needs --force. A very short route keeps the demo quick; its
 // pauses are long enough for a Wi-Fi scan (the tiny loop's 1 s are not), which the demo's Wi-Fi

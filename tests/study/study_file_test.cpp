@@ -2,8 +2,10 @@
 // the product of the axes (or a listed subset) with stable ids, and shards that partition them.
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -195,7 +197,51 @@ TEST(StudyFile, ASystemFilesRelativePathIsTheStudyFiles) {
   EXPECT_EQ(case_slam_options(s, s.cases[0]).frontend,
             "external:" + (dir / "sys" / "x.yaml").string());
   EXPECT_EQ(case_slam_options(s, s.cases[1]).frontend, "rgbdslam");
+  // Its inputs: the study file, its scene and the system file (not the built-in front end).
+  const std::vector<std::filesystem::path> inputs = input_files(s);
+  ASSERT_EQ(inputs.size(), 3u);
+  EXPECT_EQ(inputs[2], dir / "sys" / "x.yaml");
   std::filesystem::remove_all(dir);
+}
+
+// A study file is read as the scene loader reads YAML: a FIFO no program writes reads as empty
+// (it hung), /dev/zero stops at the size cap (it grew to gigabytes), a folder is named as one.
+TEST(StudyFile, AFifoAFolderAndAnEndlessFileAreRefusedByName) {
+  const std::filesystem::path dir = test::scratch_folder();
+  const std::filesystem::path fifo = dir / "s.yaml";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  try {
+    load_study_file(fifo);
+    ADD_FAILURE() << "read a FIFO";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("the study file is empty"), std::string::npos) << e.what();
+  }
+  try {
+    load_study_file("/dev/zero");
+    ADD_FAILURE() << "read /dev/zero";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("at most 4 MiB"), std::string::npos) << e.what();
+  }
+  std::filesystem::create_directories(dir / "d.yaml");
+  try {
+    load_study_file(dir / "d.yaml");
+    ADD_FAILURE() << "read a folder";
+  } catch (const ParseError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
+// Vocabulary files of the SLAM settings and of a slam.vocabulary axis are inputs too.
+TEST(StudyFile, VocabularyFilesAreInputs) {
+  const StudyFile s = load_study_yaml(
+      "version: 1\nname: v\nscene: " + kCHallScene +
+          "\nlevel: slam\nslam:\n  frontend: orbslam\n  settings: {vocabulary: /v/a.bin}\n"
+          "axes:\n  slam.vocabulary: [/v/b.bin]\n",
+      "s.yaml");
+  const std::vector<std::filesystem::path> inputs = input_files(s);
+  EXPECT_NE(std::find(inputs.begin(), inputs.end(), "/v/a.bin"), inputs.end());
+  EXPECT_NE(std::find(inputs.begin(), inputs.end(), "/v/b.bin"), inputs.end());
 }
 
 }  // namespace
