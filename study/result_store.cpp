@@ -139,7 +139,7 @@ SqlValue typed(const std::string& text) {
   return text;
 }
 
-std::optional<StudyIdentity> identity_from(sqlite3* db) {
+std::optional<StudyIdentity> identity_from(sqlite3* db, const fs::path& path) {
   {
     Statement exists(db, "SELECT count(*) FROM sqlite_master WHERE type='table' AND name='study'");
     exists.step();
@@ -154,8 +154,18 @@ std::optional<StudyIdentity> identity_from(sqlite3* db) {
     if (key == "software_version") id.software_version = value;
     if (key == "level") id.level = value;
     if (key == "axes") {
-      for (const auto& a : nlohmann::json::parse(value))
+      const nlohmann::json axes = nlohmann::json::parse(value, nullptr, false);
+      if (!axes.is_array()) {
+        throw InvalidInputError(path.string() +
+                                ": the study table's 'axes' is not a list of axis keys (damaged?)");
+      }
+      for (const auto& a : axes) {
+        if (!a.is_string()) {
+          throw InvalidInputError(
+              path.string() + ": the study table's 'axes' is not a list of axis keys (damaged?)");
+        }
         id.axis_keys.push_back(a.get<std::string>());
+      }
     }
   }
   return id;
@@ -231,7 +241,7 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
     // after a crash, on every file system (WAL needs shared memory, which NFS may not give).
     exec("PRAGMA synchronous=FULL");
     const StudyIdentity mine = identity_of(study);
-    if (const auto existing = identity_from(db_)) {
+    if (const auto existing = identity_from(db_, path)) {
       if (!(*existing == mine)) {
         throw InvalidInputError(fmt::format("{}: a study database of study '{}', not of {}: {}",
                                             path.string(), existing->name, study.path.string(),
@@ -292,6 +302,13 @@ ResultStore::~ResultStore() { sqlite3_close(db_); }
 
 void ResultStore::exec(const std::string& sql) const { exec_on(db_, sql); }
 
+std::map<std::string, std::string> ResultStore::finished_scene_hashes() const {
+  std::map<std::string, std::string> out;
+  Statement q(db_, "SELECT case_id, max(coalesce(scene_hash, '')) FROM results GROUP BY case_id");
+  while (q.step()) out[q.text(0)] = q.text(1);
+  return out;
+}
+
 std::set<std::string> ResultStore::finished_cases() const {
   std::set<std::string> ids;
   Statement q(db_, "SELECT DISTINCT case_id FROM results");
@@ -349,9 +366,12 @@ std::optional<StudyIdentity> ResultStore::read_identity(const fs::path& path) {
   sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);
   std::optional<StudyIdentity> id;
   try {
-    id = identity_from(db);
+    id = identity_from(db, path);
   } catch (const IoError&) {
     id.reset();  // not an SQLite database at all
+  } catch (...) {
+    sqlite3_close(db);
+    throw;
   }
   sqlite3_close(db);
   return id;

@@ -17,6 +17,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -71,6 +72,9 @@ class ResultStore {
 
   /// Case ids with rows already (a rerun skips them).
   std::set<std::string> finished_cases() const;
+  /// The scene hash each finished case's rows were written with (empty when none is recorded):
+  /// a rerun checks that its scene is still the one they were made on.
+  std::map<std::string, std::string> finished_scene_hashes() const;
   /// Writes every row of one case in one transaction.
   void write_case(const StudyCase& c, const std::vector<ResultRow>& rows);
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <map>
 #include <set>
 
 #include <fmt/format.h>
@@ -150,6 +152,24 @@ void read_scene_set(const Reader& r, const YAML::Node& set, StudyFile& study) {
   }
 }
 
+/// What an axis value means, for finding the same value written twice: a number as the YAML
+/// reader takes it (whole numbers exactly, others as doubles), anything else as its text.
+std::string axis_value_meaning(const std::string& value) {
+  const YAML::Node node(value);
+  std::int64_t whole = 0;
+  std::uint64_t big = 0;
+  double real = 0.0;
+  if (YAML::convert<std::int64_t>::decode(node, whole)) return fmt::format("n:{}", whole);
+  if (YAML::convert<std::uint64_t>::decode(node, big)) return fmt::format("n:{}", big);
+  if (YAML::convert<double>::decode(node, real) && std::isfinite(real)) {
+    if (real == std::floor(real) && std::abs(real) < 9.0e15) {
+      return fmt::format("n:{}", static_cast<std::int64_t>(real));
+    }
+    return fmt::format("r:{}", real);
+  }
+  return "t:" + value;
+}
+
 /// "external:X" with X a relative system file path made relative to `dir`; anything else as is.
 std::string front_end_from(const fs::path& dir, const std::string& frontend) {
   if (!interop::is_external_frontend(frontend)) return frontend;
@@ -174,9 +194,16 @@ StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Nod
   } else {
     r.fail(values, key_path, "expected a value or a non-empty list of values");
   }
-  std::set<std::string> seen;
+  // Values are compared as what they mean: 1, 01, +1 and 0x1 are one seed (the scene reader
+  // takes them alike), so listing two of them would run the same case twice.
+  std::map<std::string, std::string> seen;
   for (const std::string& v : axis.values) {
-    if (!seen.insert(v).second) r.fail(values, key_path, "value '" + v + "' is listed twice");
+    const auto [it, added] = seen.emplace(axis_value_meaning(v), v);
+    if (!added) {
+      r.fail(values, key_path,
+             it->second == v ? "value '" + v + "' is listed twice"
+                             : "values '" + it->second + "' and '" + v + "' are the same");
+    }
   }
   if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
     for (const std::string& v : axis.values) {
@@ -313,9 +340,11 @@ void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
   }
   if (s["max_frames"]) {
     std::int64_t frames = 0;
+    // As --max-frames: 0 frames would be a run on nothing, which `study run` refuses.
     if (!options::parse_int64(r.scalar(s["max_frames"], "slam.max_frames"), frames) ||
-        frames < -1) {
-      r.fail(s["max_frames"], "slam.max_frames", "expected a whole number >= -1 (-1: all)");
+        frames < -1 || frames == 0) {
+      r.fail(s["max_frames"], "slam.max_frames",
+             "expected -1 (every frame) or a whole number of 1 or more");
     }
     study.slam.max_frames = frames;
   }

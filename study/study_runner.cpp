@@ -1,6 +1,7 @@
 #include "study/study_runner.hpp"
 
 #include <chrono>
+#include <map>
 #include <mutex>
 #include <regex>
 
@@ -237,6 +238,19 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
                     options.replace_database);
   const std::vector<StudyCase> cases = shard_cases(study, options.shard_index, options.shard_count);
   const std::set<std::string> finished = store.finished_cases();
+  // A resumed case's rows must be of the scene it would run now: an edited scene file (between
+  // shards, or before a rerun) would mix two versions of it in one table without a word.
+  const std::map<std::string, std::string> hashes = store.finished_scene_hashes();
+  for (const StudyCase& c : cases) {
+    const auto it = hashes.find(c.id);
+    if (it == hashes.end() || it->second.empty()) continue;
+    if (it->second != sha256_hex(sim::scene::resolved_scene_yaml(case_scene(study, c)))) {
+      throw InvalidInputError(fmt::format(
+          "{}: case {} was run on another version of its scene: {} has changed since its rows "
+          "were written; write to a new database (-o)",
+          options.database.string(), c.id, study.scene_path.string()));
+    }
+  }
   std::vector<StudyCase> todo;
   for (const StudyCase& c : cases)
     if (!finished.count(c.id)) todo.push_back(c);

@@ -99,6 +99,20 @@ TEST(StudyFile, MalformedFilesAreLocatedErrors) {
   EXPECT_EQ(e.key_path(), "axes.seed");
   e = parse_error(study_yaml("  seed: [1, 1]\n"));
   EXPECT_NE(std::string(e.what()).find("listed twice"), std::string::npos);
+  // The same number however written (the scene reader takes them alike): one case twice.
+  for (const char* spelt : {"01", "+1", "0x1", "1.0"}) {
+    e = parse_error(study_yaml(std::string("  seed: [1, ") + spelt + "]\n"));
+    EXPECT_NE(
+        std::string(e.what()).find(std::string("values '1' and '") + spelt + "' are the same"),
+        std::string::npos)
+        << spelt << ": " << e.what();
+  }
+  EXPECT_EQ(load_study_yaml(study_yaml("  access_points.tx_power_dbm: [15, 15.5]\n"), "s.yaml")
+                .cases.size(),
+            2u);
+  // A run on no frames, refused as --max-frames 0 is.
+  e = parse_error(study_yaml("  seed: [1]\n", "slam: {max_frames: 0}\n"));
+  EXPECT_EQ(e.key_path(), "slam.max_frames");
   e = parse_error(study_yaml("  frontend: [rgbdslam, orbslam9]\n"));
   EXPECT_NE(std::string(e.what()).find("orbslam9"), std::string::npos);
   // A listed case that misses an axis or names a value the axis does not have.

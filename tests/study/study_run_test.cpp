@@ -300,6 +300,39 @@ TEST(StudyRun, OneWriterADatabaseAndMergeNamesWhatIsWrongWithAShard) {
   fs::remove_all(dir);
 }
 
+// A resumed run whose scene file was edited since its first rows: refused, not mixed (the rows
+// of two versions of the scene in one table, each with its own scene_hash).
+TEST(StudyRun, AResumeOnAnEditedSceneIsRefused) {
+  const fs::path dir = test::scratch_folder();
+  fs::copy_file(kScene, dir / "scene.yaml");
+  const fs::path file = dir / "edited.yaml";
+  test::write_file(file,
+                   "version: 1\nname: edited\nscene: scene.yaml\nlevel: radio\naxes:\n"
+                   "  seed: [1, 2]\n");
+  StudyRunOptions first;
+  first.database = dir / "db.sqlite";
+  first.shard_count = 2;  // the first case only
+  EXPECT_EQ(run_study(load_study_file(file), first).ran, 1u);
+  // The same file again, unchanged: resumes.
+  StudyRunOptions rest;
+  rest.database = first.database;
+  EXPECT_EQ(run_study(load_study_file(file), rest).ran, 1u);
+  // Edited: every case's scene differs from the rows' own.
+  std::string scene = test::read_file(dir / "scene.yaml");
+  const std::string count = "count: 38";
+  const std::size_t at = scene.find(count);
+  ASSERT_NE(at, std::string::npos);
+  scene.replace(at, count.size(), "count: 5");
+  test::write_file(dir / "scene.yaml", scene);
+  // (A new process, as a user's rerun is: this one keeps the scene it read.)
+  const auto r = test::run_wifislam(
+      "study run " + file.string() + " -o " + first.database.string() + " -q", dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("another version of its scene"), std::string::npos) << r.err;
+  EXPECT_EQ(rows_in(first.database), 2);
+  fs::remove_all(dir);
+}
+
 TEST(StudyRun, ScatteredAccessPointsTellPlacesApartBetterThanCoLinearOnes) {
   const fs::path dir = test::scratch_folder();
   const fs::path file = write_study(dir, "colinear",
