@@ -8,10 +8,13 @@
 //                       comparison with nan is false), and a nan then reaches the model;
 //   at_least(n)         counts (`--max-frames`, `--jobs`, `--seeds`): CLI::PositiveNumber's refusal
 //                       reads "Value 0 not in range 0.000000 to 1797693134862315708...".
+//   kSlurmTime,         `--time` and `--partition` of the Slurm jobs: written into #SBATCH lines,
+//   kSlurmPartition     so text sbatch would refuse (or a newline adding a line) is refused here.
 
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <regex>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -76,5 +79,33 @@ inline CLI::Validator at_least(std::int64_t lo) {
       : lo == 0 ? "NONNEGATIVE"
                 : "AT LEAST " + std::to_string(lo));
 }
+
+/// Slurm's time formats (sbatch --time): minutes, minutes:seconds, hours:minutes:seconds,
+/// days-hours, days-hours:minutes, days-hours:minutes:seconds, or UNLIMITED / INFINITE.
+inline const CLI::Validator kSlurmTime(
+    [](std::string& text) -> std::string {
+      static const std::regex format(
+          R"(\d+(:\d{1,2}){0,2}|\d+-\d{1,2}(:\d{1,2}){0,2}|UNLIMITED|INFINITE)");
+      if (!std::regex_match(text, format)) {
+        return "expected a Slurm time limit (minutes, [hours:]minutes:seconds or "
+               "days-hours[:minutes[:seconds]], e.g. 02:00:00), got '" +
+               text + "'";
+      }
+      return {};
+    },
+    "TIME");
+
+/// A Slurm partition name, or several separated by commas (letters, digits, '_', '-', '.').
+inline const CLI::Validator kSlurmPartition(
+    [](std::string& text) -> std::string {
+      static const std::regex format(R"([A-Za-z0-9_.-]+(,[A-Za-z0-9_.-]+)*)");
+      if (!std::regex_match(text, format)) {
+        return "expected a Slurm partition name (letters, digits, '_', '-', '.'; several "
+               "separated by commas), got '" +
+               text + "'";
+      }
+      return {};
+    },
+    "PARTITION");
 
 }  // namespace wifislam::cli

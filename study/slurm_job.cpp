@@ -1,5 +1,6 @@
 #include "study/slurm_job.hpp"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cctype>
@@ -26,7 +27,19 @@ std::string run_capturing(const std::string& command) {
   while (std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
   const int status = ::pclose(pipe);
   if (status != 0) {
-    throw EnvironmentError(fmt::format("`{}` failed (status {}): {}", command, status, out));
+    while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
+    // The shell's 127: no sbatch here, a missing facility (exit 4) as OpenGL's would be. Any
+    // other failure is sbatch's own refusal: an external program that failed (exit 5).
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+      throw EnvironmentError(
+          "sbatch: not found; --submit needs a Slurm submit host (the job scripts are written: "
+          "submit them with the line printed without --submit)");
+    }
+    throw ExternalSystemError(
+        fmt::format("`{}` failed ({}): {}", command,
+                    WIFEXITED(status) ? fmt::format("exit status {}", WEXITSTATUS(status))
+                                      : fmt::format("killed by signal {}", WTERMSIG(status)),
+                    out));
   }
   while (!out.empty() && (out.back() == '\n' || out.back() == ' ')) out.pop_back();
   return out;

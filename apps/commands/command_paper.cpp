@@ -28,6 +28,7 @@ struct PaperArgs {
   std::string output, parts = "rgbdslam,rtabmap,orbslam,fabmap",
                       twins = "c_hall,b_hall,j_hall,a_hall", shard, partition, time_limit;
   int seeds = 1, jobs = 0, slurm_tasks = 0, cpus = 2;
+  std::string slurm_options_given;  // a --slurm-only option given, for the refusal without it
   double fps = 3.0;
   bool force = false, report_only = false, no_report = false, quiet = false, submit = false;
 };
@@ -66,7 +67,7 @@ void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions
     fmt::print(
         "submit: cd {} && J=$(sbatch --parsable paper.sbatch) && sbatch "
         "--dependency=afterok:$J report.sbatch\n",
-        folder.string());
+        study::shell_quoted(folder.string()));
     return;
   }
   const study::SubmittedSlurmJob submitted = study::submit_slurm_job(folder, files);
@@ -121,6 +122,11 @@ void run(const PaperArgs& args) {
   }
   if (args.submit && args.slurm_tasks == 0) {
     throw ParseError("--submit", "", "submits the jobs --slurm N writes: give --slurm too");
+  }
+  if (!args.slurm_options_given.empty() && args.slurm_tasks == 0) {
+    // Ignored, the whole reproduction would start here instead of on the cluster.
+    throw ParseError(args.slurm_options_given, "",
+                     "applies to the jobs --slurm N writes: give --slurm too");
   }
   if (args.slurm_tasks > 0) {
     if (args.report_only || !args.shard.empty()) {
@@ -189,8 +195,10 @@ WIFISLAM_COMMAND(paper, 66) {
   app->add_option("--cpus-per-task", args->cpus, "With --slurm: CPUs per task (its --jobs)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));
-  app->add_option("--partition", args->partition, "With --slurm: the Slurm partition");
-  app->add_option("--time", args->time_limit, "With --slurm: time limit per task, e.g. 02:00:00");
+  app->add_option("--partition", args->partition, "With --slurm: the Slurm partition")
+      ->check(cli::kSlurmPartition);
+  app->add_option("--time", args->time_limit, "With --slurm: time limit per task, e.g. 02:00:00")
+      ->check(cli::kSlurmTime);
   app->add_flag("--submit", args->submit, "With --slurm: submit both jobs with sbatch");
   app->add_flag("--no-report", args->no_report, "Run, but leave the report to a later call");
   app->add_flag("--force", args->force, "Start over: replace DIR (a folder `paper` made)");
@@ -200,5 +208,10 @@ WIFISLAM_COMMAND(paper, 66) {
       "twins' scene files, one study file and SQLite database per part, twin and seed\n"
       "(`wifislam study slurm` takes any of them), and the report. Details:\n"
       "docs/paper/README.md.");
-  app->callback([args] { run(*args); });
+  app->callback([args, app] {
+    for (const char* option : {"--cpus-per-task", "--partition", "--time"}) {
+      if (app->count(option) > 0) args->slurm_options_given = option;
+    }
+    run(*args);
+  });
 }

@@ -48,7 +48,7 @@ void slurm_command(const SlurmArgs& args) {
     fmt::print(
         "submit: cd {} && J=$(sbatch --parsable study.sbatch) && sbatch "
         "--dependency=afterok:$J merge.sbatch\n",
-        folder.string());
+        study::shell_quoted(folder.string()));
     return;
   }
   const study::SubmittedSlurmJob job = study::submit_slurm_job(folder, files);
@@ -71,8 +71,10 @@ void add_study_slurm_command(CLI::App* app) {
   slurm->add_option("--cpus-per-task", args->cpus, "CPUs per task (the shard's --jobs)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1024));
-  slurm->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)");
-  slurm->add_option("--time", args->time_limit, "Time limit per task, e.g. 02:00:00");
+  slurm->add_option("--partition", args->partition, "Slurm partition (default: the cluster's)")
+      ->check(cli::kSlurmPartition);
+  slurm->add_option("--time", args->time_limit, "Time limit per task, e.g. 02:00:00")
+      ->check(cli::kSlurmTime);
   slurm
       ->add_option("-o,--output", args->output,
                    "Job folder: study.sbatch, merge.sbatch, shards/, logs/, and the merged\n"

@@ -103,7 +103,11 @@ TEST_F(PaperCli, BadOptionsAndForeignFoldersAreRefusedBeforeAnyWork) {
   for (const std::string& bad :
        {std::string("--parts bogus"), std::string("--parts rtabmap,"),
         std::string("--parts rtabmap,rtabmap"), std::string("--twins z_hall"),
-        std::string("--seeds 0"), std::string("--fps nan"), std::string("--shard 2/2")}) {
+        std::string("--seeds 0"), std::string("--fps nan"), std::string("--shard 2/2"),
+        // --slurm's own options: checked, and refused without it (they were ignored, and the
+        // whole reproduction started here).
+        std::string("--slurm 2 --time 'two hours'"), std::string("--slurm 2 --partition 'a b'"),
+        std::string("--partition gpu"), std::string("--time 02:00:00")}) {
     const auto r = wifislam("paper -o " + dir.string() + " " + bad);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir)) << bad;
