@@ -234,6 +234,14 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
                                         options.shard_index, options.shard_count));
   }
   check_cases(study);  // every value, before any work
+  const fs::path scratch = options.database.string() + ".work";
+  if (std::error_code ec; study.level == StudyLevel::kSlam && fs::exists(scratch, ec) &&
+                          !fs::is_directory(scratch, ec)) {
+    // The SLAM cases' scratch folder goes there: say so now, not as an internal error later.
+    throw InvalidInputError(fmt::format(
+        "{}: a file where this database's scratch folder for its cases goes; move it away",
+        scratch.string()));
+  }
   ResultStore store(options.database, study, metric_columns(study), timing_columns(study.level),
                     options.replace_database);
   const std::vector<StudyCase> cases = shard_cases(study, options.shard_index, options.shard_count);
@@ -265,7 +273,6 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
     progress(fmt::format("{} of {} cases already in {}; running the other {}", summary.skipped,
                          cases.size(), options.database.string(), todo.size()));
   }
-  const fs::path scratch = options.database.string() + ".work";
 
   std::mutex mutex;  // the store and the progress line
   std::size_t done = 0;
@@ -274,6 +281,12 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
   const int slam_jobs = study.level == StudyLevel::kSlam ? options.jobs : 1;
   parallel_for(clamp_thread_count(case_threads), todo.size(), [&](std::size_t i) {
     const auto case_start = Clock::now();
+    if (study.level == StudyLevel::kSlam) {
+      // A SLAM case takes minutes: say which one is under way, not only when it ends.
+      std::lock_guard lock(mutex);
+      progress(fmt::format("[{}/{}] case {} ({}): started", summary.skipped + done + 1,
+                           cases.size(), todo[i].id, case_label(study, todo[i])));
+    }
     const std::vector<ResultRow> rows = run_case(study, todo[i], scratch, slam_jobs);
     std::lock_guard lock(mutex);
     store.write_case(todo[i], rows);

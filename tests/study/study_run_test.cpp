@@ -179,6 +179,25 @@ TEST(StudyRun, CasesListsTheTableOnlyWhenEveryCaseChecks) {
   r = test::run_wifislam("study cases " + bad.string(), dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.out, "");
+  // A SLAM-level study's scratch folder for its cases goes beside the database: a file there is
+  // named before any work (it was an internal error once a case started), and nothing is made.
+  const fs::path slam_file = dir / "slam.yaml";
+  test::write_file(slam_file, "version: 1\nname: slam\nscene: " + kScene +
+                                  "\nlevel: slam\naxes:\n  seed: [1]\n");
+  test::write_file(dir / "w.sqlite.work", "notes");
+  r = test::run_wifislam("study run " + slam_file.string() + " -o " + (dir / "w.sqlite").string(),
+                         dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("w.sqlite.work: a file where"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "w.sqlite"));
+  // What goes into #SBATCH lines is checked: no line of sbatch's refusal, none added.
+  for (const char* option : {"--time 'two hours'", "--partition 'a\n#SBATCH --mem=1'"}) {
+    r = test::run_wifislam(
+        "study slurm " + good.string() + " --tasks 1 -o " + (dir / "job").string() + " " + option,
+        dir);
+    EXPECT_EQ(r.exit_code, 2) << option << ": " << r.err;
+    EXPECT_FALSE(fs::exists(dir / "job")) << option;
+  }
   fs::remove_all(dir);
 }
 
