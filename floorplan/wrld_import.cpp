@@ -128,8 +128,17 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
   const std::vector<LevelFile>& levels = building.levels;
   for (const LevelFile& l : levels) plan.levels.push_back(l.name);
   const auto this_level = std::find_if(levels.begin(), levels.end(), [&](const LevelFile& l) {
-    return std::filesystem::equivalent(l.file, plan_file);
+    std::error_code ec;  // a level file main.json names but the folder lacks is no match
+    return std::filesystem::equivalent(l.file, plan_file, ec);
   });
+  // A file beside main.json that is none of its levels (the building's outline file, say) is
+  // no level to import: it would give one empty hall.
+  if (!levels.empty() && this_level == levels.end() && !options.level) {
+    throw ParseError(plan.source, "",
+                     fmt::format("not one of the levels main.json beside it lists ({}); give a "
+                                 "level's file, or --level NAME",
+                                 fmt::join(plan.levels, ", ")));
+  }
   plan.level = this_level != levels.end() ? this_level->name : plan_file.stem().string();
   if (options.level && *options.level != plan.level) {
     const auto wanted = std::find_if(levels.begin(), levels.end(),

@@ -114,6 +114,16 @@ TEST_F(ImportCli, BrokenMainJsonIsLocatedNotAnInternalError) {
   expect_refused("import " + level, {"main.json", "is not a regular file"});
 }
 
+// The building's outline file lies beside main.json but is none of its levels: it imported as
+// one empty hall (no walls, one space).
+TEST_F(ImportCli, AFileBesideMainJsonThatIsNoLevelIsRefused) {
+  const fs::path outline =
+      test::kShippedPlans / "westport_house_wrld" / "westport-house-outline.geojson";
+  ASSERT_TRUE(fs::exists(outline));
+  expect_refused("import " + outline.string(),
+                 {"westport-house-outline.geojson", "not one of the levels main.json"});
+}
+
 // The building's point places the plan on Earth; a malformed one fell back to the plan's centre
 // without a word. Each is refused naming the key (the import fails before planning the route).
 TEST_F(ImportCli, AMalformedBuildingLocationIsRefusedNotReplaced) {
