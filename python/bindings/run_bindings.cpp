@@ -85,7 +85,11 @@ py::dict generate(const sim::scene::Scene& scene, const fs::path& output,
         fmt::format("threads: expected 0 (every core) or a number of threads, got {}", threads));
   }
   std::vector<fs::path> inputs;
-  if (!scene.source_path.empty()) inputs.push_back(scene.source_path);
+  // The file the scene was loaded from; Scene.from_yaml's and from_dict's source_name only
+  // labels messages ("<dict>", or any text), so it is an input only where it names a file.
+  std::error_code ec;
+  if (!scene.source_path.empty() && fs::is_regular_file(scene.source_path, ec))
+    inputs.push_back(scene.source_path);
   sim::generate::GenerateOptions options;
   options.seed = seed;
   options.fps = fps;

@@ -161,7 +161,9 @@ class WifiScan:
         return self.stamp_ns * 1e-9
 
 
-@dataclasses.dataclass(frozen=True)
+# eq=False: frames compare (and hash) as objects; a field-wise == of their arrays would raise
+# numpy's "truth value of an array is ambiguous".
+@dataclasses.dataclass(frozen=True, eq=False)
 class Frame:
     """One RGB-D frame in route order.
 
@@ -238,6 +240,9 @@ class _Frames:
 
     def __len__(self) -> int:
         return self._source.frame_count
+
+    def __repr__(self) -> str:
+        return f"<wifislam.{type(self).__name__}: {self.description}, {len(self)} frames>"
 
     def rewind(self) -> None:
         """Put the read position back at the first frame, ending any iteration under way (an
@@ -323,16 +328,25 @@ class Renderer:
 
     @checked
     def __init__(self, scene: Union[Scene, PathLike]):
-        self._renderer = _wifislam._Renderer(_scene(scene))
+        self._scene = _scene(scene)
+        self._renderer = _wifislam._Renderer(self._scene)
+
+    def __repr__(self) -> str:
+        return f"<wifislam.Renderer of {self._scene!r}>"
 
     @checked
     def render(self, pose: np.ndarray, noise: bool = True,
                frame_index: int = 0) -> Tuple[np.ndarray, np.ndarray]:
+        """(rgb, depth) seen from ``pose`` (4 x 4 camera-to-world, optical frame): H x W x 3
+        uint8 RGB, and H x W float32 metres with NaN where the sensor has no reading."""
         return self._renderer.render(np.asarray(pose, dtype=np.float64), noise, frame_index)
 
     @checked
     def camera_pose(self, x_m: float, y_m: float, yaw_deg: float,
                     height_m: Optional[float] = None) -> np.ndarray:
+        """The 4 x 4 camera-to-world pose of the robot's camera standing at (x_m, y_m) on the
+        floor plan, heading ``yaw_deg`` (0 = +x, counter-clockwise), at the camera's mounting
+        height and pitch (``height_m`` replaces the height)."""
         return self._renderer.planar_pose(x_m, y_m, yaw_deg, height_m)
 
 
@@ -492,3 +506,8 @@ def encode_depth_png(depth: np.ndarray) -> bytes:
     """The 16-bit TUM depth PNG bytes (5000 per metre, 0 = no reading) ``generate`` writes for
     this depth image (H x W float metres, NaN = no reading)."""
     return _wifislam._encode_depth_png(np.asarray(depth))
+
+
+def __dir__() -> List[str]:
+    """The public names only: the helpers the module imports (typing, numpy, os) are no API."""
+    return sorted(__all__)

@@ -111,3 +111,18 @@ def test_a_folder_that_is_not_a_dataset_is_an_error(tmp_path):
     (tmp_path / "empty").mkdir()
     with pytest.raises((OSError, ValueError)):
         wifislam.Dataset(tmp_path / "empty")
+
+
+def test_reprs_say_what_a_source_is_and_frames_compare_as_objects(small_dataset, c_hall):
+    dataset = wifislam.Dataset(small_dataset)
+    assert repr(dataset).startswith("<wifislam.Dataset: ") and "16 frames>" in repr(dataset)
+    simulator = wifislam.Simulator(c_hall, fps=1.0, max_frames=2, images=False)
+    assert repr(simulator).startswith("<wifislam.Simulator: ") and "2 frames>" in repr(simulator)
+    assert "c_hall" in repr(wifislam.Renderer(c_hall))
+    first, second = list(dataset)[:2]
+    # A field-wise == of arrays raised "truth value of an array is ambiguous".
+    assert first == first and first != second
+    assert len({first, second}) == 2
+    # The module's own helpers (typing, numpy, os) are not listed as its API.
+    assert "np" not in dir(wifislam) and "Optional" not in dir(wifislam)
+    assert "Dataset" in dir(wifislam) and "generate" in dir(wifislam)

@@ -1,5 +1,7 @@
 """Scene.load and Scene.from_dict: the loader's own checks and located errors."""
 
+import os
+
 import pytest
 
 import wifislam
@@ -61,3 +63,16 @@ def test_text_that_looks_like_a_number_stays_text_through_a_dict(c_hall):
         again = scene.to_dict()
         assert again["name"] == text and again["description"] == "." + text
         assert wifislam.Scene.from_dict(again).to_yaml() == scene.to_yaml()
+
+
+def test_a_source_name_labels_messages_and_is_no_input(tmp_path, c_hall):
+    # generate refused an output inside a folder named as the scene's source_name, as if that
+    # label were the scene file.
+    text = wifislam.Scene.load(c_hall).to_yaml()
+    scene = wifislam.Scene.from_yaml(text, str(tmp_path / "experiment"))
+    info = wifislam.generate(scene, tmp_path / "experiment" / "run1", fps=1, max_frames=2,
+                             images=False)
+    assert os.path.isdir(info["dataset"])
+    info = wifislam.generate(wifislam.Scene.from_dict(scene.to_dict()), tmp_path / "<dict>",
+                             fps=1, max_frames=2, images=False)
+    assert os.path.isdir(info["dataset"])
