@@ -510,6 +510,9 @@ namespace {
 
 /// The results table, with each row's timing columns after it when `with_timing`.
 ResultTable read_table(const fs::path& path, bool with_timing) {
+  if (std::error_code ec; !fs::exists(path, ec)) {
+    throw IoError(path.string() + ": no such study database");
+  }
   const auto identity = ResultStore::read_identity(path);
   if (!identity) throw InvalidInputError(path.string() + ": not a study database");
   ResultTable table;

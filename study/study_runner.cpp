@@ -4,12 +4,14 @@
 #include <map>
 #include <mutex>
 #include <regex>
+#include <set>
 
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/output_folder.hpp"
 #include "core/wall_clock.hpp"
 #include "core/worker_pool.hpp"
@@ -99,9 +101,17 @@ slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c) 
 }
 
 void check_cases(const StudyFile& study) {
+  std::set<std::string> vocabularies;
   for (const StudyCase& c : study.cases) {
     (void)case_scene(study, c);
-    (void)case_slam_options(study, c);
+    const slam::SlamOptions options = case_slam_options(study, c);
+    if (!options.orbslam.vocabulary.empty()) vocabularies.insert(options.orbslam.vocabulary);
+  }
+  // A vocabulary file that is not there failed the first ORB-SLAM case, after the database and
+  // its scratch folder were made (and `study cases` had said every case checks).
+  for (const std::string& v : vocabularies) {
+    require_input_file(
+        v, fmt::format("the vocabulary file of study '{}' (slam.vocabulary)", study.name));
   }
 }
 

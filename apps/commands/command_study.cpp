@@ -151,9 +151,9 @@ void add_plot_command(CLI::App* app) {
   auto args = std::make_shared<PlotArgs>();
   CLI::App* plot = app->add_subcommand(
       "plot", "Draw a study database's curves (PNG and SVG, one figure per metric)");
-  plot->add_option("database", args->database, "Study database (study run or merge)")
-      ->required()
-      ->check(CLI::ExistingFile);
+  // No CLI::ExistingFile: a missing database is an I/O error (exit 3) named by the reader, as
+  // every command's missing input is.
+  plot->add_option("database", args->database, "Study database (study run or merge)")->required();
   plot->add_option("-o,--output", args->output, "Folder for the figures and curves.csv")
       ->required();
   plot->add_flag("--force", args->force, "Replace an existing output folder of this tool");

@@ -179,6 +179,20 @@ TEST(StudyRun, CasesListsTheTableOnlyWhenEveryCaseChecks) {
   r = test::run_wifislam("study cases " + bad.string(), dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_EQ(r.out, "");
+  // A vocabulary that is not there: named by `study cases` (it failed the first case of a run),
+  // and a database that is not there by `study plot`: both missing inputs, exit 3.
+  const fs::path vocabulary_file = dir / "vocabulary.yaml";
+  test::write_file(vocabulary_file, "version: 1\nname: v\nscene: " + kScene +
+                                        "\nlevel: slam\nslam: {frontend: orbslam}\naxes:\n"
+                                        "  slam.vocabulary: [" +
+                                        (dir / "none.bin").string() + "]\n");
+  r = test::run_wifislam("study cases " + vocabulary_file.string(), dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("none.bin"), std::string::npos) << r.err;
+  r = test::run_wifislam(
+      "study plot " + (dir / "none.sqlite").string() + " -o " + (dir / "plots").string(), dir);
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("none.sqlite: no such study database"), std::string::npos) << r.err;
   // A SLAM-level study's scratch folder for its cases goes beside the database: a file there is
   // named before any work (it was an internal error once a case started), and nothing is made.
   const fs::path slam_file = dir / "slam.yaml";
