@@ -16,6 +16,7 @@
 
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
+#include "core/error.hpp"
 #include "python/bindings/bindings.hpp"
 #include "python/bindings/numpy_convert.hpp"
 #include "sim/generate/generation_pipeline.hpp"
@@ -43,6 +44,9 @@ class FrameSource {
   /// Ground truth of the frame just read, if known.
   virtual std::optional<Pose> ground_truth(const RgbdFrame& frame) const = 0;
   virtual void rewind() = 0;
+  /// Throws when what the source reads has changed since it was opened (a dataset folder
+  /// replaced or removed): a pass would mix the two.
+  virtual void check_unchanged() const {}
 
   /// Starts a pass over the stream from its first event and returns the pass's number; an
   /// earlier pass ends there (its next_frame raises). The stream has one read position, so
@@ -52,6 +56,7 @@ class FrameSource {
   std::uint64_t begin_pass() {
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(mutex_);
+    check_unchanged();
     if (read_since_rewind_) {
       rewind();
       read_since_rewind_ = false;
@@ -158,10 +163,27 @@ class SimulatorSource final : public FrameSource {
   sim::generate::GeneratorStream stream_;
 };
 
+/// What a dataset folder's list files are now (size and modification time of each, absent ones
+/// too): a folder replaced (`generate --force`) or removed since it was opened differs.
+std::vector<std::pair<std::int64_t, std::int64_t>> folder_state(const fs::path& folder) {
+  std::vector<std::pair<std::int64_t, std::int64_t>> out;
+  for (const char* name : {dataset::kManifest, dataset::kRgbList, dataset::kDepthList,
+                           dataset::kGroundTruth, dataset::kWifi}) {
+    std::error_code ec;
+    const auto size = fs::file_size(folder / name, ec);
+    const auto time = fs::last_write_time(folder / name, ec);
+    out.emplace_back(ec ? -1 : static_cast<std::int64_t>(size),
+                     ec ? -1 : static_cast<std::int64_t>(time.time_since_epoch().count()));
+  }
+  return out;
+}
+
 class DatasetSource final : public FrameSource {
  public:
   DatasetSource(const fs::path& folder, bool verify, bool load_images)
-      : reader_(folder, DatasetReaderOptions{verify, load_images, 4}) {
+      : folder_(folder),
+        state_(folder_state(folder)),
+        reader_(folder, DatasetReaderOptions{verify, load_images, 4}) {
     if (fs::is_regular_file(folder / dataset::kGroundTruth)) {
       ground_truth_ = read_ground_truth(folder, verify);
       for (const StampedPose& p : ground_truth_) by_stamp_.emplace(p.time.ns, p.pose());
@@ -169,6 +191,16 @@ class DatasetSource final : public FrameSource {
   }
   SensorStream& stream() override { return reader_; }
   void rewind() override { reader_.rewind(); }
+  void check_unchanged() const override {
+    // A pass reads the files again; the frame count, ground truth and checks are those of the
+    // folder as it was opened. One replaced or removed since would mix the two.
+    if (folder_state(folder_) != state_) {
+      throw InvalidInputError(
+          folder_.string() +
+          ": the dataset folder has changed since it was opened (replaced or removed); open it "
+          "again: wifislam.Dataset(path)");
+    }
+  }
   /// The ground-truth pose at the frame's stamp: our datasets have one per frame; a plain TUM
   /// dataset's motion-capture stamps are not the frames', and its frames get None.
   std::optional<Pose> ground_truth(const RgbdFrame& frame) const override {
@@ -180,6 +212,8 @@ class DatasetSource final : public FrameSource {
   const Trajectory& ground_truth_trajectory() const { return ground_truth_; }
 
  private:
+  fs::path folder_;
+  std::vector<std::pair<std::int64_t, std::int64_t>> state_;
   DatasetReader reader_;
   Trajectory ground_truth_;
   std::map<std::int64_t, Pose> by_stamp_;

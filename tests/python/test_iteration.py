@@ -90,3 +90,22 @@ def test_a_dataset_opened_by_a_relative_path_keeps_reading_it_after_a_chdir(
     monkeypatch.chdir(elsewhere)
     same_frames(first, list(dataset))
     assert dataset.path == str(small_dataset)
+
+
+def test_a_dataset_replaced_or_removed_since_it_was_opened_is_refused(tmp_path, small_dataset,
+                                                                        c_hall):
+    # A pass read the new folder's frames while len() and ground_truth were the old one's.
+    import shutil
+    folder = tmp_path / "ds"
+    shutil.copytree(small_dataset, folder)
+    dataset = wifislam.Dataset(folder)
+    assert len(list(dataset)) == len(dataset)
+    wifislam.generate(c_hall, folder, fps=1.0, max_frames=4, images=False, force=True)
+    with pytest.raises(wifislam.InvalidInputError, match="changed since it was opened"):
+        list(dataset)
+    shutil.rmtree(folder)
+    with pytest.raises(wifislam.InvalidInputError, match="changed since it was opened"):
+        list(dataset)
+    # Opened again: the folder as it is now.
+    wifislam.generate(c_hall, folder, fps=1.0, max_frames=4)
+    assert len(list(wifislam.Dataset(folder))) == 4
