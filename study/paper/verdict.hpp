@@ -19,7 +19,9 @@
 //   - a false positive % of vanilla alone: its direction is whether there are any (> floor);
 //   - savings and gains ("more than 50 %", "15 % to 25 %", "80 %"): positive is the paper's
 //     direction; the bound or range is the value;
-//   - counts (frames, keyframes, access points, clusters): the value alone.
+//   - counts (frames, keyframes, access points, clusters): the value alone;
+//   - a claim of every run ("none", "less than 20" over a part; PaperNumber::every_run): the
+//     worst seed, reproduced when it meets the claim (none: at most the floor), else departs.
 
 #include <string>
 #include <vector>

@@ -81,6 +81,23 @@ TEST(Verdict, ASavingsDirectionIsItsMeansEvenWhenASeedReachesTheRange) {
   EXPECT_EQ(j.verdict, Verdict::kDeparts) << j.why;
 }
 
+TEST(Verdict, AClaimOfEveryRunIsJudgedOnTheWorstSeed) {
+  // "no false positives": one seed with a wrong-place closure (25 %) misses it, though the
+  // other seed's 0 lies in the range and the mean is within the tolerance of nothing.
+  PaperNumber none = number(Quantity::kFalsePositivePct, Variant::kWifi, 0);
+  none.every_run = true;
+  EXPECT_EQ(judge_value(none, seeds({0, 25})).verdict, Verdict::kDeparts);
+  EXPECT_EQ(judge_value(none, seeds({0, 0, 0, 0, 9})).verdict, Verdict::kDeparts);
+  EXPECT_EQ(judge_value(none, seeds({0, 1.5})).verdict, Verdict::kReproduced);  // the 2-point floor
+  // "less than 20": a seed at 25 misses it, though the mean (17.5) is below.
+  PaperNumber below = number(Quantity::kFalseNegativePct, Variant::kVanilla, 20, Bound::kLessThan);
+  below.every_run = true;
+  const Judgement j = judge_value(below, seeds({10, 25}));
+  EXPECT_EQ(j.verdict, Verdict::kDeparts) << j.why;
+  EXPECT_NE(j.why.find("the worst seed 25"), std::string::npos) << j.why;
+  EXPECT_EQ(judge_value(below, seeds({10, 19})).verdict, Verdict::kReproduced);
+}
+
 TEST(Verdict, BoundsAndRanges) {
   const PaperNumber more = number(Quantity::kTimeSavingPct, Variant::kEither, 50, Bound::kMoreThan);
   EXPECT_EQ(judge_value(more, seeds({55, 60})).verdict, Verdict::kReproduced);
