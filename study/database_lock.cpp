@@ -22,7 +22,7 @@ std::filesystem::path lock_path(const std::filesystem::path& database) {
 
 }  // namespace
 
-DatabaseLock::DatabaseLock(const std::filesystem::path& database, const char* doing) {
+DatabaseLock::DatabaseLock(const std::filesystem::path& database, const char* doing, bool shared) {
   const std::filesystem::path lock = lock_path(database);
   std::error_code ec;
   if (std::filesystem::is_directory(lock, ec)) {
@@ -34,8 +34,13 @@ DatabaseLock::DatabaseLock(const std::filesystem::path& database, const char* do
     throw IoError(
         fmt::format("{}: cannot create the lock ({})", lock.string(), std::strerror(errno)));
   }
-  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+  if (::flock(fd_, (shared ? LOCK_SH : LOCK_EX) | LOCK_NB) != 0) {
     ::close(fd_);
+    if (shared) {
+      throw InvalidInputError(
+          fmt::format("{}: a run is writing it now (it holds {}); not {} it until that run is done",
+                      database.string(), lock.string(), doing));
+    }
     throw InvalidInputError(fmt::format(
         "{}: another run is writing this database now (it holds {}); not {} it. Wait for that "
         "run to finish, or give each run a database of its own (--shard i/N and study merge)",

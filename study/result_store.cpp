@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cstdlib>
+#include <memory>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -230,10 +231,17 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
       timing_columns_(timing_columns) {
   if (replace_existing) {
     // Only now, holding the lock: a refused run (another one writing, a bad case) has removed
-    // nothing.
-    std::error_code ec;
-    fs::remove(path);
-    fs::remove(path.string() + "-journal", ec);
+    // nothing. And only what was checked before the lock: another study's database. A run that
+    // replaced it meanwhile (the same --force twice) left this study's, which is resumed.
+    const auto now = read_identity(path);
+    if (now && !(*now == identity_of(study))) {
+      std::error_code ec;
+      fs::remove(path);
+      fs::remove(path.string() + "-journal", ec);
+    } else if (!now && fs::exists(path)) {
+      throw InvalidInputError(path.string() +
+                              ": is no longer a study database; refusing to replace it");
+    }
   }
   db_ = open_database(path, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE);
   try {
@@ -407,13 +415,11 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
                                           inputs.front().string(), first->name));
     }
   }
-  // A shard a run is still writing would be merged short of its last cases, without a word.
+  // A shard a run is still writing would be merged short of its last cases, without a word:
+  // each is held shared until the merge is done, so no run writes it meanwhile.
+  std::vector<std::unique_ptr<DatabaseLock>> shard_locks;
   for (const fs::path& in : inputs) {
-    if (DatabaseLock::is_held(in)) {
-      throw InvalidInputError(fmt::format(
-          "{}: a run is writing this shard now (it holds {}.lock); merge it once the run is done",
-          in.string(), in.string()));
-    }
+    shard_locks.push_back(std::make_unique<DatabaseLock>(in, "merging", true));
   }
   // Held from here to the rename: a run writing `out` now would lose its rows to the merge.
   const DatabaseLock out_lock(out, "replacing");
@@ -496,6 +502,9 @@ std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs
     throw;
   }
   sqlite3_close(db);
+  // A journal left by a run killed on the old file would be rolled back into the new one.
+  std::error_code journal_ec;
+  fs::remove(out.string() + "-journal", journal_ec);
   fs::rename(partial, out);
   return rows;
 }

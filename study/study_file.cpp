@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <map>
 #include <set>
@@ -152,20 +153,24 @@ void read_scene_set(const Reader& r, const YAML::Node& set, StudyFile& study) {
   }
 }
 
-/// What an axis value means, for finding the same value written twice: a number as the YAML
-/// reader takes it (whole numbers exactly, others as doubles), anything else as its text.
-std::string axis_value_meaning(const std::string& value) {
-  const YAML::Node node(value);
-  std::int64_t whole = 0;
-  std::uint64_t big = 0;
-  double real = 0.0;
-  if (YAML::convert<std::int64_t>::decode(node, whole)) return fmt::format("n:{}", whole);
-  if (YAML::convert<std::uint64_t>::decode(node, big)) return fmt::format("n:{}", big);
-  if (YAML::convert<double>::decode(node, real) && std::isfinite(real)) {
-    if (real == std::floor(real) && std::abs(real) < 9.0e15) {
-      return fmt::format("n:{}", static_cast<std::int64_t>(real));
-    }
-    return fmt::format("r:{}", real);
+/// What an axis value means, for finding the same value written twice, as its reader takes it:
+/// the scene's seed is decoded by YAML (1, 0x1 and 0o1 are one seed; a leading 0 is octal
+/// there), every other number decimally (the scene's numbers and the SLAM options: 010 is ten,
+/// +1 and 1.0 are one); anything else is its text.
+std::string axis_value_meaning(const std::string& key, const std::string& value) {
+  if (key == "seed") {
+    std::uint64_t seed = 0;
+    if (YAML::convert<std::uint64_t>::decode(YAML::Node(value), seed))
+      return fmt::format("n:{}", seed);
+    return "t:" + value;
+  }
+  const std::string_view digits =
+      !value.empty() && value[0] == '+' ? std::string_view(value).substr(1) : value;
+  double number = 0.0;
+  const char* end = digits.data() + digits.size();
+  const auto [ptr, ec] = std::from_chars(digits.data(), end, number);
+  if (!digits.empty() && ec == std::errc() && ptr == end && std::isfinite(number)) {
+    return fmt::format("r:{}", number);  // shortest text that reads back as the same double
   }
   return "t:" + value;
 }
@@ -198,7 +203,7 @@ StudyAxis read_axis(const Reader& r, const YAML::Node& key_node, const YAML::Nod
   // takes them alike), so listing two of them would run the same case twice.
   std::map<std::string, std::string> seen;
   for (const std::string& v : axis.values) {
-    const auto [it, added] = seen.emplace(axis_value_meaning(v), v);
+    const auto [it, added] = seen.emplace(axis_value_meaning(axis.key, v), v);
     if (!added) {
       r.fail(values, key_path,
              it->second == v ? "value '" + v + "' is listed twice"
@@ -400,17 +405,19 @@ std::vector<fs::path> input_files(const StudyFile& study) {
       out.emplace_back(setting.substr(prefix.size()));
   };
   for (const std::string& setting : study.slam.settings) add_vocabulary(setting);
+  const auto add_system_file = [&](const std::string& frontend) {
+    if (!interop::is_external_frontend(frontend)) return;
+    const std::string x = frontend.substr(std::string(interop::kExternalPrefix).size());
+    // A shipped system's name is no file of the user's.
+    if (x.find('/') != std::string::npos || fs::path(x).extension() == ".yaml") out.emplace_back(x);
+  };
+  add_system_file(front_end_from(study.path.parent_path(), study.slam.frontend));
   for (const StudyAxis& axis : study.axes) {
     for (const std::string& value : axis.values) {
       if (axis.kind == AxisKind::kSlamOption) {
         add_vocabulary(axis.key.substr(axis.key.find('.') + 1) + "=" + value);
       } else if (axis.kind == AxisKind::kFrontend || axis.kind == AxisKind::kSystem) {
-        const std::string frontend = axis_front_end(study, axis.kind, value);
-        if (!interop::is_external_frontend(frontend)) continue;
-        const std::string x = frontend.substr(std::string(interop::kExternalPrefix).size());
-        // A shipped system's name is no file of the user's.
-        if (x.find('/') != std::string::npos || fs::path(x).extension() == ".yaml")
-          out.emplace_back(x);
+        add_system_file(axis_front_end(study, axis.kind, value));
       }
     }
   }

@@ -362,6 +362,18 @@ void prepare_paper_folder(const PaperRunOptions& options) {
           "{}: not a paper folder (no {}); --force replaces only a folder `wifislam paper` made",
           dir.string(), folder::kIdentity));
     }
+    // Nor one a `paper` run is working in: its studies hold their databases' locks.
+    if (fs::is_directory(dir / folder::kResults)) {
+      for (const fs::directory_entry& entry : fs::directory_iterator(dir / folder::kResults)) {
+        const fs::path& db = entry.path();
+        if (db.extension() == ".sqlite" && DatabaseLock::is_held(db)) {
+          throw InvalidInputError(fmt::format(
+              "{}: a `paper` run is working in it now ({} is being written); --force replaces "
+              "it once that run is done",
+              dir.string(), db.string()));
+        }
+      }
+    }
     fs::remove_all(dir);
   }
   if (!fs::exists(dir)) {

@@ -99,14 +99,24 @@ TEST(StudyFile, MalformedFilesAreLocatedErrors) {
   EXPECT_EQ(e.key_path(), "axes.seed");
   e = parse_error(study_yaml("  seed: [1, 1]\n"));
   EXPECT_NE(std::string(e.what()).find("listed twice"), std::string::npos);
-  // The same number however written (the scene reader takes them alike): one case twice.
-  for (const char* spelt : {"01", "+1", "0x1", "1.0"}) {
+  // The same value however written, as its reader takes it: one case twice. The seed is read
+  // by YAML (0x1 and 01 are 1); other numbers decimally (010 is ten, +10 and 10.0 are ten).
+  for (const char* spelt : {"01", "0x1"}) {
     e = parse_error(study_yaml(std::string("  seed: [1, ") + spelt + "]\n"));
     EXPECT_NE(
         std::string(e.what()).find(std::string("values '1' and '") + spelt + "' are the same"),
         std::string::npos)
         << spelt << ": " << e.what();
   }
+  for (const char* spelt : {"010", "+10", "10.0"}) {
+    e = parse_error(study_yaml(std::string("  slam.min_matches: [10, ") + spelt + "]\n"));
+    EXPECT_NE(
+        std::string(e.what()).find(std::string("values '10' and '") + spelt + "' are the same"),
+        std::string::npos)
+        << spelt << ": " << e.what();
+  }
+  EXPECT_EQ(load_study_yaml(study_yaml("  slam.min_matches: [8, 010]\n"), "s.yaml").cases.size(),
+            2u);
   EXPECT_EQ(load_study_yaml(study_yaml("  access_points.tx_power_dbm: [15, 15.5]\n"), "s.yaml")
                 .cases.size(),
             2u);

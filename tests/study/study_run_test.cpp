@@ -288,7 +288,7 @@ TEST(StudyRun, OneWriterADatabaseAndMergeNamesWhatIsWrongWithAShard) {
     const auto into = test::run_wifislam(
         "study merge " + (dir / "db.sqlite").string() + " -o " + (dir / "m.sqlite").string(), dir);
     EXPECT_EQ(into.exit_code, 2) << into.err;
-    EXPECT_NE(into.err.find("a run is writing this shard now"), std::string::npos) << into.err;
+    EXPECT_NE(into.err.find("a run is writing it now"), std::string::npos) << into.err;
     EXPECT_FALSE(fs::exists(dir / "m.sqlite"));
   }
   StudyRunOptions o;
