@@ -81,11 +81,13 @@ inline CLI::Validator at_least(std::int64_t lo) {
 }
 
 /// Slurm's time formats (sbatch --time): minutes, minutes:seconds, hours:minutes:seconds,
-/// days-hours, days-hours:minutes, days-hours:minutes:seconds, or UNLIMITED / INFINITE.
+/// days-hours, days-hours:minutes, days-hours:minutes:seconds, or -1, UNLIMITED, INFINITE (any
+/// case).
 inline const CLI::Validator kSlurmTime(
     [](std::string& text) -> std::string {
       static const std::regex format(
-          R"(\d+(:\d{1,2}){0,2}|\d+-\d{1,2}(:\d{1,2}){0,2}|UNLIMITED|INFINITE)");
+          R"(\d+(:\d{1,2}){0,2}|\d+-\d{1,2}(:\d{1,2}){0,2}|-1|unlimited|infinite)",
+          std::regex::icase);
       if (!std::regex_match(text, format)) {
         return "expected a Slurm time limit (minutes, [hours:]minutes:seconds or "
                "days-hours[:minutes[:seconds]], e.g. 02:00:00), got '" +

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "core/dataset_format.hpp"
 #include "core/error.hpp"
 
 namespace wifislam {
@@ -150,12 +151,15 @@ void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs
       throw InvalidInputError("output file " + path.string() +
                               ": is an input of this command; refusing to overwrite it");
     }
-    // A file inside an input folder (a dataset) would change that input: its manifest then
-    // no longer matches, or a file it holds is gone.
-    if (fs::is_directory(in, ec) && is_within(out, in)) {
+    // A file inside an input dataset would change that dataset: its manifest then no longer
+    // matches, or a file it lists is gone. (Other input folders, an IMDF venue say, may take a
+    // file beside what is read.)
+    const bool dataset =
+        fs::exists(in / dataset::kManifest, ec) || fs::exists(in / dataset::kRgbList, ec);
+    if (fs::is_directory(in, ec) && dataset && is_within(out, in)) {
       throw InvalidInputError("output file " + path.string() +
                               ": lies inside an input of this command (" + input.string() +
-                              "); write it elsewhere");
+                              ", a dataset); write it elsewhere");
     }
   }
   check_file_replaceable(out);

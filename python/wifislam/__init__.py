@@ -111,7 +111,7 @@ Scene.from_dict = staticmethod(_scene_from_dict)
 
 def channel_of(frequency_khz: int) -> int:
     """The IEEE 802.11 channel number of a centre frequency in kHz (2.4 GHz: 2412 MHz is
-    channel 1, 2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel, 5005 to 5900 MHz;
+    channel 1, 2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel, 5005 to 5930 MHz;
     6 GHz: 5950 MHz + 5 MHz per channel, 5955 to 7115 MHz, and 5935 MHz channel 2). A channel
     number alone does not say its band: keep the frequency beside it. ValueError for a frequency
     that is no channel's centre in these bands."""
@@ -121,9 +121,9 @@ def channel_of(frequency_khz: int) -> int:
         return 14
     if rest == 0 and 2412 <= mhz <= 2472 and (mhz - 2407) % 5 == 0:
         return (mhz - 2407) // 5
-    # 5 GHz numbering ends below 5935 MHz, where 6 GHz (802.11ax) starts: 5 GHz channels above
-    # 180 are no 5 GHz Wi-Fi channel in use, and their frequencies are 6 GHz channels 1 to 5.
-    if rest == 0 and 5005 <= mhz <= 5900 and mhz % 5 == 0:
+    # 5 GHz numbering ends below 5935 MHz, where 6 GHz (802.11ax) starts: 5 GHz channels from
+    # 187 up are no Wi-Fi channel in use, and their frequencies are 6 GHz channels 1 to 6.
+    if rest == 0 and 5005 <= mhz <= 5930 and mhz % 5 == 0:
         return (mhz - 5000) // 5
     if rest == 0 and mhz == 5935:
         return 2
@@ -509,5 +509,6 @@ def encode_depth_png(depth: np.ndarray) -> bytes:
 
 
 def __dir__() -> List[str]:
-    """The public names only: the helpers the module imports (typing, numpy, os) are no API."""
-    return sorted(__all__)
+    """The public names and the module's own dunders: the helpers it imports (typing, numpy,
+    os) are no API."""
+    return sorted(set(__all__) | {name for name in globals() if name.startswith("__")})

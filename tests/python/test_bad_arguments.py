@@ -87,11 +87,12 @@ def test_channel_of_knows_the_bands_and_refuses_the_rest():
     assert wifislam.channel_of(5180000) == 36
     assert wifislam.channel_of(np.int64(5825000)) == 165
     # 6 GHz (802.11ax): 5950 MHz + 5 MHz per channel, and 5935 MHz channel 2.
+    assert wifislam.channel_of(5930000) == 186  # the last 5 GHz number
     assert wifislam.channel_of(5955000) == 1
     assert wifislam.channel_of(5935000) == 2
     assert wifislam.channel_of(6115000) == 33
     assert wifislam.channel_of(7115000) == 233
-    for bad in (0, -5, 2401000, 2413000, 2412500, 5920000, 7120000, 60480000):
+    for bad in (0, -5, 2401000, 2413000, 2412500, 5932000, 7120000, 60480000):
         with pytest.raises(ValueError, match="channel"):
             wifislam.channel_of(bad)
     with pytest.raises(TypeError):
