@@ -32,7 +32,16 @@ struct PlaceArgs {
 void place_command(const PlaceArgs& args) {
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene);
   slam::SlamOptions slam_options;
-  for (const std::string& s : args.settings) slam::set_option_assignment(slam_options, s);
+  for (const std::string& s : args.settings) {
+    // Placement scores pause signatures with the Wi-Fi module alone: no front end runs, and
+    // set_option_assignment's refusal would name a --frontend flag this command lacks.
+    if (s.rfind("frontend=", 0) == 0) {
+      throw ParseError("--set", s,
+                       "study place runs no front end (it scores the Wi-Fi module's pause "
+                       "signatures); set the Wi-Fi module's options, e.g. wifi_similarity");
+    }
+    slam::set_option_assignment(slam_options, s);
+  }
   slam::validate(slam_options);
   const bool replace = check_output_folder({args.output, args.force, {}, {args.scene}});
   study::PlacementOptions options;

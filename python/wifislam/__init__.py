@@ -504,7 +504,8 @@ def encode_rgb_png(rgb: np.ndarray) -> bytes:
 
 def encode_depth_png(depth: np.ndarray) -> bytes:
     """The 16-bit TUM depth PNG bytes (5000 per metre, 0 = no reading) ``generate`` writes for
-    this depth image (H x W float metres, NaN = no reading)."""
+    this depth image (H x W float metres, NaN = no reading). 16 bits at 5000 per metre end at
+    13.107 m: a farther depth is stored as 0, no reading, as the dataset writer stores it."""
     return _wifislam._encode_depth_png(np.asarray(depth))
 
 

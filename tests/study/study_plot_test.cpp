@@ -219,6 +219,15 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
   EXPECT_EQ(no_pauses.exit_code, 2) << no_pauses.err;
   EXPECT_NE(no_pauses.err.find("route.pause"), std::string::npos) << no_pauses.err;
   EXPECT_FALSE(fs::exists(dir / "none"));
+  // No front end runs here: a --set frontend= is refused without naming a flag place lacks.
+  const auto frontend = test::run_wifislam(
+      "study place " + kScenes + "/c_hall.yaml --budget 1 --set frontend=orbslam -q -o " +
+          (dir / "none").string(),
+      dir);
+  EXPECT_EQ(frontend.exit_code, 2) << frontend.err;
+  EXPECT_NE(frontend.err.find("runs no front end"), std::string::npos) << frontend.err;
+  EXPECT_EQ(frontend.err.find("--frontend"), std::string::npos) << frontend.err;
+  EXPECT_FALSE(fs::exists(dir / "none"));
   fs::remove_all(dir);
 }
 
