@@ -8,6 +8,7 @@
 #include <set>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <yaml-cpp/yaml.h>
 
 #include "core/atomic_file.hpp"
@@ -30,6 +31,25 @@ namespace fs = std::filesystem;
 const std::vector<std::string> kTopLevelKeys = {"version", "name", "description", "scene", "level",
                                                 "set",     "axes", "cases",       "slam"};
 const std::vector<std::string> kSlamKeys = {"frontend", "fps", "max_frames", "settings"};
+
+// The SLAM options a radio-level case reads: the Wi-Fi module's signature and pause settings
+// (run_case in study_runner.cpp hands radio_resolution.hpp `SlamOptions::wifi` and nothing
+// else). Any other option would leave every number of a radio case as it is.
+const std::vector<std::string> kRadioLevelOptions = {"wifi_similarity", "wifi_floor_dbm",
+                                                     "wifi_pause_gap_s", "wifi_pause_motion_m"};
+
+bool radio_level_reads(const std::string& option) {
+  return std::find(kRadioLevelOptions.begin(), kRadioLevelOptions.end(), option) !=
+         kRadioLevelOptions.end();
+}
+
+/// `effect`: what the key would do at level radio ("would change no result").
+std::string radio_level_refusal(const std::string& key, const std::string& effect) {
+  return fmt::format(
+      "level radio renders nothing and runs no front end: '{}' {}; a radio case reads only the "
+      "SLAM options {} (use level: slam)",
+      key, effect, fmt::join(kRadioLevelOptions, ", "));
+}
 
 // Ids number cases in five digits, so they sort in study order only below 100 000; and the
 // product is held in memory, which a few dozen two-valued axes (2^40 cases) would exhaust.
@@ -244,6 +264,14 @@ void read_axes(const Reader& r, const YAML::Node& axes, StudyFile& study) {
            "level radio runs no front end: a 'frontend' or 'system' axis would only repeat "
            "identical cases (use level: slam)");
   }
+  if (study.level == StudyLevel::kRadio) {
+    for (const StudyAxis& a : study.axes) {
+      if (a.kind == AxisKind::kSlamOption && !radio_level_reads(a.key.substr(5))) {
+        throw ParseError(a.where, "axes." + a.key,
+                         radio_level_refusal(a.key, "would only repeat identical cases"));
+      }
+    }
+  }
   // Distinct column names: "a.b" and "a_b" would share one.
   std::set<std::string> columns;
   for (const StudyAxis& a : study.axes) {
@@ -329,6 +357,13 @@ void make_cases(const Reader& r, const YAML::Node& listed, StudyFile& study) {
 void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
   if (!s.IsMap()) r.fail(s, "slam", "expected a mapping (frontend, fps, max_frames, settings)");
   r.only_keys(s, kSlamKeys, "slam.");
+  if (study.level == StudyLevel::kRadio) {
+    for (const char* key : {"frontend", "fps", "max_frames"}) {
+      if (s[key])
+        r.fail(s[key], std::string("slam.") + key,
+               radio_level_refusal(std::string("slam.") + key, "would change no result"));
+    }
+  }
   if (s["frontend"]) {
     study.slam.frontend = r.scalar(s["frontend"], "slam.frontend");
     if (const std::optional<std::string> problem = front_end_problem(study.slam.frontend)) {
@@ -363,6 +398,10 @@ void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
         slam::set_option(probe, key, value);
       } catch (const Error& e) {
         r.fail(kv.first, "slam.settings." + key, e.what());
+      }
+      if (study.level == StudyLevel::kRadio && !radio_level_reads(key)) {
+        r.fail(kv.first, "slam.settings." + key,
+               radio_level_refusal(key, "would change no result"));
       }
       study.slam.settings.push_back(key + "=" + value);
     }

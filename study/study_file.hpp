@@ -20,8 +20,10 @@
 // Axis keys: a scene key path as scene files spell it ("radio.shadowing_sigma_db",
 // "corridors[*].material" for every corridor; sim/scene/scene_keys.hpp), a SLAM option as
 // "slam.<option>" ("slam.min_matches", "slam.wifi_similarity"; the keys of `wifislam slam --set`),
-// or "frontend". An unknown key is a located error with "did you mean". A value is any YAML
-// scalar; scene values are checked when each case's scene is loaded (before any work runs).
+// or "frontend". An unknown key is a located error with "did you mean". Level radio reads only the
+// Wi-Fi module's options (wifi_similarity, wifi_floor_dbm, wifi_pause_gap_s, wifi_pause_motion_m):
+// any other SLAM option, and slam.frontend, fps or max_frames, is refused there. A value is any
+// YAML scalar; scene values are checked when each case's scene is loaded (before any work runs).
 
 #include <cstdint>
 #include <filesystem>
