@@ -81,7 +81,7 @@ class BagExport {
         {t.ns, "base_link", kCameraFrame, rigid(calibration_.camera_in_base)}};
     if (calibration_.imu)
       fixed.push_back({t.ns, "base_link", kImuFrame, rigid(calibration_.imu->imu_in_base)});
-    writer_.transforms("/tf_static", t.ns, fixed);
+    writer_.transforms("/tf_static", t.ns, fixed, bag::Latched::kYes);
     ++messages_;
     static_written_ = true;
   }
@@ -125,9 +125,32 @@ class BagExport {
 
   void write_odometry(const OdometryReading& reading) {
     const bag::RigidTransform pose = rigid(reading.base_in_odom);
-    writer_.odometry("/odom", reading.time.ns, "odom", "base_link", pose);
+    writer_.odometry("/odom", reading.time.ns, "odom", "base_link", pose,
+                     twist_since(previous_odometry_, reading));
+    previous_odometry_ = reading;
     writer_.transforms("/tf", reading.time.ns, {{reading.time.ns, "odom", "base_link", pose}});
     messages_ += 2;
+  }
+
+  /// The base's velocity in its own frame over the interval since the previous reading (as a
+  /// wheel-odometry driver derives its twist from the encoder ticks of that interval); zero for
+  /// the first reading, which has none before it.
+  static bag::Twist twist_since(const std::optional<OdometryReading>& previous,
+                                const OdometryReading& reading) {
+    bag::Twist twist;
+    if (!previous || reading.time.ns <= previous->time.ns) return twist;
+    const double dt_s = static_cast<double>(reading.time.ns - previous->time.ns) * 1e-9;
+    const Pose& from = previous->base_in_odom;
+    const Pose& to = reading.base_in_odom;
+    const Eigen::Vector3d v =
+        to.linear().transpose() * (to.translation() - from.translation()) / dt_s;
+    // The relative rotation's axis is the same in both frames, so this is the angular velocity
+    // in the base frame.
+    const Eigen::AngleAxisd turn(from.linear().transpose() * to.linear());
+    const Eigen::Vector3d w = turn.axis() * turn.angle() / dt_s;
+    twist.linear_mps = {v.x(), v.y(), v.z()};
+    twist.angular_radps = {w.x(), w.y(), w.z()};
+    return twist;
   }
 
   void write_imu(const ImuReading& r) {
@@ -152,6 +175,7 @@ class BagExport {
   std::vector<ImuReading> imu_;
   bag::PinholeCamera camera_;
   bool static_written_ = false;
+  std::optional<OdometryReading> previous_odometry_;
   std::int64_t messages_ = 0;
 };
 

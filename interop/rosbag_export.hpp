@@ -12,11 +12,18 @@
 //                                  TUM's motion capture names it) and odom -> base_link at every
 //                                  odometry reading
 //   /tf_static                     base_link -> openni_rgb_optical_frame (the camera mount) and
-//                                  base_link -> imu_link
+//                                  base_link -> imu_link; latched, as tf2 publishes it
 //   /imu                           sensor_msgs/Imu, frame imu_link, no orientation
-//   /odom                          nav_msgs/Odometry: the wheel odometry, odom -> base_link
+//   /odom                          nav_msgs/Odometry: the wheel odometry, odom -> base_link, its
+//                                  twist the base's mean velocity since the previous reading (in
+//                                  base_link); covariances zero, as the dataset holds no noise
+//                                  figures
 //   /ground_truth/pose             geometry_msgs/PoseStamped: the camera's optical frame in world
 //   /wifi/scan                     wifislam_msgs/WifiScan (interop/rosbag/WifiScan.msg)
+//
+// The ground truth is a tree of its own (world -> kinect), apart from odom -> base_link -> camera,
+// as in TUM's bags: RTAB-Map's ground_truth_frame_id / ground_truth_base_frame_id (world, kinect)
+// read it from there. Each topic's header.seq counts its messages from 0.
 //
 // LZ4 chunk compression (rosbag's own; `rosbag decompress` undoes it).
 

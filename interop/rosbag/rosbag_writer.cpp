@@ -3,7 +3,10 @@
 // declare a type: its fields, its serializer, its data type, MD5 sum and full definition.
 #include "interop/rosbag/rosbag_writer.hpp"
 
+#include <map>
 #include <stdexcept>
+
+#include <boost/make_shared.hpp>
 
 #include <geometry_msgs/PoseStamped.h>
 #include <nav_msgs/Odometry.h>
@@ -149,9 +152,31 @@ geometry_msgs::Pose pose_msg(const RigidTransform& t) {
 
 struct BagWriter::Impl {
   rosbag::Bag bag;
+  /// Each topic's next header.seq: consecutive from 0, as a ROS publisher numbers its messages.
+  std::map<std::string, std::uint32_t> next_seq;
   template <class M>
   void write(const std::string& topic, const M& message, const ros::Time& stamp) {
     bag.write(topic, stamp, message);
+  }
+  /// A latched topic's connection says so (`latching: 1`), as `rosbag record` stores a latched
+  /// publisher's: `rosbag play` then re-advertises it latched, so a node subscribing after the
+  /// first message still receives it (tf2's /tf_static is published that way).
+  template <class M>
+  void write_latched(const std::string& topic, const M& message, const ros::Time& stamp) {
+    // librosbag stores a given connection header as it is: it must name the type itself.
+    const auto connection = boost::make_shared<ros::M_string>();
+    (*connection)["type"] = ros::message_traits::datatype<M>();
+    (*connection)["md5sum"] = ros::message_traits::md5sum<M>();
+    (*connection)["message_definition"] = ros::message_traits::definition<M>();
+    (*connection)["callerid"] = "/wifislam_export";
+    (*connection)["latching"] = "1";
+    bag.write(topic, stamp, message, connection);
+  }
+  std_msgs::Header numbered_header(const std::string& topic, std::int64_t ns,
+                                   const std::string& frame_id) {
+    std_msgs::Header h = header(ns, frame_id);
+    h.seq = next_seq[topic]++;
+    return h;
   }
 };
 
@@ -187,7 +212,7 @@ void BagWriter::image(const std::string& topic, std::int64_t time_ns, const std:
                       int width, int height, const std::string& encoding, std::uint32_t step,
                       const std::uint8_t* data, std::size_t bytes) {
   sensor_msgs::Image m;
-  m.header = header(time_ns, frame_id);
+  m.header = impl_->numbered_header(topic, time_ns, frame_id);
   m.width = static_cast<std::uint32_t>(width);
   m.height = static_cast<std::uint32_t>(height);
   m.encoding = encoding;
@@ -200,7 +225,7 @@ void BagWriter::image(const std::string& topic, std::int64_t time_ns, const std:
 void BagWriter::camera_info(const std::string& topic, std::int64_t time_ns,
                             const std::string& frame_id, const PinholeCamera& c) {
   sensor_msgs::CameraInfo m;
-  m.header = header(time_ns, frame_id);
+  m.header = impl_->numbered_header(topic, time_ns, frame_id);
   m.width = static_cast<std::uint32_t>(c.width_px);
   m.height = static_cast<std::uint32_t>(c.height_px);
   m.distortion_model = "plumb_bob";
@@ -212,7 +237,7 @@ void BagWriter::camera_info(const std::string& topic, std::int64_t time_ns,
 }
 
 void BagWriter::transforms(const std::string& topic, std::int64_t time_ns,
-                           const std::vector<FrameTransform>& transforms) {
+                           const std::vector<FrameTransform>& transforms, Latched latched) {
   tf2_msgs::TFMessage m;
   for (const FrameTransform& f : transforms) {
     geometry_msgs::TransformStamped t;
@@ -227,14 +252,18 @@ void BagWriter::transforms(const std::string& topic, std::int64_t time_ns,
     t.transform.rotation.w = f.transform.rotation_xyzw[3];
     m.transforms.push_back(t);
   }
-  impl_->write(topic, m, ros_time(time_ns));
+  if (latched == Latched::kYes) {
+    impl_->write_latched(topic, m, ros_time(time_ns));
+  } else {
+    impl_->write(topic, m, ros_time(time_ns));
+  }
 }
 
 void BagWriter::imu(const std::string& topic, std::int64_t time_ns, const std::string& frame_id,
                     const std::array<double, 3>& w, const std::array<double, 3>& a,
                     double gyro_variance, double accel_variance) {
   sensor_msgs::Imu m;
-  m.header = header(time_ns, frame_id);
+  m.header = impl_->numbered_header(topic, time_ns, frame_id);
   m.orientation.w = 1.0;
   m.orientation_covariance[0] = -1.0;
   m.angular_velocity.x = w[0];
@@ -252,18 +281,24 @@ void BagWriter::imu(const std::string& topic, std::int64_t time_ns, const std::s
 
 void BagWriter::odometry(const std::string& topic, std::int64_t time_ns,
                          const std::string& frame_id, const std::string& child_frame,
-                         const RigidTransform& pose) {
+                         const RigidTransform& pose, const Twist& twist) {
   nav_msgs::Odometry m;
-  m.header = header(time_ns, frame_id);
+  m.header = impl_->numbered_header(topic, time_ns, frame_id);
   m.child_frame_id = child_frame;
   m.pose.pose = pose_msg(pose);
+  m.twist.twist.linear.x = twist.linear_mps[0];
+  m.twist.twist.linear.y = twist.linear_mps[1];
+  m.twist.twist.linear.z = twist.linear_mps[2];
+  m.twist.twist.angular.x = twist.angular_radps[0];
+  m.twist.twist.angular.y = twist.angular_radps[1];
+  m.twist.twist.angular.z = twist.angular_radps[2];
   impl_->write(topic, m, m.header.stamp);
 }
 
 void BagWriter::pose(const std::string& topic, std::int64_t time_ns, const std::string& frame_id,
                      const RigidTransform& pose) {
   geometry_msgs::PoseStamped m;
-  m.header = header(time_ns, frame_id);
+  m.header = impl_->numbered_header(topic, time_ns, frame_id);
   m.pose = pose_msg(pose);
   impl_->write(topic, m, m.header.stamp);
 }
@@ -272,7 +307,7 @@ void BagWriter::wifi_scan(const std::string& topic, std::int64_t time_ns,
                           const std::string& frame_id, std::int64_t scan_start_ns,
                           std::int64_t scan_end_ns, const std::vector<WifiEntry>& entries) {
   wifislam_msgs::WifiScan m;
-  m.header = header(time_ns, frame_id);
+  m.header = impl_->numbered_header(topic, time_ns, frame_id);
   m.scan_start = ros_time(scan_start_ns);
   m.scan_end = ros_time(scan_end_ns);
   for (const WifiEntry& e : entries) {

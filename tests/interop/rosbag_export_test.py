@@ -1,8 +1,9 @@
 """`wifislam export --for rosbag` read back with Debian's python3-rosbag, the reference reader of
 ROS 1 bags: every topic with its type, one message per dataset record with the dataset's stamps,
 the first colour image equal to the dataset's PNG pixel for pixel, the depth in metres (to float32
-rounding) with NaN where the PNG has no reading, the Wi-Fi scans equal to wifi.csv, and the custom message's MD5 as
-genmsg computes it from the definition the bag carries.
+rounding) with NaN where the PNG has no reading, the Wi-Fi scans equal to wifi.csv, the custom
+message's MD5 as genmsg computes it from the definition the bag carries, /tf_static latched, each
+topic's header.seq counting from 0, and the odometry's twist against its own poses.
 
 Run by CTest: rosbag_export_test.py WIFISLAM_BINARY SCRATCH_DIR
 """
@@ -135,6 +136,47 @@ class RosbagExport(unittest.TestCase):
             self.assertEqual(m.linear_acceleration.z, float(row["a_z_mps2"]))
             self.assertEqual(m.orientation_covariance[0], -1.0)
             self.assertEqual(m.header.frame_id, "imu_link")
+
+    def test_tf_static_is_latched_and_nothing_else_is(self):
+        # `rosbag play` re-advertises a topic latched only when its connection says so: without
+        # it a node subscribing after the first instant never got the camera and IMU mounts.
+        latching = {}
+        for topic, _, _, header in self.bag.read_messages(return_connection_header=True):
+            value = header.get("latching", b"0")  # python3-rosbag gives the header's bytes
+            latching.setdefault(topic, set()).add(value.decode() if isinstance(value, bytes)
+                                                  else value)
+        self.assertEqual(latching.pop("/tf_static"), {"1"})
+        for topic, values in latching.items():
+            self.assertEqual(values, {"0"}, topic)
+
+    def test_each_topics_sequence_numbers_count_its_messages(self):
+        for topic in ("/camera/rgb/image_color", "/camera/depth/image", "/odom", "/imu",
+                      "/ground_truth/pose", "/wifi/scan"):
+            seqs = [m.header.seq for m in self.messages(topic)]
+            self.assertEqual(seqs, list(range(len(seqs))), topic)
+
+    def test_odometry_twist_is_the_bases_velocity_between_readings(self):
+        odom = self.messages("/odom")
+        moving = 0
+        for before, after in zip(odom, odom[1:]):
+            dt = (stamp_ns(after.header.stamp) - stamp_ns(before.header.stamp)) * 1e-9
+            p0, p1 = before.pose.pose.position, after.pose.pose.position
+            q0, q1 = before.pose.pose.orientation, after.pose.pose.orientation
+            yaw0 = 2.0 * numpy.arctan2(q0.z, q0.w)
+            yaw1 = 2.0 * numpy.arctan2(q1.z, q1.w)
+            # The base drives on the floor: its velocity in base_link is along x at the new yaw.
+            dx, dy = p1.x - p0.x, p1.y - p0.y
+            forward = (numpy.cos(yaw1) * dx + numpy.sin(yaw1) * dy) / dt
+            lateral = (-numpy.sin(yaw1) * dx + numpy.cos(yaw1) * dy) / dt
+            turn = (yaw1 - yaw0 + numpy.pi) % (2.0 * numpy.pi) - numpy.pi
+            twist = after.twist.twist
+            self.assertAlmostEqual(twist.linear.x, forward, places=9)
+            self.assertAlmostEqual(twist.linear.y, lateral, places=9)
+            self.assertAlmostEqual(twist.angular.z, turn / dt, places=9)
+            moving += abs(twist.linear.x) > 0.1
+        self.assertEqual(odom[0].twist.twist.linear.x, 0.0)
+        # The route drives at 0.5 m/s between pauses: most intervals move.
+        self.assertGreater(moving, len(odom) // 4)
 
     def test_first_images_equal_the_datasets_pixel_for_pixel(self):
         with open(os.path.join(self.dataset, "associations.txt")) as f:
