@@ -204,9 +204,10 @@ WIFISLAM_COMMAND(paper, 66) {
   app->add_flag("--force", args->force, "Start over: replace DIR (a folder `paper` made)");
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   app->footer(
-      "About 25 min a seed at the default 3 fps on 2 cores (bench/paper/run.sh). DIR holds the\n"
-      "twins' scene files, one study file and SQLite database per part, twin and seed\n"
-      "(`wifislam study slurm` takes any of them), and the report. Details:\n"
+      "The stored five-seed report (docs/results/paper) took 280 min, about 56 min a seed,\n"
+      "at the default 3 fps on 2 cores shared with other work; bench/paper/run.sh times one\n"
+      "seed. DIR holds the twins' scene files, one study file and SQLite database per part,\n"
+      "twin and seed (`wifislam study slurm` takes any of them), and the report. Details:\n"
       "docs/paper/README.md.");
   app->callback([args, app] {
     for (const char* option : {"--cpus-per-task", "--partition", "--time"}) {

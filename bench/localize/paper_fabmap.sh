@@ -14,7 +14,8 @@ here=$(cd "$(dirname "$0")/../.." && pwd)
 mkdir -p "$out"
 start=$(date +%s)
 for scene in a_hall b_hall c_hall j_hall; do
-  # A hall's route (one lap) never revisits its first 40 %: two laps make its queries revisit.
+  # A hall's own route revisits only part of its first 40 % (140 of 271 queries have a map image
+  # within 2 m): two laps make most of them revisit (284 of 389).
   route=()
   if [ "$scene" = a_hall ]; then route=(--route A,B,C,D,A,B,C,D,A); fi
   "$build/apps/wifislam" localize "$here/scenes/$scene.yaml" "${route[@]}" -q --force \
