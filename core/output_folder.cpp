@@ -104,8 +104,18 @@ void check_folder_replaceable(const fs::path& resolved) {
 
 bool check_output_folder(const OutputFolderRequest& request) {
   if (request.path.empty()) throw InvalidInputError("output folder: the path is empty");
-  const fs::path out = resolve_path(request.path);
   std::error_code ec;
+  // Replacing a symbolic link's path replaces the folder it points to, wherever that is: a link
+  // at eval's default <run>/eval to a dataset emptied the dataset without --force. The folder
+  // itself must be named.
+  const fs::path named = request.path.has_filename() ? request.path : request.path.parent_path();
+  if (fs::is_symlink(fs::symlink_status(named, ec))) {
+    const fs::path target = fs::read_symlink(named, ec);
+    refuse(named, "is a symbolic link (to " + target.string() +
+                      "); refusing to write through it: give the folder itself, or remove the "
+                      "link");
+  }
+  const fs::path out = resolve_path(request.path);
   const fs::file_status status = fs::status(out, ec);
   const bool is_default =
       !request.owned_default.empty() && resolve_path(request.owned_default) == out;

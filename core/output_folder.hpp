@@ -12,7 +12,9 @@
 //   - it holds this tool's marker file (see `has_output_marker`), or is empty. Nothing else makes
 //     a folder replaceable: file names that look like ours (metrics.json, manifest.json ...) are
 //     no proof, and a user's folder holding them must survive `--force`.
-// Paths are compared after resolving symlinks, `..` and trailing slashes. A refusal is an
+// The output path itself is never a symbolic link (replacing it would replace the folder it
+// points to, wherever that is); links above it are resolved, and paths are compared after
+// resolving symlinks, `..` and trailing slashes. A refusal is an
 // InvalidInputError (exit 2) naming the path and the reason, raised before anything is written.
 
 #include <filesystem>

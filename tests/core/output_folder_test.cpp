@@ -190,6 +190,29 @@ TEST_F(OutputFolderRule, PathsAreComparedAfterResolvingSymlinksDotsAndSlashes) {
   }
 }
 
+// A link at eval's default <run>/eval to a dataset: replacing the default emptied the dataset,
+// without --force. A symbolic link is never an output folder, default or named, with or without
+// --force, dangling or not; the folder it points to is left as it was.
+TEST_F(OutputFolderRule, ASymbolicLinkIsNeverReplacedNorWrittenThrough) {
+  const fs::path run = tool_folder("run");
+  const fs::path victim = tool_folder("victim");
+  fs::create_directory_symlink(victim, run / "eval");
+  for (const bool force : {false, true}) {
+    for (const fs::path& spelling : {run / "eval", fs::path(run.string() + "/eval/")}) {
+      const auto message = refusal({spelling, force, run / "eval", {run}, run});
+      ASSERT_TRUE(message) << spelling;
+      EXPECT_NE(message->find("symbolic link"), std::string::npos) << *message;
+      EXPECT_NE(message->find(victim.string()), std::string::npos) << *message;
+    }
+  }
+  fs::create_directory_symlink(root_ / "nowhere", root_ / "dangling");
+  EXPECT_TRUE(refusal({root_ / "dangling", false, {}, {}}));
+  EXPECT_TRUE(fs::exists(victim / "data.txt"));
+  // A link above the folder is only a way to spell its path.
+  fs::create_directory_symlink(root_, root_ / "up");
+  EXPECT_TRUE(check_output_folder({root_ / "up" / "victim", true, {}, {}}));
+}
+
 TEST_F(OutputFolderRule, CurrentDirectoryItsParentsTheHomeFolderAndRootAreNeverReplaced) {
   const fs::path work = tool_folder("work");
   const fs::path inner = tool_folder("work/inner");
