@@ -296,7 +296,7 @@ void DatasetReader::open_cursors() {
   if (has_associations_file_) c.associations.emplace((folder_ / dataset::kAssociations).string());
   if (has_odometry_) c.odometry.emplace((folder_ / dataset::kOdometry).string());
   if (has_wifi_) c.wifi.emplace((folder_ / dataset::kWifi).string());
-  if (manifest_ && manifest_->images && options_.verify_checksums && options_.load_images &&
+  if (manifest_ && manifest_->images && options_.verify_checksums &&
       is_file(folder_ / dataset::kImageChecksums)) {
     c.checksums.emplace((folder_ / dataset::kImageChecksums).string());
   }
@@ -306,30 +306,41 @@ void DatasetReader::rewind() { open_cursors(); }
 
 namespace {
 
-/// Reads, checks and decodes one frame's images. `expected_sha256`: the images.sha256 entries of
-/// the two files ("" = not verified), `checksum_error`: what reading those entries threw.
-DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
-                                const std::string& listed_at,
-                                const std::array<std::string, 2>& expected_sha256,
-                                const std::array<std::string, 2>& checksum_where,
-                                std::exception_ptr checksum_error,
-                                const CameraIntrinsics& intrinsics, double depth_units_per_metre) {
-  const fs::path rgb_file = folder / pair.rgb_path, depth_file = folder / pair.depth_path;
-  const auto rgb_bytes = read_bytes(rgb_file, listed_at);
-  const auto depth_bytes = read_bytes(depth_file, listed_at);
-  if (checksum_error) std::rethrow_exception(checksum_error);
-  const std::array<const std::vector<unsigned char>*, 2> bytes{&rgb_bytes, &depth_bytes};
+/// The images.sha256 entries of one frame's two files ("" = not verified), where each is, and
+/// what reading them threw.
+struct FrameChecksums {
+  std::array<std::string, 2> expected_sha256, where;
+  std::exception_ptr error;
+};
+
+/// One frame's two files (colour, depth), read and checked against their images.sha256 entries.
+std::array<std::vector<unsigned char>, 2> read_checked_frame_files(const fs::path& folder,
+                                                                   const FramePair& pair,
+                                                                   const std::string& listed_at,
+                                                                   const FrameChecksums& sums) {
   const std::array<const std::string*, 2> relative{&pair.rgb_path, &pair.depth_path};
+  std::array<std::vector<unsigned char>, 2> bytes;
+  for (std::size_t i = 0; i < 2; ++i) bytes[i] = read_bytes(folder / *relative[i], listed_at);
+  if (sums.error) std::rethrow_exception(sums.error);
   for (std::size_t i = 0; i < 2; ++i) {
-    if (expected_sha256[i].empty()) continue;
-    const std::string_view data(reinterpret_cast<const char*>(bytes[i]->data()), bytes[i]->size());
-    if (sha256_hex(data) != expected_sha256[i]) {
+    if (sums.expected_sha256[i].empty()) continue;
+    const std::string_view data(reinterpret_cast<const char*>(bytes[i].data()), bytes[i].size());
+    if (sha256_hex(data) != sums.expected_sha256[i]) {
       throw ParseError((folder / *relative[i]).string(), "",
                        fmt::format("contents differ from {} (manifest mismatch); use "
                                    "--no-verify to read it anyway",
-                                   checksum_where[i]));
+                                   sums.where[i]));
     }
   }
+  return bytes;
+}
+
+/// Reads, checks and decodes one frame's images.
+DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
+                                const std::string& listed_at, const FrameChecksums& sums,
+                                const CameraIntrinsics& intrinsics, double depth_units_per_metre) {
+  const fs::path rgb_file = folder / pair.rgb_path, depth_file = folder / pair.depth_path;
+  const auto [rgb_bytes, depth_bytes] = read_checked_frame_files(folder, pair, listed_at, sums);
   DecodedImages out;
   // Read as stored, not converted to colour (which would scale a 16-bit image, a depth map in the
   // RGB list, down to 8 bits, or expand grey or drop alpha without a word): anything but 8-bit
@@ -378,42 +389,48 @@ void DatasetReader::fill_frame_queue() {
       break;
     }
     PendingFrame pending{std::move(*pair), {}};
-    if (options_.load_images) {
-      const FramePair& p = pending.pair;
-      const std::string listed_at =
-          p.line > 0 ? fmt::format("{}:{}", (folder_ / dataset::kAssociations).string(), p.line)
-          : p.rgb_line > 0
-              ? fmt::format("{}:{}", (folder_ / dataset::kRgbList).string(), p.rgb_line)
-              : (folder_ / dataset::kRgbList).string();
-      std::array<std::string, 2> expected, where;
-      std::exception_ptr checksum_error;
-      if (c.checksums) {
-        try {
-          for (std::size_t i = 0; i < 2; ++i) {
-            const std::string& relative = i == 0 ? p.rgb_path : p.depth_path;
-            TextLine line;
-            if (!c.checksums->next(line)) {
-              throw ParseError(
-                  c.checksums->path(), "",
-                  fmt::format("ends before the entry for {} (manifest mismatch)", relative));
-            }
-            const auto fields = split_fields(line.text);
-            where[i] = c.checksums->where(line.number);
-            if (fields.size() != 2 || fields[1] != relative) {
-              throw ParseError(where[i], "", fmt::format("expected the entry for {}", relative));
-            }
-            expected[i] = std::string(fields[0]);
+    const FramePair& p = pending.pair;
+    const std::string listed_at =
+        p.line > 0       ? fmt::format("{}:{}", (folder_ / dataset::kAssociations).string(), p.line)
+        : p.rgb_line > 0 ? fmt::format("{}:{}", (folder_ / dataset::kRgbList).string(), p.rgb_line)
+                         : (folder_ / dataset::kRgbList).string();
+    FrameChecksums sums;
+    if (c.checksums) {
+      try {
+        for (std::size_t i = 0; i < 2; ++i) {
+          const std::string& relative = i == 0 ? p.rgb_path : p.depth_path;
+          TextLine line;
+          if (!c.checksums->next(line)) {
+            throw ParseError(
+                c.checksums->path(), "",
+                fmt::format("ends before the entry for {} (manifest mismatch)", relative));
           }
-        } catch (...) {
-          checksum_error = std::current_exception();
-          c.checksums.reset();  // the entries are out of step from here: stop reading them
+          const auto fields = split_fields(line.text);
+          sums.where[i] = c.checksums->where(line.number);
+          if (fields.size() != 2 || fields[1] != relative) {
+            throw ParseError(sums.where[i], "", fmt::format("expected the entry for {}", relative));
+          }
+          sums.expected_sha256[i] = std::string(fields[0]);
         }
+      } catch (...) {
+        sums.error = std::current_exception();
+        c.checksums.reset();  // the entries are out of step from here: stop reading them
       }
-      auto task = [folder = folder_, pair = p, listed_at, expected, where, checksum_error,
+    }
+    if (!options_.load_images && (sums.error || !sums.expected_sha256[0].empty())) {
+      // Not decoded, but still checked: an export links these files, and `check --no-images`
+      // says they match. Checked when the frame is taken, so errors keep the frame order.
+      pending.images =
+          std::async(std::launch::deferred, [folder = folder_, pair = p, listed_at, sums] {
+            read_checked_frame_files(folder, pair, listed_at, sums);
+            return DecodedImages{};
+          });
+    }
+    if (options_.load_images) {
+      auto task = [folder = folder_, pair = p, listed_at, sums,
                    intrinsics = calibration_.intrinsics,
                    units = calibration_.depth_units_per_metre] {
-        return load_frame_images(folder, pair, listed_at, expected, where, checksum_error,
-                                 intrinsics, units);
+        return load_frame_images(folder, pair, listed_at, sums, intrinsics, units);
       };
       const bool parallel = options_.prefetch_frames > 0;
       try {

@@ -36,7 +36,8 @@ struct DatasetReaderOptions {
   /// read a dataset that was edited on purpose.
   bool verify_checksums = true;
   /// Decode images in next(). Off: frames carry their paths and times only (quick passes over
-  /// Wi-Fi and odometry).
+  /// Wi-Fi and odometry, an export's links); their files are still checked against
+  /// images.sha256 when `verify_checksums` is on, only not decoded.
   bool load_images = true;
   /// Frames read, checked and decoded ahead on other threads while the current one is used
   /// (0 = decode in next(), on the caller's thread). The frames, their order and any error are

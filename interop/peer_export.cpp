@@ -309,10 +309,16 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
   read.load_images = false;
   read.prefetch_frames = 0;
   // Checks the manifest, every list line and that every listed image exists.
-  const DatasetReader reader(dataset, read);
+  DatasetReader reader(dataset, read);
   if (reader.frame_count() == 0) {
     throw InvalidInputError(dataset.string() +
                             ": has no images to export (generated with --no-images?)");
+  }
+  // The links point at the dataset's images: check each against images.sha256 now, without
+  // decoding it (the bag's writer checks each as it decodes it).
+  if (options.verify_checksums && options.peer != Peer::kRosbag) {
+    while (reader.next()) {
+    }
   }
   const std::vector<FramePair> pairs = read_frame_pairs(dataset);
 

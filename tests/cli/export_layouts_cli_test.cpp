@@ -294,6 +294,34 @@ TEST_F(ExportLayoutsCli, EveryLayoutRefusesAnUnfinishedDatasetAndWritesNothing) 
   }
 }
 
+// An image edited after `generate`: the link layouts never decode images, so they did not check
+// them either, and exported the edited dataset as verified; `check --no-images` said "all files
+// match". Every layout and `check --no-images` now compare each image with images.sha256, and
+// name the file; --no-verify still exports it.
+TEST_F(ExportLayoutsCli, AnImageEditedSinceGenerateIsRefusedByEveryLayoutAndByCheck) {
+  const fs::path edited = scratch_ / "edited";
+  fs::copy(dataset(), edited, fs::copy_options::recursive);
+  const std::vector<FramePair> pairs = read_frame_pairs(edited);
+  const fs::path image = edited / pairs[pairs.size() / 2].rgb_path;
+  std::string bytes = test::read_file(image);
+  bytes[bytes.size() / 2] ^= 0x5a;  // one byte of a PNG's data
+  fs::remove(image);                // the export's links or the dataset may share the inode
+  test::write_file(image, bytes);
+  for (const char* layout : {"rtabmap", "orbslam2", "euroc", "kapture", "rosbag"}) {
+    const fs::path out = scratch_ / (std::string("edited_") + layout);
+    const auto r = export_to(edited, layout, out);
+    test::expect_located_bad_input(r, image.string(), "contents differ from");
+    EXPECT_FALSE(fs::exists(out)) << layout;
+  }
+  const auto check = test::run_wifislam("check " + edited.string() + " --no-images", scratch_);
+  test::expect_located_bad_input(check, image.string(), "contents differ from");
+  const auto unverified =
+      test::run_wifislam("export " + edited.string() + " --for kapture --no-verify -q -o " +
+                             (scratch_ / "edited_unverified").string(),
+                         scratch_);
+  EXPECT_EQ(unverified.exit_code, 0) << unverified.err;
+}
+
 TEST_F(ExportLayoutsCli, RosbagRefusesADatasetStartingAtZeroAndWritesNothing) {
   // A bag holds no message at time 0: such a dataset (time_origin_s: 0) is bad input, not an
   // I/O error halfway through the bag.
