@@ -121,11 +121,18 @@ void trajectory_section(Markdown& md, const RunEvaluation& ev) {
   line(fmt::format("| metres | {:.4f} | {:.4f} | {:.4f} | {:.4f} |", ev.ate_rmse_m, ev.ate_mean_m,
                    ev.ate_median_m, ev.ate_max_m));
   line();
-  line(fmt::format(
-      "RPE over {} m of ground-truth travel ({} pairs): {:.4f} m/m translation, {:.3f} deg/m "
-      "rotation (mean error / segment length); RMSE {:.4f} m, {:.3f} deg.",
-      ev.options.rpe_delta_m, ev.rpe_pairs, ev.rpe_trans_per_m, ev.rpe_rot_deg_per_m,
-      ev.rpe_trans_rmse_m, ev.rpe_rot_rmse_deg));
+  if (ev.rpe_pairs == 0) {
+    line(
+        fmt::format("RPE over {} m of ground-truth travel: not measured, no two poses are that "
+                    "far apart along the path (lower rpe_delta_m).",
+                    ev.options.rpe_delta_m));
+  } else {
+    line(fmt::format(
+        "RPE over {} m of ground-truth travel ({} pairs): {:.4f} m/m translation, {:.3f} deg/m "
+        "rotation (mean error / segment length); RMSE {:.4f} m, {:.3f} deg.",
+        ev.options.rpe_delta_m, ev.rpe_pairs, ev.rpe_trans_per_m, ev.rpe_rot_deg_per_m,
+        ev.rpe_trans_rmse_m, ev.rpe_rot_rmse_deg));
+  }
   line();
 }
 

@@ -43,6 +43,9 @@ Metric both(const char* section, const char* name, bool (*present)(const E&),
   return {Flat::kKey, name, Nested::kKey, section, name, present, value};
 }
 
+/// An RPE figure, or null when no pair was measured.
+Json rpe_json(const E& e, double value) { return e.rpe_pairs > 0 ? Json(value) : Json(nullptr); }
+
 Json alignment_json(const E& e) {
   const Alignment& a = e.alignment;
   return {
@@ -108,14 +111,16 @@ const std::vector<Metric>& metric_list() {
       {Flat::kKey, "alignment_scale", Nested::kKey, "trajectory", "alignment", always,
        [](const E& e) { return Json(e.alignment.scale); }, alignment_json},
       both("trajectory", "rpe_pairs", always, [](const E& e) { return Json(e.rpe_pairs); }),
+      // No pair rpe_delta_m apart (a route shorter than that, or a robot standing still): the
+      // RPE is not measured, null rather than a 0 that a --require would take for perfect.
       both("trajectory", "rpe_trans_per_m", always,
-           [](const E& e) { return Json(e.rpe_trans_per_m); }),
+           [](const E& e) { return rpe_json(e, e.rpe_trans_per_m); }),
       both("trajectory", "rpe_rot_deg_per_m", always,
-           [](const E& e) { return Json(e.rpe_rot_deg_per_m); }),
+           [](const E& e) { return rpe_json(e, e.rpe_rot_deg_per_m); }),
       both("trajectory", "rpe_trans_rmse_m", always,
-           [](const E& e) { return Json(e.rpe_trans_rmse_m); }),
+           [](const E& e) { return rpe_json(e, e.rpe_trans_rmse_m); }),
       both("trajectory", "rpe_rot_rmse_deg", always,
-           [](const E& e) { return Json(e.rpe_rot_rmse_deg); }),
+           [](const E& e) { return rpe_json(e, e.rpe_rot_rmse_deg); }),
       // Loop closures.
       {Flat::kKey, "loop_closures_available", Nested::kKey, "loop_closures", "available", always,
        [](const E& e) { return Json(e.loop_closures_available); }},

@@ -111,8 +111,13 @@ void run(const EvalArgs& args) {
   fmt::print("ATE RMSE           {:.4f} m (mean {:.4f}, median {:.4f}, max {:.4f}; {} poses, {})\n",
              ev.ate_rmse_m, ev.ate_mean_m, ev.ate_median_m, ev.ate_max_m, ev.frames_associated,
              eval::to_string(options.align));
-  fmt::print("RPE                {:.4f} m/m, {:.3f} deg/m over {} m\n", ev.rpe_trans_per_m,
-             ev.rpe_rot_deg_per_m, options.rpe_delta_m);
+  if (ev.rpe_pairs == 0) {
+    fmt::print("RPE                not measured: no two poses {} m apart along the path\n",
+               options.rpe_delta_m);
+  } else {
+    fmt::print("RPE                {:.4f} m/m, {:.3f} deg/m over {} m\n", ev.rpe_trans_per_m,
+               ev.rpe_rot_deg_per_m, options.rpe_delta_m);
+  }
   if (ev.loop_closures_available) {
     for (const auto& [name, c] :
          {std::pair{"online", &ev.loop_closure_score.online},

@@ -1,11 +1,13 @@
 // Requirements on an evaluation (eval/requirement.hpp): "<=" is not read as "<" then "=...",
 // spaces are allowed, malformed text and unknown metrics are refused with the metric's nearest
-// name, a metric the run lacks is not met, and the message says by how much a bound is missed.
+// name, a metric the run lacks (or did not measure) is not met, and the message says by how much a
+// bound is missed.
 #include "eval/requirement.hpp"
 
 #include <gtest/gtest.h>
 
 #include "core/error.hpp"
+#include "eval/run_evaluation.hpp"
 
 namespace wifislam::eval {
 namespace {
@@ -72,6 +74,31 @@ TEST(Requirement, ResultsSayWhetherAndByHowMuch) {
   EXPECT_TRUE(results[2].met);
   EXPECT_FALSE(results[3].met);  // a strict bound equal to the value
   EXPECT_NE(results[3].describe().find("equal to 0.75"), std::string::npos);
+}
+
+// A route shorter than rpe_delta_m measures no RPE pair: its RPE was written as 0, and
+// `--require rpe_trans_per_m<=0.001` passed on a run nothing was measured of. It is null now, and
+// a requirement on it is not met; with pairs the figure is there.
+TEST(Requirement, AnRpeWithNoPairIsNullAndNotMet) {
+  RunEvaluation unmeasured;
+  unmeasured.rpe_pairs = 0;
+  const nlohmann::ordered_json flat = unmeasured.flat_metrics();
+  for (const char* key :
+       {"rpe_trans_per_m", "rpe_rot_deg_per_m", "rpe_trans_rmse_m", "rpe_rot_rmse_deg"}) {
+    ASSERT_TRUE(flat.contains(key)) << key;
+    EXPECT_TRUE(flat[key].is_null()) << key;
+  }
+  EXPECT_TRUE(unmeasured.to_ordered_json()["trajectory"]["rpe_trans_per_m"].is_null());
+  const auto results = check_requirements({parse_requirement("rpe_trans_per_m<=0.001")}, flat);
+  EXPECT_FALSE(results[0].met);
+  EXPECT_NE(results[0].describe().find("not available"), std::string::npos);
+
+  RunEvaluation measured;
+  measured.rpe_pairs = 12;
+  measured.rpe_trans_per_m = 0.0005;
+  EXPECT_TRUE(
+      check_requirements({parse_requirement("rpe_trans_per_m<=0.001")}, measured.flat_metrics())[0]
+          .met);
 }
 
 }  // namespace
