@@ -11,6 +11,7 @@
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
 #include "core/thread_start.hpp"
+#include "core/utf8.hpp"
 
 int main(int argc, char** argv) {
   wifislam::cap_default_thread_stack();
@@ -20,6 +21,17 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("wifislam ") + WIFISLAM_VERSION);
   app.require_subcommand(1);
   wifislam::cli::setup_all_commands(app);
+  // Paths and settings end up in JSON files, which hold UTF-8 only: a Latin-1 file name failed
+  // as an internal error when the first of them was written, after the work.
+  for (int i = 1; i < argc; ++i) {
+    if (!wifislam::is_valid_utf8(argv[i])) {
+      fmt::print(stderr,
+                 "wifislam: error: argument {} is not valid UTF-8 (a file name in another "
+                 "encoding?): the outputs record paths and settings as UTF-8; rename it\n",
+                 i);
+      return wifislam::cli::kExitBadInput;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

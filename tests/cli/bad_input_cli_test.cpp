@@ -305,5 +305,26 @@ TEST_F(BadInput, ABadLineStopsTheReadingThereWhateverFollows) {
   fs::remove(scratch_ / "big.txt");
 }
 
+// A folder named in Latin-1: slam, eval and export failed with an internal error (exit 70) when
+// the first JSON file naming it was written, after the work. Every argument must be UTF-8, checked
+// before anything runs: exit 2, nothing written.
+TEST_F(BadInput, AnArgumentThatIsNotUtf8IsRefusedBeforeAnyWork) {
+  const fs::path latin1 = scratch_ / "d\xff\xfe";
+  fs::create_directories(latin1);
+  const fs::path out = scratch_ / "out";
+  for (const std::string& args :
+       {"slam '" + latin1.string() + "' -o " + out.string(),
+        "generate " + scene_.string() + " --fps 1 --max-frames 2 -q -o '" + latin1.string() +
+            "/ds'",
+        "export '" + latin1.string() + "' --for euroc -o " + out.string()}) {
+    const auto r = wifislam(args);
+    EXPECT_EQ(r.exit_code, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("is not valid UTF-8"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(fs::is_empty(latin1));
+}
+
 }  // namespace
 }  // namespace wifislam
