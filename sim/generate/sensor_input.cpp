@@ -37,7 +37,15 @@ SensorInput open_dataset(const fs::path& input, const SensorInputOptions& option
   out.description = {
       {"kind", "dataset"}, {"path", input.string()}, {"max_frames", options.max_frames}};
   check_max_frames(options.max_frames);
-  out.stream = std::make_unique<DatasetReader>(input, reader_options);
+  auto reader = std::make_unique<DatasetReader>(input, reader_options);
+  // Every reader of this input works on the frames (SLAM, a vocabulary, localisation): a dataset
+  // of poses, odometry and Wi-Fi only gave an empty run and exit 0.
+  if (reader->frame_count() == 0) {
+    throw InvalidInputError(input.string() +
+                            ": has no images (generated with --no-images?); this command works on "
+                            "its RGB-D frames");
+  }
+  out.stream = std::move(reader);
   if (options.max_frames >= 0) {
     out.stream = std::make_unique<FrameLimitedStream>(std::move(out.stream), options.max_frames);
   }

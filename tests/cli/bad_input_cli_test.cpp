@@ -305,6 +305,21 @@ TEST_F(BadInput, ABadLineStopsTheReadingThereWhateverFollows) {
   fs::remove(scratch_ / "big.txt");
 }
 
+// A dataset of poses, odometry and Wi-Fi only (generate --no-images): slam ran on it and wrote an
+// empty run, exit 0. Refused by name, as export refuses it, and nothing is written.
+TEST_F(BadInput, SlamOnADatasetWithoutImagesIsRefused) {
+  const fs::path ds = scratch_ / "poses_only";
+  ASSERT_EQ(wifislam("generate " + scene_.string() + " --fps 1 --max-frames 3 --no-images -q -o " +
+                     ds.string())
+                .exit_code,
+            0);
+  for (const char* wifi : {"", " --wifi"}) {
+    const auto r = wifislam("slam " + ds.string() + wifi + " -o " + (scratch_ / "run").string());
+    test::expect_located_bad_input(r, ds.string(), "has no images");
+    EXPECT_FALSE(fs::exists(scratch_ / "run"));
+  }
+}
+
 // A folder named in Latin-1: slam, eval and export failed with an internal error (exit 70) when
 // the first JSON file naming it was written, after the work. Every argument must be UTF-8, checked
 // before anything runs: exit 2, nothing written.
