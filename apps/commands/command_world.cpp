@@ -24,7 +24,13 @@ struct WorldArgs {
 
 void run_world(const WorldArgs& args) {
   using namespace wifislam;
-  if (!args.plan_path.empty()) check_output_file(args.plan_path, {args.scene_path});
+  // Both plan files are checked before either is written: `--plan X.png --svg` with X.svg an
+  // input wrote the PNG and then refused.
+  const std::filesystem::path png = args.plan_path;
+  const bool write_svg = !png.empty() && args.svg && png.extension() != ".svg";
+  const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
+  if (!png.empty()) check_output_file(png, {args.scene_path});
+  if (write_svg) check_output_file(svg, {args.scene_path, png});
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   sim::scene::require_level(scene, args.level, "--level");
   // The site as `generate` builds it: a route `world` accepts is one `generate` can drive, and
@@ -33,13 +39,10 @@ void run_world(const WorldArgs& args) {
   const sim::world::World& world = site.world();
   const sim::robot::MotionProfile& motion = site.motion();
   const std::vector<radio_model::AccessPoint>& access_points = site.access_points();
-  if (!args.plan_path.empty()) {
-    const std::filesystem::path png = args.plan_path;
+  if (!png.empty()) {
     sim::site::draw_site_plan(site, png, args.level);
     fmt::print("wrote {}\n", png.string());
-    if (args.svg && png.extension() != ".svg") {
-      const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
-      check_output_file(svg, {args.scene_path});
+    if (write_svg) {
       sim::site::draw_site_plan(site, svg, args.level);
       fmt::print("wrote {}\n", svg.string());
     }

@@ -214,6 +214,14 @@ TEST_F(OutputFolders, NoCommandReplacesItsOwnInput) {
   r = wifislam("radiomap " + scene_.string() + " --strongest -o " + scene_.string());
   expect_refused(r, scene_, "is an input of this command");
   EXPECT_EQ(test::read_file(scene_), test::kTinyLoopYaml);
+  // `--plan X.png --svg` writes X.svg too: both are checked before either is written (the PNG
+  // was written, then X.svg, the scene, refused).
+  const fs::path svg_scene = work_ / "plan.svg", png = work_ / "plan.png";
+  test::write_file(svg_scene, test::kTinyLoopYaml);
+  r = wifislam("world " + svg_scene.string() + " --plan " + png.string() + " --svg");
+  expect_refused(r, svg_scene, "is an input of this command");
+  EXPECT_FALSE(fs::exists(png));
+  EXPECT_EQ(test::read_file(svg_scene), test::kTinyLoopYaml);
 }
 
 // Inputs named by options or inside other files, and outputs of other commands: a vocabulary
