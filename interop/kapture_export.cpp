@@ -42,12 +42,18 @@ std::string kapture_file(const char* columns, const std::string& rows) {
 }
 
 /// A Kapture .depth file: the depth map's float32 metres, row-major, little-endian.
-void write_depth_file(const fs::path& png, const fs::path& out, double units_per_metre) {
+void write_depth_file(const fs::path& png, const fs::path& out, const DatasetCalibration& c) {
   std::ifstream in(png, std::ios::binary);
   const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
                                          std::istreambuf_iterator<char>());
   if (!in.good() && !in.eof()) throw IoError(png.string() + ": cannot be read");
-  const cv::Mat depth_m = decode_depth_png(bytes, units_per_metre, png.string());
+  const cv::Mat depth_m = decode_depth_png(bytes, c.depth_units_per_metre, png.string());
+  // sensors.txt gives the size; a .depth file of another size would be read as garbage.
+  if (depth_m.cols != c.intrinsics.width_px || depth_m.rows != c.intrinsics.height_px) {
+    throw ParseError(png.string(), "",
+                     fmt::format("image is {}x{}, the calibration says {}x{}", depth_m.cols,
+                                 depth_m.rows, c.intrinsics.width_px, c.intrinsics.height_px));
+  }
   static_assert(std::endian::native == std::endian::little, "Kapture's .depth is little-endian");
   std::string raw(depth_m.total() * sizeof(float), '\0');
   for (int r = 0; r < depth_m.rows; ++r) {
@@ -131,7 +137,7 @@ void write_kapture(const fs::path& dataset, const KaptureInput& input, const fs:
     const std::string rgb = "rgb/" + us(p.rgb_time) + ".png";
     const std::string depth = "depth/" + us(p.rgb_time) + ".depth";
     link_relative(dataset / p.rgb_path, final_path / "sensors/records_data" / rgb, data / rgb);
-    write_depth_file(dataset / p.depth_path, data / depth, c.depth_units_per_metre);
+    write_depth_file(dataset / p.depth_path, data / depth, c);
     camera_rows += fmt::format("{}, cam0, {}\n", us(p.rgb_time), rgb);
     depth_rows += fmt::format("{}, depth0, {}\n", us(p.rgb_time), depth);
   }

@@ -26,6 +26,7 @@
 #include "core/dataset_reader.hpp"
 #include "core/imu_csv.hpp"
 #include "core/imu_groundtruth_csv.hpp"
+#include "core/png_codec.hpp"
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
@@ -320,6 +321,23 @@ TEST_F(ExportLayoutsCli, AnImageEditedSinceGenerateIsRefusedByEveryLayoutAndByCh
                              (scratch_ / "edited_unverified").string(),
                          scratch_);
   EXPECT_EQ(unverified.exit_code, 0) << unverified.err;
+}
+
+// Kapture's .depth files are raw float32 of the size sensors.txt gives: a depth image of another
+// size was written as is (a 320x240 image in a 640x480 dataset), unreadable by kapture. Refused,
+// naming the image, even with --no-verify.
+TEST_F(ExportLayoutsCli, KaptureRefusesADepthImageOfAnotherSize) {
+  const fs::path resized = scratch_ / "resized";
+  fs::copy(dataset(), resized, fs::copy_options::recursive);
+  const std::vector<FramePair> pairs = read_frame_pairs(resized);
+  const fs::path depth = resized / pairs.back().depth_path;
+  fs::remove(depth);
+  write_png(depth, cv::Mat(240, 320, CV_16UC1, cv::Scalar(5000)));
+  const fs::path out = scratch_ / "resized_kapture";
+  const auto r = test::run_wifislam(
+      "export " + resized.string() + " --for kapture --no-verify -o " + out.string(), scratch_);
+  test::expect_located_bad_input(r, depth.string(), "image is 320x240, the calibration says");
+  EXPECT_FALSE(fs::exists(out));
 }
 
 TEST_F(ExportLayoutsCli, RosbagRefusesADatasetStartingAtZeroAndWritesNothing) {
