@@ -292,12 +292,12 @@ void score_trajectory(const Trajectory& ground_truth, const Trajectory& estimate
   ev.frames_estimated = static_cast<std::int64_t>(estimated.size());
   ev.frames_ground_truth = static_cast<std::int64_t>(ground_truth.size());
   ev.frames_associated = static_cast<std::int64_t>(pairs.size());
-  if (pairs.size() < 3) {
+  if (pairs.size() < kMinAssociatedPoses) {
     throw InvalidInputError(
         fmt::format("{} and {}: only {} poses share a timestamp (within {} s, estimate shifted "
-                    "by {} s); need at least 3 (is this the run of that dataset?)",
+                    "by {} s); need at least {} (is this the run of that dataset?)",
                     estimate_name, ground_truth_name, pairs.size(), options.max_time_difference_s,
-                    options.time_offset_s));
+                    options.time_offset_s, kMinAssociatedPoses));
   }
   std::vector<Pose> est_assoc, gt_assoc;
   for (const AssociatedIndices& a : pairs) {

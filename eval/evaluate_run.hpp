@@ -16,6 +16,10 @@
 
 namespace wifislam::eval {
 
+/// The fewest poses an estimate and its ground truth must share: the alignment (Umeyama) needs
+/// three.
+inline constexpr std::size_t kMinAssociatedPoses = 3;
+
 /// `run_or_trajectory`: a run folder, or a TUM trajectory file. Throws IoError for a missing or
 /// unreadable file and ParseError naming file:line (and key) for malformed content (e.g. a NaN in
 /// trajectory.txt, a graph.json edge without "from_to"); InvalidInputError when the estimate and

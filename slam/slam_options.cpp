@@ -9,8 +9,9 @@
 
 namespace wifislam::slam {
 
-void set_option(SlamOptions& options, const std::string& key, const std::string& value) {
-  options::set_from_text(options, "--set", "SLAM option", key, value);
+void set_option(SlamOptions& options, const std::string& key, const std::string& value,
+                const char* flag) {
+  options::set_from_text(options, flag, "SLAM option", key, value);
 }
 
 void set_option_assignment(SlamOptions& options, const std::string& assignment) {

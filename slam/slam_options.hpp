@@ -233,8 +233,10 @@ void visit_options(V& v, SlamOptions& o) {
 
 /// Sets one option from text ("min_matches", "15") by the rules of core/option_table.hpp. Throws
 /// ParseError naming the key (the closest and every valid key when it is unknown) or the value
-/// when it does not read as the option's type.
-void set_option(SlamOptions& options, const std::string& key, const std::string& value);
+/// when it does not read as the option's type. `flag`: the option the text came from, named in the
+/// error (`--set`, or `--sweep` for a value of a sweep).
+void set_option(SlamOptions& options, const std::string& key, const std::string& value,
+                const char* flag = "--set");
 
 /// Parses "key=value" (a `--set`) and calls set_option. `frontend=` must name the front end
 /// `options` already has (--frontend's, set first): a conflict is a ParseError, not a silent

@@ -338,7 +338,7 @@ SweepAxis parse_sweep(const std::string& text) {
     start = comma + 1;
   }
   slam::SlamOptions probe;
-  for (const std::string& value : axis.values) slam::set_option(probe, axis.key, value);
+  for (const std::string& value : axis.values) slam::set_option(probe, axis.key, value, "--sweep");
   return axis;
 }
 
@@ -386,8 +386,24 @@ void check_comparison_input(const std::vector<sim::scene::Scene>& scenes,
   if (options.seeds < 1) throw InvalidInputError("compare: --seeds must be >= 1");
   if (options.jobs < 1) throw InvalidInputError("compare: --jobs must be >= 1");
   sim::generate::check_max_frames(options.max_frames);
+  // Every run is evaluated, and the evaluation aligns at least three poses: fewer frames failed
+  // only after the datasets were rendered and every run made.
+  if (options.max_frames >= 0 &&
+      options.max_frames < static_cast<std::int64_t>(eval::kMinAssociatedPoses)) {
+    throw InvalidInputError(
+        fmt::format("compare: --max-frames {}: every run is scored against ground truth, which "
+                    "aligns at least {} poses; give {} or more",
+                    options.max_frames, eval::kMinAssociatedPoses, eval::kMinAssociatedPoses));
+  }
   std::map<std::string, int> names;
   for (const sim::scene::Scene& scene : scenes) {
+    // The scene's name names its datasets' and runs' folders and its table row.
+    if (scene.name.empty()) {
+      throw InvalidInputError(fmt::format(
+          "compare: {}: the scene has no name; give it one (`name:`), which names its folders "
+          "and its row of the tables",
+          scene.source_path.empty() ? std::string("a scene") : scene.source_path));
+    }
     if (++names[scene.name] > 1) {
       throw InvalidInputError("compare: scene name '" + scene.name + "' given twice");
     }
@@ -570,8 +586,18 @@ ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
           "compare: --sweep {0} given twice; give its values once (--sweep {0}=a,b,c)", axis.key));
     }
   }
+  // Every setting runs vanilla and with Wi-Fi: a `wifi` option would be overridden by each run.
+  const auto refuse_wifi = [](const std::string& given) {
+    throw InvalidInputError(fmt::format(
+        "compare: {}: compare runs every setting both vanilla and with Wi-Fi, so the 'wifi' "
+        "option would change nothing (tune the Wi-Fi module by wifi_similarity and the other "
+        "wifi_* options)",
+        given));
+  };
+  if (swept.count("wifi")) refuse_wifi("--sweep wifi=...");
   for (const std::string& assignment : options.settings) {
     const std::string key = assignment.substr(0, assignment.find('='));
+    if (key == "wifi") refuse_wifi("--set " + assignment);
     if (swept.count(key)) {
       throw InvalidInputError(
           fmt::format("compare: {0} is both set (--set {1}) and swept (--sweep {0}=...); keep one",

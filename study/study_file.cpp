@@ -16,6 +16,7 @@
 #include "core/error.hpp"
 #include "core/option_table.hpp"
 #include "core/yaml_document.hpp"
+#include "eval/evaluate_run.hpp"
 #include "interop/external_system.hpp"
 #include "sim/scene/scene_keys.hpp"
 #include "slam/frontend/front_end_registry.hpp"
@@ -51,6 +52,11 @@ std::string radio_level_refusal(const std::string& key, const std::string& effec
       key, effect, fmt::join(kRadioLevelOptions, ", "));
 }
 
+// A SLAM case runs vanilla and with Wi-Fi; a radio case runs neither.
+constexpr const char* kWifiOptionRefusal =
+    "a study runs each SLAM case both vanilla and with Wi-Fi (and a radio case neither), so the "
+    "'wifi' option would change nothing";
+
 // Ids number cases in five digits, so they sort in study order only below 100 000; and the
 // product is held in memory, which a few dozen two-valued axes (2^40 cases) would exhaust.
 constexpr std::size_t kMaxStudyCases = 100000;
@@ -75,6 +81,7 @@ AxisKind axis_kind(const Reader& r, const YAML::Node& key_node, const std::strin
     if (std::find(keys.begin(), keys.end(), key) == keys.end()) {
       r.fail(key_node, "axes." + key, "unknown SLAM option" + did_you_mean(key, keys));
     }
+    if (key == "slam.wifi") r.fail(key_node, "axes." + key, kWifiOptionRefusal);
     return AxisKind::kSlamOption;
   }
   if (!sim::scene::is_scene_key_path(key)) {
@@ -380,11 +387,15 @@ void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
   }
   if (s["max_frames"]) {
     std::int64_t frames = 0;
-    // As --max-frames: 0 frames would be a run on nothing, which `study run` refuses.
+    // Each case's runs are scored against ground truth, which aligns at least 3 poses: fewer
+    // frames would fail every case after its rendering.
+    const auto fewest = static_cast<std::int64_t>(eval::kMinAssociatedPoses);
     if (!options::parse_int64(r.scalar(s["max_frames"], "slam.max_frames"), frames) ||
-        frames < -1 || frames == 0) {
+        frames < -1 || (frames >= 0 && frames < fewest)) {
       r.fail(s["max_frames"], "slam.max_frames",
-             "expected -1 (every frame) or a whole number of 1 or more");
+             fmt::format("expected -1 (every frame) or a whole number of {} or more (the "
+                         "evaluation aligns at least {} poses)",
+                         fewest, fewest));
     }
     study.slam.max_frames = frames;
   }
@@ -393,6 +404,7 @@ void read_slam(const Reader& r, const YAML::Node& s, StudyFile& study) {
     for (const auto& kv : settings) {
       const std::string key = kv.first.Scalar();
       const std::string value = r.scalar(kv.second, "slam.settings." + key);
+      if (key == "wifi") r.fail(kv.first, "slam.settings." + key, kWifiOptionRefusal);
       slam::SlamOptions probe;
       try {
         slam::set_option(probe, key, value);

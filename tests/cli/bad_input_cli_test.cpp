@@ -320,6 +320,34 @@ TEST_F(BadInput, SlamOnADatasetWithoutImagesIsRefused) {
   }
 }
 
+// compare's options refused before any dataset is rendered, each in its own words: fewer frames
+// than the evaluation aligns (it failed after every run, naming a deleted folder), a scene without
+// a name (its folders were "-seed7"), a swept key that is no option (the message named --set), and
+// the `wifi` option, which every run overrides.
+TEST_F(BadInput, CompareRefusesWhatWouldFailOrChangeNothingBeforeAnyWork) {
+  const fs::path nameless = scratch_ / "nameless.yaml";
+  std::string yaml = test::kTinyLoopYaml;
+  const std::size_t name_at = yaml.find("name:");
+  ASSERT_NE(name_at, std::string::npos);
+  yaml.erase(name_at, yaml.find('\n', name_at) - name_at + 1);
+  test::write_file(nameless, yaml);
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {scene_.string() + " --max-frames 2", "--max-frames 2: every run is scored"},
+      {nameless.string() + " --max-frames 4", "the scene has no name"},
+      {scene_.string() + " --sweep nokey=1,2 --max-frames 4", "--sweep: key 'nokey'"},
+      {scene_.string() + " --set wifi=true --max-frames 4", "'wifi' option would change nothing"},
+  };
+  for (const auto& c : cases) {
+    const auto r = wifislam("compare " + c.args + " --fps 2 -q -o " + (scratch_ / "c").string());
+    EXPECT_EQ(r.exit_code, 2) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(scratch_ / "c")) << c.args;
+    EXPECT_FALSE(fs::exists(scratch_ / "c.partial")) << c.args;
+  }
+}
+
 // A folder named in Latin-1: slam, eval and export failed with an internal error (exit 70) when
 // the first JSON file naming it was written, after the work. Every argument must be UTF-8, checked
 // before anything runs: exit 2, nothing written.

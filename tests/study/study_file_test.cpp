@@ -239,6 +239,15 @@ TEST(StudyFile, ARadioLevelStudyRefusesSlamOptionsItDoesNotRead) {
   EXPECT_EQ(wifi.slam.settings.size(), 2u);
 }
 
+// Each SLAM case runs vanilla and with Wi-Fi: a `wifi` option would be overridden by both.
+TEST(StudyFile, TheWifiOptionIsRefusedAsAnAxisAndAsASetting) {
+  ParseError e = parse_error(slam_study_yaml("  slam.wifi: [true, false]\n"));
+  EXPECT_EQ(e.key_path(), "axes.slam.wifi");
+  EXPECT_NE(std::string(e.what()).find("would change nothing"), std::string::npos) << e.what();
+  e = parse_error(slam_study_yaml("  seed: [1]\n", "slam: {settings: {wifi: true}}\n"));
+  EXPECT_EQ(e.key_path(), "slam.settings.wifi");
+}
+
 // Issue 44: `system: [../sys/x.yaml]` was read from the current folder while `scene:` is read
 // from the study file's: a system file's relative path is the study file's now.
 TEST(StudyFile, ASystemFilesRelativePathIsTheStudyFiles) {
