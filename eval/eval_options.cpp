@@ -34,7 +34,10 @@ void validate(const EvalOptions& o) {
   auto require = [](bool ok, const char* key, const char* what) {
     if (!ok) throw InvalidInputError(fmt::format("eval option {}: must be {}", key, what));
   };
-  require(o.max_time_difference_s > 0, "max_time_difference_s", "> 0");
+  // Stamps are whole nanoseconds in 64 bits (to 2262): a difference or an offset beyond these
+  // bounds overflowed them and associated nothing, without a word.
+  require(o.max_time_difference_s > 0 && o.max_time_difference_s <= 1e6, "max_time_difference_s",
+          "in (0, 1e6] s");
   require(o.rpe_delta_m > 0, "rpe_delta_m", "> 0");
   require(o.overlap_max_distance_m > 0, "overlap_max_distance_m", "> 0");
   require(o.overlap_max_angle_deg > 0 && o.overlap_max_angle_deg <= 180, "overlap_max_angle_deg",
@@ -49,7 +52,7 @@ void validate(const EvalOptions& o) {
   require(o.episode_max_gap_keyframes >= 0, "episode_max_gap_keyframes", ">= 0");
   require(o.loop_max_translation_error_m > 0, "loop_max_translation_error_m", "> 0");
   require(o.loop_max_rotation_error_deg > 0, "loop_max_rotation_error_deg", "> 0");
-  require(std::isfinite(o.time_offset_s), "time_offset_s", "a finite number");
+  require(std::abs(o.time_offset_s) <= 1e9, "time_offset_s", "in [-1e9, 1e9] s");
   require(o.right_place_max_distance_m >= 0, "right_place_max_distance_m", ">= 0");
   require(o.right_place_max_translation_error_m >= 0, "right_place_max_translation_error_m",
           ">= 0");

@@ -118,6 +118,10 @@ void validate(const SlamOptions& o) {
           "optimizer iterations must be >= 1 (final) and >= 0 (incremental)");
   require(o.graph.threads >= 1, "optimizer_threads must be >= 1");
   require(o.wifi.similarity >= -1 && o.wifi.similarity <= 1, "wifi_similarity must be in [-1, 1]");
+  // Received powers lie far inside this: a floor above 0 dBm or far below any receiver's
+  // sensitivity weights every AP alike (or none), which turned clustering off without a word.
+  require(o.wifi.floor_dbm >= -150 && o.wifi.floor_dbm <= 0,
+          fmt::format("wifi_floor_dbm must be in [-150, 0] dBm, got {}", o.wifi.floor_dbm));
   require(o.wifi.pause_gap_s > 0, "wifi_pause_gap_s must be > 0");
   require(o.wifi.pause_motion_m > 0, "wifi_pause_motion_m must be > 0");
 }

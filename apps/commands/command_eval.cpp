@@ -14,6 +14,7 @@
 #include "apps/command_registry.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/text_lines.hpp"
 #include "eval/eval.hpp"
 #include "eval/requirement.hpp"
 #include "sim/world/world_generator.hpp"
@@ -77,7 +78,14 @@ void run(const EvalArgs& args) {
     options.align = *mode;
   }
   if (args.time_offset_s) options.time_offset_s = *args.time_offset_s;
-  for (const std::string& s : args.settings) eval::set_option(options, s);
+  for (const std::string& s : args.settings) {
+    // One place for the offset: a --set after --time-offset won silently, in either order.
+    if (args.time_offset_s && s.rfind("time_offset_s=", 0) == 0) {
+      throw InvalidInputError("--set " + s + ": conflicts with --time-offset " +
+                              format_double_exact(*args.time_offset_s) + "; give one of them");
+    }
+    eval::set_option(options, s);
+  }
   if (args.output.empty() && is_pipe(args.input)) {
     throw InvalidInputError(args.input +
                             ": a trajectory read from a pipe has no folder to write the "

@@ -449,6 +449,13 @@ TEST(EvalCommand, AlignNoneAndTimeOffset) {
   const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "late_out" / "metrics.json"));
   EXPECT_LT(m["trajectory"]["ate_rmse_m"].get<double>(), 1e-6);
   EXPECT_EQ(m["thresholds"]["time_offset_s"], -0.03);
+  // The offset given twice (flag and --set): the later one won silently, in either order.
+  r = wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
+                   " --time-offset -0.03 --set time_offset_s=0.5 -o " + (dir / "twice").string(),
+               dir);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("conflicts with --time-offset"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "twice"));
   fs::remove_all(dir);
 }
 

@@ -202,6 +202,11 @@ TEST(EvalOptions, SetAndValidate) {
             std::string::npos);
   EXPECT_NE(error_of([&] { set_option(o, "overlap_min_fraction=2"); }).find("overlap_min_fraction"),
             std::string::npos);
+  // Stamps are 64-bit nanoseconds: beyond these a difference or an offset overflowed them.
+  EXPECT_NE(error_of([&] { set_option(o, "max_time_difference_s=1e10"); }).find("(0, 1e6]"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { set_option(o, "time_offset_s=5e9"); }).find("[-1e9, 1e9]"),
+            std::string::npos);
   EXPECT_NE(error_of([&] { set_option(o, "rpe_delta_m=abc"); }).find("expected a finite number"),
             std::string::npos);
   EXPECT_NE(error_of([&] { set_option(o, "episode_max_gap_keyframes=1.5"); }).find("integer"),

@@ -42,6 +42,19 @@ TEST(SlamOptions, SetFrontendConflictingWithFrontendIsRefused) {
   EXPECT_EQ(o.frontend, "orbslam");
 }
 
+// A floor above 0 dBm weighted no AP and one far below every receiver weighted all alike: either
+// turned Wi-Fi clustering off without a word.
+TEST(SlamOptions, WifiFloorOutsideReceivedPowersIsRefused) {
+  for (const char* bad : {"wifi_floor_dbm=50", "wifi_floor_dbm=-1e300", "wifi_floor_dbm=0.5"}) {
+    SlamOptions o;
+    set_option_assignment(o, bad);
+    EXPECT_THROW(validate(o), InvalidInputError) << bad;
+  }
+  SlamOptions o;
+  set_option_assignment(o, "wifi_floor_dbm=-110");
+  EXPECT_NO_THROW(validate(o));
+}
+
 TEST(SlamOptions, RefusesABadKernelOrPruningScheduleNamingIt) {
   for (const char* bad : {"robust_kernel=tukey", "prune_chi2=5,,1", "prune_chi2=5,-1",
                           "prune_chi2=abc", "prune_chi2=nan", "robust_kernel_chi2=0"}) {
