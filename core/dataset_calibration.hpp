@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/camera_intrinsics.hpp"
+#include "core/dataset_format.hpp"
 #include "core/pose.hpp"
 
 namespace wifislam {
@@ -44,7 +45,7 @@ struct ImuCalibration {
 struct DatasetCalibration {
   CameraIntrinsics intrinsics;
   double camera_fps = 30.0;
-  double depth_units_per_metre = 5000.0;
+  double depth_units_per_metre = dataset::kDepthUnitsPerMetre;
   Pose camera_in_base = Pose::Identity();  // camera optical frame in the robot base frame
   std::optional<double> odometry_rate_hz;
   std::optional<ImuCalibration> imu;

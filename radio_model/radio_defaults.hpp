@@ -16,7 +16,8 @@ inline constexpr double kBssidSpreadDb = 0.5;
 inline constexpr double kPeopleDisturbanceDb = 0.0;
 /// Typical 802.11 receiver floor for beacons at 1 Mb/s.
 inline constexpr double kSensitivityDbm = -92.0;
-/// Passive-scan dwell per channel: one 102.4 ms beacon interval.
+/// Passive-scan dwell per channel: 100 ms, just under one 102.4 ms beacon interval, so a dwell
+/// does not always catch an AP's beacon (wifi_scanner.cpp draws whether it does).
 inline constexpr double kDwellPerChannelS = 0.1;
 
 }  // namespace wifislam::radio_model::defaults

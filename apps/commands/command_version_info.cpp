@@ -11,8 +11,10 @@
 #include <geos_c.h>
 #include <ogr_srs_api.h>
 #include <openssl/crypto.h>
+#include <png.h>
 #include <spdlog/version.h>
 #include <sqlite3.h>
+#include <zlib.h>
 #include <CLI/Version.hpp>
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
@@ -52,6 +54,9 @@ void print_versions() {
   fmt::print("SQLite     {}\n", sqlite3_libversion());
   fmt::print("cairo      {}\n", cairo_version_string());
   fmt::print("OpenSSL    {}\n", OpenSSL_version(OPENSSL_VERSION));
+  // libpng and zlib write every PNG of a dataset: their versions decide its bytes.
+  fmt::print("libpng     {}\n", png_get_libpng_ver(nullptr));
+  fmt::print("zlib       {}\n", zlibVersion());
   fmt::print("nlohmann   {}.{}.{}\n", NLOHMANN_JSON_VERSION_MAJOR, NLOHMANN_JSON_VERSION_MINOR,
              NLOHMANN_JSON_VERSION_PATCH);
   fmt::print("fmt        {}.{}.{}\n", FMT_VERSION / 10000, FMT_VERSION / 100 % 100,

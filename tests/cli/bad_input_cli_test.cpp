@@ -243,6 +243,20 @@ TEST_F(BadInput, ArgumentErrorsExitTwoWithAUsageMessage) {
   EXPECT_EQ(wifislam("--version").exit_code, 0);
 }
 
+// `info` names every library whose version can change a result, each with a version: libpng and
+// zlib write the PNGs whose bytes the datasets promise, and were missing.
+TEST_F(BadInput, InfoGivesEveryLibrarysVersion) {
+  const auto r = wifislam("info");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* library : {"OpenCV", "Embree", "Ceres", "Eigen", "CGAL", "GDAL", "PROJ", "GEOS",
+                              "SQLite", "cairo", "OpenSSL", "libpng", "zlib", "nlohmann", "fmt"}) {
+    const std::size_t at = r.out.find(std::string("\n") + library + " ");
+    ASSERT_NE(at, std::string::npos) << library << "\n" << r.out;
+    const std::string line = r.out.substr(at + 1, r.out.find('\n', at + 1) - at - 1);
+    EXPECT_NE(line.find_first_of("0123456789"), std::string::npos) << line;
+  }
+}
+
 // Issue 44: `--sweep min_matches=10 --sweep min_matches=20` ran one setting labelled with both
 // values (the last won), and a key both --set and swept likewise; a swept value long enough to
 // make a run folder's name exceed 255 bytes lost the whole comparison (exit 3).

@@ -19,7 +19,6 @@
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
 #include "study/recorded_dataset.hpp"
-#include "tests/cli/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 #include "tests/support/scratch_folder.hpp"
 
