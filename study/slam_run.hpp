@@ -1,8 +1,8 @@
 #pragma once
 // A SLAM run of a dataset folder or a scene file into a run folder: what `wifislam slam` does,
 // in one place for the command line and the Python module (python/). Our front ends read the
-// input through sim::generate::open_sensor_input; an external system (`external:X`) is run on a dataset
-// folder from its system file (interop/external_run.hpp).
+// input through sim::generate::open_sensor_input; an external system (`external:X`) is run on a
+// dataset folder from its system file (interop/external_run.hpp).
 
 #include <cstdint>
 #include <filesystem>
