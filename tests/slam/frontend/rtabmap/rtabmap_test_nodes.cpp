@@ -1,4 +1,4 @@
-#include "tests/slam/frontend/rtabmap_test_nodes.hpp"
+#include "tests/slam/frontend/rtabmap/rtabmap_test_nodes.hpp"
 
 namespace wifislam::test {
 

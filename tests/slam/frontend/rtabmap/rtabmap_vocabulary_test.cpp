@@ -7,7 +7,7 @@
 
 #include "slam/frontend/rtabmap/likelihood.hpp"
 #include "slam/frontend/rtabmap/visual_vocabulary.hpp"
-#include "tests/slam/frontend/rtabmap_test_nodes.hpp"
+#include "tests/slam/frontend/rtabmap/rtabmap_test_nodes.hpp"
 
 namespace wifislam::slam::frontend::rtabmap {
 namespace {

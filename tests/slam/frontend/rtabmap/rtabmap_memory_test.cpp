@@ -10,7 +10,7 @@
 
 #include "core/error.hpp"
 #include "slam/frontend/rtabmap/bayes_filter.hpp"
-#include "tests/slam/frontend/rtabmap_test_nodes.hpp"
+#include "tests/slam/frontend/rtabmap/rtabmap_test_nodes.hpp"
 
 namespace wifislam::slam {
 namespace {
