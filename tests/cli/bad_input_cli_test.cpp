@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 
 namespace wifislam {
 namespace {

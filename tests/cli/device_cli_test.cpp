@@ -12,7 +12,7 @@
 
 #include "core/dataset_calibration.hpp"
 #include "core/wifi_csv.hpp"
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

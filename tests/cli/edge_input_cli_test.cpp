@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

@@ -26,8 +26,8 @@
 #include "core/dataset_calibration.hpp"
 #include "core/timestamp.hpp"
 #include "core/tum_file_list.hpp"
-#include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

@@ -30,8 +30,8 @@
 #include "core/tum_file_list.hpp"
 #include "core/tum_trajectory.hpp"
 #include "core/wifi_csv.hpp"
-#include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

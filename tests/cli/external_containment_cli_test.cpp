@@ -19,8 +19,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

@@ -18,8 +18,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 #include "tests/support/scratch_folder.hpp"
 

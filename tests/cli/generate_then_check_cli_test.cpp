@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

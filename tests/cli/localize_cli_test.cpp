@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 #include "tests/support/upstairs_scene.hpp"
 

@@ -20,7 +20,7 @@
 #include <string>
 #include <system_error>
 
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 
 namespace wifislam::test {
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "tests/cli/cli_run.hpp"
 #include "tests/cli/shared_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "tests/cli/cli_run.hpp"
 #include "tests/floorplan/shipped_plans.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam {

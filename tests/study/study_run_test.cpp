@@ -17,7 +17,7 @@
 #include "study/result_store.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam::study {

@@ -6,7 +6,7 @@
 
 #include "core/atomic_file.hpp"
 #include "slam/bow/vocabulary_tree.hpp"
-#include "tests/cli/cli_run.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam::slam::bow {
