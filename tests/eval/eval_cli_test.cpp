@@ -1,10 +1,7 @@
 // `wifislam eval` end to end: a real small run (generate -> slam -> eval through the command
 // line), a Wi-Fi cluster plot from a hand-written wifi_clusters.csv, and bad input.
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -13,33 +10,16 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/eval/ladder_dataset.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/scratch_folder.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
+using wifislam::test::CliResult;
+using wifislam::test::run_wifislam;
 
 fs::path scratch(const std::string& name) { return wifislam::test::scratch_folder(name); }
-
-struct Result {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-Result wifislam(const std::string& args, const fs::path& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command =
-      std::string(WIFISLAM_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
-  Result r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::stringstream o, e;
-  o << std::ifstream(out).rdbuf();
-  e << std::ifstream(err).rdbuf();
-  r.out = o.str();
-  r.err = e.str();
-  return r;
-}
 
 std::string fmt_stamp(double t) {
   char buf[64];
@@ -111,16 +91,16 @@ bool generate_and_run(const fs::path& dir) {
   fs::create_directories(dir);
   std::ofstream(dir / "small.yaml") << kSmallLoop;
   const std::string ds = (dir / "ds").string();
-  return wifislam("generate " + (dir / "small.yaml").string() + " --fps 2 -q -o " + ds, dir)
+  return run_wifislam("generate " + (dir / "small.yaml").string() + " --fps 2 -q -o " + ds, dir)
                  .exit_code == 0 &&
-         wifislam("slam " + ds + " -o " + (dir / "run").string(), dir).exit_code == 0;
+         run_wifislam("slam " + ds + " -o " + (dir / "run").string(), dir).exit_code == 0;
 }
 
 TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
   const fs::path dir = scratch("real");
   ASSERT_TRUE(generate_and_run(dir));
   const fs::path ds = dir / "ds", run = dir / "run";
-  const Result r = wifislam(
+  const CliResult r = run_wifislam(
       "eval " + run.string() + " --gt " + ds.string() + " --set revisit_min_path_m=8", dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("ATE RMSE"), std::string::npos) << r.out;
@@ -184,7 +164,7 @@ TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
   ASSERT_TRUE(generate_and_run(dir));
   const fs::path ds = dir / "ds", run = dir / "run";
   const std::string eval = "eval " + run.string() + " --gt " + ds.string() + " --no-plots -o ";
-  const Result plain = wifislam(eval + (dir / "plain").string(), dir);
+  const CliResult plain = run_wifislam(eval + (dir / "plain").string(), dir);
   ASSERT_EQ(plain.exit_code, 0) << plain.err;
   std::ifstream metrics_file(dir / "plain" / "metrics.json");
   const nlohmann::json metrics = nlohmann::json::parse(metrics_file);
@@ -192,13 +172,14 @@ TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
   ASSERT_GT(ate, 0.0);
 
   // Met: exit 0 and says so.
-  const Result met = wifislam(eval + (dir / "met").string() + " --require 'ate_rmse_m<=" +
-                                  std::to_string(ate * 2) + "' --require 'frames_associated>=10'",
-                              dir);
+  const CliResult met = run_wifislam(eval + (dir / "met").string() +
+                                         " --require 'ate_rmse_m<=" + std::to_string(ate * 2) +
+                                         "' --require 'frames_associated>=10'",
+                                     dir);
   EXPECT_EQ(met.exit_code, 0) << met.err;
   EXPECT_NE(met.out.find("requirement        met: ate_rmse_m = "), std::string::npos) << met.out;
   // Not met: exit 6, the outputs written all the same, the miss named with its size.
-  const Result missed = wifislam(
+  const CliResult missed = run_wifislam(
       eval + (dir / "missed").string() + " --require 'ate_rmse_m<=" + std::to_string(ate / 2) + "'",
       dir);
   EXPECT_EQ(missed.exit_code, 6) << missed.err;
@@ -207,16 +188,16 @@ TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
   EXPECT_NE(missed.err.find("1 of 1 requirements not met"), std::string::npos) << missed.err;
   EXPECT_TRUE(fs::exists(dir / "missed" / "metrics.json"));
   // A bare trajectory has no loop closures: a requirement on them is not met.
-  const Result bare = wifislam("eval " + (run / "trajectory.txt").string() + " --gt " +
-                                   ds.string() + " --no-plots -o " + (dir / "bare").string() +
-                                   " --require 'online_wrong_place==0'",
-                               dir);
+  const CliResult bare = run_wifislam(
+      "eval " + (run / "trajectory.txt").string() + " --gt " + ds.string() + " --no-plots -o " +
+          (dir / "bare").string() + " --require 'online_wrong_place==0'",
+      dir);
   EXPECT_EQ(bare.exit_code, 6) << bare.err;
   EXPECT_NE(bare.out.find("not available"), std::string::npos) << bare.out;
   // Malformed or unknown: exit 2 before anything is written.
   for (const char* bad : {"ate_rmse_m<=abc", "ate_rms_m<=1", "ate_rmse_m"}) {
     const fs::path out = dir / "bad";
-    const Result r = wifislam(eval + out.string() + " --require '" + bad + "'", dir);
+    const CliResult r = run_wifislam(eval + out.string() + " --require '" + bad + "'", dir);
     EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.err;
     EXPECT_NE(r.err.find(bad), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << bad;
@@ -224,11 +205,11 @@ TEST(EvalCommand, RequirementsMakeARegressionTestWithItsOwnExitCode) {
   // A ground truth edited after generation is refused against manifest.json, and scored with
   // --no-verify (as `slam --no-verify` reads such a dataset).
   std::ofstream(ds / "groundtruth.txt", std::ios::app) << "# edited\n";
-  const Result edited = wifislam(eval + (dir / "edited").string(), dir);
+  const CliResult edited = run_wifislam(eval + (dir / "edited").string(), dir);
   EXPECT_EQ(edited.exit_code, 2) << edited.err;
   EXPECT_NE(edited.err.find("manifest mismatch"), std::string::npos) << edited.err;
   EXPECT_FALSE(fs::exists(dir / "edited"));
-  const Result unverified = wifislam(eval + (dir / "edited").string() + " --no-verify", dir);
+  const CliResult unverified = run_wifislam(eval + (dir / "edited").string() + " --no-verify", dir);
   EXPECT_EQ(unverified.exit_code, 0) << unverified.err;
   fs::remove_all(dir);
 }
@@ -241,9 +222,9 @@ TEST(EvalCommand, WifiRunGetsClusterPlot) {
       << "cluster_id,founder_keyframe,keyframes,representative_signature\n"
          "0,0,0 1 2 3 4,02:1a:11:00:00:30=-61.5;02:1a:11:00:00:40=-70\n"
          "1,5,5 6 7 8 9 10,02:1a:11:00:00:50=-55\n";
-  const Result r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
-                                " -o " + (dir / "out").string(),
-                            dir);
+  const CliResult r = run_wifislam("eval " + run.run_dir.string() + " --gt " +
+                                       run.dataset_dir.string() + " -o " + (dir / "out").string(),
+                                   dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(is_png(dir / "out" / "wifi_clusters.png"));
   EXPECT_TRUE(is_svg(dir / "out" / "wifi_clusters.svg"));
@@ -260,18 +241,18 @@ TEST(EvalCommand, WifiRunIsWhatRunJsonSays) {
   const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
   // A stray clusters file in a vanilla run is not read.
   std::ofstream(run.run_dir / "wifi_clusters.csv") << "not,a,clusters,file\n";
-  Result r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
-                          " --no-plots -o " + (dir / "vanilla").string(),
-                      dir);
+  CliResult r = run_wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
+                                 " --no-plots -o " + (dir / "vanilla").string(),
+                             dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "vanilla" / "metrics.json"));
   EXPECT_EQ(m["wifi_run"], false);
   // A Wi-Fi run without its clusters file is an error naming the file.
   fs::remove(run.run_dir / "wifi_clusters.csv");
   std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam", "wifi": true})";
-  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
-                   (dir / "wifi").string(),
-               dir);
+  r = run_wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
+                       (dir / "wifi").string(),
+                   dir);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("wifi_clusters.csv"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "wifi"));
@@ -280,25 +261,25 @@ TEST(EvalCommand, WifiRunIsWhatRunJsonSays) {
       << "cluster_id,founder_keyframe,keyframes,representative_signature\n"
          "0,0,0 1 2,02:1a:11:00:00:30=-61.5\n";
   std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam+wifi"})";
-  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
-                   " --no-plots -o " + (dir / "v1").string(),
-               dir);
+  r = run_wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() +
+                       " --no-plots -o " + (dir / "v1").string(),
+                   dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json v1 = nlohmann::json::parse(std::ifstream(dir / "v1" / "metrics.json"));
   EXPECT_EQ(v1["wifi_run"], true);
   EXPECT_EQ(v1["frontend"], "rgbdslam");
   // A run folder from a newer format is refused, naming the key.
   std::ofstream(run.run_dir / "run.json") << R"({"format_version": 99, "frontend": "rgbdslam"})";
-  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
-                   (dir / "v99").string(),
-               dir);
+  r = run_wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
+                       (dir / "v99").string(),
+                   dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("format_version"), std::string::npos) << r.err;
   // A wrongly typed flag is located.
   std::ofstream(run.run_dir / "run.json") << R"({"frontend": "rgbdslam", "wifi": "yes"})";
-  r = wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
-                   (dir / "typed").string(),
-               dir);
+  r = run_wifislam("eval " + run.run_dir.string() + " --gt " + run.dataset_dir.string() + " -o " +
+                       (dir / "typed").string(),
+                   dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("run.json"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("wifi"), std::string::npos) << r.err;
@@ -316,7 +297,7 @@ TEST(EvalCommand, BadInputFailsWithoutOutput) {
   const fs::path trajectory = run.run_dir / "trajectory.txt";
   fs::copy_file(trajectory, dir / "trajectory.good");
   { std::ofstream(trajectory, std::ios::app) << "999.000000 nan 0 0 0 0 0 1\n"; }
-  Result r = wifislam(args, dir);
+  CliResult r = run_wifislam(args, dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("trajectory.txt:"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
@@ -325,20 +306,20 @@ TEST(EvalCommand, BadInputFailsWithoutOutput) {
 
   // Missing ground truth.
   fs::rename(run.dataset_dir / "groundtruth.txt", dir / "groundtruth.txt");
-  r = wifislam(args, dir);
+  r = run_wifislam(args, dir);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find("groundtruth.txt"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
   fs::rename(dir / "groundtruth.txt", run.dataset_dir / "groundtruth.txt");
 
   // Unknown threshold.
-  r = wifislam(args + " --set overlap_fraction=0.3", dir);
+  r = run_wifislam(args + " --set overlap_fraction=0.3", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("overlap_fraction"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 
   // Unknown alignment.
-  r = wifislam(args + " --align similarity", dir);
+  r = run_wifislam(args + " --align similarity", dir);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--align"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
@@ -347,7 +328,7 @@ TEST(EvalCommand, BadInputFailsWithoutOutput) {
   std::ofstream(run.run_dir / "graph.json")
       << R"({"edges": [{"from": 0, "to": 1, "type": "odometry", "from_to": {"t": [0, 0, 0],
          "q_xyzw": [0, 0, 0, 1]}}, {"from": 0, "to": 40, "type": "loop"}]})";
-  r = wifislam(args, dir);
+  r = run_wifislam(args, dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("graph.json"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("edges[1].from_to"), std::string::npos) << r.err;
@@ -356,7 +337,7 @@ TEST(EvalCommand, BadInputFailsWithoutOutput) {
   fs::remove(run.run_dir / "graph.json");
 
   // And the repaired folder evaluates.
-  r = wifislam(args, dir);
+  r = run_wifislam(args, dir);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_TRUE(fs::exists(out / "metrics.json"));
   fs::remove_all(dir);
@@ -369,7 +350,7 @@ TEST(EvalCommand, BareTrajectoryFileGetsTrajectoryTablesOnly) {
   const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
   const fs::path file = dir / "CameraTrajectory.txt";
   fs::copy_file(run.run_dir / "trajectory.txt", file);
-  Result r = wifislam("eval " + file.string() + " --gt " + run.dataset_dir.string(), dir);
+  CliResult r = run_wifislam("eval " + file.string() + " --gt " + run.dataset_dir.string(), dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("not available"), std::string::npos) << r.out;
   const fs::path out = dir / "CameraTrajectory_eval";
@@ -393,7 +374,8 @@ TEST(EvalCommand, BareTrajectoryFileGetsTrajectoryTablesOnly) {
   const fs::path only = dir / "only_trajectory";
   fs::create_directories(only);
   fs::copy_file(file, only / "trajectory.txt");
-  r = wifislam("eval " + only.string() + " --gt " + run.dataset_dir.string() + " --no-plots", dir);
+  r = run_wifislam("eval " + only.string() + " --gt " + run.dataset_dir.string() + " --no-plots",
+                   dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json m2 = nlohmann::json::parse(std::ifstream(only / "eval" / "metrics.json"));
   EXPECT_EQ(m2["loop_closures"]["available"], false);
@@ -407,9 +389,9 @@ TEST(EvalCommand, AlignNoneAndTimeOffset) {
   const wifislam::test::LadderRun run = wifislam::test::build_ladder_run(dir, false);
   const fs::path file = run.run_dir / "trajectory.txt";
   auto ate = [&](const std::string& options, const std::string& name) {
-    const Result r = wifislam("eval " + file.string() + " --gt " + run.dataset_dir.string() +
-                                  " --no-plots -o " + (dir / name).string() + " " + options,
-                              dir);
+    const CliResult r = run_wifislam("eval " + file.string() + " --gt " + run.dataset_dir.string() +
+                                         " --no-plots -o " + (dir / name).string() + " " + options,
+                                     dir);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / name / "metrics.json"));
     EXPECT_EQ(m["trajectory"]["alignment"]["mode"],
@@ -436,23 +418,24 @@ TEST(EvalCommand, AlignNoneAndTimeOffset) {
     late << fmt_stamp(t + 0.03) << rest << "\n";
   }
   late.close();
-  Result r = wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
-                          " -o " + (dir / "late_out").string(),
-                      dir);
+  CliResult r = run_wifislam("eval " + (dir / "late.txt").string() + " --gt " +
+                                 run.dataset_dir.string() + " -o " + (dir / "late_out").string(),
+                             dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("share a timestamp"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "late_out"));
-  r = wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
-                   " --time-offset -0.03 --no-plots -o " + (dir / "late_out").string(),
-               dir);
+  r = run_wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
+                       " --time-offset -0.03 --no-plots -o " + (dir / "late_out").string(),
+                   dir);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json m = nlohmann::json::parse(std::ifstream(dir / "late_out" / "metrics.json"));
   EXPECT_LT(m["trajectory"]["ate_rmse_m"].get<double>(), 1e-6);
   EXPECT_EQ(m["thresholds"]["time_offset_s"], -0.03);
   // The offset given twice (flag and --set): the later one won silently, in either order.
-  r = wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
-                   " --time-offset -0.03 --set time_offset_s=0.5 -o " + (dir / "twice").string(),
-               dir);
+  r = run_wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
+                       " --time-offset -0.03 --set time_offset_s=0.5 -o " +
+                       (dir / "twice").string(),
+                   dir);
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("conflicts with --time-offset"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "twice"));

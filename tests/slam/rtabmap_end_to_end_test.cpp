@@ -2,12 +2,8 @@
 // the run folder is complete (rtabmap_memory.csv one row per node, memory totals in run.json) and
 // `wifislam eval` accepts it.
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -21,25 +17,13 @@
 #include "slam/frontend/rtabmap/rtabmap_memory_csv.hpp"
 #include "tests/cli/shared_dataset.hpp"
 #include "tests/slam/slam_test_scene.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
 namespace {
 
 namespace fs = std::filesystem;
-
-int wifislam_cli(const std::string& args, const fs::path& dir) {
-  const std::string command =
-      std::string(WIFISLAM_BINARY) + " " + args + " >>" + (dir / "out.txt").string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-std::string log_of(const fs::path& dir) {
-  std::stringstream s;
-  s << std::ifstream(dir / "out.txt").rdbuf();
-  return s.str();
-}
 
 class RtabmapEndToEnd : public ::testing::Test {
  protected:
@@ -50,14 +34,13 @@ class RtabmapEndToEnd : public ::testing::Test {
   }
 
   void run_and_check(bool wifi) {
-    ASSERT_TRUE(generated_) << log_of(dir_);
+    ASSERT_TRUE(generated_) << "the shared dataset was not generated";
     const fs::path run = dir_ / (wifi ? "run_wifi" : "run_vanilla");
-    ASSERT_EQ(
-        wifislam_cli("slam " + dataset_.string() + " --frontend rtabmap" + (wifi ? " --wifi" : "") +
-                         " --set max_keypoints=500 -o " + run.string(),
-                     dir_),
-        0)
-        << log_of(dir_);
+    const test::CliResult slam = test::run_wifislam(
+        "slam " + dataset_.string() + " --frontend rtabmap" + (wifi ? " --wifi" : "") +
+            " --set max_keypoints=500 -o " + run.string(),
+        dir_);
+    ASSERT_EQ(slam.exit_code, 0) << slam.err;
     namespace rf = run_folder;
     for (const char* f :
          {rf::kTrajectory, rf::kKeyframes, rf::kGraph, rf::kLoopClosures, rf::kTiming, rf::kRun,
@@ -157,11 +140,10 @@ class RtabmapEndToEnd : public ::testing::Test {
   /// eval accepts the run folder and scores it: no wrong-place closure on this loop.
   static void check_eval(const fs::path& run, bool wifi, const nlohmann::json& j, int keyframes) {
     namespace rf = run_folder;
-    ASSERT_EQ(wifislam_cli("eval " + run.string() + " --gt " + dataset_.string() +
-                               " --set revisit_min_path_m=8",
-                           dir_),
-              0)
-        << log_of(dir_);
+    const test::CliResult eval = test::run_wifislam(
+        "eval " + run.string() + " --gt " + dataset_.string() + " --set revisit_min_path_m=8",
+        dir_);
+    ASSERT_EQ(eval.exit_code, 0) << eval.err;
     const nlohmann::json m = nlohmann::json::parse(std::ifstream(run / "eval" / "metrics.json"));
     std::printf("rtabmap%s: %d keyframes, ATE RMSE %.3f m, loop closures online: %s\n",
                 wifi ? "+wifi" : "", keyframes, m["trajectory"]["ate_rmse_m"].get<double>(),

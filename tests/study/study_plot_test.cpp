@@ -13,6 +13,7 @@
 #include <sstream>
 #include <utility>
 
+#include "core/median.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
@@ -46,12 +47,6 @@ std::vector<std::vector<std::string>> read_csv(const fs::path& path) {
 bool is_png(const fs::path& path) {
   const std::string bytes = test::read_file(path);
   return bytes.size() > 1000 && bytes.compare(0, 4, "\x89PNG") == 0;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 TEST(StudyPlot, CurvesAreTheDatabaseMediansOverSeedsWithALinePerPlacement) {

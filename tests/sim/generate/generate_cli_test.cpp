@@ -2,41 +2,15 @@
 // a non-zero exit, and nothing is written.
 #include <gtest/gtest.h>
 
-#include <sys/wait.h>
-#include <cstdlib>
-
 #include "core/dataset_format.hpp"
 #include "tests/sim/generate/test_scene.hpp"
+#include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
 
 namespace wifislam::sim {
 namespace {
 
 namespace fs = std::filesystem;
-
-struct RunResult {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-RunResult run(const std::string& args, const fs::path& scratch) {
-  const fs::path out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string command =
-      std::string(WIFISLAM_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
-  RunResult r;
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = test::read_file(out);
-  r.err = test::read_file(err);
-  return r;
-}
-
-std::vector<std::string> listing(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::recursive_directory_iterator(dir)) names.push_back(e.path().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
 
 class GenerateCli : public ::testing::Test {
  protected:
@@ -50,9 +24,10 @@ class GenerateCli : public ::testing::Test {
   // A short dataset to damage.
   fs::path make_dataset(const std::string& name) {
     const fs::path dir = scratch_ / name;
-    const RunResult r = run("generate " + scene_.string() + " -o " + dir.string() +
-                                " --fps 5 --max-frames 12 --threads 2 -q",
-                            scratch_);
+    const test::CliResult r =
+        test::run_wifislam("generate " + scene_.string() + " -o " + dir.string() +
+                               " --fps 5 --max-frames 12 --threads 2 -q",
+                           scratch_);
     EXPECT_EQ(r.exit_code, 0) << r.err;
     return dir;
   }
@@ -61,14 +36,14 @@ class GenerateCli : public ::testing::Test {
 
 TEST_F(GenerateCli, GeneratesADatasetThatCheckAccepts) {
   const fs::path dir = make_dataset("ok");
-  const RunResult r = run("check " + dir.string(), scratch_);
+  const test::CliResult r = test::run_wifislam("check " + dir.string(), scratch_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("frames 12"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("all files match"), std::string::npos) << r.out;
 }
 
 TEST_F(GenerateCli, HelpExplainsHowToLowerTheFrameRate) {
-  const RunResult r = run("generate --help", scratch_);
+  const test::CliResult r = test::run_wifislam("generate --help", scratch_);
   EXPECT_EQ(r.exit_code, 0);
   EXPECT_NE(r.out.find("--fps"), std::string::npos);
   EXPECT_NE(r.out.find("fewer frames"), std::string::npos) << r.out;
@@ -80,7 +55,8 @@ TEST_F(GenerateCli, BadSceneFailsAndWritesNothing) {
   yaml.replace(yaml.find("width_m: 2.0"), 12, "widht_m: 2.0");
   test::write_text(bad, yaml);
   const fs::path out = scratch_ / "never";
-  const RunResult r = run("generate " + bad.string() + " -o " + out.string(), scratch_);
+  const test::CliResult r =
+      test::run_wifislam("generate " + bad.string() + " -o " + out.string(), scratch_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("bad.yaml"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("widht_m"), std::string::npos) << r.err;
@@ -92,8 +68,8 @@ TEST_F(GenerateCli, BadSceneFailsAndWritesNothing) {
 TEST_F(GenerateCli, ZeroMaxFramesIsRefusedNotADatasetCheckRefuses) {
   for (const std::string command : {"generate", "compare"}) {
     const fs::path out = scratch_ / ("zero_" + command);
-    const RunResult r =
-        run(command + " " + scene_.string() + " -o " + out.string() + " --max-frames 0", scratch_);
+    const test::CliResult r = test::run_wifislam(
+        command + " " + scene_.string() + " -o " + out.string() + " --max-frames 0", scratch_);
     EXPECT_EQ(r.exit_code, 2) << command << ": " << r.err;
     EXPECT_NE(r.err.find("--max-frames"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << command;
@@ -107,9 +83,9 @@ TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
   fs::create_directories(mine);
   test::write_text(mine / "keep.txt", "mine");
   for (const char* force : {"", " --force"}) {
-    const RunResult r =
-        run("generate " + scene_.string() + " -o " + mine.string() + " --max-frames 3 -q" + force,
-            scratch_);
+    const test::CliResult r = test::run_wifislam(
+        "generate " + scene_.string() + " -o " + mine.string() + " --max-frames 3 -q" + force,
+        scratch_);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("does not look like wifislam output"), std::string::npos) << r.err;
     EXPECT_EQ(test::read_file(mine / "keep.txt"), "mine");
@@ -117,13 +93,14 @@ TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
   // A dataset is replaced with --force only.
   const fs::path out = make_dataset("dataset");
   const std::string manifest = test::read_file(out / dataset::kManifest);
-  RunResult r =
-      run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3", scratch_);
+  test::CliResult r = test::run_wifislam(
+      "generate " + scene_.string() + " -o " + out.string() + " --max-frames 3", scratch_);
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("--force"), std::string::npos) << r.err;
   EXPECT_EQ(test::read_file(out / dataset::kManifest), manifest);
-  r = run("generate " + scene_.string() + " -o " + out.string() + " --max-frames 3 --force -q",
-          scratch_);
+  r = test::run_wifislam(
+      "generate " + scene_.string() + " -o " + out.string() + " --max-frames 3 --force -q",
+      scratch_);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(test::read_file(out / dataset::kManifest), manifest);
 }
@@ -131,12 +108,12 @@ TEST_F(GenerateCli, ExistingOutputIsKeptUnlessForced) {
 // Each damage: a non-zero exit, a message naming the file, and the folder left as it was.
 void expect_check_fails(const fs::path& dir, const fs::path& scratch, const std::string& file,
                         const std::string& extra_args = "") {
-  const auto before = listing(dir);
-  const RunResult r = run("check " + dir.string() + " " + extra_args, scratch);
+  const auto before = test::listing(dir);
+  const test::CliResult r = test::run_wifislam("check " + dir.string() + " " + extra_args, scratch);
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("internal error"), std::string::npos) << r.err;
-  EXPECT_EQ(listing(dir), before);
+  EXPECT_EQ(test::listing(dir), before);
 }
 
 TEST_F(GenerateCli, TruncatedGroundTruthIsAClearError) {
@@ -169,9 +146,9 @@ TEST_F(GenerateCli, ManifestMismatchIsAClearError) {
   test::write_text(dir / dataset::kOdometry,
                    test::read_file(dir / dataset::kOdometry) + "# edit\n");
   expect_check_fails(dir, scratch_, "odometry.txt");
-  const RunResult r = run("check " + dir.string(), scratch_);
+  const test::CliResult r = test::run_wifislam("check " + dir.string(), scratch_);
   EXPECT_NE(r.err.find("manifest mismatch"), std::string::npos) << r.err;
-  EXPECT_EQ(run("check " + dir.string() + " --no-verify", scratch_).exit_code, 0);
+  EXPECT_EQ(test::run_wifislam("check " + dir.string() + " --no-verify", scratch_).exit_code, 0);
 }
 
 // A scene without access points is a legitimate study case (no Wi-Fi): its scans hear nothing,
@@ -185,9 +162,10 @@ TEST_F(GenerateCli, ZeroAccessPointsGiveADatasetCheckAcceptsVanillaRunsAndWifiRe
   const fs::path scene = scratch_ / "no_aps.yaml";
   test::write_text(scene, yaml);
   const fs::path dataset = scratch_ / "no_aps";
-  const RunResult generated = run("generate " + scene.string() + " -o " + dataset.string() +
-                                      " --fps 2 --max-frames 40 --threads 2 -q",
-                                  scratch_);
+  const test::CliResult generated =
+      test::run_wifislam("generate " + scene.string() + " -o " + dataset.string() +
+                             " --fps 2 --max-frames 40 --threads 2 -q",
+                         scratch_);
   ASSERT_EQ(generated.exit_code, 0) << generated.err;
   const std::string manifest = test::read_file(dataset / dataset::kManifest);
   EXPECT_NE(manifest.find("\"wifi_scans\": 0"), std::string::npos) << manifest;
@@ -195,14 +173,14 @@ TEST_F(GenerateCli, ZeroAccessPointsGiveADatasetCheckAcceptsVanillaRunsAndWifiRe
       << "the route should pause and scan within 40 frames:\n"
       << manifest;
 
-  const RunResult checked = run("check " + dataset.string(), scratch_);
+  const test::CliResult checked = test::run_wifislam("check " + dataset.string(), scratch_);
   EXPECT_EQ(checked.exit_code, 0) << checked.err;
-  const RunResult vanilla =
-      run("slam " + dataset.string() + " -o " + (scratch_ / "vanilla").string(), scratch_);
+  const test::CliResult vanilla = test::run_wifislam(
+      "slam " + dataset.string() + " -o " + (scratch_ / "vanilla").string(), scratch_);
   EXPECT_EQ(vanilla.exit_code, 0) << vanilla.err;
   EXPECT_TRUE(fs::is_regular_file(scratch_ / "vanilla" / "trajectory.txt"));
-  const RunResult wifi =
-      run("slam " + dataset.string() + " --wifi -o " + (scratch_ / "wifi").string(), scratch_);
+  const test::CliResult wifi = test::run_wifislam(
+      "slam " + dataset.string() + " --wifi -o " + (scratch_ / "wifi").string(), scratch_);
   EXPECT_EQ(wifi.exit_code, 2) << wifi.err;
   EXPECT_NE(wifi.err.find("without a scan"), std::string::npos) << wifi.err;
   EXPECT_FALSE(fs::exists(scratch_ / "wifi"));

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "core/median.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "tests/sim/generate/test_scene.hpp"
@@ -17,11 +18,6 @@ double distance_to_segment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
   const Eigen::Vector2d ab = b - a;
   const double t = std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
   return (p - (a + t * ab)).norm();
-}
-
-double median(std::vector<double> v) {
-  std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-  return v[v.size() / 2];
 }
 
 TEST(GenerateConsistency, NoiseFreeDepthBackProjectsOntoTheWorldsWalls) {
