@@ -58,31 +58,10 @@ std::vector<std::string> csv_line_fields(const std::string& line) {
   return fields;
 }
 
-const char* kSmallLoop = R"(version: 1
-name: eval_small_loop
-description: Small square loop with unique wall looks, for the eval command test.
-seed: 91
-building: {wall_height_m: 2.8, wall_thickness_m: 0.15}
-nodes:
-  - {id: A, position_m: [0, 0]}
-  - {id: B, position_m: [7, 0]}
-  - {id: C, position_m: [7, 5]}
-  - {id: D, position_m: [0, 5]}
-corridors:
-  - {id: south, from: A, to: B, width_m: 2.0}
-  - {id: east, from: B, to: C, width_m: 2.0}
-  - {id: north, from: C, to: D, width_m: 2.0}
-  - {id: west, from: D, to: A, width_m: 2.0}
-appearance:
-  aliasing: 0.0
-  posters_per_10m: 4.0
-access_points: {placement: random, count: 8}
-route:
-  nodes: [A, B, C, D, A, B]
-  speed_mps: 0.5
-  pause: {spacing_m: [3.0, 4.0], duration_s: 1.0}
-radio: {environment: office}
-)";
+const std::string kSmallLoop = wifislam::test::square_loop_yaml(
+    {.name = "eval_small_loop",
+     .description = "Small square loop with unique wall looks, for the eval command test.",
+     .route = "A, B, C, D, A, B"});
 
 /// A fresh `dir` with the small loop generated at 2 fps (dir/ds) and run by `slam` (dir/run).
 /// False when either command failed.

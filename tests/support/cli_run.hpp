@@ -15,6 +15,7 @@
 
 #include "tests/support/read_file.hpp"
 #include "tests/support/scratch_folder.hpp"
+#include "tests/support/square_loop_scene.hpp"
 
 namespace wifislam::test {
 
@@ -61,33 +62,10 @@ inline std::vector<std::string> listing(const std::filesystem::path& dir) {
   return names;
 }
 
-/// A small square loop (7 x 5 m) with distinct walls: a world, a renderer and a radio model build
-/// in well under a second, and 12 frames at 2 fps give SLAM and eval a short real run.
-inline const char* kTinyLoopYaml = R"(version: 1
-name: cli_tiny_loop
-description: Small square loop for command-line tests.
-seed: 91
-building: {wall_height_m: 2.8, wall_thickness_m: 0.15}
-nodes:
-  - {id: A, position_m: [0, 0]}
-  - {id: B, position_m: [7, 0]}
-  - {id: C, position_m: [7, 5]}
-  - {id: D, position_m: [0, 5]}
-corridors:
-  - {id: south, from: A, to: B, width_m: 2.0}
-  - {id: east, from: B, to: C, width_m: 2.0}
-  - {id: north, from: C, to: D, width_m: 2.0}
-  - {id: west, from: D, to: A, width_m: 2.0}
-appearance:
-  aliasing: 0.0
-  posters_per_10m: 4.0
-access_points: {placement: random, count: 8}
-route:
-  nodes: [A, B, C, D, A]
-  speed_mps: 0.5
-  pause: {spacing_m: [3.0, 4.0], duration_s: 1.0}
-radio: {environment: office}
-)";
+/// A small square loop (7 x 5 m) with distinct walls; 12 frames at 2 fps give SLAM and eval a short
+/// real run.
+inline const std::string kTinyLoopYaml = square_loop_yaml(
+    {.name = "cli_tiny_loop", .description = "Small square loop for command-line tests."});
 
 /// The tiny loop's text with `from` replaced by `to` (which must occur in it).
 inline std::string tiny_loop_yaml_with(const std::string& from, const std::string& to) {
