@@ -1,19 +1,15 @@
 // The whole pipeline on frames streamed from the generator (real renders, Kinect-like depth
-// noise): loop closure on a small unambiguous loop, determinism, and a plain TUM folder without
-// Wi-Fi through the command line.
+// noise): loop closure on a small unambiguous loop and determinism. A plain TUM folder through
+// the command line is in tum_folder_cli_test.cpp.
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <numbers>
 
 #include <nlohmann/json.hpp>
 
-#include "core/tum_trajectory.hpp"
-#include "sim/generate/dataset_writer.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
@@ -254,41 +250,6 @@ TEST(RgbdslamEndToEnd, AnotherFrontEndRunsWithTheWifiModule) {
     }
     return verified;
   }());
-}
-
-TEST(RgbdslamEndToEnd, RunsOnAPlainTumFolderWithoutWifi) {
-  const fs::path root = test::scratch_folder();
-  const fs::path generated = root / "generated";
-  sim::generate::GenerateOptions generate;
-  generate.fps = 5.0;
-  generate.max_frames = 40;
-  generate.threads = 1;
-  sim::generate::generate_dataset(test::small_loop_scene(), generated, generate);
-  // A plain TUM RGB-D layout: images and their lists only (no wifi.csv, odometry, calibration,
-  // manifest).
-  const fs::path tum = root / "tum";
-  fs::create_directories(tum);
-  for (const char* item : {"rgb", "depth", "rgb.txt", "depth.txt"}) {
-    fs::copy(generated / item, tum / item, fs::copy_options::recursive);
-  }
-  const fs::path run = root / "run";
-  const std::string command = std::string(WIFISLAM_BINARY) + " slam " + tum.string() +
-                              " --frontend rgbdslam --set max_keypoints=400 -o " + run.string() +
-                              " > " + (root / "stdout.txt").string() + " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  for (const char* file : {"trajectory.txt", "keyframes.txt", "graph.json", "loop_closures.csv",
-                           "timing.json", "run.json"}) {
-    EXPECT_TRUE(fs::exists(run / file)) << file;
-  }
-  EXPECT_EQ(read_tum_trajectory((run / "trajectory.txt").string()).size(), 40u);
-  std::ifstream run_json(run / "run.json");
-  const nlohmann::json j = nlohmann::json::parse(run_json);
-  EXPECT_EQ(j.at("stream").at("has_wifi"), false);
-  EXPECT_EQ(j.at("frames"), 40);
-  std::ifstream timing_json(run / "timing.json");
-  const nlohmann::json timing = nlohmann::json::parse(timing_json);
-  EXPECT_GT(timing.at("counters").at("ransac_runs").get<int>(), 0);
-  EXPECT_TRUE(timing.at("modules").contains("feature_extraction"));
 }
 
 }  // namespace

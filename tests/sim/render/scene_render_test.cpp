@@ -1,28 +1,20 @@
 // The renderer on the shipped scenes: depth agrees with Embree ray casts from random poses along
-// every scene's route, and `wifislam render` writes byte-identical files in separate processes.
+// every scene's route. `wifislam render` is tested in render_cli_test.cpp.
 
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-#include <cstdlib>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
-#include <numbers>
 #include <string>
 #include <vector>
 
-#include <fmt/core.h>
-#include <sys/wait.h>
-
 #include "core/rng.hpp"
-#include "sim/render/depth_png.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 #include "tests/sim/render/embree_depth.hpp"
-#include "tests/support/read_file.hpp"
-#include "tests/support/scratch_folder.hpp"
 
 namespace wifislam::sim {
 namespace {
@@ -77,45 +69,6 @@ TEST(SceneRender, EveryShippedSceneMatchesEmbreeFromRandomRoutePoses) {
     EXPECT_GT(compared, 6L * k.width_px * k.height_px / 2) << path;
     EXPECT_GE(fraction, 0.995) << path;
   }
-}
-
-TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
-  const fs::path dir = test::scratch_folder();
-  const fs::path scene_path = fs::path(WIFISLAM_SCENES_DIR) / "aliasing_ladder.yaml";
-  const scene::Scene scene = scene::load_scene_file(scene_path.string());
-  const world::World world = world::generate_world(scene);
-  const Eigen::Vector2d p = world.route.points_m[world.route.points_m.size() / 3];
-  const double yaw_deg =
-      world.route.heading_rad[world.route.points_m.size() / 3] * 180.0 / std::numbers::pi;
-  for (const char* name : {"a", "b"}) {
-    const std::string command =
-        fmt::format("{} render {} --pose {},{},{} -o {} > /dev/null", WIFISLAM_BINARY,
-                    scene_path.string(), p.x(), p.y(), yaw_deg, (dir / name).string());
-    ASSERT_EQ(std::system(command.c_str()), 0) << command;
-  }
-  for (const char* suffix : {"_rgb.png", "_depth.png", "_depth_color.png"}) {
-    const std::string a = test::read_file(dir.string() + "/a" + suffix);
-    EXPECT_GT(a.size(), 5000u) << suffix;
-    EXPECT_TRUE(a == test::read_file(dir.string() + "/b" + suffix)) << suffix;
-  }
-  // The depth file is a TUM depth image with readings in the sensor's range.
-  const cv::Mat depth = render::read_depth_png(dir / "a_depth.png");
-  EXPECT_EQ(depth.cols, scene.sensors.camera.intrinsics.width_px);
-  double lo = 0, hi = 0;
-  cv::minMaxLoc(depth, &lo, &hi, nullptr, nullptr, depth > 0.0f);
-  EXPECT_GE(lo, scene.sensors.depth.min_range_m - 1e-3);
-  EXPECT_LE(hi, scene.sensors.depth.max_range_m + 1e-3);
-  EXPECT_GT(cv::countNonZero(depth > 0.0f), static_cast<int>(depth.total() / 4));
-  fs::remove_all(dir);
-}
-
-TEST(SceneRender, RenderCommandRejectsAMalformedPose) {
-  const std::string command =
-      fmt::format("{} render {}/aliasing_ladder.yaml --pose 1,2 -o /tmp/x 2> /dev/null",
-                  WIFISLAM_BINARY, WIFISLAM_SCENES_DIR);
-  const int status = std::system(command.c_str());
-  ASSERT_TRUE(WIFEXITED(status));
-  EXPECT_EQ(WEXITSTATUS(status), 2);
 }
 
 }  // namespace

@@ -5,10 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "radio_model/propagation_model.hpp"
 #include "sim/generate/generation_pipeline.hpp"
@@ -17,34 +14,13 @@
 #include "sim/site/radio_options.hpp"
 #include "sim/world/radio_wall_mesh.hpp"
 #include "sim/world/world_types.hpp"
-#include "tests/support/read_file.hpp"
-#include "tests/support/scratch_folder.hpp"
+#include "tests/sim/site/loop_with_ap_seed.hpp"
 
 namespace wifislam::sim {
 namespace {
 
-// A small loop whose access points have their own placement seed, as the demo's radio map once
-// mishandled: it seeded the shadowing from access_points.seed, the dataset from the scene seed.
-constexpr const char* kLoopWithApSeed = R"(version: 1
-name: site_test
-seed: 21
-nodes:
-  - {id: A, position_m: [0, 0]}
-  - {id: B, position_m: [9, 0]}
-  - {id: C, position_m: [9, 6]}
-  - {id: D, position_m: [0, 6]}
-corridors:
-  - {id: s, from: A, to: B}
-  - {id: e, from: B, to: C}
-  - {id: n, from: C, to: D}
-  - {id: w, from: D, to: A}
-access_points: {placement: random, count: 5, seed: 4}
-route: {nodes: [A, B, C, D, A]}
-sensors: {camera: {height_m: 0.7}}
-)";
-
 TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
-  const scene::Scene scene = scene::load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
+  const scene::Scene scene = scene::load_scene_yaml(test::kLoopWithApSeed, "site_test.yaml");
   const site::Site site(scene);
   generate::GenerateOptions options;
   options.camera = sim::generate::CameraOutput::kNoImages;
@@ -72,27 +48,8 @@ TEST(Site, TheGeneratorAndASiteBuiltAloneSeeTheSameRadio) {
 }
 
 TEST(Site, TheReceiverRidesWithTheCamera) {
-  const scene::Scene scene = scene::load_scene_yaml(kLoopWithApSeed, "site_test.yaml");
+  const scene::Scene scene = scene::load_scene_yaml(test::kLoopWithApSeed, "site_test.yaml");
   EXPECT_EQ(site::Site(scene).receiver_height_m(), 0.7);
-}
-
-// `wifislam radiomap` without --height maps at the camera height, where the dataset's scans are.
-TEST(Site, RadioMapCommandDefaultsToTheCameraHeight) {
-  const std::filesystem::path dir = test::scratch_folder();
-  std::ofstream(dir / "scene.yaml") << kLoopWithApSeed;
-  auto map_csv = [&](const std::string& extra, const std::string& name) {
-    const std::string cmd = std::string(WIFISLAM_BINARY) + " radiomap " +
-                            (dir / "scene.yaml").string() + " --strongest --res 0.5 -o " +
-                            (dir / (name + ".png")).string() + " --csv " +
-                            (dir / (name + ".csv")).string() + " " + extra + " > /dev/null";
-    EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
-    return test::read_file(dir / (name + ".csv"));
-  };
-  const std::string by_default = map_csv("", "default");
-  ASSERT_FALSE(by_default.empty());
-  EXPECT_EQ(by_default, map_csv("--height 0.7", "camera"));
-  EXPECT_NE(by_default, map_csv("--height 1.0", "one_metre"));
-  std::filesystem::remove_all(dir);
 }
 
 }  // namespace
