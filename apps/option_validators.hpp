@@ -14,8 +14,10 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <regex>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -80,34 +82,33 @@ inline CLI::Validator at_least(std::int64_t lo) {
                 : "AT LEAST " + std::to_string(lo));
 }
 
+/// A validator that accepts text `pattern` matches as a whole; other text gets "expected
+/// <expected>, got '<text>'". The pattern is compiled once, when the validator is made.
+inline CLI::Validator regex_validator(const std::string& pattern, std::string expected,
+                                      std::string name,
+                                      std::regex::flag_type flags = std::regex::ECMAScript) {
+  auto format = std::make_shared<const std::regex>(pattern, flags);
+  return CLI::Validator(
+      [format, expected = std::move(expected)](std::string& text) -> std::string {
+        if (std::regex_match(text, *format)) return {};
+        return "expected " + expected + ", got '" + text + "'";
+      },
+      std::move(name));
+}
+
 /// Slurm's time formats (sbatch --time): minutes, minutes:seconds, hours:minutes:seconds,
 /// days-hours, days-hours:minutes, days-hours:minutes:seconds, or -1, UNLIMITED, INFINITE (any
 /// case).
-inline const CLI::Validator kSlurmTime(
-    [](std::string& text) -> std::string {
-      static const std::regex format(
-          R"(\d+(:\d{1,2}){0,2}|\d+-\d{1,2}(:\d{1,2}){0,2}|-1|unlimited|infinite)",
-          std::regex::icase);
-      if (!std::regex_match(text, format)) {
-        return "expected a Slurm time limit (minutes, [hours:]minutes:seconds or "
-               "days-hours[:minutes[:seconds]], e.g. 02:00:00), got '" +
-               text + "'";
-      }
-      return {};
-    },
-    "TIME");
+inline const CLI::Validator kSlurmTime = regex_validator(
+    R"(\d+(:\d{1,2}){0,2}|\d+-\d{1,2}(:\d{1,2}){0,2}|-1|unlimited|infinite)",
+    "a Slurm time limit (minutes, [hours:]minutes:seconds or days-hours[:minutes[:seconds]], "
+    "e.g. 02:00:00)",
+    "TIME", std::regex::ECMAScript | std::regex::icase);
 
 /// A Slurm partition name, or several separated by commas (letters, digits, '_', '-', '.').
-inline const CLI::Validator kSlurmPartition(
-    [](std::string& text) -> std::string {
-      static const std::regex format(R"([A-Za-z0-9_.-]+(,[A-Za-z0-9_.-]+)*)");
-      if (!std::regex_match(text, format)) {
-        return "expected a Slurm partition name (letters, digits, '_', '-', '.'; several "
-               "separated by commas), got '" +
-               text + "'";
-      }
-      return {};
-    },
+inline const CLI::Validator kSlurmPartition = regex_validator(
+    R"([A-Za-z0-9_.-]+(,[A-Za-z0-9_.-]+)*)",
+    "a Slurm partition name (letters, digits, '_', '-', '.'; several separated by commas)",
     "PARTITION");
 
 }  // namespace wifislam::cli

@@ -45,15 +45,15 @@ std::vector<unsigned char> read_bytes(const fs::path& path, const std::string& l
   return bytes;
 }
 
-void check_size(const cv::Mat& image, const CameraIntrinsics& k, const std::string& name) {
+}  // namespace
+
+void check_image_size(const cv::Mat& image, const CameraIntrinsics& k, const std::string& name) {
   if (image.cols != k.width_px || image.rows != k.height_px) {
     throw ParseError(name, "",
                      fmt::format("image is {}x{}, the calibration says {}x{}", image.cols,
                                  image.rows, k.width_px, k.height_px));
   }
 }
-
-}  // namespace
 
 cv::Mat decode_depth_png(const std::vector<unsigned char>& bytes, double units_per_metre,
                          const std::string& name) {
@@ -362,9 +362,9 @@ DecodedImages load_frame_images(const fs::path& folder, const FramePair& pair,
                                                            : "colour with alpha",
                                  listed_at));
   }
-  check_size(out.rgb, intrinsics, rgb_file.string());
+  check_image_size(out.rgb, intrinsics, rgb_file.string());
   out.depth_m = decode_depth_png(depth_bytes, depth_units_per_metre, depth_file.string());
-  check_size(out.depth_m, intrinsics, depth_file.string());
+  check_image_size(out.depth_m, intrinsics, depth_file.string());
   return out;
 }
 

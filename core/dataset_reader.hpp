@@ -118,4 +118,8 @@ Trajectory read_ground_truth(const std::filesystem::path& folder, bool verify_ch
 cv::Mat decode_depth_png(const std::vector<unsigned char>& bytes, double units_per_metre,
                          const std::string& name);
 
+/// Throws ParseError naming `name` when `image` is not the calibration's size: every reader of a
+/// dataset's images (the reader, exports that write the pixels elsewhere) refuses the same way.
+void check_image_size(const cv::Mat& image, const CameraIntrinsics& k, const std::string& name);
+
 }  // namespace wifislam

@@ -49,11 +49,7 @@ void write_depth_file(const fs::path& png, const fs::path& out, const DatasetCal
   if (!in.good() && !in.eof()) throw IoError(png.string() + ": cannot be read");
   const cv::Mat depth_m = decode_depth_png(bytes, c.depth_units_per_metre, png.string());
   // sensors.txt gives the size; a .depth file of another size would be read as garbage.
-  if (depth_m.cols != c.intrinsics.width_px || depth_m.rows != c.intrinsics.height_px) {
-    throw ParseError(png.string(), "",
-                     fmt::format("image is {}x{}, the calibration says {}x{}", depth_m.cols,
-                                 depth_m.rows, c.intrinsics.width_px, c.intrinsics.height_px));
-  }
+  check_image_size(depth_m, c.intrinsics, png.string());
   static_assert(std::endian::native == std::endian::little, "Kapture's .depth is little-endian");
   std::string raw(depth_m.total() * sizeof(float), '\0');
   for (int r = 0; r < depth_m.rows; ++r) {

@@ -210,6 +210,7 @@ TEST(StudyRun, CasesListsTheTableOnlyWhenEveryCaseChecks) {
         "study slurm " + good.string() + " --tasks 1 -o " + (dir / "job").string() + " " + option,
         dir);
     EXPECT_EQ(r.exit_code, 2) << option << ": " << r.err;
+    EXPECT_NE(r.err.find("expected a Slurm"), std::string::npos) << option << ": " << r.err;
     EXPECT_FALSE(fs::exists(dir / "job")) << option;
   }
   fs::remove_all(dir);
