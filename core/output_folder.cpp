@@ -184,6 +184,21 @@ void check_output_file(const fs::path& path, const std::vector<fs::path>& inputs
   }
 }
 
+void check_output_files(const std::vector<fs::path>& outputs, const std::vector<fs::path>& inputs) {
+  for (std::size_t i = 0; i < outputs.size(); ++i) {
+    if (outputs[i].empty()) continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!outputs[j].empty() && resolve_path(outputs[j]) == resolve_path(outputs[i])) {
+        throw InvalidInputError("output file " + outputs[i].string() + ": is also given as " +
+                                outputs[j].string() + "; each output needs a file of its own");
+      }
+    }
+  }
+  for (const fs::path& output : outputs) {
+    if (!output.empty()) check_output_file(output, inputs);
+  }
+}
+
 void check_file_replaceable(const fs::path& path) {
   std::error_code ec;
   const fs::file_status target = fs::status(path, ec);

@@ -69,6 +69,12 @@ bool check_output_folder(const OutputFolderRequest& request);
 void check_output_file(const std::filesystem::path& path,
                        const std::vector<std::filesystem::path>& inputs);
 
+/// check_output_file for each of a command's `outputs` (empty paths, for files not asked for, are
+/// skipped), after refusing two outputs that are the same file: the second would overwrite the
+/// first. Throws InvalidInputError naming both.
+void check_output_files(const std::vector<std::filesystem::path>& outputs,
+                        const std::vector<std::filesystem::path>& inputs);
+
 /// A file is written by renaming a finished `<path>.partial` over `path`, which would put a regular
 /// file where a folder, device or pipe was (as root, over /dev/null): refuses (InvalidInputError)
 /// an existing `path` that is not a regular file or a link to one. Every atomic file write applies

@@ -52,13 +52,7 @@ void run_calibrate(const CalibrateArgs& args) {
   std::vector<std::filesystem::path> inputs{args.survey_path, args.scene_path};
   if (!args.aps_path.empty()) inputs.push_back(args.aps_path);
   if (!args.test_path.empty()) inputs.push_back(args.test_path);
-  check_output_file(args.output, inputs);
-  inputs.push_back(args.output);
-  for (const std::string& extra : {args.report, args.json}) {
-    if (extra.empty()) continue;
-    check_output_file(extra, inputs);
-    inputs.push_back(extra);
-  }
+  check_output_files({args.output, args.report, args.json}, inputs);
 
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   if (scene.radio.model != radio_model::PathLossModel::kItuWalls) {

@@ -30,8 +30,7 @@ struct RadiomapArgs {
 
 void run_radiomap(const RadiomapArgs& args) {
   using namespace wifislam;
-  check_output_file(args.output, {args.scene_path});
-  if (!args.csv.empty()) check_output_file(args.csv, {args.scene_path, args.output});
+  check_output_files({args.output, args.csv}, {args.scene_path});
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   sim::scene::require_level(scene, args.level, "--level");
   const double ceiling_m = scene.building.wall_height_m;

@@ -29,8 +29,7 @@ void run_world(const WorldArgs& args) {
   const std::filesystem::path png = args.plan_path;
   const bool write_svg = !png.empty() && args.svg && png.extension() != ".svg";
   const std::filesystem::path svg = std::filesystem::path(png).replace_extension(".svg");
-  if (!png.empty()) check_output_file(png, {args.scene_path});
-  if (write_svg) check_output_file(svg, {args.scene_path, png});
+  check_output_files({png, write_svg ? svg : std::filesystem::path()}, {args.scene_path});
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   sim::scene::require_level(scene, args.level, "--level");
   // The site as `generate` builds it: a route `world` accepts is one `generate` can drive, and

@@ -268,6 +268,24 @@ TEST_F(OutputFolderRule, OutputFileMustNotBeAnInputOrAFolder) {
   EXPECT_NO_THROW(check_output_file(root_ / "old.png", {scene}));
 }
 
+// Two outputs of one command that are one file: the second would overwrite the first.
+TEST_F(OutputFolderRule, TwoOutputsThatAreOneFileAreRefusedNamingBoth) {
+  const fs::path scene = root_ / "scene.yaml";
+  std::ofstream(scene) << "version: 1\n";
+  try {
+    check_output_files({root_ / "fit.yaml", {}, root_ / "sub" / ".." / "fit.yaml"}, {scene});
+    ADD_FAILURE() << "two outputs naming one file were accepted";
+  } catch (const InvalidInputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("is also given as " + (root_ / "fit.yaml").string()), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("is an input"), std::string::npos) << message;
+  }
+  EXPECT_NO_THROW(check_output_files({root_ / "fit.yaml", {}, root_ / "fit.md"}, {scene}));
+  // Each output is still checked on its own.
+  EXPECT_THROW(check_output_files({root_ / "fit.yaml", scene}, {scene}), InvalidInputError);
+}
+
 // The rename of <file>.partial would put a regular file where a pipe or device was (as root, over
 // /dev/null): refused before any work, the pipe left as it was.
 TEST_F(OutputFolderRule, OutputFileMustNotBeAPipeOrDevice) {

@@ -89,6 +89,16 @@ TEST_F(CalibrateCli, AReportThatCannotBeWrittenLeavesNoFitBehind) {
   }
 }
 
+TEST_F(CalibrateCli, TwoOutputsNamingOneFileAreRefusedAsSuch) {
+  const auto before = test::listing(work_);
+  const auto r = test::run_wifislam(
+      "radio calibrate survey.csv --scene tiny.yaml --aps aps.csv -o fit.yaml --json fit.yaml",
+      scratch_, work_);
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("fit.yaml: is also given as fit.yaml"), std::string::npos) << r.err;
+  EXPECT_EQ(test::listing(work_), before);
+}
+
 TEST_F(CalibrateCli, MalformedRowIsLocated) {
   std::string csv = good_survey();
   csv.insert(csv.find("\n", csv.find("x_m,y_m")) + 1, "1.0,abc,10,-50\n");
