@@ -12,6 +12,7 @@
 #include "core/dataset_calibration.hpp"
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
+#include "core/dataset_recording.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/run_format.hpp"
@@ -61,6 +62,9 @@ struct RunIdentity {
   std::optional<double> loop_closure_cost_s, likelihood_posterior_cpu_s;
   /// frontend_summary.loop_closure_time_s.query: the loop query's measured time (orbslam).
   std::optional<double> loop_query_s;
+  /// input.recording: the recording the run was made from (core/dataset_recording.hpp); absent
+  /// for runs written before it was kept and by other tools.
+  std::optional<DatasetRecording> recording;
 };
 
 /// The number of seconds at `keys` under run.json's object `j`, when present; a clear error when
@@ -124,6 +128,10 @@ RunIdentity identity_of(const fs::path& run_json) {
       j, {"frontend_summary", "loop_closure_time_s", "likelihood_posterior_cpu"}, run_json);
   id.loop_query_s =
       optional_seconds(j, {"frontend_summary", "loop_closure_time_s", "query"}, run_json);
+  if (j.contains("input") && j["input"].is_object() && j["input"].contains("recording")) {
+    id.recording =
+        recording_from_json(j["input"]["recording"], run_json.string(), "input.recording");
+  }
   return id;
 }
 
@@ -257,6 +265,19 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   }
   const RunIdentity identity =
       in.bare_trajectory ? RunIdentity{} : identity_of(in.run_dir / run_folder::kRun);
+  // A run scored against the ground truth of another recording (another seed, say: every seed
+  // has the same frame times) gives an error that measures nothing: refused, naming both.
+  if (identity.recording) {
+    const std::optional<DatasetRecording> truth = recording_of_dataset(dataset_dir);
+    if (truth && !(*truth == *identity.recording)) {
+      throw InvalidInputError(fmt::format(
+          "{}: the run was made from the recording of {}, but {} holds the recording of {}; a "
+          "run is scored against the ground truth of the dataset it ran on (to score its "
+          "trajectory anyway, give {} instead of the run folder)",
+          (in.run_dir / run_folder::kRun).string(), describe(*identity.recording),
+          dataset_dir.string(), describe(*truth), in.trajectory_file.string()));
+    }
+  }
   ev.frontend = identity.frontend;
   ev.wifi_run = identity.wifi;
   ev.cost_model_s = identity.cost_model_s;

@@ -11,6 +11,7 @@
 
 #include "core/atomic_file.hpp"
 #include "core/csv_field.hpp"
+#include "core/dataset_recording.hpp"
 #include "core/error.hpp"
 #include "core/worker_pool.hpp"
 #include "eval/evaluate_run.hpp"
@@ -428,7 +429,8 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
     StreamedRun run;
     run.slam = jobs[j].slam;
     run.run_dir = out_dir / result.cases[jobs[j].case_index].run_dir;
-    run.run_info = {{"input", {{"kind", "dataset"}, {"path", any.dataset.string()}}}};
+    run.run_info = {{"input", dataset_run_input(any.dataset, sim::generate::recording_of_scene(
+                                                                 any.site->scene()))}};
     runs.push_back(std::move(run));
     run_job_of.push_back(j);
   }
@@ -514,7 +516,8 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
   interop::ExternalRunRequest request = interop::external_run_request(
       job.slam.frontend, c.wifi, out_dir / job.dataset, out_dir / c.run_dir);
   request.seed = job.slam.seed;
-  request.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", job.dataset.string()}}}};
+  request.extra_run_info = {
+      {"input", dataset_run_input(job.dataset, recording_of_dataset(out_dir / job.dataset))}};
   request.within = finals;
   const interop::ExternalRunResult result = interop::run_external_system(request);
   c.status = result.status;

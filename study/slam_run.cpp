@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include "core/dataset_recording.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "sim/generate/sensor_input.hpp"
@@ -34,7 +35,8 @@ SlamRunResult run_external_to_folder(const SlamRunRequest& request, bool replace
       options.frontend, options.wifi.enabled, request.input, request.output);
   external.overwrite = replace;
   external.seed = options.seed;
-  external.extra_run_info = {{"input", {{"kind", "dataset"}, {"path", request.input.string()}}}};
+  external.extra_run_info = {
+      {"input", dataset_run_input(request.input, recording_of_dataset(request.input))}};
   result.external = interop::run_external_system(external);
   result.external_system_file = external.system.file.string();
   if (!result.external->ok) {

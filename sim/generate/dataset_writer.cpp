@@ -184,12 +184,9 @@ std::string access_points_csv(const radio_model::PropagationModel& radio) {
 }
 
 std::string parameters_json(const scene::Scene& scene, const GenerateOptions& options) {
-  nlohmann::ordered_json p;
-  p["scene"] = scene.name;
-  p["seed"] = scene.seed;
-  if (scene.session) p["session"] = *scene.session;
-  p["fps"] = scene.sensors.camera.fps;
-  p["time_origin_s"] = scene.sensors.time_origin_s;
+  // The recording first (scene, seed, session, fps, time origin): what run.json records of its
+  // input and eval compares (core/dataset_recording.hpp).
+  nlohmann::ordered_json p = recording_json(recording_of_scene(scene));
   const radio_model::ReceiverDevice device = scene::receiver_device(scene.sensors.wifi);
   p["wifi_device"] = {{"name", device.name}, {"source", device.source}};
   p["max_frames"] = options.max_frames;

@@ -37,6 +37,16 @@ scene::Scene resolve_scene(const scene::Scene& scene, const GenerateOptions& opt
   return out;
 }
 
+DatasetRecording recording_of_scene(const scene::Scene& resolved) {
+  DatasetRecording r;
+  r.scene = resolved.name;
+  r.seed = resolved.seed;
+  r.session = resolved.session;
+  r.fps = resolved.sensors.camera.fps;
+  r.time_origin_s = resolved.sensors.time_origin_s;
+  return r;
+}
+
 GenerationPipeline::GenerationPipeline(const scene::Scene& scene, const GenerateOptions& options)
     : site_(timed_site(scene, site_build_s_)),
       scene_(site_->scene()),

@@ -26,6 +26,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/dataset_recording.hpp"
 #include "core/sensor_stream.hpp"
 #include "radio_model/propagation_model.hpp"
 #include "radio_model/wifi_scanner.hpp"
@@ -119,5 +120,9 @@ class GenerationPipeline {
 
 /// The scene with the options' seed and fps overrides applied (what scene.yaml records).
 scene::Scene resolve_scene(const scene::Scene& scene, const GenerateOptions& options);
+
+/// The recording a dataset of `resolved` (a scene with its overrides applied: resolve_scene, or a
+/// site's scene) holds: what its manifest.json's parameters and its runs' run.json record.
+DatasetRecording recording_of_scene(const scene::Scene& resolved);
 
 }  // namespace wifislam::sim::generate

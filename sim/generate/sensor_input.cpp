@@ -4,8 +4,10 @@
 
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
+#include "core/dataset_recording.hpp"
 #include "core/error.hpp"
 #include "core/frame_limited_stream.hpp"
+#include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
 
@@ -34,10 +36,11 @@ SensorInput open_dataset(const fs::path& input, const SensorInputOptions& option
   DatasetReaderOptions reader_options;
   reader_options.verify_checksums = options.verify_checksums;
   SensorInput out;
-  out.description = {
-      {"kind", "dataset"}, {"path", input.string()}, {"max_frames", options.max_frames}};
   check_max_frames(options.max_frames);
   auto reader = std::make_unique<DatasetReader>(input, reader_options);
+  out.description = dataset_run_input(
+      input, reader->manifest() ? recording_of(*reader->manifest()) : std::nullopt);
+  out.description["max_frames"] = options.max_frames;
   // Every reader of this input works on the frames (SLAM, a vocabulary, localisation): a dataset
   // of poses, odometry and Wi-Fi only gave an empty run and exit 0.
   if (reader->frame_count() == 0) {
@@ -60,12 +63,14 @@ SensorInput open_scene(const fs::path& input, const SensorInputOptions& options)
   generate.max_frames = options.max_frames;
   SensorInput out;
   out.is_scene = true;
-  out.description = {{"kind", "scene"},
-                     {"path", input.string()},
-                     {"scene", scene.name},
-                     {"scene_seed", generate.seed.value_or(scene.seed)},
-                     {"fps", generate.fps.value_or(scene.sensors.camera.fps)},
-                     {"max_frames", options.max_frames}};
+  out.description = {
+      {"kind", "scene"},
+      {"path", input.string()},
+      {"scene", scene.name},
+      {"scene_seed", generate.seed.value_or(scene.seed)},
+      {"fps", generate.fps.value_or(scene.sensors.camera.fps)},
+      {"max_frames", options.max_frames},
+      {"recording", recording_json(recording_of_scene(resolve_scene(scene, generate)))}};
   out.stream = std::make_unique<GeneratorStream>(scene, generate);
   return out;
 }

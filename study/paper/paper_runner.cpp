@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/atomic_file.hpp"
+#include "core/dataset_recording.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/wall_clock.hpp"
@@ -257,7 +258,8 @@ class GroupRunner {
         slam::validate(run.slam);
         run.run_dir =
             work / planned.name() / setting_folder(file, todo[i]) / (wifi ? "wifi" : "vanilla");
-        run.run_info = {{"input", {{"kind", "dataset"}, {"path", "dataset"}}}};
+        run.run_info = {
+            {"input", dataset_run_input("dataset", recording_of_dataset(dataset.dataset_dir()))}};
         runs.push_back(std::move(run));
         owner.emplace_back(i, wifi);
       }

@@ -135,6 +135,32 @@ TEST(EvalCommand, RealSmallRunWritesReportMetricsAndPlots) {
   report << std::ifstream(out / "report.md").rdbuf();
   EXPECT_NE(report.str().find("## Thresholds"), std::string::npos);
   EXPECT_NE(report.str().find("overlap_min_fraction"), std::string::npos);
+
+  // The ground truth of another recording (seed 92: the same frame times, other poses) is
+  // refused, naming both recordings, and nothing is written; the trajectory file on its own
+  // may still be scored against it.
+  const fs::path other = dir / "other_seed";
+  const CliResult generated =
+      run_wifislam("generate " + (dir / "small.yaml").string() +
+                       " --fps 2 --seed 92 --no-images -q -o " + other.string(),
+                   dir);
+  ASSERT_EQ(generated.exit_code, 0) << generated.err;
+  const CliResult refused = run_wifislam(
+      "eval " + run.string() + " --gt " + other.string() + " -o " + (dir / "refused").string(),
+      dir);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("made from the recording of scene eval_small_loop, seed 91, 2 fps"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_NE(refused.err.find("holds the recording of scene eval_small_loop, seed 92, 2 fps"),
+            std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(fs::exists(dir / "refused"));
+  const CliResult bare =
+      run_wifislam("eval " + (run / "trajectory.txt").string() + " --gt " + other.string() +
+                       " --no-plots -o " + (dir / "bare").string(),
+                   dir);
+  EXPECT_EQ(bare.exit_code, 0) << bare.err;
   fs::remove_all(dir);
 }
 
