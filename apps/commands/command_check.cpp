@@ -9,6 +9,8 @@
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct CheckArgs {
@@ -18,7 +20,6 @@ struct CheckArgs {
 };
 
 void run_check(const CheckArgs& args) {
-  using namespace wifislam;
   DatasetReaderOptions options;
   options.verify_checksums = !args.no_verify;
   options.load_images = !args.no_images;
@@ -68,3 +69,5 @@ WIFISLAM_COMMAND(check, 55) {
   app->add_flag("--no-images", args->no_images, "Do not decode images (lists and Wi-Fi only)");
   app->callback([args] { run_check(*args); });
 }
+
+}  // namespace wifislam::cli

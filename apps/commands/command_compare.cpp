@@ -19,6 +19,8 @@
 #include "study/comparison_study.hpp"
 #include "study/paper/paper_plan.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct CompareArgs {
@@ -41,9 +43,7 @@ struct CompareArgs {
 /// `--preset paper-rgbdslam`: the paper's RGBD-SLAM experiment ("RGBD SLAM performance", C Hall)
 /// on our c_hall twin: min_matches 50 and 70, 5 seeds, 3 fps (the robot's 30 fps make one run
 /// ten times longer; the route, pauses and scans are the same). Options given explicitly win.
-void apply_preset(CompareArgs& args, const CLI::App& app,
-                  std::vector<wifislam::sim::scene::Scene>& scenes) {
-  using namespace wifislam;
+void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<sim::scene::Scene>& scenes) {
   if (args.preset.empty()) return;
   if (args.preset != "paper-rgbdslam") {
     throw ParseError("--preset", args.preset, "unknown preset; known: paper-rgbdslam");
@@ -55,7 +55,6 @@ void apply_preset(CompareArgs& args, const CLI::App& app,
 }
 
 void run(CompareArgs args, const CLI::App& app) {
-  using namespace wifislam;
   OutputFolderRequest output{args.output, args.force, {}, {}};
   for (const std::string& path : args.scenes) output.inputs.emplace_back(path);
   const bool replace = check_output_folder(output);
@@ -108,7 +107,7 @@ WIFISLAM_COMMAND(compare, 65) {
       "(--sweep min_matches=50,70 --seeds 5 --fps 3 unless given; about 26 min on 2 cores)");
   app->add_option(
          "--frontend", args->frontend,
-         "Front end (" + wifislam::slam::frontend::front_end_name_list() +
+         "Front end (" + slam::frontend::front_end_name_list() +
              "), or external:NAME|FILE, another program (docs/external_systems.md);\n"
              "several side by side: --sweep frontend=rgbdslam,external:opencv_rgbd_odometry")
       ->capture_default_str();
@@ -122,16 +121,16 @@ WIFISLAM_COMMAND(compare, 65) {
                   "Evaluation threshold key=value (repeatable; see `wifislam eval --help`)");
   app->add_option("--seeds", args->seeds, "Seeds per scene (scene seed, +1, ...)")
       ->capture_default_str()
-      ->check(wifislam::cli::at_least(1));
+      ->check(at_least(1));
   app->add_option("--fps", args->fps, "Dataset frame rate (default: each scene's)")
-      ->check(wifislam::cli::finite_range(0.1, 1000.0));
+      ->check(finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Cut each dataset after this many frames")
-      ->check(wifislam::cli::at_least(1));
+      ->check(at_least(1));
   app->add_option("--jobs", args->jobs,
                   "SLAM runs in parallel, side by side on one rendering of their dataset (results\n"
                   "identical; 1 keeps timings comparable)")
       ->capture_default_str()
-      ->check(wifislam::cli::at_least(1));
+      ->check(at_least(1));
   app->add_option("-o,--output", args->output, "Folder to write")->required();
   app->add_flag("--force", args->force,
                 "Replace the output folder if it exists and holds this tool's output (never an\n"
@@ -145,3 +144,5 @@ WIFISLAM_COMMAND(compare, 65) {
       "Timing columns are wall-clock; keep --jobs 1 when comparing them.");
   app->callback([args, app] { run(*args, *app); });
 }
+
+}  // namespace wifislam::cli

@@ -15,6 +15,8 @@
 #include "sim/site/site_pictures.hpp"
 #include "study/comparison_study.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 /// The demo's own folder: replaced on every run without --force (scripts/demo.sh runs it twice).
@@ -28,8 +30,7 @@ struct DemoArgs {
 };
 
 /// The plan and radio map of the site the comparison generated its dataset from.
-void draw_scene_pictures(const wifislam::sim::site::Site& site, const std::filesystem::path& dir) {
-  using namespace wifislam;
+void draw_scene_pictures(const sim::site::Site& site, const std::filesystem::path& dir) {
   sim::site::draw_site_plan(site, dir / "plan.png");
   // Strongest-AP radio map at 0.25 m: what the robot's Wi-Fi card hears on average, at the height
   // and with the shadowing of the dataset's scans.
@@ -40,7 +41,6 @@ void draw_scene_pictures(const wifislam::sim::site::Site& site, const std::files
 }
 
 void run_demo(const DemoArgs& args) {
-  using namespace wifislam;
   const bool replace =
       check_output_folder({args.output_dir, args.force, kDefaultOutput, {args.scene_path}});
   const sim::scene::Scene scene =
@@ -101,3 +101,5 @@ WIFISLAM_COMMAND(demo, 10) {
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   app->callback([args] { run_demo(*args); });
 }
+
+}  // namespace wifislam::cli

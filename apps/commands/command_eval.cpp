@@ -19,6 +19,8 @@
 #include "eval/requirement.hpp"
 #include "sim/world/world_generator.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct EvalArgs {
@@ -36,14 +38,14 @@ struct EvalArgs {
 };
 
 std::string thresholds_help() {
-  const wifislam::eval::EvalOptions defaults;
+  const eval::EvalOptions defaults;
   const nlohmann::ordered_json values = defaults.to_json();
   std::string text = "Thresholds (--set key=value; all are written into the outputs):\n";
-  for (const auto& [name, description] : wifislam::eval::option_descriptions()) {
+  for (const auto& [name, description] : eval::option_descriptions()) {
     text += fmt::format("  {:<36} {:>6}  {}\n", name, values[name].dump(), description);
   }
   text += "\n";
-  text += wifislam::eval::kAssociationRule;
+  text += eval::kAssociationRule;
   text += "\n";
   return text;
 }
@@ -64,7 +66,6 @@ std::filesystem::path default_output(const std::filesystem::path& input) {
 }
 
 void run(const EvalArgs& args) {
-  using namespace wifislam;
   eval::EvalOptions options;
   if (args.scale) options.align = eval::AlignmentMode::kSim3;  // deprecated spelling
   if (!args.align.empty()) {
@@ -209,3 +210,5 @@ WIFISLAM_COMMAND(eval, 70) {
   app->footer(thresholds_help());
   app->callback([args] { run(*args); });
 }
+
+}  // namespace wifislam::cli

@@ -10,6 +10,8 @@
 #include "core/output_folder.hpp"
 #include "interop/peer_export.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct ExportArgs {
@@ -22,7 +24,6 @@ struct ExportArgs {
 };
 
 void run_export(const ExportArgs& args) {
-  using namespace wifislam;
   const bool replace = check_output_folder({args.output, args.force, {}, {args.dataset}});
   interop::PeerExportOptions options;
   options.peer = *interop::peer_from_string(args.peer);  // CLI11 checked the name
@@ -101,7 +102,7 @@ WIFISLAM_COMMAND(export, 58) {
   app->add_option("dataset", args->dataset, "Dataset folder")->required();
   app->add_option("--for", args->peer, "The peer whose dataset tool reads the export")
       ->required()
-      ->check(CLI::IsMember(wifislam::interop::peer_names()));
+      ->check(CLI::IsMember(interop::peer_names()));
   app->add_option("-o,--output", args->output, "Folder to create")->required();
   app->add_flag("--force", args->force,
                 "Replace the output folder if it holds this tool's output (a previous export,\n"
@@ -111,3 +112,5 @@ WIFISLAM_COMMAND(export, 58) {
   app->add_flag("-q,--quiet", args->quiet, "Print nothing but warnings on success");
   app->callback([args] { run_export(*args); });
 }
+
+}  // namespace wifislam::cli

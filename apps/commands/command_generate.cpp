@@ -18,6 +18,8 @@
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/scene/scene_loader.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct GenerateArgs {
@@ -35,7 +37,7 @@ struct GenerateArgs {
 };
 
 // A one-line bar redrawn in place; only used when stderr is a terminal.
-void draw_progress(const wifislam::sim::generate::GenerateProgress& p) {
+void draw_progress(const sim::generate::GenerateProgress& p) {
   const int width = 30;
   const double f = p.frames_total > 0 ? static_cast<double>(p.frames_done) / p.frames_total : 1.0;
   const int filled = static_cast<int>(f * width);
@@ -47,7 +49,6 @@ void draw_progress(const wifislam::sim::generate::GenerateProgress& p) {
 }
 
 void run_generate(const GenerateArgs& args) {
-  using namespace wifislam;
   std::vector<std::filesystem::path> inputs{args.scene_path};
   if (std::filesystem::exists(args.device)) inputs.push_back(args.device);
   const bool replace = check_output_folder({args.output, args.force, {}, inputs});
@@ -106,14 +107,13 @@ WIFISLAM_COMMAND(generate, 50) {
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
       ->required();  // the scene loader says what is wrong with the path
   app->add_option("-o,--output", args->output, "Dataset folder to create")->required();
-  app->add_option("--seed", args->seed, "Replace the scene's seed")
-      ->check(wifislam::cli::kSeedValidator);
+  app->add_option("--seed", args->seed, "Replace the scene's seed")->check(kSeedValidator);
   app->add_option("--fps", args->fps, "Camera frame rate (default: the scene's, 30)")
-      ->check(wifislam::cli::finite_range(0.1, 1000.0));
+      ->check(finite_range(0.1, 1000.0));
   app->add_option("--max-frames", args->max_frames, "Stop after this many frames")
-      ->check(wifislam::cli::at_least(1));
+      ->check(at_least(1));
   std::string shipped;
-  for (const auto& device : wifislam::radio_model::shipped_devices())
+  for (const auto& device : radio_model::shipped_devices())
     shipped += (shipped.empty() ? "" : ", ") + device.name;
   app->add_option("--device", args->device,
                   "The Wi-Fi receiver, in place of the scene's sensors.wifi.device: a shipped\n"
@@ -131,10 +131,12 @@ WIFISLAM_COMMAND(generate, 50) {
   app->add_option("--threads", args->threads,
                   "PNG encoding threads (default: one per core; at most 4 per core, fewer if the\n"
                   "system will not start more)")
-      ->check(wifislam::cli::at_least(0));
+      ->check(at_least(0));
   app->add_flag("--force", args->force,
                 "Replace the output folder if it exists and holds this tool's output (never an\n"
                 "input, the current directory, the home folder or a folder of your own)");
   app->add_flag("-q,--quiet", args->quiet, "Print nothing on success");
   app->callback([args] { run_generate(*args); });
 }
+
+}  // namespace wifislam::cli

@@ -16,6 +16,8 @@
 #include "floorplan/plan_import.hpp"
 #include "sim/scene/scene_loader.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct ImportArgs {
@@ -35,12 +37,12 @@ std::vector<Eigen::Vector2d> parse_route(const std::string& text) {
     char comma = 0, extra = 0;
     std::stringstream in(point);
     if (!(in >> x >> comma >> y) || comma != ',' || (in >> extra))
-      throw wifislam::ParseError("--route", "--route",
-                                 fmt::format("expected x,y;x,y;... in metres, got '{}'", point));
+      throw ParseError("--route", "--route",
+                       fmt::format("expected x,y;x,y;... in metres, got '{}'", point));
     out.emplace_back(x, y);
   }
   if (out.size() < 2)
-    throw wifislam::ParseError("--route", "--route", "a route needs at least two waypoints");
+    throw ParseError("--route", "--route", "a route needs at least two waypoints");
   return out;
 }
 
@@ -66,7 +68,6 @@ std::vector<std::string> attribution_lines(const ImportArgs& args) {
 }
 
 void run_import(const ImportArgs& args) {
-  using namespace wifislam;
   if (!args.name.empty()) {
     if (const std::optional<std::string> problem = sim::scene::scene_name_problem(args.name))
       throw InvalidInputError("--name: " + *problem);
@@ -188,10 +189,12 @@ WIFISLAM_COMMAND(import, 15) {
       ->check(CLI::Range(1, 1000));
   app->add_option("--wall-thickness", args->wall_thickness_m,
                   "Wall thickness in metres for OSM and IMDF plans (WRLD measures its own)")
-      ->check(wifislam::cli::finite_range(0.05, 0.5));
+      ->check(finite_range(0.05, 0.5));
   app->add_option("--name", args->name, "Scene name (default: from the file name and level)");
   app->add_option(
       "--attribution", args->attribution,
       "Attribution text for the scene header (default: ATTRIBUTION.md beside the plan)");
   app->callback([args] { run_import(*args); });
 }
+
+}  // namespace wifislam::cli

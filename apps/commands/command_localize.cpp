@@ -23,10 +23,11 @@
 #include "study/localisation_data.hpp"
 #include "study/localisation_report.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 namespace fs = std::filesystem;
-using namespace wifislam;
 
 struct LocalizeArgs {
   std::string input, output, methods = "fabmap,wifi-fabmap,wifi-clusters";
@@ -248,14 +249,14 @@ WIFISLAM_COMMAND(localize, 67) {
   app->add_option("--method", args->methods, "Methods, comma-separated")->capture_default_str();
   app->add_option("--image-interval", args->image_interval_s, "Seconds between images")
       ->capture_default_str()
-      ->check(wifislam::cli::finite_range(0.01, 3600.0));
+      ->check(finite_range(0.01, 3600.0));
   app->add_option("--moving-scan-interval", args->moving_scan_interval_s,
                   "Seconds between Wi-Fi FAB-MAP's scans while moving (scenes)")
       ->capture_default_str()
-      ->check(wifislam::cli::finite_range(0.5, 3600.0));
+      ->check(finite_range(0.5, 3600.0));
   app->add_option("--map-share", args->map_share, "Share of the route (by time) that is the map")
       ->capture_default_str()
-      ->check(wifislam::cli::finite_range(0.01, 0.99));
+      ->check(finite_range(0.01, 0.99));
   app->add_option(
          "--wifi-words", args->wifi_words,
          "Wi-Fi FAB-MAP's words: presence (one per AP heard) or thermometer (RSSI + 110 in "
@@ -299,3 +300,5 @@ WIFISLAM_COMMAND(localize, 67) {
   app->callback(
       [args, app] { run(*args, app->count("--route") > 0, app->count("--map-share") > 0); });
 }
+
+}  // namespace wifislam::cli

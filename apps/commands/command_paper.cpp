@@ -19,10 +19,11 @@
 #include "study/slurm_job.hpp"
 #include "study/study_runner.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 namespace fs = std::filesystem;
-using namespace wifislam;
 
 struct PaperArgs {
   std::string output, parts = "rgbdslam,rtabmap,orbslam,fabmap",
@@ -184,7 +185,7 @@ WIFISLAM_COMMAND(paper, 66) {
   app->add_option("--jobs", args->jobs,
                   "SLAM runs at a time (default: one per core; 1 keeps times free of\n"
                   "interference; results are the same)")
-      ->check(wifislam::cli::at_least(0));
+      ->check(at_least(0));
   app->add_option("--shard", args->shard,
                   "i/N: run only every N-th twin-and-seed group from the i-th (a cluster's task)");
   app->add_flag("--report-only", args->report_only, "Write the report from what DIR holds");
@@ -216,3 +217,5 @@ WIFISLAM_COMMAND(paper, 66) {
     run(*args);
   });
 }
+
+}  // namespace wifislam::cli

@@ -24,9 +24,11 @@
 #include "sim/site/site.hpp"
 #include "sim/site/survey_site.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
-namespace cal = wifislam::radio_model::calibrate;
+namespace cal = radio_model::calibrate;
 
 struct CalibrateArgs {
   std::string survey_path, scene_path, aps_path, test_path;
@@ -39,7 +41,7 @@ struct CalibrateArgs {
   int held_out_positions = 5;
 };
 
-std::vector<cal::SurveyAccessPoint> scene_access_points(const wifislam::sim::site::Site& site) {
+std::vector<cal::SurveyAccessPoint> scene_access_points(const sim::site::Site& site) {
   std::vector<cal::SurveyAccessPoint> aps;
   for (const auto& ap : site.access_points())
     aps.push_back({ap.id, ap.position_m, ap.tx_power_dbm, ""});
@@ -47,7 +49,6 @@ std::vector<cal::SurveyAccessPoint> scene_access_points(const wifislam::sim::sit
 }
 
 void run_calibrate(const CalibrateArgs& args) {
-  using namespace wifislam;
   // Every output is checked before any work, and written only when everything succeeded.
   std::vector<std::filesystem::path> inputs{args.survey_path, args.scene_path};
   if (!args.aps_path.empty()) inputs.push_back(args.aps_path);
@@ -152,10 +153,10 @@ void add_calibrate_command(CLI::App* parent) {
                   "Frequency of the survey: sets the default wall losses compared with and the "
                   "conversion of intercepts to tx power")
       ->capture_default_str()
-      ->check(wifislam::cli::finite_range(2400.0, 7125.0));
+      ->check(finite_range(2400.0, 7125.0));
   app->add_option("--receiver-height", args->receiver_height_m,
                   "Receiver height (m) for rows without z_m; default: the scene's camera height")
-      ->check(wifislam::cli::kPositiveFinite);
+      ->check(kPositiveFinite);
   app->add_option("-o,--output", args->output, "Scene blocks to write (YAML)")
       ->capture_default_str();
   app->add_option("--reference-device", args->reference_device,
@@ -182,3 +183,5 @@ WIFISLAM_COMMAND(radio, 45) {
   app->require_subcommand(1);
   add_calibrate_command(app);
 }
+
+}  // namespace wifislam::cli

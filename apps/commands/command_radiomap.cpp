@@ -14,6 +14,8 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site_pictures.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct RadiomapArgs {
@@ -29,7 +31,6 @@ struct RadiomapArgs {
 };
 
 void run_radiomap(const RadiomapArgs& args) {
-  using namespace wifislam;
   check_output_files({args.output, args.csv}, {args.scene_path});
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   sim::scene::require_level(scene, args.level, "--level");
@@ -75,7 +76,7 @@ WIFISLAM_COMMAND(radiomap, 40) {
   strongest->excludes(ap);
   app->add_option("--res", args->resolution_m, "Grid resolution (m), 0.01 to 10")
       ->capture_default_str()
-      ->check(wifislam::cli::finite_range(0.01, 10.0));
+      ->check(finite_range(0.01, 10.0));
   app->add_option("--height", args->height_m,
                   "Receiver height above the floor (m), below the scene's ceiling; default: the "
                   "camera height (sensors.camera.height_m), where datasets scan");
@@ -89,7 +90,9 @@ WIFISLAM_COMMAND(radiomap, 40) {
   app->add_option("--csv", args->csv, "Also write the grid as CSV (x_m,y_m,rssi_dbm,ap_id)");
   app->callback([args] {
     if (!args->strongest && !args->ap_id)
-      throw wifislam::InvalidInputError("radiomap: give --ap ID or --strongest");
+      throw InvalidInputError("radiomap: give --ap ID or --strongest");
     run_radiomap(*args);
   });
 }
+
+}  // namespace wifislam::cli

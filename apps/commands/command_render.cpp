@@ -21,6 +21,8 @@
 #include "sim/scene/scene_loader.hpp"
 #include "sim/world/world_generator.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct RenderArgs {
@@ -51,7 +53,7 @@ PlanarPose parse_pose(const std::string& text) {
     ok = used > 0 && used == item.size() && std::isfinite(values.back());
   }
   if (!ok || values.size() != 3) {
-    throw wifislam::InvalidInputError(fmt::format(
+    throw InvalidInputError(fmt::format(
         "--pose: expected x,y,yaw (metres, metres, degrees counter-clockwise from +x), got '{}'",
         text));
   }
@@ -59,7 +61,6 @@ PlanarPose parse_pose(const std::string& text) {
 }
 
 void run_render(const RenderArgs& args) {
-  using namespace wifislam;
   const PlanarPose planar = parse_pose(args.pose);
   const std::string rgb_path = args.prefix + "_rgb.png";
   const std::string depth_path = args.prefix + "_depth.png";
@@ -126,3 +127,5 @@ WIFISLAM_COMMAND(render, 30) {
       ->required();
   app->callback([args] { run_render(*args); });
 }
+
+}  // namespace wifislam::cli

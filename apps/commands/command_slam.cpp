@@ -17,6 +17,8 @@
 #include "slam/slam_options.hpp"
 #include "study/slam_run.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct SlamArgs {
@@ -34,7 +36,6 @@ struct SlamArgs {
 };
 
 void run(const SlamArgs& args) {
-  using namespace wifislam;
   study::SlamRunRequest request;
   request.input = args.input;
   request.output = args.output;
@@ -73,14 +74,13 @@ WIFISLAM_COMMAND(slam, 60) {
       "loop_closures.csv, timing.json with per-role comparison counters, run.json, and\n"
       "wifi_clusters.csv with --wifi; layout in core/run_format.hpp).");
   app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
-  app->add_option(
-         "--frontend", args->frontend,
-         "SLAM front end: memory, loop-closure candidates and acceptance (" +
-             wifislam::slam::frontend::front_end_name_list() +
-             "), or external:NAME|FILE, another program run from its system file\n"
-             "on a dataset folder (shipped: " +
-             fmt::format("{}", fmt::join(wifislam::interop::shipped_system_names(), ", ")) +
-             "; docs/external_systems.md)")
+  app->add_option("--frontend", args->frontend,
+                  "SLAM front end: memory, loop-closure candidates and acceptance (" +
+                      slam::frontend::front_end_name_list() +
+                      "), or external:NAME|FILE, another program run from its system file\n"
+                      "on a dataset folder (shipped: " +
+                      fmt::format("{}", fmt::join(interop::shipped_system_names(), ", ")) +
+                      "; docs/external_systems.md)")
       ->capture_default_str();
   app->add_flag(
       "--wifi", args->wifi,
@@ -97,13 +97,15 @@ WIFISLAM_COMMAND(slam, 60) {
   app->add_flag("--no-verify", args->no_verify, "Do not check the dataset's SHA-256 sums");
   app->add_option("--max-frames", args->max_frames,
                   "Stop after this many frames (scene or dataset input)")
-      ->check(wifislam::cli::at_least(1));
+      ->check(at_least(1));
   app->add_option("--fps", args->fps, "Scene input only: frame rate (default: the scene's)")
-      ->check(wifislam::cli::finite_range(0.1, 1000.0));
+      ->check(finite_range(0.1, 1000.0));
   app->add_option("--seed", args->scene_seed, "Scene input only: replace the scene's seed")
-      ->check(wifislam::cli::kSeedValidator);
+      ->check(kSeedValidator);
   // RTAB-Map's and ORB-SLAM2's parameters keep their defaults and are named after them here.
   app->footer("SLAM options (--set key=value; shown with their defaults):\n" +
-              wifislam::slam::option_reference());
+              slam::option_reference());
   app->callback([args] { run(*args); });
 }
+
+}  // namespace wifislam::cli

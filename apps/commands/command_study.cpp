@@ -27,10 +27,11 @@
 #include "study/study_plot.hpp"
 #include "study/study_runner.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 namespace fs = std::filesystem;
-using namespace wifislam;
 
 struct RunArgs {
   std::string file, output, shard = "0/1";
@@ -119,7 +120,7 @@ void add_run_command(CLI::App* app) {
          "Radio cases (or a SLAM case's two runs, side by side on one rendering) in parallel;\n"
          "results do not depend on it")
       ->capture_default_str()
-      ->check(wifislam::cli::at_least(1));
+      ->check(at_least(1));
   run->add_flag("--force", args->force, "Replace a database of another study");
   run->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   run->footer(
@@ -184,3 +185,5 @@ WIFISLAM_COMMAND(study, 70) {
   add_plot_command(app);
   cli::add_study_place_command(app);
 }
+
+}  // namespace wifislam::cli

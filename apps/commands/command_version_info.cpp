@@ -24,14 +24,16 @@
 #include "core/error.hpp"
 #include "sim/render/osmesa_context.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 /// OpenGL through OSMesa, as the renderer gets it; why not, when it cannot.
 std::string opengl_version() {
   try {
-    const wifislam::sim::render::OsmesaContext context;
+    const sim::render::OsmesaContext context;
     return context.gl_version() + " (" + context.gl_renderer() + ")";
-  } catch (const wifislam::EnvironmentError& error) {
+  } catch (const EnvironmentError& error) {
     return std::string("unavailable: ") + error.what();
   }
 }
@@ -72,3 +74,5 @@ WIFISLAM_COMMAND(info, 90) {
       "info", "Print the build's version and the version of every library it uses.");
   app->callback(print_versions);
 }
+
+}  // namespace wifislam::cli

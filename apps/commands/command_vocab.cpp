@@ -23,10 +23,11 @@
 #include "slam/feature/orb_feature_extractor.hpp"
 #include "slam/place/fabmap_training.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 namespace fs = std::filesystem;
-using namespace wifislam;
 
 struct TrainArgs {
   std::vector<std::string> inputs;
@@ -173,7 +174,7 @@ WIFISLAM_COMMAND(vocab, 75) {
         ->check(CLI::Range(10, 100000));
     train_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
         ->capture_default_str()
-        ->check(wifislam::cli::finite_range(0.01, 120.0));
+        ->check(finite_range(0.01, 120.0));
     train_app->add_option("--every", args->every, "Every n-th frame of a folder")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000000));
@@ -204,7 +205,7 @@ WIFISLAM_COMMAND(vocab, 75) {
                            "Vocabulary file (default: the shipped one)");
     fabmap_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
         ->capture_default_str()
-        ->check(wifislam::cli::finite_range(0.01, 120.0));
+        ->check(finite_range(0.01, 120.0));
     fabmap_app->add_option("--every", args->every, "Every n-th frame of a folder")
         ->capture_default_str()
         ->check(CLI::Range(1, 1000000));
@@ -222,3 +223,5 @@ WIFISLAM_COMMAND(vocab, 75) {
     info_app->callback([file] { info(*file); });
   }
 }
+
+}  // namespace wifislam::cli

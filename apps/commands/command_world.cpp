@@ -13,6 +13,8 @@
 #include "sim/site/site_pictures.hpp"
 #include "sim/world/world_generator.hpp"
 
+namespace wifislam::cli {
+
 namespace {
 
 struct WorldArgs {
@@ -23,7 +25,6 @@ struct WorldArgs {
 };
 
 void run_world(const WorldArgs& args) {
-  using namespace wifislam;
   // Both plan files are checked before either is written: `--plan X.png --svg` with X.svg an
   // input wrote the PNG and then refused.
   const std::filesystem::path png = args.plan_path;
@@ -75,3 +76,5 @@ WIFISLAM_COMMAND(world, 20) {
                   "Level to draw (scene key levels:, by id); default: the route's level");
   app->callback([args] { run_world(*args); });
 }
+
+}  // namespace wifislam::cli
