@@ -5,8 +5,8 @@
 #include <memory>
 #include <numbers>
 #include <optional>
-#include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <fmt/core.h>
@@ -15,10 +15,12 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/pose.hpp"
+#include "core/text_lines.hpp"
 #include "sim/render/depth_png.hpp"
 #include "sim/render/depth_sensor_model.hpp"
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "sim/scene/scene_schema.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace wifislam::cli {
@@ -38,24 +40,31 @@ struct PlanarPose {
   double x_m = 0, y_m = 0, yaw_deg = 0;
 };
 
+/// x,y,yaw as plain decimals (core's parse_double: no hexadecimal, no inf or nan), x and y within
+/// the 10 km every scene coordinate lies in (sim/scene/scene_schema.hpp).
 PlanarPose parse_pose(const std::string& text) {
-  std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  bool ok = true;
-  while (ok && std::getline(stream, item, ',')) {
-    std::size_t used = 0;
-    try {
-      values.push_back(std::stod(item, &used));
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    ok = used > 0 && used == item.size() && std::isfinite(values.back());
+  const std::vector<std::string_view> fields = split_fields(text, ',');
+  double values[3] = {0, 0, 0};
+  bool ok = fields.size() == 3;
+  for (std::size_t i = 0; ok && i < 3; ++i) {
+    std::string_view field = fields[i];  // "1, 2, 90" as well as "1,2,90"
+    while (!field.empty() && field.front() == ' ') field.remove_prefix(1);
+    while (!field.empty() && field.back() == ' ') field.remove_suffix(1);
+    ok = parse_double(field, values[i]);
   }
-  if (!ok || values.size() != 3) {
+  if (!ok) {
     throw InvalidInputError(fmt::format(
         "--pose: expected x,y,yaw (metres, metres, degrees counter-clockwise from +x), got '{}'",
         text));
+  }
+  const sim::scene::schema::Limits& limits = sim::scene::schema::kCoordinateM;
+  for (const double v : {values[0], values[1]}) {
+    if (v < limits.lo || v > limits.hi) {
+      throw InvalidInputError(fmt::format(
+          "--pose: x and y must lie within {} m of the origin, as every scene coordinate does; "
+          "got '{}'",
+          limits.hi, text));
+    }
   }
   return {values[0], values[1], values[2]};
 }

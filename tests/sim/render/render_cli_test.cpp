@@ -28,11 +28,13 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
   const Eigen::Vector2d p = world.route.points_m[world.route.points_m.size() / 3];
   const double yaw_deg =
       world.route.heading_rad[world.route.points_m.size() / 3] * 180.0 / std::numbers::pi;
+  // The second spells the pose with spaces after the commas, as people write it.
   for (const char* name : {"a", "b"}) {
-    const test::CliResult r =
-        test::run_wifislam(fmt::format("render {} --pose {},{},{} -o {}", scene_path.string(),
-                                       p.x(), p.y(), yaw_deg, (dir / name).string()),
-                           dir);
+    const char* separator = name[0] == 'a' ? "," : ", ";
+    const test::CliResult r = test::run_wifislam(
+        fmt::format("render {} --pose '{}{}{}{}{}' -o {}", scene_path.string(), p.x(), separator,
+                    p.y(), separator, yaw_deg, (dir / name).string()),
+        dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   for (const char* suffix : {"_rgb.png", "_depth.png", "_depth_color.png"}) {
@@ -53,14 +55,19 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
 
 TEST(SceneRender, RenderCommandRejectsAMalformedPose) {
   const fs::path dir = test::scratch_folder();
-  const test::CliResult r =
-      test::run_wifislam(fmt::format("render {}/aliasing_ladder.yaml --pose 1,2 -o {}",
-                                     WIFISLAM_SCENES_DIR, (dir / "x").string()),
-                         dir);
-  EXPECT_EQ(r.signal, 0);
-  EXPECT_EQ(r.exit_code, 2) << r.err;
-  EXPECT_NE(r.err.find("--pose"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(dir / "x_rgb.png"));
+  // Two numbers; hexadecimal and infinity (which std::stod took); a place beyond the 10 km every
+  // scene lies within; an empty field.
+  for (const char* pose : {"1,2", "0x10,2,3", "inf,2,3", "1,2,nan", "20000,0,0", "1,,3"}) {
+    const test::CliResult r =
+        test::run_wifislam(fmt::format("render {}/aliasing_ladder.yaml --pose '{}' -o {}",
+                                       WIFISLAM_SCENES_DIR, pose, (dir / "x").string()),
+                           dir);
+    EXPECT_EQ(r.signal, 0) << pose;
+    EXPECT_EQ(r.exit_code, 2) << pose << ": " << r.err;
+    EXPECT_NE(r.err.find("--pose"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(pose), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "x_rgb.png")) << pose;
+  }
   fs::remove_all(dir);
 }
 
