@@ -1,5 +1,7 @@
 #include "tests/slam/frontend/rtabmap/rtabmap_test_nodes.hpp"
 
+#include "tests/slam/wifi/synthetic_scans.hpp"
+
 namespace wifislam::test {
 
 namespace {
@@ -92,13 +94,7 @@ std::vector<slam::frontend::Candidate> RtabmapDriver::add_node(int place,
 }
 
 WifiScan scan_at(double start_s, const std::vector<std::pair<std::uint64_t, int>>& aps) {
-  WifiScan scan;
-  scan.start_time = Timestamp::from_seconds(start_s);
-  scan.end_time = scan.time = Timestamp::from_seconds(start_s + 1.0);
-  for (const auto& [ap, rssi] : aps) {
-    scan.readings.push_back({MacAddress{ap}, 2412000, rssi, "corp"});
-  }
-  return scan;
+  return slam::test::scan_of(start_s, aps);
 }
 
 }  // namespace wifislam::test

@@ -50,6 +50,7 @@ class RtabmapDriver {
   std::vector<slam::frontend::Candidate> pending_;
 };
 
+/// A one-second scan on channel 1 (tests/slam/wifi/synthetic_scans.hpp's scan_of).
 WifiScan scan_at(double start_s, const std::vector<std::pair<std::uint64_t, int>>& aps);
 
 }  // namespace wifislam::test
