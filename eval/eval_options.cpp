@@ -22,10 +22,10 @@ std::vector<std::pair<std::string, std::string>> option_descriptions() {
   return options::option_help<EvalOptions>();
 }
 
-void set_option(EvalOptions& options, const std::string& assignment) {
-  const auto [key, text] = options::split_assignment("--set", assignment);
+void set_option(EvalOptions& options, const std::string& assignment, const char* flag) {
+  const auto [key, text] = options::split_assignment(flag, assignment);
   EvalOptions updated = options;  // unchanged when the value is rejected
-  options::set_from_text(updated, "--set", "evaluation threshold", key, text);
+  options::set_from_text(updated, flag, "evaluation threshold", key, text);
   validate(updated);
   options = updated;
 }

@@ -133,8 +133,9 @@ std::vector<std::pair<std::string, std::string>> option_descriptions();
 /// Applies "key=value" by the rules of core/option_table.hpp (`align` takes none / se3 / sim3).
 /// Throws ParseError naming the key (unknown key, with the closest; a value that does not read as
 /// the option's type) or InvalidInputError when the value is out of range; `options` is then
-/// unchanged.
-void set_option(EvalOptions& options, const std::string& assignment);
+/// unchanged. `flag`: where the text came from, named in errors (`--set`, or the Python module's
+/// `settings`).
+void set_option(EvalOptions& options, const std::string& assignment, const char* flag = "--set");
 
 /// Throws InvalidInputError when a value is out of its range.
 void validate(const EvalOptions& options);

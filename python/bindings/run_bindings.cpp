@@ -116,7 +116,9 @@ py::dict slam(const fs::path& input, const fs::path& output, const std::string& 
   request.output = output;
   request.options.frontend = frontend;
   request.options.wifi.enabled = wifi;
-  for (const auto& [key, value] : settings) slam::set_option(request.options, key, value);
+  // Errors name the Python argument the key came from, not the command line's --set.
+  for (const auto& [key, value] : settings)
+    slam::set_option(request.options, key, value, "settings");
   request.force = force;
   request.verify_checksums = verify;
   request.max_frames = max_frames;
@@ -154,7 +156,8 @@ eval::EvalOptions eval_options(const std::string& align, double time_offset_s,
   if (!mode) throw InvalidInputError("align '" + align + "': expected none, se3 or sim3");
   options.align = *mode;
   options.time_offset_s = time_offset_s;
-  for (const auto& [key, value] : settings) eval::set_option(options, key + "=" + value);
+  for (const auto& [key, value] : settings)
+    eval::set_option(options, key + "=" + value, "settings");
   return options;
 }
 

@@ -52,8 +52,10 @@ def test_slam_writes_a_run_folder(wifi_run):
 
 
 def test_slam_bad_setting_is_a_value_error(tmp_path, small_dataset):
-    with pytest.raises(ValueError, match="min_matchez"):
+    # The message names the argument the key came from (`settings`), not the command line's --set.
+    with pytest.raises(ValueError, match="^settings: key 'min_matchez'") as failure:
         wifislam.slam(small_dataset, tmp_path / "run", settings={"min_matchez": 5})
+    assert "--set" not in str(failure.value)
     assert not (tmp_path / "run").exists()
 
 
@@ -102,6 +104,8 @@ def test_evaluate_bad_input(tmp_path, small_dataset):
         wifislam.evaluate(bad, truth)
     with pytest.raises(ValueError, match="align"):
         wifislam.evaluate(truth, truth, align="affine")
+    with pytest.raises(ValueError, match="^settings: key 'overlap_min_fractio'"):
+        wifislam.evaluate(truth, truth, settings={"overlap_min_fractio": "0.3"})
     with pytest.raises(OSError):
         wifislam.evaluate(tmp_path / "missing.txt", small_dataset)
     with pytest.raises(ValueError, match="share a timestamp"):
