@@ -63,15 +63,16 @@ SensorInput open_scene(const fs::path& input, const SensorInputOptions& options)
   generate.max_frames = options.max_frames;
   SensorInput out;
   out.is_scene = true;
-  out.description = {
-      {"kind", "scene"},
-      {"path", input.string()},
-      {"scene", scene.name},
-      {"scene_seed", generate.seed.value_or(scene.seed)},
-      {"fps", generate.fps.value_or(scene.sensors.camera.fps)},
-      {"max_frames", options.max_frames},
-      {"recording", recording_json(recording_of_scene(resolve_scene(scene, generate)))}};
-  out.stream = std::make_unique<GeneratorStream>(scene, generate);
+  auto stream = std::make_unique<GeneratorStream>(scene, generate);
+  // The recording of the scene as the stream resolved it (seed and fps overrides applied).
+  out.description = {{"kind", "scene"},
+                     {"path", input.string()},
+                     {"scene", scene.name},
+                     {"scene_seed", generate.seed.value_or(scene.seed)},
+                     {"fps", generate.fps.value_or(scene.sensors.camera.fps)},
+                     {"max_frames", options.max_frames},
+                     {"recording", recording_json(recording_of_scene(stream->pipeline().scene()))}};
+  out.stream = std::move(stream);
   return out;
 }
 
