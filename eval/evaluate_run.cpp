@@ -1,9 +1,11 @@
 #include "eval/evaluate_run.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
 #include <map>
+#include <set>
 #include <utility>
 
 #include <fmt/format.h>
@@ -136,10 +138,13 @@ RunIdentity identity_of(const fs::path& run_json) {
 }
 
 /// Scored edges from graph.json (every accepted edge, pruned or not) or, for a run without one,
-/// from loop_closures.csv; the csv's candidate role is joined onto graph edges by (from, to).
+/// from loop_closures.csv, each keyframe pair once (`repeated_csv_rows` counts the rows that name
+/// an earlier row's pair, in either order); the csv's candidate role is joined onto graph edges by
+/// (from, to).
 std::vector<AcceptedEdge> accepted_edges(const fs::path& graph_file,
                                          const std::vector<DetectedLoopClosure>& csv_rows,
-                                         const fs::path& csv_file) {
+                                         const fs::path& csv_file,
+                                         std::int64_t& repeated_csv_rows) {
   std::map<std::pair<std::int64_t, std::int64_t>, std::string> role_of;
   for (const DetectedLoopClosure& lc : csv_rows)
     role_of[{lc.from_keyframe, lc.to_keyframe}] = lc.role;
@@ -165,7 +170,12 @@ std::vector<AcceptedEdge> accepted_edges(const fs::path& graph_file,
     }
     return edges;
   }
+  std::set<std::pair<std::int64_t, std::int64_t>> pairs_seen;
   for (const DetectedLoopClosure& lc : csv_rows) {
+    if (!pairs_seen.insert(std::minmax(lc.from_keyframe, lc.to_keyframe)).second) {
+      ++repeated_csv_rows;
+      continue;
+    }
     AcceptedEdge e;
     e.from_keyframe = lc.from_keyframe;
     e.to_keyframe = lc.to_keyframe;
@@ -239,7 +249,7 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
   if (!in.keyframes_file.empty()) in.keyframes = read_tum_trajectory(in.keyframes_file.string());
   const std::vector<DetectedLoopClosure> loops =
       loops_file.empty() ? std::vector<DetectedLoopClosure>{} : read_loop_closures_csv(loops_file);
-  in.edges = accepted_edges(graph_file, loops, loops_file);
+  in.edges = accepted_edges(graph_file, loops, loops_file, ev.loop_closure_csv_repeated_rows);
   ev.loop_closure_csv_rows = static_cast<std::int64_t>(loops.size());
   if (!timing_file.empty()) {
     ev.timing = read_timing_json(timing_file);
@@ -258,6 +268,7 @@ RunInputs read_inputs(const fs::path& input, const fs::path& dataset_dir,
         "loop_closures.csv";
   } else {
     ev.loop_closures_available = true;
+    ev.loop_closures_from_csv = graph_file.empty();
     ev.loop_closure_source = graph_file.empty()
                                  ? std::string(run_folder::kLoopClosures) +
                                        " (no graph.json: its rows are the loop edges, none pruned)"

@@ -192,9 +192,14 @@ void loop_closure_section(Markdown& md, const RunEvaluation& ev) {
         "Scored edges (from {}): every accepted `visual` or `loop` edge whose keyframes lie at "
         "least {} m of ground-truth path apart, whatever the front end called it ({} such edges "
         "of {} visual/loop edges; {} shorter ones are tracking or local edges, not scored; "
-        "loop_closures.csv has {} rows).",
+        "loop_closures.csv has {} rows{}).",
         ev.loop_closure_source, o.revisit_min_path_m, online.scored, score.edges_considered,
-        score.edges_short_path, ev.loop_closure_csv_rows));
+        score.edges_short_path, ev.loop_closure_csv_rows,
+        ev.loop_closure_csv_repeated_rows == 0
+            ? std::string()
+            : fmt::format(", of which {} repeat the keyframe pair of an earlier row and are "
+                          "scored once, as that row",
+                          ev.loop_closure_csv_repeated_rows)));
     line(fmt::format(
         "Verdict from the relative pose and the true positions only: **correct** when the "
         "estimated relative pose is within {} m and {} deg of the ground truth inv(gt_from) * "

@@ -65,6 +65,13 @@ struct RunEvaluation {
   std::string loop_closure_source;  // "graph.json", or loop_closures.csv and why
   std::string loop_closure_note;    // why not available
   std::int64_t loop_closure_csv_rows = 0;
+  // Without graph.json the csv's rows are the scored edges. A row naming the keyframe pair of an
+  // earlier row (in either order) is the same closure reported again (two stamps of an external
+  // system's closures that fall on one keyframe pair, say): scored once, as its first row, and
+  // counted here so that a system is neither charged twice for one wrong closure nor credited
+  // twice for one correct one.
+  bool loop_closures_from_csv = false;
+  std::int64_t loop_closure_csv_repeated_rows = 0;
   std::int64_t loop_closures_detected = 0, loop_closures_correct = 0, false_positives = 0;
   double false_positive_pct = 0.0;
   std::int64_t revisit_episodes = 0, revisit_keyframes = 0, false_negatives = 0;

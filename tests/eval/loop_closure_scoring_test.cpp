@@ -182,6 +182,40 @@ TEST_F(LadderScoring, TrueClosureFalseAliasedClosurePoseErrorAndMissedRevisit) {
   }
 }
 
+// An external system's closure stamps can fall on one keyframe pair twice: without graph.json,
+// a row naming an earlier row's pair (in either order) is that closure again, scored once.
+TEST_F(LadderScoring, CsvRowsRepeatingAKeyframePairAreScoredOnceAndCounted) {
+  const LadderRun& run = *run_;
+  const int a = run.keyframe_near("A", 4.5);
+  const int revisit = run.keyframe_near("revisit", 4.8);
+  const int aliased = run.keyframe_near("aliased", 4.5);
+  const Pose looks_like = nudged(run.true_relative(a, a));
+  test::write_loop_closures(run, {{a, aliased, looks_like},
+                                  {a, revisit, nudged(run.true_relative(a, revisit))},
+                                  {aliased, a, looks_like.inverse()},
+                                  {a, aliased, looks_like}});
+  const RunEvaluation ev = evaluate_run(run.run_dir, run.dataset_dir, EvalOptions());
+  EXPECT_EQ(ev.loop_closure_csv_rows, 4);
+  EXPECT_EQ(ev.loop_closure_csv_repeated_rows, 2);
+  ASSERT_EQ(ev.loop_closure_score.closures.size(), 2u);
+  // The first row of each pair is the one scored, in input order.
+  EXPECT_EQ(ev.loop_closure_score.closures[0].edge.where,
+            (run.run_dir / "loop_closures.csv").string() + ":2");
+  EXPECT_EQ(ev.loop_closure_score.closures[1].edge.to_keyframe, revisit);
+  EXPECT_EQ(ev.false_positives, 1);
+  EXPECT_DOUBLE_EQ(ev.false_positive_pct, 50.0);
+  const nlohmann::ordered_json j = ev.to_ordered_json();
+  EXPECT_EQ(j["loop_closures"]["loop_closure_csv_repeated_rows"], 2);
+  EXPECT_FALSE(ev.flat_metrics().contains("loop_closure_csv_repeated_rows"));
+
+  // With graph.json the graph's edges are scored and the count is not reported.
+  test::write_graph(run, {{a, revisit, "loop", nudged(run.true_relative(a, revisit)), 0}});
+  const RunEvaluation from_graph = evaluate_run(run.run_dir, run.dataset_dir, EvalOptions());
+  EXPECT_EQ(from_graph.loop_closure_score.closures.size(), 1u);
+  EXPECT_FALSE(
+      from_graph.to_ordered_json()["loop_closures"].contains("loop_closure_csv_repeated_rows"));
+}
+
 TEST_F(LadderScoring, DepthOverlapOfRevisitVersusAliasedWing) {
   const LadderRun& run = *run_;
   // Same place, same heading: nearly everything lands. Identical-looking wing 20 m east: nothing.
