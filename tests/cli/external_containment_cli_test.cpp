@@ -13,7 +13,6 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -22,6 +21,7 @@
 #include "tests/cli/shared_dataset.hpp"
 #include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/wait_until.hpp"
 
 namespace wifislam {
 namespace {
@@ -53,16 +53,6 @@ std::vector<pid_t> processes_with_argument(const std::string& needle) {
     out.push_back(static_cast<pid_t>(std::stol(name)));
   }
   return out;
-}
-
-/// Waits until `done()` or `seconds` passed; returns done().
-template <class F>
-bool wait_for(double seconds, F done) {
-  const auto deadline = Clock::now() + std::chrono::duration<double>(seconds);
-  while (!done() && Clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  return done();
 }
 
 class ExternalContainment : public ::testing::Test {
@@ -125,12 +115,14 @@ void expect_system_dies_with_wifislam(const std::string& args, const fs::path& s
     ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  const bool started = wait_for(30, [&] { return !processes_with_argument(seconds).empty(); });
+  const bool started = test::wait_until(std::chrono::seconds(30),
+                                        [&] { return !processes_with_argument(seconds).empty(); });
   ASSERT_TRUE(started) << test::read_file(scratch / "out.txt");
   ::kill(pid, signal);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  EXPECT_TRUE(wait_for(10, [&] { return processes_with_argument(seconds).empty(); }))
+  EXPECT_TRUE(test::wait_until(std::chrono::seconds(10),
+                               [&] { return processes_with_argument(seconds).empty(); }))
       << "the system's sleep outlived wifislam stopped by signal " << signal;
   for (pid_t left : processes_with_argument(seconds)) ::kill(left, SIGKILL);  // never leak it
 }

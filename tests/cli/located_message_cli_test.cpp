@@ -10,12 +10,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <string>
-#include <thread>
 
 #include <gtest/gtest.h>
 
 #include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/wait_until.hpp"
 
 namespace wifislam {
 namespace {
@@ -143,21 +143,19 @@ TEST_F(LocatedMessage, SecondGenerateIntoAFolderBeingWrittenIsRefused) {
       "'; wait $!; echo $? >'" + first_rc.string() + ".tmp' && mv '" + first_rc.string() +
       ".tmp' '" + first_rc.string() + "' ) &";
   ASSERT_EQ(std::system(first.c_str()), 0);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::minutes(2);
-  while (!(fs::exists(first_pid) && fs::exists(partial / "rgb")) && !fs::exists(first_rc) &&
-         std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
+  test::wait_until(
+      std::chrono::minutes(2),
+      [&] {
+        return (fs::exists(first_pid) && fs::exists(partial / "rgb")) || fs::exists(first_rc);
+      },
+      std::chrono::milliseconds(20));
   ASSERT_TRUE(fs::exists(partial / "rgb")) << "the first run never started writing";
   const pid_t pid = static_cast<pid_t>(std::stol(test::read_file(first_pid)));
   ASSERT_EQ(::kill(pid, SIGSTOP), 0) << "the first run ended before the second could meet it";
   const auto second =
       wifislam("generate " + scene_.string() + " -o " + out.string() + " --fps 10 -q");
   ASSERT_EQ(::kill(pid, SIGCONT), 0);
-  while (!fs::exists(first_rc) && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  ASSERT_TRUE(fs::exists(first_rc));
+  ASSERT_TRUE(test::wait_until(std::chrono::minutes(2), [&] { return fs::exists(first_rc); }));
   test::expect_located_bad_input(second, out.string(),
                                  "another wifislam run is writing this folder");
   EXPECT_EQ(test::read_file(first_rc), "0\n") << test::read_file(scratch_ / "first_err.txt");

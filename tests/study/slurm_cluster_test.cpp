@@ -15,13 +15,13 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <thread>
 
 #include "study/result_store.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
 #include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/wait_until.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -81,10 +81,9 @@ class Daemons {
     const auto deadline = Clock::now() + std::chrono::seconds(10);
     for (pid_t pid : pids_) {
       int status = 0;
-      while (::waitpid(pid, &status, WNOHANG) == 0 && Clock::now() < deadline) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      }
-      if (::waitpid(pid, &status, WNOHANG) == 0) {
+      const bool exited = test::wait_until(deadline - Clock::now(),
+                                           [&] { return ::waitpid(pid, &status, WNOHANG) != 0; });
+      if (!exited) {
         ::kill(pid, SIGKILL);
         ::waitpid(pid, &status, 0);
       }
@@ -162,9 +161,7 @@ TEST(SlurmCluster, AStudyAsAFourTaskJobArrayMergesToTheUnshardedRun) {
        "--pid-file=" + (dir / "munge/munged.pid").string(),
        "--seed-file=" + (dir / "munge/munged.seed").string()},
       dir / "log/munged.out", conf);
-  for (int i = 0; i < 100 && !fs::exists(dir / "munge/munge.socket"); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
+  test::wait_until(std::chrono::seconds(5), [&] { return fs::exists(dir / "munge/munge.socket"); });
   daemons.start({slurmctld, "-D"}, dir / "log/slurmctld.out", conf);
   daemons.start({slurmd, "-D"}, dir / "log/slurmd.out", conf);
   const std::string env = "SLURM_CONF='" + conf.string() + "' ";
@@ -176,10 +173,7 @@ TEST(SlurmCluster, AStudyAsAFourTaskJobArrayMergesToTheUnshardedRun) {
     ::pclose(pipe);
     return std::string(buffer, n).find("idle") != std::string::npos;
   };
-  const auto start = Clock::now();
-  while (!node_idle() && Clock::now() - start < std::chrono::seconds(60)) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(250));
-  }
+  test::wait_until(std::chrono::seconds(60), node_idle, std::chrono::milliseconds(250));
   ASSERT_TRUE(daemons.all_running())
       << test::read_file(dir / "log/slurmctld.out") << test::read_file(dir / "log/slurmd.out");
   ASSERT_TRUE(node_idle()) << "the node never became idle\n"
@@ -198,10 +192,8 @@ TEST(SlurmCluster, AStudyAsAFourTaskJobArrayMergesToTheUnshardedRun) {
   EXPECT_NE(submitted.out.find("submitted array job"), std::string::npos) << submitted.out;
 
   const fs::path merged = dir / "job" / "slurm_study.sqlite";
-  const auto waited = Clock::now();
-  while (!fs::exists(merged) && Clock::now() - waited < std::chrono::minutes(5)) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
-  }
+  test::wait_until(
+      std::chrono::minutes(5), [&] { return fs::exists(merged); }, std::chrono::milliseconds(500));
   ASSERT_TRUE(fs::exists(merged)) << "no merged database after 5 minutes\n"
                                   << test::read_file(dir / "job/logs/merge.log")
                                   << test::read_file(dir / "job/logs/shard-0.log")

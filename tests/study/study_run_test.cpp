@@ -10,7 +10,6 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <thread>
 
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
@@ -19,6 +18,7 @@
 #include "study/study_runner.hpp"
 #include "tests/support/cli_run.hpp"
 #include "tests/support/read_file.hpp"
+#include "tests/support/wait_until.hpp"
 
 namespace wifislam::study {
 namespace {
@@ -64,10 +64,9 @@ TEST(StudyRun, AKilledRunResumesToTheRowsOfAnUninterruptedRun) {
             killed.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (rows_in(killed) < 3 && std::chrono::steady_clock::now() < deadline) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  test::wait_until(
+      std::chrono::seconds(120), [&] { return rows_in(killed) >= 3; },
+      std::chrono::milliseconds(5));
   ::kill(child, SIGKILL);
   int status = 0;
   ::waitpid(child, &status, 0);
