@@ -22,6 +22,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -69,10 +70,17 @@ class TextSetter {
   bool found() const { return found_; }
 
   void integer(const char* key, int& field, const char*) {
-    if (mine(key) && !parse_integer(text_, field)) throw bad("an integer");
+    // The range is said: a whole number too large for the field reads as no integer at all.
+    if (mine(key) && !parse_integer(text_, field)) {
+      throw bad(fmt::format("an integer from {} to {}", std::numeric_limits<int>::min(),
+                            std::numeric_limits<int>::max()));
+    }
   }
   void uint64(const char* key, std::uint64_t& field, const char*) {
-    if (mine(key) && !parse_uint64(text_, field)) throw bad("a non-negative integer");
+    if (mine(key) && !parse_uint64(text_, field)) {
+      throw bad(fmt::format("a non-negative integer up to {}",
+                            std::numeric_limits<std::uint64_t>::max()));
+    }
   }
   void number(const char* key, double& field, const char*, Infinity infinity = Infinity::kRefused) {
     if (!mine(key)) return;

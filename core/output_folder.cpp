@@ -54,6 +54,12 @@ fs::path resolve_path(const fs::path& path) {
   return resolved;
 }
 
+fs::path absolute_folder(const fs::path& folder) {
+  fs::path normal = fs::absolute(folder).lexically_normal();
+  while (!normal.has_filename() && normal.has_relative_path()) normal = normal.parent_path();
+  return normal;
+}
+
 bool has_output_marker(const fs::path& folder) { return is_regular(folder / kOutputMarkerFile); }
 
 namespace {

@@ -90,6 +90,10 @@ void check_folder_replaceable(const std::filesystem::path& resolved);
 /// Absolute path with symlinks, `.`, `..` and trailing slashes resolved as far as the path exists.
 std::filesystem::path resolve_path(const std::filesystem::path& path);
 
+/// An output folder as a command names it back to the user: absolute, with `.` and `..` taken
+/// lexically and no trailing slash ("run/" and "run/." are "<cwd>/run"); symlinks kept as given.
+std::filesystem::path absolute_folder(const std::filesystem::path& folder);
+
 /// True when `folder` holds the marker file (a regular file named kOutputMarkerFile) that
 /// AtomicDirectory writes into every folder it creates.
 bool has_output_marker(const std::filesystem::path& folder);

@@ -24,8 +24,13 @@ std::vector<std::pair<std::string, std::string>> option_descriptions() {
 
 void set_option(EvalOptions& options, const std::string& assignment, const char* flag) {
   const auto [key, text] = options::split_assignment(flag, assignment);
+  set_option(options, key, text, flag);
+}
+
+void set_option(EvalOptions& options, const std::string& key, const std::string& value,
+                const char* flag) {
   EvalOptions updated = options;  // unchanged when the value is rejected
-  options::set_from_text(updated, flag, "evaluation threshold", key, text);
+  options::set_from_text(updated, flag, "evaluation threshold", key, value);
   validate(updated);
   options = updated;
 }

@@ -136,6 +136,10 @@ std::vector<std::pair<std::string, std::string>> option_descriptions();
 /// unchanged. `flag`: where the text came from, named in errors (`--set`, or the Python module's
 /// `settings`).
 void set_option(EvalOptions& options, const std::string& assignment, const char* flag = "--set");
+/// The same for a key and its value given apart (the Python module's `settings`): a key holding
+/// '=' is a key, unknown, not a key and a value.
+void set_option(EvalOptions& options, const std::string& key, const std::string& value,
+                const char* flag);
 
 /// Throws InvalidInputError when a value is out of its range.
 void validate(const EvalOptions& options);

@@ -53,7 +53,7 @@ SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   slam::validate(request.options);
   const bool replace = check_output_folder({request.output, request.force, {}, {request.input}});
   SlamRunResult result;
-  result.run_dir = fs::absolute(request.output).lexically_normal();
+  result.run_dir = absolute_folder(request.output);
   if (interop::is_external_frontend(request.options.frontend)) {
     return run_external_to_folder(request, replace, std::move(result));
   }

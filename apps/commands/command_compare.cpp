@@ -82,7 +82,7 @@ void run(CompareArgs args, const CLI::App& app) {
       study::run_comparison(scenes, options, out.staging_path(), out.final_paths());
   out.commit();
   fmt::print("{}", result.markdown());
-  const std::string dir = std::filesystem::absolute(args.output).lexically_normal().string();
+  const std::string dir = absolute_folder(args.output).string();
   fmt::print(
       "wrote {0}/comparison.md, comparison.csv, comparison.json; per-run reports and plots "
       "in {0}/runs/<scene>-seed<seed>/<setting>/<variant>/eval/\n",

@@ -62,7 +62,7 @@ void run_demo(const DemoArgs& args) {
   draw_scene_pictures(*result.sites.front(), out.staging_path());
   out.commit();
 
-  const std::string dir = std::filesystem::absolute(args.output_dir).lexically_normal().string();
+  const std::string dir = absolute_folder(args.output_dir).string();
   fmt::print("scene: {} (RGBD-SLAM vanilla vs with Wi-Fi, min_matches 10)\n\n{}\n", scene.name,
              result.markdown());
   fmt::print("wrote {}/\n", dir);

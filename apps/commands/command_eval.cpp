@@ -150,7 +150,7 @@ void run(const EvalArgs& args) {
   } else {
     fmt::print("time               {}\n", ev.timing_note);
   }
-  fmt::print("wrote {}\n", std::filesystem::absolute(out).lexically_normal().string());
+  fmt::print("wrote {}\n", absolute_folder(out).string());
   int failed = 0;
   for (const eval::RequirementResult& r : eval::check_requirements(requirements, flat)) {
     fmt::print("requirement        {}\n", r.describe());

@@ -228,7 +228,7 @@ void run(const LocalizeArgs& args, bool route_given, bool map_share_given) {
   out.commit();
   fmt::print("{}", study::localisation_summary(result, options).dump(1) + "\n");
   fmt::print("wrote {}/ (summary.md, queries.csv, cdf.csv, cdf.png, pr.csv)\n",
-             fs::absolute(args.output).lexically_normal().string());
+             absolute_folder(args.output).string());
 }
 
 }  // namespace

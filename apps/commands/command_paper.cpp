@@ -12,6 +12,7 @@
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "core/thread_start.hpp"
 #include "study/paper/paper_folder.hpp"
 #include "study/paper/paper_report.hpp"
@@ -38,7 +39,7 @@ struct PaperArgs {
 /// --no-report` with these options, and a final job writing the report once all succeeded.
 void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions& options) {
   study::paper::prepare_paper_folder(options);
-  const fs::path dir = fs::absolute(options.folder).lexically_normal();
+  const fs::path dir = absolute_folder(options.folder);
   const std::string common = fmt::format(
       "{} paper -o {} --seeds {} --fps {} --parts {} --twins {}",
       study::shell_quoted(study::own_binary().string()), study::shell_quoted(dir.string()),
@@ -155,7 +156,7 @@ void run(const PaperArgs& args) {
   if (args.no_report) return;
   const std::string verdicts = study::paper::write_paper_report(options.folder);
   fmt::print("{}\nwrote {}/report.md (and a page per part, paper_vs_ours.csv/.json, figures/)\n",
-             verdicts, fs::absolute(options.folder).lexically_normal().string());
+             verdicts, absolute_folder(options.folder).string());
 }
 
 }  // namespace

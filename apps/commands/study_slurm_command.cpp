@@ -39,7 +39,7 @@ void slurm_command(const SlurmArgs& args) {
   request.cpus_per_task = args.cpus;
   request.partition = args.partition;
   request.time_limit = args.time_limit;
-  const fs::path folder = fs::absolute(args.output).lexically_normal();
+  const fs::path folder = absolute_folder(args.output);
   const study::SlurmJobFiles files = study::slurm_job_files(file, request, folder);
   study::write_slurm_job(folder, replace, files);
   fmt::print("wrote {0}/study.sbatch ({1} tasks) and {0}/merge.sbatch\n", folder.string(),

@@ -71,7 +71,11 @@ TEST(OptionTable, IntegersAreWholeNumbersAndNumbersAreFinite) {
     EXPECT_NE(error_of(o, "count", bad).find("expected an integer"), std::string::npos) << bad;
   }
   EXPECT_EQ(o.count, -4);  // a refused value changes nothing
-  EXPECT_NE(error_of(o, "seed", "-1").find("non-negative integer"), std::string::npos);
+  // A whole number too large for the field is told the range, not that it is no integer.
+  EXPECT_NE(error_of(o, "count", "99999999999").find("from -2147483648 to 2147483647"),
+            std::string::npos);
+  EXPECT_NE(error_of(o, "seed", "-1").find("non-negative integer up to 18446744073709551615"),
+            std::string::npos);
   set_from_text(o, "--set", "toy option", "size_m", "2.5e-1");
   EXPECT_DOUBLE_EQ(o.size_m, 0.25);
   for (const char* bad : {"inf", "nan", "-inf", "abc", ""}) {
