@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "core/error.hpp"
+#include "sim/scene/scene_schema.hpp"
 
 namespace wifislam::python {
 
@@ -21,14 +22,29 @@ py::array_t<std::uint8_t> rgb_array(const cv::Mat& bgr) {
   return out;
 }
 
+namespace {
+/// Refuses an image with no pixels or bigger than a scene's camera can be (no dataset holds
+/// one, and past 2**31 rows OpenCV's int sizes overflow).
+void check_image_shape(py::ssize_t rows, py::ssize_t cols, const std::string& what) {
+  if (rows == 0 || cols == 0)
+    throw InvalidInputError(what + ": the image is empty (0 rows or columns)");
+  const double most = sim::scene::schema::kImageSidePx.hi;
+  if (static_cast<double>(rows) > most || static_cast<double>(cols) > most) {
+    throw InvalidInputError(
+        fmt::format("{}: the image is {} x {}; at most {} x {} (the largest "
+                    "camera a scene can have)",
+                    what, cols, rows, most, most));
+  }
+}
+}  // namespace
+
 cv::Mat bgr_mat(const py::array& rgb, const std::string& what) {
   const auto image = py::array_t<std::uint8_t, py::array::c_style>::ensure(rgb);
   if (!image || rgb.dtype().kind() != 'u' || rgb.itemsize() != 1 || image.ndim() != 3 ||
       image.shape(2) != 3) {
     throw InvalidInputError(what + ": expected an H x W x 3 uint8 RGB array");
   }
-  if (image.shape(0) == 0 || image.shape(1) == 0)
-    throw InvalidInputError(what + ": the image is empty (0 rows or columns)");
+  check_image_shape(image.shape(0), image.shape(1), what);
   const cv::Mat view(static_cast<int>(image.shape(0)), static_cast<int>(image.shape(1)), CV_8UC3,
                      const_cast<std::uint8_t*>(image.data()));
   cv::Mat bgr;
@@ -52,8 +68,7 @@ cv::Mat depth_mat(const py::array& depth_m, const std::string& what) {
   if (depth_m.dtype().kind() != 'f' || depth_m.ndim() != 2) {
     throw InvalidInputError(what + ": expected an H x W float array of metres");
   }
-  if (depth_m.shape(0) == 0 || depth_m.shape(1) == 0)
-    throw InvalidInputError(what + ": the image is empty (0 rows or columns)");
+  check_image_shape(depth_m.shape(0), depth_m.shape(1), what);
   const auto metres =
       py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(depth_m);
   cv::Mat out(static_cast<int>(metres.shape(0)), static_cast<int>(metres.shape(1)), CV_32FC1);

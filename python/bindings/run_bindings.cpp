@@ -45,7 +45,7 @@ py::object to_python(const nlohmann::ordered_json& json) {
 
 py::dict generate_summary_dict(const sim::generate::GenerateSummary& s) {
   py::dict out;
-  out["dataset"] = fs::absolute(s.output).lexically_normal().string();
+  out["dataset"] = absolute_folder(s.output).string();
   out["scene"] = s.scene_name;
   out["seed"] = s.seed;
   out["fps"] = s.fps;
@@ -156,8 +156,7 @@ eval::EvalOptions eval_options(const std::string& align, double time_offset_s,
   if (!mode) throw InvalidInputError("align '" + align + "': expected none, se3 or sim3");
   options.align = *mode;
   options.time_offset_s = time_offset_s;
-  for (const auto& [key, value] : settings)
-    eval::set_option(options, key + "=" + value, "settings");
+  for (const auto& [key, value] : settings) eval::set_option(options, key, value, "settings");
   return options;
 }
 

@@ -7,6 +7,7 @@
 #include <pybind11/stl.h>
 #include <yaml-cpp/yaml.h>
 
+#include "core/error.hpp"
 #include "python/bindings/bindings.hpp"
 #include "sim/scene/scene_loader.hpp"
 
@@ -96,6 +97,22 @@ void bind_scene(py::module_& m) {
       .def_property_readonly("fps", [](const sim::scene::Scene& s) { return s.sensors.camera.fps; })
       .def_property_readonly("source_path",
                              [](const sim::scene::Scene& s) { return s.source_path; })
+      // Pickled as its resolved YAML (what a dataset's scene.yaml holds, and what loads back to
+      // the same scene) and the file it came from: multiprocessing's spawn and forkserver
+      // workers, and copy.deepcopy, take a Scene as they take a Frame.
+      .def(py::pickle(
+          [](const sim::scene::Scene& s) {
+            return py::make_tuple(sim::scene::resolved_scene_yaml(s), s.source_path);
+          },
+          [](const py::tuple& state) {
+            if (state.size() != 2) throw InvalidInputError("Scene: not a pickled wifislam.Scene");
+            const auto source_path = state[1].cast<std::string>();
+            auto scene = std::make_shared<sim::scene::Scene>(
+                sim::scene::load_scene_yaml(state[0].cast<std::string>(),
+                                            source_path.empty() ? "<pickled scene>" : source_path));
+            scene->source_path = source_path;
+            return scene;
+          }))
       .def("__repr__", [](const sim::scene::Scene& s) {
         return "<wifislam.Scene '" + s.name + "' seed " + std::to_string(s.seed) +
                (s.source_path.empty() ? "" : " from " + s.source_path) + ">";

@@ -64,14 +64,24 @@ def _is_path(value: Any) -> bool:
 
 
 def _path(value: PathLike, what: str) -> str:
-    """A path argument as the library takes it: str, bytes or os.PathLike, with no NUL byte
-    (the C++ side would stop at it and read another file, where Python's open() refuses)."""
+    """A path argument as the library takes it: str, bytes or os.PathLike, not empty, with no
+    NUL byte (the C++ side would stop at it and read another file, where Python's open()
+    refuses), and valid UTF-8, as the command line requires: outputs record paths as UTF-8
+    text, and a name in another encoding would fail only after the whole output was written."""
     if not _is_path(value):
         raise TypeError(f"{what}: expected a path (str, bytes or os.PathLike), "
                         f"got {type(value).__name__}")
     text = os.fsdecode(os.fspath(value))
+    if not text:
+        raise InvalidInputError(f"{what}: the path is empty")
     if "\0" in text:
         raise ValueError(f"{what}: embedded null byte in path {text!r}")
+    try:
+        text.encode("utf-8")
+    except UnicodeEncodeError:
+        raise InvalidInputError(
+            f"{what}: {os.fspath(value)!r} is not valid UTF-8 (a file name in another "
+            "encoding?): the outputs record paths as UTF-8; rename it") from None
     return text
 
 
@@ -80,7 +90,9 @@ _load_scene_file = Scene.load
 
 def _scene_load(path: PathLike) -> Scene:
     """A scene file (YAML) loaded and checked; ParseError names the file, line and key."""
-    return _load_scene_file(_path(path, "Scene.load"))
+    # Absolute at loading, as a Dataset's path: the scene remembers its file, and generate's
+    # refusal to replace a folder holding it must find it after a later os.chdir too.
+    return _load_scene_file(os.path.abspath(_path(path, "Scene.load")))
 
 
 Scene.load = staticmethod(_scene_load)
@@ -107,6 +119,16 @@ def _json_plain(value: Any) -> Any:
 
 
 Scene.from_dict = staticmethod(_scene_from_dict)
+_scene_from_yaml_text = Scene.from_yaml
+
+
+@checked
+def _scene_from_yaml(text: str, source_name: str = "<yaml>") -> Scene:
+    """A scene from YAML text of the scene-file schema; errors name ``source_name``."""
+    return _scene_from_yaml_text(text, source_name)
+
+
+Scene.from_yaml = staticmethod(_scene_from_yaml)
 
 
 def channel_of(frequency_khz: int) -> int:
@@ -397,7 +419,9 @@ def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
     receiver at ``height_m`` (default: the camera's height, where datasets scan) above the floor
     of ``level`` (a scene with ``levels:``; default: the route's level), hearing every level's
     access points."""
-    raw = _wifislam._radio_map(_scene(scene), resolution_m, ap, str(band), height_m, str(level))
+    # A number is the band in GHz as the command line spells it: 5.0 is "5", 2.4 is "2.4".
+    band_text = band if isinstance(band, str) else f"{float(band):g}"
+    raw = _wifislam._radio_map(_scene(scene), resolution_m, ap, band_text, height_m, str(level))
     return RadioMap(raw["rssi_dbm"], raw["best_ap_id"], tuple(raw["origin_m"]),
                     raw["resolution_m"], tuple(raw["access_points"]))
 
@@ -431,10 +455,17 @@ def slam(dataset: PathLike, output: PathLike, frontend: str = "rgbdslam", wifi: 
 
 
 def _setting_text(value: Any) -> str:
+    """A setting as the command line's --set spells it. numpy's scalars and arrays count as
+    Python's values (a sweep over np.arange, a pandas row); a whole float is the whole number it
+    holds (70.0 from a float column is min_matches 70; any number setting reads "70" alike)."""
+    if isinstance(value, (np.generic, np.ndarray)):
+        value = value.tolist()
     if isinstance(value, bool):
         return "true" if value else "false"
     if isinstance(value, (list, tuple)):  # a number list (prune_chi2); empty is "none"
         return ",".join(_setting_text(v) for v in value) if value else "none"
+    if isinstance(value, float) and value.is_integer() and abs(value) < 2**63:
+        return str(int(value))
     return str(value)
 
 
@@ -485,6 +516,14 @@ def require(metrics: Mapping[str, Any], *requirements: str) -> List[str]:
         if (isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral)
                 and not math.isfinite(value)):
             return None
+        # No metric is a whole number beyond 64 bits; such a one is held as the number it is
+        # near, or, beyond any double, is one the run could not give.
+        if (isinstance(value, numbers.Integral) and not isinstance(value, bool)
+                and not -2**63 <= value < 2**64):
+            try:
+                return float(value)
+            except OverflowError:
+                return None
         return value
 
     return _wifislam._require({k: available(v) for k, v in dict(metrics).items()},
@@ -497,11 +536,13 @@ def read_trajectory(path: PathLike) -> np.ndarray:
     return _wifislam._read_trajectory(_path(path, "read_trajectory"))
 
 
+@checked
 def encode_rgb_png(rgb: np.ndarray) -> bytes:
     """The PNG bytes ``generate`` writes for this colour image (H x W x 3 uint8 RGB)."""
     return _wifislam._encode_rgb_png(np.ascontiguousarray(rgb))
 
 
+@checked
 def encode_depth_png(depth: np.ndarray) -> bytes:
     """The 16-bit TUM depth PNG bytes (5000 per metre, 0 = no reading) ``generate`` writes for
     this depth image (H x W float metres, NaN = no reading). 16 bits at 5000 per metre end at

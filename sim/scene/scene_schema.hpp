@@ -45,6 +45,8 @@ inline constexpr Limits kCoordinateM{-10000.0, 10000.0, false};
 /// A height above the floor, up to the highest ceiling a scene may have (building.wall_height_m);
 /// the scene validation compares it with the scene's own ceiling.
 inline constexpr Limits kHeightM{0.0, 10.0, false};
+/// A camera image's width or height in pixels (and so of every image a dataset holds).
+inline constexpr Limits kImageSidePx{16, 8192, false};
 /// An access point's transmit power: a Wi-Fi radio's range (radio_model/access_point.hpp).
 inline constexpr Limits kTxPowerDbm{radio_model::kMinTxPowerDbm, radio_model::kMaxTxPowerDbm,
                                     false};
@@ -261,8 +263,8 @@ void visit(V& v, Route& r) {
 
 template <class V>
 void visit(V& v, CameraSpec& c) {
-  v.integer("width_px", c.intrinsics.width_px, Limits{16, 8192});
-  v.integer("height_px", c.intrinsics.height_px, Limits{16, 8192});
+  v.integer("width_px", c.intrinsics.width_px, kImageSidePx);
+  v.integer("height_px", c.intrinsics.height_px, kImageSidePx);
   v.number("fx_px", c.intrinsics.fx_px, kPositive);
   v.number("fy_px", c.intrinsics.fy_px, kPositive);
   v.number("cx_px", c.intrinsics.cx_px, kAny);

@@ -4,6 +4,7 @@ the wrong kind. Each is a clear error of the module's classes naming the argumen
 value is legitimate, it works as its str equivalent does), never a hang, a crash or a silent
 answer about something else."""
 
+import json
 import os
 import pathlib
 
@@ -234,3 +235,93 @@ def test_evaluate_without_verify_scores_an_edited_ground_truth(tmp_path, small_d
         wifislam.evaluate(estimate, edited)
     metrics = wifislam.evaluate(estimate, edited, verify=False)
     assert 0 < metrics["ate_rmse_m"] < 0.01
+
+
+def test_a_path_that_is_not_utf8_is_refused_before_any_work(tmp_path, a_hall, small_dataset):
+    # generate and slam wrote their whole output into such a folder and then failed to give its
+    # path back; the readers failed with a JSON or cast error of the compiled module.
+    bad = os.fsencode(str(tmp_path)) + b"/bad\xff"
+    calls = [
+        lambda: wifislam.generate(a_hall, bad, fps=1, max_frames=2, images=False),
+        lambda: wifislam.slam(small_dataset, bad, max_frames=2),
+        lambda: wifislam.slam(bad, tmp_path / "r"),
+        lambda: wifislam.evaluate(bad, small_dataset),
+        lambda: wifislam.Scene.load(bad + b".yaml"),
+        lambda: wifislam.Dataset(bad),
+        lambda: wifislam.read_trajectory(bad + b"/groundtruth.txt"),
+    ]
+    for call in calls:
+        with pytest.raises(wifislam.InvalidInputError, match="not valid UTF-8"):
+            call()
+    assert os.listdir(tmp_path) == []
+
+
+def test_an_empty_path_is_refused_not_taken_for_the_current_folder(small_dataset):
+    # Dataset("") opened the current folder (os.path.abspath("") is the current folder).
+    for call in (lambda: wifislam.Dataset(""), lambda: wifislam.Scene.load(""),
+                 lambda: wifislam.read_trajectory(""), lambda: wifislam.slam(small_dataset, "")):
+        with pytest.raises(wifislam.InvalidInputError, match="the path is empty"):
+            call()
+
+
+def test_images_too_big_for_any_camera_and_non_arrays_are_named():
+    # A 2**31-wide image reached OpenCV, whose assertion came back as a bare RuntimeError.
+    with pytest.raises(wifislam.InvalidInputError, match="rgb: the image is 2147483648 x 1"):
+        wifislam.encode_rgb_png(np.zeros((1, 2**31, 3), np.uint8))
+    with pytest.raises(wifislam.InvalidInputError, match="depth: the image is 1 x 8193"):
+        wifislam.encode_depth_png(np.zeros((8193, 1), np.float32))
+    for bad in (None, "abc"):
+        with pytest.raises(TypeError, match=r"encode_rgb_png\(\): rgb takes an array"):
+            wifislam.encode_rgb_png(bad)
+        with pytest.raises(TypeError, match=r"encode_depth_png\(\): depth takes an array"):
+            wifislam.encode_depth_png(bad)
+
+
+def test_numpy_and_whole_float_settings_read_as_the_command_line_spells_them(tmp_path,
+                                                                             small_dataset):
+    # np.bool_ read as "True", an array as "[1. 2.]" and 70.0 as no integer.
+    small = {"max_frames": 3, "frontend": "rgbdslam"}
+    run = wifislam.slam(small_dataset, tmp_path / "a", wifi=False, **small,
+                        settings={"wifi": np.bool_(True), "min_matches": np.float64(70.0),
+                                  "prune_chi2": np.array([1.0, 2.0])})
+    assert run["wifi"] is True
+    with open(os.path.join(run["run"], "run.json")) as f:
+        options = json.load(f)["options"]
+    assert options["min_matches"] == 70 and options["prune_chi2"] == "1,2"
+    with pytest.raises(wifislam.ParseError, match="min_matches"):
+        wifislam.slam(small_dataset, tmp_path / "b", **small, settings={"min_matches": 70.5})
+    with pytest.raises(wifislam.ParseError, match="from -2147483648 to 2147483647"):
+        wifislam.slam(small_dataset, tmp_path / "b", **small,
+                      settings={"optimizer_threads": 2**40})
+    assert not (tmp_path / "b").exists()
+
+
+def test_a_whole_number_beyond_64_bits_in_metrics_is_no_json_error():
+    met = wifislam.require({"ate_rmse_m": 0.1, "x": 10**400, "y": 2**70}, "ate_rmse_m <= 1")
+    assert met[0].startswith("met")
+    with pytest.raises(wifislam.RequirementNotMetError, match="not available"):
+        wifislam.require({"ate_rmse_m": 10**400}, "ate_rmse_m <= 1")
+
+
+def test_a_settings_key_holding_an_equals_sign_is_that_key(small_dataset):
+    # evaluate split "a=b" into the key "a" and the value "b=c".
+    with pytest.raises(wifislam.ParseError, match="settings: key 'a=b'"):
+        wifislam.evaluate(small_dataset, small_dataset, settings={"a=b": "c"})
+    with pytest.raises(wifislam.ParseError, match="settings: unknown evaluation threshold"):
+        wifislam.evaluate(small_dataset, small_dataset, settings={"": "c"})
+
+
+def test_a_band_given_as_a_number_is_the_band_in_ghz(a_hall):
+    # band=5.0 was passed on as the text "5.0", which no band is called.
+    for number, text in ((5.0, "5"), (2.4, "2.4"), (np.float32(5), "5")):
+        as_number = wifislam.radio_map(a_hall, resolution_m=5, band=number)
+        as_text = wifislam.radio_map(a_hall, resolution_m=5, band=text)
+        assert np.array_equal(as_number.rssi_dbm, as_text.rssi_dbm, equal_nan=True)
+
+
+def test_output_folders_are_named_back_without_a_trailing_slash(tmp_path, a_hall, small_dataset):
+    made = wifislam.generate(a_hall, str(tmp_path / "d") + "/.", fps=1, max_frames=2,
+                             images=False)
+    assert made["dataset"] == str(tmp_path / "d")
+    run = wifislam.slam(small_dataset, str(tmp_path / "r") + "/", max_frames=2)
+    assert run["run"] == str(tmp_path / "r")

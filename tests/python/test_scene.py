@@ -76,3 +76,47 @@ def test_a_source_name_labels_messages_and_is_no_input(tmp_path, c_hall):
     info = wifislam.generate(wifislam.Scene.from_dict(scene.to_dict()), tmp_path / "<dict>",
                              fps=1, max_frames=2, images=False)
     assert os.path.isdir(info["dataset"])
+
+
+def test_a_scene_pickles_and_copies_to_the_same_scene(tmp_path, c_hall):
+    # multiprocessing's spawn and forkserver workers pickle their arguments.
+    import copy
+    import pickle
+
+    scene = wifislam.Scene.load(c_hall)
+    for again in (pickle.loads(pickle.dumps(scene)), copy.deepcopy(scene)):
+        assert again.to_yaml() == scene.to_yaml()
+        assert again.source_path == scene.source_path
+    built = wifislam.Scene.from_dict(scene.to_dict(), "mine")
+    assert pickle.loads(pickle.dumps(built)).to_yaml() == built.to_yaml()
+    # The same dataset, bit for bit, from the scene and from its pickled copy.
+    small = {"fps": 1, "max_frames": 3}
+    wifislam.generate(scene, tmp_path / "a", **small)
+    wifislam.generate(pickle.loads(pickle.dumps(scene)), tmp_path / "b", **small)
+    for name in ("groundtruth.txt", "wifi.csv", "images.sha256", "scene.yaml"):
+        assert (tmp_path / "a" / name).read_bytes() == (tmp_path / "b" / name).read_bytes(), name
+
+
+def test_from_yaml_takes_text_and_says_so():
+    for call in (lambda: wifislam.Scene.from_yaml(None),
+                 lambda: wifislam.Scene.from_yaml("version: 1", source_name=None)):
+        with pytest.raises(TypeError, match=r"from_yaml\(\): (text|source_name) takes text"):
+            call()
+
+
+def test_a_loaded_scene_remembers_its_file_wherever_the_notebook_goes(tmp_path, c_hall,
+                                                                     monkeypatch):
+    # The scene kept the relative path it was loaded by: after a %cd, generate's check that
+    # force=True never replaces a folder holding an input looked elsewhere, and the scene file
+    # inside the replaced folder was deleted.
+    monkeypatch.chdir(tmp_path)
+    small = {"images": False, "fps": 1, "max_frames": 2}
+    wifislam.generate(c_hall, "ds", **small)
+    (tmp_path / "ds" / "variant.yaml").write_bytes(open(c_hall, "rb").read())
+    scene = wifislam.Scene.load("ds/variant.yaml")
+    assert scene.source_path == str(tmp_path / "ds" / "variant.yaml")
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    with pytest.raises(wifislam.InvalidInputError, match="input"):
+        wifislam.generate(scene, tmp_path / "ds", force=True, **small)
+    assert (tmp_path / "ds" / "variant.yaml").exists()
