@@ -54,7 +54,13 @@ void draw_doors(cairo_t* cr, const MetricCanvas& c, const FloorPlan& plan) {
   for (const Door& d : plan.doors) {
     const Eigen::Vector2d u = d.along_wall, n(-u.y(), u.x());
     const double hw = 0.5 * d.width_m, ht = 0.5 * d.wall_thickness_m;
-    if (d.open) {
+    if (d.open && d.room_index < 0) {
+      // An opening between two walkable spaces (imported plans have them): no room to swing a
+      // leaf into, so its two edges in green.
+      plot::set_colour(cr, kOpenDoor);
+      plot::draw_segment(cr, c, d.center_m - hw * u - ht * n, d.center_m - hw * u + ht * n, 1.5);
+      plot::draw_segment(cr, c, d.center_m + hw * u - ht * n, d.center_m + hw * u + ht * n, 1.5);
+    } else if (d.open) {
       // Opening outlined in green, with the leaf swung into the room.
       plot::set_colour(cr, kOpenDoor);
       const Eigen::Vector2d room_dir =
