@@ -13,6 +13,12 @@ namespace wifislam {
 
 namespace {
 
+/// What an IMU on a robot can read: 200 m/s^2 (about 20 g) and 100 rad/s are beyond any MEMS
+/// unit's range (16 g and 2000 deg/s, 35 rad/s, are the common ceilings); a larger value is a
+/// corrupt row, refused where it is rather than handed to another program by `export`.
+constexpr double kMaxSpecificForceMps2 = 200.0;
+constexpr double kMaxAngularVelocityRadps = 100.0;
+
 constexpr std::array<const char*, 7> kColumns = {"timestamp", "w_x_radps", "w_y_radps", "w_z_radps",
                                                  "a_x_mps2",  "a_y_mps2",  "a_z_mps2"};
 
@@ -53,6 +59,12 @@ std::vector<ImuReading> read_imu_csv(const std::string& path) {
       if (!parse_double(row.fields[i], v) || !std::isfinite(v)) {
         throw ParseError(row.where, kColumns[i],
                          fmt::format("'{}' is not a finite number", row.fields[i]));
+      }
+      const double most = i <= 3 ? kMaxAngularVelocityRadps : kMaxSpecificForceMps2;
+      if (std::abs(v) > most) {
+        throw ParseError(row.where, kColumns[i],
+                         fmt::format("{} is beyond what an IMU reads (at most {} {})",
+                                     row.fields[i], most, i <= 3 ? "rad/s" : "m/s^2"));
       }
       (i <= 3 ? r.angular_velocity_radps : r.specific_force_mps2)[(i - 1) % 3] = v;
     }

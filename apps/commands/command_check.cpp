@@ -1,13 +1,17 @@
 // `wifislam check <dataset>`: read a whole dataset (ours or plain TUM RGB-D) the way SLAM would,
 // verifying checksums and decoding every image, and print what it holds.
+#include <filesystem>
 #include <memory>
 #include <variant>
 
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/imu_csv.hpp"
+#include "core/imu_groundtruth_csv.hpp"
 
 namespace wifislam::cli {
 
@@ -45,9 +49,21 @@ void run_check(const CheckArgs& args) {
   } catch (const IoError&) {
     // A dataset without ground truth (some TUM sequences) is still readable.
   }
+  // The IMU files are no SLAM input, but `export` hands them to EuRoC, Kapture and ROS readers:
+  // read as the exports read them, so a dataset `check` passes is one every export takes.
+  const std::filesystem::path folder(args.folder);
+  std::string imu;
+  if (std::filesystem::is_regular_file(folder / dataset::kImu)) {
+    imu = fmt::format(", imu readings {}", read_imu_csv((folder / dataset::kImu).string()).size());
+  }
+  if (std::filesystem::is_regular_file(folder / dataset::kImuGroundTruth)) {
+    imu +=
+        fmt::format(", imu ground truth rows {}",
+                    read_imu_groundtruth_csv((folder / dataset::kImuGroundTruth).string()).size());
+  }
   fmt::print("{}\n", reader.description());
-  fmt::print("frames {}, wifi scans {} ({} readings), odometry {}, ground truth poses {}\n", frames,
-             scans, readings, odometry, ground_truth);
+  fmt::print("frames {}, wifi scans {} ({} readings), odometry {}, ground truth poses {}{}\n",
+             frames, scans, readings, odometry, ground_truth, imu);
   // Stamps at full precision (Unix times need 16 digits), the span subtracted in nanoseconds.
   fmt::print("time span {} s .. {} s ({:.3f} s)\n", first.to_tum_string(), last.to_tum_string(),
              last.seconds_since(first));
@@ -63,7 +79,8 @@ WIFISLAM_COMMAND(check, 55) {
   CLI::App* app = parent.add_subcommand(
       "check",
       "Read a whole dataset (wifislam or plain TUM RGB-D) as SLAM would: verify checksums,\n"
-      "decode every image, and print what it holds. Exits non-zero on the first problem.");
+      "decode every image, read the IMU files as the exports do, and print what it holds.\n"
+      "Exits non-zero on the first problem.");
   app->add_option("dataset", args->folder, "Dataset folder")->required();
   app->add_flag("--no-verify", args->no_verify, "Do not compare files with manifest.json");
   app->add_flag("--no-images", args->no_images, "Do not decode images (lists and Wi-Fi only)");

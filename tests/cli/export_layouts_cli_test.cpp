@@ -323,6 +323,38 @@ TEST_F(ExportLayoutsCli, AnImageEditedSinceGenerateIsRefusedByEveryLayoutAndByCh
   EXPECT_EQ(unverified.exit_code, 0) << unverified.err;
 }
 
+// `check` never read imu.csv: a dataset it passed was then refused by the exports that carry the
+// IMU, and a reading of 1e30 m/s^2 passed both. Both now read it alike, naming row and column.
+TEST_F(ExportLayoutsCli, CheckReadsTheImuAsTheExportsDo) {
+  const std::string rows = test::read_file(dataset() / "imu.csv");
+  const std::size_t line_4 = rows.find('\n', rows.find('\n', rows.find('\n') + 1) + 1) + 1;
+  const std::size_t end = rows.find('\n', line_4);
+  const std::string row = rows.substr(line_4, end - line_4);
+  const std::string last_field = row.substr(row.rfind(',') + 1);
+  for (const char* bad : {"nan", "1e30"}) {
+    const fs::path edited = scratch_ / (std::string("imu_") + bad);
+    fs::copy(dataset(), edited, fs::copy_options::recursive);
+    test::write_file(edited / "imu.csv", rows.substr(0, line_4) +
+                                             row.substr(0, row.size() - last_field.size()) + bad +
+                                             rows.substr(end));
+    const std::string where = (edited / "imu.csv").string() + ":4";
+    const auto check = test::run_wifislam("check " + edited.string() + " --no-verify", scratch_);
+    test::expect_located_bad_input(check, where, "a_z_mps2");
+    for (const char* layout : {"euroc", "kapture", "rosbag"}) {
+      const fs::path out = scratch_ / (std::string("imu_") + bad + "_" + layout);
+      const auto r = test::run_wifislam(
+          "export " + edited.string() + " --for " + layout + " --no-verify -q -o " + out.string(),
+          scratch_);
+      test::expect_located_bad_input(r, where, "a_z_mps2");
+      EXPECT_FALSE(fs::exists(out)) << layout;
+    }
+  }
+  const auto intact = test::run_wifislam("check " + dataset().string(), scratch_);
+  EXPECT_EQ(intact.exit_code, 0) << intact.err;
+  EXPECT_NE(intact.out.find(", imu readings "), std::string::npos) << intact.out;
+  EXPECT_NE(intact.out.find(", imu ground truth rows "), std::string::npos) << intact.out;
+}
+
 // Kapture's .depth files are raw float32 of the size sensors.txt gives: a depth image of another
 // size was written as is (a 320x240 image in a 640x480 dataset), unreadable by kapture. Refused,
 // naming the image, even with --no-verify.
