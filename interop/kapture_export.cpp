@@ -1,8 +1,11 @@
 #include "interop/kapture_export.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <Eigen/Geometry>
@@ -94,13 +97,22 @@ void write_kapture(const fs::path& dataset, const KaptureInput& input, const fs:
   const DatasetCalibration& c = input.calibration;
   const CameraIntrinsics& k = c.intrinsics;
   const bool imu = !input.imu.empty();
+  // One Kapture Wi-Fi sensor per receiver of wifi.csv (its sensor_id), in order of first scan:
+  // two receivers' scans at one instant are two records, not one overwriting the other.
+  // `generate` writes one receiver, wifi0, which is declared even for a dataset without scans.
+  std::vector<std::string> wifi_sensors;
+  for (const WifiScan& scan : input.scans) {
+    if (std::find(wifi_sensors.begin(), wifi_sensors.end(), scan.sensor_id) == wifi_sensors.end())
+      wifi_sensors.push_back(scan.sensor_id);
+  }
+  if (wifi_sensors.empty()) wifi_sensors.push_back("wifi0");
 
   const std::string pinhole = fmt::format(
       "PINHOLE, {}, {}, {}, {}, {}, {}", k.width_px, k.height_px, format_double_exact(k.fx_px),
       format_double_exact(k.fy_px), format_double_exact(k.cx_px), format_double_exact(k.cy_px));
   std::string sensor_rows = fmt::format("cam0, rgb, camera, {}\n", pinhole);
   sensor_rows += fmt::format("depth0, depth, depth, {}\n", pinhole);
-  sensor_rows += "wifi0, wifi, wifi\n";
+  for (const std::string& sensor : wifi_sensors) sensor_rows += sensor + ", wifi, wifi\n";
   if (imu) sensor_rows += "accel0, imu, accelerometer\ngyro0, imu, gyroscope\n";
   write_file_atomic(
       sensors / "sensors.txt",
@@ -109,7 +121,9 @@ void write_kapture(const fs::path& dataset, const KaptureInput& input, const fs:
   // The rig is the camera's optical frame; a rig line is the transform from rig to sensor.
   const std::string identity = kapture_pose(Pose::Identity());
   std::string rig_rows;
-  for (const char* sensor : {"cam0", "depth0", "wifi0"})
+  for (const char* sensor : {"cam0", "depth0"})
+    rig_rows += fmt::format("{}, {}, {}\n", kRig, sensor, identity);
+  for (const std::string& sensor : wifi_sensors)
     rig_rows += fmt::format("{}, {}, {}\n", kRig, sensor, identity);
   if (imu) {
     const std::string imu_from_camera = kapture_pose(c.camera_from_imu().inverse());
@@ -145,7 +159,7 @@ void write_kapture(const fs::path& dataset, const KaptureInput& input, const fs:
   std::string wifi_rows;
   for (const WifiScan& scan : input.scans) {
     for (const WifiReading& r : scan.readings) {
-      wifi_rows += fmt::format("{}, wifi0, {}, {}, {}, {}, {}, {}\n", us(scan.time),
+      wifi_rows += fmt::format("{}, {}, {}, {}, {}, {}, {}, {}\n", us(scan.time), scan.sensor_id,
                                r.bssid.to_string(), r.frequency_khz / 1000, r.rssi_dbm, r.ssid,
                                us(scan.start_time), us(scan.end_time));
     }

@@ -1,9 +1,12 @@
 #include "interop/rosbag_export.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <variant>
 #include <vector>
 
@@ -118,9 +121,28 @@ class BagExport {
                          static_cast<std::uint32_t>(r.frequency_khz / 1000),
                          static_cast<std::int16_t>(r.rssi_dbm)});
     }
-    writer_.wifi_scan("/wifi/scan", scan.time.ns, kCameraFrame, scan.start_time.ns,
+    writer_.wifi_scan(wifi_topic(scan.sensor_id), scan.time.ns, kCameraFrame, scan.start_time.ns,
                       scan.end_time.ns, entries);
     ++messages_;
+  }
+
+  /// The topic of one receiver's scans: /wifi/scan for wifi0, the receiver `generate` writes,
+  /// and /wifi/<sensor_id>/scan for any other (wifi.csv's sensor_id), so that the scans of two
+  /// receivers stay apart. An id that is no ROS name ([A-Za-z][A-Za-z0-9_]*) is refused.
+  static std::string wifi_topic(const std::string& sensor_id) {
+    if (sensor_id == "wifi0") return "/wifi/scan";
+    const bool ros_name = !sensor_id.empty() &&
+                          std::isalpha(static_cast<unsigned char>(sensor_id[0])) &&
+                          std::all_of(sensor_id.begin(), sensor_id.end(), [](char ch) {
+                            return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                          });
+    if (!ros_name) {
+      throw InvalidInputError(fmt::format(
+          "wifi.csv: sensor_id '{}' cannot name a ROS topic (/wifi/<sensor_id>/scan): a ROS name "
+          "is a letter followed by letters, digits and underscores",
+          sensor_id));
+    }
+    return "/wifi/" + sensor_id + "/scan";
   }
 
   void write_odometry(const OdometryReading& reading) {

@@ -84,9 +84,11 @@ class ExportLayoutsCli : public ::testing::Test {
   void TearDown() override { fs::remove_all(scratch_); }
 
   static fs::path dataset() { return dataset_; }
-  test::CliResult export_to(const fs::path& data, const std::string& layout, const fs::path& out) {
+  test::CliResult export_to(const fs::path& data, const std::string& layout, const fs::path& out,
+                            const std::string& extra_args = "") {
     return test::run_wifislam(
-        "export " + data.string() + " --for " + layout + " -o " + out.string(), scratch_);
+        "export " + data.string() + " --for " + layout + " -o " + out.string() + " " + extra_args,
+        scratch_);
   }
 
   static inline fs::path dataset_, no_imu_;
@@ -321,6 +323,47 @@ TEST_F(ExportLayoutsCli, AnImageEditedSinceGenerateIsRefusedByEveryLayoutAndByCh
                              (scratch_ / "edited_unverified").string(),
                          scratch_);
   EXPECT_EQ(unverified.exit_code, 0) << unverified.err;
+}
+
+// wifi.csv names the receiver of each scan (sensor_id). Kapture wrote every scan as wifi0's, so
+// two receivers' scans at one instant shared one record key. Each receiver is now a sensor of its
+// own; the bag gives each other receiver a topic, and refuses an id no ROS topic can hold.
+TEST_F(ExportLayoutsCli, EachWifiReceiverIsASensorOfItsOwn) {
+  const std::vector<WifiScan> scans = read_wifi_csv((dataset() / "wifi.csv").string());
+  ASSERT_GE(scans.size(), 2u);
+  const auto relabelled = [&](const std::string& id) {
+    const fs::path edited = scratch_ / ("receiver_" + id);
+    fs::copy(dataset(), edited, fs::copy_options::recursive);
+    std::string text = wifi_csv_header() + "\n";
+    for (std::size_t i = 0; i < scans.size(); ++i) {
+      WifiScan scan = scans[i];
+      if (i == 1) scan.sensor_id = id;
+      text += format_wifi_csv_rows(scan);
+    }
+    test::write_file(edited / "wifi.csv", text);
+    return edited;
+  };
+  const fs::path two = relabelled("phone_2");
+  const fs::path out = scratch_ / "receivers_kapture";
+  const auto r = export_to(two, "kapture", out, "--no-verify");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::map<std::string, std::string> type_of;
+  for (const auto& row : csv_lines(out / "sensors/sensors.txt")) type_of[row[0]] = row[2];
+  EXPECT_EQ(type_of.at("wifi0"), "wifi");
+  EXPECT_EQ(type_of.at("phone_2"), "wifi");
+  std::set<std::string> rigged;
+  for (const auto& row : csv_lines(out / "sensors/rigs.txt")) rigged.insert(row[1]);
+  EXPECT_EQ(rigged.count("phone_2"), 1u);
+  std::map<std::string, std::size_t> rows_of;
+  for (const auto& row : csv_lines(out / "sensors/records_wifi.txt")) ++rows_of[row[1]];
+  EXPECT_EQ(rows_of.at("phone_2"), scans[1].readings.size());
+  EXPECT_EQ(rows_of.size(), 2u);
+
+  EXPECT_EQ(export_to(two, "rosbag", scratch_ / "receivers_bag", "--no-verify").exit_code, 0);
+  const fs::path bad = relabelled("2phone");
+  const auto refused = export_to(bad, "rosbag", scratch_ / "bad_receiver_bag", "--no-verify");
+  test::expect_located_bad_input(refused, "sensor_id '2phone'", "ROS");
+  EXPECT_FALSE(fs::exists(scratch_ / "bad_receiver_bag"));
 }
 
 // `check` never read imu.csv: a dataset it passed was then refused by the exports that carry the

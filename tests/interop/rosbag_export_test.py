@@ -242,6 +242,32 @@ class RosbagExport(unittest.TestCase):
         with open(shipped) as f:
             self.assertEqual(f.read(), own.rstrip("\n") + "\n")
 
+    def test_each_other_receiver_has_a_topic_of_its_own(self):
+        # wifi.csv's sensor_id names the receiver; the bag wrote every scan to /wifi/scan.
+        edited = os.path.join(self.root, "two_receivers")
+        shutil.copytree(self.dataset, edited, symlinks=True)
+        with open(os.path.join(edited, "wifi.csv")) as f:
+            rows = list(csv.DictReader(f))
+        stamps = sorted({r["timestamp"] for r in rows})
+        self.assertGreaterEqual(len(stamps), 2)
+        for r in rows:
+            if r["timestamp"] == stamps[1]:
+                r["sensor_id"] = "phone_2"
+        with open(os.path.join(edited, "wifi.csv"), "w", newline="") as f:
+            writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()), lineterminator="\n")
+            writer.writeheader()
+            writer.writerows(rows)
+        out = os.path.join(self.root, "two_receivers_bag")
+        subprocess.run([BINARY, "export", edited, "--for", "rosbag", "--no-verify", "-q", "-o",
+                        out], check=True)
+        with rosbag.Bag(os.path.join(out, "dataset.bag")) as bag:
+            counts = {}
+            for topic, message, _ in bag.read_messages(topics=["/wifi/scan",
+                                                               "/wifi/phone_2/scan"]):
+                counts.setdefault(topic, []).append(stamp_ns(message.header.stamp) // 1000)
+        self.assertEqual(counts["/wifi/phone_2/scan"], [int(stamps[1])])
+        self.assertEqual(counts["/wifi/scan"], [int(t) for t in stamps if t != stamps[1]])
+
 
 if __name__ == "__main__":
     unittest.main(argv=[sys.argv[0]], verbosity=2)
