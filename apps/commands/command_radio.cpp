@@ -55,6 +55,14 @@ void run_calibrate(const CalibrateArgs& args) {
   if (!args.test_path.empty()) inputs.push_back(args.test_path);
   check_output_files({args.output, args.report, args.json}, inputs);
 
+  // A Royal Holloway CSV numbers its access points by column (AP1..AP5, and the corridor's AP1
+  // is empty), not by the scene's ids: the positions come with the survey's own ids.
+  if (args.format == "royal-holloway" && args.aps_path.empty()) {
+    throw InvalidInputError(
+        "--format royal-holloway: the survey numbers its access points by column (APk), not by "
+        "the scene's ids; give their positions with --aps (for the shipped rooms, "
+        "assets/surveys/royal_holloway/<room>_aps.csv)");
+  }
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   if (scene.radio.model != radio_model::PathLossModel::kItuWalls) {
     scene.reject("radio.model",
@@ -141,7 +149,8 @@ void add_calibrate_command(CLI::App* parent) {
   app->add_option("--scene", args->scene_path, "Scene file (YAML) of the surveyed building")
       ->required();
   app->add_option("--aps", args->aps_path,
-                  "Access points CSV id,x_m,y_m,z_m[,tx_power_dbm]; default: the scene's");
+                  "Access points CSV id,x_m,y_m,z_m[,tx_power_dbm]; default: the scene's "
+                  "(required with --format royal-holloway, whose ids are its columns)");
   app->add_option("--format", args->format,
                   "Survey format: long (ours) or royal-holloway (the dataset's CSV as shipped: "
                   "0.6 m grid indices, column APk = AP id k, -200 = not heard)")

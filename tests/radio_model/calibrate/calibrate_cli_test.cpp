@@ -210,6 +210,19 @@ TEST_F(CalibrateCli, OtherFormatIsRefusedAtItsHeader) {
   expect_rejected("rh.csv", "rh.csv:1", "--format royal-holloway");
 }
 
+// The Royal Holloway CSVs number their APs by column (the corridor's AP1 is empty), not by the
+// scene's ids: without --aps, the shipped survey and scene failed after the work with "access
+// point 5 is not known". Refused first, saying what to give.
+TEST_F(CalibrateCli, RoyalHollowayColumnsNeedTheirPositions) {
+  test::write_file(work_ / "rh.csv", "X,Y,AP1 RSS(dBm)\n0,1,-50\n");
+  const auto before = test::listing(work_);
+  const auto r = test::run_wifislam(
+      "radio calibrate rh.csv --format royal-holloway --scene tiny.yaml -o fit.yaml", scratch_,
+      work_);
+  test::expect_located_bad_input(r, "--format royal-holloway", "give their positions with --aps");
+  EXPECT_EQ(test::listing(work_), before);
+}
+
 }  // namespace
 }  // namespace wifislam
 
