@@ -9,7 +9,9 @@
 //   at_least(n)         counts (`--max-frames`, `--jobs`, `--seeds`): CLI::PositiveNumber's refusal
 //                       reads "Value 0 not in range 0.000000 to 1797693134862315708...".
 //   kSlurmTime,         `--time` and `--partition` of the Slurm jobs: written into #SBATCH lines,
-//   kSlurmPartition     so text sbatch would refuse (or a newline adding a line) is refused here.
+//   kSlurmPartition     so text sbatch would refuse (or a newline adding a line) is refused here;
+//   kNonEmptyPath       file outputs that may be left out (`--csv`, `--plan`, `--report`) or
+//                       have a default: given as "", they were taken for not given.
 
 #include <charconv>
 #include <cmath>
@@ -34,6 +36,14 @@ inline const CLI::Validator kSeedValidator(
       return {};
     },
     "SEED");
+
+/// A path that is given: an empty one would name no file (an optional output given as "" was
+/// taken for not given and silently skipped, or became a file name such as "_rgb.png").
+inline const CLI::Validator kNonEmptyPath(
+    [](std::string& text) -> std::string {
+      return text.empty() ? "the path is empty; give a file name" : std::string();
+    },
+    "PATH");
 
 inline const CLI::Validator kPositiveFinite(
     [](std::string& text) -> std::string {

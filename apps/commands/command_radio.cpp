@@ -179,8 +179,9 @@ void add_calibrate_command(CLI::App* parent) {
                   "Positions of the held-out device its offset is fitted from (scored on the rest)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
-  app->add_option("--report", args->report, "Also write the report (markdown)");
-  app->add_option("--json", args->json, "Also write the report as JSON");
+  app->add_option("--report", args->report, "Also write the report (markdown)")
+      ->check(kNonEmptyPath);
+  app->add_option("--json", args->json, "Also write the report as JSON")->check(kNonEmptyPath);
   app->callback([args] { run_calibrate(*args); });
 }
 

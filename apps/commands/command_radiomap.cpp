@@ -86,8 +86,11 @@ WIFISLAM_COMMAND(radiomap, 40) {
   app->add_option("--level", args->level,
                   "Level to map (scene key levels:, by id); the receiver stands on its floor and "
                   "hears the access points of every level; default: the route's level");
-  app->add_option("-o,--output", args->output, "Heat-map PNG to write")->capture_default_str();
-  app->add_option("--csv", args->csv, "Also write the grid as CSV (x_m,y_m,rssi_dbm,ap_id)");
+  app->add_option("-o,--output", args->output, "Heat-map PNG to write")
+      ->capture_default_str()
+      ->check(kNonEmptyPath);
+  app->add_option("--csv", args->csv, "Also write the grid as CSV (x_m,y_m,rssi_dbm,ap_id)")
+      ->check(kNonEmptyPath);
   app->callback([args] {
     if (!args->strongest && !args->ap_id)
       throw InvalidInputError("radiomap: give --ap ID or --strongest");

@@ -12,6 +12,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/pose.hpp"
@@ -129,11 +130,13 @@ WIFISLAM_COMMAND(render, 30) {
   app->add_flag("--no-noise", args->no_noise,
                 "Ideal depth: no noise, quantisation or dropouts (the valid range still applies)");
   app->add_option("--frame", args->frame_index, "Frame index that seeds the depth noise")
-      ->default_val(0);
+      ->default_val(0)
+      ->check(at_least(0));
   app->add_option("-o,--output", args->prefix,
                   "Output prefix: writes <prefix>_rgb.png, <prefix>_depth.png, "
                   "<prefix>_depth_color.png")
-      ->required();
+      ->required()
+      ->check(kNonEmptyPath);
   app->callback([args] { run_render(*args); });
 }
 

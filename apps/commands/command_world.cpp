@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/output_folder.hpp"
 #include "sim/robot/motion_profile.hpp"
 #include "sim/scene/scene_levels.hpp"
@@ -70,7 +71,8 @@ WIFISLAM_COMMAND(world, 20) {
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
       ->required();  // the scene loader says what is wrong with the path
   app->add_option("--plan", args->plan_path,
-                  "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)");
+                  "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)")
+      ->check(kNonEmptyPath);
   app->add_flag("--svg", args->svg, "Also write the plan as SVG next to the PNG");
   app->add_option("--level", args->level,
                   "Level to draw (scene key levels:, by id); default: the route's level");

@@ -343,5 +343,27 @@ TEST_F(EdgeInput, SetFrontendCannotOverrideFrontend) {
   EXPECT_FALSE(fs::exists(run));
 }
 
+// An output path given as "" was taken for one not given: `render -o ""` wrote _rgb.png and two
+// more files into the current folder, `radiomap -o ""` did its work and failed to rename, and
+// `world --plan ""` drew nothing without a word. Each is refused before any work, naming the
+// option, and nothing is written.
+TEST_F(EdgeInput, AnEmptyOutputPathIsRefusedNamingItsOption) {
+  const fs::path work = scratch_ / "work";
+  fs::create_directories(work);
+  const std::string scene = std::string(WIFISLAM_SCENES_DIR) + "/a_hall.yaml";
+  const struct {
+    std::string args, option;
+  } cases[] = {{"render " + scene + " --pose 1,1,0 -o ''", "--output"},
+               {"radiomap " + scene + " -o ''", "--output"},
+               {"radiomap " + scene + " -o map.png --csv ''", "--csv"},
+               {"world " + scene + " --plan ''", "--plan"}};
+  for (const auto& c : cases) {
+    const test::CliResult r = test::run_wifislam(c.args, scratch_, work);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.option + ": the path is empty"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::is_empty(work)) << c.args;
+  }
+}
+
 }  // namespace
 }  // namespace wifislam
