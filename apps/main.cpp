@@ -1,6 +1,7 @@
 // `wifislam`: the command line of the harness. Thin: parses arguments, calls the libraries,
 // and maps typed errors to one clear line on stderr and a non-zero exit code.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 
@@ -10,6 +11,7 @@
 #include "apps/command_registry.hpp"
 #include "apps/exit_codes.hpp"
 #include "core/error.hpp"
+#include "core/stop_signal.hpp"
 #include "core/thread_start.hpp"
 #include "core/utf8.hpp"
 
@@ -34,6 +36,14 @@ int main(int argc, char** argv) {
   }
   try {
     app.parse(argc, argv);
+  } catch (const wifislam::StoppedBySignal& e) {
+    // The work unwound and removed its unfinished output; the process then ends by the signal,
+    // as the caller (a shell, a script's `wait`) expects of a program stopped by one.
+    fmt::print(stderr, "wifislam: {}\n", e.what());
+    std::fflush(stderr);
+    std::signal(e.signal(), SIG_DFL);
+    std::raise(e.signal());
+    return 128 + e.signal();
   } catch (const CLI::ParseError& e) {
     // CLI11 prints the usage message; --help and --version are its "errors" with code 0. Any
     // other argument error is bad input, with the tool's one code for it.

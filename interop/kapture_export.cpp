@@ -15,6 +15,7 @@
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/stop_signal.hpp"
 #include "core/text_lines.hpp"
 #include "core/wifi_csv.hpp"
 #include "interop/relative_link.hpp"
@@ -144,6 +145,7 @@ void write_kapture(const fs::path& dataset, const KaptureInput& input, const fs:
 
   std::string camera_rows, depth_rows;
   for (const FramePair& p : input.pairs) {
+    throw_if_stop_requested();  // `export`: Ctrl-C removes the unfinished folder
     const std::string rgb = "rgb/" + us(p.rgb_time) + ".png";
     const std::string depth = "depth/" + us(p.rgb_time) + ".depth";
     link_relative(dataset / p.rgb_path, final_path / "sensors/records_data" / rgb, data / rgb);

@@ -18,6 +18,7 @@
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
 #include "core/imu_csv.hpp"
+#include "core/stop_signal.hpp"
 #include "core/tum_trajectory.hpp"
 #include "interop/rosbag/rosbag_writer.hpp"
 
@@ -61,6 +62,7 @@ class BagExport {
     // The stream's events in time order, with the IMU samples merged in by time.
     std::size_t next_imu = 0;
     while (auto event = reader_->next()) {
+      throw_if_stop_requested();  // `export`: Ctrl-C removes the unfinished bag
       const Timestamp t = event_time(*event);
       for (; next_imu < imu_.size() && imu_[next_imu].time <= t; ++next_imu)
         write_imu(imu_[next_imu]);

@@ -8,6 +8,7 @@
 
 #include "apps/command_registry.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "interop/peer_export.hpp"
 
 namespace wifislam::cli {
@@ -29,6 +30,7 @@ void run_export(const ExportArgs& args) {
   options.peer = *interop::peer_from_string(args.peer);  // CLI11 checked the name
   options.verify_checksums = !args.no_verify;
   options.overwrite = replace;
+  const StopOnSignal stop_on_signal;  // Ctrl-C removes the unfinished export
   const interop::PeerExportSummary summary =
       interop::export_for_peer(args.dataset, args.output, options);
   if (!args.quiet) fmt::print("{}", summary.full_report());

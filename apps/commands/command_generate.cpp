@@ -14,6 +14,7 @@
 #include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "radio_model/receiver_device.hpp"
 #include "sim/generate/dataset_writer.hpp"
 #include "sim/scene/scene_loader.hpp"
@@ -69,17 +70,18 @@ void run_generate(const GenerateArgs& args) {
                                   : sim::generate::CameraOutput::kColourAndDepth;
   options.threads = args.threads;
   options.overwrite = replace;
-  if (cli::stderr_is_tty() && !args.quiet) {
-    std::int64_t last_drawn = -1;
-    options.on_progress = [last_drawn](const sim::generate::GenerateProgress& p) mutable {
-      // Redraw at most ~200 times per run.
-      const std::int64_t step = std::max<std::int64_t>(1, p.frames_total / 200);
-      if (p.frames_done == p.frames_total || p.frames_done - last_drawn >= step) {
-        draw_progress(p);
-        last_drawn = p.frames_done;
-      }
-    };
-  }
+  const bool draw = cli::stderr_is_tty() && !args.quiet;
+  std::int64_t last_drawn = -1;
+  options.on_progress = [draw, last_drawn](const sim::generate::GenerateProgress& p) mutable {
+    throw_if_stop_requested();
+    // Redraw at most ~200 times per run.
+    const std::int64_t step = std::max<std::int64_t>(1, p.frames_total / 200);
+    if (draw && (p.frames_done == p.frames_total || p.frames_done - last_drawn >= step)) {
+      draw_progress(p);
+      last_drawn = p.frames_done;
+    }
+  };
+  const StopOnSignal stop_on_signal;  // Ctrl-C removes the unfinished dataset
   const sim::generate::GenerateSummary summary =
       sim::generate::generate_dataset(scene, args.output, options);
   if (!args.quiet) fmt::print("{}", summary.full_report());

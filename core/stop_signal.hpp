@@ -1,0 +1,41 @@
+#pragma once
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP during a command that writes an output folder: the work
+// stops at its next frame and unwinds, so the folder being written (<dir>.partial) is removed as
+// on any error and a folder being replaced is left as it was. Without this the process died where
+// it stood and left the .partial folder (a ROS bag: 100 MB and more) until a later run into the
+// same path recovered it.
+//
+// A command opts in with a StopOnSignal guard and calls throw_if_stop_requested() where stopping
+// is safe (once a frame); elsewhere, and with no guard, the signals keep their default action.
+// A second signal while the first is being honoured ends the process at once.
+
+#include <string>
+
+#include "core/error.hpp"
+
+namespace wifislam {
+
+/// Thrown by throw_if_stop_requested(): the work was asked to stop by `signal()`.
+class StoppedBySignal : public Error {
+ public:
+  explicit StoppedBySignal(int signal);
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
+/// While alive, SIGINT, SIGTERM and SIGHUP only record that the work should stop; the previous
+/// actions come back when it is destroyed. One at a time (the command's).
+class StopOnSignal {
+ public:
+  StopOnSignal();
+  ~StopOnSignal();
+  StopOnSignal(const StopOnSignal&) = delete;
+  StopOnSignal& operator=(const StopOnSignal&) = delete;
+};
+
+/// Throws StoppedBySignal when one of the signals arrived under a StopOnSignal guard.
+void throw_if_stop_requested();
+
+}  // namespace wifislam

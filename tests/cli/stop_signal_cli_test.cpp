@@ -1,0 +1,102 @@
+// Ctrl-C (SIGINT) or SIGTERM while `generate` or `export` writes its output folder: the
+// work stops at its next frame and removes <dir>.partial, a folder it was replacing stays as it
+// was, and the process still ends by the signal. The .partial folder was left behind (a ROS bag
+// export: over 100 MB) until a later run into the same path recovered it.
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/support/cli_run.hpp"
+#include "tests/support/read_file.hpp"
+#include "tests/support/scratch_folder.hpp"
+#include "tests/support/wait_until.hpp"
+
+namespace wifislam {
+namespace {
+
+namespace fs = std::filesystem;
+
+class StopSignalCli : public ::testing::Test {
+ protected:
+  void SetUp() override { scratch_ = test::scratch_folder(); }
+  void TearDown() override { fs::remove_all(scratch_); }
+
+  /// `wifislam <args>` started in the background, stderr to `err`.
+  pid_t start(const std::vector<std::string>& args, const fs::path& err) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+      if (!std::freopen(err.c_str(), "w", stderr)) ::_exit(127);
+      std::vector<char*> argv{const_cast<char*>(WIFISLAM_BINARY)};
+      for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+      argv.push_back(nullptr);
+      ::execv(WIFISLAM_BINARY, argv.data());
+      ::_exit(127);
+    }
+    return pid;
+  }
+
+  /// Starts the command, waits until `partial` exists (its work is under way), sends `signal`
+  /// and checks that the process ended by it, said so, and left no `partial`.
+  void stop_while_writing(const std::vector<std::string>& args, const fs::path& partial,
+                          int signal) {
+    const fs::path err = scratch_ / "stderr.txt";
+    const pid_t pid = start(args, err);
+    ASSERT_GT(pid, 0);
+    int status = 0;
+    const bool writing = test::wait_until(
+        std::chrono::seconds(60),
+        [&] { return fs::exists(partial) || ::waitpid(pid, &status, WNOHANG) == pid; },
+        std::chrono::milliseconds(5));
+    ASSERT_TRUE(writing && fs::exists(partial))
+        << "never started writing: " << test::read_file(err);
+    ASSERT_EQ(::kill(pid, signal), 0);
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "ended before the signal came: " << test::read_file(err);
+    EXPECT_EQ(WTERMSIG(status), signal);
+    EXPECT_NE(test::read_file(err).find("the unfinished output was removed"), std::string::npos)
+        << test::read_file(err);
+    EXPECT_FALSE(fs::exists(partial)) << partial;
+  }
+
+  fs::path scratch_;
+};
+
+TEST_F(StopSignalCli, GenerateStoppedRemovesItsPartialFolderAndKeepsTheOneItWasReplacing) {
+  const std::string scene = std::string(WIFISLAM_SCENES_DIR) + "/a_hall.yaml";
+  const fs::path ds = scratch_ / "ds";
+  const auto first = test::run_wifislam(
+      "generate " + scene + " -o " + ds.string() + " --fps 2 --max-frames 2 -q", scratch_);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  const std::string manifest = test::read_file(ds / "manifest.json");
+  stop_while_writing({"generate", scene, "-o", ds.string(), "--fps", "10", "--max-frames", "2000",
+                      "--force", "-q"},
+                     scratch_ / "ds.partial", SIGINT);
+  EXPECT_EQ(test::read_file(ds / "manifest.json"), manifest);
+  EXPECT_EQ(test::run_wifislam("check " + ds.string(), scratch_).exit_code, 0);
+}
+
+TEST_F(StopSignalCli, ExportStoppedLeavesNothing) {
+  const std::string scene = std::string(WIFISLAM_SCENES_DIR) + "/a_hall.yaml";
+  const fs::path ds = scratch_ / "ds";
+  const auto made = test::run_wifislam(
+      "generate " + scene + " -o " + ds.string() + " --fps 5 --max-frames 400 -q", scratch_);
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  stop_while_writing(
+      {"export", ds.string(), "--for", "rosbag", "-q", "-o", (scratch_ / "bag").string()},
+      scratch_ / "bag.partial", SIGTERM);
+  EXPECT_FALSE(fs::exists(scratch_ / "bag"));
+  stop_while_writing(
+      {"export", ds.string(), "--for", "kapture", "-q", "-o", (scratch_ / "kapture").string()},
+      scratch_ / "kapture.partial", SIGINT);
+  EXPECT_FALSE(fs::exists(scratch_ / "kapture"));
+}
+
+}  // namespace
+}  // namespace wifislam
