@@ -11,6 +11,7 @@
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/shell_quoted.hpp"
 #include "core/tum_file_list.hpp"
 #include "interop/euroc_export.hpp"
 #include "interop/kapture_export.hpp"
@@ -222,13 +223,15 @@ void write_peer_files(const ExportPlan& plan, const DatasetCalibration& calibrat
     write_file_atomic(staging / kRtabmapCalibration,
                       rtabmap_calibration_yaml(calibration.intrinsics));
     rtabmap_warnings(summary, calibration);
-    summary.run_command = fmt::format("rtabmap-rgbd_dataset {}", dir);
+    summary.run_command = fmt::format("rtabmap-rgbd_dataset {}", shell_word(dir));
     return;
   }
   write_file_atomic(staging / dataset::kAssociations, plan.associations);
   write_file_atomic(staging / kOrbslam2Settings, orbslam2_settings_yaml(calibration));
-  summary.run_command = fmt::format("Examples/RGB-D/rgbd_tum Vocabulary/ORBvoc.txt {}/{} {} {}/{}",
-                                    dir, kOrbslam2Settings, dir, dir, dataset::kAssociations);
+  summary.run_command =
+      fmt::format("Examples/RGB-D/rgbd_tum Vocabulary/ORBvoc.txt {} {} {}",
+                  shell_word((summary.output / kOrbslam2Settings).string()), shell_word(dir),
+                  shell_word((summary.output / dataset::kAssociations).string()));
 }
 
 /// How the export holds the images: the bag carries their bytes, the other layouts link them.
@@ -278,20 +281,21 @@ PeerExportSummary export_layout(const fs::path& dataset, const fs::path& output,
     // The bag carries the images' bytes (the other layouts link them): its reader checks each
     // PNG against images.sha256 as it decodes it, unless --no-verify.
     write_rosbag(dataset, calibration, folder.staging_path(), options.verify_checksums);
-    summary.run_command = fmt::format("rosbag info {}/{}", dir, kBagFile);
+    summary.run_command =
+        fmt::format("rosbag info {}", shell_word((summary.output / kBagFile).string()));
   } else if (euroc) {
     write_euroc(dataset, *euroc_input, summary.output, folder.staging_path());
     summary.run_command = fmt::format(
         "Examples/Monocular-Inertial/mono_inertial_euroc Vocabulary/ORBvoc.txt SETTINGS.yaml {} "
-        "{}/timestamps.txt (SETTINGS: cam0's intrinsics and T_BS, imu0's noise; see "
+        "{} (SETTINGS: cam0's intrinsics and T_BS, imu0's noise; see "
         "docs/peers.md)",
-        dir, dir);
+        shell_word(dir), shell_word((summary.output / "timestamps.txt").string()));
   } else {
     write_kapture(dataset, *kapture_input, summary.output, folder.staging_path());
     if (kapture_input->scans.empty())
       summary.warnings.push_back(dataset.string() +
                                  " has no Wi-Fi scans: records_wifi.txt is empty");
-    summary.run_command = fmt::format("kapture_print.py -i {}", dir);
+    summary.run_command = fmt::format("kapture_print.py -i {}", shell_word(dir));
   }
   write_file_atomic(folder.staging_path() / kExportJson, export_json(summary).dump(2) + "\n");
   folder.commit();

@@ -11,6 +11,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/shell_quoted.hpp"
 
 namespace wifislam::study {
 
@@ -69,12 +70,6 @@ std::string optional_lines(const std::string& partition, const std::string& time
 }
 
 }  // namespace
-
-std::string shell_quoted(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
 
 SlurmJobFiles slurm_array_files(const SlurmArrayJob& job, const std::filesystem::path& folder) {
   check_job(job.tasks, folder);

@@ -55,9 +55,6 @@ struct SlurmArrayJob {
 };
 SlurmJobFiles slurm_array_files(const SlurmArrayJob& job, const std::filesystem::path& folder);
 
-/// Single-quoted for the shell.
-std::string shell_quoted(const std::string& text);
-
 /// Writes the job folder (the two scripts, shards/ and logs/) atomically; `replace` as
 /// core/output_folder.hpp's check_output_folder decided.
 void write_slurm_job(const std::filesystem::path& folder, bool replace, const SlurmJobFiles& files);

@@ -13,6 +13,7 @@
 #include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/shell_quoted.hpp"
 #include "core/thread_start.hpp"
 #include "study/paper/paper_folder.hpp"
 #include "study/paper/paper_report.hpp"
@@ -40,10 +41,10 @@ struct PaperArgs {
 void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions& options) {
   study::paper::prepare_paper_folder(options);
   const fs::path dir = absolute_folder(options.folder);
-  const std::string common = fmt::format(
-      "{} paper -o {} --seeds {} --fps {} --parts {} --twins {}",
-      study::shell_quoted(study::own_binary().string()), study::shell_quoted(dir.string()),
-      args.seeds, args.fps, study::shell_quoted(args.parts), study::shell_quoted(args.twins));
+  const std::string common =
+      fmt::format("{} paper -o {} --seeds {} --fps {} --parts {} --twins {}",
+                  shell_quoted(study::own_binary().string()), shell_quoted(dir.string()),
+                  args.seeds, args.fps, shell_quoted(args.parts), shell_quoted(args.twins));
   study::SlurmArrayJob job;
   job.name = "paper";
   job.what = fmt::format("wifislam paper: {} seed(s) of {} on {}, in {} tasks (--shard i/N).",
@@ -69,7 +70,7 @@ void write_slurm_jobs(const PaperArgs& args, const study::paper::PaperRunOptions
     fmt::print(
         "submit: cd {} && J=$(sbatch --parsable paper.sbatch) && sbatch "
         "--dependency=afterok:$J report.sbatch\n",
-        study::shell_quoted(folder.string()));
+        shell_quoted(folder.string()));
     return;
   }
   const study::SubmittedSlurmJob submitted = study::submit_slurm_job(folder, files);

@@ -12,6 +12,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/shell_quoted.hpp"
 #include "study/slurm_job.hpp"
 #include "study/study_file.hpp"
 #include "study/study_runner.hpp"
@@ -48,7 +49,7 @@ void slurm_command(const SlurmArgs& args) {
     fmt::print(
         "submit: cd {} && J=$(sbatch --parsable study.sbatch) && sbatch "
         "--dependency=afterok:$J merge.sbatch\n",
-        study::shell_quoted(folder.string()));
+        shell_quoted(folder.string()));
     return;
   }
   const study::SubmittedSlurmJob job = study::submit_slurm_job(folder, files);

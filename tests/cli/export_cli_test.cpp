@@ -24,6 +24,7 @@
 
 #include "core/camera_intrinsics.hpp"
 #include "core/dataset_calibration.hpp"
+#include "core/shell_quoted.hpp"
 #include "core/timestamp.hpp"
 #include "core/tum_file_list.hpp"
 #include "tests/cli/shared_dataset.hpp"
@@ -229,6 +230,30 @@ void expect_rtabmap_calibration(const fs::path& file, const CameraIntrinsics& k)
   // rtabmap-rgbd_dataset's own optical rotation (camera base frame -> optical frame).
   EXPECT_EQ(matrix("local_transform", 3, 4),
             (std::vector<double>{0, 0, 1, 0, -1, 0, 0, 0, 0, -1, 0, 0}));
+}
+
+// The command an export prints (and export.json's "run") is pasted into a shell: a folder with a
+// space or a quote in its name split into several arguments. Run through sh with printf in place
+// of the program, each path arrives as one argument, unchanged.
+TEST_F(ExportCli, ThePrintedCommandPassesEachPathAsOneArgument) {
+  const fs::path parent = scratch_ / "it's a folder";
+  fs::create_directories(parent);
+  const fs::path out = parent / "orb $HOME";
+  const auto r = export_to("default_ds", "orbslam2", shell_quoted(out.string()));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::string run = nlohmann::json::parse(test::read_file(out / "export.json"))["run"];
+  EXPECT_NE(r.out.find("run          " + run + "\n"), std::string::npos) << r.out;
+  const std::string program = "Examples/RGB-D/rgbd_tum ";
+  ASSERT_EQ(run.rfind(program, 0), 0u) << run;
+  run.replace(0, program.size(), "printf '%s\\n' ");
+  test::write_file(scratch_ / "run.sh", run + "\n");
+  ASSERT_EQ(std::system(("sh " + shell_quoted((scratch_ / "run.sh").string()) + " >" +
+                         shell_quoted((scratch_ / "args.txt").string()))
+                            .c_str()),
+            0);
+  EXPECT_EQ(test::read_file(scratch_ / "args.txt"),
+            "Vocabulary/ORBvoc.txt\n" + (out / "orbslam2_settings.yaml").string() + "\n" +
+                out.string() + "\n" + (out / "associations.txt").string() + "\n");
 }
 
 TEST_F(ExportCli, RtabmapCalibrationCarriesTheDatasetsOwnIntrinsicsWhateverTheFolderIsCalled) {
