@@ -20,6 +20,7 @@
 #include "radio_model/calibrate/rss_survey.hpp"
 #include "radio_model/calibrate/survey_links.hpp"
 #include "radio_model/propagation_model.hpp"
+#include "sim/scene/scene_levels.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site.hpp"
 #include "sim/site/survey_site.hpp"
@@ -70,6 +71,7 @@ void run_calibrate(const CalibrateArgs& args) {
                              "and sigma come from the ITU tables)",
                              to_string(scene.radio.model)));
   }
+  sim::scene::require_height_under_ceiling(scene, args.receiver_height_m, "--receiver-height");
   const sim::site::Site site(scene);
   const double height_m = args.receiver_height_m.value_or(site.receiver_height_m());
   const auto format = args.format == "royal-holloway" ? cal::SurveyFormat::kRoyalHolloway

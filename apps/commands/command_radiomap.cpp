@@ -34,13 +34,7 @@ void run_radiomap(const RadiomapArgs& args) {
   check_output_files({args.output, args.csv}, {args.scene_path});
   const sim::scene::Scene scene = sim::scene::load_scene_file(args.scene_path);
   sim::scene::require_level(scene, args.level, "--level");
-  const double ceiling_m = scene.building.wall_height_m;
-  if (args.height_m && !(*args.height_m > 0.0 && *args.height_m < ceiling_m)) {
-    throw InvalidInputError(fmt::format(
-        "--height: {} m is not between the floor and the ceiling (0 to {} m, the scene's "
-        "building.wall_height_m)",
-        *args.height_m, ceiling_m));
-  }
+  sim::scene::require_height_under_ceiling(scene, args.height_m, "--height");
   const sim::site::Site site(scene);
   radio_model::RadioMapOptions options;
   options.resolution_m = args.resolution_m;

@@ -56,6 +56,17 @@ void require_level(const Scene& scene, const std::string& level, const std::stri
       fmt::format("{} {}: the scene has no such level (levels: {})", option, level, ids));
 }
 
+void require_height_under_ceiling(const Scene& scene, std::optional<double> height_m,
+                                  const std::string& option) {
+  const double ceiling_m = scene.building.wall_height_m;
+  if (height_m && !(*height_m > 0.0 && *height_m < ceiling_m)) {
+    throw InvalidInputError(
+        fmt::format("{}: {} m is not between the floor and the ceiling (0 to {} m, the scene's "
+                    "building.wall_height_m)",
+                    option, *height_m, ceiling_m));
+  }
+}
+
 namespace {
 
 /// Keeps the items of `list` (key `name`) on `level_id`, renumbered, with their key locations.

@@ -4,6 +4,7 @@
 // generator builds as it builds any other. A scene without `levels:` has one level, unnamed, at
 // 0 m; everything here treats it as such, so one-level scenes take the path they always took.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,11 @@ int level_index(const Scene& scene, const std::string& id);
 /// Throws InvalidInputError naming `option` when `level` is set and the scene has no such level
 /// (a command's --level, checked before any work).
 void require_level(const Scene& scene, const std::string& level, const std::string& option);
+
+/// Throws InvalidInputError naming `option` when a receiver height given on the command line is
+/// not between the floor and the ceiling (building.wall_height_m); an unset height passes.
+void require_height_under_ceiling(const Scene& scene, std::optional<double> height_m,
+                                  const std::string& option);
 
 /// The part of a scene on level `level_id`: its nodes, corridors, open areas, spaces, doors,
 /// obstacles and listed access points, with `levels` cleared and everything else (building,

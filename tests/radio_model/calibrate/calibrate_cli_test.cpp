@@ -210,6 +210,13 @@ TEST_F(CalibrateCli, OtherFormatIsRefusedAtItsHeader) {
   expect_rejected("rh.csv", "rh.csv:1", "--format royal-holloway");
 }
 
+// A receiver height above the ceiling was blamed on the survey's z_m (survey.csv:2, key 'z_m'),
+// a column the survey does not have.
+TEST_F(CalibrateCli, AReceiverHeightAboveTheCeilingNamesTheOption) {
+  expect_rejected("survey.csv", "--receiver-height: 100 m", "between the floor and the ceiling",
+                  "--receiver-height 100");
+}
+
 // The Royal Holloway CSVs number their APs by column (the corridor's AP1 is empty), not by the
 // scene's ids: without --aps, the shipped survey and scene failed after the work with "access
 // point 5 is not known". Refused first, saying what to give.
