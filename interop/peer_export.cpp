@@ -1,7 +1,9 @@
 #include "interop/peer_export.hpp"
 
+#include <cmath>
 #include <map>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -135,8 +137,10 @@ void refuse_unfinished_dataset(const fs::path& dataset, const PeerExportOptions&
 
 /// The calibration the peers will see, and which TUM camera it is (in `summary`). A plain TUM
 /// folder has no calibration.yaml (the reader then assumes TUM's default 525 px), but its name
-/// says which Kinect recorded it, as the peers read it.
+/// says which Kinect recorded it, as the peers read it; its frame rate is the one its frames
+/// were taken at (the mean over `pairs`), not the 30 fps the reader assumes.
 DatasetCalibration peer_calibration(const fs::path& dataset, const DatasetReader& reader,
+                                    const std::vector<FramePair>& pairs,
                                     PeerExportSummary& summary) {
   std::error_code ec;
   DatasetCalibration calibration = reader.calibration();
@@ -145,6 +149,11 @@ DatasetCalibration peer_calibration(const fs::path& dataset, const DatasetReader
   } else {
     summary.tum_camera = camera_by_folder_name(dataset);
     if (summary.tum_camera) calibration.intrinsics = summary.tum_camera->intrinsics;
+    const double span_s = pairs.back().rgb_time.seconds_since(pairs.front().rgb_time);
+    if (pairs.size() >= 2 && span_s > 0) {
+      const double fps = static_cast<double>(pairs.size() - 1) / span_s;
+      calibration.camera_fps = std::round(fps * 1000.0) / 1000.0;
+    }
   }
   summary.intrinsics = calibration.intrinsics;
   return calibration;
@@ -332,7 +341,7 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
   summary.frames = static_cast<std::int64_t>(pairs.size());
   summary.first_time = pairs.front().rgb_time;
   summary.last_time = pairs.back().rgb_time;
-  const DatasetCalibration calibration = peer_calibration(dataset, reader, summary);
+  const DatasetCalibration calibration = peer_calibration(dataset, reader, pairs, summary);
   if (options.peer == Peer::kEuroc || options.peer == Peer::kKapture ||
       options.peer == Peer::kRosbag)
     return export_layout(dataset, output, options, pairs, calibration, summary);

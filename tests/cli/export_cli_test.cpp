@@ -232,6 +232,21 @@ void expect_rtabmap_calibration(const fs::path& file, const CameraIntrinsics& k)
             (std::vector<double>{0, 0, 1, 0, -1, 0, 0, 0, 0, -1, 0, 0}));
 }
 
+// A folder without calibration.yaml (a plain TUM one): ORB-SLAM2's Camera.fps was the reader's
+// assumed 30 whatever rate the frames were taken at. It is now their mean rate.
+TEST_F(ExportCli, WithoutACalibrationFileTheFrameRateIsTheFramesOwn) {
+  const fs::path plain = scratch_ / "plain";
+  fs::copy(dataset("default_ds"), plain, fs::copy_options::recursive);
+  fs::remove(plain / "calibration.yaml");
+  const fs::path out = scratch_ / "orb_plain";
+  const auto r =
+      wifislam("export " + plain.string() + " --for orbslam2 --no-verify -q -o " + out.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  cv::FileStorage settings((out / "orbslam2_settings.yaml").string(), cv::FileStorage::READ);
+  ASSERT_TRUE(settings.isOpened());
+  EXPECT_DOUBLE_EQ(static_cast<double>(settings["Camera.fps"]), 2.0);  // generated at --fps 2
+}
+
 // The command an export prints (and export.json's "run") is pasted into a shell: a folder with a
 // space or a quote in its name split into several arguments. Run through sh with printf in place
 // of the program, each path arrives as one argument, unchanged.
