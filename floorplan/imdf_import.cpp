@@ -118,8 +118,22 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
         break;
       }
     }
-    if (level_id.empty())
+    if (level_id.empty()) {
+      // Say which input is at fault: no level file, or units on a level it does not list.
+      if (levels.empty()) {
+        throw IoError((folder / "level.geojson").string() +
+                      ": not found; an IMDF venue lists its levels there, and each unit names "
+                      "its level by level_id");
+      }
+      for (const PlanFeature& u : given_units) {
+        const std::string id = u.tag("level_id");
+        if (std::none_of(levels.begin(), levels.end(), [&](const Level& l) { return l.id == id; }))
+          throw ParseError(u.where, "level_id",
+                           fmt::format("'{}' is not a level of level.geojson (its levels: {})", id,
+                                       fmt::join(plan.levels, ", ")));
+      }
       throw ParseError(plan.source, "", "no level with a walkway or lobby unit");
+    }
   }
 
   std::vector<PlanFeature> units;

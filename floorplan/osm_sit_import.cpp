@@ -139,6 +139,17 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
   } else if (!walkable_levels.empty()) {
     plan.level = walkable_levels.front();
   } else {
+    // A corridor or area feature whose geometry did not read as a polygon (coordinates given as
+    // text, a missing ring) is named: "no such polygon" sent users looking for the wrong fault.
+    for (const PlanFeature& f : features) {
+      const std::string indoor = f.tag("indoor");
+      if ((indoor == "corridor" || indoor == "area") && f.polygons_lon_lat.empty()) {
+        throw ParseError(f.where, "geometry",
+                         fmt::format("indoor={} has no polygon that reads as one (coordinates "
+                                     "must be numbers, a ring closed and of 4 points or more)",
+                                     indoor));
+      }
+    }
     throw ParseError(plan.source, "", "no indoor=corridor or indoor=area polygon on any level");
   }
 

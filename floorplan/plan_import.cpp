@@ -59,7 +59,9 @@ std::vector<PolygonRings> projected_polygons(const GeosContext& geos, const Plan
       m.holes.push_back(std::move(h));
     }
     if (m.outer.size() < 3)
-      throw ParseError(feature.where, "geometry", "a polygon ring with fewer than 3 corners");
+      throw ParseError(feature.where, "geometry",
+                       "a polygon ring with fewer than 3 corners (in an OSM file, a way loses the "
+                       "nodes the file does not hold: check its nd refs)");
     const std::string reason = geos.polygon(m).invalid_reason();
     if (!reason.empty())
       throw ParseError(feature.where, "geometry",

@@ -82,6 +82,17 @@ TEST_F(ImportCli, PlanWithoutUsablePolygonIsRefused) {
                  {"rooms.geojson", "no indoor=corridor or indoor=area"});
 }
 
+// A corridor whose coordinates are text reads as no polygon; the import said the plan had no
+// corridor at all. It names the feature.
+TEST_F(ImportCli, ACorridorWhoseGeometryDoesNotReadIsNamed) {
+  const std::string text_ring =
+      R"([["-96.9272","19.5413"],["-96.9270","19.5413"],["-96.9270","19.5415"],)"
+      R"(["-96.9272","19.5413"]])";
+  test::write_file(scratch_ / "text.geojson", collection({feature("corridor", text_ring)}));
+  expect_refused("import " + (scratch_ / "text.geojson").string(),
+                 {"text.geojson", "indoor=corridor has no polygon that reads as one"});
+}
+
 TEST_F(ImportCli, NoFileTheImportReadsIsWrittenOver) {
   // main.json, the level's paths file and ATTRIBUTION.md are read beside the plan, not named on
   // the command line: the scene must not replace any of them.

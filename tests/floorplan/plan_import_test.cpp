@@ -8,6 +8,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -143,6 +145,37 @@ TEST(PlanImport, ImdfFolderImportsUnitsAndOpenings) {
     EXPECT_NEAR((d.to_m - d.from_m).norm(), 1.0, 0.02);
   EXPECT_EQ(plan.spaces.size(), 4u);
   expect_route_revisits(floorplan::imported_scene(plan, {}));
+}
+
+// Without level.geojson, or with units on a level it does not list, the import said "no level
+// with a walkway or lobby unit": the fault is named now.
+TEST(PlanImport, ImdfUnitsWithoutTheirLevelNameWhatIsMissing) {
+  const fs::path folder = write_imdf(test::scratch_folder() / "imdf_levels");
+  const std::string level_file = (folder / "level.geojson").string();
+  std::string levels;
+  {
+    std::ifstream in(level_file);
+    levels.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  fs::remove(level_file);
+  try {
+    floorplan::import_plan(folder, {});
+    ADD_FAILURE() << "no level.geojson was accepted";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find(level_file + ": not found"), std::string::npos)
+        << e.what();
+  }
+  std::ofstream(level_file) << levels.replace(levels.find("\"L0\""), 4, "\"L9\"");
+  try {
+    floorplan::import_plan(folder, {});
+    ADD_FAILURE() << "units on an unlisted level were accepted";
+  } catch (const ParseError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("unit.geojson"), std::string::npos) << what;
+    EXPECT_NE(what.find("'L0' is not a level of level.geojson (its levels: G)"), std::string::npos)
+        << what;
+  }
+  fs::remove_all(folder);
 }
 
 TEST(PlanImport, UserRouteWaypointOutsideThePlanIsAnErrorNotDropped) {
