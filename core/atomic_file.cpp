@@ -122,6 +122,9 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
     fs::remove_all(staging_, ec);
     ::close(leftover);
   }
+  for (fs::path p = final_.parent_path(); p.has_relative_path() && !fs::exists(p, ec);
+       p = p.parent_path())
+    created_parent_ = p;
   fs::create_directories(final_.parent_path(), ec);
   if (!fs::create_directory(staging_, ec)) {
     if (ec) throw IoError(staging_.string() + ": cannot create folder: " + ec.message());
@@ -148,6 +151,13 @@ AtomicDirectory::~AtomicDirectory() {
   if (!committed_) {
     std::error_code ec;
     fs::remove_all(staging_, ec);
+    // The parents made for this output, innermost first; fs::remove takes only an empty folder,
+    // so one that something else has written into since stays.
+    if (!created_parent_.empty()) {
+      for (fs::path p = final_.parent_path(); fs::remove(p, ec) && p != created_parent_;
+           p = p.parent_path()) {
+      }
+    }
   }
   if (lock_fd_ >= 0) ::close(lock_fd_);
 }

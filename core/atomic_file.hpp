@@ -48,6 +48,9 @@ class AtomicDirectory {
 
  private:
   std::filesystem::path final_, staging_;
+  // The highest parent folder this object created for the output (empty: none); when the output
+  // is not committed, the parents it created are removed again if they are empty.
+  std::filesystem::path created_parent_;
   bool overwrite_ = false, committed_ = false;
   int lock_fd_ = -1;  // the staging folder's lock, held until commit or destruction
 };

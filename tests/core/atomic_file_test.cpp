@@ -29,6 +29,31 @@ TEST(AtomicDirectory, NothingVisibleUntilCommitAndNothingLeftWhenAbandoned) {
   EXPECT_FALSE(fs::exists(out.string() + ".partial"));
 }
 
+// An output under folders that did not exist: abandoned, it left those (empty) folders behind.
+// They go with it, up to the first that was there before, and a parent that got other files
+// meanwhile stays.
+TEST(AtomicDirectory, AbandonedItRemovesTheEmptyParentsItMade) {
+  const fs::path root = test::scratch_folder("parents");
+  {
+    AtomicDirectory dir(root / "a" / "b" / "out", false);
+    EXPECT_TRUE(fs::is_directory(root / "a" / "b"));
+  }
+  EXPECT_TRUE(fs::is_directory(root));
+  EXPECT_FALSE(fs::exists(root / "a"));
+  {
+    AtomicDirectory dir(root / "c" / "d" / "out", false);
+    std::ofstream(root / "c" / "notes.txt") << "written meanwhile";
+  }
+  EXPECT_FALSE(fs::exists(root / "c" / "d"));
+  EXPECT_TRUE(fs::exists(root / "c" / "notes.txt"));
+  {
+    AtomicDirectory dir(root / "e" / "out", false);
+    dir.commit();
+  }
+  EXPECT_TRUE(fs::is_directory(root / "e" / "out"));  // committed: everything stays
+  fs::remove_all(root);
+}
+
 TEST(AtomicDirectory, CommitMovesTheFolderIntoPlace) {
   const fs::path out = fresh_dir("commit");
   {
