@@ -22,6 +22,7 @@
 #include "sim/render/rgbd_renderer.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/scene/scene_schema.hpp"
+#include "sim/world/plan_queries.hpp"
 #include "sim/world/world_generator.hpp"
 
 namespace wifislam::cli {
@@ -87,6 +88,14 @@ void run_render(const RenderArgs& args) {
         fmt::format("--height: {} m is not between the floor and the ceiling "
                     "(0 to {} m)",
                     height_m, world.plan.wall_height_m));
+  }
+  // A view from inside a wall or outside the building is blank, but may be what is wanted (a
+  // wall's material, say): drawn, with a warning rather than a silent 0 % of depth readings.
+  if (!sim::world::regions_contain(world.plan.free_space, {planar.x_m, planar.y_m})) {
+    fmt::print(stderr,
+               "wifislam: warning: ({}, {}) m is not in the free space of scene '{}' (inside a "
+               "wall or outside the building): the camera sees little or nothing\n",
+               planar.x_m, planar.y_m, scene.name);
   }
   const Pose pose =
       camera_pose_from_planar(planar.x_m, planar.y_m, planar.yaw_deg * std::numbers::pi / 180.0,

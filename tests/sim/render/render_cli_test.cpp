@@ -36,6 +36,7 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
                     p.y(), separator, yaw_deg, (dir / name).string()),
         dir);
     ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;  // a pose on the route
   }
   for (const char* suffix : {"_rgb.png", "_depth.png", "_depth_color.png"}) {
     const std::string a = test::read_file(dir.string() + "/a" + suffix);
@@ -50,6 +51,23 @@ TEST(SceneRender, RenderCommandIsByteIdenticalAcrossProcesses) {
   EXPECT_GE(lo, scene.sensors.depth.min_range_m - 1e-3);
   EXPECT_LE(hi, scene.sensors.depth.max_range_m + 1e-3);
   EXPECT_GT(cv::countNonZero(depth > 0.0f), static_cast<int>(depth.total() / 4));
+  fs::remove_all(dir);
+}
+
+// A view from the hole between two rungs of the ladder (inside the walls) or from far outside
+// the building was drawn blank without a word. It is still drawn, with a warning.
+TEST(SceneRender, APoseOutsideTheFreeSpaceIsDrawnWithAWarning) {
+  const fs::path dir = test::scratch_folder();
+  for (const char* pose : {"15,6,0", "-500,5,90"}) {
+    const test::CliResult r =
+        test::run_wifislam(fmt::format("render {}/aliasing_ladder.yaml --pose '{}' -o {}",
+                                       WIFISLAM_SCENES_DIR, pose, (dir / "x").string()),
+                           dir);
+    EXPECT_EQ(r.exit_code, 0) << pose << ": " << r.err;
+    EXPECT_NE(r.err.find("is not in the free space of scene 'aliasing_ladder'"), std::string::npos)
+        << r.err;
+    EXPECT_TRUE(fs::exists(dir / "x_rgb.png")) << pose;
+  }
   fs::remove_all(dir);
 }
 
