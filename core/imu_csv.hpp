@@ -29,8 +29,8 @@ std::string imu_csv_header();
 std::string format_imu_csv_row(const ImuReading& reading);
 
 /// All readings of a file. Throws ParseError("file:line", column, ...) for a wrong header, a
-/// wrong field count, a field that is not a finite number, a value beyond what an IMU reads
-/// (200 m/s^2, 100 rad/s), or a time that does not increase;
+/// wrong field count, a field that is not a finite number, a value beyond what any IMU reads
+/// (1e6 m/s^2 or rad/s: a corrupt row), or a time that does not increase;
 /// IoError when the file cannot be read.
 std::vector<ImuReading> read_imu_csv(const std::string& path);
 

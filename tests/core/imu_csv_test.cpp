@@ -25,11 +25,11 @@ std::string imu_text(const std::vector<ImuReading>& readings) {
 TEST(ImuCsv, ReadingsUpToWhatAnImuReadsReadBack) {
   const auto dir = test::fresh_folder("imu_bounds");
   test::write_text(dir / "imu.csv",
-                   imu_text({imu_reading(0, 9.81, 0.0), imu_reading(5000, -200.0, 100.0)}));
+                   imu_text({imu_reading(0, 9.81, 0.0), imu_reading(5000, -1e6, 1e6)}));
   const std::vector<ImuReading> read = read_imu_csv((dir / "imu.csv").string());
   ASSERT_EQ(read.size(), 2u);
-  EXPECT_EQ(read[1].specific_force_mps2.z(), -200.0);
-  EXPECT_EQ(read[1].angular_velocity_radps.x(), 100.0);
+  EXPECT_EQ(read[1].specific_force_mps2.z(), -1e6);
+  EXPECT_EQ(read[1].angular_velocity_radps.x(), 1e6);
 }
 
 TEST(ImuCsv, AReadingBeyondWhatAnImuReadsIsRefusedAtItsRowAndColumn) {
@@ -44,11 +44,11 @@ TEST(ImuCsv, AReadingBeyondWhatAnImuReadsIsRefusedAtItsRowAndColumn) {
     }
     return std::string("no error");
   };
-  const std::string force = error_of({imu_reading(0, 9.81, 0.0), imu_reading(5000, 200.5, 0.0)});
+  const std::string force = error_of({imu_reading(0, 9.81, 0.0), imu_reading(5000, 1.5e6, 0.0)});
   EXPECT_NE(force.find(file + ":3"), std::string::npos) << force;
   EXPECT_NE(force.find("a_z_mps2"), std::string::npos) << force;
-  EXPECT_NE(force.find("at most 200 m/s^2"), std::string::npos) << force;
-  const std::string turn = error_of({imu_reading(0, 9.81, -100.5)});
+  EXPECT_NE(force.find("at most 1e+06 m/s^2"), std::string::npos) << force;
+  const std::string turn = error_of({imu_reading(0, 9.81, -2e6)});
   EXPECT_NE(turn.find(file + ":2"), std::string::npos) << turn;
   EXPECT_NE(turn.find("w_x_radps"), std::string::npos) << turn;
 }
