@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 
 namespace wifislam {
 
@@ -126,7 +127,14 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
        p = p.parent_path())
     created_parent_ = p;
   fs::create_directories(final_.parent_path(), ec);
-  if (!fs::create_directory(staging_, ec)) {
+  bool created = fs::create_directory(staging_, ec);
+  if (!created && ec == std::errc::no_such_file_or_directory) {
+    // A run abandoned beside this one removed the new parent they shared: make it again.
+    fs::create_directories(final_.parent_path(), ec);
+    created = fs::create_directory(staging_, ec);
+  }
+  if (!created) {
+    remove_created_parents();
     if (ec) throw IoError(staging_.string() + ": cannot create folder: " + ec.message());
     throw InvalidInputError(busy);  // another run created it since
   }
@@ -135,6 +143,8 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
   lock_fd_ = lock_folder(staging_);
   if (lock_fd_ < 0 || !same_folder(lock_fd_, staging_)) {
     if (lock_fd_ >= 0) ::close(lock_fd_);
+    lock_fd_ = -1;
+    remove_created_parents();
     throw InvalidInputError(busy);
   }
   try {
@@ -143,7 +153,18 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
   } catch (...) {
     fs::remove_all(staging_, ec);
     ::close(lock_fd_);
+    remove_created_parents();
     throw;
+  }
+}
+
+void AtomicDirectory::remove_created_parents() {
+  // Innermost first; fs::remove takes only an empty folder, so one that something else has
+  // written into since stays, and with it every folder above it.
+  if (created_parent_.empty()) return;
+  std::error_code ec;
+  for (fs::path p = final_.parent_path(); fs::remove(p, ec) && p != created_parent_;
+       p = p.parent_path()) {
   }
 }
 
@@ -151,18 +172,14 @@ AtomicDirectory::~AtomicDirectory() {
   if (!committed_) {
     std::error_code ec;
     fs::remove_all(staging_, ec);
-    // The parents made for this output, innermost first; fs::remove takes only an empty folder,
-    // so one that something else has written into since stays.
-    if (!created_parent_.empty()) {
-      for (fs::path p = final_.parent_path(); fs::remove(p, ec) && p != created_parent_;
-           p = p.parent_path()) {
-      }
-    }
+    remove_created_parents();
   }
   if (lock_fd_ >= 0) ::close(lock_fd_);
 }
 
 void AtomicDirectory::commit() {
+  // The last point where a command stopped by Ctrl-C can still leave nothing (core/stop_signal).
+  throw_if_stop_requested();
   std::error_code ec;
   fs::path set_aside;  // the folder being replaced, until the new one is in place
   if (fs::exists(final_, ec)) {

@@ -51,6 +51,7 @@ class AtomicDirectory {
   // The highest parent folder this object created for the output (empty: none); when the output
   // is not committed, the parents it created are removed again if they are empty.
   std::filesystem::path created_parent_;
+  void remove_created_parents();
   bool overwrite_ = false, committed_ = false;
   int lock_fd_ = -1;  // the staging folder's lock, held until commit or destruction
 };

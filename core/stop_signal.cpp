@@ -1,7 +1,8 @@
 #include "core/stop_signal.hpp"
 
+#include <atomic>
 #include <csignal>
-#include <cstring>
+#include <exception>
 #include <iterator>
 
 #include <signal.h>
@@ -13,17 +14,21 @@ namespace wifislam {
 namespace {
 
 constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
-volatile std::sig_atomic_t g_stop_signal = 0;
+// Set by the handler, which may run on any thread, and read by the work: a lock-free atomic is
+// both async-signal-safe and free of data races.
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
 struct sigaction g_previous[std::size(kStopSignals)];
+bool g_installed[std::size(kStopSignals)] = {};
 
 void on_stop_signal(int signal) {
-  if (g_stop_signal != 0) {
+  if (g_stop_signal.load() != 0) {
     // Asked twice: the default action now (async-signal-safe: signal and raise).
     std::signal(signal, SIG_DFL);
     std::raise(signal);
     return;
   }
-  g_stop_signal = signal;
+  g_stop_signal.store(signal);
 }
 
 }  // namespace
@@ -39,18 +44,30 @@ StopOnSignal::StopOnSignal() {
   struct sigaction stop {};
   stop.sa_handler = on_stop_signal;
   sigemptyset(&stop.sa_mask);
-  stop.sa_flags = SA_RESTART;  // reads and writes go on; the work stops at its next frame
-  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
-    ::sigaction(kStopSignals[i], &stop, &g_previous[i]);
+  stop.sa_flags = SA_RESTART;  // reads and writes go on; the work stops at its next check
+  for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
+    // A signal the caller ignores stays ignored: under nohup (SIGHUP) or as a script's
+    // background job (SIGINT) the run goes on, as it did before the guard.
+    ::sigaction(kStopSignals[i], nullptr, &g_previous[i]);
+    g_installed[i] = g_previous[i].sa_handler != SIG_IGN;
+    if (g_installed[i]) ::sigaction(kStopSignals[i], &stop, nullptr);
+  }
 }
 
 StopOnSignal::~StopOnSignal() {
-  for (std::size_t i = 0; i < std::size(kStopSignals); ++i)
-    ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+  for (std::size_t i = 0; i < std::size(kStopSignals); ++i) {
+    if (g_installed[i]) ::sigaction(kStopSignals[i], &g_previous[i], nullptr);
+    g_installed[i] = false;
+  }
+  // A signal that came after the last check (the output was already committed) is not lost: the
+  // process ends by it, as the caller (a shell loop) expects. While StoppedBySignal unwinds, the
+  // command's caller reports it and ends the process so.
+  const int signal = g_stop_signal.load();
+  if (signal != 0 && std::uncaught_exceptions() == 0) std::raise(signal);
 }
 
 void throw_if_stop_requested() {
-  if (const int signal = g_stop_signal) throw StoppedBySignal(signal);
+  if (const int signal = g_stop_signal.load()) throw StoppedBySignal(signal);
 }
 
 }  // namespace wifislam

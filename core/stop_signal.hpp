@@ -5,9 +5,12 @@
 // it stood and left the .partial folder (a ROS bag: 100 MB and more) until a later run into the
 // same path recovered it.
 //
-// A command opts in with a StopOnSignal guard and calls throw_if_stop_requested() where stopping
-// is safe (once a frame); elsewhere, and with no guard, the signals keep their default action.
-// A second signal while the first is being honoured ends the process at once.
+// A command opts in with a StopOnSignal guard; the work calls throw_if_stop_requested() where
+// stopping is safe (once a frame), and AtomicDirectory::commit() calls it last, so a signal is
+// honoured at the latest before the output is put in place. With no guard the signals keep their
+// action, and a signal the caller ignores (nohup) stays ignored. A second signal while the first
+// is being honoured ends the process at once; one that comes after the commit ends it when the
+// guard goes.
 
 #include <string>
 

@@ -6,6 +6,7 @@
 #include "core/atomic_file.hpp"
 #include "core/dataset_format.hpp"
 #include "core/error.hpp"
+#include "core/stop_signal.hpp"
 #include "core/text_lines.hpp"
 #include "interop/relative_link.hpp"
 
@@ -111,6 +112,7 @@ void write_euroc(const fs::path& dataset, const EurocInput& input, const fs::pat
 
   std::string cam_csv = "#timestamp [ns],filename\n", depth_csv = cam_csv, times;
   for (const FramePair& p : input.pairs) {
+    throw_if_stop_requested();  // `export`: Ctrl-C removes the unfinished folder
     const std::string name = ns(p.rgb_time) + ".png";
     link_relative(dataset / p.rgb_path, final_path / "mav0/cam0/data" / name,
                   mav / "cam0/data" / name);

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/shell_quoted.hpp"
+#include "core/stop_signal.hpp"
 #include "core/tum_file_list.hpp"
 #include "interop/euroc_export.hpp"
 #include "interop/kapture_export.hpp"
@@ -330,8 +331,7 @@ PeerExportSummary export_for_peer(const fs::path& dataset_path, const fs::path& 
   // The links point at the dataset's images: check each against images.sha256 now, without
   // decoding it (the bag's writer checks each as it decodes it).
   if (options.verify_checksums && options.peer != Peer::kRosbag) {
-    while (reader.next()) {
-    }
+    while (reader.next()) throw_if_stop_requested();  // `export`: Ctrl-C stops the check too
   }
   const std::vector<FramePair> pairs = read_frame_pairs(dataset);
 

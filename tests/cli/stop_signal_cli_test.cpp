@@ -7,6 +7,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <csignal>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -28,10 +30,31 @@ class StopSignalCli : public ::testing::Test {
   void SetUp() override { scratch_ = test::scratch_folder(); }
   void TearDown() override { fs::remove_all(scratch_); }
 
-  /// `wifislam <args>` started in the background, stderr to `err`.
-  pid_t start(const std::vector<std::string>& args, const fs::path& err) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
+  /// `wifislam <args>` run in the background, stderr to `err`; `ignore_hangup` as nohup starts
+  /// it. Killed and reaped when the test leaves it running (a failed assertion).
+  struct Child {
+    pid_t pid = -1;
+    int status = 0;
+    bool reaped = false;
+    ~Child() {
+      if (pid > 0 && !reaped) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+      }
+    }
+    bool ended() {
+      if (!reaped) reaped = ::waitpid(pid, &status, WNOHANG) == pid;
+      return reaped;
+    }
+    void wait() {
+      if (!reaped) reaped = ::waitpid(pid, &status, 0) == pid;
+    }
+  };
+  void start(Child& child, const std::vector<std::string>& args, const fs::path& err,
+             bool ignore_hangup = false) {
+    child.pid = ::fork();
+    if (child.pid == 0) {
+      if (ignore_hangup) std::signal(SIGHUP, SIG_IGN);
       if (!std::freopen(err.c_str(), "w", stderr)) ::_exit(127);
       std::vector<char*> argv{const_cast<char*>(WIFISLAM_BINARY)};
       for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
@@ -39,7 +62,13 @@ class StopSignalCli : public ::testing::Test {
       ::execv(WIFISLAM_BINARY, argv.data());
       ::_exit(127);
     }
-    return pid;
+  }
+  /// Waits until `partial` exists (the work is under way) or the child ended.
+  static bool writing(Child& child, const fs::path& partial) {
+    test::wait_until(
+        std::chrono::seconds(60), [&] { return fs::exists(partial) || child.ended(); },
+        std::chrono::milliseconds(5));
+    return fs::exists(partial) && !child.reaped;
   }
 
   /// Starts the command, waits until `partial` exists (its work is under way), sends `signal`
@@ -47,19 +76,15 @@ class StopSignalCli : public ::testing::Test {
   void stop_while_writing(const std::vector<std::string>& args, const fs::path& partial,
                           int signal) {
     const fs::path err = scratch_ / "stderr.txt";
-    const pid_t pid = start(args, err);
-    ASSERT_GT(pid, 0);
-    int status = 0;
-    const bool writing = test::wait_until(
-        std::chrono::seconds(60),
-        [&] { return fs::exists(partial) || ::waitpid(pid, &status, WNOHANG) == pid; },
-        std::chrono::milliseconds(5));
-    ASSERT_TRUE(writing && fs::exists(partial))
-        << "never started writing: " << test::read_file(err);
-    ASSERT_EQ(::kill(pid, signal), 0);
-    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-    ASSERT_TRUE(WIFSIGNALED(status)) << "ended before the signal came: " << test::read_file(err);
-    EXPECT_EQ(WTERMSIG(status), signal);
+    Child child;
+    start(child, args, err);
+    ASSERT_GT(child.pid, 0);
+    ASSERT_TRUE(writing(child, partial)) << "never started writing: " << test::read_file(err);
+    ASSERT_EQ(::kill(child.pid, signal), 0);
+    child.wait();
+    ASSERT_TRUE(WIFSIGNALED(child.status))
+        << "ended before the signal came: " << test::read_file(err);
+    EXPECT_EQ(WTERMSIG(child.status), signal);
     EXPECT_NE(test::read_file(err).find("the unfinished output was removed"), std::string::npos)
         << test::read_file(err);
     EXPECT_FALSE(fs::exists(partial)) << partial;
@@ -79,6 +104,23 @@ TEST_F(StopSignalCli, GenerateStoppedRemovesItsPartialFolderAndKeepsTheOneItWasR
                       "--force", "-q"},
                      scratch_ / "ds.partial", SIGINT);
   EXPECT_EQ(test::read_file(ds / "manifest.json"), manifest);
+  EXPECT_EQ(test::run_wifislam("check " + ds.string(), scratch_).exit_code, 0);
+}
+
+// A signal the caller ignores stays ignored: under nohup, the hangup that closing the terminal
+// sends must not stop the run (the guard took it over and removed the dataset).
+TEST_F(StopSignalCli, AHangupIgnoredAsNohupDoesIsStillIgnored) {
+  const std::string scene = std::string(WIFISLAM_SCENES_DIR) + "/a_hall.yaml";
+  const fs::path ds = scratch_ / "ds", err = scratch_ / "stderr.txt";
+  Child child;
+  start(child, {"generate", scene, "-o", ds.string(), "--fps", "10", "--max-frames", "60", "-q"},
+        err, true);
+  ASSERT_GT(child.pid, 0);
+  ASSERT_TRUE(writing(child, scratch_ / "ds.partial")) << test::read_file(err);
+  ASSERT_EQ(::kill(child.pid, SIGHUP), 0);
+  child.wait();
+  ASSERT_TRUE(WIFEXITED(child.status)) << test::read_file(err);
+  EXPECT_EQ(WEXITSTATUS(child.status), 0) << test::read_file(err);
   EXPECT_EQ(test::run_wifislam("check " + ds.string(), scratch_).exit_code, 0);
 }
 
