@@ -84,6 +84,18 @@ KaptureInput read_kapture_input(const fs::path& dataset, std::vector<FramePair> 
   input.ground_truth = read_ground_truth(dataset);
   if (fs::exists(dataset / dataset::kWifi))
     input.scans = read_wifi_csv((dataset / dataset::kWifi).string());
+  // Each receiver becomes a Kapture sensor named by its sensor_id: not another sensor's name, and
+  // not a comment line of Kapture's text files.
+  for (const WifiScan& scan : input.scans) {
+    const std::string& id = scan.sensor_id;
+    if (id == "cam0" || id == "depth0" || id == "accel0" || id == "gyro0" || id.starts_with('#')) {
+      throw InvalidInputError(
+          fmt::format("{}: sensor_id '{}' cannot name a Kapture Wi-Fi sensor ({})",
+                      (dataset / dataset::kWifi).string(), id,
+                      id.starts_with('#') ? "a '#' starts a comment in Kapture's files"
+                                          : "the export names its camera, depth or IMU sensor so"));
+    }
+  }
   if (calibration.imu && fs::exists(dataset / dataset::kImu))
     input.imu = read_imu_csv((dataset / dataset::kImu).string());
   return input;

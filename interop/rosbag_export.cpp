@@ -20,6 +20,7 @@
 #include "core/imu_csv.hpp"
 #include "core/stop_signal.hpp"
 #include "core/tum_trajectory.hpp"
+#include "core/wifi_csv.hpp"
 #include "interop/rosbag/rosbag_writer.hpp"
 
 namespace wifislam::interop {
@@ -40,6 +41,25 @@ bag::RigidTransform rigid(const Pose& pose) {
 
 /// The latest time ROS 1 holds: unsigned 32-bit seconds.
 constexpr std::int64_t kMaxRosTimeNs = 0xFFFFFFFFLL * 1'000'000'000;
+
+/// The topic of one receiver's scans: /wifi/scan for wifi0, the receiver `generate` writes,
+/// and /wifi/<sensor_id>/scan for any other (wifi.csv's sensor_id), so that the scans of two
+/// receivers stay apart. An id that is no ROS name ([A-Za-z][A-Za-z0-9_]*) is refused.
+std::string wifi_topic(const std::string& sensor_id) {
+  if (sensor_id == "wifi0") return "/wifi/scan";
+  const bool ros_name = !sensor_id.empty() &&
+                        std::isalpha(static_cast<unsigned char>(sensor_id[0])) &&
+                        std::all_of(sensor_id.begin(), sensor_id.end(), [](char ch) {
+                          return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
+                        });
+  if (!ros_name) {
+    throw InvalidInputError(fmt::format(
+        "wifi.csv: sensor_id '{}' cannot name a ROS topic (/wifi/<sensor_id>/scan): a ROS name "
+        "is a letter followed by letters, digits and underscores",
+        sensor_id));
+  }
+  return "/wifi/" + sensor_id + "/scan";
+}
 
 class BagExport {
  public:
@@ -128,25 +148,6 @@ class BagExport {
     ++messages_;
   }
 
-  /// The topic of one receiver's scans: /wifi/scan for wifi0, the receiver `generate` writes,
-  /// and /wifi/<sensor_id>/scan for any other (wifi.csv's sensor_id), so that the scans of two
-  /// receivers stay apart. An id that is no ROS name ([A-Za-z][A-Za-z0-9_]*) is refused.
-  static std::string wifi_topic(const std::string& sensor_id) {
-    if (sensor_id == "wifi0") return "/wifi/scan";
-    const bool ros_name = !sensor_id.empty() &&
-                          std::isalpha(static_cast<unsigned char>(sensor_id[0])) &&
-                          std::all_of(sensor_id.begin(), sensor_id.end(), [](char ch) {
-                            return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_';
-                          });
-    if (!ros_name) {
-      throw InvalidInputError(fmt::format(
-          "wifi.csv: sensor_id '{}' cannot name a ROS topic (/wifi/<sensor_id>/scan): a ROS name "
-          "is a letter followed by letters, digits and underscores",
-          sensor_id));
-    }
-    return "/wifi/" + sensor_id + "/scan";
-  }
-
   void write_odometry(const OdometryReading& reading) {
     const bag::RigidTransform pose = rigid(reading.base_in_odom);
     writer_.odometry("/odom", reading.time.ns, "odom", "base_link", pose,
@@ -225,6 +226,11 @@ void check_rosbag_input(const fs::path& dataset) {
       throw InvalidInputError(fmt::format("{}: time {} is after 2106, the last time ROS 1 holds",
                                           dataset.string(), p.time.to_tum_string()));
     }
+  }
+  // Every receiver needs a topic: checked before the bag is begun.
+  if (fs::exists(dataset / dataset::kWifi)) {
+    for (const WifiScan& scan : read_wifi_csv((dataset / dataset::kWifi).string()))
+      wifi_topic(scan.sensor_id);
   }
 }
 

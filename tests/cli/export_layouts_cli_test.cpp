@@ -364,6 +364,12 @@ TEST_F(ExportLayoutsCli, EachWifiReceiverIsASensorOfItsOwn) {
   const auto refused = export_to(bad, "rosbag", scratch_ / "bad_receiver_bag", "--no-verify");
   test::expect_located_bad_input(refused, "sensor_id '2phone'", "ROS");
   EXPECT_FALSE(fs::exists(scratch_ / "bad_receiver_bag"));
+  EXPECT_FALSE(fs::exists(scratch_ / "bad_receiver_bag.partial"));
+  // Kapture: an id that names another of the export's sensors would declare it twice.
+  const auto clash =
+      export_to(relabelled("cam0"), "kapture", scratch_ / "clash_kapture", "--no-verify");
+  test::expect_located_bad_input(clash, "sensor_id 'cam0'", "cannot name a Kapture Wi-Fi sensor");
+  EXPECT_FALSE(fs::exists(scratch_ / "clash_kapture"));
 }
 
 // `check` never read imu.csv: a dataset it passed was then refused by the exports that carry the
