@@ -80,6 +80,12 @@ std::vector<Level> read_levels(const std::filesystem::path& folder, ImportedPlan
   return levels;
 }
 
+std::vector<std::string> level_ids(const std::vector<Level>& levels) {
+  std::vector<std::string> ids;
+  for (const Level& l : levels) ids.push_back(l.id);
+  return ids;
+}
+
 }  // namespace
 
 ImportedPlan import_imdf(const std::filesystem::path& plan_file,
@@ -129,8 +135,8 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
         const std::string id = u.tag("level_id");
         if (std::none_of(levels.begin(), levels.end(), [&](const Level& l) { return l.id == id; }))
           throw ParseError(u.where, "level_id",
-                           fmt::format("'{}' is not a level of level.geojson (its levels: {})", id,
-                                       fmt::join(plan.levels, ", ")));
+                           fmt::format("'{}' is not a level of level.geojson (its level ids: {})",
+                                       id, fmt::join(level_ids(levels), ", ")));
       }
       throw ParseError(plan.source, "", "no level with a walkway or lobby unit");
     }

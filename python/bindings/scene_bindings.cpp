@@ -105,11 +105,14 @@ void bind_scene(py::module_& m) {
             return py::make_tuple(sim::scene::resolved_scene_yaml(s), s.source_path);
           },
           [](const py::tuple& state) {
-            if (state.size() != 2) throw InvalidInputError("Scene: not a pickled wifislam.Scene");
+            if (state.size() != 2 || !py::isinstance<py::str>(state[0]) ||
+                !py::isinstance<py::str>(state[1]))
+              throw InvalidInputError("Scene: not a pickled wifislam.Scene");
             const auto source_path = state[1].cast<std::string>();
-            auto scene = std::make_shared<sim::scene::Scene>(
-                sim::scene::load_scene_yaml(state[0].cast<std::string>(),
-                                            source_path.empty() ? "<pickled scene>" : source_path));
+            // Located errors of the copy name the resolved text, whose lines are not the file's.
+            auto scene = std::make_shared<sim::scene::Scene>(sim::scene::load_scene_yaml(
+                state[0].cast<std::string>(),
+                source_path.empty() ? "<pickled scene>" : "<pickled copy of " + source_path + ">"));
             scene->source_path = source_path;
             return scene;
           }))

@@ -85,6 +85,12 @@ def _path(value: PathLike, what: str) -> str:
     return text
 
 
+def _absolute(path: str) -> str:
+    """`path` from the current folder, not normalised: os.path.abspath takes "link/.." as text,
+    and with a symbolic link `link` that is another folder than the one the system opens."""
+    return path if os.path.isabs(path) else os.path.join(os.getcwd(), path)
+
+
 _load_scene_file = Scene.load
 
 
@@ -92,7 +98,7 @@ def _scene_load(path: PathLike) -> Scene:
     """A scene file (YAML) loaded and checked; ParseError names the file, line and key."""
     # Absolute at loading, as a Dataset's path: the scene remembers its file, and generate's
     # refusal to replace a folder holding it must find it after a later os.chdir too.
-    return _load_scene_file(os.path.abspath(_path(path, "Scene.load")))
+    return _load_scene_file(_absolute(_path(path, "Scene.load")))
 
 
 Scene.load = staticmethod(_scene_load)
@@ -323,7 +329,7 @@ class Dataset(_Frames):
     def __init__(self, path: PathLike, verify: bool = True, load_images: bool = True):
         # Absolute at opening: each pass reads the files again, and a later os.chdir (a
         # notebook's %cd) must not make it read another folder's.
-        self.path = os.path.abspath(_path(path, "Dataset"))
+        self.path = _absolute(_path(path, "Dataset"))
         super().__init__(_wifislam._Dataset(self.path, verify, load_images))
 
     @property

@@ -172,7 +172,8 @@ TEST(PlanImport, ImdfUnitsWithoutTheirLevelNameWhatIsMissing) {
   } catch (const ParseError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("unit.geojson"), std::string::npos) << what;
-    EXPECT_NE(what.find("'L0' is not a level of level.geojson (its levels: G)"), std::string::npos)
+    EXPECT_NE(what.find("'L0' is not a level of level.geojson (its level ids: L9)"),
+              std::string::npos)
         << what;
   }
   fs::remove_all(folder);
