@@ -202,7 +202,7 @@ ImportedPlan import_imdf(const std::filesystem::path& plan_file,
   }
   plan.notes.push_back(fmt::format("{} of {} openings placed as open doors on a shared wall",
                                    doors.size(), plan.counts.doors));
-  finish_plan(inputs, partition, doors, plan);
+  finish_plan(geos, inputs, partition, partition_options, doors, plan);
   return plan;
 }
 

@@ -63,8 +63,10 @@ struct PlacedDoor {
 
 /// Writes the partition's pieces as spaces (holes as obstacles) and the doors into `plan`;
 /// pieces of walkable spaces that no open door joins to the largest walkable group become rooms
-/// (the robot's space must be one piece), noted in plan.notes.
-void finish_plan(const std::vector<SpaceInput>& inputs, const Partition& partition,
+/// (the robot's space must be one piece), noted in plan.notes. The strips plan.obstacles cut off
+/// the pieces become part of them first (obstacle_strips.hpp).
+void finish_plan(const GeosContext& geos, const std::vector<SpaceInput>& inputs,
+                 const Partition& partition, const PartitionOptions& partition_options,
                  const std::vector<PlacedDoor>& doors, ImportedPlan& plan);
 
 }  // namespace wifislam::floorplan

@@ -254,7 +254,7 @@ ImportedPlan import_osm_sit(const std::filesystem::path& plan_file,
   if (!partition.dropped.empty())
     plan.notes.push_back(fmt::format("{} polygon(s) lay inside others or were slivers; dropped",
                                      partition.dropped.size()));
-  finish_plan(joined, partition, doors, plan);
+  finish_plan(geos, joined, partition, partition_options, doors, plan);
   return plan;
 }
 

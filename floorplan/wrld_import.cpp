@@ -233,7 +233,7 @@ ImportedPlan import_wrld(const std::filesystem::path& plan_file,
     for (const PlanFeature& f : read_plan_features(paths_file))
       add_projected_lines(f, projection, plan.paths_m);
   }
-  finish_plan(inputs, partition, placed, plan);
+  finish_plan(geos, inputs, partition, partition_options, placed, plan);
   return plan;
 }
 

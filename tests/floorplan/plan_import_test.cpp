@@ -77,6 +77,18 @@ TEST(PlanImport, WrldLevelTwoMatchesTheFilesCounts) {
   expect_route_revisits(floorplan::imported_scene(plan, {}));
 }
 
+// An island drawn close to the outer wall cuts a 1.5 cm strip off the hall once the partition
+// has moved the hall's outline; the robot's space was in two pieces and the import failed.
+TEST(PlanImport, WrldLevelOneImportsWithTheStripItsIslandCutsOffMadeSolid) {
+  const floorplan::ImportedPlan plan = floorplan::import_plan(
+      test::kShippedPlans / "westport_house_wrld" / "westport-house-floor-1.geojson", {});
+  EXPECT_EQ(plan.level, "1");
+  EXPECT_NE(fmt::format("{}", fmt::join(plan.notes, "\n")).find("1 strip(s) of free space"),
+            std::string::npos)
+      << fmt::format("{}", fmt::join(plan.notes, "\n"));
+  expect_route_revisits(floorplan::imported_scene(plan, {}));
+}
+
 TEST(PlanImport, ShippedScenesLoadAndBuild) {
   for (const char* name : {"fei_level_1.yaml", "westport_house_level_2.yaml"}) {
     const sim::scene::Scene scene =
