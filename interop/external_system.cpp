@@ -205,8 +205,8 @@ ExternalSystem resolve_external_system(const std::string& frontend) {
                     "after '{}'",
                     frontend, kExternalPrefix));
   }
-  if (name.find('/') != std::string::npos || name.ends_with(".yaml")) {
-    return load_external_system(name);
+  if (const fs::path file = user_system_file(frontend); !file.empty()) {
+    return load_external_system(file);
   }
   const fs::path shipped = fs::path(WIFISLAM_SYSTEMS_DIR) / (name + ".yaml");
   if (!fs::is_regular_file(shipped)) {
@@ -218,6 +218,13 @@ ExternalSystem resolve_external_system(const std::string& frontend) {
         frontend, name, did_you_mean(name, known), list));
   }
   return load_external_system(shipped);
+}
+
+fs::path user_system_file(const std::string& frontend) {
+  if (!is_external_frontend(frontend)) return {};
+  const std::string name = frontend.substr(std::string(kExternalPrefix).size());
+  if (name.find('/') != std::string::npos || name.ends_with(".yaml")) return name;
+  return {};
 }
 
 std::vector<std::string> expand_command(const ExternalSystem& system,

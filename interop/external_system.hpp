@@ -65,6 +65,10 @@ bool is_external_frontend(const std::string& frontend);
 /// InvalidInputError listing the shipped systems when there is no such name.
 ExternalSystem resolve_external_system(const std::string& frontend);
 
+/// The user's system file "external:X" names (X, when it is a path or ends in .yaml; a command's
+/// output folder must not hold it), or empty for a shipped system's name or any other front end.
+std::filesystem::path user_system_file(const std::string& frontend);
+
 /// The shipped systems' names (systems/*.yaml).
 std::vector<std::string> shipped_system_names();
 

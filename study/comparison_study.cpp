@@ -576,6 +576,15 @@ std::vector<PairDivergence> pair_divergences(const std::vector<ComparisonCase>& 
 
 }  // namespace
 
+std::vector<std::filesystem::path> comparison_input_files(const ComparisonOptions& options) {
+  std::vector<std::filesystem::path> out;
+  for (const Setting& s : expand(options.sweeps)) {
+    for (std::filesystem::path& file : files_read_by(options_for(options, s, true, 1)))
+      out.push_back(std::move(file));
+  }
+  return out;
+}
+
 ComparisonResult run_comparison(const std::vector<sim::scene::Scene>& scenes,
                                 const ComparisonOptions& options,
                                 const std::filesystem::path& out_dir, const FinalPaths& finals) {

@@ -115,6 +115,10 @@ struct ComparisonResult {
   nlohmann::json to_json() const;
 };
 
+/// The user's files the runs read (front_end_choice.hpp, files_read_by), over every swept
+/// setting: the output folder must not hold them. Throws as the runs' option checks do.
+std::vector<std::filesystem::path> comparison_input_files(const ComparisonOptions& options);
+
 /// Whether "key=value" assignments set the SLAM's seed (then every run draws from it).
 bool assigns_slam_seed(const std::vector<std::string>& assignments);
 

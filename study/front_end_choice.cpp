@@ -37,4 +37,12 @@ std::optional<std::string> front_end_problem(const std::string& frontend) {
                      fmt::join(interop::shipped_system_names(), ", "));
 }
 
+std::vector<std::filesystem::path> files_read_by(const slam::SlamOptions& options) {
+  std::vector<std::filesystem::path> out;
+  if (!options.orbslam.vocabulary.empty()) out.emplace_back(options.orbslam.vocabulary);
+  if (std::filesystem::path system = interop::user_system_file(options.frontend); !system.empty())
+    out.push_back(std::move(system));
+  return out;
+}
+
 }  // namespace wifislam::study

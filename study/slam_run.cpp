@@ -10,6 +10,7 @@
 #include "sim/generate/sensor_input.hpp"
 #include "slam/io/run_folder_writer.hpp"
 #include "slam/system/run_slam.hpp"
+#include "study/front_end_choice.hpp"
 
 namespace wifislam::study {
 
@@ -51,7 +52,9 @@ SlamRunResult run_external_to_folder(const SlamRunRequest& request, bool replace
 
 SlamRunResult run_slam_to_folder(const SlamRunRequest& request) {
   slam::validate(request.options);
-  const bool replace = check_output_folder({request.output, request.force, {}, {request.input}});
+  std::vector<std::filesystem::path> inputs = files_read_by(request.options);
+  inputs.push_back(request.input);
+  const bool replace = check_output_folder({request.output, request.force, {}, inputs});
   SlamRunResult result;
   result.run_dir = absolute_folder(request.output);
   if (interop::is_external_frontend(request.options.frontend)) {

@@ -457,10 +457,8 @@ std::vector<fs::path> input_files(const StudyFile& study) {
   };
   for (const std::string& setting : study.slam.settings) add_vocabulary(setting);
   const auto add_system_file = [&](const std::string& frontend) {
-    if (!interop::is_external_frontend(frontend)) return;
-    const std::string x = frontend.substr(std::string(interop::kExternalPrefix).size());
-    // A shipped system's name is no file of the user's.
-    if (x.find('/') != std::string::npos || fs::path(x).extension() == ".yaml") out.emplace_back(x);
+    if (fs::path file = interop::user_system_file(frontend); !file.empty())
+      out.push_back(std::move(file));
   };
   add_system_file(front_end_from(study.path.parent_path(), study.slam.frontend));
   for (const StudyAxis& axis : study.axes) {

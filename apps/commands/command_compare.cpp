@@ -43,29 +43,45 @@ struct CompareArgs {
 /// `--preset paper-rgbdslam`: the paper's RGBD-SLAM experiment ("RGBD SLAM performance", C Hall)
 /// on our c_hall twin: min_matches 50 and 70, 5 seeds, 3 fps (the robot's 30 fps make one run
 /// ten times longer; the route, pauses and scans are the same). Options given explicitly win.
-void apply_preset(CompareArgs& args, const CLI::App& app, std::vector<sim::scene::Scene>& scenes) {
-  if (args.preset.empty()) return;
+/// Returns whether the preset is used (the caller adds the twin to the scenes).
+bool apply_preset(CompareArgs& args, const CLI::App& app) {
+  if (args.preset.empty()) return false;
   if (args.preset != "paper-rgbdslam") {
     throw ParseError("--preset", args.preset, "unknown preset; known: paper-rgbdslam");
   }
-  if (scenes.empty()) scenes.push_back(study::paper::twin_scene("c_hall"));
+  if (!args.scenes.empty()) {
+    throw InvalidInputError("--preset " + args.preset +
+                            " runs on the built-in c_hall twin: give no scene file with it (for "
+                            "your scenes: --sweep min_matches=50,70 --seeds 5 --fps 3)");
+  }
   if (args.sweeps.empty()) args.sweeps.push_back("min_matches=50,70");
   if (app.count("--seeds") == 0) args.seeds = 5;
   if (args.fps <= 0) args.fps = 3.0;
+  return true;
 }
 
 void run(CompareArgs args, const CLI::App& app) {
-  OutputFolderRequest output{args.output, args.force, {}, {}};
-  for (const std::string& path : args.scenes) output.inputs.emplace_back(path);
-  const bool replace = check_output_folder(output);
-  std::vector<sim::scene::Scene> scenes;
-  for (const std::string& path : args.scenes) scenes.push_back(sim::scene::load_scene_file(path));
-  apply_preset(args, app, scenes);
-  if (scenes.empty()) {
+  const bool preset = apply_preset(args, app);
+  if (!preset && args.scenes.empty()) {
     throw ParseError("compare", "scenes", "give scene files, or --preset paper-rgbdslam");
   }
   study::ComparisonOptions options(args.frontend, args.settings);
   for (const std::string& s : args.sweeps) options.sweeps.push_back(study::parse_sweep(s));
+  for (const study::SweepAxis& axis : options.sweeps) {
+    if (axis.key == "frontend" && app.count("--frontend") > 0) {
+      throw InvalidInputError("--frontend " + args.frontend +
+                              ": the front end is also swept (--sweep frontend=...); give it "
+                              "once, in the sweep");
+    }
+  }
+  // The vocabulary and system files the runs read are inputs as much as the scenes: --force
+  // must not replace a folder that holds them.
+  OutputFolderRequest output{args.output, args.force, {}, study::comparison_input_files(options)};
+  for (const std::string& path : args.scenes) output.inputs.emplace_back(path);
+  const bool replace = check_output_folder(output);
+  std::vector<sim::scene::Scene> scenes;
+  for (const std::string& path : args.scenes) scenes.push_back(sim::scene::load_scene_file(path));
+  if (preset) scenes.push_back(study::paper::twin_scene("c_hall"));
   for (const std::string& s : args.eval_settings) eval::set_option(options.eval, s);
   options.seeds = args.seeds;
   if (args.fps > 0) options.fps = args.fps;

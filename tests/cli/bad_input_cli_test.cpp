@@ -337,7 +337,7 @@ TEST_F(BadInput, SlamOnADatasetWithoutImagesIsRefused) {
 // compare's options refused before any dataset is rendered, each in its own words: fewer frames
 // than the evaluation aligns (it failed after every run, naming a deleted folder), a scene without
 // a name (its folders were "-seed7"), a swept key that is no option (the message named --set), and
-// the `wifi` option, which every run overrides.
+// the `wifi` option, which every run overrides, and a front end given and swept.
 TEST_F(BadInput, CompareRefusesWhatWouldFailOrChangeNothingBeforeAnyWork) {
   const fs::path nameless = scratch_ / "nameless.yaml";
   std::string yaml = test::kTinyLoopYaml;
@@ -352,6 +352,9 @@ TEST_F(BadInput, CompareRefusesWhatWouldFailOrChangeNothingBeforeAnyWork) {
       {nameless.string() + " --max-frames 4", "the scene has no name"},
       {scene_.string() + " --sweep nokey=1,2 --max-frames 4", "--sweep: key 'nokey'"},
       {scene_.string() + " --set wifi=true --max-frames 4", "'wifi' option would change nothing"},
+      // --frontend and a swept front end: the flag was dropped without a word.
+      {scene_.string() + " --frontend rtabmap --sweep frontend=rgbdslam,orbslam --max-frames 4",
+       "the front end is also swept"},
   };
   for (const auto& c : cases) {
     const auto r = wifislam("compare " + c.args + " --fps 2 -q -o " + (scratch_ / "c").string());

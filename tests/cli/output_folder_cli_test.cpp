@@ -264,6 +264,30 @@ TEST_F(OutputFolders, ForceNeverReplacesWhatAnotherOptionOrFileReads) {
   EXPECT_EQ(wifislam("check " + ds.string()).exit_code, 0);
 }
 
+// A run reads files an option names too: the ORB vocabulary (`--set` or `--sweep vocabulary=`)
+// and an external system's file (`--frontend external:FILE`). `--force` onto a run folder that
+// holds one deleted it with the folder and exited 0.
+TEST_F(OutputFolders, ForceNeverReplacesAFolderHoldingAVocabularyOrSystemFileARunReads) {
+  const fs::path ds = make_dataset();
+  const fs::path run = make_run(ds);
+  test::write_file(run / "my.bin", "vocabulary");
+  test::write_file(run / "my_system.yaml", "system");
+  const std::string vocabulary = (run / "my.bin").string();
+  for (const std::string& command :
+       {"slam " + ds.string() + " --frontend orbslam --set vocabulary=" + vocabulary,
+        "slam " + ds.string() + " --frontend external:" + (run / "my_system.yaml").string(),
+        "compare " + scene_.string() + " --fps 2 --max-frames 6 --frontend orbslam --set " +
+            "vocabulary=" + vocabulary,
+        "compare " + scene_.string() + " --fps 2 --max-frames 6 --frontend orbslam --sweep " +
+            "orb_levels=4,8 --sweep vocabulary=" + vocabulary + "," + vocabulary + ".other"}) {
+    SCOPED_TRACE(command);
+    expect_refused(wifislam(command + " -o " + run.string() + " --force"), run,
+                   "holds an input of this command");
+    EXPECT_EQ(test::read_file(run / "my.bin"), "vocabulary");
+    EXPECT_EQ(test::read_file(run / "my_system.yaml"), "system");
+  }
+}
+
 // The demo's own folder (./demo-output) is replaced on every run, so scripts/demo.sh runs twice
 // in a row; another existing folder needs --force. A very short route keeps the demo quick; its
 // pauses are long enough for a Wi-Fi scan (the tiny loop's 1 s are not), which the demo's Wi-Fi

@@ -41,4 +41,19 @@ TEST(ComparePreset, NoScenesAndNoPresetIsAnError) {
   EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 2);
 }
 
+// The preset is the c_hall twin's experiment: given a scene file too, it ran its settings on that
+// scene instead, as if the scene were the twin.
+TEST(ComparePreset, ASceneFileWithThePresetIsAnError) {
+  const fs::path dir = wifislam::test::scratch_folder();
+  const std::string command = std::string(WIFISLAM_BINARY) + " compare " + WIFISLAM_SCENES_DIR +
+                              "/a_hall.yaml --preset paper-rgbdslam --max-frames 3 -o " +
+                              (dir / "out").string() + " > " + (dir / "log.txt").string() + " 2>&1";
+  EXPECT_EQ(WEXITSTATUS(std::system(command.c_str())), 2);
+  EXPECT_NE(wifislam::test::read_file(dir / "log.txt").find("give no scene file"),
+            std::string::npos)
+      << wifislam::test::read_file(dir / "log.txt");
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  fs::remove_all(dir);
+}
+
 }  // namespace
