@@ -43,10 +43,18 @@ void validate(const SlamOptions& o) {
           fmt::format("orb_scale_factor^(orb_levels - 1) must be <= 32 (the coarsest pyramid "
                       "level keeps 1/32 of the image), got {}^{}",
                       o.features.scale_factor, o.features.pyramid_levels - 1));
+  // Corners are intensity differences of 8-bit images: a threshold above 255 finds none.
+  require(o.features.fast_threshold >= 0 && o.features.fast_threshold <= 255,
+          fmt::format("fast_threshold must be in [0, 255], got {}", o.features.fast_threshold));
   require(o.features.min_depth_m >= 0 && o.features.max_depth_m > o.features.min_depth_m,
           "min_depth_m/max_depth_m must satisfy 0 <= min < max");
   require(o.transform.matching.ratio > 0 && o.transform.matching.ratio <= 1,
           "match_ratio must be in (0, 1]");
+  // ORB descriptors are 256 bits: below 0 nothing matches, above 256 is no limit.
+  require(o.transform.matching.max_hamming_distance >= 0 &&
+              o.transform.matching.max_hamming_distance <= 256,
+          fmt::format("max_hamming_distance must be in [0, 256], got {}",
+                      o.transform.matching.max_hamming_distance));
   require(o.transform.min_matches >= 6, "min_matches must be >= 6 (PnP needs a few points)");
   require(o.transform.inlier_distance > 0, "inlier_distance must be > 0 (pixels)");
   require(o.transform.ransac_iterations >= 1, "ransac_iterations must be >= 1");
@@ -70,6 +78,8 @@ void validate(const SlamOptions& o) {
   require(o.rgbdslam.geodesic_depth >= 0, "geodesic_depth must be >= 0");
   require(o.rgbdslam.min_sampled_candidates >= 0, "min_sampled_candidates must be >= 0");
   require(o.rgbdslam.optimizer_skip_step >= 0, "optimizer_skip_step must be >= 0");
+  require(o.rgbdslam.optimizer_convergence >= 0 && std::isfinite(o.rgbdslam.optimizer_convergence),
+          "optimizer_convergence must be a number >= 0");
   require(o.rgbdslam.wifi_long_term_candidates >= -1, "wifi_long_term_candidates must be >= -1");
   require(o.rgbdslam.robust_kernel_chi2 > 0 && std::isfinite(o.rgbdslam.robust_kernel_chi2),
           "robust_kernel_chi2 must be a positive number");
@@ -87,7 +97,8 @@ void validate(const SlamOptions& o) {
           "linear_update_m must be a number >= 0");
   require(o.rtabmap.angular_update_rad >= 0 && std::isfinite(o.rtabmap.angular_update_rad),
           "angular_update_rad must be a number >= 0");
-  require(o.rtabmap.stm_size >= 0, "stm_size must be >= 0");
+  // With no short-term memory the newest node would be in WM at once, a candidate of itself.
+  require(o.rtabmap.stm_size >= 1, "stm_size must be >= 1");
   require(o.rtabmap.rehearsal_similarity >= 0, "rehearsal_similarity must be >= 0");
   require(o.rtabmap.max_features >= 1, "kp_max_features must be >= 1");
   require(o.rtabmap.nndr_ratio > 0 && o.rtabmap.nndr_ratio <= 1, "kp_nndr_ratio must be in (0, 1]");

@@ -155,7 +155,7 @@ void visit_options(V& v, SlamOptions& o) {
   v.number("angular_update_rad", o.rtabmap.angular_update_rad,
            "rtabmap: RGBD/AngularUpdate, least rotation since the last node for a new one (0.1)");
   v.integer("stm_size", o.rtabmap.stm_size,
-            "rtabmap: Mem/STMSize, newest nodes never searched for loop closures (10)");
+            "rtabmap: Mem/STMSize, newest nodes never searched for loop closures, >= 1 (10)");
   v.number("rehearsal_similarity", o.rtabmap.rehearsal_similarity,
            "rtabmap: Mem/RehearsalSimilarity, similarity with the previous node that merges (0.6)");
   v.integer("kp_max_features", o.rtabmap.max_features,

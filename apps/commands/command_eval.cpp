@@ -27,7 +27,7 @@ struct EvalArgs {
   std::string input;
   std::string dataset_dir;
   std::string output;
-  std::string align;
+  std::optional<std::string> align;  // as given: "" is refused, not the default
   std::optional<double> time_offset_s;
   bool scale = false;
   bool no_plots = false;
@@ -68,22 +68,28 @@ std::filesystem::path default_output(const std::filesystem::path& input) {
 void run(const EvalArgs& args) {
   eval::EvalOptions options;
   if (args.scale) options.align = eval::AlignmentMode::kSim3;  // deprecated spelling
-  if (!args.align.empty()) {
-    const std::optional<eval::AlignmentMode> mode = eval::parse_alignment_mode(args.align);
+  if (args.align) {
+    const std::optional<eval::AlignmentMode> mode = eval::parse_alignment_mode(*args.align);
     if (!mode) {
-      throw InvalidInputError("--align '" + args.align + "': expected none, se3 or sim3");
+      throw InvalidInputError("--align '" + *args.align + "': expected none, se3 or sim3");
     }
     if (args.scale && *mode != eval::AlignmentMode::kSim3) {
-      throw InvalidInputError("--scale (= --align sim3) contradicts --align " + args.align);
+      throw InvalidInputError("--scale (= --align sim3) contradicts --align " + *args.align);
     }
     options.align = *mode;
   }
   if (args.time_offset_s) options.time_offset_s = *args.time_offset_s;
   for (const std::string& s : args.settings) {
-    // One place for the offset: a --set after --time-offset won silently, in either order.
+    // One place for the offset and the alignment: a --set after the flag won silently, in
+    // either order.
     if (args.time_offset_s && s.rfind("time_offset_s=", 0) == 0) {
       throw InvalidInputError("--set " + s + ": conflicts with --time-offset " +
                               format_double_exact(*args.time_offset_s) + "; give one of them");
+    }
+    if ((args.align || args.scale) && s.rfind("align=", 0) == 0) {
+      throw InvalidInputError("--set " + s + ": conflicts with " +
+                              (args.align ? "--align " + *args.align : std::string("--scale")) +
+                              "; give one of them");
     }
     eval::set_option(options, s);
   }

@@ -175,7 +175,8 @@ WIFISLAM_COMMAND(paper, 66) {
       "redone. Each twin's rendering is shared by all its runs.");
   app->add_option("-o,--output", args->output,
                   "Paper folder: made if new, continued if `paper` made it")
-      ->required();
+      ->required()
+      ->check(kNonEmptyPath);
   app->add_option("--seeds", args->seeds, "Seeds per twin (its own seed, +1, ...)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));

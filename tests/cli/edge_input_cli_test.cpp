@@ -356,7 +356,8 @@ TEST_F(EdgeInput, AnEmptyOutputPathIsRefusedNamingItsOption) {
   } cases[] = {{"render " + scene + " --pose 1,1,0 -o ''", "--output"},
                {"radiomap " + scene + " -o ''", "--output"},
                {"radiomap " + scene + " -o map.png --csv ''", "--csv"},
-               {"world " + scene + " --plan ''", "--plan"}};
+               {"world " + scene + " --plan ''", "--plan"},
+               {"paper -o ''", "--output"}};
   for (const auto& c : cases) {
     const test::CliResult r = test::run_wifislam(c.args, scratch_, work);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;

@@ -444,6 +444,21 @@ TEST(EvalCommand, AlignNoneAndTimeOffset) {
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("conflicts with --time-offset"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "twice"));
+  // So did the alignment (--set align= won over --align and --scale), and `--align ''` was the
+  // default.
+  for (const std::string& flags :
+       {std::string("--align none --set align=sim3"), std::string("--set align=se3 --scale"),
+        std::string("--align ''")}) {
+    r = run_wifislam("eval " + (dir / "late.txt").string() + " --gt " + run.dataset_dir.string() +
+                         " " + flags + " -o " + (dir / "twice").string(),
+                     dir);
+    EXPECT_EQ(r.exit_code, 2) << flags << ": " << r.err;
+    EXPECT_NE(r.err.find(flags.find("--set") != std::string::npos ? "conflicts with"
+                                                                  : "expected none, se3 or sim3"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "twice"));
+  }
   fs::remove_all(dir);
 }
 
