@@ -77,4 +77,58 @@ std::optional<Timestamp> Timestamp::parse(std::string_view text) {
   return Timestamp{negative ? -total : total};
 }
 
+std::optional<Timestamp> Timestamp::parse_rounded(std::string_view text) {
+  if (const std::optional<Timestamp> exact = parse(text)) return exact;
+  // The number as its digits and where the decimal point falls among them, exponent applied;
+  // then parse() reads the first 9 decimals exactly and the 10th rounds.
+  std::size_t i = 0;
+  bool negative = false;
+  if (!text.empty() && (text[0] == '-' || text[0] == '+')) {
+    negative = text[0] == '-';
+    i = 1;
+  }
+  std::string digits;
+  std::int64_t point = -1;
+  for (; i < text.size() && text[i] != 'e' && text[i] != 'E'; ++i) {
+    if (text[i] == '.') {
+      if (point >= 0) return std::nullopt;
+      point = static_cast<std::int64_t>(digits.size());
+    } else if (text[i] >= '0' && text[i] <= '9') {
+      if (digits.size() >= 64) return std::nullopt;
+      digits += text[i];
+    } else {
+      return std::nullopt;
+    }
+  }
+  if (digits.empty()) return std::nullopt;
+  if (point < 0) point = static_cast<std::int64_t>(digits.size());
+  if (i < text.size()) {
+    int exponent = 0;
+    const char* first = text.data() + i + 1;
+    const char* last = text.data() + text.size();
+    if (first < last && *first == '+') ++first;  // from_chars takes '-' only
+    const auto [end, ec] = std::from_chars(first, last, exponent);
+    if (ec != std::errc() || end != last || first == last) return std::nullopt;
+    if (exponent > 100 || exponent < -100) return std::nullopt;  // far beyond the range anyway
+    point += exponent;
+  }
+  const std::int64_t n = static_cast<std::int64_t>(digits.size());
+  if (point < 0) digits.insert(0, static_cast<std::size_t>(-point), '0'), point = 0;
+  if (point > n) digits.append(static_cast<std::size_t>(point - n), '0');
+  std::string whole = digits.substr(0, static_cast<std::size_t>(point));
+  std::string fraction = digits.substr(static_cast<std::size_t>(point));
+  whole.erase(0, std::min(whole.find_first_not_of('0'), whole.size()));
+  if (whole.empty()) whole = "0";
+  const bool round_up = fraction.size() > 9 && fraction[9] >= '5';
+  fraction.resize(std::min<std::size_t>(fraction.size(), 9));
+  std::optional<Timestamp> t = parse(whole + (fraction.empty() ? "" : "." + fraction));
+  if (!t) return std::nullopt;
+  if (round_up) {
+    if (t->ns == std::numeric_limits<std::int64_t>::max()) return std::nullopt;
+    t->ns += 1;
+  }
+  if (negative) t->ns = -t->ns;
+  return t;
+}
+
 }  // namespace wifislam

@@ -39,6 +39,12 @@ struct Timestamp {
   /// Returns nullopt for anything else (exponents, more than 9 decimals, garbage).
   static std::optional<Timestamp> parse(std::string_view text);
 
+  /// Any decimal number of seconds a TUM tool reads (evaluate_ate.py's float()): parse()'s text
+  /// exactly, and an exponent or more than 9 decimals ("1.700000000033299923e+09", numpy.savetxt's
+  /// default) rounded to the nearest nanosecond, half away from zero. nullopt for garbage, nan,
+  /// inf, or beyond parse()'s range.
+  static std::optional<Timestamp> parse_rounded(std::string_view text);
+
   friend constexpr auto operator<=>(const Timestamp&, const Timestamp&) = default;
 };
 

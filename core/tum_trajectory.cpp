@@ -36,7 +36,8 @@ StampedPose parse_tum_pose_fields(const std::vector<std::string_view>& fields,
         where, "",
         fmt::format("expected 8 fields 'timestamp tx ty tz qx qy qz qw', got {}", fields.size()));
   }
-  const auto time = Timestamp::parse(fields[0]);
+  // As the TUM tools read a stamp (float()): numpy.savetxt writes "1.7e+09" by default.
+  const auto time = Timestamp::parse_rounded(fields[0]);
   if (!time) throw ParseError(where, "", fmt::format("bad timestamp '{}'", fields[0]));
   double v[7];
   for (int i = 0; i < 7; ++i) {

@@ -19,6 +19,27 @@ TEST(Timestamp, RejectsWhatIsNotADecimalTime) {
   }
 }
 
+// What numpy.savetxt writes by default ("%.18e") and the TUM tools read with float(): an
+// exponent, and more decimals than nanoseconds. Rounded to the nearest nanosecond; exact text
+// stays exact.
+TEST(Timestamp, ParseRoundedReadsWhatTheTumToolsRead) {
+  EXPECT_EQ(Timestamp::parse_rounded("1.700000000000000000e+09")->ns, 1'700'000'000'000'000'000LL);
+  EXPECT_EQ(Timestamp::parse_rounded("1.700000000033299923e+09")->ns, 1'700'000'000'033'299'923LL);
+  EXPECT_EQ(Timestamp::parse_rounded("1.7000000000332999235e9")->ns, 1'700'000'000'033'299'924LL);
+  EXPECT_EQ(Timestamp::parse_rounded("1305031102.175304")->ns, 1305031102175304000LL);
+  EXPECT_EQ(Timestamp::parse_rounded("0.0000000014")->ns, 1);
+  EXPECT_EQ(Timestamp::parse_rounded("0.0000000015")->ns, 2);
+  EXPECT_EQ(Timestamp::parse_rounded("-1.5e-3")->ns, -1'500'000);
+  EXPECT_EQ(Timestamp::parse_rounded("-0.0000000015")->ns, -2) << "half away from zero";
+  EXPECT_EQ(Timestamp::parse_rounded("25E-1")->ns, 2'500'000'000LL);
+  EXPECT_EQ(Timestamp::parse_rounded("1e-300").has_value(), false) << "exponent beyond 100";
+  EXPECT_EQ(Timestamp::parse_rounded("1e-50")->ns, 0);
+  for (const char* bad : {"", ".", "e9", "1e", "1e+", "1.5e9.5", "nan", "inf", "1e10", "0x10",
+                          "1..2", "1e9 ", "--1"}) {
+    EXPECT_FALSE(Timestamp::parse_rounded(bad).has_value()) << bad;
+  }
+}
+
 // Issue 18 (found with the Wi-Fi times): ten digits of seconds overflowed 64-bit nanoseconds
 // and wrapped to a time long ago.
 TEST(Timestamp, TimesBeyondSixtyFourBitNanosecondsAreRefused) {

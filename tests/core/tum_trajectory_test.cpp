@@ -86,6 +86,19 @@ TEST_F(TumTrajectoryTest, ReadsTumBenchmarkStyleFilesWithComments) {
   EXPECT_DOUBLE_EQ(t[1].rotation.w(), -0.3980);
 }
 
+// numpy.savetxt's default ("%.18e"), which evaluate_ate.py and evo read: it was refused as a bad
+// timestamp.
+TEST_F(TumTrajectoryTest, ReadsStampsInScientificNotationAsTheTumToolsDo) {
+  const auto path = write("np.txt",
+                          "1.305031098665900000e+09 1.356300000000000000e+00 0 0 0 0 0 1\n"
+                          "1.305031098675799942e+09 1.354300000000000000e+00 0 0 0 0 0 1\n");
+  const Trajectory t = read_tum_trajectory(path);
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t[0].time.ns, 1305031098665900000LL);
+  EXPECT_EQ(t[1].time.ns, 1305031098675799942LL);
+  EXPECT_DOUBLE_EQ(t[1].translation_m.x(), 1.3543);
+}
+
 void expect_error_at(const std::string& path, const std::string& where, const std::string& what) {
   try {
     read_tum_trajectory(path);
@@ -108,7 +121,7 @@ TEST_F(TumTrajectoryTest, RejectsMalformedLinesWithFileAndLine) {
   expect_error_at(p, p + ":1", "quaternion has zero length");
   p = write("order.txt", "2.0 0 0 0 0 0 0 1\n1.0 0 0 0 0 0 0 1\n");
   expect_error_at(p, p + ":2", "not later than the previous line");
-  p = write("stamp.txt", "1.0e5 0 0 0 0 0 0 1\n");
+  p = write("stamp.txt", "1.0x5 0 0 0 0 0 0 1\n");
   expect_error_at(p, p + ":1", "bad timestamp");
 }
 
