@@ -45,6 +45,14 @@ inline const CLI::Validator kNonEmptyPath(
     },
     "PATH");
 
+/// An input path that is given: an empty one was reported as ": not found" and the like, naming
+/// no file (and `localize --vocabulary ''` used the shipped vocabulary).
+inline const CLI::Validator kNonEmptyInput(
+    [](std::string& text) -> std::string {
+      return text.empty() ? "the path is empty; give the file or folder to read" : std::string();
+    },
+    "PATH");
+
 inline const CLI::Validator kPositiveFinite(
     [](std::string& text) -> std::string {
       double value = 0.0;

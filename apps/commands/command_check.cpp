@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
@@ -81,7 +82,7 @@ WIFISLAM_COMMAND(check, 55) {
       "Read a whole dataset (wifislam or plain TUM RGB-D) as SLAM would: verify checksums,\n"
       "decode every image, read the IMU files as the exports do, and print what it holds.\n"
       "Exits non-zero on the first problem.");
-  app->add_option("dataset", args->folder, "Dataset folder")->required();
+  app->add_option("dataset", args->folder, "Dataset folder")->required()->check(kNonEmptyInput);
   app->add_flag("--no-verify", args->no_verify, "Do not compare files with manifest.json");
   app->add_flag("--no-images", args->no_images, "Do not decode images (lists and Wi-Fi only)");
   app->callback([args] { run_check(*args); });

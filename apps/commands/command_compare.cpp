@@ -116,7 +116,8 @@ WIFISLAM_COMMAND(compare, 65) {
       "tables (rows: scenes; columns: setting x {Vanilla, WiFi}): trajectory error, false\n"
       "positive %, false negative %, loop-closure time, candidate comparisons, Wi-Fi overhead.");
   // No CLI::ExistingFile: the scene loader says what is wrong with a path, alike in every command.
-  app->add_option("scenes", args->scenes, "Scene files (YAML); none with --preset");
+  app->add_option("scenes", args->scenes, "Scene files (YAML); none with --preset")
+      ->check(kNonEmptyInput);
   app->add_option(
       "--preset", args->preset,
       "paper-rgbdslam: the paper's RGBD-SLAM experiment on the built-in c_hall twin\n"

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/text_lines.hpp"
@@ -185,11 +186,13 @@ WIFISLAM_COMMAND(eval, 70) {
   app->add_option("run", args->input,
                   "Run folder written by `wifislam slam` (only trajectory.txt is required), or a "
                   "TUM trajectory file")
-      ->required();
+      ->required()
+      ->check(kNonEmptyInput);
   app->add_option("--gt", args->dataset_dir,
                   "Dataset folder the run was made from (groundtruth.txt, depth images, "
                   "calibration.yaml, scene.yaml)")
-      ->required();
+      ->required()
+      ->check(kNonEmptyInput);
   app->add_option("-o,--output", args->output,
                   "Folder to write (default: <run>/eval, or <file>_eval beside a trajectory "
                   "file, which is replaced if it exists; any other existing folder only with "

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "core/output_folder.hpp"
 #include "core/stop_signal.hpp"
 #include "interop/peer_export.hpp"
@@ -101,7 +102,7 @@ WIFISLAM_COMMAND(export, 58) {
       "dataset. Exit 2 for a dataset without images, frames sharing a stamp, (rtabmap, rosbag) a\n"
       "stamp that is not positive, (euroc) a dataset without an IMU, (kapture, rosbag) one\n"
       "without ground truth.");
-  app->add_option("dataset", args->dataset, "Dataset folder")->required();
+  app->add_option("dataset", args->dataset, "Dataset folder")->required()->check(kNonEmptyInput);
   app->add_option("--for", args->peer, "The peer whose dataset tool reads the export")
       ->required()
       ->check(CLI::IsMember(interop::peer_names()));

@@ -107,7 +107,8 @@ WIFISLAM_COMMAND(generate, 50) {
       "The folder is written as <dir>.partial and renamed when complete; the output is\n"
       "byte-identical for the same scene, seed and options whatever --threads is.");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required();  // the scene loader says what is wrong with the path
+      ->required()
+      ->check(kNonEmptyInput);  // the scene loader says what is wrong with the path
   app->add_option("-o,--output", args->output, "Dataset folder to create")->required();
   app->add_option("--seed", args->seed, "Replace the scene's seed")->check(kSeedValidator);
   app->add_option("--fps", args->fps, "Camera frame rate (default: the scene's, 30)")

@@ -168,7 +168,8 @@ WIFISLAM_COMMAND(import, 15) {
       "twice. docs/real_buildings/README.md has details.");
   app->add_option("plan", args->plan_path,
                   "Plan file (GeoJSON or .osm; WRLD: a level's GeoJSON; IMDF: its folder)")
-      ->required();
+      ->required()
+      ->check(kNonEmptyInput);
   app->add_option("-o,--output", args->output_path, "Scene file to write (YAML)")->required();
   app->add_option("--level", args->level,
                   "Level to import (OSM level=* value; WRLD level name from main.json; IMDF level "

@@ -244,7 +244,9 @@ WIFISLAM_COMMAND(localize, 67) {
       "protocols are simulated (pauses for ours, a scan every 10 s while moving for Wi-Fi\n"
       "FAB-MAP); a dataset's wifi.csv serves both. Writes the error CDF (cdf.png, cdf.csv), the\n"
       "shares within 1/2/4/5 m, per-query matches and a precision-recall table");
-  app->add_option("input", args->input, "Scene file (YAML) or dataset folder")->required();
+  app->add_option("input", args->input, "Scene file (YAML) or dataset folder")
+      ->required()
+      ->check(kNonEmptyInput);
   app->add_option("-o,--output", args->output, "Output folder")->required();
   app->add_option("--method", args->methods, "Methods, comma-separated")->capture_default_str();
   app->add_option("--image-interval", args->image_interval_s, "Seconds between images")
@@ -267,15 +269,17 @@ WIFISLAM_COMMAND(localize, 67) {
       "Scenes: the route's nodes, comma-separated, replacing the scene's (e.g. two laps\n"
       "A,B,C,D,A,B,C,D,A so that the queries revisit the map)");
   app->add_option(
-      "--other-floor", args->other_floor,
-      "Scene or dataset of the same building (scene key levels:) with its route on another\n"
-      "level: its images and scans join the map, so a query can choose a place on the wrong\n"
-      "floor (summary.md's last column)");
+         "--other-floor", args->other_floor,
+         "Scene or dataset of the same building (scene key levels:) with its route on another\n"
+         "level: its images and scans join the map, so a query can choose a place on the wrong\n"
+         "floor (summary.md's last column)")
+      ->check(kNonEmptyInput);
   app->add_option(
-      "--queries", args->queries,
-      "Scene or dataset of another run of the same route (another session, device or day):\n"
-      "its images are the queries and the whole input is the map, in place of --map-share's\n"
-      "split of one run");
+         "--queries", args->queries,
+         "Scene or dataset of another run of the same route (another session, device or day):\n"
+         "its images are the queries and the whole input is the map, in place of --map-share's\n"
+         "split of one run")
+      ->check(kNonEmptyInput);
   app->add_option("--queries-session", args->queries_session,
                   "Scenes: the queries are the input scene's session K (generate --session): the\n"
                   "same building with its access-point changes by then, the robot's pauses,\n"
@@ -284,12 +288,15 @@ WIFISLAM_COMMAND(localize, 67) {
       ->check(CLI::Range(std::uint64_t{0}, std::uint64_t{1000000}));
   app->add_option("--queries-device", args->queries_device,
                   "With --queries-session: the Wi-Fi device of the query run, a shipped name or\n"
-                  "a device file (scenes/README.md, Receiver devices)");
+                  "a device file (scenes/README.md, Receiver devices)")
+      ->check(kNonEmptyInput);
   app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
   app->add_flag("--no-verify", args->no_verify, "Datasets: do not check their SHA-256 sums");
-  app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)");
+  app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)")
+      ->check(kNonEmptyInput);
   app->add_option("--training", args->training,
-                  "FAB-MAP training file for --vocabulary (wifislam vocab fabmap)");
+                  "FAB-MAP training file for --vocabulary (wifislam vocab fabmap)")
+      ->check(kNonEmptyInput);
   app->add_option("--seed", args->seed, "Scenes: replaces the scene's seed")
       ->check(cli::kSeedValidator);
   app->add_option("--fabmap-seed", args->fabmap_seed, "Seed of FAB-MAP's new-place sample")

@@ -147,7 +147,7 @@ void add_calibrate_command(CLI::App* parent) {
       "Writes radio: and access_points: scene blocks (-o) and prints residuals per AP before and\n"
       "after. Survey CSV: x_m,y_m[,z_m],ap_id,rss_dbm[,device] (one row per AP heard per scan;\n"
       "columns in any order; device names the receiver: one RSS offset is fitted per device).");
-  app->add_option("survey", args->survey_path, "Survey CSV")->required();
+  app->add_option("survey", args->survey_path, "Survey CSV")->required()->check(kNonEmptyInput);
   app->add_option("--scene", args->scene_path, "Scene file (YAML) of the surveyed building")
       ->required();
   app->add_option("--aps", args->aps_path,

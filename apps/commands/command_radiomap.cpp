@@ -62,7 +62,8 @@ WIFISLAM_COMMAND(radiomap, 40) {
       "Draw a scene's mean RSSI (ITU-R P.1238 + walls + shadowing) as a heat map over its\n"
       "floor plan, for one access point (--ap ID) or the strongest at every cell (--strongest).");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required();  // the scene loader says what is wrong with the path
+      ->required()
+      ->check(kNonEmptyInput);  // the scene loader says what is wrong with the path
   auto* ap = app->add_option("--ap", args->ap_id, "Access point id (0 .. count-1)");
   auto* strongest =
       app->add_flag("--strongest", args->strongest, "Strongest access point at every cell");

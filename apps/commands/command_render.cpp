@@ -129,7 +129,8 @@ WIFISLAM_COMMAND(render, 30) {
   CLI::App* app = parent.add_subcommand(
       "render", "Render one RGB-D view of a scene (colour, TUM depth PNG, false-colour depth).");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required();  // the scene loader says what is wrong with the path
+      ->required()
+      ->check(kNonEmptyInput);  // the scene loader says what is wrong with the path
   app->add_option("--pose", args->pose,
                   "Camera position and heading: x,y,yaw (metres, metres, degrees counter-"
                   "clockwise from +x)")

@@ -73,7 +73,9 @@ WIFISLAM_COMMAND(slam, 60) {
       "a scene file, and write the run folder (trajectory.txt, keyframes.txt, graph.json,\n"
       "loop_closures.csv, timing.json with per-role comparison counters, run.json, and\n"
       "wifi_clusters.csv with --wifi; layout in core/run_format.hpp).");
-  app->add_option("input", args->input, "Dataset folder or scene file (YAML)")->required();
+  app->add_option("input", args->input, "Dataset folder or scene file (YAML)")
+      ->required()
+      ->check(kNonEmptyInput);
   app->add_option("--frontend", args->frontend,
                   "SLAM front end: memory, loop-closure candidates and acceptance (" +
                       slam::frontend::front_end_name_list() +

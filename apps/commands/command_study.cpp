@@ -85,7 +85,7 @@ void plot_command(const PlotArgs& args) {
 void add_cases_command(CLI::App* app) {
   auto file = std::make_shared<std::string>();
   CLI::App* cases = app->add_subcommand("cases", "List a study file's cases: id and axis values");
-  cases->add_option("file", *file, "Study file (YAML)")->required();
+  cases->add_option("file", *file, "Study file (YAML)")->required()->check(kNonEmptyInput);
   cases->callback([file] {
     const study::StudyFile s = study::load_study_file(*file);
     // Every case checked before the table: a refused file prints no table (exit 2, stdout empty).
@@ -107,7 +107,7 @@ void add_run_command(CLI::App* app) {
   auto args = std::make_shared<RunArgs>();
   CLI::App* run = app->add_subcommand(
       "run", "Run a study's cases (or one shard's) into an SQLite database; a rerun resumes");
-  run->add_option("file", args->file, "Study file (YAML)")->required();
+  run->add_option("file", args->file, "Study file (YAML)")->required()->check(kNonEmptyInput);
   run->add_option("-o,--output", args->output,
                   "Database file. An existing database of the same study is resumed (its\n"
                   "finished cases are skipped): the one exception to replacing only with --force")
@@ -137,7 +137,7 @@ void add_merge_command(CLI::App* app) {
   auto force = std::make_shared<bool>(false);
   CLI::App* merge =
       app->add_subcommand("merge", "Union shard databases of one study into one database");
-  merge->add_option("shards", *inputs, "Shard databases")->required();
+  merge->add_option("shards", *inputs, "Shard databases")->required()->check(kNonEmptyInput);
   merge->add_option("-o,--output", *output, "Merged database (a new file)")->required();
   merge->add_flag("--force", *force, "Replace an existing study database");
   merge->callback([inputs, output, force] {
@@ -154,7 +154,9 @@ void add_plot_command(CLI::App* app) {
       "plot", "Draw a study database's curves (PNG and SVG, one figure per metric)");
   // No CLI::ExistingFile: a missing database is an I/O error (exit 3) named by the reader, as
   // every command's missing input is.
-  plot->add_option("database", args->database, "Study database (study run or merge)")->required();
+  plot->add_option("database", args->database, "Study database (study run or merge)")
+      ->required()
+      ->check(kNonEmptyInput);
   plot->add_option("-o,--output", args->output, "Folder for the figures and curves.csv")
       ->required();
   plot->add_flag("--force", args->force, "Replace an existing output folder of this tool");

@@ -159,7 +159,8 @@ WIFISLAM_COMMAND(vocab, 75) {
         "evaluation sees its own images in training; a vocabulary trained on synthetic frames is\n"
         "not meant for real images (train one on real frames for those)");
     train_app->add_option("inputs", args->inputs, "Scene files (YAML) and dataset / TUM folders")
-        ->required();
+        ->required()
+        ->check(kNonEmptyInput);
     train_app->add_option("-o,--output", args->output, "Vocabulary file (binary)")->required();
     train_app->add_option("--branching", args->branching, "k: children per node")
         ->capture_default_str()
@@ -199,10 +200,12 @@ WIFISLAM_COMMAND(vocab, 75) {
         "the word observations of frames of scenes you will not evaluate on, and those\n"
         "observations for FAB-MAP's new-place term, in one text file. Deterministic");
     fabmap_app->add_option("inputs", args->inputs, "Scene files (YAML) and dataset / TUM folders")
-        ->required();
+        ->required()
+        ->check(kNonEmptyInput);
     fabmap_app->add_option("-o,--output", args->output, "Training file (text)")->required();
-    fabmap_app->add_option("--vocabulary", *vocabulary,
-                           "Vocabulary file (default: the shipped one)");
+    fabmap_app
+        ->add_option("--vocabulary", *vocabulary, "Vocabulary file (default: the shipped one)")
+        ->check(kNonEmptyInput);
     fabmap_app->add_option("--fps", args->fps, "Frames per second rendered from a scene")
         ->capture_default_str()
         ->check(finite_range(0.01, 120.0));
@@ -219,7 +222,7 @@ WIFISLAM_COMMAND(vocab, 75) {
   {
     auto file = std::make_shared<std::string>();
     CLI::App* info_app = app->add_subcommand("info", "What a vocabulary file holds");
-    info_app->add_option("file", *file, "Vocabulary file")->required();
+    info_app->add_option("file", *file, "Vocabulary file")->required()->check(kNonEmptyInput);
     info_app->callback([file] { info(*file); });
   }
 }

@@ -69,7 +69,8 @@ WIFISLAM_COMMAND(world, 20) {
   CLI::App* app = parent.add_subcommand(
       "world", "Generate a scene's world (floor plan, mesh, route) and print a summary.");
   app->add_option("scene", args->scene_path, "Scene file (YAML)")
-      ->required();  // the scene loader says what is wrong with the path
+      ->required()
+      ->check(kNonEmptyInput);  // the scene loader says what is wrong with the path
   app->add_option("--plan", args->plan_path,
                   "Draw the floor plan into this file (PNG, or SVG when it ends in .svg)")
       ->check(kNonEmptyPath);

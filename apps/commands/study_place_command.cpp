@@ -75,7 +75,8 @@ void add_study_place_command(CLI::App* app) {
       "(rooms, corridors, halls) that best tells places along the route apart, next to the same\n"
       "numbers of APs placed at random among the same candidates (radio level, no rendering)");
   place->add_option("scene", args->scene, "Scene file (YAML): the plan, route and radio")
-      ->required();
+      ->required()
+      ->check(kNonEmptyInput);
   place->add_option("--budget", args->budget, "Access points to place")
       ->required()
       ->check(CLI::Range(1, study::kMaxPlacementCandidates));

@@ -65,7 +65,7 @@ void add_study_slurm_command(CLI::App* app) {
       "slurm",
       "Write a Slurm job array (one shard per task) and a dependent merge job for a study;\n"
       "--submit also submits both with sbatch");
-  slurm->add_option("file", args->file, "Study file (YAML)")->required();
+  slurm->add_option("file", args->file, "Study file (YAML)")->required()->check(kNonEmptyInput);
   slurm->add_option("--tasks", args->tasks, "Array tasks = shards")
       ->required()
       ->check(CLI::Range(1, 100000));

@@ -366,5 +366,31 @@ TEST_F(EdgeInput, AnEmptyOutputPathIsRefusedNamingItsOption) {
   }
 }
 
+// An input given as '' was reported as ": not found", ": cannot open for reading" and the like
+// (exit 3, naming no file), and `localize --vocabulary ''` or `generate --device ''` silently used
+// the default. Each is refused naming its option, before anything is read or written.
+TEST_F(EdgeInput, AnEmptyInputPathIsRefusedNamingItsOption) {
+  const fs::path work = scratch_ / "work";
+  fs::create_directories(work);
+  const std::string scene = std::string(WIFISLAM_SCENES_DIR) + "/a_hall.yaml";
+  const struct {
+    std::string args, message;
+  } cases[] = {{"generate '' -o ds", "scene: the path is empty"},
+               {"generate " + scene + " --device '' -o ds", "--device: empty"},
+               {"slam '' -o run", "input: the path is empty"},
+               {"eval '' --gt ds", "run: the path is empty"},
+               {"eval run --gt ''", "--gt: the path is empty"},
+               {"check ''", "dataset: the path is empty"},
+               {"compare '' -o c", "scenes: the path is empty"},
+               {"localize " + scene + " --vocabulary '' -o loc", "--vocabulary: the path is empty"},
+               {"study run '' -o s.sqlite", "file: the path is empty"}};
+  for (const auto& c : cases) {
+    const test::CliResult r = test::run_wifislam(c.args, scratch_, work);
+    EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::is_empty(work)) << c.args;
+  }
+}
+
 }  // namespace
 }  // namespace wifislam
