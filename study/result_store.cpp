@@ -293,7 +293,9 @@ ResultStore::ResultStore(const fs::path& path, const StudyFile& study,
              {"study_file_hash", mine.study_file_hash},
              {"software_version", mine.software_version},
              {"level", mine.level},
-             {"axes", axes.dump()}}) {
+             {"axes", axes.dump()},
+             // Every case of the study, whichever shard this is: a merge can tell it is short.
+             {"cases", std::to_string(study.cases.size())}}) {
       Statement row(db_, "INSERT INTO study (key, value) VALUES (?, ?)");
       row.bind(1, k);
       row.bind(2, v);
@@ -383,6 +385,28 @@ std::optional<StudyIdentity> ResultStore::read_identity(const fs::path& path) {
   }
   sqlite3_close(db);
   return id;
+}
+
+CaseCount count_cases(const fs::path& path) {
+  CaseCount count;
+  sqlite3* db = open_database(path, SQLITE_OPEN_READONLY);
+  try {
+    Statement finished(db, "SELECT count(DISTINCT case_id) FROM results");
+    finished.step();
+    count.with_rows = finished.int64(0);
+    Statement cases(db, "SELECT value FROM study WHERE key = 'cases'");
+    if (cases.step()) {
+      const std::string text = cases.text(0);
+      std::int64_t n = 0;
+      const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+      if (ec == std::errc() && end == text.data() + text.size()) count.in_study = n;
+    }
+  } catch (...) {
+    sqlite3_close(db);
+    throw;
+  }
+  sqlite3_close(db);
+  return count;
 }
 
 std::int64_t merge_study_databases(const std::vector<fs::path>& inputs, const fs::path& out) {

@@ -96,6 +96,14 @@ class ResultStore {
 std::int64_t merge_study_databases(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out);
 
+/// How many of a study database's cases have rows, and how many the study has (recorded since
+/// databases hold it; nullopt in older ones).
+struct CaseCount {
+  std::int64_t with_rows = 0;
+  std::optional<std::int64_t> in_study;
+};
+CaseCount count_cases(const std::filesystem::path& path);
+
 /// The `results` table as stored: column names and typed values, ordered by case_index, variant.
 struct ResultTable {
   StudyIdentity identity;

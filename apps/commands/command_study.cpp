@@ -145,6 +145,15 @@ void add_merge_command(CLI::App* app) {
     study::prepare_merged_database(*output, *force, paths);
     const std::int64_t rows = study::merge_study_databases(paths, *output);
     fmt::print("merged {} shard databases: {} rows -> {}\n", paths.size(), rows, *output);
+    // Merging the shards there are so far is allowed (a look at partial results), but not
+    // without a word: a shard left out made a short database that read as the whole study.
+    const study::CaseCount cases = study::count_cases(*output);
+    if (cases.in_study && cases.with_rows < *cases.in_study) {
+      fmt::print(stderr,
+                 "study merge: warning: {} of the study's {} cases have rows; the rest are in "
+                 "shards not given or not yet finished\n",
+                 cases.with_rows, *cases.in_study);
+    }
   });
 }
 

@@ -137,6 +137,22 @@ TEST(StudyRun, ShardsMergeToTheUnshardedRunAndForeignDatabasesAreRefused) {
   }
   EXPECT_EQ(merge_study_databases(shards, dir / "merged.sqlite"), 6);
   EXPECT_EQ(dump_results(dir / "merged.sqlite"), dump_results(whole.database));
+  EXPECT_EQ(count_cases(dir / "merged.sqlite").with_rows, 6);
+  EXPECT_EQ(count_cases(dir / "merged.sqlite").in_study, 6);
+  // Shards left out: the merge is made (a look at partial results) and says it is short.
+  const auto short_merge =
+      test::run_wifislam("study merge " + shards[0].string() + " " + shards[2].string() + " -o " +
+                             (dir / "short.sqlite").string(),
+                         dir);
+  EXPECT_EQ(short_merge.exit_code, 0) << short_merge.err;
+  EXPECT_NE(short_merge.err.find("warning: 3 of the study's 6 cases have rows"), std::string::npos)
+      << short_merge.err;
+  const auto whole_merge = test::run_wifislam(
+      "study merge " + shards[0].string() + " " + shards[1].string() + " " + shards[2].string() +
+          " " + shards[3].string() + " -o " + (dir / "whole_merge.sqlite").string(),
+      dir);
+  EXPECT_EQ(whole_merge.exit_code, 0) << whole_merge.err;
+  EXPECT_EQ(whole_merge.err.find("warning"), std::string::npos) << whole_merge.err;
 
   // A shard of another study file (one value more) is refused by merge and by run.
   const fs::path other_file =
