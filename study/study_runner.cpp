@@ -65,11 +65,17 @@ sim::scene::Scene case_scene(const StudyFile& study, const StudyCase& c) {
   const std::string source = fmt::format("{} as case {} of {} ({})", study.scene_path.string(),
                                          c.id, study.path.string(), case_label(study, c));
   try {
-    for (const auto& [key, value] : study.scene_set)
-      sim::scene::set_scene_key(root, key, YAML::Load(value));
-    for (std::size_t a = 0; a < study.axes.size(); ++a) {
-      if (study.axes[a].kind != AxisKind::kSceneKey) continue;
-      sim::scene::set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
+    try {
+      for (const auto& [key, value] : study.scene_set)
+        sim::scene::set_scene_key(root, key, YAML::Load(value));
+      for (std::size_t a = 0; a < study.axes.size(); ++a) {
+        if (study.axes[a].kind != AxisKind::kSceneKey) continue;
+        sim::scene::set_scene_key(root, study.axes[a].key, YAML::Load(c.values[a]));
+      }
+    } catch (const InvalidInputError& e) {
+      // A key the scene has no place for ("corridors[9]" of four): named without the study file.
+      throw ParseError(study.path.string(), "case " + c.id,
+                       fmt::format("{}: {}", case_label(study, c), e.what()));
     }
     YAML::Emitter out;
     out << root;

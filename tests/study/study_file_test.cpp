@@ -164,6 +164,17 @@ TEST(StudyFile, ACaseWhoseValueMakesNoValidSceneIsRefusedBeforeAnyWork) {
   const StudyFile bad_option =
       load_study_yaml(slam_study_yaml("  slam.min_matches: [2]\n"), "s.yaml");
   EXPECT_THROW(check_cases(bad_option), ParseError);
+  // An element the scene does not have: the message named neither the study file nor the case.
+  const StudyFile beyond =
+      load_study_yaml(study_yaml("  corridors[99].material: [concrete]\n"), "s.yaml");
+  try {
+    check_cases(beyond);
+    FAIL() << "corridors[99] was accepted";
+  } catch (const ParseError& e) {
+    EXPECT_EQ(e.where(), "s.yaml");
+    EXPECT_NE(std::string(e.what()).find(beyond.cases[0].id), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("corridors[99]"), std::string::npos) << e.what();
+  }
 }
 
 TEST(StudyFile, SetGivesEveryCaseSceneKeysBeforeTheAxes) {
