@@ -66,6 +66,8 @@ StopOnSignal::~StopOnSignal() {
   if (signal != 0 && std::uncaught_exceptions() == 0) std::raise(signal);
 }
 
+int stop_requested_signal() { return g_stop_signal.load(); }
+
 void throw_if_stop_requested() {
   if (const int signal = g_stop_signal.load()) throw StoppedBySignal(signal);
 }

@@ -41,4 +41,8 @@ class StopOnSignal {
 /// Throws StoppedBySignal when one of the signals arrived under a StopOnSignal guard.
 void throw_if_stop_requested();
 
+/// The signal that asked to stop under a StopOnSignal guard, else 0: for a wait that cannot throw
+/// in the middle (interop's process runner passes it on to the program it waits for).
+int stop_requested_signal();
+
 }  // namespace wifislam

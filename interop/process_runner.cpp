@@ -20,6 +20,7 @@
 
 #include <fmt/format.h>
 
+#include "core/stop_signal.hpp"
 #include "core/wall_clock.hpp"
 
 extern char** environ;
@@ -313,13 +314,24 @@ ProcessResult run_process(const ProcessRequest& request) {
   }
   int status = 0;
   rusage usage{};
-  while (::wait4(supervisor, &status, 0, &usage) < 0) {
-    if (errno != EINTR) {
+  // Polled rather than blocking: under a command's StopOnSignal guard (core/stop_signal.hpp) a
+  // SIGTERM no longer ends wifislam at once, which is what told the supervisor to stop the
+  // program; the stop is passed on to it here instead, and it reports the run as stopped.
+  bool stop_passed_on = false;
+  for (;;) {
+    const pid_t done = ::wait4(supervisor, &status, WNOHANG, &usage);
+    if (done == supervisor) break;
+    if (done < 0 && errno != EINTR) {
       result.status = ProcessResult::Status::kLost;
       result.error = std::string("wait4: ") + std::strerror(errno);
       close_all();
       return result;
     }
+    if (!stop_passed_on && stop_requested_signal() != 0) {
+      ::kill(supervisor, SIGTERM);
+      stop_passed_on = true;
+    }
+    pause_ms(10);
   }
   Report report;
   const bool reported = ::read(report_pipe[0], &report, sizeof report) == sizeof report;

@@ -13,6 +13,7 @@
 #include "core/csv_field.hpp"
 #include "core/dataset_recording.hpp"
 #include "core/error.hpp"
+#include "core/stop_signal.hpp"
 #include "core/worker_pool.hpp"
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
@@ -441,6 +442,9 @@ void generate_and_stream(std::vector<RunJob>& jobs, std::size_t first,
   generate.camera = options.dataset_colour || any_external
                         ? sim::generate::CameraOutput::kColourAndDepth
                         : sim::generate::CameraOutput::kDepthOnly;
+  // Ctrl-C under the command's StopOnSignal guard stops the generation at its next frame (its
+  // runs stop at their next event); a no-op without a guard.
+  generate.on_progress = [](const sim::generate::GenerateProgress&) { throw_if_stop_requested(); };
   const sim::generate::GenerateSummary g =
       generate_with_runs(any.site, out_dir / any.dataset, generate, runs, options.jobs);
   progress(fmt::format("generated {} ({} frames, {} Wi-Fi scans, {:.0f} s){}", any.dataset.string(),
@@ -545,6 +549,7 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
 void run_job(const RunJob& job, const ComparisonOptions& options,
              const std::filesystem::path& out_dir, const FinalPaths& finals, ComparisonCase& c,
              const std::function<void(const std::string&)>& progress) {
+  throw_if_stop_requested();
   if (interop::is_external_frontend(job.slam.frontend)) {
     run_external_job(job, options, out_dir, finals, c, progress);
     return;

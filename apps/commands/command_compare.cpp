@@ -13,6 +13,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "eval/eval_options.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
@@ -93,6 +94,9 @@ void run(CompareArgs args, const CLI::App& app) {
       fmt::print(stderr, "compare: {}\n", line);
     };
   }
+  // Ctrl-C or SIGTERM stops the datasets and runs at their next frame and removes the unfinished
+  // folder (a folder being replaced stays as it was); declared first, so it goes last.
+  const StopOnSignal stop_on_signal;
   AtomicDirectory out(args.output, replace);
   const study::ComparisonResult result =
       study::run_comparison(scenes, options, out.staging_path(), out.final_paths());

@@ -11,6 +11,7 @@
 #include "apps/demo_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "sim/site/site_pictures.hpp"
 #include "study/comparison_study.hpp"
@@ -47,6 +48,9 @@ void run_demo(const DemoArgs& args) {
       args.scene_path.empty()
           ? sim::scene::load_scene_yaml(cli::kDemoSceneYaml, "<embedded demo scene>")
           : sim::scene::load_scene_file(args.scene_path);
+  // Ctrl-C or SIGTERM stops the datasets and runs at their next frame and removes the unfinished
+  // folder (a folder being replaced stays as it was); declared first, so it goes last.
+  const StopOnSignal stop_on_signal;
   AtomicDirectory out(args.output_dir, replace);
 
   // rgbdslam, one seed, min_matches 10: the low end of the paper's sweep, where vanilla RGBD-SLAM

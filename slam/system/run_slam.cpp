@@ -1,7 +1,9 @@
 #include "slam/system/run_slam.hpp"
-#include "core/wall_clock.hpp"
 
 #include <chrono>
+
+#include "core/stop_signal.hpp"
+#include "core/wall_clock.hpp"
 
 namespace wifislam::slam::system {
 
@@ -18,6 +20,9 @@ std::unique_ptr<SlamSystem> run_slam(SensorStream& stream, const SlamOptions& op
   system->use_feature_store(features);
   std::int64_t frames = 0;
   while (std::optional<SensorEvent> event = stream.next()) {
+    // Under a command's StopOnSignal guard (compare, demo), Ctrl-C stops the run at its next
+    // event; without one this is a no-op.
+    throw_if_stop_requested();
     system->process(*event);
     if (std::holds_alternative<RgbdFrame>(*event)) {
       ++frames;
