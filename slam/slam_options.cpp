@@ -1,8 +1,10 @@
 #include "slam/slam_options.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "core/error.hpp"
 #include "core/option_table_json.hpp"
@@ -142,5 +144,33 @@ nlohmann::json to_json(const SlamOptions& options) {
 }
 
 std::string option_reference() { return options::reference<SlamOptions>(); }
+
+std::string option_front_end(const std::string& key) {
+  for (const auto& [k, help] : options::option_help<SlamOptions>()) {
+    if (k != key) continue;
+    for (const char* frontend : {"rgbdslam", "rtabmap", "orbslam"}) {
+      if (help.rfind(std::string(frontend) + ": ", 0) == 0) return frontend;
+    }
+    return {};
+  }
+  return {};
+}
+
+std::vector<std::string> unread_option_warnings(const std::vector<std::string>& keys,
+                                                const std::vector<std::string>& frontends) {
+  std::vector<std::string> out;
+  for (const std::string& f : frontends)
+    if (f.rfind("external:", 0) == 0) return out;
+  for (const std::string& key : keys) {
+    const std::string owner = option_front_end(key);
+    if (owner.empty() || std::find(frontends.begin(), frontends.end(), owner) != frontends.end())
+      continue;
+    out.push_back(fmt::format(
+        "{} is an option of the {} front end; {} it, so it changes nothing", key, owner,
+        frontends.size() == 1 ? frontends.front() + " does not read"
+                              : fmt::format("none of {} reads", fmt::join(frontends, ", "))));
+  }
+  return out;
+}
 
 }  // namespace wifislam::slam

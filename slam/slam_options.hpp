@@ -253,4 +253,14 @@ nlohmann::json to_json(const SlamOptions& options);
 /// `wifislam slam --help` prints).
 std::string option_reference();
 
+/// The front end option `key` is for ("orbslam" for vocabulary: its help reads "orbslam: ..."),
+/// or empty for an option every front end reads.
+std::string option_front_end(const std::string& key);
+
+/// One line per option of `keys` that is for a front end none of `frontends` is: setting it
+/// changes nothing ("vocabulary is an orbslam option; the rgbdslam front end does not read it").
+/// Nothing when a front end is an external system ("external:..."), which reads none of them.
+std::vector<std::string> unread_option_warnings(const std::vector<std::string>& keys,
+                                                const std::vector<std::string>& frontends);
+
 }  // namespace wifislam::slam

@@ -17,6 +17,7 @@
 #include "eval/eval_options.hpp"
 #include "sim/scene/scene_loader.hpp"
 #include "slam/frontend/front_end_registry.hpp"
+#include "slam/slam_options.hpp"
 #include "study/comparison_study.hpp"
 #include "study/paper/paper_plan.hpp"
 
@@ -75,6 +76,16 @@ void run(CompareArgs args, const CLI::App& app) {
                               "once, in the sweep");
     }
   }
+  std::vector<std::string> keys, frontends = {options.slam.frontend};
+  for (const std::string& s : args.settings) keys.push_back(s.substr(0, s.find('=')));
+  for (const study::SweepAxis& axis : options.sweeps) {
+    if (axis.key == "frontend")
+      frontends = axis.values;
+    else
+      keys.push_back(axis.key);
+  }
+  for (const std::string& w : slam::unread_option_warnings(keys, frontends))
+    fmt::print(stderr, "compare: warning: {}\n", w);
   // The vocabulary and system files the runs read are inputs as much as the scenes: --force
   // must not replace a folder that holds them.
   OutputFolderRequest output{args.output, args.force, {}, study::comparison_input_files(options)};

@@ -41,7 +41,13 @@ void run(const SlamArgs& args) {
   request.output = args.output;
   request.options.frontend = args.frontend;
   request.options.wifi.enabled = args.wifi;
-  for (const std::string& s : args.settings) slam::set_option_assignment(request.options, s);
+  std::vector<std::string> keys;
+  for (const std::string& s : args.settings) {
+    slam::set_option_assignment(request.options, s);
+    keys.push_back(s.substr(0, s.find('=')));
+  }
+  for (const std::string& w : slam::unread_option_warnings(keys, {request.options.frontend}))
+    fmt::print(stderr, "slam: warning: {}\n", w);
   request.force = args.force;
   request.verify_checksums = !args.no_verify;
   request.max_frames = args.max_frames;

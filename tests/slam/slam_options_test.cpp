@@ -80,6 +80,29 @@ TEST(SlamOptions, ValuesARunCannotUseAreRefusedNamingTheKey) {
   }
 }
 
+// `--set vocabulary=...` with the rgbdslam front end changed nothing without a word.
+TEST(SlamOptions, AnOptionOfAnotherFrontEndIsNamedAsUnread) {
+  EXPECT_EQ(option_front_end("vocabulary"), "orbslam");
+  EXPECT_EQ(option_front_end("stm_size"), "rtabmap");
+  EXPECT_EQ(option_front_end("predecessor_candidates"), "rgbdslam");
+  EXPECT_EQ(option_front_end("min_matches"), "") << "every front end reads it";
+  EXPECT_EQ(option_front_end("no_such_key"), "");
+  const std::vector<std::string> one =
+      unread_option_warnings({"vocabulary", "min_matches", "stm_size"}, {"rgbdslam"});
+  ASSERT_EQ(one.size(), 2u);
+  EXPECT_NE(one[0].find("vocabulary is an option of the orbslam front end; rgbdslam does not"),
+            std::string::npos)
+      << one[0];
+  EXPECT_NE(one[1].find("stm_size"), std::string::npos) << one[1];
+  // A sweep over front ends: read by one of them is read.
+  EXPECT_TRUE(unread_option_warnings({"vocabulary"}, {"rgbdslam", "orbslam"}).empty());
+  const std::vector<std::string> two =
+      unread_option_warnings({"stm_size"}, {"rgbdslam", "orbslam"});
+  ASSERT_EQ(two.size(), 1u);
+  EXPECT_NE(two[0].find("none of rgbdslam, orbslam reads it"), std::string::npos) << two[0];
+  EXPECT_TRUE(unread_option_warnings({"stm_size"}, {"external:x.yaml"}).empty());
+}
+
 TEST(SlamOptions, RefusesABadKernelOrPruningScheduleNamingIt) {
   for (const char* bad : {"robust_kernel=tukey", "prune_chi2=5,,1", "prune_chi2=5,-1",
                           "prune_chi2=abc", "prune_chi2=nan", "robust_kernel_chi2=0"}) {
