@@ -79,7 +79,11 @@ void SensorStreamFanout::abort(const std::string& why) {
 
 void SensorStreamFanout::pump(SensorStream& source) {
   try {
-    while (std::optional<SensorEvent> event = source.next()) push(std::move(*event));
+    while (std::optional<SensorEvent> event = source.next()) {
+      push(std::move(*event));
+      std::lock_guard lock(mutex_);
+      if (std::find(reading_.begin(), reading_.end(), true) == reading_.end()) break;
+    }
   } catch (const std::exception& e) {
     abort(e.what());
     throw;

@@ -55,6 +55,8 @@ class SensorStreamFanout {
   /// Producer: it failed; consumers' next() throws Error naming `why`.
   void abort(const std::string& why);
   /// Pushes every event of `source`, then closes (abort() and rethrow if the source throws).
+  /// Stops early once every consumer has left (each failed, or was stopped by Ctrl-C): the rest
+  /// of the source would be made for no one (a rendering: seconds to minutes).
   void pump(SensorStream& source);
 
   /// Consumer i reads no more (it failed or finished early): the producer stops waiting for it.

@@ -300,11 +300,19 @@ ProcessResult run_process(const ProcessRequest& request) {
 
   const auto start = WallClock::now();
   const pid_t caller = ::getpid();
+  // The stop signals are held back across the fork: until the supervisor has its own handlers
+  // (which unblock them), one landing in it would run the handler it inherited from this process
+  // and be lost to it, or end it without a report.
+  sigset_t stop_signals, previous_mask;
+  ::sigemptyset(&stop_signals);
+  for (int s : {SIGTERM, SIGINT, SIGHUP}) ::sigaddset(&stop_signals, s);
+  ::pthread_sigmask(SIG_BLOCK, &stop_signals, &previous_mask);
   const pid_t supervisor = ::fork();
   if (supervisor == 0) {
     ::close(report_pipe[0]);
     supervise(request, program.c_str(), argv.data(), in_fd, out_fd, err_fd, report_pipe[1], caller);
   }
+  ::pthread_sigmask(SIG_SETMASK, &previous_mask, nullptr);
   ::close(report_pipe[1]);
   report_pipe[1] = -1;
   if (supervisor < 0) {

@@ -125,5 +125,52 @@ TEST(SensorStreamFanout, AFailedProducerFailsItsConsumersAndLeftConsumersDropEve
   nobody.close();
 }
 
+/// A source of `frames` frames that counts how many it was asked for.
+class CountingStream : public SensorStream {
+ public:
+  explicit CountingStream(std::int64_t frames) : frames_(frames) {}
+  std::optional<SensorEvent> next() override {
+    if (served_ == frames_) return std::nullopt;
+    return frame_at(served_++);
+  }
+  const CameraIntrinsics& intrinsics() const override { return intrinsics_; }
+  bool has_wifi() const override { return false; }
+  bool has_odometry() const override { return false; }
+  std::string description() const override { return "counting"; }
+  std::int64_t served() const { return served_; }
+
+ private:
+  std::int64_t frames_, served_ = 0;
+  CameraIntrinsics intrinsics_;
+};
+
+// Once every consumer has left (each run failed, or was stopped by Ctrl-C), pumping on rendered
+// every remaining frame for no one: a stopped compare waited for a whole second rendering.
+TEST(SensorStreamFanout, PumpStopsTakingFromItsSourceOnceEveryConsumerHasLeft) {
+  SensorStreamFanout fanout(facts(), 2, 2);
+  CountingStream source(1000);
+  std::thread reader([&] {
+    for (int k = 0; k < 5; ++k) ASSERT_TRUE(fanout.consumer(0).next().has_value());
+    fanout.leave(0);
+  });
+  fanout.leave(1);
+  fanout.pump(source);
+  reader.join();
+  EXPECT_LT(source.served(), 20) << "the source was drained for no reader";
+  EXPECT_GE(source.served(), 5);
+
+  // With a reader to the end, every event is pumped.
+  SensorStreamFanout kept(facts(), 1, 2);
+  CountingStream all(50);
+  std::int64_t read = 0;
+  std::thread whole([&] {
+    while (kept.consumer(0).next()) ++read;
+  });
+  kept.pump(all);
+  whole.join();
+  EXPECT_EQ(all.served(), 50);
+  EXPECT_EQ(read, 50);
+}
+
 }  // namespace
 }  // namespace wifislam
