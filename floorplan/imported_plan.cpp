@@ -42,19 +42,16 @@ double ring_area_m2(const Ring& r) {
 }
 
 /// Walkable inputs outside the largest group joined by open doors are demoted to rooms.
-/// A piece that obstacles divide counts as that many pieces.
 std::vector<sim::scene::SpaceKind> connected_kinds(const std::vector<SpaceInput>& inputs,
                                                    const Partition& partition,
-                                                   const ObstacleCuts& cuts,
                                                    const std::vector<PlacedDoor>& doors,
                                                    std::vector<std::string>& notes) {
   std::vector<sim::scene::SpaceKind> kinds;
   for (const SpaceInput& in : inputs) kinds.push_back(in.kind);
   std::vector<int> pieces_of(inputs.size(), 0);
   std::vector<double> area(inputs.size(), 0.0);
-  for (std::size_t k = 0; k < partition.pieces.size(); ++k) {
-    const SpacePiece& p = partition.pieces[k];
-    pieces_of[p.input] += cuts.parts_per_piece[k];
+  for (const SpacePiece& p : partition.pieces) {
+    ++pieces_of[p.input];
     area[p.input] += std::abs(ring_area_m2(p.free_m.outer));
   }
   Groups groups(inputs.size());
@@ -92,15 +89,16 @@ std::vector<sim::scene::SpaceKind> connected_kinds(const std::vector<SpaceInput>
 void finish_plan(const GeosContext& geos, const std::vector<SpaceInput>& inputs,
                  const Partition& partition, const PartitionOptions& partition_options,
                  const std::vector<PlacedDoor>& doors, ImportedPlan& plan) {
-  const ObstacleCuts cuts =
-      make_cut_off_strips_solid(geos, partition, partition_options.min_area_m2, plan.obstacles);
-  if (cuts.strips_made_solid > 0)
+  const int strips = make_cut_off_strips_solid(geos, partition, partition_options.min_area_m2,
+                                               partition_options.wall_thickness_m, plan.obstacles);
+  if (strips > 0)
     plan.notes.push_back(fmt::format(
-        "{} strip(s) of free space under {:.1f} m^2, cut off a space between an obstacle and its "
-        "wall (the outline moved by the wall thickness), are part of that obstacle here",
-        cuts.strips_made_solid, partition_options.min_area_m2));
+        "{} strip(s) of free space under {:.1f} m^2 or narrower than a wall, cut off a space "
+        "between an obstacle and its wall (the outline moved by the wall thickness), are part of "
+        "that obstacle here",
+        strips, partition_options.min_area_m2));
   const std::vector<sim::scene::SpaceKind> kinds =
-      connected_kinds(inputs, partition, cuts, doors, plan.notes);
+      connected_kinds(inputs, partition, doors, plan.notes);
   std::vector<int> piece_number(inputs.size(), 0);
   for (const SpacePiece& p : partition.pieces) {
     const SpaceInput& in = inputs[p.input];

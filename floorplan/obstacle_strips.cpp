@@ -22,9 +22,9 @@ constexpr double kStripOverlapM = 0.001;
 
 }  // namespace
 
-ObstacleCuts make_cut_off_strips_solid(const GeosContext& geos, const Partition& partition,
-                                       double min_area_m2,
-                                       std::vector<sim::scene::Obstacle>& obstacles) {
+int make_cut_off_strips_solid(const GeosContext& geos, const Partition& partition,
+                              double min_area_m2, double wall_thickness_m,
+                              std::vector<sim::scene::Obstacle>& obstacles) {
   std::vector<Geometry> shapes;
   std::vector<Eigen::AlignedBox2d> boxes;
   std::vector<bool> usable;
@@ -34,7 +34,7 @@ ObstacleCuts make_cut_off_strips_solid(const GeosContext& geos, const Partition&
     shapes.push_back(std::move(g));
     boxes.push_back(box_of(o.polygon_m));
   }
-  ObstacleCuts cuts;
+  int strips = 0;
   for (const SpacePiece& piece : partition.pieces) {
     const Eigen::AlignedBox2d piece_box = box_of(piece.free_m.outer);
     std::vector<int> near;
@@ -44,26 +44,25 @@ ObstacleCuts make_cut_off_strips_solid(const GeosContext& geos, const Partition&
       near.push_back(static_cast<int>(j));
       near_shapes.push_back(&shapes[j]);
     }
-    if (near.empty()) {
-      cuts.parts_per_piece.push_back(1);
-      continue;
-    }
+    if (near.empty()) continue;
     const Geometry free = geos.polygon(piece.free_m).minus(geos.union_all(near_shapes)).polygonal();
     const std::vector<PolygonRings> parts = free.polygons();
+    if (parts.size() < 2) continue;
     std::vector<double> area_m2;
     for (const PolygonRings& p : parts) area_m2.push_back(geos.polygon(p).area_m2());
     const std::size_t largest = static_cast<std::size_t>(
         std::max_element(area_m2.begin(), area_m2.end()) - area_m2.begin());
-    int kept = 0;
     for (std::size_t k = 0; k < parts.size(); ++k) {
-      if (k == largest || area_m2[k] >= min_area_m2) {
-        ++kept;
-        continue;
-      }
-      const Geometry strip = geos.polygon(parts[k]).buffer_mitre(kStripOverlapM);
+      if (k == largest) continue;
+      const Geometry part = geos.polygon(parts[k]);
+      // Narrower than a wall everywhere: shrunk by half a wall, nothing is left.
+      const bool strip =
+          area_m2[k] < min_area_m2 || part.buffer_mitre(-0.5 * wall_thickness_m).empty();
+      if (!strip) continue;
+      const Geometry grown = part.buffer_mitre(kStripOverlapM);
       for (int j : near) {
-        if (strip.intersected(shapes[j]).polygonal().empty()) continue;
-        const std::vector<PolygonRings> merged = shapes[j].united(strip).polygonal().polygons();
+        if (grown.intersected(shapes[j]).polygonal().empty()) continue;
+        const std::vector<PolygonRings> merged = shapes[j].united(grown).polygonal().polygons();
         const auto biggest = std::max_element(
             merged.begin(), merged.end(), [&](const PolygonRings& a, const PolygonRings& b) {
               return geos.polygon(a).area_m2() < geos.polygon(b).area_m2();
@@ -71,13 +70,12 @@ ObstacleCuts make_cut_off_strips_solid(const GeosContext& geos, const Partition&
         obstacles[j].polygon_m = biggest->outer;
         shapes[j] = geos.polygon({biggest->outer, {}});
         boxes[j] = box_of(biggest->outer);
-        ++cuts.strips_made_solid;
+        ++strips;
         break;
       }
     }
-    cuts.parts_per_piece.push_back(std::max(kept, 1));
   }
-  return cuts;
+  return strips;
 }
 
 }  // namespace wifislam::floorplan

@@ -6,10 +6,11 @@
 // space in two (and the world builder refuses a robot's space in pieces). Westport House's
 // floor 1 has one, 1.5 cm wide and 3.8 m long.
 //
-// A part that an obstacle cuts off a piece and that is smaller than the partition's min_area_m2
-// (the size below which the partition itself drops slivers) becomes part of that obstacle: in the
-// building, the island meets the wall there. Larger parts are real: the space is split, and the
-// caller treats it as a space split by the wall thickness.
+// A part an obstacle cuts off a piece that is smaller than the partition's min_area_m2 (the size
+// below which the partition itself drops slivers) or narrower than a wall becomes part of that
+// obstacle: in the building, the island meets the wall there. Larger parts are left as they are:
+// the world builder joins the walkable spaces and their doorways, so a space an obstacle divides
+// may still be one walkable piece through its doors (and when it is not, the builder says so).
 
 #include <vector>
 
@@ -19,17 +20,11 @@
 
 namespace wifislam::floorplan {
 
-struct ObstacleCuts {
-  /// For each partition piece, the free parts of at least min_area_m2 the obstacles leave of it
-  /// (1 where they divide nothing; the largest part counts even when it is smaller).
-  std::vector<int> parts_per_piece;
-  int strips_made_solid = 0;
-};
-
-/// Grows `obstacles` over the strips they cut off the partition's pieces (see above). Obstacles
-/// that are not valid polygons are left alone: the world builder names them.
-ObstacleCuts make_cut_off_strips_solid(const GeosContext& geos, const Partition& partition,
-                                       double min_area_m2,
-                                       std::vector<sim::scene::Obstacle>& obstacles);
+/// Grows `obstacles` over the strips they cut off the partition's pieces (see above); returns how
+/// many strips were made solid. Obstacles that are not valid polygons are left alone: the world
+/// builder names them.
+int make_cut_off_strips_solid(const GeosContext& geos, const Partition& partition,
+                              double min_area_m2, double wall_thickness_m,
+                              std::vector<sim::scene::Obstacle>& obstacles);
 
 }  // namespace wifislam::floorplan
