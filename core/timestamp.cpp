@@ -79,52 +79,75 @@ std::optional<Timestamp> Timestamp::parse(std::string_view text) {
 
 std::optional<Timestamp> Timestamp::parse_rounded(std::string_view text) {
   if (const std::optional<Timestamp> exact = parse(text)) return exact;
-  // The number as its digits and where the decimal point falls among them, exponent applied;
-  // then parse() reads the first 9 decimals exactly and the 10th rounds.
+  // The number as its significant digits and where the decimal point falls among them, exponent
+  // applied; then parse() reads the first 9 decimals exactly and the 10th rounds.
   std::size_t i = 0;
   bool negative = false;
   if (!text.empty() && (text[0] == '-' || text[0] == '+')) {
     negative = text[0] == '-';
     i = 1;
   }
+  // Beyond 40 significant digits nothing reaches a nanosecond: parse() takes 10 digits of
+  // seconds and 9 decimals. Digits past the cap still move the point when they are whole seconds.
+  constexpr std::size_t kMaxSignificantDigits = 40;
   std::string digits;
-  std::int64_t point = -1;
+  std::int64_t point = 0;  // digits before the decimal point (negative: zeros after it)
+  bool seen_point = false, any_digit = false;
   for (; i < text.size() && text[i] != 'e' && text[i] != 'E'; ++i) {
-    if (text[i] == '.') {
-      if (point >= 0) return std::nullopt;
-      point = static_cast<std::int64_t>(digits.size());
-    } else if (text[i] >= '0' && text[i] <= '9') {
-      if (digits.size() >= 64) return std::nullopt;
-      digits += text[i];
+    const char c = text[i];
+    if (c == '.') {
+      if (seen_point) return std::nullopt;
+      seen_point = true;
+    } else if (c >= '0' && c <= '9') {
+      any_digit = true;
+      if (digits.empty() && c == '0') {
+        if (seen_point) --point;  // a leading zero after the point
+      } else if (digits.size() < kMaxSignificantDigits) {
+        digits += c;
+        if (!seen_point) ++point;
+      } else if (!seen_point) {
+        ++point;
+      }
     } else {
       return std::nullopt;
     }
   }
-  if (digits.empty()) return std::nullopt;
-  if (point < 0) point = static_cast<std::int64_t>(digits.size());
+  if (!any_digit) return std::nullopt;
   if (i < text.size()) {
-    int exponent = 0;
-    const char* first = text.data() + i + 1;
-    const char* last = text.data() + text.size();
-    if (first < last && *first == '+') ++first;  // from_chars takes '-' only
-    const auto [end, ec] = std::from_chars(first, last, exponent);
-    if (ec != std::errc() || end != last || first == last) return std::nullopt;
-    if (exponent > 100 || exponent < -100) return std::nullopt;  // far beyond the range anyway
-    point += exponent;
+    ++i;  // the 'e'
+    bool exponent_negative = false;
+    if (i < text.size() && (text[i] == '+' || text[i] == '-')) exponent_negative = text[i++] == '-';
+    if (i == text.size()) return std::nullopt;
+    std::int64_t exponent = 0;
+    for (; i < text.size(); ++i) {
+      if (text[i] < '0' || text[i] > '9') return std::nullopt;
+      exponent = std::min<std::int64_t>(exponent * 10 + (text[i] - '0'), 1'000'000);
+    }
+    point += exponent_negative ? -exponent : exponent;
   }
+  if (digits.empty() || point <= -10) return Timestamp{0};  // zero, or below half a nanosecond
+  if (point > 10) return std::nullopt;                      // parse()'s ten digits of seconds
   const std::int64_t n = static_cast<std::int64_t>(digits.size());
-  if (point < 0) digits.insert(0, static_cast<std::size_t>(-point), '0'), point = 0;
-  if (point > n) digits.append(static_cast<std::size_t>(point - n), '0');
-  std::string whole = digits.substr(0, static_cast<std::size_t>(point));
-  std::string fraction = digits.substr(static_cast<std::size_t>(point));
-  whole.erase(0, std::min(whole.find_first_not_of('0'), whole.size()));
+  std::string whole, fraction;
+  if (point <= 0) {
+    fraction = std::string(static_cast<std::size_t>(-point), '0') + digits;
+  } else {
+    whole = digits.substr(0, static_cast<std::size_t>(std::min(point, n)));
+    if (point > n) whole.append(static_cast<std::size_t>(point - n), '0');
+    if (point < n) fraction = digits.substr(static_cast<std::size_t>(point));
+  }
   if (whole.empty()) whole = "0";
   const bool round_up = fraction.size() > 9 && fraction[9] >= '5';
   fraction.resize(std::min<std::size_t>(fraction.size(), 9));
   std::optional<Timestamp> t = parse(whole + (fraction.empty() ? "" : "." + fraction));
   if (!t) return std::nullopt;
   if (round_up) {
-    if (t->ns == std::numeric_limits<std::int64_t>::max()) return std::nullopt;
+    // The last nanosecond parse() reads: rounding beyond it would give a time no TUM file of
+    // ours can hold (its text would not read back).
+    if (t->ns ==
+        (std::numeric_limits<std::int64_t>::max() - 999'999'999) / 1'000'000'000 * 1'000'000'000 +
+            999'999'999)
+      return std::nullopt;
     t->ns += 1;
   }
   if (negative) t->ns = -t->ns;

@@ -146,8 +146,8 @@ Trajectory trajectory_from_array(const py::array& rows, const std::string& what)
                                          t_s)
                            : fmt::format("t is not a finite number ({})", t_s));
     }
-    // The stamp as the decimal the float was written as (nanoseconds at most); the rest fixed
-    // point, which the reader takes (it refuses exponents in stamps).
+    // The stamp as the decimal the float was written as (nanoseconds at most), exactly; the rest
+    // fixed point, as the pose reader checks them.
     text.push_back(Timestamp::from_seconds_exact(t_s).to_string(9));
     for (int c = 1; c < 8; ++c) text.push_back(fmt::format("{:.17f}", m.at(i, c)));
     const std::vector<std::string_view> fields(text.begin(), text.end());

@@ -32,10 +32,20 @@ TEST(Timestamp, ParseRoundedReadsWhatTheTumToolsRead) {
   EXPECT_EQ(Timestamp::parse_rounded("-1.5e-3")->ns, -1'500'000);
   EXPECT_EQ(Timestamp::parse_rounded("-0.0000000015")->ns, -2) << "half away from zero";
   EXPECT_EQ(Timestamp::parse_rounded("25E-1")->ns, 2'500'000'000LL);
-  EXPECT_EQ(Timestamp::parse_rounded("1e-300").has_value(), false) << "exponent beyond 100";
+  EXPECT_EQ(Timestamp::parse_rounded("1e-300")->ns, 0);
   EXPECT_EQ(Timestamp::parse_rounded("1e-50")->ns, 0);
+  // Leading zeros and long digit strings are digits like any other; exponents far out give 0.
+  EXPECT_EQ(Timestamp::parse_rounded(std::string(100, '0') + "1.5e0")->ns, 1'500'000'000LL);
+  EXPECT_EQ(Timestamp::parse_rounded("0.00000000" + std::string(80, '9'))->ns, 10);
+  EXPECT_EQ(Timestamp::parse_rounded("0e500")->ns, 0);
+  EXPECT_EQ(Timestamp::parse_rounded("1.e5")->ns, 100'000'000'000'000LL);
+  EXPECT_EQ(Timestamp::parse_rounded(".5e1")->ns, 5'000'000'000LL);
+  EXPECT_EQ(Timestamp::parse_rounded("0.9999999995")->ns, 1'000'000'000LL) << "carries";
+  // The last nanosecond a TUM file can hold does not round up past it.
+  EXPECT_FALSE(Timestamp::parse_rounded("9223372035.9999999995").has_value());
+  EXPECT_EQ(Timestamp::parse_rounded("9223372035.9999999985")->ns, 9'223'372'035'999'999'999LL);
   for (const char* bad : {"", ".", "e9", "1e", "1e+", "1.5e9.5", "nan", "inf", "1e10", "0x10",
-                          "1..2", "1e9 ", "--1"}) {
+                          "1..2", "1e9 ", "--1", "1e+-5", "1e-+5", "+", "-", ".e1"}) {
     EXPECT_FALSE(Timestamp::parse_rounded(bad).has_value()) << bad;
   }
 }
