@@ -53,6 +53,13 @@ inline const CLI::Validator kNonEmptyInput(
     },
     "PATH");
 
+/// A receiver device given: a shipped device's name or a device file; '' used the scene's own.
+inline const CLI::Validator kNonEmptyDevice(
+    [](std::string& text) -> std::string {
+      return text.empty() ? "empty; give a shipped device's name or a device file" : std::string();
+    },
+    "DEVICE");
+
 inline const CLI::Validator kPositiveFinite(
     [](std::string& text) -> std::string {
       double value = 0.0;

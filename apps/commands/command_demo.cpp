@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
+#include "apps/option_validators.hpp"
 #include "apps/demo_scene.hpp"
 #include "core/atomic_file.hpp"
 #include "core/output_folder.hpp"
@@ -101,7 +102,8 @@ WIFISLAM_COMMAND(demo, 10) {
                 "Replace an existing output folder other than the default (only this tool's "
                 "output)");
   // No CLI::ExistingFile: the scene loader says what is wrong with a path, alike in every command.
-  app->add_option("--scene", args->scene_path, "Use this scene file instead of the embedded one");
+  app->add_option("--scene", args->scene_path, "Use this scene file instead of the embedded one")
+      ->check(kNonEmptyInput);
   app->add_flag("-q,--quiet", args->quiet, "No progress lines on stderr");
   app->callback([args] { run_demo(*args); });
 }

@@ -124,12 +124,7 @@ WIFISLAM_COMMAND(generate, 50) {
                       shipped +
                       ")\n"
                       "or a device file (*.yaml; scenes/README.md lists its keys)")
-      ->check(CLI::Validator(
-          [](std::string& text) {
-            return text.empty() ? std::string("empty; give a shipped device's name or a file")
-                                : std::string();
-          },
-          "DEVICE"));
+      ->check(kNonEmptyDevice);
   app->add_option("--session", args->session,
                   "Which visit of the building to render (default: the scene's `session`, else\n"
                   "0): the same building, route and appearance, with the scene's\n"

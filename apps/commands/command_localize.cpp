@@ -289,7 +289,7 @@ WIFISLAM_COMMAND(localize, 67) {
   app->add_option("--queries-device", args->queries_device,
                   "With --queries-session: the Wi-Fi device of the query run, a shipped name or\n"
                   "a device file (scenes/README.md, Receiver devices)")
-      ->check(kNonEmptyInput);
+      ->check(kNonEmptyDevice);
   app->add_flag("--naive-bayes", args->naive_bayes, "FAB-MAP without the Chow-Liu tree");
   app->add_flag("--no-verify", args->no_verify, "Datasets: do not check their SHA-256 sums");
   app->add_option("--vocabulary", args->vocabulary, "Vocabulary file (default: the shipped one)")

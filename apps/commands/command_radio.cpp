@@ -149,17 +149,20 @@ void add_calibrate_command(CLI::App* parent) {
       "columns in any order; device names the receiver: one RSS offset is fitted per device).");
   app->add_option("survey", args->survey_path, "Survey CSV")->required()->check(kNonEmptyInput);
   app->add_option("--scene", args->scene_path, "Scene file (YAML) of the surveyed building")
-      ->required();
+      ->required()
+      ->check(kNonEmptyInput);
   app->add_option("--aps", args->aps_path,
                   "Access points CSV id,x_m,y_m,z_m[,tx_power_dbm]; default: the scene's "
-                  "(required with --format royal-holloway, whose ids are its columns)");
+                  "(required with --format royal-holloway, whose ids are its columns)")
+      ->check(kNonEmptyInput);
   app->add_option("--format", args->format,
                   "Survey format: long (ours) or royal-holloway (the dataset's CSV as shipped: "
                   "0.6 m grid indices, column APk = AP id k, -200 = not heard)")
       ->capture_default_str()
       ->check(CLI::IsMember({"long", "royal-holloway"}));
   app->add_option("--test", args->test_path,
-                  "Held-out survey (same format and APs): residuals reported, not fitted");
+                  "Held-out survey (same format and APs): residuals reported, not fitted")
+      ->check(kNonEmptyInput);
   app->add_option("--frequency-mhz", args->frequency_mhz,
                   "Frequency of the survey: sets the default wall losses compared with and the "
                   "conversion of intercepts to tx power")

@@ -35,7 +35,9 @@ void place_command(const PlaceArgs& args) {
   for (const std::string& s : args.settings) {
     // Placement scores pause signatures with the Wi-Fi module alone: no front end runs, and
     // set_option_assignment's refusal would name a --frontend flag this command lacks.
-    if (s.rfind("frontend=", 0) == 0) {
+    // Only the Wi-Fi module's own options: min_matches or stm_size changed nothing, silently.
+    const std::string key = s.substr(0, s.find('='));
+    if (key.rfind("wifi_", 0) != 0 || !slam::option_front_end(key).empty()) {
       throw ParseError("--set", s,
                        "study place runs no front end (it scores the Wi-Fi module's pause "
                        "signatures); set the Wi-Fi module's options, e.g. wifi_similarity");

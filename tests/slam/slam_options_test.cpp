@@ -85,6 +85,7 @@ TEST(SlamOptions, AnOptionOfAnotherFrontEndIsNamedAsUnread) {
   EXPECT_EQ(option_front_end("vocabulary"), "orbslam");
   EXPECT_EQ(option_front_end("stm_size"), "rtabmap");
   EXPECT_EQ(option_front_end("predecessor_candidates"), "rgbdslam");
+  EXPECT_EQ(option_front_end("wifi_max_retrieved"), "rtabmap") << "rtabmap with Wi-Fi: ...";
   EXPECT_EQ(option_front_end("min_matches"), "") << "every front end reads it";
   EXPECT_EQ(option_front_end("no_such_key"), "");
   const std::vector<std::string> one =

@@ -223,6 +223,15 @@ TEST(StudyPlace, GreedyTellsPlacesApartBetterThanRandomAndItsBlockLoadsAsAScene)
   EXPECT_NE(frontend.err.find("runs no front end"), std::string::npos) << frontend.err;
   EXPECT_EQ(frontend.err.find("--frontend"), std::string::npos) << frontend.err;
   EXPECT_FALSE(fs::exists(dir / "none"));
+  // Nor any other option but the Wi-Fi module's own: they changed nothing, silently.
+  for (const char* setting : {"min_matches=10", "wifi_max_retrieved=2", "wifi=true"}) {
+    const auto r = test::run_wifislam("study place " + kScenes + "/c_hall.yaml --budget 1 --set " +
+                                          setting + " -q -o " + (dir / "none").string(),
+                                      dir);
+    EXPECT_EQ(r.exit_code, 2) << setting << ": " << r.err;
+    EXPECT_NE(r.err.find("runs no front end"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir / "none"));
+  }
   fs::remove_all(dir);
 }
 
