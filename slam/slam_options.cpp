@@ -148,8 +148,11 @@ std::string option_reference() { return options::reference<SlamOptions>(); }
 std::string option_front_end(const std::string& key) {
   for (const auto& [k, help] : options::option_help<SlamOptions>()) {
     if (k != key) continue;
-    for (const char* frontend : {"rgbdslam", "rtabmap", "orbslam"}) {
-      if (help.rfind(std::string(frontend) + ": ", 0) == 0) return frontend;
+    // "rtabmap: ...", "rtabmap with Wi-Fi: ...", "rtabmap cost model: ...".
+    for (const std::string frontend : {"rgbdslam", "rtabmap", "orbslam"}) {
+      if (help.rfind(frontend, 0) == 0 && help.size() > frontend.size() &&
+          (help[frontend.size()] == ':' || help[frontend.size()] == ' '))
+        return frontend;
     }
     return {};
   }

@@ -253,8 +253,8 @@ nlohmann::json to_json(const SlamOptions& options);
 /// `wifislam slam --help` prints).
 std::string option_reference();
 
-/// The front end option `key` is for ("orbslam" for vocabulary: its help reads "orbslam: ..."),
-/// or empty for an option every front end reads.
+/// The front end option `key` is for ("orbslam" for vocabulary: its help reads "orbslam: ...",
+/// "rtabmap with Wi-Fi: ..." is rtabmap's), or empty for an option every front end reads.
 std::string option_front_end(const std::string& key);
 
 /// One line per option of `keys` that is for a front end none of `frontends` is: setting it
