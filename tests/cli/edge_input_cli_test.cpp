@@ -383,7 +383,12 @@ TEST_F(EdgeInput, AnEmptyInputPathIsRefusedNamingItsOption) {
                {"check ''", "dataset: the path is empty"},
                {"compare '' -o c", "scenes: the path is empty"},
                {"localize " + scene + " --vocabulary '' -o loc", "--vocabulary: the path is empty"},
-               {"study run '' -o s.sqlite", "file: the path is empty"}};
+               {"study run '' -o s.sqlite", "file: the path is empty"},
+               {"radio calibrate s.csv --scene ''", "--scene: the path is empty"},
+               {"radio calibrate s.csv --scene " + scene + " --test ''", "--test: the path is"},
+               {"demo --scene '' -o d", "--scene: the path is empty"},
+               {"localize " + scene + " --queries-session 2 --queries-device '' -o loc",
+                "--queries-device: empty"}};
   for (const auto& c : cases) {
     const test::CliResult r = test::run_wifislam(c.args, scratch_, work);
     EXPECT_EQ(r.exit_code, 2) << c.args << "\n" << r.err;
