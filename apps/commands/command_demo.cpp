@@ -8,8 +8,8 @@
 #include <fmt/core.h>
 
 #include "apps/command_registry.hpp"
-#include "apps/option_validators.hpp"
 #include "apps/demo_scene.hpp"
+#include "apps/option_validators.hpp"
 #include "core/atomic_file.hpp"
 #include "core/output_folder.hpp"
 #include "core/stop_signal.hpp"

@@ -55,6 +55,20 @@ TEST(SlamOptions, WifiFloorOutsideReceivedPowersIsRefused) {
   EXPECT_NO_THROW(validate(o));
 }
 
+/// `assignment` ("key=value") is refused where it is set (a choice) or by validate(), and the
+/// error names its key.
+void expect_refused_naming_its_key(const std::string& assignment) {
+  SlamOptions o;
+  const std::string key = assignment.substr(0, assignment.find('='));
+  try {
+    set_option_assignment(o, assignment);
+    validate(o);
+    ADD_FAILURE() << assignment << " was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+  }
+}
+
 // Values that passed validation and then gave a run that could find nothing (no FAST corner in
 // an 8-bit image, no descriptor match) or failed inside it (no short-term memory: RTAB-Map's
 // newest node became a loop-closure candidate of itself, an internal error after the work).
@@ -62,15 +76,7 @@ TEST(SlamOptions, ValuesARunCannotUseAreRefusedNamingTheKey) {
   for (const char* bad : {"fast_threshold=256", "fast_threshold=-1", "max_hamming_distance=-1",
                           "max_hamming_distance=257", "optimizer_convergence=-1",
                           "optimizer_convergence=inf", "stm_size=0"}) {
-    SlamOptions o;
-    const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
-    try {
-      set_option_assignment(o, bad);
-      validate(o);
-      ADD_FAILURE() << bad << " was accepted";
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
-    }
+    expect_refused_naming_its_key(bad);
   }
   for (const char* edge : {"fast_threshold=0", "fast_threshold=255", "max_hamming_distance=0",
                            "max_hamming_distance=256", "optimizer_convergence=0", "stm_size=1"}) {
@@ -107,16 +113,7 @@ TEST(SlamOptions, AnOptionOfAnotherFrontEndIsNamedAsUnread) {
 TEST(SlamOptions, RefusesABadKernelOrPruningScheduleNamingIt) {
   for (const char* bad : {"robust_kernel=tukey", "prune_chi2=5,,1", "prune_chi2=5,-1",
                           "prune_chi2=abc", "prune_chi2=nan", "robust_kernel_chi2=0"}) {
-    SlamOptions o;
-    const std::string key = std::string(bad).substr(0, std::string(bad).find('='));
-    try {
-      // A kernel is a choice, refused where it is set; the rest are refused by validate().
-      set_option_assignment(o, bad);
-      validate(o);
-      ADD_FAILURE() << bad << " was accepted";
-    } catch (const Error& e) {
-      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
-    }
+    expect_refused_naming_its_key(bad);
   }
   SlamOptions none;
   set_option_assignment(none, "prune_chi2=none");
