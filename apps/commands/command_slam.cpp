@@ -12,6 +12,7 @@
 
 #include "apps/command_registry.hpp"
 #include "apps/option_validators.hpp"
+#include "core/stop_signal.hpp"
 #include "interop/external_run.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/slam_options.hpp"
@@ -57,6 +58,9 @@ void run(const SlamArgs& args) {
   request.on_frame = [tty](std::int64_t frames) {
     if (tty && frames % 30 == 0) fmt::print(stderr, "\rslam: {} frames", frames);
   };
+  // Ctrl-C or SIGTERM stops the run at its next event (an external system is stopped in turn)
+  // and removes the unfinished run folder; a folder being replaced stays as it was.
+  const StopOnSignal stop_on_signal;
   const study::SlamRunResult result = study::run_slam_to_folder(request);
   if (result.external) {
     const interop::ExternalRunResult& external = *result.external;

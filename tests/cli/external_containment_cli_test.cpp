@@ -121,6 +121,15 @@ void expect_system_dies_with_wifislam(const std::string& args, const fs::path& s
   ::kill(pid, signal);
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFSIGNALED(status)) << test::read_file(scratch / "out.txt");
+  EXPECT_EQ(WTERMSIG(status), signal);
+  if (signal != SIGKILL) {
+    // `slam`'s stop guard: the system is stopped in turn and the unfinished run folder removed.
+    EXPECT_FALSE(fs::exists(scratch / "run.partial")) << test::read_file(scratch / "out.txt");
+    EXPECT_NE(test::read_file(scratch / "out.txt").find("the unfinished output was removed"),
+              std::string::npos)
+        << test::read_file(scratch / "out.txt");
+  }
   EXPECT_TRUE(test::wait_until(std::chrono::seconds(10),
                                [&] { return processes_with_argument(seconds).empty(); }))
       << "the system's sleep outlived wifislam stopped by signal " << signal;
