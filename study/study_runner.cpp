@@ -13,6 +13,7 @@
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "core/wall_clock.hpp"
 #include "core/worker_pool.hpp"
 #include "core/yaml_document.hpp"
@@ -224,8 +225,18 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
     return {row};
   }
   const fs::path work = fresh_case_folder(scratch_dir, c);
-  const ComparisonResult result =
-      run_comparison({scene}, case_comparison(study, c, slam_options, jobs), work);
+  ComparisonResult result;
+  try {
+    result = run_comparison({scene}, case_comparison(study, c, slam_options, jobs), work);
+  } catch (const StoppedBySignal&) {
+    // Stopped under `study run`'s guard (Ctrl-C, or Slurm's SIGTERM): the case is not finished
+    // and a rerun starts it over, so its datasets and runs go now. After any other error they
+    // stay to be looked at, until the rerun replaces them.
+    std::error_code ec;
+    fs::remove_all(work, ec);
+    fs::remove(scratch_dir, ec);  // only when empty: other shards' cases may be in it
+    throw;
+  }
   std::vector<ResultRow> rows;
   for (const ComparisonCase& run : result.cases)
     rows.push_back(slam_run_row(study, run.wifi, run.status, run.evaluation, scene_hash));
@@ -296,6 +307,7 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
   const int case_threads = study.level == StudyLevel::kRadio ? options.jobs : 1;
   const int slam_jobs = study.level == StudyLevel::kSlam ? options.jobs : 1;
   parallel_for(clamp_thread_count(case_threads), todo.size(), [&](std::size_t i) {
+    throw_if_stop_requested();  // between cases; a SLAM case also stops at its next frame
     const auto case_start = Clock::now();
     if (study.level == StudyLevel::kSlam) {
       // A SLAM case takes minutes: say which one is under way, not only when it ends.

@@ -21,6 +21,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "study/output_database.hpp"
 #include "study/result_store.hpp"
 #include "study/study_file.hpp"
@@ -52,6 +53,10 @@ void run_study_command(const RunArgs& args) {
   if (!args.quiet) {
     options.on_progress = [](const std::string& line) { fmt::print(stderr, "study: {}\n", line); };
   }
+  // Ctrl-C, or the SIGTERM of Slurm's scancel, stops the run between cases or at the running
+  // SLAM case's next frame and removes that case's unfinished folder; the finished cases' rows
+  // stay in the database, and a rerun resumes from them.
+  const StopOnSignal stop_on_signal;
   const study::StudyRunSummary s = study::run_study(file, options);
   fmt::print("study {}: shard {}/{}: {} cases, {} already done, {} run in {:.1f} s -> {}\n",
              file.name, index, count, s.cases, s.skipped, s.ran, s.wall_s, args.output);

@@ -1,5 +1,6 @@
-// Ctrl-C (SIGINT) or SIGTERM while `generate`, `export` or `compare` writes its output folder: the
-// work stops at its next frame and removes <dir>.partial, a folder it was replacing stays as it
+// Ctrl-C (SIGINT) or SIGTERM while `generate`, `export`, `compare`, `slam` or `study run` writes
+// its output: the work stops at its next frame and removes <dir>.partial (a study: the running
+// case's folder), a folder it was replacing stays as it
 // was, and the process still ends by the signal. The .partial folder was left behind (a ROS bag
 // export: over 100 MB) until a later run into the same path recovered it.
 #include <signal.h>
@@ -173,6 +174,22 @@ TEST_F(StopSignalCli, CompareStoppedWhileRenderingOrRunningLeavesNothing) {
   EXPECT_EQ(WTERMSIG(child.status), SIGTERM);
   EXPECT_FALSE(fs::exists(scratch_ / "c.partial"));
   EXPECT_FALSE(fs::exists(scratch_ / "c"));
+}
+
+// `study run` stopped (Ctrl-C, or the SIGTERM of Slurm's scancel) while a SLAM case renders and
+// runs in <database>.work/<case>/: that folder goes, and the database stays for a rerun to resume.
+// Before, the case's datasets and runs stayed until a rerun of the same study replaced them.
+TEST_F(StopSignalCli, StudyRunStoppedInACaseRemovesTheCasesFolderAndKeepsTheDatabase) {
+  const fs::path file = scratch_ / "long_case.yaml", db = scratch_ / "study.sqlite";
+  test::write_file(file, "version: 1\nname: long_case\nscene: " + std::string(WIFISLAM_SCENES_DIR) +
+                             "/a_hall.yaml\nlevel: slam\naxes:\n  seed: [1]\nslam: {fps: 5}\n");
+  stop_while_writing({"study", "run", file.string(), "-q", "-o", db.string()},
+                     fs::path(db.string() + ".work"), SIGTERM);
+  EXPECT_TRUE(fs::is_regular_file(db)) << "the database a rerun resumes from";
+  const auto cases = test::run_wifislam(
+      "study merge " + db.string() + " -o " + (scratch_ / "merged.sqlite").string(), scratch_);
+  EXPECT_EQ(cases.exit_code, 0) << cases.err;
+  EXPECT_NE(cases.err.find("0 of the study's 1 cases"), std::string::npos) << cases.err;
 }
 
 // An external system compare waits for: SIGTERM to wifislam used to end it and, through the
