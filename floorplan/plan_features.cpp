@@ -128,11 +128,15 @@ void check_lon_lat(const PlanFeature& feature) {
   for (const Ring& line : feature.lines_lon_lat) check(line);
 }
 
-/// An OSM XML way that names a node the file does not hold: GDAL's OSM driver drops the point
-/// without a word and imports a smaller polygon. No XML library is needed to check it: node
-/// elements and way references are one line each in OSM XML (`<node id=...`, `<nd ref=...`),
-/// so their ids are scanned as text.
-void check_osm_node_references(const std::filesystem::path& file) {
+/// What GDAL's OSM driver reads without a word, checked first:
+/// - a way that names a node the file does not hold: the driver drops the point and imports a
+///   smaller polygon;
+/// - a node whose lat or lon is not a number (`lat="abc"`, `lat=""`): the driver reads it as 0,
+///   and the import failed far from the cause ("walkable space too small").
+/// No XML library is needed: node elements and way references are one line each in OSM XML
+/// (`<node id=...`, `<nd ref=...`), so they are scanned as text. An attribute on another line
+/// than its element's start is left to GDAL, as before.
+void check_osm_nodes(const std::filesystem::path& file) {
   std::unordered_set<std::string> nodes;
   std::vector<std::pair<std::string, std::string>> refs;  // (node id, where)
   std::string way;
@@ -149,7 +153,20 @@ void check_osm_node_references(const std::filesystem::path& file) {
     const std::size_t start = line.text.find_first_not_of(" \t");
     if (start == std::string::npos) return;
     const std::string_view text = std::string_view(line.text).substr(start);
-    if (text.starts_with("<node ")) nodes.insert(attribute(line.text, "id"));
+    if (text.starts_with("<node ")) {
+      const std::string id = attribute(line.text, "id");
+      nodes.insert(id);
+      for (const auto& [name, limit_deg] : {std::pair{"lat", 90.0}, std::pair{"lon", 180.0}}) {
+        if (line.text.find(std::string(" ") + name + "=") == std::string::npos) continue;
+        const std::string value = attribute(line.text, name);
+        double degrees = 0;
+        if (!parse_double(value, degrees) || std::abs(degrees) > limit_deg) {
+          throw ParseError(fmt::format("{}:{} (node/{})", file.string(), line.number, id), name,
+                           fmt::format("'{}': expected a number of degrees in [-{}, {}] (WGS 84)",
+                                       value, limit_deg, limit_deg));
+        }
+      }
+    }
     if (text.starts_with("<way ")) way = attribute(line.text, "id");
     if (text.starts_with("<nd ")) {
       refs.emplace_back(attribute(line.text, "ref"),
@@ -178,7 +195,7 @@ std::vector<PlanFeature> read_plan_features(const std::filesystem::path& file) {
   if (!std::filesystem::is_regular_file(file, ec)) {
     throw ParseError(file.string(), "", "is not a plan file (a folder, a device or a pipe)");
   }
-  if (file.extension() == ".osm") check_osm_node_references(file);
+  if (file.extension() == ".osm") check_osm_nodes(file);
   GDALAllRegister();
   // GDAL's warnings (an unclosed ring it closes itself) would go to stderr unasked; its errors
   // still reach CPLGetLastErrorMsg and our message.

@@ -280,6 +280,18 @@ TEST_F(ImportCli, PlansThatAreNotWhatTheySayAreLocatedErrors) {
                    "  </way>\n</osm>\n");
   expect_refused("import " + (scratch_ / "missing.osm").string(),
                  {"missing.osm:10 (way/10)", "node 4 is not in the file"});
+  // GDAL's OSM driver reads a latitude that is no number as 0: the import failed later with
+  // "walkable space too small", naming neither the node nor the attribute.
+  std::string bad_lat = test::read_file(scratch_ / "missing.osm");
+  const std::string good_lat = "lat=\"0.0001\"";
+  bad_lat.replace(bad_lat.find(good_lat), good_lat.size(), "lat=\"abc\"");
+  test::write_file(scratch_ / "bad_lat.osm", bad_lat);
+  expect_refused("import " + (scratch_ / "bad_lat.osm").string(),
+                 {"bad_lat.osm:5 (node/3)", "lat", "'abc'", "expected a number of degrees"});
+  test::write_file(scratch_ / "far_lon.osm",
+                   "<osm version=\"0.6\">\n<node id=\"9\" lat=\"1\" lon=\"200\"/>\n</osm>\n");
+  expect_refused("import " + (scratch_ / "far_lon.osm").string(),
+                 {"far_lon.osm:2 (node/9)", "lon", "'200'"});
   expect_refused("import /dev/zero", {"/dev/zero", "not a plan file"});
 }
 
