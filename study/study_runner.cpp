@@ -1,5 +1,6 @@
 #include "study/study_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <map>
 #include <mutex>
@@ -105,6 +106,24 @@ slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c) 
                      fmt::format("{}: {}", case_label(study, c), e.what()));
   }
   return o;
+}
+
+std::vector<std::string> unread_option_warnings(const StudyFile& study) {
+  if (study.level != StudyLevel::kSlam) return {};  // the radio level refuses them when read
+  std::vector<std::string> keys;
+  for (const std::string& s : study.slam.settings) keys.push_back(s.substr(0, s.find('=')));
+  for (const StudyAxis& axis : study.axes)
+    if (axis.kind == AxisKind::kSlamOption) keys.push_back(axis.key.substr(5));
+  std::vector<std::string> frontends;
+  for (const StudyCase& c : study.cases) {
+    const std::string frontend = case_slam_options(study, c).frontend;
+    if (std::find(frontends.begin(), frontends.end(), frontend) == frontends.end())
+      frontends.push_back(frontend);
+  }
+  std::vector<std::string> out;
+  for (const std::string& w : slam::unread_option_warnings(keys, frontends))
+    out.push_back(study.path.string() + ": " + w);
+  return out;
 }
 
 void check_cases(const StudyFile& study) {

@@ -56,6 +56,11 @@ slam::SlamOptions case_slam_options(const StudyFile& study, const StudyCase& c);
 /// work. Throws as case_scene.
 void check_cases(const StudyFile& study);
 
+/// One line per SLAM option of the study (slam.settings or a slam.* axis) that belongs to a front
+/// end none of its cases runs (`orbslam`'s vocabulary in an rgbdslam study), so it changes no
+/// result: what `slam` and `compare` warn about for the same options, said before hours of work.
+std::vector<std::string> unread_option_warnings(const StudyFile& study);
+
 /// Columns of the results and timing tables for a level.
 /// "status": in a study that runs an external system, the first metric column: "ok", or why the
 /// run gave no evaluation (its metrics are then NULL).

@@ -40,9 +40,15 @@ struct RunArgs {
   bool force = false, quiet = false;
 };
 
+void print_unread_option_warnings(const study::StudyFile& file) {
+  for (const std::string& w : study::unread_option_warnings(file))
+    fmt::print(stderr, "study: warning: {}\n", w);
+}
+
 void run_study_command(const RunArgs& args) {
   const study::StudyFile file = study::load_study_file(args.file);
   const auto [index, count] = study::parse_shard(args.shard);
+  print_unread_option_warnings(file);
   study::StudyRunOptions options;
   options.replace_database =
       study::check_run_database(args.output, file, args.force, study::input_files(file));
@@ -95,6 +101,7 @@ void add_cases_command(CLI::App* app) {
     const study::StudyFile s = study::load_study_file(*file);
     // Every case checked before the table: a refused file prints no table (exit 2, stdout empty).
     study::check_cases(s);
+    print_unread_option_warnings(s);
     std::string header = "case_id";
     for (const study::StudyAxis& a : s.axes) header += "\t" + a.key;
     fmt::print("{}\n", header);

@@ -327,5 +327,35 @@ TEST(StudyFile, VocabularyFilesAreInputs) {
   EXPECT_NE(std::find(inputs.begin(), inputs.end(), "/v/b.bin"), inputs.end());
 }
 
+// An option of a front end no case runs changes no row: said as `slam` and `compare` say it, in
+// the study's own terms (its file), and not when a frontend axis runs the front end that reads it.
+TEST(StudyFile, OptionsOfAFrontEndNoCaseRunsAreWarnedAbout) {
+  const std::string head = "version: 1\nname: w\nscene: " + kCHallScene + "\nlevel: slam\n";
+  const StudyFile unread =
+      load_study_yaml(head +
+                          "slam:\n  settings: {stm_size: 20, min_matches: 40}\naxes:\n"
+                          "  slam.loop_consistency: [2, 3]\n",
+                      "w.yaml");
+  const std::vector<std::string> warnings = unread_option_warnings(unread);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_NE(warnings[0].find("w.yaml: stm_size is an option of the rtabmap front end; rgbdslam "
+                             "does not read it"),
+            std::string::npos)
+      << warnings[0];
+  EXPECT_NE(warnings[1].find("loop_consistency is an option of the orbslam front end"),
+            std::string::npos)
+      << warnings[1];
+  EXPECT_TRUE(
+      unread_option_warnings(load_study_yaml(head + "slam:\n  settings: {stm_size: 20}\naxes:\n"
+                                                    "  frontend: [rgbdslam, rtabmap]\n",
+                                             "w.yaml"))
+          .empty());
+  EXPECT_TRUE(
+      unread_option_warnings(load_study_yaml(head + "slam:\n  settings: {min_matches: 40}\naxes:\n"
+                                                    "  seed: [1, 2]\n",
+                                             "w.yaml"))
+          .empty());
+}
+
 }  // namespace
 }  // namespace wifislam::study
