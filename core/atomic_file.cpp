@@ -33,6 +33,22 @@ int lock_folder(const fs::path& folder) {
   return fd;
 }
 
+// Where commit() sets a folder being replaced aside until the new one is in place.
+fs::path set_aside_path(const fs::path& final_path) { return final_path.string() + ".replaced"; }
+
+// Only an empty folder at the set-aside path is this run's to remove. Any other is a folder of
+// the user's (or a finished output named so), or the only copy of an output whose replacement a
+// power cut interrupted between commit()'s two renames. Checked before the work and at commit.
+void check_set_aside_free(const fs::path& final_path) {
+  const fs::path set_aside = set_aside_path(final_path);
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(set_aside, ec))) return;
+  if (fs::is_directory(fs::symlink_status(set_aside, ec)) && fs::is_empty(set_aside, ec)) return;
+  throw InvalidInputError(set_aside.string() + ": exists, and replacing " + final_path.string() +
+                          " sets the old folder aside there first; move it away (it may be an "
+                          "earlier output whose replacement was interrupted)");
+}
+
 // Whether the open descriptor `fd` is the folder now at `path`.
 bool same_folder(int fd, const fs::path& path) {
   struct stat open_one {
@@ -104,18 +120,23 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
       throw InvalidInputError(final_.string() + ": already exists (pass --force to replace it)");
     }
     check_folder_replaceable(final_);
+    check_set_aside_free(final_);  // now, not after the work
   }
   staging_ = final_.string() + ".partial";
   const std::string busy =
       final_.string() + ": another wifislam run is writing this folder now (into " +
       staging_.string() + "); wait for it to finish or choose another output folder";
   if (fs::exists(fs::symlink_status(staging_, ec))) {
-    // Left over from an interrupted run: ours (it carries the marker from the start) or empty.
+    // Left over from an interrupted run: ours (it carries the unfinished marker from the start)
+    // or empty. A finished output of ours by that name (`-o x.partial`) is a folder the user
+    // did not ask to replace: it has no unfinished marker.
     if (!fs::is_directory(fs::symlink_status(staging_, ec)) ||
-        !(fs::is_empty(staging_, ec) || has_output_marker(staging_))) {
+        !(fs::is_empty(staging_, ec) || has_unfinished_marker(staging_))) {
       throw InvalidInputError(staging_.string() +
-                              ": exists and is not an unfinished wifislam output; remove it or "
-                              "choose another output folder");
+                              ": exists and is not an unfinished wifislam output (no " +
+                              kUnfinishedMarkerFile +
+                              "); this run writes there first: move it away or choose another "
+                              "output folder");
     }
     // A run that is still writing holds the lock on its staging folder: leave it alone.
     const int leftover = lock_folder(staging_);
@@ -148,6 +169,9 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
     throw InvalidInputError(busy);
   }
   try {
+    write_file_atomic(staging_ / kUnfinishedMarkerFile,
+                      "Being written by wifislam, or left unfinished by a run that was "
+                      "interrupted; the next run into the same output removes it.\n");
     write_file_atomic(staging_ / kOutputMarkerFile,
                       "Written by wifislam. `--force` may replace this folder.\n");
   } catch (...) {
@@ -181,6 +205,10 @@ void AtomicDirectory::commit() {
   // The last point where a command stopped by Ctrl-C can still leave nothing (core/stop_signal).
   throw_if_stop_requested();
   std::error_code ec;
+  // From here on the folder is finished: nothing may take it for a leftover once in place.
+  if (!fs::remove(staging_ / kUnfinishedMarkerFile, ec) && ec) {
+    throw IoError((staging_ / kUnfinishedMarkerFile).string() + ": cannot remove: " + ec.message());
+  }
   fs::path set_aside;  // the folder being replaced, until the new one is in place
   if (fs::exists(final_, ec)) {
     if (!overwrite_) throw InvalidInputError(final_.string() + ": already exists");
@@ -188,15 +216,9 @@ void AtomicDirectory::commit() {
       throw InvalidInputError(final_.string() + ": exists and is not a folder");
     }
     check_folder_replaceable(final_);
-    set_aside = final_.string() + ".replaced";
-    if (fs::exists(fs::symlink_status(set_aside, ec))) {
-      if (!fs::is_directory(fs::symlink_status(set_aside, ec)) ||
-          !(fs::is_empty(set_aside, ec) || has_output_marker(set_aside))) {
-        throw InvalidInputError(set_aside.string() +
-                                ": exists and is not a replaced wifislam output; remove it");
-      }
-      fs::remove_all(set_aside, ec);
-    }
+    set_aside = set_aside_path(final_);
+    check_set_aside_free(final_);
+    fs::remove(set_aside, ec);  // an empty folder, if any
     fs::rename(final_, set_aside, ec);
     if (ec) throw IoError(final_.string() + ": cannot replace: " + ec.message());
   }

@@ -61,6 +61,9 @@ fs::path absolute_folder(const fs::path& folder) {
 }
 
 bool has_output_marker(const fs::path& folder) { return is_regular(folder / kOutputMarkerFile); }
+bool has_unfinished_marker(const fs::path& folder) {
+  return is_regular(folder / kUnfinishedMarkerFile);
+}
 
 namespace {
 
@@ -99,6 +102,14 @@ void check_folder_replaceable(const fs::path& resolved) {
                                               "); refusing to replace it");
     }
   }
+  if (has_unfinished_marker(resolved)) {
+    // Another run's staging folder: replacing it pulled the folder from under that run, which
+    // then failed with "write failed (disk full?)" and never put its output in place.
+    refuse(resolved, fmt::format("is a folder another wifislam run is writing now, or left "
+                                 "unfinished ({} is in it); refusing to replace it. Choose "
+                                 "another folder, or remove this one once no run writes it",
+                                 kUnfinishedMarkerFile));
+  }
   if (!is_empty_folder(resolved) && !has_output_marker(resolved)) {
     refuse(resolved,
            fmt::format("does not look like wifislam output (no {} marker) and is not empty; "
@@ -114,7 +125,10 @@ bool check_output_folder(const OutputFolderRequest& request) {
   // Replacing a symbolic link's path replaces the folder it points to, wherever that is: a link
   // at eval's default <run>/eval to a dataset emptied the dataset without --force. The folder
   // itself must be named.
-  const fs::path named = request.path.has_filename() ? request.path : request.path.parent_path();
+  // "link/", "link/." and "link/./" all name the link.
+  fs::path named = request.path;
+  while (named.has_relative_path() && (!named.has_filename() || named.filename() == "."))
+    named = named.parent_path();
   if (fs::is_symlink(fs::symlink_status(named, ec))) {
     const fs::path target = fs::read_symlink(named, ec);
     refuse(named, "is a symbolic link (to " + target.string() +

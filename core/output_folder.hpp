@@ -27,6 +27,11 @@ namespace wifislam {
 /// Written into every folder AtomicDirectory creates, so a later `--force` can tell this tool's
 /// output from a folder of the user's.
 inline constexpr const char* kOutputMarkerFile = ".wifislam-output";
+/// Written into AtomicDirectory's staging folder (`<final>.partial`) beside kOutputMarkerFile and
+/// removed just before the folder is renamed into place: a leftover `.partial` folder is one an
+/// interrupted run was writing only when it holds this file. A finished output (which a user may
+/// have named `x.partial`, or renamed so) never does, and is never taken for a leftover.
+inline constexpr const char* kUnfinishedMarkerFile = ".wifislam-unfinished";
 
 /// What a command is about to write, and what it reads.
 struct OutputFolderRequest {
@@ -97,5 +102,8 @@ std::filesystem::path absolute_folder(const std::filesystem::path& folder);
 /// True when `folder` holds the marker file (a regular file named kOutputMarkerFile) that
 /// AtomicDirectory writes into every folder it creates.
 bool has_output_marker(const std::filesystem::path& folder);
+/// True when `folder` holds kUnfinishedMarkerFile: a staging folder that a run is writing now or
+/// that an interrupted run left.
+bool has_unfinished_marker(const std::filesystem::path& folder);
 
 }  // namespace wifislam

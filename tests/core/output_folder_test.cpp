@@ -198,7 +198,9 @@ TEST_F(OutputFolderRule, ASymbolicLinkIsNeverReplacedNorWrittenThrough) {
   const fs::path victim = tool_folder("victim");
   fs::create_directory_symlink(victim, run / "eval");
   for (const bool force : {false, true}) {
-    for (const fs::path& spelling : {run / "eval", fs::path(run.string() + "/eval/")}) {
+    for (const fs::path& spelling :
+         {run / "eval", fs::path(run.string() + "/eval/"), fs::path(run.string() + "/eval/."),
+          fs::path(run.string() + "/eval/./")}) {
       const auto message = refusal({spelling, force, run / "eval", {run}, run});
       ASSERT_TRUE(message) << spelling;
       EXPECT_NE(message->find("symbolic link"), std::string::npos) << *message;
@@ -335,6 +337,84 @@ TEST_F(OutputFolderRule, AtomicDirectoryMarksItsFolderAndKeepsUserFolders) {
   EXPECT_THROW(AtomicDirectory(mine, true), InvalidInputError);
   EXPECT_TRUE(fs::exists(mine / "thesis.tex"));
   EXPECT_FALSE(fs::exists(mine.string() + ".partial"));
+}
+
+// Only a staging folder (it holds the unfinished marker until its commit) is a leftover to
+// remove. A finished output named `<out>.partial` was deleted by a run into `<out>`, without
+// --force; and `<out>.replaced` by a --force run, whatever it held.
+TEST_F(OutputFolderRule, FoldersBesideTheOutputAreRemovedOnlyWhenARunLeftThem) {
+  const fs::path out = root_ / "exp";
+  {
+    AtomicDirectory finished(root_ / "exp.partial", false);  // a user's `-o exp.partial`
+    EXPECT_TRUE(has_unfinished_marker(finished.staging_path()));
+    finished.commit();
+  }
+  const fs::path named_partial = root_ / "exp.partial";
+  EXPECT_TRUE(has_output_marker(named_partial));
+  EXPECT_FALSE(has_unfinished_marker(named_partial)) << "a finished output is not unfinished";
+  std::ofstream(named_partial / "notes.txt") << "mine";
+  try {
+    AtomicDirectory refused(out, false);
+    ADD_FAILURE() << "a finished output named exp.partial was taken for a leftover";
+  } catch (const InvalidInputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not an unfinished wifislam output"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(fs::exists(named_partial / "notes.txt"));
+  EXPECT_FALSE(fs::exists(out));
+
+  // What an interrupted run leaves (both markers) is removed by the next run, as before.
+  fs::remove_all(named_partial);
+  fs::create_directories(named_partial);
+  std::ofstream(named_partial / kOutputMarkerFile) << "x";
+  std::ofstream(named_partial / kUnfinishedMarkerFile) << "x";
+  std::ofstream(named_partial / "half.png") << "half";
+  {
+    AtomicDirectory dir(out, false);
+    EXPECT_FALSE(fs::exists(dir.staging_path() / "half.png"));
+    dir.commit();
+  }
+  EXPECT_FALSE(has_unfinished_marker(out));
+
+  // `<out>.replaced` is where --force sets the old folder aside: one that is there already is
+  // kept, and the replacement refused before the work, or at the commit if it came since.
+  const fs::path replaced = tool_folder("exp.replaced");
+  EXPECT_THROW(AtomicDirectory(out, true), InvalidInputError);
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  fs::rename(replaced, root_ / "elsewhere");
+  {
+    AtomicDirectory dir(out, true);
+    std::ofstream(dir.staging_path() / "new.txt") << "new";
+    fs::rename(root_ / "elsewhere", replaced);
+    EXPECT_THROW(dir.commit(), InvalidInputError);
+  }
+  EXPECT_TRUE(fs::exists(replaced / "data.txt"));
+  EXPECT_TRUE(has_output_marker(out));
+  EXPECT_FALSE(fs::exists(out / "new.txt"));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+  fs::remove_all(replaced);
+  fs::create_directories(replaced);  // empty: nothing to lose, removed
+  {
+    AtomicDirectory dir(out, true);
+    std::ofstream(dir.staging_path() / "new.txt") << "new";
+    dir.commit();
+  }
+  EXPECT_TRUE(fs::exists(out / "new.txt"));
+  EXPECT_FALSE(fs::exists(replaced));
+}
+
+// A folder another run is writing (its staging folder, named as an output with --force) is not
+// replaced: that run lost its folder and failed with "write failed (disk full?)".
+TEST_F(OutputFolderRule, AnotherRunsStagingFolderIsNeverReplaced) {
+  AtomicDirectory other(root_ / "ds", false);
+  std::ofstream(other.staging_path() / "frame.png") << "png";
+  const auto message = refusal({other.staging_path(), true, {}, {}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("another wifislam run is writing"), std::string::npos) << *message;
+  EXPECT_THROW(AtomicDirectory(other.staging_path(), true), InvalidInputError);
+  EXPECT_TRUE(fs::exists(other.staging_path() / "frame.png"));
+  other.commit();
+  EXPECT_TRUE(fs::exists(root_ / "ds" / "frame.png"));
 }
 
 }  // namespace
