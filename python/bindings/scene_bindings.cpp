@@ -25,11 +25,11 @@ py::object scalar_to_python(const YAML::Node& node) {
   if (text == "~" || text == "null" || text == "Null" || text == "NULL") return py::none();
   if (text == "true" || text == "True" || text == "TRUE") return py::bool_(true);
   if (text == "false" || text == "False" || text == "FALSE") return py::bool_(false);
-  try {
-    std::size_t used = 0;
-    const long long integer = std::stoll(text, &used);
-    if (used == text.size()) return py::int_(integer);
-  } catch (const std::exception&) {
+  // A whole number of any size (a seed is up to 2**64 - 1, past long long): Python's own int.
+  const std::size_t digits_from = !text.empty() && (text[0] == '-' || text[0] == '+') ? 1 : 0;
+  if (text.size() > digits_from &&
+      text.find_first_not_of("0123456789", digits_from) == std::string::npos) {
+    return py::reinterpret_steal<py::object>(PyLong_FromString(text.c_str(), nullptr, 10));
   }
   try {
     std::size_t used = 0;

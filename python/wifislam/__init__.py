@@ -128,13 +128,14 @@ Scene.from_dict = staticmethod(_scene_from_dict)
 _scene_from_yaml_text = Scene.from_yaml
 
 
-@checked
 def _scene_from_yaml(text: str, source_name: str = "<yaml>") -> Scene:
     """A scene from YAML text of the scene-file schema; errors name ``source_name``."""
     return _scene_from_yaml_text(text, source_name)
 
 
-Scene.from_yaml = staticmethod(_scene_from_yaml)
+# Named as the user calls it, in checked()'s TypeError ("Scene.from_yaml(): text takes ...").
+_scene_from_yaml.__qualname__ = "Scene.from_yaml"
+Scene.from_yaml = staticmethod(checked(_scene_from_yaml))
 
 
 def channel_of(frequency_khz: int) -> int:
@@ -545,6 +546,12 @@ def read_trajectory(path: PathLike) -> np.ndarray:
 @checked
 def encode_rgb_png(rgb: np.ndarray) -> bytes:
     """The PNG bytes ``generate`` writes for this colour image (H x W x 3 uint8 RGB)."""
+    if not isinstance(rgb, np.ndarray):
+        # Nested lists of whole numbers are numpy's int64: uint8 when every value fits, else
+        # left for the binding to refuse. An array keeps its dtype (and the check of it).
+        rgb = np.asarray(rgb)
+        if rgb.dtype.kind in "iu" and rgb.size and rgb.min() >= 0 and rgb.max() <= 255:
+            rgb = rgb.astype(np.uint8)
     return _wifislam._encode_rgb_png(np.ascontiguousarray(rgb))
 
 
@@ -553,6 +560,8 @@ def encode_depth_png(depth: np.ndarray) -> bytes:
     """The 16-bit TUM depth PNG bytes (5000 per metre, 0 = no reading) ``generate`` writes for
     this depth image (H x W float metres, NaN = no reading). 16 bits at 5000 per metre end at
     13.107 m: a farther depth is stored as 0, no reading, as the dataset writer stores it."""
+    if not isinstance(depth, np.ndarray):
+        depth = np.asarray(depth, dtype=np.float64)  # nested lists: metres, whole or not
     return _wifislam._encode_depth_png(np.asarray(depth))
 
 

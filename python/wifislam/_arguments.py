@@ -110,7 +110,15 @@ def _out_of_range(parameter: str, hint: Any, value: Any) -> str:
     """What `parameter` takes, when `value` is a whole number outside it; "" otherwise."""
     if not isinstance(value, numbers.Integral) or isinstance(value, (bool, np.bool_)):
         return ""
-    if not _takes(hint, value) or not _takes_whole_numbers(hint):
+    if not _takes(hint, value):
+        return ""
+    if not _takes_whole_numbers(hint):
+        # A float parameter given an int: one beyond a double's range (10**400) reached
+        # pybind11, whose TypeError listed the binding's own signatures.
+        try:
+            float(value)
+        except OverflowError:
+            return "a number within a float's range (below 1.8e308 in magnitude)"
         return ""
     low, high, words = _WHOLE_NUMBER_RANGES.get(parameter, _INT32)
     number = int(value)
@@ -151,8 +159,11 @@ def checked(function: F) -> F:
                                     f"got {type(each).__name__} {shown}")
                 words = _out_of_range(parameter, hint, each)
                 if words:
+                    shown = str(int(each))
+                    if len(shown) > 40:
+                        shown = f"{shown[:20]}... ({len(shown)} digits)"
                     raise _wifislam.InvalidInputError(
-                        f"{name}(): {parameter} takes {words}, got {int(each)}")
+                        f"{name}(): {parameter} takes {words}, got {shown}")
         return function(*args, **kwargs)
 
     return typing.cast(F, call)

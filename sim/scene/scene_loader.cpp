@@ -433,7 +433,17 @@ class YamlWriter {
     if (!points.empty()) polygon(key, points, l);
   }
   void text_list(const char* key, const std::vector<std::string>& items) {
-    out_ << YAML::Key << key << YAML::Value << YAML::Flow << items;
+    if (quoting_ != TextQuoting::kWhereAmbiguous) {
+      out_ << YAML::Key << key << YAML::Value << YAML::Flow << items;
+      return;
+    }
+    // As text() quotes: route nodes named "01" or "1e2" must come back as those names.
+    out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq;
+    for (const std::string& item : items) {
+      if (reads_as_other_than_text(item)) out_ << YAML::DoubleQuoted;
+      out_ << item;
+    }
+    out_ << YAML::EndSeq;
   }
   void interval(const char* key, double lo, double hi, Limits) {
     out_ << YAML::Key << key << YAML::Value << YAML::Flow << YAML::BeginSeq << exact(lo)

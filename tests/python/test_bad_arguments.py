@@ -168,8 +168,16 @@ def test_an_array_argument_takes_arrays_and_nested_lists_only(a_hall, small_data
     with pytest.raises(TypeError, match=r"render\(\): pose takes an array, got int 5"):
         wifislam.render(a_hall, 5)
     pose = wifislam.camera_pose(a_hall, 2.0, 1.5, 30)
-    rgb, _ = wifislam.render(a_hall, pose.tolist(), noise=False)
+    rgb, depth = wifislam.render(a_hall, pose.tolist(), noise=False)
     assert np.array_equal(rgb, wifislam.render(a_hall, pose, noise=False)[0])
+    # Images as nested lists of whole numbers: numpy's int64, refused as no image type before.
+    assert wifislam.encode_depth_png([[1, 2], [3, 0]]) == wifislam.encode_depth_png(
+        np.array([[1.0, 2.0], [3.0, 0.0]]))
+    assert wifislam.encode_rgb_png(rgb[:4, :4].tolist()) == wifislam.encode_rgb_png(rgb[:4, :4])
+    with pytest.raises(ValueError):
+        wifislam.encode_rgb_png([[[300, 0, 0]]])  # no uint8: not taken modulo 256
+    with pytest.raises(ValueError):
+        wifislam.encode_depth_png(depth.astype(np.int64))  # an array keeps its dtype's check
 
 
 def test_whole_numbers_outside_what_the_module_holds_name_the_range(tmp_path, a_hall,
@@ -189,6 +197,13 @@ def test_whole_numbers_outside_what_the_module_holds_name_the_range(tmp_path, a_
          r"slam\(\): max_frames takes -1 .* got -3"),
         (lambda: wifislam.generate(a_hall, tmp_path / "d", threads=2**40),
          r"generate\(\): threads takes 0 \(every core\)"),
+        # A float argument given an int past a double: pybind11's TypeError listed the
+        # binding's own signatures, and evaluate's float() an OverflowError.
+        (lambda: wifislam.camera_pose(a_hall, 10**400, 0.0, 0.0),
+         r"camera_pose\(\): x_m takes a number within a float's range .* got 10{19}\.\.\. "
+         r"\(401 digits\)"),
+        (lambda: wifislam.evaluate(small_dataset, small_dataset, time_offset_s=-10**400),
+         r"evaluate\(\): time_offset_s takes a number within a float's range"),
     ]
     for call, message in cases:
         with pytest.raises(wifislam.InvalidInputError, match=message):

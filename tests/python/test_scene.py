@@ -1,5 +1,6 @@
 """Scene.load and Scene.from_dict: the loader's own checks and located errors."""
 
+import json
 import os
 
 import pytest
@@ -100,8 +101,34 @@ def test_a_scene_pickles_and_copies_to_the_same_scene(tmp_path, c_hall):
 def test_from_yaml_takes_text_and_says_so():
     for call in (lambda: wifislam.Scene.from_yaml(None),
                  lambda: wifislam.Scene.from_yaml("version: 1", source_name=None)):
-        with pytest.raises(TypeError, match=r"from_yaml\(\): (text|source_name) takes text"):
+        with pytest.raises(TypeError,
+                           match=r"^Scene\.from_yaml\(\): (text|source_name) takes text"):
             call()
+
+
+def test_seeds_past_2_to_the_63_stay_whole_numbers_through_a_dict(c_hall):
+    # to_dict read the plain scalar with stoll, which stops at 2**63 - 1, and fell back to a
+    # float: 2**64 - 1 came back as 1.8446744073709552e+19, which from_dict then refused.
+    for seed in (2**63 - 1, 2**63, 2**64 - 1):
+        d = wifislam.Scene.load(c_hall).to_dict()
+        d["seed"] = seed
+        again = wifislam.Scene.from_dict(d).to_dict()
+        assert again["seed"] == seed and isinstance(again["seed"], int)
+        assert wifislam.Scene.from_dict(again).seed == seed
+
+
+def test_route_node_names_that_look_like_numbers_stay_names_through_a_dict(c_hall):
+    # The route's node list was written unquoted: nodes named "01" and "02" came back as
+    # route.nodes [1, 2, ...], which named no node.
+    text = json.dumps(wifislam.Scene.load(c_hall).to_dict())
+    for old, new in (("A", "01"), ("B", "1e2"), ("C", "0x10"), ("D", "nan")):
+        assert f'"{old}"' in text
+        text = text.replace(f'"{old}"', f'"{new}"')  # the node, and wherever it is named
+    d = json.loads(text)
+    scene = wifislam.Scene.from_dict(d)
+    again = scene.to_dict()
+    assert again["route"]["nodes"] == d["route"]["nodes"]
+    assert wifislam.Scene.from_dict(again).to_yaml() == scene.to_yaml()
 
 
 def test_a_loaded_scene_remembers_its_file_wherever_the_notebook_goes(tmp_path, c_hall,
