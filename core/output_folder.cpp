@@ -227,6 +227,21 @@ void check_file_replaceable(const fs::path& path) {
                             (fs::is_directory(target) ? "a folder" : "a device, pipe or socket") +
                             "); give the path of a file to write");
   }
+  // The file is written as <path>.partial first, which truncates a file of that name. Inside a
+  // folder of ours (one holding the output marker, or below one) that is a write of ours that was
+  // interrupted (a resumed `paper` folder); anywhere else it may be the user's file.
+  const fs::path partial = path.string() + ".partial";
+  const fs::file_status existing = fs::symlink_status(partial, ec);
+  if (!fs::exists(existing)) return;
+  bool ours = false;
+  for (fs::path folder = fs::absolute(path, ec).parent_path(); !ours && folder.has_relative_path();
+       folder = folder.parent_path())
+    ours = has_output_marker(folder);
+  if (!fs::is_regular_file(existing) || !ours) {
+    throw InvalidInputError(partial.string() + ": exists, and " + path.string() +
+                            " is written there first; move it away (it may be left by an "
+                            "interrupted write)");
+  }
 }
 
 }  // namespace wifislam

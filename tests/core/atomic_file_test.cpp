@@ -4,9 +4,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
 
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
+#include "core/output_folder.hpp"
 #include "tests/support/scratch_folder.hpp"
 
 namespace wifislam {
@@ -94,6 +97,30 @@ TEST(WriteFileAtomic, ReplacesAFileButRefusesAFolderOrAPipeAndLeavesThemAsTheyWe
   EXPECT_TRUE(fs::is_directory(root / "folder"));
   EXPECT_FALSE(fs::exists(root / "folder.partial"));
   EXPECT_FALSE(fs::exists(root / "pipe.partial"));
+  fs::remove_all(root);
+}
+
+// A file is written as <file>.partial first, which truncated a file of the user's by that name.
+// Inside a folder of ours (a resumed `paper` folder) such a file is an interrupted write of ours.
+TEST(WriteFileAtomic, APartialFileOfTheUsersIsNeverWrittenOver) {
+  const fs::path root = fresh_dir("partials");
+  fs::create_directories(root);
+  { std::ofstream(root / "map.png.partial") << "the user's"; }
+  EXPECT_THROW(write_file_atomic(root / "map.png", "png"), InvalidInputError);
+  EXPECT_FALSE(fs::exists(root / "map.png"));
+  std::ifstream kept(root / "map.png.partial");
+  EXPECT_EQ(std::string(std::istreambuf_iterator<char>(kept), {}), "the user's");
+  fs::create_symlink(root / "map.png.partial", root / "b.png.partial");
+  EXPECT_THROW(write_file_atomic(root / "b.png", "png"), InvalidInputError);
+
+  // Below a folder holding the output marker: left by an interrupted write, replaced.
+  const fs::path ours = root / "paper";
+  fs::create_directories(ours / "results");
+  { std::ofstream(ours / kOutputMarkerFile) << "x"; }
+  { std::ofstream(ours / "results" / "t.json.partial") << "half"; }
+  write_file_atomic(ours / "results" / "t.json", "whole");
+  EXPECT_EQ(sha256_file_hex(ours / "results" / "t.json"), sha256_hex("whole"));
+  EXPECT_FALSE(fs::exists(ours / "results" / "t.json.partial"));
   fs::remove_all(root);
 }
 
