@@ -7,8 +7,11 @@
 #include <unistd.h>
 
 #include <array>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
+#include <string_view>
 #include <system_error>
 
 #include "core/error.hpp"
@@ -33,20 +36,14 @@ int lock_folder(const fs::path& folder) {
   return fd;
 }
 
-// Where commit() sets a folder being replaced aside until the new one is in place.
-fs::path set_aside_path(const fs::path& final_path) { return final_path.string() + ".replaced"; }
-
-// Only an empty folder at the set-aside path is this run's to remove. Any other is a folder of
-// the user's (or a finished output named so), or the only copy of an output whose replacement a
-// power cut interrupted between commit()'s two renames. Checked before the work and at commit.
-void check_set_aside_free(const fs::path& final_path) {
-  const fs::path set_aside = set_aside_path(final_path);
-  std::error_code ec;
-  if (!fs::exists(fs::symlink_status(set_aside, ec))) return;
-  if (fs::is_directory(fs::symlink_status(set_aside, ec)) && fs::is_empty(set_aside, ec)) return;
-  throw InvalidInputError(set_aside.string() + ": exists, and replacing " + final_path.string() +
-                          " sets the old folder aside there first; move it away (it may be an "
-                          "earlier output whose replacement was interrupted)");
+// A marker file made in place (no `<file>.partial` and rename, which a kill could leave half
+// done): only its existence matters.
+void create_marker(const fs::path& file, std::string_view text) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd < 0) throw IoError(file.string() + ": cannot create: " + std::strerror(errno));
+  const bool written = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+  ::close(fd);
+  if (!written) throw IoError(file.string() + ": write failed");
 }
 
 // Whether the open descriptor `fd` is the folder now at `path`.
@@ -120,28 +117,19 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
       throw InvalidInputError(final_.string() + ": already exists (pass --force to replace it)");
     }
     check_folder_replaceable(final_);
-    check_set_aside_free(final_);  // now, not after the work
   }
-  staging_ = final_.string() + ".partial";
+  // Before the work: what is beside the output must be ours to remove when the time comes.
+  check_folders_beside(final_);
+  staging_ = staging_path_of(final_);
   const std::string busy =
       final_.string() + ": another wifislam run is writing this folder now (into " +
       staging_.string() + "); wait for it to finish or choose another output folder";
   if (fs::exists(fs::symlink_status(staging_, ec))) {
-    // Left over from an interrupted run: ours (it carries the unfinished marker from the start)
-    // or empty. A finished output of ours by that name (`-o x.partial`) is a folder the user
-    // did not ask to replace: it has no unfinished marker.
-    if (!fs::is_directory(fs::symlink_status(staging_, ec)) ||
-        !(fs::is_empty(staging_, ec) || has_unfinished_marker(staging_))) {
-      throw InvalidInputError(staging_.string() +
-                              ": exists and is not an unfinished wifislam output (no " +
-                              kUnfinishedMarkerFile +
-                              "); this run writes there first: move it away or choose another "
-                              "output folder");
-    }
-    // A run that is still writing holds the lock on its staging folder: leave it alone.
+    // Left over from an interrupted run (check_folders_beside: empty, or with the unfinished
+    // marker), or being written by a run now, which holds its lock: then it is left alone.
     const int leftover = lock_folder(staging_);
     if (leftover < 0) throw InvalidInputError(busy);
-    fs::remove_all(staging_, ec);
+    remove_folder_marker_last(staging_, kUnfinishedMarkerFile);
     ::close(leftover);
   }
   for (fs::path p = final_.parent_path(); p.has_relative_path() && !fs::exists(p, ec);
@@ -169,9 +157,9 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
     throw InvalidInputError(busy);
   }
   try {
-    write_file_atomic(staging_ / kUnfinishedMarkerFile,
-                      "Being written by wifislam, or left unfinished by a run that was "
-                      "interrupted; the next run into the same output removes it.\n");
+    create_marker(staging_ / kUnfinishedMarkerFile,
+                  "Being written by wifislam, or left unfinished by a run that was "
+                  "interrupted; the next run into the same output removes it.\n");
     write_file_atomic(staging_ / kOutputMarkerFile,
                       "Written by wifislam. `--force` may replace this folder.\n");
   } catch (...) {
@@ -194,8 +182,7 @@ void AtomicDirectory::remove_created_parents() {
 
 AtomicDirectory::~AtomicDirectory() {
   if (!committed_) {
-    std::error_code ec;
-    fs::remove_all(staging_, ec);
+    remove_folder_marker_last(staging_, kUnfinishedMarkerFile);
     remove_created_parents();
   }
   if (lock_fd_ >= 0) ::close(lock_fd_);
@@ -216,9 +203,10 @@ void AtomicDirectory::commit() {
       throw InvalidInputError(final_.string() + ": exists and is not a folder");
     }
     check_folder_replaceable(final_);
-    set_aside = set_aside_path(final_);
-    check_set_aside_free(final_);
-    fs::remove(set_aside, ec);  // an empty folder, if any
+    set_aside = set_aside_path_of(final_);
+    check_set_aside_free(final_);  // again: one may have come since the work began
+    // Empty, or a deletion that was cut short: finished now.
+    if (fs::exists(set_aside, ec)) remove_folder_marker_last(set_aside, kDiscardedMarkerFile);
     fs::rename(final_, set_aside, ec);
     if (ec) throw IoError(final_.string() + ": cannot replace: " + ec.message());
   }
@@ -229,7 +217,15 @@ void AtomicDirectory::commit() {
     throw IoError(final_.string() + ": cannot move finished folder into place: " + message);
   }
   committed_ = true;
-  if (!set_aside.empty()) fs::remove_all(set_aside, ec);
+  if (!set_aside.empty()) {
+    // Marked first, so that a deletion cut short (a second Ctrl-C) is finished by the next run.
+    try {
+      create_marker(set_aside / kDiscardedMarkerFile, "Replaced by a newer output; deleted.\n");
+    } catch (const Error&) {
+      // Not markable (read-only?): deleted all the same; only a cut-short deletion would stay.
+    }
+    remove_folder_marker_last(set_aside, kDiscardedMarkerFile);
+  }
   if (lock_fd_ >= 0) ::close(lock_fd_);
   lock_fd_ = -1;
 }

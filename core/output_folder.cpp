@@ -119,6 +119,64 @@ void check_folder_replaceable(const fs::path& resolved) {
   }
 }
 
+fs::path staging_path_of(const fs::path& final_path) { return final_path.string() + ".partial"; }
+fs::path set_aside_path_of(const fs::path& final_path) { return final_path.string() + ".replaced"; }
+
+namespace {
+
+/// Missing, or a folder that is empty or holds `marker`.
+bool missing_or_marked(const fs::path& folder, const char* marker) {
+  std::error_code ec;
+  const fs::file_status status = fs::symlink_status(folder, ec);
+  if (!fs::exists(status)) return true;
+  return fs::is_directory(status) && (is_empty_folder(folder) || is_regular(folder / marker));
+}
+
+}  // namespace
+
+void check_set_aside_free(const fs::path& resolved_final) {
+  const fs::path set_aside = set_aside_path_of(resolved_final);
+  if (!missing_or_marked(set_aside, kDiscardedMarkerFile)) {
+    throw InvalidInputError(fmt::format(
+        "{}: exists, and replacing {} sets the old folder aside there first; move it away (it "
+        "may be an earlier output whose replacement was interrupted)",
+        set_aside.string(), resolved_final.string()));
+  }
+}
+
+void check_folders_beside(const fs::path& resolved_final) {
+  const fs::path staging = staging_path_of(resolved_final);
+  if (!missing_or_marked(staging, kUnfinishedMarkerFile)) {
+    throw InvalidInputError(fmt::format(
+        "{}: exists, and this run writes its output there first; it is no unfinished output "
+        "of a run (no {}): a finished output named so, a folder of yours, or one an older "
+        "wifislam left. Move it away or remove it",
+        staging.string(), kUnfinishedMarkerFile));
+  }
+  std::error_code ec;
+  if (fs::exists(resolved_final, ec)) check_set_aside_free(resolved_final);
+}
+
+void remove_folder_marker_last(const fs::path& folder, const char* marker) {
+  std::error_code ec;
+  if (!fs::is_directory(fs::symlink_status(folder, ec))) {
+    // A link (an external system can put one where the run's folder was): the link goes, never
+    // what it names, as remove_all would have it.
+    fs::remove(folder, ec);
+    return;
+  }
+  const auto others = [&] {
+    std::vector<fs::path> entries;
+    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+      if (it->path().filename() != marker) entries.push_back(it->path());
+    return entries;
+  };
+  for (const fs::path& entry : others()) fs::remove_all(entry, ec);
+  if (!others().empty()) return;  // something could not go: the marker stays with it
+  fs::remove(folder / marker, ec);
+  fs::remove(folder, ec);
+}
+
 bool check_output_folder(const OutputFolderRequest& request) {
   if (request.path.empty()) throw InvalidInputError("output folder: the path is empty");
   std::error_code ec;
@@ -152,7 +210,10 @@ bool check_output_folder(const OutputFolderRequest& request) {
                       "); write it next to it instead");
     }
   }
-  if (!fs::exists(status)) return false;
+  if (!fs::exists(status)) {
+    check_folders_beside(out);
+    return false;
+  }
   if (!fs::is_directory(status)) {
     refuse(out, "exists and is not a folder; refusing to replace it");
   }
@@ -163,6 +224,7 @@ bool check_output_folder(const OutputFolderRequest& request) {
   }
   check_folder_replaceable(out);
   if (!request.force && !is_default) refuse(out, "already exists (pass --force to replace it)");
+  check_folders_beside(out);
   return true;
 }
 

@@ -32,6 +32,10 @@ inline constexpr const char* kOutputMarkerFile = ".wifislam-output";
 /// interrupted run was writing only when it holds this file. A finished output (which a user may
 /// have named `x.partial`, or renamed so) never does, and is never taken for a leftover.
 inline constexpr const char* kUnfinishedMarkerFile = ".wifislam-unfinished";
+/// Written into `<final>.replaced` (the folder --force replaced, set aside) once the new folder is
+/// in place, before it is deleted: a `<final>.replaced` holding it is one a deletion that was cut
+/// short (a second Ctrl-C, SIGKILL) left, and the next run finishes deleting it.
+inline constexpr const char* kDiscardedMarkerFile = ".wifislam-discarded";
 
 /// What a command is about to write, and what it reads.
 struct OutputFolderRequest {
@@ -91,6 +95,23 @@ void check_file_replaceable(const std::filesystem::path& path);
 /// and holds the marker or is empty. Throws InvalidInputError. AtomicDirectory
 /// applies this to every folder it replaces, whoever asked.
 void check_folder_replaceable(const std::filesystem::path& resolved);
+
+/// The folders AtomicDirectory uses beside `<final>` (resolved): `<final>.partial`, which it
+/// writes, and `<final>.replaced`, where it sets a `<final>` it replaces aside. Refuses
+/// (InvalidInputError) either when it holds anything no run of ours left: a `.partial` folder
+/// that is not empty and has no kUnfinishedMarkerFile (a finished output named so, a folder of
+/// the user's, or one an older wifislam left), or a `.replaced` one that is not empty and has no
+/// kDiscardedMarkerFile. check_output_folder calls it, so commands refuse before their work.
+void check_folders_beside(const std::filesystem::path& resolved_final);
+/// The `<final>.replaced` half of check_folders_beside (commit() checks it again).
+void check_set_aside_free(const std::filesystem::path& resolved_final);
+std::filesystem::path staging_path_of(const std::filesystem::path& final_path);
+std::filesystem::path set_aside_path_of(const std::filesystem::path& final_path);
+
+/// Removes `folder` with everything in it, `marker` (a file in it) last: a removal cut short by a
+/// kill leaves the marker in place with whatever is left, so the leftover is still known as ours.
+/// A `folder` that is a symbolic link is removed as the link, never followed.
+void remove_folder_marker_last(const std::filesystem::path& folder, const char* marker);
 
 /// Absolute path with symlinks, `.`, `..` and trailing slashes resolved as far as the path exists.
 std::filesystem::path resolve_path(const std::filesystem::path& path);

@@ -528,6 +528,8 @@ void run_external_job(const RunJob& job, const ComparisonOptions& options,
   if (result.ok) {
     try {
       evaluate_job(job, options, out_dir, finals, c);
+    } catch (const StoppedBySignal&) {
+      throw;  // Ctrl-C while scoring: not the run's status (a study would store it as finished)
     } catch (const Error& e) {  // what the system wrote cannot be scored
       c.status = finals.in_text(std::string("not scorable: ") + e.what());
       c.evaluation = {};

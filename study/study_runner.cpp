@@ -335,6 +335,9 @@ StudyRunSummary run_study(const StudyFile& study, const StudyRunOptions& options
                            cases.size(), todo[i].id, case_label(study, todo[i])));
     }
     const std::vector<ResultRow> rows = run_case(study, todo[i], scratch, slam_jobs);
+    // A stop that came while the case ran, wherever it was noticed (or not), keeps the case out
+    // of the database: rows of a run cut short must never read as a finished case.
+    throw_if_stop_requested();
     std::lock_guard lock(mutex);
     store.write_case(todo[i], rows);
     ++done;

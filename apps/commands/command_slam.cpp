@@ -14,6 +14,7 @@
 #include "apps/option_validators.hpp"
 #include "core/stop_signal.hpp"
 #include "interop/external_run.hpp"
+#include "interop/external_system.hpp"
 #include "slam/frontend/front_end_registry.hpp"
 #include "slam/slam_options.hpp"
 #include "study/slam_run.hpp"
@@ -58,9 +59,12 @@ void run(const SlamArgs& args) {
   request.on_frame = [tty](std::int64_t frames) {
     if (tty && frames % 30 == 0) fmt::print(stderr, "\rslam: {} frames", frames);
   };
-  // Ctrl-C or SIGTERM stops the run at its next event (an external system is stopped in turn)
-  // and removes the unfinished run folder; a folder being replaced stays as it was.
-  const StopOnSignal stop_on_signal;
+  // An external system's run folder is written while it runs: Ctrl-C or SIGTERM stops the
+  // system and removes that unfinished folder (a folder being replaced stays as it was). Our
+  // own front ends write theirs only after the run, so there the signals keep ending the process
+  // at once (building a scene's world before the first frame takes seconds, unchecked).
+  std::optional<StopOnSignal> stop_on_signal;
+  if (interop::is_external_frontend(request.options.frontend)) stop_on_signal.emplace();
   const study::SlamRunResult result = study::run_slam_to_folder(request);
   if (result.external) {
     const interop::ExternalRunResult& external = *result.external;

@@ -543,13 +543,27 @@ def read_trajectory(path: PathLike) -> np.ndarray:
     return _wifislam._read_trajectory(_path(path, "read_trajectory"))
 
 
+def _nested_numbers(value: Any, what: str) -> np.ndarray:
+    """Nested lists as numpy reads them, refused unless every element is a number: a float
+    dtype would have taken strings ("1.5"), None (as NaN: no reading) and booleans silently, and
+    numpy's own errors (ragged lists) name no argument."""
+    try:
+        array = np.asarray(value)
+    except (ValueError, OverflowError) as e:
+        raise _wifislam.InvalidInputError(f"{what}: not an array of numbers ({e})") from None
+    if array.dtype.kind not in "iuf":
+        raise _wifislam.InvalidInputError(
+            f"{what}: expected numbers, got {array.dtype.name} elements")
+    return array
+
+
 @checked
 def encode_rgb_png(rgb: np.ndarray) -> bytes:
     """The PNG bytes ``generate`` writes for this colour image (H x W x 3 uint8 RGB)."""
     if not isinstance(rgb, np.ndarray):
         # Nested lists of whole numbers are numpy's int64: uint8 when every value fits, else
         # left for the binding to refuse. An array keeps its dtype (and the check of it).
-        rgb = np.asarray(rgb)
+        rgb = _nested_numbers(rgb, "encode_rgb_png(): rgb")
         if rgb.dtype.kind in "iu" and rgb.size and rgb.min() >= 0 and rgb.max() <= 255:
             rgb = rgb.astype(np.uint8)
     return _wifislam._encode_rgb_png(np.ascontiguousarray(rgb))
@@ -560,8 +574,8 @@ def encode_depth_png(depth: np.ndarray) -> bytes:
     """The 16-bit TUM depth PNG bytes (5000 per metre, 0 = no reading) ``generate`` writes for
     this depth image (H x W float metres, NaN = no reading). 16 bits at 5000 per metre end at
     13.107 m: a farther depth is stored as 0, no reading, as the dataset writer stores it."""
-    if not isinstance(depth, np.ndarray):
-        depth = np.asarray(depth, dtype=np.float64)  # nested lists: metres, whole or not
+    if not isinstance(depth, np.ndarray):  # nested lists: metres, whole or not
+        depth = _nested_numbers(depth, "encode_depth_png(): depth").astype(np.float64)
     return _wifislam._encode_depth_png(np.asarray(depth))
 
 

@@ -192,6 +192,53 @@ TEST_F(StopSignalCli, StudyRunStoppedInACaseRemovesTheCasesFolderAndKeepsTheData
   EXPECT_NE(cases.err.find("0 of the study's 1 cases"), std::string::npos) << cases.err;
 }
 
+// `study run` of an external system stopped while the system's run is being scored: the stop was
+// taken for the run's own failure ("not scorable: stopped by SIGTERM"), the case was stored as
+// finished with no numbers, and a rerun skipped it. The system pads its trajectory with 3 million
+// poses past the route's end, so that scoring takes seconds and the stop lands in it.
+TEST_F(StopSignalCli, StudyRunStoppedWhileARunIsScoredStoresNoRowForTheCase) {
+  const fs::path system = scratch_ / "padded.yaml", db = scratch_ / "study.sqlite";
+  test::write_file(scratch_ / "padded.sh",
+                   "cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\n"
+                   "tail -n 1 \"$1/groundtruth.txt\" | awk '{for (i = 1; i <= 3000000; i++) "
+                   "printf \"%.6f %s %s %s %s %s %s %s\\n\", $1 + i * 1e-6, $2, $3, $4, $5, $6, "
+                   "$7, $8}' >> \"$2/trajectory.txt\"\n");
+  test::write_file(system,
+                   "version: 1\nname: padded\ncommand: [/bin/sh, \"{system_dir}/padded.sh\", "
+                   "\"{dataset}\", \"{out}\"]\nwifi: false\n"
+                   "outputs: {trajectory: trajectory.txt}\n");
+  const fs::path file = scratch_ / "external.yaml";
+  test::write_file(file, "version: 1\nname: external\nscene: " + std::string(WIFISLAM_SCENES_DIR) +
+                             "/a_hall.yaml\nlevel: slam\naxes:\n  system: [" + system.string() +
+                             "]\nslam: {fps: 3, max_frames: 10}\n");
+  const fs::path err = scratch_ / "stderr.txt";
+  Child child;
+  start(child, {"study", "run", file.string(), "-q", "-o", db.string()}, err);
+  ASSERT_GT(child.pid, 0);
+  // The run folder is in place (its run.json written last) and its scoring under way.
+  const auto run_in_place = [&] {
+    std::error_code ec;
+    for (fs::recursive_directory_iterator it(db.string() + ".work", ec), end; !ec && it != end;
+         it.increment(ec))
+      if (it->path().filename() == "run.json" && it->path().parent_path().filename() == "vanilla")
+        return true;
+    return false;
+  };
+  test::wait_until(
+      std::chrono::seconds(120), [&] { return run_in_place() || child.ended(); },
+      std::chrono::milliseconds(5));
+  ASSERT_FALSE(child.reaped) << "ended before its run was scored: " << test::read_file(err);
+  ASSERT_EQ(::kill(child.pid, SIGTERM), 0);
+  child.wait();
+  ASSERT_TRUE(WIFSIGNALED(child.status)) << "ended before the signal: " << test::read_file(err);
+  EXPECT_EQ(WTERMSIG(child.status), SIGTERM);
+  EXPECT_FALSE(fs::exists(db.string() + ".work"));
+  const auto merged = test::run_wifislam(
+      "study merge " + db.string() + " -o " + (scratch_ / "merged.sqlite").string(), scratch_);
+  EXPECT_NE(merged.err.find("0 of the study's 1 cases"), std::string::npos)
+      << "the stopped case was stored: " << merged.err;
+}
+
 // An external system compare waits for: SIGTERM to wifislam used to end it and, through the
 // kernel, the system's supervisor; under the stop guard wifislam lives on, so it passes the stop
 // on. Without that it waited for the system (here 300 s) before it stopped.

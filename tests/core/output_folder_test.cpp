@@ -357,11 +357,13 @@ TEST_F(OutputFolderRule, FoldersBesideTheOutputAreRemovedOnlyWhenARunLeftThem) {
     AtomicDirectory refused(out, false);
     ADD_FAILURE() << "a finished output named exp.partial was taken for a leftover";
   } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("not an unfinished wifislam output"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("no unfinished output of a run"), std::string::npos)
         << e.what();
   }
   EXPECT_TRUE(fs::exists(named_partial / "notes.txt"));
   EXPECT_FALSE(fs::exists(out));
+  // Commands say so before their work (a slam run writes its folder only at the end).
+  EXPECT_TRUE(refusal({out, false, {}, {}}));
 
   // What an interrupted run leaves (both markers) is removed by the next run, as before.
   fs::remove_all(named_partial);
@@ -380,6 +382,7 @@ TEST_F(OutputFolderRule, FoldersBesideTheOutputAreRemovedOnlyWhenARunLeftThem) {
   // kept, and the replacement refused before the work, or at the commit if it came since.
   const fs::path replaced = tool_folder("exp.replaced");
   EXPECT_THROW(AtomicDirectory(out, true), InvalidInputError);
+  EXPECT_TRUE(refusal({out, true, {}, {}}));
   EXPECT_FALSE(fs::exists(out.string() + ".partial"));
   fs::rename(replaced, root_ / "elsewhere");
   {
@@ -401,6 +404,38 @@ TEST_F(OutputFolderRule, FoldersBesideTheOutputAreRemovedOnlyWhenARunLeftThem) {
   }
   EXPECT_TRUE(fs::exists(out / "new.txt"));
   EXPECT_FALSE(fs::exists(replaced));
+
+  // A deletion of the set-aside folder that a second Ctrl-C cut short left its marker (deleted
+  // last) and some of the old output: the next replacement finishes it.
+  fs::create_directories(replaced / "rgb");
+  std::ofstream(replaced / "rgb" / "1.png") << "old";
+  std::ofstream(replaced / kDiscardedMarkerFile) << "x";
+  EXPECT_FALSE(refusal({out, true, {}, {}}));
+  {
+    AtomicDirectory dir(out, true);
+    std::ofstream(dir.staging_path() / "newer.txt") << "newer";
+    dir.commit();
+  }
+  EXPECT_TRUE(fs::exists(out / "newer.txt"));
+  EXPECT_FALSE(fs::exists(replaced));
+}
+
+// Folders of ours are removed with their marker last (so that a removal a kill cuts short leaves
+// a folder still known as ours); nested folders and all, nothing stays. A link is not followed.
+TEST_F(OutputFolderRule, AFolderOfOursIsRemovedWithEverythingInIt) {
+  const fs::path dir = root_ / "left";
+  for (const char* name : {"a", "b", "rgb/1.png", "rgb/2.png", "z"}) {
+    fs::create_directories((dir / name).parent_path());
+    std::ofstream(dir / name) << name;
+  }
+  std::ofstream(dir / kUnfinishedMarkerFile) << "x";
+  const fs::path link = root_ / "link";
+  fs::create_directory_symlink(dir, link);
+  remove_folder_marker_last(link, kUnfinishedMarkerFile);  // the link only
+  EXPECT_FALSE(fs::exists(fs::symlink_status(link)));
+  EXPECT_TRUE(fs::exists(dir / "rgb" / "1.png"));
+  remove_folder_marker_last(dir, kUnfinishedMarkerFile);
+  EXPECT_FALSE(fs::exists(dir));
 }
 
 // A folder another run is writing (its staging folder, named as an output with --force) is not

@@ -178,6 +178,9 @@ def test_an_array_argument_takes_arrays_and_nested_lists_only(a_hall, small_data
         wifislam.encode_rgb_png([[[300, 0, 0]]])  # no uint8: not taken modulo 256
     with pytest.raises(ValueError):
         wifislam.encode_depth_png(depth.astype(np.int64))  # an array keeps its dtype's check
+    for bad in ([["1.5", "2"]], [[None, 1.0]], [[True, False]], [[1.0], [1.0, 2.0]], [[10**400]]):
+        with pytest.raises(wifislam.InvalidInputError, match=r"^encode_depth_png\(\): depth"):
+            wifislam.encode_depth_png(bad)
 
 
 def test_whole_numbers_outside_what_the_module_holds_name_the_range(tmp_path, a_hall,
