@@ -107,8 +107,20 @@ void write_files_atomic(const std::vector<std::pair<fs::path, std::string_view>>
 
 AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrite_(overwrite) {
   if (final_path.empty()) throw InvalidInputError("output folder: the path is empty");
-  final_ = resolve_path(final_path);
   std::error_code ec;
+  // Resolving a link named as the output would replace the folder it points to, wherever that
+  // is: an external system that left `eval` as a link in its run folder made the evaluation
+  // replace the link's target. Commands refuse links first (check_output_folder); every writer
+  // of a folder comes here.
+  fs::path named = final_path;
+  while (named.has_relative_path() && (!named.has_filename() || named.filename() == "."))
+    named = named.parent_path();
+  if (fs::is_symlink(fs::symlink_status(named, ec))) {
+    throw InvalidInputError(named.string() +
+                            ": is a symbolic link; refusing to write or replace a folder "
+                            "through it");
+  }
+  final_ = resolve_path(final_path);
   if (fs::exists(final_, ec)) {
     if (!fs::is_directory(final_, ec)) {
       throw InvalidInputError(final_.string() + ": exists and is not a folder");
@@ -129,8 +141,12 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
     // marker), or being written by a run now, which holds its lock: then it is left alone.
     const int leftover = lock_folder(staging_);
     if (leftover < 0) throw InvalidInputError(busy);
-    remove_folder_marker_last(staging_, kUnfinishedMarkerFile);
+    const std::string failed = remove_folder_marker_last(staging_, kUnfinishedMarkerFile);
     ::close(leftover);
+    if (!failed.empty()) {
+      throw IoError(staging_.string() + ": left by an interrupted run, and it cannot be removed (" +
+                    failed + "); remove it yourself");
+    }
   }
   for (fs::path p = final_.parent_path(); p.has_relative_path() && !fs::exists(p, ec);
        p = p.parent_path())
@@ -192,11 +208,12 @@ void AtomicDirectory::commit() {
   // The last point where a command stopped by Ctrl-C can still leave nothing (core/stop_signal).
   throw_if_stop_requested();
   std::error_code ec;
-  // From here on the folder is finished: nothing may take it for a leftover once in place.
-  if (!fs::remove(staging_ / kUnfinishedMarkerFile, ec) && ec) {
-    throw IoError((staging_ / kUnfinishedMarkerFile).string() + ": cannot remove: " + ec.message());
-  }
   fs::path set_aside;  // the folder being replaced, until the new one is in place
+  if (fs::is_symlink(fs::symlink_status(final_, ec))) {
+    throw InvalidInputError(final_.string() +
+                            ": became a symbolic link while the output was written; refusing "
+                            "to replace a folder through it");
+  }
   if (fs::exists(final_, ec)) {
     if (!overwrite_) throw InvalidInputError(final_.string() + ": already exists");
     if (!fs::is_directory(final_, ec)) {
@@ -206,9 +223,22 @@ void AtomicDirectory::commit() {
     set_aside = set_aside_path_of(final_);
     check_set_aside_free(final_);  // again: one may have come since the work began
     // Empty, or a deletion that was cut short: finished now.
-    if (fs::exists(set_aside, ec)) remove_folder_marker_last(set_aside, kDiscardedMarkerFile);
+    if (fs::exists(set_aside, ec)) {
+      if (const std::string failed = remove_folder_marker_last(set_aside, kDiscardedMarkerFile);
+          !failed.empty()) {
+        throw IoError(set_aside.string() + ": cannot be removed (" + failed + "), and replacing " +
+                      final_.string() + " needs its place");
+      }
+    }
     fs::rename(final_, set_aside, ec);
     if (ec) throw IoError(final_.string() + ": cannot replace: " + ec.message());
+  }
+  // From here on the folder is finished: nothing may take it for a leftover once in place.
+  // Removed last of all, so that a kill before this point leaves a leftover the next run removes.
+  if (!fs::remove(staging_ / kUnfinishedMarkerFile, ec) && ec) {
+    const std::string message = ec.message();
+    if (!set_aside.empty()) fs::rename(set_aside, final_, ec);
+    throw IoError((staging_ / kUnfinishedMarkerFile).string() + ": cannot remove: " + message);
   }
   fs::rename(staging_, final_, ec);
   if (ec) {

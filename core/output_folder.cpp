@@ -146,35 +146,60 @@ void check_set_aside_free(const fs::path& resolved_final) {
 
 void check_folders_beside(const fs::path& resolved_final) {
   const fs::path staging = staging_path_of(resolved_final);
-  if (!missing_or_marked(staging, kUnfinishedMarkerFile)) {
-    throw InvalidInputError(fmt::format(
-        "{}: exists, and this run writes its output there first; it is no unfinished output "
-        "of a run (no {}): a finished output named so, a folder of yours, or one an older "
-        "wifislam left. Move it away or remove it",
-        staging.string(), kUnfinishedMarkerFile));
-  }
   std::error_code ec;
+  if (!missing_or_marked(staging, kUnfinishedMarkerFile)) {
+    // Finished but not in place: a run killed between its last two steps (or a power cut) left
+    // the new output here and, when it was replacing one, the old one at <final>.replaced.
+    const bool interrupted_commit =
+        has_output_marker(staging) &&
+        (!fs::exists(resolved_final, ec) || fs::exists(set_aside_path_of(resolved_final), ec));
+    throw InvalidInputError(
+        interrupted_commit
+            ? fmt::format("{}: exists and holds a finished output: one named so, or one never "
+                          "moved into place (its run stopped at its very end); rename it to {} "
+                          "if it is the one you want{}, or move it away",
+                          staging.string(), resolved_final.string(),
+                          fs::exists(set_aside_path_of(resolved_final), ec)
+                              ? " (the folder it replaced is " +
+                                    set_aside_path_of(resolved_final).string() + ")"
+                              : "")
+            : fmt::format("{}: exists, and this run writes its output there first; it is no "
+                          "unfinished output of a run (no {}): a finished output named so, a "
+                          "folder of yours, or one an older wifislam left. Move it away or "
+                          "remove it",
+                          staging.string(), kUnfinishedMarkerFile));
+  }
   if (fs::exists(resolved_final, ec)) check_set_aside_free(resolved_final);
 }
 
-void remove_folder_marker_last(const fs::path& folder, const char* marker) {
+std::string remove_folder_marker_last(const fs::path& folder, const char* marker) {
   std::error_code ec;
   if (!fs::is_directory(fs::symlink_status(folder, ec))) {
     // A link (an external system can put one where the run's folder was): the link goes, never
     // what it names, as remove_all would have it.
     fs::remove(folder, ec);
-    return;
+    return ec ? folder.string() + ": " + ec.message() : std::string();
   }
+  // Everything but the marker; an entry that could not be listed or removed keeps the marker.
+  std::string failure;
   const auto others = [&] {
     std::vector<fs::path> entries;
-    for (fs::directory_iterator it(folder, ec), end; !ec && it != end; it.increment(ec))
+    fs::directory_iterator it(folder, ec), end;
+    for (; !ec && it != end; it.increment(ec))
       if (it->path().filename() != marker) entries.push_back(it->path());
+    if (ec && failure.empty()) failure = folder.string() + ": " + ec.message();
     return entries;
   };
-  for (const fs::path& entry : others()) fs::remove_all(entry, ec);
-  if (!others().empty()) return;  // something could not go: the marker stays with it
+  for (const fs::path& entry : others()) {
+    fs::remove_all(entry, ec);
+    if (ec && failure.empty()) failure = entry.string() + ": " + ec.message();
+  }
+  if (!failure.empty()) return failure;
+  if (const std::vector<fs::path> left = others(); !left.empty() || !failure.empty())
+    return failure.empty() ? left.front().string() + ": still there" : failure;
   fs::remove(folder / marker, ec);
-  fs::remove(folder, ec);
+  if (!ec) fs::remove(folder, ec);
+  return ec ? folder.string() + ": " + ec.message() : std::string();
 }
 
 bool check_output_folder(const OutputFolderRequest& request) {
@@ -296,8 +321,8 @@ void check_file_replaceable(const fs::path& path) {
   const fs::file_status existing = fs::symlink_status(partial, ec);
   if (!fs::exists(existing)) return;
   bool ours = false;
-  for (fs::path folder = fs::absolute(path, ec).parent_path(); !ours && folder.has_relative_path();
-       folder = folder.parent_path())
+  for (fs::path folder = resolve_path(fs::absolute(path, ec).parent_path());
+       !ours && folder.has_relative_path(); folder = folder.parent_path())
     ours = has_output_marker(folder);
   if (!fs::is_regular_file(existing) || !ours) {
     throw InvalidInputError(partial.string() + ": exists, and " + path.string() +

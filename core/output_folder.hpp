@@ -111,7 +111,9 @@ std::filesystem::path set_aside_path_of(const std::filesystem::path& final_path)
 /// Removes `folder` with everything in it, `marker` (a file in it) last: a removal cut short by a
 /// kill leaves the marker in place with whatever is left, so the leftover is still known as ours.
 /// A `folder` that is a symbolic link is removed as the link, never followed.
-void remove_folder_marker_last(const std::filesystem::path& folder, const char* marker);
+/// Returns "" once the folder is gone, else the first entry that could not be listed or removed
+/// and why (the folder then keeps its marker).
+std::string remove_folder_marker_last(const std::filesystem::path& folder, const char* marker);
 
 /// Absolute path with symlinks, `.`, `..` and trailing slashes resolved as far as the path exists.
 std::filesystem::path resolve_path(const std::filesystem::path& path);

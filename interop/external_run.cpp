@@ -167,6 +167,10 @@ ExternalRunResult run_external_system(const ExternalRunRequest& request) {
   for (const std::string& a : argv) shown_argv.push_back(final_text(a));
   std::error_code ec;
   fs::remove_all(staging / run_folder::kRun, ec);  // ours to write, whatever the system left there
+  // So is the evaluation compare and study run write into the run folder later: a link the system
+  // left at eval/ made that evaluation replace the folder it named (remove_all takes the link).
+  for (const char* name : {"eval", "eval.partial", "eval.replaced"})
+    fs::remove_all(staging / name, ec);
   write_file_atomic(staging / run_folder::kRun,
                     run_json(request, shown_argv, result, imported, staging).dump(1) + "\n");
   folder.commit();

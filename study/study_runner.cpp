@@ -181,7 +181,13 @@ fs::path fresh_case_folder(const fs::path& scratch_dir, const StudyCase& c) {
           fmt::format("{}: exists and was not made by wifislam (no {} in it); move it away",
                       work.string(), kOutputMarkerFile));
     }
-    fs::remove_all(work);
+    if (const std::string failed = remove_folder_marker_last(work, kOutputMarkerFile);
+        !failed.empty()) {
+      throw IoError(work.string() +
+                    ": left by an earlier attempt at this case, and it cannot be "
+                    "removed (" +
+                    failed + ")");
+    }
   }
   fs::create_directories(work);
   write_file_atomic(work / kOutputMarkerFile, "study case scratch folder\n");
@@ -251,15 +257,16 @@ std::vector<ResultRow> run_case(const StudyFile& study, const StudyCase& c,
     // Stopped under `study run`'s guard (Ctrl-C, or Slurm's SIGTERM): the case is not finished
     // and a rerun starts it over, so its datasets and runs go now. After any other error they
     // stay to be looked at, until the rerun replaces them.
+    // Marker last: a removal cut short (a second Ctrl-C) leaves a folder still known as ours.
+    remove_folder_marker_last(work, kOutputMarkerFile);
     std::error_code ec;
-    fs::remove_all(work, ec);
     fs::remove(scratch_dir, ec);  // only when empty: other shards' cases may be in it
     throw;
   }
   std::vector<ResultRow> rows;
   for (const ComparisonCase& run : result.cases)
     rows.push_back(slam_run_row(study, run.wifi, run.status, run.evaluation, scene_hash));
-  fs::remove_all(work);
+  remove_folder_marker_last(work, kOutputMarkerFile);
   return rows;
 }
 

@@ -191,8 +191,8 @@ class GroupRunner {
       runs += run_study(planned_[s], files[s], *stores[s], todo[s], scene_hash, dataset, work);
       times[to_string(planned_[s].experiment->part)] += seconds_since(part_start);
     }
-    std::error_code ec;
-    fs::remove_all(work, ec);
+    remove_folder_marker_last(work,
+                              kOutputMarkerFile);  // marker last: a cut-short removal stays ours
     return runs;
   }
 
@@ -208,7 +208,11 @@ class GroupRunner {
             fmt::format("{}: exists and was not made by wifislam (no {}); move it away",
                         work.string(), kOutputMarkerFile));
       }
-      fs::remove_all(work);
+      if (const std::string failed = remove_folder_marker_last(work, kOutputMarkerFile);
+          !failed.empty()) {
+        throw IoError(work.string() + ": left by an interrupted run, and it cannot be removed (" +
+                      failed + ")");
+      }
     }
     fs::create_directories(work);
     write_file_atomic(work / kOutputMarkerFile, "paper scratch folder\n");

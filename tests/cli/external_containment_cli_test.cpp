@@ -228,6 +228,26 @@ TEST_F(ExternalContainment, ASystemThatLinksItsFoldersElsewhereMakesUsDeleteNoth
   }
 }
 
+// compare (and study run) write each run's evaluation into <run>/eval after the system ran: a link
+// the system left there made that evaluation replace the folder it named, a finished output of
+// ours anywhere on disk, with its notes.
+TEST_F(ExternalContainment, AnEvalLinkTheSystemLeavesIsNeverFollowed) {
+  const fs::path victim = scratch_ / "victim";
+  fs::create_directories(victim);
+  write_file(victim / ".wifislam-output", "a finished output of ours\n");
+  write_file(victim / "notes.txt", "mine\n");
+  const fs::path system = system_file("cp \"$1/groundtruth.txt\" \"$2/trajectory.txt\"\nln -s \"" +
+                                          victim.string() + "\" \"$2/../../eval\"\n",
+                                      "{trajectory: trajectory.txt}");
+  const test::CliResult r = test::run_wifislam(
+      "compare " + std::string(WIFISLAM_SCENES_DIR) + "/a_hall.yaml --frontend external:" +
+          system.string() + " --fps 3 --max-frames 4 --no-plots -q -o " + (scratch_ / "c").string(),
+      scratch_);
+  EXPECT_EQ(read_file(victim / "notes.txt"), "mine\n") << r.err;
+  EXPECT_FALSE(fs::exists(victim / "metrics.json")) << "the evaluation went through the link";
+  EXPECT_EQ(r.exit_code, 0) << r.err;
+}
+
 TEST_F(ExternalContainment, AFifoSystemFileIsRefusedAtOnce) {
   const fs::path fifo = scratch_ / "system.yaml";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);

@@ -357,8 +357,7 @@ TEST_F(OutputFolderRule, FoldersBesideTheOutputAreRemovedOnlyWhenARunLeftThem) {
     AtomicDirectory refused(out, false);
     ADD_FAILURE() << "a finished output named exp.partial was taken for a leftover";
   } catch (const InvalidInputError& e) {
-    EXPECT_NE(std::string(e.what()).find("no unfinished output of a run"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("holds a finished output"), std::string::npos) << e.what();
   }
   EXPECT_TRUE(fs::exists(named_partial / "notes.txt"));
   EXPECT_FALSE(fs::exists(out));
@@ -436,6 +435,44 @@ TEST_F(OutputFolderRule, AFolderOfOursIsRemovedWithEverythingInIt) {
   EXPECT_TRUE(fs::exists(dir / "rgb" / "1.png"));
   remove_folder_marker_last(dir, kUnfinishedMarkerFile);
   EXPECT_FALSE(fs::exists(dir));
+}
+
+// Every writer of a folder goes through AtomicDirectory, not only the commands that check their
+// output first: an external system that left `eval` in its run folder as a link to a finished
+// output of ours made the evaluation replace that output.
+TEST_F(OutputFolderRule, AtomicDirectoryNeverReplacesAFolderThroughALink) {
+  const fs::path victim = tool_folder("victim");
+  fs::create_directory_symlink(victim, root_ / "eval");
+  for (const fs::path& spelling : {root_ / "eval", fs::path(root_.string() + "/eval/."),
+                                   fs::path(root_.string() + "/eval/")}) {
+    try {
+      AtomicDirectory refused(spelling, true);
+      ADD_FAILURE() << spelling << " was written through";
+    } catch (const InvalidInputError& e) {
+      EXPECT_NE(std::string(e.what()).find("symbolic link"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_TRUE(fs::exists(victim / "data.txt"));
+  EXPECT_FALSE(fs::exists(victim.string() + ".partial"));
+}
+
+// A run stopped between its last two steps leaves its finished output in <out>.partial without
+// the unfinished marker: the refusal says what it is and what to do, not "a folder of yours".
+TEST_F(OutputFolderRule, AFinishedOutputNeverMovedIntoPlaceIsNamedAsSuch) {
+  const fs::path out = root_ / "ds";
+  tool_folder("ds.partial");
+  const auto message = refusal({out, false, {}, {}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("never moved into place"), std::string::npos) << *message;
+  EXPECT_NE(message->find("rename it to " + out.string()), std::string::npos) << *message;
+  EXPECT_TRUE(fs::exists(root_ / "ds.partial" / "data.txt"));
+  // A folder of the user's by that name (no output marker) is named as what it may be.
+  fs::remove_all(root_ / "ds.partial");
+  user_folder("ds.partial");
+  const auto user = refusal({out, false, {}, {}});
+  ASSERT_TRUE(user);
+  EXPECT_NE(user->find("a folder of yours"), std::string::npos) << *user;
+  EXPECT_TRUE(fs::exists(root_ / "ds.partial" / "thesis.tex"));
 }
 
 // A folder another run is writing (its staging folder, named as an output with --force) is not
