@@ -147,6 +147,21 @@ void check_set_aside_free(const fs::path& resolved_final) {
 void check_folders_beside(const fs::path& resolved_final) {
   const fs::path staging = staging_path_of(resolved_final);
   std::error_code ec;
+  // Both may be removed (a leftover, a replaced folder): never while they hold the current
+  // directory or the home folder (a shell left inside a leftover `ds.partial`).
+  std::vector<fs::path> kept = home_folders();
+  if (const fs::path cwd = fs::current_path(ec); !ec) kept.push_back(resolve_path(cwd));
+  for (const fs::path& beside : {staging, set_aside_path_of(resolved_final)}) {
+    for (const fs::path& folder : kept) {
+      if (is_within(folder, beside)) {
+        throw InvalidInputError(fmt::format(
+            "{}: holds {}, and this run may remove it (it writes {} first and sets a folder it "
+            "replaces aside as {}); run it from elsewhere",
+            beside.string(), folder.string(), staging.string(),
+            set_aside_path_of(resolved_final).string()));
+      }
+    }
+  }
   if (!missing_or_marked(staging, kUnfinishedMarkerFile)) {
     // Finished but not in place: a run killed between its last two steps (or a power cut) left
     // the new output here and, when it was replacing one, the old one at <final>.replaced.
@@ -230,6 +245,14 @@ bool check_output_folder(const OutputFolderRequest& request) {
     if (input.empty()) continue;
     const fs::path in = resolve_path(input);
     if (in == out) refuse(out, "is an input of this command (" + input.string() + ")");
+    // A leftover <out>.partial (read with --no-verify) or a <out>.replaced given as the input:
+    // this run would remove it.
+    for (const fs::path& beside : {staging_path_of(out), set_aside_path_of(out)}) {
+      if (is_within(in, beside)) {
+        refuse(out, "this run writes or sets aside " + beside.string() +
+                        ", which is or holds an input of this command (" + input.string() + ")");
+      }
+    }
     if (!(is_default && in == container) && is_within(out, in)) {
       refuse(out, "lies inside an input of this command (" + input.string() +
                       "); write it next to it instead");

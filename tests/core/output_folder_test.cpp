@@ -475,6 +475,27 @@ TEST_F(OutputFolderRule, AFinishedOutputNeverMovedIntoPlaceIsNamedAsSuch) {
   EXPECT_TRUE(fs::exists(root_ / "ds.partial" / "thesis.tex"));
 }
 
+// The folders beside an output that a run may remove never hold an input or the current folder:
+// `slam ds.partial --no-verify -o ds` read a leftover dataset and then removed it as a leftover.
+TEST_F(OutputFolderRule, FoldersBesideTheOutputNeverHoldAnInputOrTheCurrentFolder) {
+  const fs::path leftover = root_ / "ds.partial";
+  fs::create_directories(leftover);
+  std::ofstream(leftover / kUnfinishedMarkerFile) << "x";
+  std::ofstream(leftover / "rgb.txt") << "frames";
+  const auto message = refusal({root_ / "ds", false, {}, {leftover}});
+  ASSERT_TRUE(message);
+  EXPECT_NE(message->find("holds an input"), std::string::npos) << *message;
+  EXPECT_TRUE(refusal({root_ / "ds", false, {}, {leftover / "rgb.txt"}}));
+  const fs::path before = fs::current_path();
+  fs::current_path(leftover);
+  const auto from_inside = refusal({root_ / "ds", false, {}, {}});
+  EXPECT_THROW(AtomicDirectory(root_ / "ds", false), InvalidInputError);
+  fs::current_path(before);
+  ASSERT_TRUE(from_inside);
+  EXPECT_NE(from_inside->find("run it from elsewhere"), std::string::npos) << *from_inside;
+  EXPECT_TRUE(fs::exists(leftover / "rgb.txt"));
+}
+
 // A folder another run is writing (its staging folder, named as an output with --force) is not
 // replaced: that run lost its folder and failed with "write failed (disk full?)".
 TEST_F(OutputFolderRule, AnotherRunsStagingFolderIsNeverReplaced) {
