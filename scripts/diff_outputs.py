@@ -61,7 +61,8 @@ def mask_lines(text):
             heading_about_time = bool(TIME_TEXT.search(line))
         if not line.startswith("|"):
             time_columns = None
-            out.append(NUMBER.sub("<n>", line) if TIME_TEXT.search(line) else line)
+            # A time line's padding follows its numbers' widths: collapsed with them.
+            out.append(re.sub(r" {2,}", " ", NUMBER.sub("<n>", line)) if TIME_TEXT.search(line) else line)
             continue
         cells = line.split("|")
         if time_columns is None:

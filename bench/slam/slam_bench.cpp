@@ -6,20 +6,26 @@
 // Environment: WIFISLAM_BENCH_SCENE (default c_hall), WIFISLAM_BENCH_FPS (default 30),
 // WIFISLAM_BENCH_MAX_FRAMES (default 900; -1 = the whole route), WIFISLAM_BENCH_SET
 // (comma-separated key=value SLAM options).
+//
+// Also: frame-to-frame descriptor matching against OpenCV's BFMatcher on the same descriptors.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "sim/generate/generator_stream.hpp"
 #include "sim/scene/scene_loader.hpp"
+#include "slam/feature/orb_feature_extractor.hpp"
+#include "slam/match/descriptor_matcher.hpp"
 #include "slam/system/slam_system.hpp"
 
 namespace {
@@ -114,6 +120,66 @@ void BM_RgbdslamVersusBareOrb(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_RgbdslamVersusBareOrb)->Iterations(1)->Unit(benchmark::kSecond);
+
+/// Frame-to-frame matching (slam/match's match_descriptors) against OpenCV's BFMatcher knnMatch
+/// (k = 2), which it replaced with the same matches, on the ORB features of two c_hall frames 0.5 m
+/// apart (one second of walking): the two alternate, and the ratio of their median times is the
+/// figure.
+void BM_MatchDescriptorsVersusBfMatcher(benchmark::State& state) {
+  const sim::scene::Scene scene =
+      sim::scene::load_scene_file(std::string(WIFISLAM_SCENES_DIR) + "/c_hall.yaml");
+  sim::generate::GenerateOptions generate;
+  generate.fps = 1;
+  generate.max_frames = 15;  // the robot waits 10 s, then walks at 0.5 m/s
+  sim::generate::GeneratorStream stream(scene, generate);
+  const slam::SlamOptions options;
+  const slam::feature::OrbFeatureExtractor extractor(options.features, stream.intrinsics());
+  std::vector<slam::feature::FrameFeatures> frames;
+  while (std::optional<SensorEvent> event = stream.next()) {
+    if (const auto* frame = std::get_if<RgbdFrame>(&*event))
+      frames.push_back(extractor.extract(*frame));
+  }
+  const slam::feature::FrameFeatures& query = frames[frames.size() - 2];
+  const slam::feature::FrameFeatures& train = frames.back();
+  cv::Mat train_with_depth;
+  for (std::size_t i = 0; i < train.size(); ++i) {
+    if (train.has_depth[i]) train_with_depth.push_back(train.descriptors.row(static_cast<int>(i)));
+  }
+  const auto seconds_of = [](const auto& work) {
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  std::vector<double> ours_s, opencv_s;
+  std::size_t matches = 0;
+  for (auto _ : state) {
+    for (int round = 0; round < 51; ++round) {
+      ours_s.push_back(seconds_of([&] {
+        matches = slam::match::match_descriptors(query, train, options.transform.matching).size();
+      }));
+      opencv_s.push_back(seconds_of([&] {
+        std::vector<std::vector<cv::DMatch>> knn;
+        cv::BFMatcher(cv::NORM_HAMMING, false)
+            .knnMatch(query.descriptors, train_with_depth, knn, 2);
+        benchmark::DoNotOptimize(knn.data());
+      }));
+    }
+  }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
+  };
+  const double ours = median(ours_s), opencv = median(opencv_s);
+  state.counters["ours_ms"] = 1000.0 * ours;
+  state.counters["bfmatcher_ms"] = 1000.0 * opencv;
+  state.counters["ours_over_bfmatcher"] = ours / opencv;
+  std::printf(
+      "\nmatch_descriptors, %zu x %d descriptors (%zu matches): %.3f ms, BFMatcher knnMatch "
+      "%.3f ms, ratio %.2f (medians of %zu)\n",
+      query.size(), train_with_depth.rows, matches, 1000.0 * ours, 1000.0 * opencv, ours / opencv,
+      ours_s.size());
+}
+BENCHMARK(BM_MatchDescriptorsVersusBfMatcher)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

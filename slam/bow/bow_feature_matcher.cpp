@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstring>
 #include <limits>
+
+#include "slam/match/packed_descriptor.hpp"
 
 namespace wifislam::slam::bow {
 
 std::vector<match::PackedDescriptor> pack_descriptors(const cv::Mat& descriptors) {
   std::vector<match::PackedDescriptor> out(static_cast<std::size_t>(descriptors.rows));
-  for (int r = 0; r < descriptors.rows; ++r) std::memcpy(out[r].data(), descriptors.ptr(r), 32);
+  for (int r = 0; r < descriptors.rows; ++r) out[r] = match::packed_descriptor(descriptors, r);
   return out;
 }
 

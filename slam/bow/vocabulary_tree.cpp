@@ -16,6 +16,7 @@
 #include "core/atomic_file.hpp"
 #include "core/error.hpp"
 #include "core/rng.hpp"
+#include "slam/match/packed_descriptor.hpp"
 
 namespace wifislam::slam::bow {
 
@@ -26,12 +27,6 @@ constexpr std::uint32_t kFormatVersion = 1;
 constexpr std::size_t kHeaderBytes = 8 + 6 * 4 + 8;
 constexpr std::size_t kNodeBytes = 4 + 32 + 8 + 4;
 constexpr std::size_t kChecksumBytes = 64;
-
-match::PackedDescriptor packed_row(const cv::Mat& descriptors, int row) {
-  match::PackedDescriptor out{};
-  std::memcpy(out.data(), descriptors.ptr(row), 32);
-  return out;
-}
 
 void check_descriptors(const cv::Mat& m) {
   if (!m.empty() && (m.type() != CV_8U || m.cols != 32)) {
@@ -138,7 +133,7 @@ VocabularyTree VocabularyTree::train(const std::vector<cv::Mat>& images,
   for (std::size_t i = 0; i < images.size(); ++i) {
     check_descriptors(images[i]);
     for (int r = 0; r < images[i].rows; ++r) {
-      all.push_back(packed_row(images[i], r));
+      all.push_back(match::packed_descriptor(images[i], r));
       image_of.push_back(static_cast<std::uint32_t>(i));
     }
   }
@@ -249,7 +244,7 @@ BowVector VocabularyTree::transform(const cv::Mat& descriptors, FeatureVector* d
   const int direct_level = std::max(1, depth_ - levels_up);
   for (int r = 0; r < descriptors.rows; ++r) {
     NodeId at_level = 0;
-    const NodeId leaf = descend(packed_row(descriptors, r), direct_level, &at_level);
+    const NodeId leaf = descend(match::packed_descriptor(descriptors, r), direct_level, &at_level);
     const Node& node = nodes_[leaf];
     v[node.word] += node.idf;
     if (direct_index) (*direct_index)[at_level].push_back(r);

@@ -1,5 +1,6 @@
 #pragma once
-// Brute-force Hamming matching of ORB descriptors with Lowe's ratio test (OpenCV BFMatcher).
+// Brute-force Hamming matching of ORB descriptors with Lowe's ratio test (the matches of OpenCV's
+// BFMatcher knnMatch, k = 2).
 
 #include <vector>
 

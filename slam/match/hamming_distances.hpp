@@ -1,7 +1,8 @@
 #pragma once
 // Hamming distances between 256-bit binary descriptors (ORB), the inner loop of every exhaustive
-// descriptor search: the vocabulary tree's descent and training (slam/bow) and the incremental
-// RTAB-Map vocabulary's quantisation (nearest_two).
+// descriptor search: the vocabulary tree's descent and training (slam/bow), and nearest_two for
+// the incremental RTAB-Map vocabulary's quantisation and for frame-to-frame matching
+// (descriptor_matcher.hpp).
 
 #include <array>
 #include <bit>
@@ -29,7 +30,8 @@ struct NearestTwo {
 };
 
 /// Descriptors stored as four lanes: lanes[k][w] is 64-bit word k of descriptor w. The
-/// exhaustive 2-nearest search over them (RTAB-Map's vocabulary quantisation): AVX-512
+/// exhaustive 2-nearest search over them (RTAB-Map's vocabulary quantisation, frame-to-frame
+/// matching): AVX-512
 /// VPOPCNTDQ eight descriptors at a time where the CPU has it (checked at run time), else popcnt
 /// one at a time; the same result either way.
 NearestTwo nearest_two(const std::uint64_t* query, const std::uint64_t* const lanes[4],

@@ -8,19 +8,9 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "slam/match/hamming_distances.hpp"
+#include "slam/match/packed_descriptor.hpp"
 
 namespace wifislam::slam::frontend::rtabmap {
-
-namespace {
-
-std::array<std::uint64_t, 4> packed(const cv::Mat& descriptors, int row) {
-  std::array<std::uint64_t, 4> out{};
-  std::memcpy(out.data(), descriptors.ptr(row), 32);
-  return out;
-}
-
-}  // namespace
 
 VisualVocabulary::VisualVocabulary(double nndr_ratio) : nndr_ratio_(nndr_ratio) {}
 
@@ -32,7 +22,7 @@ NodeWords VisualVocabulary::add_node(NodeId node, const cv::Mat& descriptors) {
   }
   refresh_dictionary();
   for (int i = 0; i < descriptors.rows; ++i) {
-    const std::array<std::uint64_t, 4> query = packed(descriptors, i);
+    const match::PackedDescriptor query = match::packed_descriptor(descriptors, i);
     // Every word of the dictionary, including those this node founded a moment ago.
     const std::uint64_t* const lanes[4] = {dictionary_lanes_[0].data(), dictionary_lanes_[1].data(),
                                            dictionary_lanes_[2].data(),
