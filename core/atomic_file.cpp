@@ -112,11 +112,8 @@ AtomicDirectory::AtomicDirectory(fs::path final_path, bool overwrite) : overwrit
   // is: an external system that left `eval` as a link in its run folder made the evaluation
   // replace the link's target. Commands refuse links first (check_output_folder); every writer
   // of a folder comes here.
-  fs::path named = final_path;
-  while (named.has_relative_path() && (!named.has_filename() || named.filename() == "."))
-    named = named.parent_path();
-  if (fs::is_symlink(fs::symlink_status(named, ec))) {
-    throw InvalidInputError(named.string() +
+  if (const fs::path link = link_named_by(final_path); !link.empty()) {
+    throw InvalidInputError(link.string() +
                             ": is a symbolic link; refusing to write or replace a folder "
                             "through it");
   }

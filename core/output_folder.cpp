@@ -217,21 +217,25 @@ std::string remove_folder_marker_last(const fs::path& folder, const char* marker
   return ec ? folder.string() + ": " + ec.message() : std::string();
 }
 
+fs::path link_named_by(const fs::path& path) {
+  fs::path named = path;
+  while (named.has_relative_path() && (!named.has_filename() || named.filename() == "."))
+    named = named.parent_path();
+  std::error_code ec;
+  return fs::is_symlink(fs::symlink_status(named, ec)) ? named : fs::path();
+}
+
 bool check_output_folder(const OutputFolderRequest& request) {
   if (request.path.empty()) throw InvalidInputError("output folder: the path is empty");
   std::error_code ec;
   // Replacing a symbolic link's path replaces the folder it points to, wherever that is: a link
   // at eval's default <run>/eval to a dataset emptied the dataset without --force. The folder
   // itself must be named.
-  // "link/", "link/." and "link/./" all name the link.
-  fs::path named = request.path;
-  while (named.has_relative_path() && (!named.has_filename() || named.filename() == "."))
-    named = named.parent_path();
-  if (fs::is_symlink(fs::symlink_status(named, ec))) {
-    const fs::path target = fs::read_symlink(named, ec);
-    refuse(named, "is a symbolic link (to " + target.string() +
-                      "); refusing to write through it: give the folder itself, or remove the "
-                      "link");
+  if (const fs::path link = link_named_by(request.path); !link.empty()) {
+    const fs::path target = fs::read_symlink(link, ec);
+    refuse(link, "is a symbolic link (to " + target.string() +
+                     "); refusing to write through it: give the folder itself, or remove the "
+                     "link");
   }
   const fs::path out = resolve_path(request.path);
   const fs::file_status status = fs::status(out, ec);
@@ -248,7 +252,7 @@ bool check_output_folder(const OutputFolderRequest& request) {
     // A leftover <out>.partial (read with --no-verify) or a <out>.replaced given as the input:
     // this run would remove it.
     for (const fs::path& beside : {staging_path_of(out), set_aside_path_of(out)}) {
-      if (is_within(in, beside)) {
+      if (request.staged_beside && is_within(in, beside)) {
         refuse(out, "this run writes or sets aside " + beside.string() +
                         ", which is or holds an input of this command (" + input.string() + ")");
       }
@@ -259,7 +263,7 @@ bool check_output_folder(const OutputFolderRequest& request) {
     }
   }
   if (!fs::exists(status)) {
-    check_folders_beside(out);
+    if (request.staged_beside) check_folders_beside(out);
     return false;
   }
   if (!fs::is_directory(status)) {
@@ -272,7 +276,7 @@ bool check_output_folder(const OutputFolderRequest& request) {
   }
   check_folder_replaceable(out);
   if (!request.force && !is_default) refuse(out, "already exists (pass --force to replace it)");
-  check_folders_beside(out);
+  if (request.staged_beside) check_folders_beside(out);
   return true;
 }
 

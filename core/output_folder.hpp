@@ -64,6 +64,11 @@ struct OutputFolderRequest {
   /// Only that one: eval of a trajectory file inside the ground truth's dataset must not write
   /// its default <file>_eval into that dataset.
   std::filesystem::path default_container;
+  /// The folder is written through AtomicDirectory, which stages it in `<out>.partial` and sets
+  /// the old one aside as `<out>.replaced`: what lies there is checked too (check_folders_beside).
+  /// False for a folder a command writes in place (`paper` continues its own folder), which never
+  /// touches those paths.
+  bool staged_beside = true;
 };
 
 /// Applies the rule above. Returns true when the folder exists and may be replaced, false when
@@ -114,6 +119,11 @@ std::filesystem::path set_aside_path_of(const std::filesystem::path& final_path)
 /// Returns "" once the folder is gone, else the first entry that could not be listed or removed
 /// and why (the folder then keeps its marker).
 std::string remove_folder_marker_last(const std::filesystem::path& folder, const char* marker);
+
+/// The symbolic link `path` names, or an empty path when it names none. "link", "link/", "link/."
+/// and "link/./" all name the link: resolved, a trailing slash would go through it, and a folder
+/// written or replaced through a link is the link's target, wherever that is.
+std::filesystem::path link_named_by(const std::filesystem::path& path);
 
 /// Absolute path with symlinks, `.`, `..` and trailing slashes resolved as far as the path exists.
 std::filesystem::path resolve_path(const std::filesystem::path& path);

@@ -360,7 +360,10 @@ void prepare_paper_folder(const PaperRunOptions& options) {
   if (options.jobs < 1) throw InvalidInputError("paper: --jobs must be >= 1");
   const bool exists = fs::exists(dir);
   if (exists && options.force) {
-    check_output_folder({dir, true, {}, {}});
+    // Replaced in place, below: <dir>.partial and <dir>.replaced are not this command's.
+    OutputFolderRequest request(dir, /*force=*/true, {}, {});
+    request.staged_beside = false;
+    check_output_folder(request);
     // --force starts a paper folder over; any other folder of ours (a dataset, a run) is not
     // one to replace here, whatever its marker says.
     if (fs::is_directory(dir) && !fs::is_empty(dir) && !fs::exists(dir / folder::kIdentity)) {

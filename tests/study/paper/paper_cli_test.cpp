@@ -132,9 +132,15 @@ TEST_F(PaperCli, AFolderMadeAtOneFrameRateIsNotContinuedAtAnother) {
   r = wifislam("paper -o " + dir.string() + " --parts fabmap --twins c_hall --fps 2 -q");
   EXPECT_EQ(r.exit_code, 2) << r.err;
   EXPECT_NE(r.err.find("made with --fps 1"), std::string::npos) << r.err;
-  // --force starts over.
+  // --force starts over, in place: folders of the user's named like AtomicDirectory's staging and
+  // set-aside folders beside it are neither a reason to refuse nor touched.
+  test::write_file(scratch_ / "p.partial" / "notes.txt", "mine");
+  test::write_file(scratch_ / "p.replaced" / "notes.txt", "mine too");
   r = wifislam("paper -o " + dir.string() + " --parts fabmap --twins c_hall --fps 2 -q --force");
   EXPECT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir / "localize" / "c_hall-seed1001" / "summary.json"));
+  EXPECT_EQ(test::read_file(scratch_ / "p.partial" / "notes.txt"), "mine");
+  EXPECT_EQ(test::read_file(scratch_ / "p.replaced" / "notes.txt"), "mine too");
 }
 
 }  // namespace
