@@ -99,27 +99,27 @@ void bind_scene(py::module_& m) {
                              [](const sim::scene::Scene& s) { return s.source_path; })
       // Pickled as its resolved YAML (what a dataset's scene.yaml holds, and what loads back to
       // the same scene) and the file it came from: multiprocessing's spawn and forkserver
-      // workers, and copy.deepcopy, take a Scene as they take a Frame.
-      .def(py::pickle(
-          [](const sim::scene::Scene& s) {
-            return py::make_tuple(sim::scene::resolved_scene_yaml(s), s.source_path);
-          },
-          [](const py::tuple& state) {
-            if (state.size() != 2 || !py::isinstance<py::str>(state[0]) ||
-                !py::isinstance<py::str>(state[1]))
-              throw InvalidInputError("Scene: not a pickled wifislam.Scene");
-            const auto source_path = state[1].cast<std::string>();
-            // Located errors of the copy name the resolved text, whose lines are not the file's.
-            auto scene = std::make_shared<sim::scene::Scene>(sim::scene::load_scene_yaml(
-                state[0].cast<std::string>(),
-                source_path.empty() ? "<pickled scene>" : "<pickled copy of " + source_path + ">"));
-            scene->source_path = source_path;
-            return scene;
-          }))
+      // workers, and copy.deepcopy, take a Scene as they take a Frame. wifislam/__init__.py's
+      // Scene.__reduce__ pairs this state with _scene_unpickled, a factory: pickling through
+      // __new__ and __setstate__ would need Scene.__new__, which gives an instance without a
+      // scene (pybind11 allocates the value only when __init__ or __setstate__ builds it), and
+      // any method of one crashed the interpreter. The package replaces __new__ with a TypeError.
+      .def("_pickle_state",
+           [](const sim::scene::Scene& s) {
+             return py::make_tuple(sim::scene::resolved_scene_yaml(s), s.source_path);
+           })
       .def("__repr__", [](const sim::scene::Scene& s) {
         return "<wifislam.Scene '" + s.name + "' seed " + std::to_string(s.seed) +
                (s.source_path.empty() ? "" : " from " + s.source_path) + ">";
       });
+  m.def("_scene_unpickled", [](const std::string& resolved_yaml, const std::string& source_path) {
+    // Located errors of the copy name the resolved text, whose lines are not the file's.
+    auto scene = std::make_shared<sim::scene::Scene>(sim::scene::load_scene_yaml(
+        resolved_yaml,
+        source_path.empty() ? "<pickled scene>" : "<pickled copy of " + source_path + ">"));
+    scene->source_path = source_path;
+    return scene;
+  });
 }
 
 }  // namespace wifislam::python

@@ -138,6 +138,28 @@ _scene_from_yaml.__qualname__ = "Scene.from_yaml"
 Scene.from_yaml = staticmethod(checked(_scene_from_yaml))
 
 
+def _scene_from_pickle(resolved_yaml: str, source_path: str) -> Scene:
+    """What pickle and copy call to rebuild a Scene (Scene.__reduce__): a module-level function,
+    so that a pickle names it by reference."""
+    return _wifislam._scene_unpickled(resolved_yaml, source_path)
+
+
+def _scene_reduce(scene: Scene) -> tuple:
+    return (_scene_from_pickle, scene._pickle_state())
+
+
+def _scene_new(cls: type, *args: Any, **kwargs: Any) -> Scene:
+    # pybind11's own __new__ gives an instance that holds no scene, and any method of it crashed
+    # the interpreter: a Scene is only ever made by the factories (which do not go through
+    # __new__) and by unpickling (which calls _scene_from_pickle).
+    raise TypeError("wifislam.Scene cannot be created directly: use Scene.load(path), "
+                    "Scene.from_dict(d) or Scene.from_yaml(text)")
+
+
+Scene.__reduce__ = _scene_reduce
+Scene.__new__ = staticmethod(_scene_new)
+
+
 def channel_of(frequency_khz: int) -> int:
     """The IEEE 802.11 channel number of a centre frequency in kHz (2.4 GHz: 2412 MHz is
     channel 1, 2484 MHz channel 14; 5 GHz: 5000 MHz + 5 MHz per channel, 5005 to 5930 MHz;

@@ -2,6 +2,8 @@
 
 import json
 import os
+import subprocess
+import sys
 
 import pytest
 
@@ -79,13 +81,33 @@ def test_a_source_name_labels_messages_and_is_no_input(tmp_path, c_hall):
     assert os.path.isdir(info["dataset"])
 
 
+def test_a_scene_is_made_only_by_its_factories():
+    # pybind11's own __new__ gave an instance holding no scene, and its first method call crashed
+    # the interpreter (SIGSEGV); run in a child so that a crash fails this test, not the suite.
+    code = ("import wifislam\n"
+            "for make in (lambda: wifislam.Scene.__new__(wifislam.Scene), wifislam.Scene):\n"
+            "    try:\n"
+            "        make().name\n"
+            "    except TypeError as e:\n"
+            "        print(e)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          timeout=60)
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert len(lines) == 2, done.stdout
+    for line in lines:
+        assert "use Scene.load(path), Scene.from_dict(d) or Scene.from_yaml(text)" in line
+
+
 def test_a_scene_pickles_and_copies_to_the_same_scene(tmp_path, c_hall):
     # multiprocessing's spawn and forkserver workers pickle their arguments.
     import copy
     import pickle
 
     scene = wifislam.Scene.load(c_hall)
-    for again in (pickle.loads(pickle.dumps(scene)), copy.deepcopy(scene)):
+    copies = [pickle.loads(pickle.dumps(scene, protocol))
+              for protocol in range(pickle.HIGHEST_PROTOCOL + 1)]
+    for again in copies + [copy.copy(scene), copy.deepcopy(scene)]:
         assert again.to_yaml() == scene.to_yaml()
         assert again.source_path == scene.source_path
     built = wifislam.Scene.from_dict(scene.to_dict(), "mine")
