@@ -61,8 +61,10 @@ def mask_lines(text):
             heading_about_time = bool(TIME_TEXT.search(line))
         if not line.startswith("|"):
             time_columns = None
-            # A time line's padding follows its numbers' widths: collapsed with them.
-            out.append(re.sub(r" {2,}", " ", NUMBER.sub("<n>", line)) if TIME_TEXT.search(line) else line)
+            # A time line's padding before a number follows the widths of the numbers before it:
+            # collapsed with them (a line's indentation is kept and still compared).
+            out.append(NUMBER.sub("<n>", re.sub(r"(?<=\S) {2,}(?=-?\d)", " ", line))
+                       if TIME_TEXT.search(line) else line)
             continue
         cells = line.split("|")
         if time_columns is None:

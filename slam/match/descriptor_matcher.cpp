@@ -10,11 +10,17 @@ namespace wifislam::slam::match {
 
 namespace {
 
-/// ORB's descriptors, as the feature extractor writes them (frame_features.hpp).
-void check_orb_descriptors(const cv::Mat& descriptors, const char* side) {
-  if (!are_orb_descriptors(descriptors)) {
+/// ORB's descriptors, one row per keypoint, as the feature extractor writes them
+/// (frame_features.hpp): rows are read by keypoint index without bounds checks.
+void check_orb_descriptors(const feature::FrameFeatures& features, const char* side) {
+  if (!are_orb_descriptors(features.descriptors)) {
     throw Error(std::string("match_descriptors: the ") + side +
                 " descriptors are not 32-byte ORB descriptors (CV_8U, 32 columns)");
+  }
+  if (static_cast<std::size_t>(features.descriptors.rows) != features.size() ||
+      features.has_depth.size() != features.size()) {
+    throw Error(std::string("match_descriptors: the ") + side +
+                " frame's descriptors, keypoints and depth flags differ in number");
   }
 }
 
@@ -25,8 +31,8 @@ std::vector<FeatureMatch> match_descriptors(const feature::FrameFeatures& query,
                                             const MatchOptions& options) {
   std::vector<FeatureMatch> out;
   if (query.descriptors.empty() || train.descriptors.empty()) return out;
-  check_orb_descriptors(query.descriptors, "query");
-  check_orb_descriptors(train.descriptors, "train");
+  check_orb_descriptors(query, "query");
+  check_orb_descriptors(train, "train");
 
   // Only train keypoints with depth take part, so the ratio test compares usable candidates.
   std::vector<int> train_rows;

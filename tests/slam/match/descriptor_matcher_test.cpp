@@ -95,7 +95,7 @@ TEST(MatchDescriptors, FindsOpenCvBruteForceMatchersMatchesTiesIncluded) {
   EXPECT_GT(compared, 500u);
 }
 
-TEST(MatchDescriptors, RefusesDescriptorsThatAreNotOrbs) {
+TEST(MatchDescriptors, RefusesDescriptorsThatAreNotOrbsOrNotOnePerKeypoint) {
   std::mt19937_64 rng(3);
   const feature::FrameFeatures orb = random_features(10, false, rng);
   feature::FrameFeatures other = orb;
@@ -104,6 +104,10 @@ TEST(MatchDescriptors, RefusesDescriptorsThatAreNotOrbs) {
   EXPECT_THROW(match::match_descriptors(other, orb, {}), Error);
   other.descriptors = cv::Mat::zeros(10, 32, CV_32F);
   EXPECT_THROW(match::match_descriptors(orb, other, {}), Error);
+  // A descriptor row per keypoint: fewer rows would be read past the matrix's end.
+  other.descriptors = orb.descriptors.rowRange(0, 9).clone();
+  EXPECT_THROW(match::match_descriptors(orb, other, {}), Error);
+  EXPECT_THROW(match::match_descriptors(other, orb, {}), Error);
 }
 
 }  // namespace
