@@ -8,6 +8,7 @@
 #include <mutex>
 #include <optional>
 #include <stdexcept>
+#include <variant>
 #include <vector>
 
 #include <pybind11/numpy.h>
@@ -41,6 +42,8 @@ class FrameSource {
  public:
   virtual ~FrameSource() = default;
   virtual SensorStream& stream() = 0;
+  /// The stream's next event (a source may add events of its own).
+  virtual std::optional<SensorEvent> next_event() { return stream().next(); }
   /// Ground truth of the frame just read, if known.
   virtual std::optional<Pose> ground_truth(const RgbdFrame& frame) const = 0;
   virtual void rewind() = 0;
@@ -90,7 +93,7 @@ class FrameSource {
  private:
   std::optional<GatheredFrame> gather() {
     GatheredFrame out;
-    while (std::optional<SensorEvent> event = stream().next()) {
+    while (std::optional<SensorEvent> event = next_event()) {
       if (auto* scan = std::get_if<WifiScan>(&*event)) {
         out.scans.push_back(std::move(*scan));
       } else if (auto* reading = std::get_if<OdometryReading>(&*event)) {
@@ -190,7 +193,38 @@ class DatasetSource final : public FrameSource {
     }
   }
   SensorStream& stream() override { return reader_; }
-  void rewind() override { reader_.rewind(); }
+  /// A dataset generated without images (`images=False`, `--no-images`) streams no frames: its
+  /// frames are then its ground-truth stamps, which are the frame times the simulator used, so
+  /// a Dataset of such a folder gives the frames a Simulator with images=False gives (poses,
+  /// scans and odometry; rgb and depth None), ordered as every stream orders its events (at
+  /// one stamp: odometry, then Wi-Fi, then the frame).
+  std::optional<SensorEvent> next_event() override {
+    if (!pose_only()) return reader_.next();
+    if (!pending_ && !reader_done_) {
+      pending_ = reader_.next();
+      reader_done_ = !pending_;
+    }
+    const bool frame_left = next_pose_ < ground_truth_.size();
+    if (pending_ && (!frame_left || event_time(*pending_) <= ground_truth_[next_pose_].time)) {
+      std::optional<SensorEvent> event = std::move(pending_);
+      pending_.reset();
+      return event;
+    }
+    if (!frame_left) return std::nullopt;
+    RgbdFrame frame;
+    frame.index = static_cast<std::int64_t>(next_pose_);
+    frame.time = ground_truth_[next_pose_++].time;
+    return SensorEvent{std::move(frame)};
+  }
+  void rewind() override {
+    reader_.rewind();
+    pending_.reset();
+    reader_done_ = false;
+    next_pose_ = 0;
+  }
+  std::int64_t frame_count() const {
+    return pose_only() ? static_cast<std::int64_t>(ground_truth_.size()) : reader_.frame_count();
+  }
   void check_unchanged() const override {
     // A pass reads the files again; the frame count, ground truth and checks are those of the
     // folder as it was opened. One replaced or removed since would mix the two.
@@ -212,11 +246,20 @@ class DatasetSource final : public FrameSource {
   const Trajectory& ground_truth_trajectory() const { return ground_truth_; }
 
  private:
+  bool pose_only() const { return reader_.manifest() && !reader_.manifest()->images; }
+  static Timestamp event_time(const SensorEvent& event) {
+    return std::visit([](const auto& e) { return e.time; }, event);
+  }
+
   fs::path folder_;
   std::vector<std::pair<std::int64_t, std::int64_t>> state_;
   DatasetReader reader_;
   Trajectory ground_truth_;
   std::map<std::int64_t, Pose> by_stamp_;
+  // Pose-only datasets: the reader's next event, held while earlier frames go first.
+  std::optional<SensorEvent> pending_;
+  bool reader_done_ = false;
+  std::size_t next_pose_ = 0;
 };
 
 py::dict intrinsics_dict(const CameraIntrinsics& k) {
@@ -276,7 +319,7 @@ void bind_streams(py::module_& m) {
                }),
                py::arg("folder"), py::arg("verify"), py::arg("load_images"))
           .def_property_readonly("frame_count",
-                                 [](DatasetSource& d) { return d.reader().frame_count(); })
+                                 [](DatasetSource& d) { return d.frame_count(); })
           .def_property_readonly("wifi_scan_count",
                                  [](DatasetSource& d) { return d.reader().wifi_scan_count(); })
           .def_property_readonly("ground_truth", [](const DatasetSource& d) {

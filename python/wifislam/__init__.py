@@ -345,7 +345,9 @@ class Dataset(_Frames):
 
     Opening checks the folder as ``wifislam slam`` does (manifest SHA-256 sums unless
     ``verify=False``, every list file line by line) and raises ParseError naming the file and
-    line. ``ground_truth`` is groundtruth.txt as an N x 8 array of TUM rows.
+    line. ``ground_truth`` is groundtruth.txt as an N x 8 array of TUM rows. A folder generated
+    with ``images=False`` (``--no-images``) has a frame per ground-truth pose, the frames a
+    ``Simulator`` with ``images=False`` gives: rgb and depth None.
     """
 
     @checked

@@ -126,3 +126,27 @@ def test_reprs_say_what_a_source_is_and_frames_compare_as_objects(small_dataset,
     # The module's own helpers (typing, numpy, os) are not listed as its API.
     assert "np" not in dir(wifislam) and "Optional" not in dir(wifislam)
     assert "Dataset" in dir(wifislam) and "generate" in dir(wifislam)
+
+
+def test_a_dataset_without_images_gives_the_simulators_pose_only_frames(tmp_path, c_hall):
+    # It gave no frame at all: the frames of such a folder are its ground-truth stamps.
+    settings = {"fps": 2.0, "max_frames": 40}
+    folder = tmp_path / "no_images"
+    wifislam.generate(c_hall, folder, images=False, **settings)
+    simulated = list(wifislam.Simulator(c_hall, images=False, **settings))
+    dataset = wifislam.Dataset(folder)
+    read_back = list(dataset)
+    assert len(dataset) == len(read_back) == len(simulated) == settings["max_frames"]
+    assert "(0 frames" not in repr(dataset) and "40 frames>" in repr(dataset)
+    assert sum(len(f.scans) for f in simulated) > 0, "the test needs c_hall's first pauses"
+    assert sum(len(f.odometry) for f in simulated) > 0
+    for sim, disk in zip(simulated, read_back):
+        assert (disk.index, disk.stamp_ns) == (sim.index, sim.stamp_ns)
+        assert disk.rgb is None and disk.depth is None
+        assert np.allclose(sim.pose, disk.pose, atol=1e-6)
+        assert sim.scans == disk.scans
+        assert [t for t, _ in sim.odometry] == [t for t, _ in disk.odometry]
+        for (_, a), (_, b) in zip(sim.odometry, disk.odometry):
+            assert np.allclose(a, b, atol=1e-6)
+    # A second pass gives the same frames.
+    assert [f.stamp_ns for f in dataset] == [f.stamp_ns for f in read_back]
