@@ -392,7 +392,7 @@ class Renderer:
                frame_index: int = 0) -> Tuple[np.ndarray, np.ndarray]:
         """(rgb, depth) seen from ``pose`` (4 x 4 camera-to-world, optical frame): H x W x 3
         uint8 RGB, and H x W float32 metres with NaN where the sensor has no reading."""
-        return self._renderer.render(np.asarray(pose, dtype=np.float64), noise, frame_index)
+        return self._renderer.render(_real_array(pose, "render(): pose"), noise, frame_index)
 
     @checked
     def camera_pose(self, x_m: float, y_m: float, yaw_deg: float,
@@ -525,7 +525,7 @@ def evaluate(estimate: TrajectoryLike, ground_truth: TrajectoryLike, align: str 
 def _trajectory_arg(value: TrajectoryLike, what: str):
     if _is_path(value):
         return _path(value, what)
-    return np.asarray(value, dtype=np.float64)
+    return _real_array(value, f"evaluate(): {what}")
 
 
 @checked
@@ -579,6 +579,13 @@ def _nested_numbers(value: Any, what: str) -> np.ndarray:
         raise _wifislam.InvalidInputError(
             f"{what}: expected numbers, got {array.dtype.name} elements")
     return array
+
+
+def _real_array(value: Any, what: str) -> np.ndarray:
+    """Poses and trajectories as float64, refused unless every element is a number: a float64
+    conversion dropped a complex value's imaginary part with a warning only, and read strings
+    ("1.5") and booleans as numbers."""
+    return _nested_numbers(value, what).astype(np.float64, copy=False)
 
 
 @checked

@@ -162,6 +162,32 @@ def test_numpy_scalars_and_number_kinds_pass_as_python_ones(a_hall):
     assert wifislam.camera_pose(a_hall, np.float64(2), 1, np.int32(30)).shape == (4, 4)
 
 
+def test_poses_and_trajectories_take_real_numbers_only(a_hall, small_dataset):
+    # A complex pose rendered its real part with numpy's ComplexWarning only; strings and
+    # booleans were read as numbers.
+    import warnings
+    pose = wifislam.camera_pose(a_hall, 2.0, 1.5, 30)
+    truth = wifislam.Dataset(small_dataset).ground_truth
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a warning on the way is a failure too
+        for bad, kind in ((pose.astype(np.complex128), "complex128"),
+                          (pose.astype(str), "str"), (pose > 0, "bool")):
+            with pytest.raises(wifislam.InvalidInputError,
+                               match=rf"render\(\): pose: expected numbers, got {kind}"):
+                wifislam.render(a_hall, bad)
+        with pytest.raises(wifislam.InvalidInputError,
+                           match=r"evaluate\(\): estimate: expected numbers, got complex128"):
+            wifislam.evaluate(truth + 1e-3j, truth)
+        with pytest.raises(wifislam.InvalidInputError,
+                           match=r"evaluate\(\): ground_truth: expected numbers, got object"):
+            wifislam.evaluate(truth, [[None] * 8] * 3)
+        # Real numbers of any width still pass, as the float64 they are.
+        assert wifislam.evaluate(truth.tolist(), truth) == wifislam.evaluate(truth, truth)
+        assert np.array_equal(wifislam.render(a_hall, pose.astype(np.float32), noise=False)[0],
+                              wifislam.render(a_hall, pose.astype(np.float32).astype(np.float64),
+                                              noise=False)[0])
+
+
 def test_an_array_argument_takes_arrays_and_nested_lists_only(a_hall, small_dataset):
     with pytest.raises(TypeError, match=r"evaluate\(\): estimate takes a path .* or an array "):
         wifislam.evaluate({}, small_dataset)
