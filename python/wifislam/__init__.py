@@ -441,6 +441,18 @@ class RadioMap:
                 self.origin_m[1] + self.resolution_m * (row + 0.5))
 
 
+def _band_text(band: float) -> str:
+    """A band given as a number, in GHz, as the command line spells it: 5.0 is "5", 2.4 is
+    "2.4", each compared at the number's own precision (np.float32(2.4) is 2.4). Any other
+    number keeps all its digits for the band check to refuse: a rounding format read
+    2.40000001 as 2.4."""
+    kind = band.dtype.type if isinstance(band, np.floating) else float
+    for ghz, text in ((2.4, "2.4"), (5.0, "5")):
+        if kind(band) == kind(ghz):
+            return text
+    return repr(float(band))
+
+
 @checked
 def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
               ap: Optional[int] = None, band: Union[str, float] = "best",
@@ -450,8 +462,7 @@ def radio_map(scene: Union[Scene, PathLike], resolution_m: float = 0.25,
     receiver at ``height_m`` (default: the camera's height, where datasets scan) above the floor
     of ``level`` (a scene with ``levels:``; default: the route's level), hearing every level's
     access points."""
-    # A number is the band in GHz as the command line spells it: 5.0 is "5", 2.4 is "2.4".
-    band_text = band if isinstance(band, str) else f"{float(band):g}"
+    band_text = band if isinstance(band, str) else _band_text(band)
     raw = _wifislam._radio_map(_scene(scene), resolution_m, ap, band_text, height_m, str(level))
     return RadioMap(raw["rssi_dbm"], raw["best_ap_id"], tuple(raw["origin_m"]),
                     raw["resolution_m"], tuple(raw["access_points"]))

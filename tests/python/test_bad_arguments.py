@@ -357,10 +357,15 @@ def test_a_settings_key_holding_an_equals_sign_is_that_key(small_dataset):
 
 def test_a_band_given_as_a_number_is_the_band_in_ghz(a_hall):
     # band=5.0 was passed on as the text "5.0", which no band is called.
-    for number, text in ((5.0, "5"), (2.4, "2.4"), (np.float32(5), "5")):
+    for number, text in ((5.0, "5"), (2.4, "2.4"), (np.float32(5), "5"), (np.float32(2.4), "2.4"),
+                         (5, "5")):
         as_number = wifislam.radio_map(a_hall, resolution_m=5, band=number)
         as_text = wifislam.radio_map(a_hall, resolution_m=5, band=text)
         assert np.array_equal(as_number.rssi_dbm, as_text.rssi_dbm, equal_nan=True)
+    # A number near a band is not that band (2.40000001 was read as "2.4").
+    for number in (2.40000001, 5.0000001, np.float64(np.float32(2.4)), float("nan")):
+        with pytest.raises(wifislam.InvalidInputError, match=r"band '.*': expected '2.4', '5'"):
+            wifislam.radio_map(a_hall, resolution_m=5, band=number)
 
 
 def test_output_folders_are_named_back_without_a_trailing_slash(tmp_path, a_hall, small_dataset):
