@@ -495,10 +495,10 @@ std::string DatasetReader::description() const {
   std::string kind = manifest_ ? "wifislam dataset" : "TUM RGB-D dataset";
   // A dataset without images has poses at its frame times but streams no frames: "0 frames"
   // beside a Python Dataset's length (its ground-truth stamps) would contradict it.
-  std::string out = has_frames_ ? fmt::format("{} {} ({} frames", kind, folder_.string(),
-                                              frame_count_)
-                                : fmt::format("{} {} (no images: poses, odometry and Wi-Fi only",
-                                              kind, folder_.string());
+  std::string out =
+      has_frames_
+          ? fmt::format("{} {} ({} frames", kind, folder_.string(), frame_count_)
+          : fmt::format("{} {} (no images: poses, odometry and Wi-Fi only", kind, folder_.string());
   out += has_wifi_ ? fmt::format(", {} Wi-Fi scans", scan_count_)
                    : "; no Wi-Fi: the folder has no wifi.csv";
   out += has_odometry_ ? fmt::format(", {} odometry readings", odometry_count_) : "; no odometry";

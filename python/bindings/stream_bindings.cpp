@@ -318,8 +318,7 @@ void bind_streams(py::module_& m) {
                  return std::make_unique<DatasetSource>(folder, verify, load_images);
                }),
                py::arg("folder"), py::arg("verify"), py::arg("load_images"))
-          .def_property_readonly("frame_count",
-                                 [](DatasetSource& d) { return d.frame_count(); })
+          .def_property_readonly("frame_count", [](DatasetSource& d) { return d.frame_count(); })
           .def_property_readonly("wifi_scan_count",
                                  [](DatasetSource& d) { return d.reader().wifi_scan_count(); })
           .def_property_readonly("ground_truth", [](const DatasetSource& d) {
