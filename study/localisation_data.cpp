@@ -9,6 +9,7 @@
 
 #include "core/dataset_format.hpp"
 #include "core/error.hpp"
+#include "core/stop_signal.hpp"
 #include "core/tum_trajectory.hpp"
 #include "sim/generate/generation_pipeline.hpp"
 #include "sim/generate/sensor_input.hpp"
@@ -182,6 +183,7 @@ LocalisationData localisation_data_from_scene(const sim::scene::Scene& scene,
   sim::generate::GenerationPipeline pipeline(std::make_shared<const sim::site::Site>(resolved), {});
   ImageCollector images(options, resolved.sensors.camera.intrinsics);
   while (auto generated = pipeline.next()) {
+    throw_if_stop_requested();  // `paper`: Ctrl-C stops the rendering too
     if (const auto* frame = std::get_if<RgbdFrame>(&generated->event)) {
       const Eigen::Vector2d at = generated->camera_to_world.translation().head<2>();
       images.frame(
@@ -221,6 +223,7 @@ LocalisationData localisation_data_from_dataset(const fs::path& dataset,
       dataset.string(), options.image_interval_s);
   ImageCollector images(options, input.stream->intrinsics());
   while (auto event = input.stream->next()) {
+    throw_if_stop_requested();
     if (const auto* frame = std::get_if<RgbdFrame>(&*event)) {
       images.frame(
           *frame, [&] { return position_at(truth, frame->time, truth_file); }, data);

@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
 #include "core/shell_quoted.hpp"
+#include "core/stop_signal.hpp"
 #include "core/thread_start.hpp"
 #include "study/paper/paper_folder.hpp"
 #include "study/paper/paper_report.hpp"
@@ -147,6 +148,9 @@ void run(const PaperArgs& args) {
                       args.output, study::paper::folder::kIdentity, args.output));
     }
   } else {
+    // Ctrl-C (or scancel's SIGTERM) stops at the next frame and removes the twin's scratch
+    // folder; the cases stored so far stay, and a rerun continues from them.
+    const StopOnSignal stop_on_signal;
     const study::paper::PaperRunSummary s = study::paper::run_paper(options);
     if (!args.quiet) {
       fmt::print(stderr,

@@ -17,6 +17,7 @@
 #include "core/dataset_recording.hpp"
 #include "core/error.hpp"
 #include "core/output_folder.hpp"
+#include "core/stop_signal.hpp"
 #include "core/wall_clock.hpp"
 #include "eval/evaluate_run.hpp"
 #include "eval/report_writer.hpp"
@@ -158,7 +159,22 @@ class GroupRunner {
     const std::string group = folder::twin_seed(any.twin, any.seed);
     const fs::path work = dir / folder::kWork / group;
     fresh_work_folder(work);
+    try {
+      return run_in(work, group, files, stores, todo, cases, times);
+    } catch (const StoppedBySignal&) {
+      // Ctrl-C, or Slurm's scancel: the group's scratch folder (the twin's rendering, hundreds of
+      // MB) goes, as `study run`'s case folder does; the cases stored so far stay for a rerun.
+      remove_folder_marker_last(work, kOutputMarkerFile);
+      throw;
+    }
+  }
 
+ private:
+  std::int64_t run_in(const fs::path& work, const std::string& group,
+                      const std::vector<StudyFile>& files,
+                      std::vector<std::unique_ptr<ResultStore>>& stores,
+                      const std::vector<std::vector<StudyCase>>& todo, std::size_t cases,
+                      std::map<std::string, double>& times) {
     // One scene for the whole group: every study of it sets only the seed on the same twin.
     std::size_t first = 0;
     while (todo[first].empty()) ++first;
@@ -178,6 +194,9 @@ class GroupRunner {
     sim::generate::GenerateOptions generate;
     generate.camera = sim::generate::CameraOutput::kDepthOnly;  // the evaluation reads depth; the
                                                                 // runs replay features
+    generate.on_progress = [](const sim::generate::GenerateProgress&) {
+      throw_if_stop_requested();
+    };
     const RecordedDataset dataset(site, work / "dataset", generate, features, options_.jobs);
     times["shared rendering and feature extraction"] += seconds_since(start);
     write_dataset_facts(site, dataset.summary(), group);
@@ -196,7 +215,6 @@ class GroupRunner {
     return runs;
   }
 
- private:
   void progress(const std::string& line) {
     if (options_.on_progress) options_.on_progress(line);
   }
