@@ -5,8 +5,10 @@
 
 Every file must be in both and byte-identical, except what measures time: a wall-clock or CPU
 figure moves from one run to the next. Those are masked before comparing, by name, not by value:
-JSON keys and CSV columns whose name says time (`*_s`, `*_ms`, `wall*`, `cpu*`, `*time*`), and
-Markdown/stdout table cells and lines about seconds. SQLite files are compared through the CSV
+JSON keys and CSV columns whose name says time (`*_s`, `*_ms`, `wall*`, `cpu*`, `*time*`),
+Markdown table rows and columns about time, and on other lines about time the numbers that are
+times (with a unit of time or a share of one: "12.3 s", "4.2 %", "105 fps"); counts on such a
+line are compared. SQLite files are compared through the CSV
 dumps the snapshot writes beside them (their `timing` table is wall-clock). Each snapshot's own
 folder and binary (binary.path) are replaced by `<snapshot>` and `<wifislam>` in every file; cairo's
 SVG surface ids (a process-wide counter) are masked. Exit 0 when nothing
@@ -28,6 +30,14 @@ TIME_TEXT = re.compile(
     re.IGNORECASE,
 )
 NUMBER = re.compile(r"-?\d+(\.\d+)?(e[-+]?\d+)?")
+# On a line about time, the numbers that are times: those with a unit of time (or a share, "%",
+# of a time), and those a time word names ("wall 12.3", "cpu: 4", "time=0.5"). Counts on the same
+# line ("120 images ... (12 s)") are still compared.
+TIMED_NUMBER = re.compile(
+    r"-?\d+(\.\d+)?(e[-+]?\d+)?(?=\s*(?:(?:s|ms|min|fps|frames/s|cases/s|x)\b|%))|"
+    r"(?:(?<=\btime[ :=])|(?<=\bwall[ :=])|(?<=\bcpu[ :=]))\s*-?\d+(\.\d+)?(e[-+]?\d+)?",
+    re.IGNORECASE,
+)
 
 
 def mask_json(value):
@@ -51,8 +61,8 @@ def mask_csv(text):
 
 
 def mask_lines(text):
-    """Masks numbers on lines about time, in Markdown tables under a heading about time, and in
-    table columns whose header says time."""
+    """Masks the times on lines about time (TIMED_NUMBER), every number in Markdown table rows
+    about time or under a heading about time, and table columns whose header says time."""
     out = []
     heading_about_time = False
     time_columns = None  # column indexes of the current table, once its header is read
@@ -63,7 +73,7 @@ def mask_lines(text):
             time_columns = None
             # A time line's padding before a number follows the widths of the numbers before it:
             # collapsed with them (a line's indentation is kept and still compared).
-            out.append(NUMBER.sub("<n>", re.sub(r"(?<=\S) {2,}(?=-?\d)", " ", line))
+            out.append(TIMED_NUMBER.sub("<n>", re.sub(r"(?<=\S) {2,}(?=-?\d)", " ", line))
                        if TIME_TEXT.search(line) else line)
             continue
         cells = line.split("|")
