@@ -133,44 +133,58 @@ void check_lon_lat(const PlanFeature& feature) {
 ///   smaller polygon;
 /// - a node whose lat or lon is not a number (`lat="abc"`, `lat=""`): the driver reads it as 0,
 ///   and the import failed far from the cause ("walkable space too small").
-/// No XML library is needed: node elements and way references are one line each in OSM XML
-/// (`<node id=...`, `<nd ref=...`), so they are scanned as text. An attribute on another line
-/// than its element's start is left to GDAL, as before.
+/// No XML library is needed: an element's attributes are written on the line the element starts
+/// (`<node id=... lat=...`, `<nd ref=...`), so the elements are scanned as text, every one on a
+/// line (a file written on one line has them all on it). An attribute on another line than its
+/// element's start is left to GDAL, as before. Values are read as GDAL reads them: spaces around
+/// a number are no error (`lat=" 51.5"`).
 void check_osm_nodes(const std::filesystem::path& file) {
   std::unordered_set<std::string> nodes;
   std::vector<std::pair<std::string, std::string>> refs;  // (node id, where)
   std::string way;
-  const auto attribute = [](const std::string& line, const std::string& name) {
-    const std::size_t at = line.find(" " + name + "=");
-    if (at == std::string::npos) return std::string();
+  // `element` runs from its '<' to its '>' (or the line's end).
+  const auto attribute = [](std::string_view element, const std::string& name) {
+    const std::size_t at = element.find(" " + name + "=");
+    if (at == std::string_view::npos) return std::string();
     const std::size_t open = at + name.size() + 2;
-    if (open >= line.size()) return std::string();
-    const char quote = line[open];
-    const std::size_t close = line.find(quote, open + 1);
-    return close == std::string::npos ? std::string() : line.substr(open + 1, close - open - 1);
+    if (open >= element.size()) return std::string();
+    const char quote = element[open];
+    const std::size_t close = element.find(quote, open + 1);
+    return close == std::string_view::npos
+               ? std::string()
+               : std::string(element.substr(open + 1, close - open - 1));
+  };
+  const auto trimmed = [](const std::string& value) {
+    const std::size_t first = value.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos) return std::string();
+    return value.substr(first, value.find_last_not_of(" \t\r\n") - first + 1);
   };
   for_each_text_line(file.string(), [&](const TextLine& line) {
-    const std::size_t start = line.text.find_first_not_of(" \t");
-    if (start == std::string::npos) return;
-    const std::string_view text = std::string_view(line.text).substr(start);
-    if (text.starts_with("<node ")) {
-      const std::string id = attribute(line.text, "id");
-      nodes.insert(id);
-      for (const auto& [name, limit_deg] : {std::pair{"lat", 90.0}, std::pair{"lon", 180.0}}) {
-        if (line.text.find(std::string(" ") + name + "=") == std::string::npos) continue;
-        const std::string value = attribute(line.text, name);
-        double degrees = 0;
-        if (!parse_double(value, degrees) || std::abs(degrees) > limit_deg) {
-          throw ParseError(fmt::format("{}:{} (node/{})", file.string(), line.number, id), name,
-                           fmt::format("'{}': expected a number of degrees in [-{}, {}] (WGS 84)",
-                                       value, limit_deg, limit_deg));
+    const std::string_view text(line.text);
+    for (std::size_t open = text.find('<'); open != std::string_view::npos;
+         open = text.find('<', open + 1)) {
+      const std::size_t close = text.find('>', open);
+      const std::string_view element = text.substr(
+          open, close == std::string_view::npos ? std::string_view::npos : close - open + 1);
+      if (element.starts_with("<node ")) {
+        const std::string id = attribute(element, "id");
+        nodes.insert(id);
+        for (const auto& [name, limit_deg] : {std::pair{"lat", 90.0}, std::pair{"lon", 180.0}}) {
+          if (element.find(std::string(" ") + name + "=") == std::string_view::npos) continue;
+          const std::string value = attribute(element, name);
+          double degrees = 0;
+          if (!parse_double(trimmed(value), degrees) || std::abs(degrees) > limit_deg) {
+            throw ParseError(fmt::format("{}:{} (node/{})", file.string(), line.number, id), name,
+                             fmt::format("'{}': expected a number of degrees in [-{}, {}] (WGS 84)",
+                                         value, limit_deg, limit_deg));
+          }
         }
+      } else if (element.starts_with("<way ")) {
+        way = attribute(element, "id");
+      } else if (element.starts_with("<nd ")) {
+        refs.emplace_back(attribute(element, "ref"),
+                          fmt::format("{}:{} (way/{})", file.string(), line.number, way));
       }
-    }
-    if (text.starts_with("<way ")) way = attribute(line.text, "id");
-    if (text.starts_with("<nd ")) {
-      refs.emplace_back(attribute(line.text, "ref"),
-                        fmt::format("{}:{} (way/{})", file.string(), line.number, way));
     }
   });
   for (const auto& [ref, where] : refs) {

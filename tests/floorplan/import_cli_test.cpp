@@ -201,6 +201,32 @@ TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.out.find("read: 1 rooms, 1 corridors, 0 areas"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("2 spaces, 1 doors"), std::string::npos) << r.out;
+
+  // The file is one line: its nodes are checked too. A latitude that is no number was read by
+  // GDAL as 0 (the pre-check looked only at elements that start a line).
+  std::string bad = osm;
+  const std::string lat = R"(lat=")";
+  bad.insert(bad.find(lat, bad.find(R"(<node id="3")")) + lat.size(), "x");
+  test::write_file(scratch_ / "bad.osm", bad);
+  const test::CliResult refused = test::run_wifislam(
+      "import " + (scratch_ / "bad.osm").string() + " -o " + (scratch_ / "bad.yaml").string(),
+      scratch_);
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("bad.osm:1 (node/3)"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("expected a number of degrees"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(scratch_ / "bad.yaml"));
+  // Spaces around a number are read as GDAL reads them: the same import.
+  std::string padded = osm;
+  for (std::size_t at = padded.find(lat); at != std::string::npos;
+       at = padded.find(lat, at + lat.size() + 1))
+    padded.insert(at + lat.size(), " ");
+  test::write_file(scratch_ / "padded.osm", padded);
+  const test::CliResult same = test::run_wifislam(
+      "import " + (scratch_ / "padded.osm").string() + " -o " + (scratch_ / "padded.yaml").string(),
+      scratch_);
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_NE(same.out.find("read: 1 rooms, 1 corridors, 0 areas"), std::string::npos) << same.out;
+  EXPECT_NE(same.out.find("2 spaces, 1 doors"), std::string::npos) << same.out;
 }
 
 TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
