@@ -124,6 +124,23 @@ py::array_t<double> trajectory_array(const Trajectory& trajectory) {
   return out;
 }
 
+py::array_t<double> imu_array(const std::vector<ImuReading>& readings) {
+  py::array_t<double> out({static_cast<py::ssize_t>(readings.size()), py::ssize_t{7}});
+  auto m = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < readings.size(); ++i) {
+    const ImuReading& r = readings[i];
+    const double row[7] = {r.time.seconds(),
+                           r.angular_velocity_radps.x(),
+                           r.angular_velocity_radps.y(),
+                           r.angular_velocity_radps.z(),
+                           r.specific_force_mps2.x(),
+                           r.specific_force_mps2.y(),
+                           r.specific_force_mps2.z()};
+    for (int c = 0; c < 7; ++c) m(static_cast<py::ssize_t>(i), c) = row[c];
+  }
+  return out;
+}
+
 Trajectory trajectory_from_array(const py::array& rows, const std::string& what) {
   const auto m = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(rows);
   if (!m || m.ndim() != 2 || m.shape(1) != 8) {

@@ -4,11 +4,13 @@
 // where the sensor has no reading (the library and the PNGs use 0), poses as 4 x 4 arrays.
 
 #include <string>
+#include <vector>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <opencv2/core/mat.hpp>
 
+#include "core/imu_csv.hpp"
 #include "core/pose.hpp"
 #include "core/tum_trajectory.hpp"
 
@@ -30,6 +32,9 @@ Pose pose_from_array(const pybind11::array& pose, const std::string& what);
 
 /// N x 8 TUM rows (t [s], tx, ty, tz, qx, qy, qz, qw), as evo and the TUM tools hold them.
 pybind11::array_t<double> trajectory_array(const Trajectory& trajectory);
+/// imu.csv's rows as an N x 7 array: t (s), angular velocity (rad/s) x y z, specific force
+/// (m/s^2) x y z, in the IMU frame.
+pybind11::array_t<double> imu_array(const std::vector<ImuReading>& readings);
 /// The inverse; each row is checked as a trajectory file's line is (core/tum_trajectory.hpp), so
 /// errors name `what` and the row. Stamps are rounded to whole nanoseconds.
 Trajectory trajectory_from_array(const pybind11::array& rows, const std::string& what);

@@ -18,6 +18,7 @@
 #include "core/dataset_format.hpp"
 #include "core/dataset_reader.hpp"
 #include "core/error.hpp"
+#include "core/imu_csv.hpp"
 #include "python/bindings/bindings.hpp"
 #include "python/bindings/numpy_convert.hpp"
 #include "sim/generate/generation_pipeline.hpp"
@@ -171,7 +172,7 @@ class SimulatorSource final : public FrameSource {
 std::vector<std::pair<std::int64_t, std::int64_t>> folder_state(const fs::path& folder) {
   std::vector<std::pair<std::int64_t, std::int64_t>> out;
   for (const char* name : {dataset::kManifest, dataset::kRgbList, dataset::kDepthList,
-                           dataset::kGroundTruth, dataset::kWifi}) {
+                           dataset::kGroundTruth, dataset::kWifi, dataset::kImu}) {
     std::error_code ec;
     const auto size = fs::file_size(folder / name, ec);
     const auto time = fs::last_write_time(folder / name, ec);
@@ -244,6 +245,17 @@ class DatasetSource final : public FrameSource {
   }
   DatasetReader& reader() { return reader_; }
   const Trajectory& ground_truth_trajectory() const { return ground_truth_; }
+  /// imu.csv, read once when first asked for (a 200 Hz file is 10^5 rows and more; most uses
+  /// never need it), from the folder as it was opened; none when the dataset has no IMU.
+  const std::optional<std::vector<ImuReading>>& imu() {
+    if (!imu_read_) {
+      check_unchanged();  // opening checked the file's SHA-256 against the manifest
+      if (fs::is_regular_file(folder_ / dataset::kImu))
+        imu_ = read_imu_csv((folder_ / dataset::kImu).string());
+      imu_read_ = true;
+    }
+    return imu_;
+  }
 
  private:
   bool pose_only() const { return reader_.manifest() && !reader_.manifest()->images; }
@@ -256,6 +268,8 @@ class DatasetSource final : public FrameSource {
   DatasetReader reader_;
   Trajectory ground_truth_;
   std::map<std::int64_t, Pose> by_stamp_;
+  std::optional<std::vector<ImuReading>> imu_;
+  bool imu_read_ = false;
   // Pose-only datasets: the reader's next event, held while earlier frames go first.
   std::optional<SensorEvent> pending_;
   bool reader_done_ = false;
@@ -321,8 +335,19 @@ void bind_streams(py::module_& m) {
           .def_property_readonly("frame_count", [](DatasetSource& d) { return d.frame_count(); })
           .def_property_readonly("wifi_scan_count",
                                  [](DatasetSource& d) { return d.reader().wifi_scan_count(); })
-          .def_property_readonly("ground_truth", [](const DatasetSource& d) {
-            return trajectory_array(d.ground_truth_trajectory());
+          .def_property_readonly(
+              "ground_truth",
+              [](const DatasetSource& d) { return trajectory_array(d.ground_truth_trajectory()); })
+          .def_property_readonly("imu",
+                                 // With the GIL held: the first access reads the file into
+                                 // the source, which threads may share.
+                                 [](DatasetSource& d) -> py::object {
+                                   const auto& imu = d.imu();
+                                   return imu ? py::object(imu_array(*imu)) : py::none();
+                                 })
+          .def_property_readonly("imu_in_base", [](DatasetSource& d) -> py::object {
+            const auto& imu = d.reader().calibration().imu;
+            return imu ? py::object(pose_array(imu->imu_in_base)) : py::object(py::none());
           });
   bind_stream_facts<DatasetSource>(dataset);
 }

@@ -361,6 +361,21 @@ class Dataset(_Frames):
     def ground_truth(self) -> np.ndarray:
         return self._source.ground_truth
 
+    @property
+    def imu(self) -> Optional[np.ndarray]:
+        """imu.csv as an N x 7 array: t (s), angular velocity (rad/s) x, y, z and specific force
+        (m/s^2, gravity included: +9.81 up at rest) x, y, z, in the IMU frame; each row the mean
+        over the time since the row before. None when the dataset has no IMU. Read (and
+        checked, as ``wifislam check`` reads it) at the first access."""
+        return self._source.imu
+
+    @property
+    def imu_in_base(self) -> Optional[np.ndarray]:
+        """4 x 4 pose of the IMU frame in the robot base frame (calibration.yaml); None
+        without an IMU. The camera's is ``camera_in_base``: the IMU in the camera's optical
+        frame, Kalibr's T_cam_imu, is ``inv(camera_in_base) @ imu_in_base``."""
+        return self._source.imu_in_base
+
 
 def _scene(scene: Union[Scene, PathLike]) -> Scene:
     if isinstance(scene, _wifislam.Scene):

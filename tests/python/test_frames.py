@@ -150,3 +150,33 @@ def test_a_dataset_without_images_gives_the_simulators_pose_only_frames(tmp_path
             assert np.allclose(a, b, atol=1e-6)
     # A second pass gives the same frames.
     assert [f.stamp_ns for f in dataset] == [f.stamp_ns for f in read_back]
+
+
+def test_a_datasets_imu_is_its_imu_csv(tmp_path, small_dataset, c_hall):
+    dataset = wifislam.Dataset(small_dataset)
+    rows = np.loadtxt(os.path.join(small_dataset, "imu.csv"), delimiter=",", skiprows=1)
+    imu = dataset.imu
+    assert imu.dtype == np.float64 and imu.shape == rows.shape and imu.shape[1] == 7
+    assert np.allclose(imu[:, 0], rows[:, 0], rtol=0, atol=1e-6)  # stamps: whole microseconds
+    assert np.array_equal(imu[:, 1:], rows[:, 1:])
+    assert np.all(np.diff(imu[:, 0]) > 0)
+    # Gravity is in the specific force: its norm is about g over the route.
+    assert abs(np.median(np.linalg.norm(imu[:, 4:], axis=1)) - 9.80665) < 0.5
+    imu_in_base = dataset.imu_in_base
+    assert imu_in_base.shape == (4, 4)
+    assert np.allclose(imu_in_base[:3, :3] @ imu_in_base[:3, :3].T, np.eye(3))
+    assert np.allclose(imu_in_base[3], [0, 0, 0, 1])
+    # A dataset whose scene has no IMU: none.
+    scene = wifislam.Scene.load(c_hall).to_dict()
+    scene["sensors"]["imu"]["enabled"] = False
+    folder = tmp_path / "no_imu"
+    wifislam.generate(wifislam.Scene.from_dict(scene), folder, fps=1.0, max_frames=2,
+                      images=False)
+    assert wifislam.Dataset(folder).imu is None
+    without = wifislam.Dataset(folder)
+    assert without.imu_in_base is None
+    # Read at the first access, from the folder as it was opened: one replaced since is
+    # refused, as a pass over its frames is.
+    wifislam.generate(c_hall, folder, fps=1.0, max_frames=3, images=False, force=True)
+    with pytest.raises(wifislam.InvalidInputError, match="changed since it was opened"):
+        without.imu
