@@ -166,6 +166,11 @@ def test_a_datasets_imu_is_its_imu_csv(tmp_path, small_dataset, c_hall):
     assert imu_in_base.shape == (4, 4)
     assert np.allclose(imu_in_base[:3, :3] @ imu_in_base[:3, :3].T, np.eye(3))
     assert np.allclose(imu_in_base[3], [0, 0, 0, 1])
+    # Kalibr's T_cam_imu, as calibration.yaml and the EuRoC export write it.
+    import yaml
+    with open(os.path.join(small_dataset, "calibration.yaml")) as f:
+        t_cam_imu = np.array(yaml.safe_load(f)["imu"]["T_cam_imu"]).reshape(4, 4)
+    assert np.allclose(np.linalg.inv(dataset.camera_in_base) @ imu_in_base, t_cam_imu, atol=1e-6)
     # A dataset whose scene has no IMU: none.
     scene = wifislam.Scene.load(c_hall).to_dict()
     scene["sensors"]["imu"]["enabled"] = False
