@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -72,15 +73,19 @@ class StopSignalCli : public ::testing::Test {
     return fs::exists(partial) && !child.reaped;
   }
 
-  /// Starts the command, waits until `partial` exists (its work is under way), sends `signal`
-  /// and checks that the process ended by it, said so, and left no `partial`.
-  void stop_while_writing(const std::vector<std::string>& args, const fs::path& partial,
-                          int signal) {
+  /// Starts the command, waits until `ready()` holds (`what` says when that is), sends `signal`
+  /// and checks that the process ended by it and said that it removed its unfinished output.
+  void stop_when(const std::vector<std::string>& args, const std::function<bool()>& ready,
+                 const char* what, int signal) {
     const fs::path err = scratch_ / "stderr.txt";
     Child child;
     start(child, args, err);
     ASSERT_GT(child.pid, 0);
-    ASSERT_TRUE(writing(child, partial)) << "never started writing: " << test::read_file(err);
+    test::wait_until(
+        std::chrono::seconds(120), [&] { return ready() || child.ended(); },
+        std::chrono::milliseconds(5));
+    ASSERT_FALSE(child.reaped) << "ended before " << what << ": " << test::read_file(err);
+    ASSERT_TRUE(ready()) << "never " << what << ": " << test::read_file(err);
     ASSERT_EQ(::kill(child.pid, signal), 0);
     child.wait();
     ASSERT_TRUE(WIFSIGNALED(child.status))
@@ -88,7 +93,22 @@ class StopSignalCli : public ::testing::Test {
     EXPECT_EQ(WTERMSIG(child.status), signal);
     EXPECT_NE(test::read_file(err).find("the unfinished output was removed"), std::string::npos)
         << test::read_file(err);
+  }
+
+  /// stop_when the command has started writing `partial`; then `partial` must be gone.
+  void stop_while_writing(const std::vector<std::string>& args, const fs::path& partial,
+                          int signal) {
+    stop_when(
+        args, [&] { return fs::exists(partial); }, "it started writing", signal);
     EXPECT_FALSE(fs::exists(partial)) << partial;
+  }
+
+  /// Whether a folder in `parent` holds `file` (a dataset among several being generated).
+  static bool some_folder_holds(const fs::path& parent, const fs::path& file) {
+    std::error_code ec;
+    for (const auto& d : fs::directory_iterator(parent, ec))
+      if (fs::exists(d.path() / file)) return true;
+    return false;
   }
 
   fs::path scratch_;
@@ -152,26 +172,10 @@ TEST_F(StopSignalCli, CompareStoppedWhileRenderingOrRunningLeavesNothing) {
   stop_while_writing(args, scratch_ / "c.partial", SIGINT);
   EXPECT_FALSE(fs::exists(scratch_ / "c"));
 
-  const fs::path err = scratch_ / "stderr.txt";
-  Child child;
-  start(child, args, err);
-  ASSERT_GT(child.pid, 0);
   // The dataset is finished (its manifest written) while the second run has its frames to go.
-  const auto dataset_done = [&] {
-    std::error_code ec;
-    for (const auto& d : fs::directory_iterator(scratch_ / "c.partial" / "datasets", ec))
-      if (fs::exists(d.path() / "manifest.json")) return true;
-    return false;
-  };
-  test::wait_until(
-      std::chrono::seconds(120), [&] { return dataset_done() || child.ended(); },
-      std::chrono::milliseconds(5));
-  ASSERT_FALSE(child.reaped) << "ended before its dataset was done: " << test::read_file(err);
-  ASSERT_TRUE(dataset_done()) << test::read_file(err);
-  ASSERT_EQ(::kill(child.pid, SIGTERM), 0);
-  child.wait();
-  ASSERT_TRUE(WIFSIGNALED(child.status)) << "ended before the signal: " << test::read_file(err);
-  EXPECT_EQ(WTERMSIG(child.status), SIGTERM);
+  stop_when(
+      args, [&] { return some_folder_holds(scratch_ / "c.partial" / "datasets", "manifest.json"); },
+      "its dataset was done", SIGTERM);
   EXPECT_FALSE(fs::exists(scratch_ / "c.partial"));
   EXPECT_FALSE(fs::exists(scratch_ / "c"));
 }
@@ -181,30 +185,12 @@ TEST_F(StopSignalCli, CompareStoppedWhileRenderingOrRunningLeavesNothing) {
 // The scratch folder stayed until a rerun (170 MB for C Hall at 1 fps), the signal's default
 // action ending the process where it stood.
 TEST_F(StopSignalCli, PaperStoppedWhileATwinRunsRemovesItsScratchFolderAndKeepsThePaperFolder) {
-  const fs::path dir = scratch_ / "p", err = scratch_ / "stderr.txt";
-  Child child;
-  start(child,
-        {"paper", "-o", dir.string(), "--parts", "orbslam", "--twins", "a_hall", "--fps", "1",
-         "--jobs", "1", "-q"},
-        err);
-  ASSERT_GT(child.pid, 0);
-  const auto dataset_done = [&] {
-    std::error_code ec;
-    for (const auto& d : fs::directory_iterator(dir / "work", ec))
-      if (fs::exists(d.path() / "dataset" / "manifest.json")) return true;
-    return false;
-  };
-  test::wait_until(
-      std::chrono::seconds(120), [&] { return dataset_done() || child.ended(); },
-      std::chrono::milliseconds(5));
-  ASSERT_FALSE(child.reaped) << "ended before its dataset was done: " << test::read_file(err);
-  ASSERT_TRUE(dataset_done()) << test::read_file(err);
-  ASSERT_EQ(::kill(child.pid, SIGTERM), 0);
-  child.wait();
-  ASSERT_TRUE(WIFSIGNALED(child.status)) << "ended before the signal: " << test::read_file(err);
-  EXPECT_EQ(WTERMSIG(child.status), SIGTERM);
-  EXPECT_NE(test::read_file(err).find("the unfinished output was removed"), std::string::npos)
-      << test::read_file(err);
+  const fs::path dir = scratch_ / "p";
+  stop_when(
+      {"paper", "-o", dir.string(), "--parts", "orbslam", "--twins", "a_hall", "--fps", "1",
+       "--jobs", "1", "-q"},
+      [&] { return some_folder_holds(dir / "work", fs::path("dataset") / "manifest.json"); },
+      "its twin's dataset was done", SIGTERM);
   EXPECT_TRUE(fs::is_empty(dir / "work")) << "the twin's scratch folder is left";
   EXPECT_TRUE(fs::is_regular_file(dir / "paper.json")) << "the folder a rerun continues";
 }

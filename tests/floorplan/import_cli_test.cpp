@@ -194,23 +194,26 @@ TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
   osm += node(1, 0, 0) + node(2, 20, 0) + node(3, 20, 2.4) + node(4, 0, 2.4);
   osm += node(5, 0, 2.4) + node(6, 8, 2.4) + node(7, 8, 7) + node(8, 0, 7);
   osm += way(100, 1, "corridor") + way(101, 5, "room") + "</osm>";
-  test::write_file(scratch_ / "plan.osm", osm);
-  const test::CliResult r = test::run_wifislam(
-      "import " + (scratch_ / "plan.osm").string() + " -o " + (scratch_ / "out.yaml").string(),
-      scratch_);
-  ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.out.find("read: 1 rooms, 1 corridors, 0 areas"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("2 spaces, 1 doors"), std::string::npos) << r.out;
+  // `text` written as <name>.osm and imported into <name>.yaml.
+  const auto import_osm = [&](const std::string& name, const std::string& text) {
+    test::write_file(scratch_ / (name + ".osm"), text);
+    return test::run_wifislam("import " + (scratch_ / (name + ".osm")).string() + " -o " +
+                                  (scratch_ / (name + ".yaml")).string(),
+                              scratch_);
+  };
+  const auto expect_the_plan = [](const test::CliResult& r) {
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("read: 1 rooms, 1 corridors, 0 areas"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("2 spaces, 1 doors"), std::string::npos) << r.out;
+  };
+  expect_the_plan(import_osm("plan", osm));
 
   // The file is one line: its nodes are checked too. A latitude that is no number was read by
   // GDAL as 0 (the pre-check looked only at elements that start a line).
   std::string bad = osm;
   const std::string lat = R"(lat=")";
   bad.insert(bad.find(lat, bad.find(R"(<node id="3")")) + lat.size(), "x");
-  test::write_file(scratch_ / "bad.osm", bad);
-  const test::CliResult refused = test::run_wifislam(
-      "import " + (scratch_ / "bad.osm").string() + " -o " + (scratch_ / "bad.yaml").string(),
-      scratch_);
+  const test::CliResult refused = import_osm("bad", bad);
   EXPECT_EQ(refused.exit_code, 2) << refused.err;
   EXPECT_NE(refused.err.find("bad.osm:1 (node/3)"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("expected a number of degrees"), std::string::npos) << refused.err;
@@ -220,13 +223,7 @@ TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
   for (std::size_t at = padded.find(lat); at != std::string::npos;
        at = padded.find(lat, at + lat.size() + 1))
     padded.insert(at + lat.size(), " ");
-  test::write_file(scratch_ / "padded.osm", padded);
-  const test::CliResult same = test::run_wifislam(
-      "import " + (scratch_ / "padded.osm").string() + " -o " + (scratch_ / "padded.yaml").string(),
-      scratch_);
-  ASSERT_EQ(same.exit_code, 0) << same.err;
-  EXPECT_NE(same.out.find("read: 1 rooms, 1 corridors, 0 areas"), std::string::npos) << same.out;
-  EXPECT_NE(same.out.find("2 spaces, 1 doors"), std::string::npos) << same.out;
+  expect_the_plan(import_osm("padded", padded));
 }
 
 TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
