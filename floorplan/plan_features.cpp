@@ -14,14 +14,13 @@
 #include <regex>
 #include <string_view>
 #include <system_error>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "core/error.hpp"
-#include "core/text_lines.hpp"
+#include "floorplan/osm_node_check.hpp"
 
 namespace wifislam::floorplan {
 
@@ -126,73 +125,6 @@ void check_lon_lat(const PlanFeature& feature) {
     for (const Ring& hole : p.holes) check(hole);
   }
   for (const Ring& line : feature.lines_lon_lat) check(line);
-}
-
-/// What GDAL's OSM driver reads without a word, checked first:
-/// - a way that names a node the file does not hold: the driver drops the point and imports a
-///   smaller polygon;
-/// - a node whose lat or lon is not a number (`lat="abc"`, `lat=""`): the driver reads it as 0,
-///   and the import failed far from the cause ("walkable space too small").
-/// No XML library is needed: an element's attributes are written on the line the element starts
-/// (`<node id=... lat=...`, `<nd ref=...`), so the elements are scanned as text, every one on a
-/// line (a file written on one line has them all on it). An attribute on another line than its
-/// element's start is left to GDAL, as before. Values are read as GDAL reads them: spaces around
-/// a number are no error (`lat=" 51.5"`).
-void check_osm_nodes(const std::filesystem::path& file) {
-  std::unordered_set<std::string> nodes;
-  std::vector<std::pair<std::string, std::string>> refs;  // (node id, where)
-  std::string way;
-  // `element` runs from its '<' to its '>' (or the line's end).
-  const auto attribute = [](std::string_view element, const std::string& name) {
-    const std::size_t at = element.find(" " + name + "=");
-    if (at == std::string_view::npos) return std::string();
-    const std::size_t open = at + name.size() + 2;
-    if (open >= element.size()) return std::string();
-    const char quote = element[open];
-    const std::size_t close = element.find(quote, open + 1);
-    return close == std::string_view::npos
-               ? std::string()
-               : std::string(element.substr(open + 1, close - open - 1));
-  };
-  const auto trimmed = [](const std::string& value) {
-    const std::size_t first = value.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos) return std::string();
-    return value.substr(first, value.find_last_not_of(" \t\r\n") - first + 1);
-  };
-  for_each_text_line(file.string(), [&](const TextLine& line) {
-    const std::string_view text(line.text);
-    for (std::size_t open = text.find('<'); open != std::string_view::npos;
-         open = text.find('<', open + 1)) {
-      const std::size_t close = text.find('>', open);
-      const std::string_view element = text.substr(
-          open, close == std::string_view::npos ? std::string_view::npos : close - open + 1);
-      if (element.starts_with("<node ")) {
-        const std::string id = attribute(element, "id");
-        nodes.insert(id);
-        for (const auto& [name, limit_deg] : {std::pair{"lat", 90.0}, std::pair{"lon", 180.0}}) {
-          if (element.find(std::string(" ") + name + "=") == std::string_view::npos) continue;
-          const std::string value = attribute(element, name);
-          double degrees = 0;
-          if (!parse_double(trimmed(value), degrees) || std::abs(degrees) > limit_deg) {
-            throw ParseError(fmt::format("{}:{} (node/{})", file.string(), line.number, id), name,
-                             fmt::format("'{}': expected a number of degrees in [-{}, {}] (WGS 84)",
-                                         value, limit_deg, limit_deg));
-          }
-        }
-      } else if (element.starts_with("<way ")) {
-        way = attribute(element, "id");
-      } else if (element.starts_with("<nd ")) {
-        refs.emplace_back(attribute(element, "ref"),
-                          fmt::format("{}:{} (way/{})", file.string(), line.number, way));
-      }
-    }
-  });
-  for (const auto& [ref, where] : refs) {
-    if (!nodes.count(ref)) {
-      throw ParseError(where, "nd ref",
-                       "node " + ref + " is not in the file: the way is incomplete");
-    }
-  }
 }
 
 struct DatasetCloser {

@@ -14,6 +14,7 @@ packages=(
   libeigen3-dev                          # linear algebra, poses
   libcgal-dev libgmp-dev libmpfr-dev     # floor-plan polygon booleans
   libgdal-dev libproj-dev libgeos-dev    # floor-plan import: GeoJSON/OSM reading, projection, buffers
+  libexpat1-dev                          # floor-plan import: the .osm pre-check's XML parser
   libceres-dev                           # pose-graph optimisation
   libyaml-cpp-dev nlohmann-json3-dev     # scene files, results
   libcli11-dev libspdlog-dev libfmt-dev  # command line, logging

@@ -218,12 +218,22 @@ TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
   EXPECT_NE(refused.err.find("bad.osm:1 (node/3)"), std::string::npos) << refused.err;
   EXPECT_NE(refused.err.find("expected a number of degrees"), std::string::npos) << refused.err;
   EXPECT_FALSE(fs::exists(scratch_ / "bad.yaml"));
-  // Spaces around a number are read as GDAL reads them: the same import.
+  // An element per line, spaces around each latitude: read as GDAL reads them, the same import
+  // (" 45.0" was refused). A comment naming a node the file lacks is no way of the plan.
   std::string padded = osm;
+  for (std::size_t at = padded.find("/>"); at != std::string::npos; at = padded.find("/>", at + 3))
+    padded.insert(at + 2, "\n");
   for (std::size_t at = padded.find(lat); at != std::string::npos;
        at = padded.find(lat, at + lat.size() + 1))
     padded.insert(at + lat.size(), " ");
+  padded.insert(padded.find("</osm>"), R"(<!-- <way id="9"><nd ref="999"/></way> -->)");
   expect_the_plan(import_osm("padded", padded));
+  // XML GDAL cannot read is refused where it stops being XML.
+  const test::CliResult broken = import_osm("broken", osm.substr(0, osm.find("<way")) + "<way id=");
+  EXPECT_EQ(broken.exit_code, 2) << broken.err;
+  EXPECT_NE(broken.err.find("broken.osm:1:"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("XML that GDAL's OSM driver cannot read"), std::string::npos)
+      << broken.err;
 }
 
 TEST_F(ImportCli, ImportedSceneGeneratesADataset) {
