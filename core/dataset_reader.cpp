@@ -498,7 +498,7 @@ std::string DatasetReader::description() const {
   std::string out =
       has_frames_
           ? fmt::format("{} {} ({} frames", kind, folder_.string(), frame_count_)
-          : fmt::format("{} {} (no images: poses, odometry and Wi-Fi only", kind, folder_.string());
+          : fmt::format("{} {} (no images: poses and sensor readings only", kind, folder_.string());
   out += has_wifi_ ? fmt::format(", {} Wi-Fi scans", scan_count_)
                    : "; no Wi-Fi: the folder has no wifi.csv";
   out += has_odometry_ ? fmt::format(", {} odometry readings", odometry_count_) : "; no odometry";

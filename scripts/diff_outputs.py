@@ -30,14 +30,22 @@ TIME_TEXT = re.compile(
     re.IGNORECASE,
 )
 NUMBER = re.compile(r"-?\d+(\.\d+)?(e[-+]?\d+)?")
-# On a line about time, the numbers that are times: those with a unit of time (or a share, "%",
-# of a time), and those a time word names ("wall 12.3", "cpu: 4", "time=0.5"). Counts on the same
-# line ("120 images ... (12 s)") are still compared.
-TIMED_NUMBER = re.compile(
-    r"-?\d+(\.\d+)?(e[-+]?\d+)?(?=\s*(?:(?:s|ms|min|fps|frames/s|cases/s|x)\b|%))|"
-    r"(?:(?<=\btime[ :=])|(?<=\bwall[ :=])|(?<=\bcpu[ :=]))\s*-?\d+(\.\d+)?(e[-+]?\d+)?",
+# On a line about time, the numbers that are times: those with a unit of time after them (a range
+# "44-87 s" as one), a share of one ("12.1 %") or a ratio ("1.5x"), and those a time word names
+# ("wall 12.3", "wall-clock 4", "time = 0.5"). Counts on the same line ("120 images ... (12 s)")
+# are still compared.
+_NUMBER_TEXT = r"\d+(?:\.\d+)?(?:e[-+]?\d+)?"
+TIME_AFTER = re.compile(
+    rf"(?<![\w.])-?{_NUMBER_TEXT}(?:-{_NUMBER_TEXT})?"
+    r"(?=\s*(?:(?:s|sec|seconds|ms|min|fps|frames/s|cases/s)\b|%)|x\b)",
     re.IGNORECASE,
 )
+TIME_WORD_BEFORE = re.compile(rf"(\b(?:time|wall|wall-clock|cpu)\s*[:=]?\s*)-?{_NUMBER_TEXT}",
+                              re.IGNORECASE)
+
+
+def mask_times(line):
+    return TIME_WORD_BEFORE.sub(lambda m: m.group(1) + "<n>", TIME_AFTER.sub("<n>", line))
 
 
 def mask_json(value):
@@ -61,7 +69,7 @@ def mask_csv(text):
 
 
 def mask_lines(text):
-    """Masks the times on lines about time (TIMED_NUMBER), every number in Markdown table rows
+    """Masks the times on lines about time (mask_times), every number in Markdown table rows
     about time or under a heading about time, and table columns whose header says time."""
     out = []
     heading_about_time = False
@@ -73,7 +81,7 @@ def mask_lines(text):
             time_columns = None
             # A time line's padding before a number follows the widths of the numbers before it:
             # collapsed with them (a line's indentation is kept and still compared).
-            out.append(TIMED_NUMBER.sub("<n>", re.sub(r"(?<=\S) {2,}(?=-?\d)", " ", line))
+            out.append(mask_times(re.sub(r"(?<=\S) {2,}(?=-?\d)", " ", line))
                        if TIME_TEXT.search(line) else line)
             continue
         cells = line.split("|")

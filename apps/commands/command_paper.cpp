@@ -140,6 +140,10 @@ void run(const PaperArgs& args) {
     write_slurm_jobs(args, options);
     return;
   }
+  // Ctrl-C (or scancel's SIGTERM) stops the runs at the next frame and removes the twin's
+  // scratch folder; the cases stored so far stay, and a rerun continues from them. One during the
+  // report lets it finish (its files are written whole) and then ends the process.
+  const StopOnSignal stop_on_signal;
   if (args.report_only) {
     if (!fs::exists(options.folder / study::paper::folder::kIdentity)) {
       throw InvalidInputError(
@@ -148,9 +152,6 @@ void run(const PaperArgs& args) {
                       args.output, study::paper::folder::kIdentity, args.output));
     }
   } else {
-    // Ctrl-C (or scancel's SIGTERM) stops at the next frame and removes the twin's scratch
-    // folder; the cases stored so far stay, and a rerun continues from them.
-    const StopOnSignal stop_on_signal;
     const study::paper::PaperRunSummary s = study::paper::run_paper(options);
     if (!args.quiet) {
       fmt::print(stderr,

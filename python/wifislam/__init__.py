@@ -465,7 +465,8 @@ def _band_text(band: float) -> str:
     for ghz, text in ((2.4, "2.4"), (5.0, "5")):
         if kind(band) == kind(ghz):
             return text
-    return repr(float(band))
+    text = repr(float(band))  # the shortest text that reads back as the number
+    return text[:-2] if text.endswith(".0") else text  # "2" for 2.0, as the command line
 
 
 @checked
@@ -607,11 +608,38 @@ def _nested_numbers(value: Any, what: str) -> np.ndarray:
     return array
 
 
+_KIND_NAMES = {"b": "booleans", "c": "complex numbers", "U": "text", "S": "bytes",
+               "M": "dates", "m": "time spans", "V": "records", "O": "objects"}
+
+
 def _real_array(value: Any, what: str) -> np.ndarray:
-    """Poses and trajectories as float64, refused unless every element is a number: a float64
-    conversion dropped a complex value's imaginary part with a warning only, and read strings
-    ("1.5") and booleans as numbers."""
-    return _nested_numbers(value, what).astype(np.float64, copy=False)
+    """Poses and trajectories as float64, refused unless every element is a real number: a
+    float64 conversion dropped a complex value's imaginary part with a warning only, and read
+    strings ("1.5"), booleans and None as numbers. An object array (a pandas column of mixed
+    types) is taken when each element is a real number; a boolean among numbers in nested
+    lists (which numpy would make 1.0) is refused."""
+    def is_real(element: Any) -> bool:
+        return (isinstance(element, numbers.Real)
+                and not isinstance(element, (bool, np.bool_)))
+
+    def has_boolean(nested: Any) -> bool:
+        if isinstance(nested, (list, tuple)):
+            return any(has_boolean(v) for v in nested)
+        return isinstance(nested, (bool, np.bool_))
+
+    try:
+        array = np.asarray(value)
+    except (ValueError, OverflowError) as e:
+        raise _wifislam.InvalidInputError(f"{what}: not an array of numbers ({e})") from None
+    kind = array.dtype.kind
+    if kind == "O" and all(is_real(e) for e in array.ravel()):
+        return np.array([float(e) for e in array.ravel()], dtype=np.float64).reshape(array.shape)
+    if kind not in "iuf":
+        raise _wifislam.InvalidInputError(
+            f"{what}: expected real numbers, got {_KIND_NAMES.get(kind, array.dtype.name)}")
+    if not isinstance(value, np.ndarray) and has_boolean(value):
+        raise _wifislam.InvalidInputError(f"{what}: expected real numbers, got a boolean")
+    return array.astype(np.float64, copy=False)
 
 
 @checked

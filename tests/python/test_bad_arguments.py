@@ -170,17 +170,26 @@ def test_poses_and_trajectories_take_real_numbers_only(a_hall, small_dataset):
     truth = wifislam.Dataset(small_dataset).ground_truth
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a warning on the way is a failure too
-        for bad, kind in ((pose.astype(np.complex128), "complex128"),
-                          (pose.astype(str), "str"), (pose > 0, "bool")):
+        with_boolean = pose.tolist()
+        with_boolean[3][3] = True  # numpy would read it as 1.0
+        for bad, kind in ((pose.astype(np.complex128), "complex numbers"),
+                          (pose.astype(str), "text"), (pose > 0, "booleans"),
+                          (with_boolean, "a boolean")):
             with pytest.raises(wifislam.InvalidInputError,
-                               match=rf"render\(\): pose: expected numbers, got {kind}"):
+                               match=rf"render\(\): pose: expected real numbers, got {kind}"):
                 wifislam.render(a_hall, bad)
         with pytest.raises(wifislam.InvalidInputError,
-                           match=r"evaluate\(\): estimate: expected numbers, got complex128"):
+                           match=r"evaluate\(\): estimate: expected real numbers, got complex"):
             wifislam.evaluate(truth + 1e-3j, truth)
         with pytest.raises(wifislam.InvalidInputError,
-                           match=r"evaluate\(\): ground_truth: expected numbers, got object"):
+                           match=r"evaluate\(\): ground_truth: expected real numbers, got objects"):
             wifislam.evaluate(truth, [[None] * 8] * 3)
+        # Real numbers held as objects (a pandas column of mixed types) are numbers.
+        from fractions import Fraction
+        as_objects = pose.astype(object)
+        as_objects[0, 3] = Fraction(int(pose[0, 3] * 4), 4)
+        wifislam.render(a_hall, as_objects, noise=False)
+        assert wifislam.evaluate(truth.astype(object), truth) == wifislam.evaluate(truth, truth)
         # Real numbers of any width still pass, as the float64 they are.
         assert wifislam.evaluate(truth.tolist(), truth) == wifislam.evaluate(truth, truth)
         assert np.array_equal(wifislam.render(a_hall, pose.astype(np.float32), noise=False)[0],
