@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <csignal>
+#include <cstdio>
 #include <exception>
 #include <iterator>
 
@@ -62,8 +63,13 @@ StopOnSignal::~StopOnSignal() {
   // A signal that came after the last check (the output was already committed) is not lost: the
   // process ends by it, as the caller (a shell loop) expects. While StoppedBySignal unwinds, the
   // command's caller reports it and ends the process so.
+  // What the command printed goes out first: stdout to a pipe or file is block-buffered, and the
+  // signal's default action ends the process without flushing it.
   const int signal = g_stop_signal.load();
-  if (signal != 0 && std::uncaught_exceptions() == 0) std::raise(signal);
+  if (signal != 0 && std::uncaught_exceptions() == 0) {
+    std::fflush(nullptr);
+    std::raise(signal);
+  }
 }
 
 int stop_requested_signal() { return g_stop_signal.load(); }

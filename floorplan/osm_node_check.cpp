@@ -2,6 +2,7 @@
 
 #include <expat.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -26,11 +27,17 @@ struct ParserDeleter {
   void operator()(XML_ParserStruct* parser) const { XML_ParserFree(parser); }
 };
 
+/// A way's reference to a node, and whether the node came before it.
+struct NodeRef {
+  std::string node, where;
+  bool node_seen = false;
+};
+
 struct OsmScan {
   std::string file;
   XML_Parser parser = nullptr;
   std::unordered_set<std::string> nodes;
-  std::vector<std::pair<std::string, std::string>> refs;  // (node id, where the way names it)
+  std::vector<NodeRef> refs;
   std::string way;
   std::exception_ptr error;  // thrown in a handler; expat is C and must not be unwound
 
@@ -76,13 +83,42 @@ void on_element(void* data, const XML_Char* name, const XML_Char** attributes) {
     } else if (std::strcmp(name, "way") == 0) {
       scan.way = id ? id : "";
     } else if (std::strcmp(name, "nd") == 0) {
-      const XML_Char* ref = attribute(attributes, "ref");
-      scan.refs.emplace_back(ref ? ref : "", scan.where("way", scan.way));
+      const XML_Char* ref_text = attribute(attributes, "ref");
+      const std::string ref = ref_text ? ref_text : "";
+      scan.refs.push_back({ref, scan.where("way", scan.way), scan.nodes.count(ref) > 0});
     }
   } catch (...) {
     scan.error = std::current_exception();
     XML_StopParser(scan.parser, XML_FALSE);
   }
+}
+
+/// The single-byte encodings GDAL's OSM driver reads beyond expat's own (UTF-8, UTF-16,
+/// ISO-8859-1, US-ASCII), as its handler does (ogr/ogr_expat.cpp): windows-1252 and ISO-8859-15,
+/// each Latin-1 but for the code points listed.
+int on_unknown_encoding(void*, const XML_Char* name, XML_Encoding* info) {
+  std::string lower(name);
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const bool windows_1252 = lower == "windows-1252";
+  if (!windows_1252 && lower != "iso-8859-15") return XML_STATUS_ERROR;
+  for (int i = 0; i < 256; ++i) info->map[i] = i;
+  if (windows_1252) {
+    static constexpr int k80To9f[32] = {
+        0x20AC, -1,     0x201A, 0x0192, 0x201E, 0x2026, 0x2020, 0x2021, 0x02C6, 0x2030, 0x0160,
+        0x2039, 0x0152, -1,     0x017D, -1,     -1,     0x2018, 0x2019, 0x201C, 0x201D, 0x2022,
+        0x2013, 0x2014, 0x02DC, 0x2122, 0x0161, 0x203A, 0x0153, -1,     0x017E, 0x0178};
+    for (int i = 0; i < 32; ++i) info->map[0x80 + i] = k80To9f[i];
+  } else {
+    for (const auto& [byte, code] :
+         {std::pair{0xA4, 0x20AC}, std::pair{0xA6, 0x0160}, std::pair{0xA8, 0x0161},
+          std::pair{0xB4, 0x017D}, std::pair{0xB8, 0x017E}, std::pair{0xBC, 0x0152},
+          std::pair{0xBD, 0x0153}, std::pair{0xBE, 0x0178}})
+      info->map[byte] = code;
+  }
+  info->data = nullptr;
+  info->convert = nullptr;
+  info->release = nullptr;
+  return XML_STATUS_OK;
 }
 
 }  // namespace
@@ -97,6 +133,7 @@ void check_osm_nodes(const std::filesystem::path& file) {
   scan.parser = parser.get();
   XML_SetUserData(parser.get(), &scan);
   XML_SetStartElementHandler(parser.get(), on_element);
+  XML_SetUnknownEncodingHandler(parser.get(), on_unknown_encoding, nullptr);
   std::vector<char> chunk(1 << 16);
   bool last = false;
   while (!last) {
@@ -114,10 +151,17 @@ void check_osm_nodes(const std::filesystem::path& file) {
                       XML_ErrorString(XML_GetErrorCode(parser.get()))));
     }
   }
-  for (const auto& [ref, where] : scan.refs) {
-    if (!scan.nodes.count(ref)) {
-      throw ParseError(where, "nd ref",
-                       "node " + ref + " is not in the file: the way is incomplete");
+  for (const NodeRef& ref : scan.refs) {
+    if (!scan.nodes.count(ref.node)) {
+      throw ParseError(ref.where, "nd ref",
+                       "node " + ref.node + " is not in the file: the way is incomplete");
+    }
+    if (!ref.node_seen) {
+      // The driver reads nodes as they come and drops a way's point whose node is still unknown.
+      throw ParseError(ref.where, "nd ref",
+                       "node " + ref.node +
+                           " comes after this way in the file, which GDAL's OSM driver reads in "
+                           "order: write the nodes before the ways, as OSM files do");
     }
   }
 }

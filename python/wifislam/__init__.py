@@ -625,21 +625,32 @@ def _real_array(value: Any, what: str) -> np.ndarray:
     def has_boolean(nested: Any) -> bool:
         if isinstance(nested, (list, tuple)):
             return any(has_boolean(v) for v in nested)
+        if isinstance(nested, np.ndarray):  # an array among the lists
+            return nested.dtype.kind == "b" or (
+                nested.dtype.kind == "O" and any(has_boolean(v) for v in nested.ravel()))
         return isinstance(nested, (bool, np.bool_))
 
+    if np.ma.isMaskedArray(value) and np.ma.getmaskarray(value).any():
+        # numpy would pass the hidden values on as numbers.
+        raise _wifislam.InvalidInputError(
+            f"{what}: has masked values; give the rows without them (numpy.ma.compress_rows)")
     try:
         array = np.asarray(value)
+        kind = array.dtype.kind
+        if kind == "O" and all(is_real(e) for e in array.ravel()):
+            return np.array([float(e) for e in array.ravel()],
+                            dtype=np.float64).reshape(array.shape)
+        if kind not in "iuf":
+            raise _wifislam.InvalidInputError(
+                f"{what}: expected real numbers, got {_KIND_NAMES.get(kind, array.dtype.name)}")
+        if not isinstance(value, np.ndarray) and has_boolean(value):
+            raise _wifislam.InvalidInputError(f"{what}: expected real numbers, got a boolean")
+        return array.astype(np.float64, copy=False)
     except (ValueError, OverflowError) as e:
-        raise _wifislam.InvalidInputError(f"{what}: not an array of numbers ({e})") from None
-    kind = array.dtype.kind
-    if kind == "O" and all(is_real(e) for e in array.ravel()):
-        return np.array([float(e) for e in array.ravel()], dtype=np.float64).reshape(array.shape)
-    if kind not in "iuf":
+        if isinstance(e, _wifislam.InvalidInputError):
+            raise
         raise _wifislam.InvalidInputError(
-            f"{what}: expected real numbers, got {_KIND_NAMES.get(kind, array.dtype.name)}")
-    if not isinstance(value, np.ndarray) and has_boolean(value):
-        raise _wifislam.InvalidInputError(f"{what}: expected real numbers, got a boolean")
-    return array.astype(np.float64, copy=False)
+            f"{what}: not an array of numbers within a float's range ({e})") from None
 
 
 @checked

@@ -228,6 +228,23 @@ TEST_F(ImportCli, OsmXmlIsReadThroughGdalsOsmDriver) {
     padded.insert(at + lat.size(), " ");
   padded.insert(padded.find("</osm>"), R"(<!-- <way id="9"><nd ref="999"/></way> -->)");
   expect_the_plan(import_osm("padded", padded));
+  // An encoding GDAL adds to expat's own: windows-1252, with a name in it ("Caf\xe9 \x80").
+  std::string windows_1252 = osm;
+  windows_1252.replace(windows_1252.find("UTF-8"), 5, "windows-1252");
+  windows_1252.insert(windows_1252.find(R"(<tag k="indoor" v="room"/>)"),
+                      "<tag k=\"name\" v=\"Caf\xe9 \x80\"/>");
+  expect_the_plan(import_osm("windows_1252", windows_1252));
+  // A node after the way that names it: GDAL's driver, reading in order, dropped the point.
+  std::string late = osm;
+  const std::string node_3 =
+      late.substr(late.find(R"(<node id="3")"),
+                  late.find("/>", late.find(R"(<node id="3")")) + 2 - late.find(R"(<node id="3")"));
+  late.erase(late.find(node_3), node_3.size());
+  late.insert(late.find("</osm>"), node_3);
+  const test::CliResult after = import_osm("late", late);
+  EXPECT_EQ(after.exit_code, 2) << after.err;
+  EXPECT_NE(after.err.find("late.osm:1 (way/100)"), std::string::npos) << after.err;
+  EXPECT_NE(after.err.find("node 3 comes after this way"), std::string::npos) << after.err;
   // XML GDAL cannot read is refused where it stops being XML.
   const test::CliResult broken = import_osm("broken", osm.substr(0, osm.find("<way")) + "<way id=");
   EXPECT_EQ(broken.exit_code, 2) << broken.err;

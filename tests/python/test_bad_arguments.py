@@ -184,6 +184,14 @@ def test_poses_and_trajectories_take_real_numbers_only(a_hall, small_dataset):
         with pytest.raises(wifislam.InvalidInputError,
                            match=r"evaluate\(\): ground_truth: expected real numbers, got objects"):
             wifislam.evaluate(truth, [[None] * 8] * 3)
+        with pytest.raises(wifislam.InvalidInputError, match=r"estimate: .*float's range"):
+            wifislam.evaluate([[10**400, 0, 0, 0, 0, 0, 0, 1]] * 3, truth)
+        with pytest.raises(wifislam.InvalidInputError, match=r"pose: .*got a boolean"):
+            wifislam.render(a_hall, [np.array([True, False, False, False])] + pose.tolist()[1:])
+        masked = np.ma.masked_array(truth, mask=np.zeros_like(truth, dtype=bool))
+        masked[0, 1] = np.ma.masked
+        with pytest.raises(wifislam.InvalidInputError, match=r"ground_truth: has masked values"):
+            wifislam.evaluate(truth, masked)
         # Real numbers held as objects (a pandas column of mixed types) are numbers.
         from fractions import Fraction
         as_objects = pose.astype(object)
